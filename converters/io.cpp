@@ -1,0 +1,206 @@
+#include "converters/io.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <random>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace rayset {
+
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the binary codecs assume a little-endian host");
+
+namespace {
+
+std::string system_error_text() { return std::strerror(errno); }
+
+std::FILE* open_for_reading(const std::string& path, uint64_t& size) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) fail(path, "is a folder, not a file");
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) fail(path, "cannot open: " + system_error_text());
+    struct stat st {};
+    if (::fstat(::fileno(file), &st) != 0) {
+        std::fclose(file);
+        fail(path, "cannot read its size: " + system_error_text());
+    }
+    size = static_cast<uint64_t>(st.st_size);
+    // Large stdio buffers: the codecs read sequentially and this keeps syscalls few.
+    std::setvbuf(file, nullptr, _IOFBF, 1 << 20);
+    return file;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+BinaryInput::BinaryInput(const std::string& path) : path_(path) { file_ = open_for_reading(path, size_); }
+
+BinaryInput::~BinaryInput() {
+    if (file_) std::fclose(file_);
+}
+
+void BinaryInput::seek(uint64_t offset) {
+    if (offset > size_) fail_here("seek past the end of the file (" + std::to_string(size_) + " bytes)");
+    if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0) fail_here("cannot seek: " + system_error_text());
+    offset_ = offset;
+}
+
+void BinaryInput::read(void* out, size_t n, const char* what) {
+    size_t got = std::fread(out, 1, n, file_);
+    if (got != n) {
+        if (std::ferror(file_)) fail_here(std::string("read error in ") + what + ": " + system_error_text());
+        fail_here(std::string("file ends inside ") + what + " (" + std::to_string(n) + " bytes expected, " +
+                  std::to_string(got) + " left): the file is truncated");
+    }
+    offset_ += n;
+}
+
+size_t BinaryInput::read_some(void* out, size_t n) {
+    size_t got = std::fread(out, 1, n, file_);
+    if (got < n && std::ferror(file_)) fail_here("read error: " + system_error_text());
+    offset_ += got;
+    return got;
+}
+
+// ---------------------------------------------------------------------------------------------
+TextInput::TextInput(const std::string& path) : path_(path) { file_ = open_for_reading(path, size_); }
+
+TextInput::~TextInput() {
+    if (file_) std::fclose(file_);
+}
+
+bool TextInput::next(std::string& line) {
+    line.clear();
+    int c;
+    bool any = false;
+    while ((c = std::getc(file_)) != EOF) {
+        any = true;
+        ++offset_;
+        if (c == '\n') break;
+        if (c == '\0') {
+            ++line_number_;
+            fail_here("NUL byte in a text file: is this a binary file?");
+        }
+        line.push_back(static_cast<char>(c));
+    }
+    if (!any) return false;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    ++line_number_;
+    return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+AtomicOutput::AtomicOutput(const std::string& path) : path_(path) {
+    namespace fs = std::filesystem;
+    fs::path target(path);
+    fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) fail(path, "cannot write: folder " + dir.string() + " does not exist");
+    // A hidden temporary name in the same folder, so the final rename is atomic.
+    std::random_device rd;
+    for (int attempt = 0; attempt < 16 && !file_; ++attempt) {
+        temp_path_ = (dir / ("." + target.filename().string() + ".tmp" + std::to_string(rd() % 1000000))).string();
+        file_ = std::fopen(temp_path_.c_str(), "wbx");
+    }
+    if (!file_) fail(path, "cannot create a temporary file beside it: " + system_error_text());
+    std::setvbuf(file_, nullptr, _IOFBF, 1 << 20);
+}
+
+AtomicOutput::~AtomicOutput() {
+    if (file_) std::fclose(file_);
+    if (!committed_) std::remove(temp_path_.c_str());
+}
+
+void AtomicOutput::write(const void* data, size_t n) {
+    if (n && std::fwrite(data, 1, n, file_) != n) fail(path_, "write failed: " + system_error_text());
+    offset_ += n;
+}
+
+void AtomicOutput::patch(uint64_t offset, const void* data, size_t n) {
+    if (offset + n > offset_) fail(path_, "internal error: patch beyond the written data");
+    if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0 || std::fwrite(data, 1, n, file_) != n ||
+        std::fseek(file_, 0, SEEK_END) != 0)
+        fail(path_, "write failed: " + system_error_text());
+}
+
+void AtomicOutput::commit() {
+    if (committed_) return;
+    if (std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0) fail(path_, "write failed: " + system_error_text());
+    int closed = std::fclose(file_);
+    file_ = nullptr;
+    if (closed != 0) fail(path_, "write failed: " + system_error_text());
+    if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) fail(path_, "cannot move the finished file into place: " + system_error_text());
+    committed_ = true;
+}
+
+// ---------------------------------------------------------------------------------------------
+std::vector<uint8_t> read_head(const std::string& path, size_t n) {
+    BinaryInput in(path);
+    std::vector<uint8_t> head(std::min<uint64_t>(n, in.size()));
+    if (!head.empty()) in.read(head.data(), head.size(), "the start of the file");
+    return head;
+}
+
+uint64_t file_size(const std::string& path) {
+    std::error_code ec;
+    auto size = std::filesystem::file_size(path, ec);
+    if (ec) fail(path, "cannot open: " + ec.message());
+    return size;
+}
+
+namespace {
+template <class T> bool parse_number(std::string_view token, T& out) {
+    if (token.empty()) return false;
+    const char* begin = token.data();
+    const char* end = begin + token.size();
+    if (*begin == '+') ++begin;  // from_chars does not take a leading '+', files do
+    auto [ptr, ec] = std::from_chars(begin, end, out);
+    return ec == std::errc() && ptr == end;
+}
+}  // namespace
+
+bool parse_double(std::string_view token, double& out) { return parse_number(token, out); }
+bool parse_float(std::string_view token, float& out) { return parse_number(token, out); }
+
+std::vector<std::string_view> split_fields(std::string_view line, bool commas) {
+    std::vector<std::string_view> fields;
+    size_t i = 0, n = line.size();
+    auto is_space = [](char c) { return c == ' ' || c == '\t'; };
+    if (commas) {
+        while (true) {
+            size_t end = line.find(',', i);
+            std::string_view field = line.substr(i, end == std::string_view::npos ? n - i : end - i);
+            while (!field.empty() && is_space(field.front())) field.remove_prefix(1);
+            while (!field.empty() && is_space(field.back())) field.remove_suffix(1);
+            fields.push_back(field);
+            if (end == std::string_view::npos) break;
+            i = end + 1;
+        }
+        return fields;
+    }
+    while (i < n) {
+        while (i < n && is_space(line[i])) ++i;
+        size_t start = i;
+        while (i < n && !is_space(line[i])) ++i;
+        if (i > start) fields.push_back(line.substr(start, i - start));
+    }
+    return fields;
+}
+
+std::string format_float(float value) {
+    char buffer[64];
+    auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, ptr);
+}
+
+std::string format_double(double value) {
+    char buffer[64];
+    auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, ptr);
+}
+
+}  // namespace rayset

@@ -1,0 +1,118 @@
+// Files as the codecs see them: a buffered binary input that knows its byte offset, a text
+// input that knows its line number, and an output that appears only when it is complete.
+#pragma once
+
+#include "error.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rayset {
+
+// Sequential little-endian reads with the offset of every failure in the error message.
+class BinaryInput {
+public:
+    explicit BinaryInput(const std::string& path);
+    ~BinaryInput();
+    BinaryInput(const BinaryInput&) = delete;
+    BinaryInput& operator=(const BinaryInput&) = delete;
+
+    const std::string& path() const { return path_; }
+    uint64_t size() const { return size_; }
+    uint64_t offset() const { return offset_; }
+    uint64_t remaining() const { return size_ - offset_; }
+
+    void seek(uint64_t offset);
+    // Reads exactly n bytes or fails naming `what` was being read and where the file ended.
+    void read(void* out, size_t n, const char* what);
+    // Reads up to n bytes; returns how many (0 at the end).
+    size_t read_some(void* out, size_t n);
+
+    template <class T> T read(const char* what) {
+        T value;
+        read(&value, sizeof(T), what);  // little-endian host (x86_64, aarch64): static_assert in io.cpp
+        return value;
+    }
+
+    [[noreturn]] void fail_at(uint64_t offset, const std::string& what) const { rayset::fail(path_, Location::byte(offset), what); }
+    [[noreturn]] void fail_here(const std::string& what) const { fail_at(offset_, what); }
+
+private:
+    std::string path_;
+    std::FILE* file_ = nullptr;
+    uint64_t size_ = 0;
+    uint64_t offset_ = 0;
+};
+
+// Line-oriented text input; strips "\r\n" and "\n". Line numbers are 1-based.
+class TextInput {
+public:
+    explicit TextInput(const std::string& path);
+    ~TextInput();
+    TextInput(const TextInput&) = delete;
+    TextInput& operator=(const TextInput&) = delete;
+
+    const std::string& path() const { return path_; }
+    // Next line into `line`; false at the end of the file.
+    bool next(std::string& line);
+    uint64_t line_number() const { return line_number_; }  // of the line last returned
+    uint64_t offset() const { return offset_; }            // byte offset after it
+    uint64_t size() const { return size_; }
+
+    [[noreturn]] void fail_here(const std::string& what, uint32_t column = 0) const {
+        rayset::fail(path_, Location::line(line_number_, column), what);
+    }
+
+private:
+    std::string path_;
+    std::FILE* file_ = nullptr;
+    uint64_t size_ = 0;
+    uint64_t offset_ = 0;
+    uint64_t line_number_ = 0;
+};
+
+// Writes to a temporary file beside the target and renames it into place on commit(). If the
+// object is destroyed without commit() (an error was thrown), the temporary file is removed and
+// whatever was at the target path before is untouched.
+class AtomicOutput {
+public:
+    explicit AtomicOutput(const std::string& path);
+    ~AtomicOutput();
+    AtomicOutput(const AtomicOutput&) = delete;
+    AtomicOutput& operator=(const AtomicOutput&) = delete;
+
+    const std::string& path() const { return path_; }
+    void write(const void* data, size_t n);
+    void write(std::string_view text) { write(text.data(), text.size()); }
+    template <class T> void put(const T& value) { write(&value, sizeof(T)); }
+    // Overwrites bytes already written (for counts and totals known only at the end).
+    void patch(uint64_t offset, const void* data, size_t n);
+    uint64_t offset() const { return offset_; }
+    void commit();
+
+private:
+    std::string path_;
+    std::string temp_path_;
+    std::FILE* file_ = nullptr;
+    uint64_t offset_ = 0;
+    bool committed_ = false;
+};
+
+// Reads the first up-to-n bytes of a file (for format detection).
+std::vector<uint8_t> read_head(const std::string& path, size_t n);
+uint64_t file_size(const std::string& path);
+
+// Text <-> number helpers shared by the text codecs. Parses a whole token as a number; returns
+// false for anything else (trailing junk, empty, out of range). "nan" and "inf" parse.
+bool parse_double(std::string_view token, double& out);
+bool parse_float(std::string_view token, float& out);
+// Splits on spaces, tabs and (if commas) commas; empty fields between commas are kept.
+std::vector<std::string_view> split_fields(std::string_view line, bool commas = false);
+// Shortest decimal text that reads back to the same float (round trips are bit-exact).
+std::string format_float(float value);
+std::string format_double(double value);
+
+}  // namespace rayset

@@ -1,0 +1,130 @@
+// Streaming access to ray files of every supported format: open_rays() detects the format
+// from the content, validates every ray and scales relative fluxes; create_rays() writes any
+// format. Memory stays constant in the number of rays.
+#pragma once
+
+#include "error.h"
+#include "ray.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rayset {
+
+// What a codec hands out, before validation and scaling. Implemented once per format.
+class RayDecoder {
+public:
+    virtual ~RayDecoder() = default;
+    const RayHeader& header() const { return header_; }
+    // Appends up to max_rays rays (and their extras) to `chunk` after clearing it and setting
+    // chunk.first_index. Returns false when no ray is left.
+    virtual bool read(RayChunk& chunk, size_t max_rays) = 0;
+    // Where ray `index` is in the file, for error messages ("byte 36928", "line 14").
+    virtual Location locate(uint64_t index) const = 0;
+    // Per-ray fluxes that are relative by the format's definition (LightTools, Zemax, SPEOS):
+    // they are scaled to the stated total unless the user says otherwise.
+    virtual bool flux_is_relative() const { return false; }
+
+protected:
+    RayHeader header_;
+};
+
+// Writes one format. Call write() for every chunk, then finish(), which patches counts and
+// totals into the header and renames the file into place. Destroying an unfinished writer
+// leaves no file behind.
+class RayEncoder {
+public:
+    virtual ~RayEncoder() = default;
+    virtual void write(const RayChunk& chunk) = 0;
+    virtual void finish() = 0;
+    // Fields of the header the target format cannot hold (reported to the user).
+    const std::vector<std::string>& dropped() const { return dropped_; }
+
+protected:
+    std::vector<std::string> dropped_;
+};
+
+// Which total wins when the stated total and the sum of the rays disagree beyond rounding.
+enum class FluxPolicy {
+    format_default,  // relative formats: the stated total; TM-25 and CSV: the rays
+    stated,          // scale the rays to the total the header states
+    rays,            // keep the rays as they are
+};
+
+struct RayReadOptions {
+    FluxPolicy flux_policy = FluxPolicy::format_default;
+    // Directions whose length differs from 1 by more than this are an error.
+    float direction_tolerance = 1e-3f;
+    // Accept non-unit directions and normalise them instead of failing.
+    bool normalise_directions = false;
+    size_t chunk_size = 1 << 16;
+    std::optional<RayFormat> format;  // skip detection
+};
+
+// Summed fluxes as the reader hands them out (after scaling).
+struct RayTotals {
+    double radiant = 0, luminous = 0;
+    uint64_t rays = 0;
+    uint64_t zero_flux_rays = 0;
+};
+
+// The validating, scaling reader over a decoder.
+class RayReader {
+public:
+    RayReader(std::unique_ptr<RayDecoder> decoder, std::string path, RayReadOptions options);
+    ~RayReader();
+
+    const std::string& path() const { return path_; }
+    // The header with stated totals replaced by what the rays will sum to when the rays are
+    // scaled (stated_* keeps the file's own figures in file_header()).
+    const RayHeader& header() const { return header_; }
+    const RayHeader& file_header() const { return decoder_->header(); }
+    double radiant_scale() const { return radiant_scale_; }
+    double luminous_scale() const { return luminous_scale_; }
+
+    // Next chunk of validated rays; false at the end. Throws Error naming the ray's location.
+    bool read(RayChunk& chunk);
+    const RayTotals& totals() const { return totals_; }  // of the rays read so far
+    // Warnings found so far (stated total disagrees, zero-flux rays, ...), one line each.
+    const std::vector<std::string>& warnings() const { return warnings_; }
+    // Fraction of the file read, for progress bars.
+    double progress() const;
+
+private:
+    friend std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options);
+    void validate(RayChunk& chunk);
+
+    std::unique_ptr<RayDecoder> decoder_;
+    std::string path_;
+    RayReadOptions options_;
+    RayHeader header_;
+    double radiant_scale_ = 1, luminous_scale_ = 1;
+    RayTotals totals_;
+    std::vector<std::string> warnings_;
+};
+
+std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options = {});
+
+// Creates a writer of `format` at `path` for rays described by `header` (its unit, flux
+// columns, spectral kind and extras say what each ray carries).
+std::unique_ptr<RayEncoder> create_rays(const std::string& path, RayFormat format, const RayHeader& header);
+
+// Content-based detection (the .ray extension is ambiguous). Throws Error when no format fits.
+RayFormat detect_ray_format(const std::string& path);
+// Format from a name a user types or a file extension: "tm25", ".TM25RAY", "lighttools", ...
+std::optional<RayFormat> ray_format_from_name(const std::string& name);
+
+// Whether a stated total and the sum of the rays agree "to rounding": within 1e-4 relative,
+// which covers f32 totals and single-precision summation by other tools of up to ~10^7 rays.
+bool totals_agree(double stated, double sum);
+// The total an encoder writes into its header: the stated one when the rays agree with it (so
+// round trips are bit-exact), else the sum of the rays written (outputs are self-consistent).
+double total_to_write(double stated, double sum);
+
+// Streams every ray of `in` into `out`; `progress` (if set) is called with the fraction done.
+void copy_rays(RayReader& in, RayEncoder& out, const std::function<void(double)>& progress = {});
+
+}  // namespace rayset

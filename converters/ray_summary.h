@@ -1,0 +1,30 @@
+// What `rayconv info` tells about a ray file, gathered in one streaming pass.
+#pragma once
+
+#include "converters/ray_stream.h"
+
+#include <functional>
+
+namespace rayset {
+
+struct RaySummary {
+    uint64_t rays = 0;
+    double radiant = 0, luminous = 0;            // summed as read (after scaling)
+    double luminous_from_spectrum = std::nan(""); // radiant x V(lambda) where the spectrum is known
+    Vec3f min_origin, max_origin;                 // bounding box, header unit
+    float min_wavelength = kUnknown, max_wavelength = kUnknown;
+    uint64_t unknown_wavelength_rays = 0;
+    // Flux-weighted mean direction, and the share of the sphere that directions reach, on an
+    // equal-area partition into kCoverageCells cells (bands uniform in z times uniform in phi,
+    // each about 1.4 degrees across). The widest angle from the mean is measured to the centres
+    // of the reached cells, so it is exact to about one cell.
+    static constexpr int kZBands = 100, kPhiBands = 200, kCoverageCells = kZBands * kPhiBands;
+    Vec3f mean_direction;
+    double max_angle_from_mean_deg = 0;
+    double sphere_coverage = 0;                   // 0..1
+    uint64_t zero_flux_rays = 0;
+};
+
+RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& progress = {});
+
+}  // namespace rayset

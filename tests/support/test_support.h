@@ -1,0 +1,41 @@
+// Helpers shared by the tests: scratch folders, paths of the real sample files, running tools.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace rayset::test {
+
+// A fresh, empty folder for one test, removed when the object goes away.
+class ScratchDir {
+public:
+    ScratchDir();
+    ~ScratchDir();
+    const std::filesystem::path& path() const { return path_; }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+private:
+    std::filesystem::path path_;
+};
+
+// Path of a file in ../shared/data (e.g. "rayfiles/Cyl10k.1.tm25ray"); the calling test is
+// skipped with a clear message when the folder is not there (a fresh user machine).
+std::string shared_data(const std::string& relative);
+bool have_shared_data();
+
+// Runs a command line through the shell; returns its exit status and captures stdout+stderr.
+struct CommandResult { int status = -1; std::string output; };
+CommandResult run_command(const std::string& command_line);
+
+// Writes bytes to a file (for hand-made bad inputs).
+void write_file(const std::string& path, const std::string& bytes);
+std::string read_file(const std::string& path);
+
+}  // namespace rayset::test
+
+// Skips the current test when the shared real data is absent.
+#define RAYSET_REQUIRE_SHARED_DATA()                                                         \
+    do {                                                                                     \
+        if (!::rayset::test::have_shared_data())                                             \
+            GTEST_SKIP() << "../shared/data not found: real-data test skipped";              \
+    } while (0)
