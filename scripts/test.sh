@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Builds everything and runs every test, then builds the converters (the parsers of untrusted
+# files) with AddressSanitizer and UndefinedBehaviorSanitizer and runs their tests again.
+# Usage: scripts/test.sh        (installs missing Debian packages first)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+
+jobs=$(nproc)
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$jobs"
+# VTK tests need an X server: xvfb-run gives them one on machines without a display.
+xvfb-run -a ctest --test-dir build --output-on-failure -j "$jobs"
+
+cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DRAYSET_CONVERTERS_ONLY=ON -DRAYSET_SANITIZE=ON
+cmake --build build-sanitize -j "$jobs"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --test-dir build-sanitize --output-on-failure -j "$jobs"
