@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libopenvdb-dev libboost-iostreams-dev libceres-dev libopenexr-dev libvtk9-dev
   libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev nlohmann-json3-dev
-  libeigen3-dev xvfb xauth
+  libeigen3-dev xvfb xauth time
 )
 
 missing=()
