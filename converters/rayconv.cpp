@@ -90,11 +90,17 @@ int main(int argc, char** argv) {
         "  rayconv info LED.TM25RAY                       totals, bounding box, spectrum, directions\n"
         "  rayconv convert LED.TM25RAY LED.csv            any ray format to any other\n"
         "  rayconv convert lamp.ies lamp.ldt              IES <-> EULUMDAT\n"
+        "  rayconv farfield LED.TM25RAY -o LED.ies        far-field intensity of the rays\n"
+        "  rayconv emit lamp.ies -o lamp.tm25ray          rays drawn from an intensity distribution\n"
+        "  rayconv synth disk radius=1 flux=1 -o d.tm25ray  analytic source with known answers\n"
+        "  rayconv subsample | merge | transform ...      ray-set operations\n"
         "Run 'rayconv COMMAND --help' for the options of each command."};
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Help for every command");
     register_info(app);
     register_convert(app);
+    register_make(app);
+    register_ops(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

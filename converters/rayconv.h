@@ -29,5 +29,7 @@ RayFormat output_format(const std::string& path, const std::string& to);
 
 void register_info(CLI::App& app);
 void register_convert(CLI::App& app);
+void register_make(CLI::App& app);  // synth, emit, farfield
+void register_ops(CLI::App& app);   // subsample, merge, transform
 
 }  // namespace rayset::rayconv
