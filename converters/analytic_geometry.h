@@ -30,10 +30,11 @@ inline Vec3 normalized(Vec3 a) { return (1 / length(a)) * a; }
 // bit-identical wherever IEEE arithmetic is.
 void orthonormal_basis(Vec3 axis, Vec3& u, Vec3& v);
 
-// Irradiance at `point` on a receiver with unit `normal` from a plane convex-or-not simple
-// polygon of uniform Lambertian `radiance` that emits from one side only: the side from which
-// its vertices run counter-clockwise. Exact (Lambert's contour formula, see
-// docs/synthetic-sources.md), after clipping the polygon to the receiver's front half-space.
+// Irradiance at `point` on a receiver with unit `normal` from a simple planar polygon (convex or
+// not) of uniform Lambertian `radiance` that emits from one side only: the side from which its
+// vertices run counter-clockwise. Exact (Lambert's contour formula, see
+// docs/synthetic-sources.md), after clipping the polygon to the receiver's front half-space
+// (the zero-width bridges clipping leaves in a non-convex polygon cancel in the contour sum).
 double polygon_irradiance(double radiance, const std::vector<Vec3>& vertices, Vec3 point, Vec3 normal);
 
 // Irradiance from a one-sided Lambertian disk of `radius` centred at `centre` that emits into

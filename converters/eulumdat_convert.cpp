@@ -36,25 +36,25 @@ std::string one_line(const Photometry& p, const char* key) {
 // Numbers from an _LDT_ keyword: exactly n, or fail naming the keyword.
 std::vector<double> numbers_of(const std::string& path, const char* key, const std::string& value, size_t n) {
     std::vector<double> out;
+    bool all_numbers = true;
     for (auto field : split_fields(value)) {
-        double x;
-        if (!parse_double(field, x) || !std::isfinite(x)) out.clear(), out.resize(n + 1);
-        else out.push_back(x);
+        double x = 0;
+        all_numbers = all_numbers && parse_double(field, x) && std::isfinite(x);
+        out.push_back(x);
     }
-    if (out.size() != n)
+    if (!all_numbers || out.size() != n)
         fail(path, std::string("cannot write as EULUMDAT: keyword ") + key + " is '" + value + "': expected " +
                        std::to_string(n) + " numbers");
     return out;
 }
 
-bool equidistant(const std::vector<double>& a, double& step) {
-    step = 0;
-    if (a.size() < 2) return false;
+// Dc / Dg: the spacing of equidistant angles, 0 otherwise (and for a single angle).
+double spacing(const std::vector<double>& a) {
+    if (a.size() < 2) return 0;
     double d = a[1] - a[0];
     for (size_t i = 2; i < a.size(); ++i)
-        if (std::fabs(a[i] - a[i - 1] - d) > 1e-9 * std::max(1.0, d)) return false;
-    step = d;
-    return true;
+        if (std::fabs(a[i] - a[i - 1] - d) > 1e-9 * std::max(1.0, d)) return 0;
+    return d;
 }
 
 // Flux below the horizon (gamma 0..90) by the same quadrature as total_flux().
@@ -250,8 +250,8 @@ EulumdatFile eulumdat_from_photometry(const Photometry& p, const std::string& pa
     f.mc = int(circle.c.size());
     f.gamma_angles_deg = p.vertical_deg;
     f.ng = int(p.vertical_deg.size());
-    equidistant(f.c_angles_deg, f.dc);
-    equidistant(f.gamma_angles_deg, f.dg);
+    f.dc = spacing(f.c_angles_deg);
+    f.dg = spacing(f.gamma_angles_deg);
 
     const bool absolute = !(p.rated_lumens > 0);
     const double flux = p.total_flux();

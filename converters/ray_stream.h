@@ -120,8 +120,9 @@ std::optional<RayFormat> ray_format_from_name(const std::string& name);
 // Whether a stated total and the sum of the rays agree "to rounding": within 1e-4 relative,
 // which covers f32 totals and single-precision summation by other tools of up to ~10^7 rays.
 bool totals_agree(double stated, double sum);
-// The total an encoder writes into its header: the stated one when the rays agree with it (so
-// round trips are bit-exact), else the sum of the rays written (outputs are self-consistent).
+// The total an encoder of a relative format (whose total sets the rays' scale) writes: the
+// stated one when the rays agree with it (so round trips are bit-exact), else the sum of the rays
+// written, so the output means what was read. Absolute formats keep the stated total as it is.
 double total_to_write(double stated, double sum);
 
 // Streams every ray of `in` into `out`; `progress` (if set) is called with the fraction done.

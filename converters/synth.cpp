@@ -225,7 +225,9 @@ RayHeader synth_header(const analytic::Source& source, uint64_t ray_count, uint6
     h.stated_radiant = source.total_flux();
     source.describe_spectrum(h);
     h.has_luminous = options.luminous;
-    if (options.luminous) h.stated_luminous = source.luminous_flux();
+    // With a wavelength per ray the luminous total depends on how many rays each chip drew, so
+    // only the rays can state it (the writer sums them).
+    if (options.luminous && h.spectral != SpectralKind::per_ray_wavelength) h.stated_luminous = source.luminous_flux();
     h.creation_method = 0;
     const std::string what = source.name() + " " + source.parameters();
     const std::string run = "rays=" + std::to_string(ray_count) + " seed=" + std::to_string(seed);

@@ -42,7 +42,8 @@ struct SynthOptions {
 };
 
 // The header of the rays synthesize() writes: mm, radiant flux (and luminous), the source's
-// spectral kind, stated totals, text fields naming the source, its parameters, count and seed.
+// spectral kind, stated totals (no luminous total with a wavelength per ray: it depends on the
+// draw), text fields naming the source, its parameters, count and seed.
 RayHeader synth_header(const analytic::Source& source, uint64_t ray_count, uint64_t seed, const SynthOptions& options = {});
 
 // Writes ray_count rays of equal radiant flux total/ray_count (rounded to float once) drawn

@@ -264,6 +264,20 @@ TEST(EulumdatWrite, DerivesDffLorlAndIsymWhenThePhotometryIsNotFromLdt) {
     EXPECT_EQ(f.light_output_ratio_percent, 100);
 }
 
+TEST(EulumdatWrite, MalformedLdtKeywordIsNamed) {
+    Photometry p;
+    p.horizontal_deg = {0};
+    p.vertical_deg = {0, 90};
+    p.candela = {10, 5};
+    p.keywords["_LDT_LUMINOUS_HEIGHTS_MM"] = "1 2 x 4";
+    try {
+        eulumdat_from_photometry(p, "k.ldt");
+        FAIL() << "a malformed _LDT_ keyword was written";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), "k.ldt: cannot write as EULUMDAT: keyword _LDT_LUMINOUS_HEIGHTS_MM is '1 2 x 4': expected 4 numbers");
+    }
+}
+
 TEST(EulumdatWrite, RefusesTypeB) {
     Photometry p;
     p.type = PhotometricType::B;

@@ -211,6 +211,8 @@ TEST(Synthesize, HeaderDescribesTheRays) {
     EXPECT_EQ(hc.spectral, SpectralKind::per_ray_wavelength);
     EXPECT_EQ(hc.min_wavelength, 460.0f);
     EXPECT_EQ(hc.max_wavelength, 630.0f);
+    EXPECT_TRUE(std::isnan(hc.stated_luminous));  // depends on which chips the rays drew
+    EXPECT_DOUBLE_EQ(hc.stated_radiant, 1.0);  // 39 shares of 1/39 W
     const RayHeader plain = synth_header(*cluster, 10, 1, SynthOptions{false, 1, {}});
     EXPECT_FALSE(plain.has_luminous);
 }

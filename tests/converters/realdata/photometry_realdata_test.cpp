@@ -135,8 +135,9 @@ TEST(PhotometryRealData, TypeBFloodlight) {
     // Type B frame: the horizontal angle is the latitude toward the lateral polar axis (weight
     // cos H), the vertical angle the rotation about that axis. This gives 10707 lm, 1.0 % above
     // the stated 10601 lm; weighting cos V instead (the axes swapped) would give 11331 lm, 6.9 %
-    // off. Three quadratures of this grid agree within 0.3 %, so the 1 % is the lab's own rule;
-    // 2 % accepts it and still rejects the swapped frame.
+    // off. Other quadratures of this grid (exact bilinear, point trapezoid, cell mean) agree with
+    // ours within 0.3 %, so the 1 % is the lab's own rule; 2 % accepts it and still rejects the
+    // swapped frame.
     EXPECT_NEAR(p.total_flux(), 10601, 0.02 * 10601);
     EXPECT_THROW(write_photometry(testing::TempDir() + "/flood.ldt", p, PhotometryFormat::eulumdat), Error);
 }
