@@ -97,7 +97,7 @@ void print_rays(const json& j) {
     fmt::print("directions  mean ({:.4f}, {:.4f}, {:.4f}), within {:.1f} deg of it, {:.1f}% of the sphere reached\n",
                d["mean"][0].get<double>(), d["mean"][1].get<double>(), d["mean"][2].get<double>(),
                d["max_angle_from_mean_deg"].get<double>(), 100 * d["sphere_coverage"].get<double>());
-    for (const auto& [key, value] : j["text"].items()) fmt::print("{:<12}{}\n", key, value.get<std::string>());
+    for (const auto& [key, value] : j["text"].items()) fmt::print("{:<16}{}\n", key, value.get<std::string>());
 }
 
 const char* type_name(PhotometricType t) { return t == PhotometricType::A ? "A" : t == PhotometricType::B ? "B" : "C"; }
@@ -132,7 +132,7 @@ void info_photometry(const std::string& path, bool as_json) {
     fmt::print("flux        {:.6g} lm from the intensities", p.total_flux());
     if (p.rated_lumens > 0) fmt::print(", lamps rated {:.6g} lm", p.rated_lumens);
     fmt::print("\nmaximum     {:.6g} cd\n", p.max_candela());
-    for (const auto& [key, value] : p.keywords) fmt::print("{:<12}{}\n", key, value);
+    for (const auto& [key, value] : p.keywords) fmt::print("{:<16}{}\n", key, value);
 }
 
 }  // namespace

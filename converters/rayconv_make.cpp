@@ -33,6 +33,7 @@ void register_synth(CLI::App& app) {
         std::string source, out, to;
         std::vector<std::string> parameters;
         uint64_t rays = 1000000, seed = 1;
+        bool luminous = false;
     };
     auto args = std::make_shared<Args>();
     cmd->add_option("SOURCE", args->source, "disk, rectangle, sphere, lobe or cluster")->required();
@@ -41,12 +42,15 @@ void register_synth(CLI::App& app) {
     cmd->add_option("--to", args->to, "Output format (default from the extension; .tm25ray is TM-25)");
     cmd->add_option("--rays", args->rays, "Number of rays")->check(CLI::PositiveNumber);
     cmd->add_option("--seed", args->seed, "Random seed");
+    cmd->add_flag("--luminous", args->luminous,
+                  "Also store each ray's luminous flux (lm, from V(lambda)) where the format can hold both columns");
     cmd->callback([args] {
         auto source = make_source(args->source, parse_source_parameters(args->parameters));
         RayFormat format = output_format(args->out, args->to);
         ProgressBar bar("synthesising");
         SynthOptions options;
         options.progress = [&](double f) { bar.update(f); };
+        options.luminous = args->luminous;
         auto writer = create_rays(args->out, format, synth_header(*source, args->rays, args->seed, options));
         synthesize(*source, args->rays, args->seed, *writer, options);
         bar.done();
