@@ -23,7 +23,8 @@ struct Photometry {
     std::vector<double> candela;         // absolute cd, candela[h * vertical_deg.size() + v]
 
     // Lamp data. rated_lumens is the total rated lamp flux (lamps x lumens per lamp); NaN for
-    // absolute photometry (LM-63 lumens -1, EULUMDAT negative lamp count).
+    // absolute photometry (LM-63 lumens -1, EULUMDAT negative lamp count); writers treat any
+    // value not above zero as absolute.
     int lamp_count = 1;
     double rated_lumens = -1;
     double input_watts = 0;
