@@ -24,14 +24,8 @@ public:
     explicit LightToolsBinaryDecoder(const std::string& path) : in_(path) { parse_header(); }
 
     bool read(RayChunk& chunk, size_t max_rays) override {
-        chunk.clear();
-        chunk.first_index = next_;
-        if (next_ >= header_.ray_count) return false;
-        const size_t n = static_cast<size_t>(std::min<uint64_t>(std::max<size_t>(max_rays, 1), header_.ray_count - next_));
         const size_t columns = layout_.columns();
-        buffer_.resize(n * columns);
-        in_.read(buffer_.data(), buffer_.size() * sizeof(float), "a ray record");
-        chunk.rays.resize(n);
+        const size_t n = read_f32_records(in_, columns, header_.ray_count, max_rays, next_, buffer_, chunk);
         for (size_t i = 0; i < n; ++i) {
             const float* f = &buffer_[i * columns];
             Ray& ray = chunk.rays[i];
@@ -40,8 +34,7 @@ public:
             set_lighttools_flux(ray, layout_, f[6]);
             if (layout_.wavelength) ray.wavelength = f[7];
         }
-        next_ += n;
-        return true;
+        return n > 0;
     }
 
     Location locate(uint64_t index) const override { return Location::byte(kHeaderSize + index * record_bytes()); }

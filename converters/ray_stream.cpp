@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 
 namespace rayset {
 
@@ -104,6 +105,19 @@ bool totals_agree(double stated, double sum) {
 }
 
 double total_to_write(double stated, double sum) { return totals_agree(stated, sum) ? stated : sum; }
+
+size_t read_f32_records(BinaryInput& in, size_t columns, uint64_t count, size_t max_rays, uint64_t& next,
+                        std::vector<float>& records, RayChunk& chunk) {
+    chunk.clear();
+    chunk.first_index = next;
+    if (next >= count) return 0;
+    const size_t n = static_cast<size_t>(std::min<uint64_t>(std::max<size_t>(max_rays, 1), count - next));
+    records.resize(n * columns);
+    in.read(records.data(), records.size() * sizeof(float), "a ray record");
+    chunk.rays.resize(n);
+    next += n;
+    return n;
+}
 
 // ---------------------------------------------------------------------------------------------
 namespace {
@@ -207,50 +221,76 @@ bool RayReader::read(RayChunk& chunk) {
     return true;
 }
 
+namespace {
+// One comparison chain per value: false for NaN and infinities as well as out-of-range values.
+inline bool finite_float(float v) { return std::abs(v) <= std::numeric_limits<float>::max(); }
+inline bool flux_ok(float v) { return v >= 0 && v <= std::numeric_limits<float>::max(); }
+}  // namespace
+
 void RayReader::validate(RayChunk& chunk) {
-    const float tolerance = options_.direction_tolerance;
+    const double tolerance = options_.direction_tolerance;
+    // |d| within [1 - tol, 1 + tol] as a test on |d|^2, which needs no square root per ray.
+    const float min_length2 = float((1 - tolerance) * (1 - tolerance)), max_length2 = float((1 + tolerance) * (1 + tolerance));
     const bool radiant = header_.has_radiant, luminous = header_.has_luminous;
     const bool per_ray_table = header_.spectral == SpectralKind::per_ray_table;
-    const size_t tables = header_.spectral_tables.size();
+    const int32_t tables = static_cast<int32_t>(header_.spectral_tables.size());
+    const float radiant_scale = float(radiant_scale_), luminous_scale = float(luminous_scale_);
+    double radiant_sum = 0, luminous_sum = 0;
     for (size_t i = 0; i < chunk.rays.size(); ++i) {
         Ray& r = chunk.rays[i];
-        auto bad = [&](const std::string& what) {
-            uint64_t index = chunk.first_index + i;
-            fail(path_, decoder_->locate(index), fmt::format("ray {}: {}", index + 1, what));
-        };
-        if (!std::isfinite(r.origin.x) || !std::isfinite(r.origin.y) || !std::isfinite(r.origin.z))
-            bad(fmt::format("origin ({}, {}, {}) is not a finite number", r.origin.x, r.origin.y, r.origin.z));
         const Vec3f& d = r.direction;
-        if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z))
-            bad(fmt::format("direction ({}, {}, {}) is not a finite number", d.x, d.y, d.z));
-        double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
-        if (std::abs(length - 1) > tolerance) {
-            if (!options_.normalise_directions || length == 0)
-                bad(fmt::format("direction ({}, {}, {}) has length {:.6g}, not 1{}", d.x, d.y, d.z, length,
-                                length == 0 ? "" : " (--normalise accepts and renormalises such directions)"));
-            r.direction = {float(d.x / length), float(d.y / length), float(d.z / length)};
-        }
+        const float length2 = d.x * d.x + d.y * d.y + d.z * d.z;
+        bool ok = finite_float(r.origin.x) && finite_float(r.origin.y) && finite_float(r.origin.z) &&
+                  length2 >= min_length2 && length2 <= max_length2 && (!radiant || flux_ok(r.radiant)) &&
+                  (!luminous || flux_ok(r.luminous)) && (std::isnan(r.wavelength) || flux_ok(r.wavelength)) &&
+                  (!per_ray_table || (r.spectrum >= 0 && r.spectrum < tables));
+        if (!ok) check_ray(chunk, i);  // throws, or normalises an accepted direction
         bool zero = true;
         if (radiant) {
-            if (!std::isfinite(r.radiant) || r.radiant < 0) bad(fmt::format("radiant flux {} is not a non-negative number", r.radiant));
-            if (radiant_scale_ != 1) r.radiant = float(r.radiant * radiant_scale_);
-            totals_.radiant += r.radiant;
-            zero = zero && r.radiant == 0;
+            if (radiant_scale != 1) r.radiant = float(double(r.radiant) * radiant_scale_);
+            radiant_sum += r.radiant;
+            zero = r.radiant == 0;
         }
         if (luminous) {
-            if (!std::isfinite(r.luminous) || r.luminous < 0) bad(fmt::format("luminous flux {} is not a non-negative number", r.luminous));
-            if (luminous_scale_ != 1) r.luminous = float(r.luminous * luminous_scale_);
-            totals_.luminous += r.luminous;
+            if (luminous_scale != 1) r.luminous = float(double(r.luminous) * luminous_scale_);
+            luminous_sum += r.luminous;
             zero = zero && r.luminous == 0;
         }
-        // NaN means "unknown wavelength" in real files; anything else must be a wavelength.
-        if (!std::isnan(r.wavelength) && !(r.wavelength > 0 && std::isfinite(r.wavelength)))
-            bad(fmt::format("wavelength {} nm is not a positive number (NaN would mean unknown)", r.wavelength));
-        if (per_ray_table && (r.spectrum < 0 || size_t(r.spectrum) >= tables))
-            bad(fmt::format("spectrum index {} is outside the file's {} spectral tables", r.spectrum + 1, tables));
-        if (zero) ++totals_.zero_flux_rays;
+        totals_.zero_flux_rays += zero;
     }
+    totals_.radiant += radiant_sum;
+    totals_.luminous += luminous_sum;
     totals_.rays += chunk.rays.size();
+}
+
+// The slow path for a ray the fast test did not pass: says exactly what is wrong, or (for a
+// direction the user allowed with --normalise) fixes it.
+void RayReader::check_ray(RayChunk& chunk, size_t i) {
+    Ray& r = chunk.rays[i];
+    auto bad = [&](const std::string& what) {
+        uint64_t index = chunk.first_index + i;
+        fail(path_, decoder_->locate(index), fmt::format("ray {}: {}", index + 1, what));
+    };
+    if (!finite_float(r.origin.x) || !finite_float(r.origin.y) || !finite_float(r.origin.z))
+        bad(fmt::format("origin ({}, {}, {}) is not a finite number", r.origin.x, r.origin.y, r.origin.z));
+    const Vec3f& d = r.direction;
+    if (!finite_float(d.x) || !finite_float(d.y) || !finite_float(d.z))
+        bad(fmt::format("direction ({}, {}, {}) is not a finite number", d.x, d.y, d.z));
+    if (header_.has_radiant && !flux_ok(r.radiant)) bad(fmt::format("radiant flux {} is not a non-negative number", r.radiant));
+    if (header_.has_luminous && !flux_ok(r.luminous)) bad(fmt::format("luminous flux {} is not a non-negative number", r.luminous));
+    // NaN means "unknown wavelength" in real files; anything else must be a wavelength.
+    if (!std::isnan(r.wavelength) && !(r.wavelength > 0 && finite_float(r.wavelength)))
+        bad(fmt::format("wavelength {} nm is not a positive number (NaN would mean unknown)", r.wavelength));
+    const size_t tables = header_.spectral_tables.size();
+    if (header_.spectral == SpectralKind::per_ray_table && (r.spectrum < 0 || size_t(r.spectrum) >= tables))
+        bad(fmt::format("spectrum index {} is outside the file's {} spectral tables", r.spectrum + 1, tables));
+    const double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
+    if (std::abs(length - 1) > options_.direction_tolerance) {
+        if (!options_.normalise_directions || length == 0)
+            bad(fmt::format("direction ({}, {}, {}) has length {:.6g}, not 1{}", d.x, d.y, d.z, length,
+                            length == 0 ? "" : " (--normalise accepts and renormalises such directions)"));
+        r.direction = {float(d.x / length), float(d.y / length), float(d.z / length)};
+    }
 }
 
 std::unique_ptr<RayEncoder> create_rays(const std::string& path, RayFormat format, const RayHeader& header) {

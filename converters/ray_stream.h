@@ -96,6 +96,7 @@ public:
 private:
     friend std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options);
     void validate(RayChunk& chunk);
+    void check_ray(RayChunk& chunk, size_t index);
 
     std::unique_ptr<RayDecoder> decoder_;
     std::string path_;

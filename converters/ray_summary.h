@@ -14,10 +14,10 @@ struct RaySummary {
     Vec3f min_origin, max_origin;                 // bounding box, header unit
     float min_wavelength = kUnknown, max_wavelength = kUnknown;
     uint64_t unknown_wavelength_rays = 0;
-    // Flux-weighted mean direction, and the share of the sphere that directions reach, on an
-    // equal-area partition into kCoverageCells cells (bands uniform in z times uniform in phi,
-    // each about 1.4 degrees across). The widest angle from the mean is measured to the centres
-    // of the reached cells, so it is exact to about one cell.
+    // Flux-weighted mean direction, and the share of the sphere that directions reach, on a
+    // partition into kCoverageCells cells (bands uniform in z times 200 azimuth sectors, about
+    // 1.4 degrees across; the share adds the cells' exact solid angles). The widest angle from
+    // the mean is measured to the centres of the reached cells, so it is exact to about a cell.
     static constexpr int kZBands = 100, kPhiBands = 200, kCoverageCells = kZBands * kPhiBands;
     Vec3f mean_direction;
     double max_angle_from_mean_deg = 0;

@@ -34,23 +34,17 @@ public:
     explicit SpeosDecoder(const std::string& path) : in_(path) { parse_header(); }
 
     bool read(RayChunk& chunk, size_t max_rays) override {
-        chunk.clear();
-        chunk.first_index = next_;
-        if (next_ >= header_.ray_count) return false;
-        const size_t n = static_cast<size_t>(std::min<uint64_t>(std::max<size_t>(max_rays, 1), header_.ray_count - next_));
-        buffer_.resize(n * 8);
-        in_.read(buffer_.data(), buffer_.size() * sizeof(float), "a ray record");
-        chunk.rays.resize(n);
+        const size_t columns = 8;
+        const size_t n = read_f32_records(in_, columns, header_.ray_count, max_rays, next_, buffer_, chunk);
         for (size_t i = 0; i < n; ++i) {
-            const float* f = &buffer_[i * 8];
+            const float* f = &buffer_[i * columns];
             Ray& ray = chunk.rays[i];
             ray.origin = {f[0], f[1], f[2]};
             ray.direction = {f[3], f[4], f[5]};
             ray.wavelength = f[6];
             ray.radiant = f[7];
         }
-        next_ += n;
-        return true;
+        return n > 0;
     }
 
     Location locate(uint64_t index) const override { return Location::byte(kHeaderSize + index * kRecordSize); }

@@ -26,12 +26,13 @@ row() { # name seconds rss bytes
 }
 
 small=$((rays / 10))
-"$rayconv" synth disk radius=1 flux=1 wavelength=550 --rays "$rays" --seed 1 -o "$work/big.tm25ray"
-"$rayconv" synth disk radius=1 flux=1 wavelength=550 --rays "$small" --seed 1 -o "$work/small.tm25ray"
+"$rayconv" synth disk radius=1 flux=1 wavelength=550 --rays "$rays" --seed 1 -o "$work/big.tm25ray" 2>/dev/null
+"$rayconv" synth disk radius=1 flux=1 wavelength=550 --rays "$small" --seed 1 -o "$work/small.tm25ray" 2>/dev/null
 bytes=$(stat -c %s "$work/big.tm25ray")
 echo "file: $rays rays, $bytes bytes; $(nproc) cores"
 
 read -r s m < <(measure cat "$work/big.tm25ray"); row "cat > /dev/null" "$s" "$m" "$bytes"; cat_s=$s
+read -r s m < <(measure sh -c "cat '$work/big.tm25ray' | wc -c"); row "cat | wc -c (bytes through a pipe)" "$s" "$m" "$bytes"
 read -r s m < <(measure "$rayconv" info "$work/big.tm25ray"); row "rayconv info" "$s" "$m" "$bytes"; info_s=$s
 read -r s m < <(measure "$rayconv" convert "$work/big.tm25ray" "$work/out.tm25ray"); row "rayconv convert tm25 -> tm25" "$s" "$m" "$bytes"; conv_s=$s
 read -r s m < <(measure "$rayconv" convert "$work/big.tm25ray" "$work/out.ray" --to lighttools); row "rayconv convert tm25 -> lighttools" "$s" "$m" "$bytes"

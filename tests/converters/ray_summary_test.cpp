@@ -1,0 +1,69 @@
+// The one-pass summary behind `rayconv info`, on analytic sources whose answers are known.
+#include <gtest/gtest.h>
+
+#include "converters/ray_summary.h"
+#include "converters/synth.h"
+#include "support/test_support.h"
+
+#include <cmath>
+
+namespace {
+
+using namespace rayset;
+
+RaySummary summarise_source(const std::string& name, const SourceParameters& parameters, uint64_t rays,
+                            test::ScratchDir& dir) {
+    auto source = make_source(name, parameters);
+    const std::string path = dir.file(name + ".tm25ray");
+    SynthOptions radiant_only;  // luminous flux must then come from the spectrum
+    radiant_only.luminous = false;
+    auto out = create_rays(path, RayFormat::tm25, synth_header(*source, rays, 7, radiant_only));
+    synthesize(*source, rays, 7, *out, radiant_only);
+    auto reader = open_rays(path);
+    return summarise_rays(*reader);
+}
+
+TEST(RaySummary, SphereReachesEveryDirectionAndIsBoundedByItsRadius) {
+    test::ScratchDir dir;
+    // A Lambertian sphere's far field is isotropic: with 400k rays each of the 20000 cells
+    // expects 20 rays, so the chance that any cell is empty is below 20000 e^-20 = 4e-5.
+    RaySummary s = summarise_source("sphere", {{"radius", "2"}, {"flux", "3"}}, 400000, dir);
+    EXPECT_EQ(s.rays, 400000u);
+    EXPECT_NEAR(s.radiant, 3.0, 3.0 * 1e-6);
+    EXPECT_NEAR(s.sphere_coverage, 1.0, 1e-12);  // a sum of 20000 cell solid angles
+    // Origins on the surface: the box is the sphere's, reached to within 0.5% by 400k rays.
+    for (float lo : {s.min_origin.x, s.min_origin.y, s.min_origin.z}) {
+        EXPECT_GE(lo, -2.0f * (1 + 1e-6f));
+        EXPECT_LT(lo, -1.99f);
+    }
+    for (float hi : {s.max_origin.x, s.max_origin.y, s.max_origin.z}) {
+        EXPECT_LE(hi, 2.0f * (1 + 1e-6f));
+        EXPECT_GT(hi, 1.99f);
+    }
+    EXPECT_EQ(s.min_wavelength, 555.0f);
+    EXPECT_EQ(s.max_wavelength, 555.0f);
+}
+
+TEST(RaySummary, LambertianDiskCoversAHemisphereAroundPlusZ) {
+    test::ScratchDir dir;
+    RaySummary s = summarise_source("disk", {{"radius", "1"}}, 200000, dir);
+    // Mean direction of a cosine-weighted hemisphere: (0, 0, 1). Each transverse component of
+    // a ray has variance E[sin^2 theta cos^2 phi] = 1/4, so the mean of 2e5 rays has standard
+    // deviation 1/sqrt(8e5) = 0.0011; 5 sigma gives 0.0056 (two-sided 1 - 6e-7).
+    EXPECT_NEAR(s.mean_direction.x, 0, 0.0056);
+    EXPECT_NEAR(s.mean_direction.y, 0, 0.0056);
+    EXPECT_NEAR(s.mean_direction.z, 1, 1e-4);
+    // No ray goes below the disk's plane, so at most the upper half of the sphere is reached;
+    // near the horizon the cosine law leaves cells empty, but the upper 90% of z is full.
+    EXPECT_LE(s.sphere_coverage, 0.5 + 1e-12);
+    EXPECT_GE(s.sphere_coverage, 0.45);
+    // The widest direction lies at the horizon, measured to cell centres (a cell is < 1.5 deg).
+    EXPECT_GT(s.max_angle_from_mean_deg, 87.0);
+    EXPECT_LT(s.max_angle_from_mean_deg, 90.0);
+    EXPECT_EQ(s.min_origin.z, 0.0f);
+    EXPECT_EQ(s.max_origin.z, 0.0f);
+    // A single wavelength of 555 nm: luminous flux is 683.002 lm per W (V(555) = 1).
+    EXPECT_NEAR(s.luminous_from_spectrum, 683.002 * s.radiant, 1e-6 * 683.002);
+}
+
+}  // namespace
