@@ -139,7 +139,9 @@ void Tm25Encoder::check_spectra() {
 
 void Tm25Encoder::note_dropped() {
     const RayHeader& h = header_;
-    if (!h.description.empty()) dropped_.push_back("description");
+    // A description that one of the text fields already carries is not lost.
+    if (!h.description.empty() && std::find(h.text.begin(), h.text.end(), h.description) == h.text.end())
+        dropped_.push_back("description");
     if (h.far_field) dropped_.push_back("far-field flag (TM-25 rays always have origins)");
     if (!(h.data_origin == Vec3f{})) dropped_.push_back("data origin");
     const SourcePlacement& p = h.placement;

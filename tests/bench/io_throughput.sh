@@ -26,8 +26,8 @@ row() { # name seconds rss bytes
 }
 
 small=$((rays / 10))
-"$rayconv" synth disk radius=1 flux=1 wavelength=550 --rays "$rays" --seed 1 -o "$work/big.tm25ray" 2>/dev/null
-"$rayconv" synth disk radius=1 flux=1 wavelength=550 --rays "$small" --seed 1 -o "$work/small.tm25ray" 2>/dev/null
+"$rayconv" synth disk radius=1 flux=1 wavelength=550 --rays "$rays" --seed 1 -o "$work/big.tm25ray"
+"$rayconv" synth disk radius=1 flux=1 wavelength=550 --rays "$small" --seed 1 -o "$work/small.tm25ray"
 bytes=$(stat -c %s "$work/big.tm25ray")
 echo "file: $rays rays, $bytes bytes; $(nproc) cores"
 
