@@ -1,0 +1,87 @@
+#include "lightmodel/complex_source.h"
+
+#include <limits>
+
+namespace rayset::lightmodel {
+
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+}
+
+ComplexSource::ComplexSource(std::shared_ptr<const LightModel> model)
+    : model_(std::move(model)), volume_(*model_), body_(model_->spheres), diagram_flux_(model_->diagrams.size(), 0) {
+    for (const FluxCell& c : model_->flux_cells) diagram_flux_[size_t(c.intensity_cell)] += c.flux;
+}
+
+bool ComplexSource::intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hit) const {
+    BodyHit body_hit;
+    if (!body_.intersect(origin, dir, tmax, body_hit)) return false;
+    hit.t = body_hit.t;
+    hit.point = body_hit.point;
+    hit.normal = body_hit.normal;
+    return true;
+}
+
+// The radiance of the whole line through the emitting volume, not only beyond the hit: the
+// body marks where the source is seen, the volume says how bright. sample_Li uses the same
+// line integral, so both strategies estimate the same integral (MIS stays unbiased).
+double ComplexSource::L(Vec3 origin, Vec3 dir, const EmitterHit&, const SpectralSelect& select) const {
+    return volume_.radiance_toward(origin, dir, 0, kInfinity, select);
+}
+
+std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
+                                                 const SpectralSelect& select) const {
+    const VolumeSample point = volume_.sample_point(u_cell, u_voxel, u_point);
+    const Vec3 to_point = point.point - ref;
+    const double distance = length(to_point);
+    if (distance == 0) return std::nullopt;
+    LiSample s;
+    s.wi = (1 / distance) * to_point;
+    // Light counts only where a camera would see the body: the same condition BSDF sampling
+    // has (its ray must hit the body), so both estimate the same integrand.
+    BodyHit hit;
+    if (!body_.intersect(ref, s.wi, kInfinity, hit)) return std::nullopt;
+    s.distance = hit.t;
+    s.Li = volume_.radiance_toward(ref, s.wi, 0, kInfinity, select);
+    s.pdf = volume_.pdf_direction(ref, s.wi);
+    if (!(s.pdf > 0)) return std::nullopt;
+    return s;
+}
+
+double ComplexSource::pdf_Li(Vec3 ref, Vec3 wi) const { return volume_.pdf_direction(ref, wi); }
+
+LeSample ComplexSource::sample_Le(const double u[7], const SpectralSelect& select) const {
+    const VolumeSample point = volume_.sample_point(u[0], u[1], {u[2], u[3], u[4]});
+    const FluxCell& cell = model_->flux_cells[point.flux_cell];
+    const GoniometricDiagram& diagram = model_->diagrams[size_t(cell.intensity_cell)];
+    const DirectionSample dir = diagram.sample({u[5], u[6]});
+    LeSample s;
+    s.origin = point.point;
+    s.direction = dir.direction;
+    s.pdf_position = point.pdf_volume;
+    s.pdf_direction = dir.pdf;
+    s.cell = int32_t(point.flux_cell);
+    // Emitted radiance per volume eps = Phi_c D / V_c over pdf (Phi_c / Phi / V_c) D = Phi,
+    // scaled to the selected part of the cell's light.
+    s.flux = model_->total_flux() * volume_.cell_flux(point.flux_cell, select) / cell.flux;
+    return s;
+}
+
+void ComplexSource::pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position, double& pdf_direction) const {
+    pdf_position = volume_.pdf_point(origin);
+    const int32_t c = volume_.cell_at(origin);
+    pdf_direction = c < 0 ? 0 : model_->diagrams[size_t(model_->flux_cells[size_t(c)].intensity_cell)].pdf(direction);
+}
+
+double ComplexSource::intensity(Vec3 w, const SpectralSelect& select) const {
+    double sum = 0;
+    if (select.quantity == SpectralSelect::flux && select.band < 0) {
+        for (size_t k = 0; k < diagram_flux_.size(); ++k) sum += diagram_flux_[k] * model_->diagrams[k].pdf(w);
+        return sum;
+    }
+    for (uint32_t c = 0; c < model_->flux_cells.size(); ++c)
+        sum += volume_.cell_flux(c, select) * model_->diagrams[size_t(model_->flux_cells[c].intensity_cell)].pdf(w);
+    return sum;
+}
+
+}  // namespace rayset::lightmodel

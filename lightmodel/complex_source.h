@@ -1,0 +1,43 @@
+// The paper's complex light source behind the emitter interface: the sphere body for what
+// rays hit, the emission volume for what they see and for light sampling, the goniometric
+// diagrams for photon directions. How the three stay consistent: docs/light-model.md.
+#pragma once
+
+#include "lightmodel/emitter.h"
+#include "lightmodel/model.h"
+#include "lightmodel/sphere_body.h"
+
+#include <memory>
+
+namespace rayset::lightmodel {
+
+class ComplexSource : public Emitter {
+public:
+    explicit ComplexSource(std::shared_ptr<const LightModel> model);
+
+    const LightModel& model() const { return *model_; }
+    const SphereBody& body() const { return body_; }
+    const EmissionVolume& volume() const { return volume_; }
+
+    double phi(const SpectralSelect& select = {}) const override { return volume_.total(select); }
+    Box bounds() const override { return model_->bounds(); }
+    bool intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hit) const override;
+    double L(Vec3 origin, Vec3 dir, const EmitterHit& hit, const SpectralSelect& select = {}) const override;
+    std::optional<LiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
+                                      const SpectralSelect& select = {}) const override;
+    double pdf_Li(Vec3 ref, Vec3 wi) const override;
+    LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const override;
+    void pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position, double& pdf_direction) const override;
+
+    // Far-field radiant intensity of the model toward `w` (flux/sr): sum over flux cells of
+    // Phi_c D_k(w). What sample_Le emits and what the camera sees from far away.
+    double intensity(Vec3 w, const SpectralSelect& select = {}) const;
+
+private:
+    std::shared_ptr<const LightModel> model_;
+    EmissionVolume volume_;
+    SphereBody body_;
+    std::vector<double> diagram_flux_;  // flux of the cells that use each diagram
+};
+
+}  // namespace rayset::lightmodel

@@ -1,0 +1,120 @@
+#include "lightmodel/emission_volume.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rayset::lightmodel {
+
+int SpectralBins::bin_of(double wavelength_nm) const {
+    if (std::isnan(wavelength_nm)) return -1;
+    return std::clamp(int(std::floor((wavelength_nm - first_nm) / width_nm)), 0, count - 1);
+}
+
+double LightModel::total_flux() const {
+    double sum = 0;
+    for (const FluxCell& c : flux_cells) sum += c.flux;
+    return sum;
+}
+
+double LightModel::total_luminous() const {
+    double sum = 0;
+    for (const FluxCell& c : flux_cells) sum += c.luminous;
+    return sum;
+}
+
+Box LightModel::bounds() const {
+    Box box;
+    for (const Sphere& s : spheres) {
+        box.extend({s.x - s.r, s.y - s.r, s.z - s.r});
+        box.extend({s.x + s.r, s.y + s.r, s.z + s.r});
+    }
+    return box;
+}
+
+EmissionVolume::EmissionVolume(const LightModel& model) : model_(model) {
+    const LatticeFrame& frame = model.density_frame;
+    voxel_cell_.assign(size_t(frame.cell_count()), -1);
+    for (uint32_t c = 0; c < model.flux_cells.size(); ++c) {
+        const FluxCell& cell = model.flux_cells[c];
+        for (uint32_t v = cell.first_voxel; v < cell.first_voxel + cell.voxel_count; ++v)
+            voxel_cell_[size_t(frame.linear(model.voxels[v]))] = int32_t(c);
+    }
+    voxel_volume_ = std::pow(frame.cell_size(), 3);
+    cell_cdf_.resize(model.flux_cells.size());
+    double running = 0;
+    for (size_t c = 0; c < model.flux_cells.size(); ++c) {
+        running += model.flux_cells[c].flux;
+        cell_cdf_[c] = running;
+    }
+}
+
+double EmissionVolume::cell_flux(uint32_t cell, const SpectralSelect& select) const {
+    const FluxCell& c = model_.flux_cells[cell];
+    if (select.quantity == SpectralSelect::luminous) return c.luminous;
+    if (select.band >= 0) return c.flux * model_.spectra[size_t(cell) * model_.bins.count + select.band];
+    return c.flux;
+}
+
+double EmissionVolume::total(const SpectralSelect& select) const {
+    double sum = 0;
+    for (uint32_t c = 0; c < model_.flux_cells.size(); ++c) sum += cell_flux(c, select);
+    return sum;
+}
+
+double EmissionVolume::cell_volume(uint32_t cell) const {
+    return model_.flux_cells[cell].voxel_count * voxel_volume_;
+}
+
+double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
+                                       const SpectralSelect& select) const {
+    const Vec3 emitted = -dir;
+    double sum = 0;
+    traverse(origin, dir, tmin, tmax, [&](uint32_t c, double t0, double t1) {
+        const FluxCell& cell = model_.flux_cells[c];
+        const double d = model_.diagrams[size_t(cell.intensity_cell)].pdf(emitted);
+        sum += cell_flux(c, select) * d / cell_volume(c) * (t1 - t0);
+    });
+    return sum;
+}
+
+double EmissionVolume::pdf_direction(Vec3 origin, Vec3 dir) const {
+    const double total = cell_cdf_.empty() ? 0 : cell_cdf_.back();
+    double sum = 0;
+    traverse(origin, dir, 0, std::numeric_limits<double>::infinity(), [&](uint32_t c, double t0, double t1) {
+        const double density = model_.flux_cells[c].flux / total / cell_volume(c);
+        sum += density * (t1 * t1 * t1 - t0 * t0 * t0) / 3;
+    });
+    return sum;
+}
+
+VolumeSample EmissionVolume::sample_point(double u_cell, double u_voxel, Vec3 u_point) const {
+    const double target = u_cell * cell_cdf_.back();
+    const size_t c = std::min(size_t(std::upper_bound(cell_cdf_.begin(), cell_cdf_.end(), target) - cell_cdf_.begin()),
+                              cell_cdf_.size() - 1);
+    const FluxCell& cell = model_.flux_cells[c];
+    const uint32_t v = cell.first_voxel + std::min(uint32_t(u_voxel * cell.voxel_count), cell.voxel_count - 1);
+    const Vec3 lower = model_.density_frame.cell_lower(model_.voxels[v]);
+    const double h = model_.density_frame.cell_size();
+    VolumeSample s;
+    s.point = lower + Vec3{u_point.x * h, u_point.y * h, u_point.z * h};
+    s.flux_cell = uint32_t(c);
+    s.pdf_volume = cell.flux / cell_cdf_.back() / cell_volume(uint32_t(c));
+    return s;
+}
+
+int32_t EmissionVolume::cell_at(Vec3 point) const {
+    const LatticeFrame& frame = model_.density_frame;
+    const double h = frame.cell_size();
+    const Vec3 q = point - frame.origin();
+    const Coord c{int32_t(std::floor(q.x / h)), int32_t(std::floor(q.y / h)), int32_t(std::floor(q.z / h))};
+    if (!frame.contains(c)) return -1;
+    return voxel_cell_[size_t(frame.linear(c))];
+}
+
+double EmissionVolume::pdf_point(Vec3 point) const {
+    const int32_t c = cell_at(point);
+    if (c < 0) return 0;
+    return model_.flux_cells[size_t(c)].flux / cell_cdf_.back() / cell_volume(uint32_t(c));
+}
+
+}  // namespace rayset::lightmodel

@@ -1,0 +1,70 @@
+// The source as an emitting volume: the occupied voxels of the density lattice, each emitting
+// its flux cell's flux spread evenly over the cell's occupied volume, into the directions of
+// its intensity cell's goniometric diagram. Everything the emitter interface computes comes
+// from line integrals through this volume, which is what keeps direct visibility, light
+// sampling and photon emission consistent with each other (docs/light-model.md):
+//   radiance along a line   L(w)   = sum over voxels v crossed  eps_v(w) * length_v,
+//                            eps_v(w) = Phi_c D_k(w) / V_c      (flux/(sr mm^3))
+//   light-sampling density  p(w)   = sum over voxels v crossed  P_c / V_c * (t1^3 - t0^3) / 3
+// where c is the voxel's flux cell, k its intensity cell, V_c the occupied volume of c and
+// P_c = Phi_c / Phi the probability of choosing c. This is the paper's eq. 6 with dS (n.v)
+// replaced by the exact projected area of each voxel along v (volume / path length), which
+// never vanishes, so no grazing cosine is ever divided by.
+#pragma once
+
+#include "lightmodel/model.h"
+
+#include <vector>
+
+namespace rayset::lightmodel {
+
+// Which part of the emitted light a query is about.
+struct SpectralSelect {
+    enum Quantity { flux, luminous } quantity = flux;  // flux_unit, or lm (luminous flux)
+    int band = -1;                                     // >= 0: only that spectral bin of flux
+};
+
+struct VolumeSample {
+    Vec3 point;
+    uint32_t flux_cell = 0;
+    double pdf_volume = 0;  // mm^-3
+};
+
+class EmissionVolume {
+public:
+    explicit EmissionVolume(const LightModel& model);
+
+    const LightModel& model() const { return model_; }
+    double total(const SpectralSelect& select) const;
+    // Flux of one cell in the selected quantity.
+    double cell_flux(uint32_t cell, const SpectralSelect& select) const;
+
+    // Radiance arriving at `origin` from direction `dir`: the light the voxels on the segment
+    // origin + t dir, t in [tmin, tmax], emit toward -dir.
+    double radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax, const SpectralSelect& select) const;
+    // Solid-angle density at `origin` of the direction `dir` under sample_point().
+    double pdf_direction(Vec3 origin, Vec3 dir) const;
+
+    // A point of the volume with density proportional to the emission (cell by flux, then
+    // uniform in the cell's occupied voxels: the same distribution as rejection sampling of a
+    // point in the cell against the occupied body, without the rejected draws).
+    VolumeSample sample_point(double u_cell, double u_voxel, Vec3 u_point) const;
+    double pdf_point(Vec3 point) const;  // mm^-3, 0 outside the volume
+
+    // The flux cell of the occupied voxel holding `point`, -1 if none.
+    int32_t cell_at(Vec3 point) const;
+    double cell_volume(uint32_t cell) const;  // occupied volume, mm^3
+
+    // Visits the occupied voxels the segment crosses: f(flux_cell, t0, t1), in order.
+    template <class F> void traverse(Vec3 origin, Vec3 dir, double tmin, double tmax, F&& f) const;
+
+private:
+    const LightModel& model_;
+    std::vector<int32_t> voxel_cell_;   // dense density lattice -> flux cell, -1 empty
+    std::vector<double> cell_cdf_;      // over flux cells, by flux
+    double voxel_volume_ = 0;
+};
+
+}  // namespace rayset::lightmodel
+
+#include "lightmodel/emission_volume_traverse.h"

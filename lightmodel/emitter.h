@@ -1,0 +1,62 @@
+// The emitter interface the tracer uses for every light source built from rays: the paper's
+// complex model (ComplexSource) and the naive ray set of its Figure 1 (NaiveRaySource).
+// Modelled on pbrt-v4's Light (Phi, L, SampleLi/PDF_Li, SampleLe/PDF_Le) with small sample
+// records. Lengths mm; radiance in the selected quantity per (mm^2 sr).
+#pragma once
+
+#include "lightmodel/emission_volume.h"
+#include "lightmodel/lattice.h"
+
+#include <optional>
+
+namespace rayset::lightmodel {
+
+// A camera or BSDF ray that met the source body.
+struct EmitterHit {
+    double t = 0;
+    Vec3 point, normal;
+};
+
+// Light sampling from a shaded point: a direction toward the source with the radiance that
+// arrives along it and the solid-angle density it was drawn with.
+struct LiSample {
+    Vec3 wi;            // unit, from the shaded point toward the source
+    double distance = 0;  // to the body hit along wi (for the shadow ray)
+    double Li = 0;      // radiance arriving from wi
+    double pdf = 0;     // sr^-1
+};
+
+// Photon emission: where and in which direction a photon leaves, and the flux it carries
+// (already divided by the densities it was drawn with).
+struct LeSample {
+    Vec3 origin, direction;
+    double flux = 0;        // of the photon, in the selected quantity
+    double pdf_position = 0;  // mm^-3 (volume) or probability of the ray (naive)
+    double pdf_direction = 0; // sr^-1 (0: the direction is fixed, a delta)
+    int32_t cell = -1;        // flux cell (spectrum) of the origin; -1 naive
+};
+
+class Emitter {
+public:
+    virtual ~Emitter() = default;
+    virtual double phi(const SpectralSelect& select = {}) const = 0;
+    virtual Box bounds() const = 0;
+
+    // The body a camera ray sees; an emitter without one (the naive ray set) returns false.
+    virtual bool intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hit) const = 0;
+    // Radiance arriving at `origin` from direction `dir` whose ray met the body at `hit`.
+    virtual double L(Vec3 origin, Vec3 dir, const EmitterHit& hit, const SpectralSelect& select = {}) const = 0;
+
+    // Light sampling; nothing when the emitter cannot be sampled from `ref` (naive, or ref
+    // inside the source).
+    virtual std::optional<LiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
+                                              const SpectralSelect& select = {}) const = 0;
+    // Density of sample_Li drawing `wi` from `ref`, for MIS with BSDF sampling.
+    virtual double pdf_Li(Vec3 ref, Vec3 wi) const = 0;
+
+    // Photon emission from seven uniform numbers in [0, 1).
+    virtual LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const = 0;
+    virtual void pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position, double& pdf_direction) const = 0;
+};
+
+}  // namespace rayset::lightmodel

@@ -1,0 +1,87 @@
+// The complex light-source model of the paper (docs/light-model.md): what a build produces,
+// what a .vdb model file holds, and what the emitter interface queries. Plain data; the
+// algorithms live in model_build.cpp (build), model_file.cpp (store) and complex_source.cpp
+// (query).
+//
+// Units: lengths mm, flux in `flux_unit` (W, or lm for files that carry only luminous flux),
+// intensity flux/sr, radiance flux/(mm^2 sr).
+#pragma once
+
+#include "lightmodel/goniometric_diagram.h"
+#include "lightmodel/lattice.h"
+#include "lightmodel/sphere.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rayset::lightmodel {
+
+inline constexpr int kModelVersion = 1;
+
+// Every number of the paper is an option with its value as the default.
+struct ModelOptions {
+    int density_resolution = 0;        // 0: adapted to the ray count (adapted_resolution)
+    int max_density_resolution = 128;  // the paper's 128^3
+    int flux_resolution = 32;          // the paper's 32^3
+    int intensity_resolution = 5;      // the paper's 5^3
+    int max_spheres_per_cell = 16;     // the paper's 16
+    int samples_per_cell = 64;         // origins kept per boundary cell for the sphere fit
+    int diagram_resolution = 16;       // n x n cells of the equal-area octahedral square
+    double spectral_bin_nm = 10;       // width of the per-cell spectrum bins, 380..780 nm
+    int threads = 0;                   // 0: all cores
+    uint64_t seed = 1;                 // reservoir sampling of origins
+    bool progress = false;             // progress bar on stderr
+};
+
+// Wavelength bins of the per-cell spectra: [first + i*width, first + (i+1)*width).
+struct SpectralBins {
+    double first_nm = 380, width_nm = 10;
+    int count = 40;
+    int bin_of(double wavelength_nm) const;  // clamped to the range; -1 for NaN
+    double centre(int bin) const { return first_nm + (bin + 0.5) * width_nm; }
+};
+
+// A cell of the flux lattice that holds light: where it is, what it emits, and which density
+// voxels of the body it spreads that over (uniformly: the emission density is flux / volume).
+struct FluxCell {
+    Coord coord{};
+    double flux = 0;              // flux_unit
+    double luminous = 0;          // lm (NaN when the file gives no way to know it)
+    int32_t intensity_cell = -1;  // index into LightModel::diagrams
+    uint32_t first_voxel = 0;     // range into LightModel::voxels
+    uint32_t voxel_count = 0;
+};
+
+struct ModelSource {
+    std::string path;             // ray file the model was built from
+    std::string format;
+    uint64_t rays = 0;
+    double radiant = 0, luminous = 0;  // totals of the rays as read (W, lm; NaN if unknown)
+    std::string unit = "mm";           // length unit of the file (the model is always in mm)
+};
+
+struct LightModel {
+    ModelSource source;
+    ModelOptions options;
+    std::string flux_unit = "W";
+
+    LatticeFrame density_frame, flux_frame, intensity_frame;
+    // Occupied density voxels, grouped by flux cell (FluxCell::first_voxel/voxel_count).
+    std::vector<Coord> voxels;
+    std::vector<float> voxel_density;   // ray count of each voxel (for viewing)
+    std::vector<Coord> boundary_voxels;
+    std::vector<FluxCell> flux_cells;
+    SpectralBins bins;
+    std::vector<float> spectra;         // flux_cells.size() x bins.count, fractions summing to 1
+                                        // (all zero when wavelengths are unknown)
+    std::vector<Coord> diagram_cells;   // intensity-lattice coordinate of each diagram
+    std::vector<GoniometricDiagram> diagrams;
+    std::vector<Sphere> spheres;
+
+    double total_flux() const;
+    double total_luminous() const;
+    Box bounds() const;                 // of the body (spheres), mm
+};
+
+}  // namespace rayset::lightmodel

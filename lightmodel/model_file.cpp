@@ -1,0 +1,356 @@
+#include "lightmodel/model_file.h"
+
+#include "converters/error.h"
+
+#include <openvdb/openvdb.h>
+#include <openvdb/points/PointAttribute.h>
+#include <openvdb/points/PointConversion.h>
+#include <openvdb/points/PointDataGrid.h>
+#include <openvdb/tools/PointIndexGrid.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <sstream>
+
+namespace rayset::lightmodel {
+
+namespace {
+
+void initialise_openvdb() {
+    static std::once_flag once;
+    std::call_once(once, [] { openvdb::initialize(); });
+}
+
+// Index space = lattice cells, voxel centres at cell centres (as DensityLattice does).
+openvdb::math::Transform::Ptr frame_transform(const LatticeFrame& frame) {
+    auto t = openvdb::math::Transform::createLinearTransform(frame.cell_size());
+    const Vec3 o = frame.origin();
+    const double half = 0.5 * frame.cell_size();
+    t->postTranslate(openvdb::Vec3d(o.x + half, o.y + half, o.z + half));
+    return t;
+}
+
+std::string frame_text(const LatticeFrame& f) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %d %d %d", f.resolution(), f.origin().x, f.origin().y,
+                  f.origin().z, f.cell_size(), f.dims()[0], f.dims()[1], f.dims()[2]);
+    return buf;
+}
+
+LatticeFrame parse_frame(const std::string& text, const std::string& path, const std::string& name) {
+    std::istringstream in(text);
+    int resolution = 0;
+    Vec3 origin;
+    double cell = 0;
+    std::array<int32_t, 3> dims{};
+    if (!(in >> resolution >> origin.x >> origin.y >> origin.z >> cell >> dims[0] >> dims[1] >> dims[2]) || cell <= 0 ||
+        dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0)
+        throw Error(path + ": metadata '" + name + "' is not a lattice frame: '" + text + "'");
+    return LatticeFrame::from_parts(resolution, origin, cell, dims);
+}
+
+openvdb::Coord vdb(const Coord& c) { return openvdb::Coord(c[0], c[1], c[2]); }
+
+template <class GridT>
+typename GridT::Ptr find_grid(const openvdb::GridPtrVecPtr& grids, const std::string& name, const std::string& path) {
+    for (const auto& g : *grids)
+        if (g->getName() == name)
+            if (auto typed = openvdb::gridPtrCast<GridT>(g)) return typed;
+    throw Error(path + ": not a rayset model: grid '" + name + "' is missing (is this a model written by raymodel?)");
+}
+
+openvdb::points::PointDataGrid::Ptr sphere_grid(const std::vector<Sphere>& spheres, double voxel_size) {
+    using namespace openvdb::points;
+    std::vector<openvdb::Vec3R> positions;
+    std::vector<float> radii;
+    positions.reserve(spheres.size());
+    for (const Sphere& s : spheres) {
+        positions.emplace_back(s.x, s.y, s.z);
+        radii.push_back(s.r);
+    }
+    const PointAttributeVector<openvdb::Vec3R> position_wrapper(positions);
+    auto transform = openvdb::math::Transform::createLinearTransform(voxel_size);
+    auto index = openvdb::tools::createPointIndexGrid<openvdb::tools::PointIndexGrid>(position_wrapper, *transform);
+    auto grid = createPointDataGrid<NullCodec, PointDataGrid>(*index, position_wrapper, *transform);
+    appendAttribute<float>(grid->tree(), "radius");
+    const PointAttributeVector<float> radius_wrapper(radii);
+    populateAttribute<PointDataTree, openvdb::tools::PointIndexTree, PointAttributeVector<float>>(
+        grid->tree(), index->tree(), "radius", radius_wrapper);
+    grid->setName("spheres");
+    return grid;
+}
+
+std::vector<Sphere> read_spheres(const openvdb::points::PointDataGrid& grid) {
+    using namespace openvdb::points;
+    std::vector<Sphere> spheres;
+    for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) {
+        const AttributeHandle<openvdb::Vec3f> position(leaf->constAttributeArray("P"));
+        const AttributeHandle<float> radius(leaf->constAttributeArray("radius"));
+        for (auto i = leaf->beginIndexOn(); i; ++i) {
+            const openvdb::Vec3d world = grid.transform().indexToWorld(position.get(*i) + i.getCoord().asVec3d());
+            spheres.push_back({float(world.x()), float(world.y()), float(world.z()), radius.get(*i)});
+        }
+    }
+    return spheres;
+}
+
+}  // namespace
+
+void write_model(const LightModel& model, const std::string& path) {
+    initialise_openvdb();
+    openvdb::GridPtrVec grids;
+
+    auto density = openvdb::FloatGrid::create(0.f);
+    density->setName("density");
+    density->setTransform(frame_transform(model.density_frame));
+    density->setGridClass(openvdb::GRID_FOG_VOLUME);
+    {
+        auto acc = density->getAccessor();
+        for (size_t v = 0; v < model.voxels.size(); ++v) acc.setValue(vdb(model.voxels[v]), model.voxel_density[v]);
+    }
+    grids.push_back(density);
+
+    auto boundary = openvdb::BoolGrid::create(false);
+    boundary->setName("boundary");
+    boundary->setTransform(frame_transform(model.density_frame));
+    {
+        auto acc = boundary->getAccessor();
+        for (const Coord& c : model.boundary_voxels) acc.setValue(vdb(c), true);
+    }
+    grids.push_back(boundary);
+
+    auto flux = openvdb::DoubleGrid::create(0.0);
+    flux->setName("flux");
+    flux->setTransform(frame_transform(model.flux_frame));
+    auto luminous = openvdb::DoubleGrid::create(0.0);
+    luminous->setName("luminous");
+    luminous->setTransform(frame_transform(model.flux_frame));
+    {
+        auto fa = flux->getAccessor();
+        auto la = luminous->getAccessor();
+        for (const FluxCell& c : model.flux_cells) {
+            fa.setValue(vdb(c.coord), c.flux);
+            la.setValue(vdb(c.coord), c.luminous);
+        }
+    }
+    grids.push_back(flux);
+    grids.push_back(luminous);
+
+    // Index-space tables: voxel (cell, bin, 0) of the spectra, (a, b, diagram) of the diagrams.
+    auto spectra = openvdb::FloatGrid::create(0.f);
+    spectra->setName("spectra");
+    {
+        auto acc = spectra->getAccessor();
+        for (size_t c = 0; c < model.flux_cells.size(); ++c)
+            for (int b = 0; b < model.bins.count; ++b)
+                acc.setValue(openvdb::Coord(int(c), b, 0), model.spectra[c * size_t(model.bins.count) + size_t(b)]);
+    }
+    grids.push_back(spectra);
+
+    auto intensity_cell = openvdb::Int32Grid::create(-1);
+    intensity_cell->setName("intensity_cell");
+    intensity_cell->setTransform(frame_transform(model.intensity_frame));
+    auto diagrams = openvdb::FloatGrid::create(0.f);
+    diagrams->setName("diagrams");
+    {
+        auto ia = intensity_cell->getAccessor();
+        auto da = diagrams->getAccessor();
+        for (size_t k = 0; k < model.diagrams.size(); ++k) {
+            ia.setValue(vdb(model.diagram_cells[k]), int32_t(k));
+            const std::vector<float> data = model.diagrams[k].serialize();
+            for (size_t i = 0; i < data.size(); ++i) da.setValue(openvdb::Coord(int(i), int(k), 0), data[i]);
+        }
+    }
+    grids.push_back(intensity_cell);
+    grids.push_back(diagrams);
+
+    grids.push_back(sphere_grid(model.spheres, model.density_frame.cell_size()));
+
+    openvdb::MetaMap meta;
+    meta.insertMeta("rayset_model_version", openvdb::Int32Metadata(kModelVersion));
+    meta.insertMeta("source_path", openvdb::StringMetadata(model.source.path));
+    meta.insertMeta("source_format", openvdb::StringMetadata(model.source.format));
+    meta.insertMeta("source_unit", openvdb::StringMetadata(model.source.unit));
+    meta.insertMeta("source_rays", openvdb::Int64Metadata(int64_t(model.source.rays)));
+    meta.insertMeta("source_radiant_W", openvdb::DoubleMetadata(model.source.radiant));
+    meta.insertMeta("source_luminous_lm", openvdb::DoubleMetadata(model.source.luminous));
+    meta.insertMeta("flux_unit", openvdb::StringMetadata(model.flux_unit));
+    meta.insertMeta("density_frame", openvdb::StringMetadata(frame_text(model.density_frame)));
+    meta.insertMeta("flux_frame", openvdb::StringMetadata(frame_text(model.flux_frame)));
+    meta.insertMeta("intensity_frame", openvdb::StringMetadata(frame_text(model.intensity_frame)));
+    meta.insertMeta("spectral_bins_nm", openvdb::Vec3DMetadata(
+                                            openvdb::Vec3d(model.bins.first_nm, model.bins.width_nm, model.bins.count)));
+    const ModelOptions& o = model.options;
+    meta.insertMeta("build_options",
+                    openvdb::StringMetadata(
+                        "density_resolution=" + std::to_string(o.density_resolution) +
+                        " max_density_resolution=" + std::to_string(o.max_density_resolution) +
+                        " flux_resolution=" + std::to_string(o.flux_resolution) +
+                        " intensity_resolution=" + std::to_string(o.intensity_resolution) +
+                        " max_spheres_per_cell=" + std::to_string(o.max_spheres_per_cell) +
+                        " samples_per_cell=" + std::to_string(o.samples_per_cell) +
+                        " diagram_resolution=" + std::to_string(o.diagram_resolution) +
+                        " seed=" + std::to_string(o.seed)));
+
+    // Written beside the target and renamed into place: no half-written model on failure.
+    const std::filesystem::path target(path);
+    const std::filesystem::path temp = target.parent_path() / ("." + target.filename().string() + ".partial");
+    try {
+        openvdb::io::File file(temp.string());
+        file.setCompression(openvdb::io::COMPRESS_BLOSC);
+        file.write(grids, meta);
+        file.close();
+        std::filesystem::rename(temp, target);
+    } catch (const std::exception& e) {
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
+        throw Error(path + ": cannot write the model: " + e.what());
+    }
+}
+
+LightModel read_model(const std::string& path) {
+    initialise_openvdb();
+    openvdb::GridPtrVecPtr grids;
+    openvdb::MetaMap::Ptr meta;
+    try {
+        openvdb::io::File file(path);
+        file.open();
+        grids = file.getGrids();
+        meta = file.getMetadata();
+        file.close();
+    } catch (const std::exception& e) {
+        throw Error(path + ": cannot read as an OpenVDB model file: " + e.what());
+    }
+    auto text = [&](const std::string& name) {
+        auto m = meta->getMetadata<openvdb::StringMetadata>(name);
+        if (!m) throw Error(path + ": not a rayset model: metadata '" + name + "' is missing");
+        return m->value();
+    };
+    auto version = meta->getMetadata<openvdb::Int32Metadata>("rayset_model_version");
+    if (!version) throw Error(path + ": not a rayset model (no rayset_model_version metadata)");
+    if (version->value() != kModelVersion)
+        throw Error(path + ": model version " + std::to_string(version->value()) + ", this raymodel reads version " +
+                    std::to_string(kModelVersion) + ": rebuild the model with raymodel build");
+
+    LightModel model;
+    model.source.path = text("source_path");
+    model.source.format = text("source_format");
+    model.source.unit = text("source_unit");
+    model.flux_unit = text("flux_unit");
+    if (auto m = meta->getMetadata<openvdb::Int64Metadata>("source_rays")) model.source.rays = uint64_t(m->value());
+    if (auto m = meta->getMetadata<openvdb::DoubleMetadata>("source_radiant_W")) model.source.radiant = m->value();
+    if (auto m = meta->getMetadata<openvdb::DoubleMetadata>("source_luminous_lm")) model.source.luminous = m->value();
+    model.density_frame = parse_frame(text("density_frame"), path, "density_frame");
+    model.flux_frame = parse_frame(text("flux_frame"), path, "flux_frame");
+    model.intensity_frame = parse_frame(text("intensity_frame"), path, "intensity_frame");
+    if (auto m = meta->getMetadata<openvdb::Vec3DMetadata>("spectral_bins_nm")) {
+        model.bins.first_nm = m->value().x();
+        model.bins.width_nm = m->value().y();
+        model.bins.count = int(m->value().z());
+    }
+    std::istringstream options(text("build_options"));
+    for (std::string kv; options >> kv;) {
+        const auto eq = kv.find('=');
+        const std::string key = kv.substr(0, eq);
+        const long long value = std::stoll(kv.substr(eq + 1));
+        ModelOptions& o = model.options;
+        if (key == "density_resolution") o.density_resolution = int(value);
+        else if (key == "max_density_resolution") o.max_density_resolution = int(value);
+        else if (key == "flux_resolution") o.flux_resolution = int(value);
+        else if (key == "intensity_resolution") o.intensity_resolution = int(value);
+        else if (key == "max_spheres_per_cell") o.max_spheres_per_cell = int(value);
+        else if (key == "samples_per_cell") o.samples_per_cell = int(value);
+        else if (key == "diagram_resolution") o.diagram_resolution = int(value);
+        else if (key == "seed") o.seed = uint64_t(value);
+    }
+
+    // Diagrams, in index order.
+    auto intensity_cell = find_grid<openvdb::Int32Grid>(grids, "intensity_cell", path);
+    auto diagram_grid = find_grid<openvdb::FloatGrid>(grids, "diagrams", path);
+    std::vector<std::vector<float>> diagram_data;
+    for (auto it = diagram_grid->cbeginValueOn(); it; ++it) {
+        const size_t k = size_t(it.getCoord().y()), i = size_t(it.getCoord().x());
+        if (diagram_data.size() <= k) diagram_data.resize(k + 1);
+        if (diagram_data[k].size() <= i) diagram_data[k].resize(i + 1, 0.f);
+        diagram_data[k][i] = *it;
+    }
+    model.diagram_cells.resize(diagram_data.size());
+    for (auto it = intensity_cell->cbeginValueOn(); it; ++it) {
+        if (*it < 0 || size_t(*it) >= diagram_data.size()) throw Error(path + ": intensity_cell names a missing diagram");
+        model.diagram_cells[size_t(*it)] = {it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
+    }
+    for (const auto& data : diagram_data) {
+        try {
+            model.diagrams.push_back(GoniometricDiagram::deserialize(data));
+        } catch (const std::exception& e) {
+            throw Error(path + ": a goniometric diagram is malformed: " + e.what());
+        }
+    }
+
+    // Flux cells in the order of their linear index, as the build made them.
+    auto flux = find_grid<openvdb::DoubleGrid>(grids, "flux", path);
+    auto luminous = find_grid<openvdb::DoubleGrid>(grids, "luminous", path);
+    std::vector<std::pair<int64_t, FluxCell>> cells;
+    {
+        auto la = luminous->getConstAccessor();
+        for (auto it = flux->cbeginValueOn(); it; ++it) {
+            FluxCell c;
+            c.coord = {it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
+            c.flux = *it;
+            c.luminous = la.getValue(it.getCoord());
+            cells.emplace_back(model.flux_frame.linear(c.coord), c);
+        }
+    }
+    std::sort(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::map<int64_t, size_t> cell_index;
+    for (const auto& [linear, cell] : cells) {
+        cell_index[linear] = model.flux_cells.size();
+        model.flux_cells.push_back(cell);
+    }
+
+    // Voxels grouped by flux cell, in the density grid's order (as the build grouped them).
+    auto density = find_grid<openvdb::FloatGrid>(grids, "density", path);
+    std::vector<std::vector<std::pair<Coord, float>>> grouped(model.flux_cells.size());
+    {
+        auto ia = intensity_cell->getConstAccessor();
+        for (auto it = density->cbeginValueOn(); it; ++it) {
+            const Coord v{it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
+            const Vec3 centre = model.density_frame.cell_centre(v);
+            const auto found = cell_index.find(model.flux_frame.linear(model.flux_frame.cell_of(centre)));
+            if (found == cell_index.end()) continue;  // a voxel whose rays carried no flux
+            grouped[found->second].emplace_back(v, *it);
+            FluxCell& cell = model.flux_cells[found->second];
+            if (cell.intensity_cell < 0) cell.intensity_cell = ia.getValue(vdb(model.intensity_frame.cell_of(centre)));
+        }
+    }
+    for (size_t c = 0; c < grouped.size(); ++c) {
+        FluxCell& cell = model.flux_cells[c];
+        if (grouped[c].empty() || cell.intensity_cell < 0 || size_t(cell.intensity_cell) >= model.diagrams.size())
+            throw Error(path + ": flux cell " + std::to_string(c) + " has no voxels or no diagram: the file is inconsistent");
+        cell.first_voxel = uint32_t(model.voxels.size());
+        cell.voxel_count = uint32_t(grouped[c].size());
+        for (const auto& [v, count] : grouped[c]) {
+            model.voxels.push_back(v);
+            model.voxel_density.push_back(count);
+        }
+    }
+
+    auto boundary = find_grid<openvdb::BoolGrid>(grids, "boundary", path);
+    for (auto it = boundary->cbeginValueOn(); it; ++it)
+        model.boundary_voxels.push_back({it.getCoord().x(), it.getCoord().y(), it.getCoord().z()});
+
+    auto spectra = find_grid<openvdb::FloatGrid>(grids, "spectra", path);
+    model.spectra.assign(model.flux_cells.size() * size_t(model.bins.count), 0.f);
+    for (auto it = spectra->cbeginValueOn(); it; ++it) {
+        const size_t c = size_t(it.getCoord().x()), b = size_t(it.getCoord().y());
+        if (c < model.flux_cells.size() && b < size_t(model.bins.count)) model.spectra[c * size_t(model.bins.count) + b] = *it;
+    }
+
+    model.spheres = read_spheres(*find_grid<openvdb::points::PointDataGrid>(grids, "spheres", path));
+    return model;
+}
+
+}  // namespace rayset::lightmodel

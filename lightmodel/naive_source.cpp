@@ -1,0 +1,59 @@
+#include "lightmodel/naive_source.h"
+
+#include "converters/ray_stream.h"
+#include "converters/spectrum.h"
+
+#include <algorithm>
+
+namespace rayset::lightmodel {
+
+NaiveRaySource::NaiveRaySource(const std::string& ray_file) {
+    auto reader = open_rays(ray_file);
+    const RayHeader& header = reader->header();
+    const PhotometricWeights photometric(header);
+    const double scale = millimetres_per(header.unit);
+    RayChunk chunk;
+    double running = 0;
+    while (reader->read(chunk)) {
+        for (const Ray& r : chunk.rays) {
+            const Vec3 o{r.origin.x * scale, r.origin.y * scale, r.origin.z * scale};
+            origins_.push_back(o);
+            directions_.push_back({r.direction.x, r.direction.y, r.direction.z});
+            const double phi = header.has_radiant ? r.radiant : r.luminous;
+            flux_.push_back(float(phi));
+            luminous_.push_back(photometric.luminous_known() ? float(photometric.luminous(r)) : 0.f);
+            const float wl = header.spectral == SpectralKind::single_wavelength ? header.single_wavelength : r.wavelength;
+            band_.push_back(int16_t(bins_.bin_of(wl)));
+            running += phi;
+            cdf_.push_back(running);
+            bounds_.extend(o);
+        }
+    }
+    if (cdf_.empty() || !(running > 0)) throw Error(ray_file + ": no rays with flux to emit");
+}
+
+double NaiveRaySource::phi(const SpectralSelect& select) const {
+    double sum = 0;
+    for (size_t i = 0; i < flux_.size(); ++i) {
+        if (select.quantity == SpectralSelect::luminous) sum += luminous_[i];
+        else if (select.band < 0 || band_[i] == select.band) sum += flux_[i];
+    }
+    return sum;
+}
+
+LeSample NaiveRaySource::sample_Le(const double u[7], const SpectralSelect& select) const {
+    const size_t i = std::min(size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u[0] * cdf_.back()) - cdf_.begin()),
+                              cdf_.size() - 1);
+    LeSample s;
+    s.origin = origins_[i];
+    s.direction = directions_[i];
+    s.pdf_position = flux_[i] / cdf_.back();
+    s.pdf_direction = 0;
+    const double part = select.quantity == SpectralSelect::luminous ? luminous_[i]
+                        : (select.band < 0 || band_[i] == select.band) ? flux_[i]
+                                                                        : 0.0;
+    s.flux = flux_[i] > 0 ? cdf_.back() * part / flux_[i] : 0;
+    return s;
+}
+
+}  // namespace rayset::lightmodel

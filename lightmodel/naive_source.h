@@ -1,0 +1,43 @@
+// The naive ray-set emitter of the paper's Figure 1: photons are the file's own rays, chosen
+// in proportion to their flux. It has no body (a camera never sees it) and cannot be light
+// sampled, which is exactly what the complex model fixes; the tracer keeps it for comparisons.
+// Holds every ray in memory (28 bytes each).
+#pragma once
+
+#include "lightmodel/emitter.h"
+
+#include <string>
+#include <vector>
+
+namespace rayset::lightmodel {
+
+class NaiveRaySource : public Emitter {
+public:
+    explicit NaiveRaySource(const std::string& ray_file);
+
+    size_t ray_count() const { return origins_.size(); }
+    double phi(const SpectralSelect& select = {}) const override;
+    Box bounds() const override { return bounds_; }
+    bool intersect(Vec3, Vec3, double, EmitterHit&) const override { return false; }
+    double L(Vec3, Vec3, const EmitterHit&, const SpectralSelect& = {}) const override { return 0; }
+    std::optional<LiSample> sample_Li(Vec3, double, double, Vec3, const SpectralSelect& = {}) const override {
+        return std::nullopt;
+    }
+    double pdf_Li(Vec3, Vec3) const override { return 0; }
+    // u[0] picks the ray; the rest are unused. The position and direction are fixed by the ray
+    // (delta densities): pdf_position is the ray's probability, pdf_direction 0.
+    LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const override;
+    void pdf_Le(Vec3, Vec3, double& pdf_position, double& pdf_direction) const override {
+        pdf_position = pdf_direction = 0;
+    }
+
+private:
+    std::vector<Vec3> origins_, directions_;
+    std::vector<float> flux_, luminous_;
+    std::vector<int16_t> band_;     // spectral bin of the ray's wavelength, -1 unknown
+    std::vector<double> cdf_;
+    SpectralBins bins_;
+    Box bounds_;
+};
+
+}  // namespace rayset::lightmodel

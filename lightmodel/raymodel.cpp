@@ -1,0 +1,150 @@
+// raymodel: build the paper's complex light-source model from a ray file, store it as one
+// OpenVDB file, and summarise a stored model.
+#include "converters/error.h"
+#include "converters/progress.h"
+#include "lightmodel/model_build.h"
+#include "lightmodel/model_file.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace {
+
+using namespace rayset::lightmodel;
+
+nlohmann::json summary(const LightModel& m, const std::string& path) {
+    auto frame = [](const LatticeFrame& f) {
+        return nlohmann::json{{"resolution", f.resolution()},
+                              {"cell_mm", f.cell_size()},
+                              {"dims", {f.dims()[0], f.dims()[1], f.dims()[2]}},
+                              {"origin_mm", {f.origin().x, f.origin().y, f.origin().z}}};
+    };
+    const Box b = m.bounds();
+    nlohmann::json j;
+    j["model"] = path;
+    j["source"] = {{"path", m.source.path}, {"format", m.source.format}, {"rays", m.source.rays},
+                   {"radiant_W", m.source.radiant}, {"luminous_lm", m.source.luminous}, {"unit", m.source.unit}};
+    j["flux_unit"] = m.flux_unit;
+    j["total_flux"] = m.total_flux();
+    j["total_luminous_lm"] = m.total_luminous();
+    j["density_lattice"] = frame(m.density_frame);
+    j["density_lattice"]["occupied_cells"] = m.voxels.size();
+    j["density_lattice"]["boundary_cells"] = m.boundary_voxels.size();
+    j["flux_lattice"] = frame(m.flux_frame);
+    j["flux_lattice"]["cells_with_light"] = m.flux_cells.size();
+    j["intensity_lattice"] = frame(m.intensity_frame);
+    j["intensity_lattice"]["diagrams"] = m.diagrams.size();
+    j["spheres"] = m.spheres.size();
+    j["body_bounds_mm"] = {{b.lower.x, b.lower.y, b.lower.z}, {b.upper.x, b.upper.y, b.upper.z}};
+    if (std::filesystem::exists(path)) j["file_bytes"] = std::filesystem::file_size(path);
+    return j;
+}
+
+void print(const nlohmann::json& j) {
+    std::printf("model        %s (%s bytes)\n", j["model"].get<std::string>().c_str(),
+                j.contains("file_bytes") ? std::to_string(j["file_bytes"].get<uint64_t>()).c_str() : "?");
+    std::printf("source       %s (%s, %llu rays, unit %s)\n", j["source"]["path"].get<std::string>().c_str(),
+                j["source"]["format"].get<std::string>().c_str(),
+                (unsigned long long)j["source"]["rays"].get<uint64_t>(), j["source"]["unit"].get<std::string>().c_str());
+    std::printf("total flux   %.9g %s (rays: %.9g W, %.9g lm)\n", j["total_flux"].get<double>(),
+                j["flux_unit"].get<std::string>().c_str(), j["source"]["radiant_W"].get<double>(),
+                j["source"]["luminous_lm"].get<double>());
+    for (const char* name : {"density_lattice", "flux_lattice", "intensity_lattice"}) {
+        const auto& f = j[name];
+        std::printf("%-18s %d (%d x %d x %d cells of %.4g mm)", name, f["resolution"].get<int>(), f["dims"][0].get<int>(),
+                    f["dims"][1].get<int>(), f["dims"][2].get<int>(), f["cell_mm"].get<double>());
+        if (f.contains("occupied_cells"))
+            std::printf(", %zu occupied, %zu boundary", f["occupied_cells"].get<size_t>(), f["boundary_cells"].get<size_t>());
+        if (f.contains("cells_with_light")) std::printf(", %zu with light", f["cells_with_light"].get<size_t>());
+        if (f.contains("diagrams")) std::printf(", %zu diagrams", f["diagrams"].get<size_t>());
+        std::printf("\n");
+    }
+    std::printf("body         %zu spheres\n", j["spheres"].get<size_t>());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "raymodel: the complex light-source model of a ray file (Zhdanov et al.; docs/light-model.md).\n\n"
+        "The model is what the tracer renders a ray file with: a body of spheres that cameras see, a\n"
+        "flux lattice and goniometric diagrams that light sampling and photon emission draw from.\n\n"
+        "Examples:\n"
+        "  raymodel build LED.TM25RAY -o LED.vdb          build with the paper's defaults\n"
+        "  raymodel build LED.TM25RAY -o LED.vdb --flux-resolution 16 --threads 2\n"
+        "  raymodel info LED.vdb [--json]                 what a model holds\n"
+        "  vdb_print -l LED.vdb                           the grids, as OpenVDB sees them\n"
+        "Run 'raymodel COMMAND --help' for the options of each command."};
+    app.require_subcommand(1);
+
+    ModelOptions options;
+    std::string input, output;
+    bool json = false;
+    auto* build = app.add_subcommand("build", "Build a model from a ray file of any supported format");
+    build->add_option("rayfile", input, "Ray file (TM-25, LightTools, Zemax, SPEOS, CSV)")->required()->check(CLI::ExistingFile);
+    build->add_option("-o,--output", output, "Model file to write (.vdb)")->required();
+    build->add_option("--density-resolution", options.density_resolution,
+                      "Cells along the longest axis of the density lattice; 0 adapts it to the ray count "
+                      "(round(sqrt(rays / 64)), at most --max-density-resolution)");
+    build->add_option("--max-density-resolution", options.max_density_resolution, "Upper bound of the adapted density resolution")
+        ->capture_default_str();
+    build->add_option("--flux-resolution", options.flux_resolution, "Cells along the longest axis of the flux lattice")
+        ->capture_default_str();
+    build->add_option("--intensity-resolution", options.intensity_resolution,
+                      "Cells along the longest axis of the intensity lattice (one goniometric diagram each)")
+        ->capture_default_str();
+    build->add_option("--max-spheres", options.max_spheres_per_cell, "Most spheres in one boundary cell")->capture_default_str();
+    build->add_option("--samples-per-cell", options.samples_per_cell, "Origins kept per boundary cell for the sphere fit")
+        ->capture_default_str();
+    build->add_option("--threads", options.threads, "Worker threads; 0 = all cores")->capture_default_str();
+    build->add_option("--seed", options.seed, "Seed of the reservoir sampling of origins")->capture_default_str();
+    build->add_flag("--json", json, "Print the summary as JSON");
+
+    auto* info = app.add_subcommand("info", "Summarise a model file");
+    info->add_option("model", input, "Model file (.vdb)")->required()->check(CLI::ExistingFile);
+    info->add_flag("--json", json, "Print the summary as JSON");
+
+    try {
+        app.parse(argc, argv);
+        if (*build) {
+            const auto start = std::chrono::steady_clock::now();
+            std::unique_ptr<rayset::ProgressBar> bar;
+            int current = 0;
+            const char* labels[] = {"", "bounds", "lattices", "origins", "spheres"};
+            const LightModel model = build_model(input, options, [&](int pass, double fraction) {
+                if (pass != current) {
+                    if (bar) bar->done();
+                    bar = std::make_unique<rayset::ProgressBar>(std::string("pass ") + std::to_string(pass) + "/4 " + labels[pass]);
+                    current = pass;
+                }
+                bar->update(fraction);
+            });
+            if (bar) bar->done();
+            write_model(model, output);
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            nlohmann::json j = summary(model, output);
+            j["build_seconds"] = seconds;
+            if (json) std::printf("%s\n", j.dump(2).c_str());
+            else {
+                print(j);
+                std::printf("built in     %.2f s\n", seconds);
+            }
+        } else if (*info) {
+            const nlohmann::json j = summary(read_model(input), input);
+            if (json) std::printf("%s\n", j.dump(2).c_str());
+            else print(j);
+        }
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "raymodel: error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
