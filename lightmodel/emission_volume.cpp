@@ -72,7 +72,7 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
     traverse(origin, dir, tmin, tmax, [&](uint32_t c, double t0, double t1) {
         const FluxCell& cell = model_.flux_cells[c];
         const double d = model_.diagrams[size_t(cell.intensity_cell)].pdf(emitted);
-        sum += cell_flux(c, select) * d / cell_volume(c) * (t1 - t0);
+        sum += cell_flux(c, select) * d / (cell_volume(c) * cell.visible_fraction) * (t1 - t0);
     });
     return sum;
 }
@@ -92,14 +92,18 @@ VolumeSample EmissionVolume::sample_point(double u_cell, double u_voxel, Vec3 u_
     const size_t c = std::min(size_t(std::upper_bound(cell_cdf_.begin(), cell_cdf_.end(), target) - cell_cdf_.begin()),
                               cell_cdf_.size() - 1);
     const FluxCell& cell = model_.flux_cells[c];
-    const uint32_t v = cell.first_voxel + std::min(uint32_t(u_voxel * cell.voxel_count), cell.voxel_count - 1);
-    const Vec3 lower = model_.density_frame.cell_lower(model_.voxels[v]);
-    const double h = model_.density_frame.cell_size();
     VolumeSample s;
-    s.point = lower + Vec3{u_point.x * h, u_point.y * h, u_point.z * h};
+    s.point = sample_in_cell(uint32_t(c), u_voxel, u_point);
     s.flux_cell = uint32_t(c);
     s.pdf_volume = cell.flux / cell_cdf_.back() / cell_volume(uint32_t(c));
     return s;
+}
+
+Vec3 EmissionVolume::sample_in_cell(uint32_t c, double u_voxel, Vec3 u_point) const {
+    const FluxCell& cell = model_.flux_cells[c];
+    const uint32_t v = cell.first_voxel + std::min(uint32_t(u_voxel * cell.voxel_count), cell.voxel_count - 1);
+    const double h = model_.density_frame.cell_size();
+    return model_.density_frame.cell_lower(model_.voxels[v]) + Vec3{u_point.x * h, u_point.y * h, u_point.z * h};
 }
 
 int32_t EmissionVolume::cell_at(Vec3 point) const {

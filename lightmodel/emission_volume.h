@@ -4,10 +4,11 @@
 // from line integrals through this volume, which is what keeps direct visibility, light
 // sampling and photon emission consistent with each other (docs/light-model.md):
 //   radiance along a line   L(w)   = sum over voxels v crossed  eps_v(w) * length_v,
-//                            eps_v(w) = Phi_c D_k(w) / V_c      (flux/(sr mm^3))
+//                            eps_v(w) = Phi_c D_k(w) / (V_c g_c)  (flux/(sr mm^3))
 //   light-sampling density  p(w)   = sum over voxels v crossed  P_c / V_c * (t1^3 - t0^3) / 3
-// where c is the voxel's flux cell, k its intensity cell, V_c the occupied volume of c and
-// P_c = Phi_c / Phi the probability of choosing c. This is the paper's eq. 6 with dS (n.v)
+// where c is the voxel's flux cell, k its intensity cell, V_c the occupied volume of c, g_c the
+// part of its emission the body shows (FluxCell::visible_fraction) and P_c = Phi_c / Phi the
+// probability of choosing c. This is the paper's eq. 6 with dS (n.v)
 // replaced by the exact projected area of each voxel along v (volume / path length), which
 // never vanishes, so no grazing cosine is ever divided by.
 #pragma once
@@ -49,6 +50,8 @@ public:
     // uniform in the cell's occupied voxels: the same distribution as rejection sampling of a
     // point in the cell against the occupied body, without the rejected draws).
     VolumeSample sample_point(double u_cell, double u_voxel, Vec3 u_point) const;
+    // A point uniform in the occupied voxels of one cell.
+    Vec3 sample_in_cell(uint32_t cell, double u_voxel, Vec3 u_point) const;
     double pdf_point(Vec3 point) const;  // mm^-3, 0 outside the volume
 
     // The flux cell of the occupied voxel holding `point`, -1 if none.

@@ -40,7 +40,7 @@ struct DirectionSample {
 class GoniometricDiagram {
 public:
     static constexpr int kDefaultBands = 40;
-    static constexpr int kDefaultSectors = 16;
+    static constexpr int kDefaultSectors = 12;
 
     // `bands` even and >= 2, `sectors` >= 1; throws std::invalid_argument otherwise.
     explicit GoniometricDiagram(int bands = kDefaultBands, int sectors = kDefaultSectors);

@@ -27,8 +27,10 @@ struct ModelOptions {
     int intensity_resolution = 5;      // the paper's 5^3
     int max_spheres_per_cell = 16;     // the paper's 16
     int samples_per_cell = 64;         // origins kept per boundary cell for the sphere fit
-    int diagram_resolution = 16;       // n x n cells of the equal-area octahedral square
+    int diagram_bands = 40;            // goniometric diagrams: bands of cos(theta) ...
+    int diagram_sectors = 12;          // ... and sectors of phi (goniometric_diagram.h)
     double spectral_bin_nm = 10;       // width of the per-cell spectrum bins, 380..780 nm
+    int coverage_lines = 512;          // lines per flux cell measuring its visible fraction
     int threads = 0;                   // 0: all cores
     uint64_t seed = 1;                 // reservoir sampling of origins
     bool progress = false;             // progress bar on stderr
@@ -51,6 +53,10 @@ struct FluxCell {
     int32_t intensity_cell = -1;  // index into LightModel::diagrams
     uint32_t first_voxel = 0;     // range into LightModel::voxels
     uint32_t voxel_count = 0;
+    // Fraction of the cell's emission (points of its voxels, directions of its diagram) whose
+    // line meets the body; radiance is divided by it so that the light a camera can see of the
+    // cell is all of its light (docs/light-model.md, "Coverage").
+    double visible_fraction = 1;
 };
 
 struct ModelSource {

@@ -3,6 +3,7 @@
 #include "converters/random.h"
 #include "converters/ray_stream.h"
 #include "converters/spectrum.h"
+#include "lightmodel/coverage.h"
 #include "lightmodel/density_lattice.h"
 #include "lightmodel/sphere_fit.h"
 
@@ -116,7 +117,7 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
         a.flux.assign(flux_cells, 0);
         a.luminous.assign(flux_cells, 0);
         a.spectrum.assign(flux_cells * size_t(bin_count), 0);
-        a.diagrams.assign(intensity_cells, GoniometricDiagram(options.diagram_resolution));
+        a.diagrams.assign(intensity_cells, GoniometricDiagram(options.diagram_bands, options.diagram_sectors));
         return a;
     });
     std::vector<int32_t> voxel_of_ray;
@@ -176,7 +177,7 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
     total.flux.assign(flux_cells, 0);
     total.luminous.assign(flux_cells, 0);
     total.spectrum.assign(flux_cells * size_t(bin_count), 0);
-    total.diagrams.assign(intensity_cells, GoniometricDiagram(options.diagram_resolution));
+    total.diagrams.assign(intensity_cells, GoniometricDiagram(options.diagram_bands, options.diagram_sectors));
     for (const Accumulator& a : accumulators) {
         for (size_t c = 0; c < flux_cells; ++c) {
             total.flux[c] += a.flux[c];
@@ -270,6 +271,7 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
         fitted[b] = fit_cell_spheres(dframe.cell_lower(model.boundary_voxels[b]), dframe.cell_size(), cell_samples, k);
     });
     for (const auto& s : fitted) model.spheres.insert(model.spheres.end(), s.begin(), s.end());
+    measure_visible_fractions(model, options.coverage_lines, options.seed);
     report(4, 1);
     return model;
 }

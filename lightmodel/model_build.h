@@ -2,7 +2,8 @@
 // is bounded by the lattices, not by the number of rays:
 //   1. bounds of the origins, ray count;
 //   2. density lattice, flux lattice with per-cell spectra, goniometric diagrams;
-//   3. a reservoir sample of the origins in every boundary cell, then the sphere fits.
+//   3. a reservoir sample of the origins in every boundary cell, then the sphere fits and the
+//      body's coverage of each flux cell (coverage.h).
 #pragma once
 
 #include "lightmodel/model.h"

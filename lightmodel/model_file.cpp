@@ -128,16 +128,22 @@ void write_model(const LightModel& model, const std::string& path) {
     auto luminous = openvdb::DoubleGrid::create(0.0);
     luminous->setName("luminous");
     luminous->setTransform(frame_transform(model.flux_frame));
+    auto visible = openvdb::FloatGrid::create(1.f);
+    visible->setName("visible_fraction");
+    visible->setTransform(frame_transform(model.flux_frame));
     {
         auto fa = flux->getAccessor();
         auto la = luminous->getAccessor();
+        auto va = visible->getAccessor();
         for (const FluxCell& c : model.flux_cells) {
             fa.setValue(vdb(c.coord), c.flux);
             la.setValue(vdb(c.coord), c.luminous);
+            va.setValue(vdb(c.coord), float(c.visible_fraction));
         }
     }
     grids.push_back(flux);
     grids.push_back(luminous);
+    grids.push_back(visible);
 
     // Index-space tables: voxel (cell, bin, 0) of the spectra, (a, b, diagram) of the diagrams.
     auto spectra = openvdb::FloatGrid::create(0.f);
@@ -192,7 +198,9 @@ void write_model(const LightModel& model, const std::string& path) {
                         " intensity_resolution=" + std::to_string(o.intensity_resolution) +
                         " max_spheres_per_cell=" + std::to_string(o.max_spheres_per_cell) +
                         " samples_per_cell=" + std::to_string(o.samples_per_cell) +
-                        " diagram_resolution=" + std::to_string(o.diagram_resolution) +
+                        " coverage_lines=" + std::to_string(o.coverage_lines) +
+                        " diagram_bands=" + std::to_string(o.diagram_bands) +
+                        " diagram_sectors=" + std::to_string(o.diagram_sectors) +
                         " seed=" + std::to_string(o.seed)));
 
     // Written beside the target and renamed into place: no half-written model on failure.
@@ -263,7 +271,9 @@ LightModel read_model(const std::string& path) {
         else if (key == "intensity_resolution") o.intensity_resolution = int(value);
         else if (key == "max_spheres_per_cell") o.max_spheres_per_cell = int(value);
         else if (key == "samples_per_cell") o.samples_per_cell = int(value);
-        else if (key == "diagram_resolution") o.diagram_resolution = int(value);
+        else if (key == "coverage_lines") o.coverage_lines = int(value);
+        else if (key == "diagram_bands") o.diagram_bands = int(value);
+        else if (key == "diagram_sectors") o.diagram_sectors = int(value);
         else if (key == "seed") o.seed = uint64_t(value);
     }
 
@@ -293,14 +303,17 @@ LightModel read_model(const std::string& path) {
     // Flux cells in the order of their linear index, as the build made them.
     auto flux = find_grid<openvdb::DoubleGrid>(grids, "flux", path);
     auto luminous = find_grid<openvdb::DoubleGrid>(grids, "luminous", path);
+    auto visible = find_grid<openvdb::FloatGrid>(grids, "visible_fraction", path);
     std::vector<std::pair<int64_t, FluxCell>> cells;
     {
         auto la = luminous->getConstAccessor();
+        auto va = visible->getConstAccessor();
         for (auto it = flux->cbeginValueOn(); it; ++it) {
             FluxCell c;
             c.coord = {it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
             c.flux = *it;
             c.luminous = la.getValue(it.getCoord());
+            c.visible_fraction = va.getValue(it.getCoord());
             cells.emplace_back(model.flux_frame.linear(c.coord), c);
         }
     }

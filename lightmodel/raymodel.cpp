@@ -102,6 +102,10 @@ int main(int argc, char** argv) {
     build->add_option("--max-spheres", options.max_spheres_per_cell, "Most spheres in one boundary cell")->capture_default_str();
     build->add_option("--samples-per-cell", options.samples_per_cell, "Origins kept per boundary cell for the sphere fit")
         ->capture_default_str();
+    build->add_option("--diagram-bands", options.diagram_bands, "Bands of cos(theta) of each goniometric diagram (even)")
+        ->capture_default_str();
+    build->add_option("--diagram-sectors", options.diagram_sectors, "Sectors of phi of each goniometric diagram")
+        ->capture_default_str();
     build->add_option("--threads", options.threads, "Worker threads; 0 = all cores")->capture_default_str();
     build->add_option("--seed", options.seed, "Seed of the reservoir sampling of origins")->capture_default_str();
     build->add_flag("--json", json, "Print the summary as JSON");

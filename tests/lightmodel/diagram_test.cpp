@@ -1,6 +1,8 @@
-// Tests of the equal-area octahedral direction map and of the goniometric diagram built on it:
-// the map's accuracy, area preservation and edge folding; the diagram's normalisation, exact
-// sampling (pdf consistency and chi-square goodness of fit) and its accuracy on cos^n lobes.
+// Tests of the equal-area octahedral direction map (used by the model's tests to lay out
+// equal-area bins) and of the goniometric diagram on its (cos theta, phi) grid: the map's
+// accuracy, area preservation and edge folding; the diagram's cells, normalisation, exact
+// reproduction of Lambertian emission, continuity, exact sampling (pdf consistency and
+// chi-square goodness of fit), storage, and its far-field accuracy on analytic sources.
 #include "converters/analytic_sources.h"
 #include "converters/random.h"
 #include "lightmodel/direction_map.h"
@@ -9,7 +11,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <iterator>
 #include <memory>
 #include <utility>
 #include <cmath>
@@ -389,7 +390,8 @@ TEST(DiagramDensity, IntegratesToOne) {
         EXPECT_NEAR(integral_in_u_phi(diagram, 2 * bands * 5, 2 * sectors * 7), 1.0, 1e-12)
             << bands << " x " << sectors;
         // Independent quadrature on the octahedral square: midpoint error on the patches' kinks
-        // and on the horizon's jump, O(1/m^2) and O(1/m); below 2e-4 at m = 1024 (measured).
+        // and on the horizon's jump over the dark sectors, O(1/m^2) and O(1/m); measured at
+        // most 6e-5 at m = 1024 (halving with each doubling of m).
         EXPECT_NEAR(integral_on_square(diagram, 1024), 1.0, 2e-4) << bands << " x " << sectors;
     }
 }
@@ -411,7 +413,7 @@ TEST(DiagramDensity, BinAverageIsTheCellMean) {
     EXPECT_THROW(diagram.bin_average(640), std::out_of_range);
 }
 
-TEST(DiagramDensity, ContinuousExceptAcrossTheHorizon) {
+TEST(DiagramDensity, ContinuousExceptWhereTheHorizonCutsTheLight) {
     const GoniometricDiagram diagram = structured_diagram(40, 16);
     Pcg32 rng(25);
     for (int k = 0; k < 2000; ++k) {
@@ -427,8 +429,12 @@ TEST(DiagramDensity, ContinuousExceptAcrossTheHorizon) {
         EXPECT_NEAR(diagram.pdf(direction_at(centre_u - 1e-12, phi)), diagram.pdf(direction_at(centre_u + 1e-12, phi)), 1e-9);
         EXPECT_NEAR(diagram.pdf(direction_at(u, centre_phi - 1e-12)), diagram.pdf(direction_at(u, centre_phi + 1e-12)), 1e-9);
     }
-    // The horizon is the one line where the density may jump: here the lobe ends there and the
-    // background continues below it.
+    // Where both sides of the horizon hold light (x > -0.5 here), it is an ordinary line.
+    for (int k = 0; k < 16; ++k) {
+        const double phi = (k - 2.5) * 2 * kPi / 48;  // -37.5 to +37.5 degrees
+        EXPECT_NEAR(diagram.pdf(direction_at(1e-15, phi)), diagram.pdf(direction_at(-1e-15, phi)), 1e-9) << phi;
+    }
+    // Where the side below is dark (x < -0.5), the lobe's density stops at the horizon.
     double largest_jump = 0;
     for (int k = 0; k < 64; ++k) {
         const double phi = (k + 0.5) * 2 * kPi / 64;
@@ -567,40 +573,79 @@ struct FarFieldCase {
     const char* name;
     std::shared_ptr<analytic::Source> source;
     double (*antiderivative)(double u);  // of 2 pi D(u), for the noiseless diagram
+    bool linear_in_u;                     // D linear in u on each side of the horizon
 };
 
 std::vector<FarFieldCase> far_field_cases() {
     return {{"lambertian disk", std::make_shared<analytic::LambertianDisk>(analytic::LambertianDisk::with_flux(1, 1)),
-             [](double u) { return u > 0 ? u * u : 0.0; }},
+             [](double u) { return u > 0 ? u * u : 0.0; }, true},
             {"lambertian sphere", std::make_shared<analytic::LambertianSphere>(analytic::LambertianSphere::with_flux(1, 1)),
-             [](double u) { return (u + 1) / 2; }},
+             [](double u) { return (u + 1) / 2; }, true},
             {"cos^4 lobe", std::make_shared<analytic::CosineLobe>(analytic::CosineLobe::with_flux(4, 1)),
-             [](double u) { return u > 0 ? std::pow(u, 5) : 0.0; }},
+             [](double u) { return u > 0 ? std::pow(u, 5) : 0.0; }, false},
             {"chip cluster", std::make_shared<analytic::ChipCluster>(analytic::ChipCluster::Layout{}, std::vector<double>{1.0},
                                                                      std::vector<double>{555.0}),
-             [](double u) { return u > 0 ? u * u : 0.0; }}};
+             [](double u) { return u > 0 ? u * u : 0.0; }, true}};
 }
 
 TEST(DiagramFarField, AccuracyAtOneMillionRays) {
-    const std::pair<int, int> grids[] = {{40, 16}, {48, 16}, {32, 16}, {40, 32}};
-    for (int base = 0; base < 6; ++base)
+    // The acceptance: < 2% RMS relative error over the directions carrying 99% of the flux, for
+    // a diagram of 1e6 rays, on the default grid. Four independent ray sets (fixed seeds) per
+    // source, each asserted; the error is almost all statistical noise (the bias, from the
+    // noiseless diagram, is 0 for the three sources linear in u and 0.86% for cos^4), so it
+    // scatters from set to set. Over 10 sets per source measured while choosing the grid (these
+    // 4 and 6 others), 40 x 12 gave disk 1.09-1.32%, sphere 1.33-1.51%, cos^4 1.30-1.93%,
+    // cluster 1.05-1.41%. The cos^4 lobe is the tight one: its 99% region reaches u = 0.40,
+    // where the density is 1/40 of its peak and each cell holds ~400 rays (5% Poisson noise,
+    // 3.3% after the bilinear blend). Its RMS over the 10 sets has mean 1.58% and spread 0.19%,
+    // so one set exceeds 2% with probability ~1-2% (normal tail at 2.2 sigma); the 4 sets here
+    // all pass. The alternatives (the lead's 48 x 16, 40 x 16, 32 x 12) are printed only.
+    const std::pair<int, int> grids[] = {{GoniometricDiagram::kDefaultBands, GoniometricDiagram::kDefaultSectors},
+                                         {48, 16}, {40, 16}, {32, 12}};
     for (const FarFieldCase& c : far_field_cases()) {
         const FluxRegion region = flux_region(*c.source);
-        std::vector<GoniometricDiagram> diagrams;
-        for (const auto& [bands, sectors] : grids) diagrams.emplace_back(bands, sectors);
-        Pcg32 rng(1000 + base, uint64_t(c.name[0]) * 7 + c.name[12]);
-        for (int k = 0; k < 1000000; ++k) {
-            const Vec3 w = analytic::normalized(to_vec3(c.source->sample_ray(rng).direction));
-            for (auto& diagram : diagrams) diagram.accumulate(w, 1.0);
+        for (uint64_t seed = 1000; seed < 1004; ++seed) {
+            std::vector<GoniometricDiagram> diagrams;
+            for (const auto& [bands, sectors] : grids) diagrams.emplace_back(bands, sectors);
+            Pcg32 rng(seed, uint64_t(c.name[0]));
+            for (int k = 0; k < 1000000; ++k) {
+                const Vec3 w = analytic::normalized(to_vec3(c.source->sample_ray(rng).direction));
+                for (auto& diagram : diagrams) diagram.accumulate(w, 1.0);
+            }
+            for (size_t g = 0; g < diagrams.size(); ++g) {
+                diagrams[g].finalize();
+                const auto [bands, sectors] = grids[g];
+                const double error = rms_relative_error(diagrams[g], region);
+                const double bias = rms_relative_error(noiseless_diagram(bands, sectors, c.antiderivative), region);
+                std::printf("[far field] %-17s seed %d, %2d x %2d: RMS relative error %.4f (bias %.4f) over %zu "
+                            "directions\n", c.name, int(seed), bands, sectors, error, bias, region.directions.size());
+                if (g == 0) {
+                    EXPECT_LT(error, 0.02) << c.name << ", seed " << seed;
+                    // The sources linear in u are reproduced exactly (only rounding remains).
+                    if (c.linear_in_u) {
+                        EXPECT_LT(bias, 1e-12) << c.name;
+                    }
+                }
+            }
         }
-        for (size_t g = 0; g < diagrams.size(); ++g) {
-            diagrams[g].finalize();
-            const auto [bands, sectors] = grids[g];
-            const double error = rms_relative_error(diagrams[g], region);
-            const double bias = rms_relative_error(noiseless_diagram(bands, sectors, c.antiderivative), region);
-            std::printf("[far field] %-17s %2d x %2d: RMS relative error %.4f (bias %.4f) over %zu directions\n", c.name,
-                        bands, sectors, error, bias, region.directions.size());
+    }
+}
+
+TEST(DiagramFarField, BiasIsSecondOrderInTheBandWidth) {
+    // The noiseless diagram's error on the cos^4 lobe (curved in u) falls as the band width
+    // squared: the centres carry cell means (error f'' h^2 / 24) and the patches interpolate
+    // linearly between them (error up to f'' h^2 / 8). A halving must divide it by > 3 (4 in
+    // the limit; measured 4.4 from 20 to 40 bands and 6.3 from 40 to 80).
+    const FarFieldCase lobe = far_field_cases()[2];
+    const FluxRegion region = flux_region(*lobe.source);
+    double previous = 0;
+    for (int bands : {20, 40, 80}) {
+        const double bias = rms_relative_error(noiseless_diagram(bands, 12, lobe.antiderivative), region);
+        std::printf("[far field] cos^4 lobe noiseless, %2d x 12: RMS relative error %.5f\n", bands, bias);
+        if (previous > 0) {
+            EXPECT_GT(previous / bias, 3.0) << bands << " bands";
         }
+        previous = bias;
     }
 }
 

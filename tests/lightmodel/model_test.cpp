@@ -80,8 +80,8 @@ TEST(Model, MonteCarloFluxFromEmissionDensities) {
 }
 
 // sample_Le returns the densities pdf_Le gives at its own sample, and its directions follow
-// them: chi-square over 24 x 24 equal-area bins of the octahedral square (a grid other than the
-// diagrams' 16 x 16), expected counts by integrating the model's intensity over each bin on a
+// them: chi-square over 24 x 24 equal-area bins of the octahedral square (a grid unrelated to the
+// diagrams' cos(theta) x phi grid), expected counts by integrating the model's intensity over each bin on a
 // 8 x 8 sub-grid; 99.9% critical value (Wilson-Hilferty).
 TEST(Model, SampleLeDirectionsFollowPdfLe) {
     for (const char* name : kSources) {
@@ -319,8 +319,10 @@ TEST(Model, IlluminanceByLightAndBsdfSampling) {
             const Vec3 x{d * std::sin(a), 0, d * std::cos(a)};
             const Vec3 normal = analytic::normalized(-1.0 * x);
             const double truth = b.truth->irradiance(x, normal) * scale;
-            const Estimate light = light_sampling(*b.source, x, normal, 200000, 3);
-            const Estimate bsdf = bsdf_sampling(*b.source, x, normal, sizes > 3 ? 2000000 : 400000, 4);
+            // Seeds differ per case, so the cases are independent draws.
+            const uint64_t seed = uint64_t(100 * sizes + off_axis_deg);
+            const Estimate light = light_sampling(*b.source, x, normal, 200000, seed);
+            const Estimate bsdf = bsdf_sampling(*b.source, x, normal, sizes > 3 ? 2000000 : 400000, seed + 1);
             const double rel = light.mean / truth - 1;
             std::printf("[ figures  ] disk E at %4.0f sizes, %2.0f deg: light %+.4f (+-%.4f), bsdf %+.4f (+-%.4f) rel. to "
                         "analytic\n",

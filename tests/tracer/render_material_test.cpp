@@ -1,0 +1,87 @@
+// Tests of the POV-Ray -> physical material mapping and of the BSDF's sampling against its
+// own evaluation, estimated a second way (uniform hemisphere sampling).
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "converters/random.h"
+#include "tracer/render/material.h"
+#include "tracer/scene_language/scene_language.h"
+
+namespace rayset::tracer {
+namespace {
+
+Material material_of(const std::string& object) {
+    const SceneDescription d = parse_scene_text(object, "test.pov");
+    return material_from_pov(d.objects.at(0), 1.0);
+}
+
+TEST(RenderMaterial, PovRayTextureMapping) {
+    Material m = material_of("sphere { 0, 1 pigment { rgb <0.5, 0.25, 1> } finish { diffuse 0.8 } }");
+    EXPECT_DOUBLE_EQ(m.diffuse.red, 0.4);
+    EXPECT_DOUBLE_EQ(m.diffuse.green, 0.2);
+    EXPECT_DOUBLE_EQ(m.diffuse.blue, 0.8);
+    EXPECT_EQ(average(m.glossy), 0);
+    // Untextured: POV-Ray renders black.
+    m = material_of("sphere { 0, 1 }");
+    EXPECT_EQ(max_component(m.diffuse), 0);
+    // A mirror keeps its weight; diffuse keeps what is left: 0.9 would make 1.2, so 1 - 0.3.
+    m = material_of("sphere { 0, 1 pigment { rgb 1 } finish { diffuse 0.9 reflection 0.3 } }");
+    EXPECT_DOUBLE_EQ(m.mirror_max.red, 0.3);
+    EXPECT_DOUBLE_EQ(m.diffuse.red, 0.7);
+    // Glass: rgbf with an interior -> a dielectric lobe tinted by the pigment.
+    m = material_of("sphere { 0, 1 pigment { rgbf <1, 0.5, 0.5, 0.9> } interior { ior 1.5 } }");
+    EXPECT_DOUBLE_EQ(m.ior, 1.5);
+    EXPECT_NEAR(m.transmission.green, 0.45, 1e-12);
+    EXPECT_NEAR(m.diffuse.red, 0.1 * 0.6, 1e-12);
+    // Blinn specular of roughness 0.05 -> Phong exponent 1/0.05/4 = 5; phong_size is taken as is.
+    m = material_of("sphere { 0, 1 pigment { rgb 1 } finish { specular 0.2 roughness 0.05 } }");
+    EXPECT_DOUBLE_EQ(m.glossy_exponent, 5);
+    m = material_of("sphere { 0, 1 pigment { rgb 1 } finish { phong 0.5 phong_size 80 } }");
+    EXPECT_DOUBLE_EQ(m.glossy_exponent, 80);
+    EXPECT_DOUBLE_EQ(m.glossy.red, 0.5);
+    m = material_of("sphere { 0, 1 pigment { rgb 1 } finish { emission 2 } }");
+    EXPECT_DOUBLE_EQ(m.emission.blue, 2);
+}
+
+TEST(RenderMaterial, FresnelAtNormalIncidence) {
+    EXPECT_NEAR(fresnel_dielectric(1, 1.5), 0.04, 1e-12);  // ((n - 1) / (n + 1))^2
+    EXPECT_EQ(fresnel_dielectric(0.1, 1 / 1.5), 1.0);     // beyond the critical angle
+}
+
+// The mean of the sampled weights f cos / pdf is the directional albedo; a second estimate
+// integrates eval() with uniform hemisphere directions. Both with 400000 samples; the bound
+// is 5 standard errors of their difference (two-sided normal tail 5.7e-7).
+TEST(RenderMaterial, SamplingAgreesWithEvaluation) {
+    Material m;
+    m.diffuse = {0.3, 0.3, 0.3};
+    m.glossy = {0.5, 0.5, 0.5};
+    m.glossy_exponent = 20;
+    const Vec3 n{0, 0, 1};
+    for (double theta : {0.2, 0.9, 1.3}) {
+        const Vec3 wo{std::sin(theta), 0, std::cos(theta)};
+        const Bsdf bsdf(m, n, n, wo);
+        Pcg32 rng(17, 3);
+        const int count = 400000;
+        double s1 = 0, q1 = 0, s2 = 0, q2 = 0;
+        for (int i = 0; i < count; ++i) {
+            BsdfSample s;
+            double a = 0;
+            if (bsdf.sample(rng.uniform(), rng.uniform(), rng.uniform(), s)) {
+                a = s.weight.red;
+                EXPECT_NEAR(s.pdf, bsdf.pdf(s.wi), 1e-9 * s.pdf);
+            }
+            s1 += a, q1 += a * a;
+            const double z = rng.uniform(), phi = 2 * analytic::kPi * rng.uniform(), r = std::sqrt(1 - z * z);
+            const double b = bsdf.eval({r * std::cos(phi), r * std::sin(phi), z}).red * 2 * analytic::kPi;
+            s2 += b, q2 += b * b;
+        }
+        const double m1 = s1 / count, m2 = s2 / count;
+        const double v = (q1 / count - m1 * m1 + q2 / count - m2 * m2) / count;
+        EXPECT_NEAR(m1, m2, 5 * std::sqrt(v)) << "theta " << theta;
+        EXPECT_LE(m2, 0.8 + 5 * std::sqrt(v));  // energy: never above diffuse + glossy albedo
+    }
+}
+
+}  // namespace
+}  // namespace rayset::tracer

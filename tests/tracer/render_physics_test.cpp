@@ -1,0 +1,227 @@
+// Acceptance tests of the renderer against closed-form answers: the furnace (a closed white
+// diffuse sphere: the radiance inside is a geometric series), a point light over a plane
+// (illuminance I cos(theta) / d^2) and a Lambertian rectangular area light (Lambert's contour
+// integral, rayset::analytic::polygon_irradiance). Seeds are fixed; every statistical bound is
+// z standard errors of the estimate, z and the confidence it gives stated beside it.
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "converters/analytic_geometry.h"
+#include "tracer/render/renderer.h"
+#include "tracer/scene_language/scene_language.h"
+
+namespace rayset::tracer {
+namespace {
+
+RenderResult render_text(const std::string& text, RenderSettings settings) {
+    const RenderScene scene(parse_scene_text(text, "test.pov"));
+    return render(scene, settings);
+}
+
+// Mean of the red channel over every pixel and its standard error: inside a uniform sphere
+// every pixel's samples have the same distribution, so the pixel means are independent and
+// identically distributed.
+void image_mean(const Film& film, double& mean, double& standard_error) {
+    const int n = film.nx() * film.ny();
+    double sum = 0, squares = 0;
+    for (int y = 0; y < film.ny(); ++y)
+        for (int x = 0; x < film.nx(); ++x) {
+            const double v = film.mean(x, y).red;
+            sum += v, squares += v * v;
+        }
+    mean = sum / n;
+    standard_error = std::sqrt(std::max(0.0, squares / n - mean * mean) / (n - 1));
+    std::printf("image mean %.6g W/(m^2 sr), standard error %.3g\n", mean, standard_error);
+}
+
+// z = 4.5: a two-sided normal tail of 6.8e-6 per comparison.
+constexpr double kZ = 4.5;
+
+TEST(RenderFurnace, EmittingWhiteSphereConvergesToGeometricSeries) {
+    // Every wall point emits Le and reflects a fraction a of the uniform radiance L around it:
+    // L = Le + a L, so L = Le / (1 - a) = 0.5 / 0.2 = 2.5 W/(m^2 sr).
+    const double albedo = 0.8, emitted = 0.5;
+    RenderSettings settings;
+    settings.width = 32, settings.height = 24, settings.passes = 64, settings.seed = 11;
+    const RenderResult r = render_text(R"(
+        camera { location <0,0,0> look_at <0,0,1> }
+        sphere { <0,0,0>, 100 pigment { rgb 1 } finish { diffuse 0.8 emission 0.5 ambient 0 } }
+    )", settings);
+    double mean = 0, se = 0;
+    image_mean(r.film, mean, se);
+    const double expected = emitted / (1 - albedo);
+    EXPECT_LT(se, 0.01 * expected);  // the test can tell a 5% error
+    EXPECT_NEAR(mean, expected, kZ * se) << "standard error " << se;
+}
+
+TEST(RenderFurnace, PointLightInWhiteSphereMatchesClosedForm) {
+    // A point light of intensity I at the centre of a sphere of radius R gives every wall point
+    // E0 = I / R^2; each wall point also sees the whole sphere of radiance L, so
+    // L = a/pi (E0 + pi L) and L = a I / (pi R^2 (1 - a)). R = 200 mm = 0.2 m, I = 3 W/sr, a = 0.6.
+    const double albedo = 0.6, intensity = 3, radius_m = 0.2;
+    RenderSettings settings;
+    settings.width = 32, settings.height = 24, settings.passes = 64, settings.seed = 5;
+    const RenderResult r = render_text(R"(
+        camera { location <0,0,0> look_at <0,0,1> }
+        light_source { <0,0,0> color rgb 3 }
+        sphere { <0,0,0>, 200 pigment { rgb 1 } finish { diffuse 0.6 ambient 0 } }
+    )", settings);
+    double mean = 0, se = 0;
+    image_mean(r.film, mean, se);
+    const double expected = albedo * intensity / (analytic::kPi * radius_m * radius_m * (1 - albedo));
+    EXPECT_LT(se, 0.01 * expected);
+    EXPECT_NEAR(mean, expected, kZ * se) << "standard error " << se;
+}
+
+TEST(RenderFurnace, EllipsoidFurnaceHoldsToo) {
+    // The closed-surface argument L = Le / (1 - a) needs no sphere: a non-uniformly scaled
+    // sphere (an ellipsoid, user geometry under its full matrix) must give the same radiance.
+    RenderSettings settings;
+    settings.width = 32, settings.height = 24, settings.passes = 64, settings.seed = 3;
+    const RenderResult r = render_text(R"(
+        camera { location <10,0,0> look_at <0,0,1> }
+        sphere { <0,0,0>, 100 scale <3, 1, 0.5> rotate <10, 20, 30>
+                 pigment { rgb 1 } finish { diffuse 0.5 emission 1 ambient 0 } }
+    )", settings);
+    double mean = 0, se = 0;
+    image_mean(r.film, mean, se);
+    EXPECT_LT(se, 0.01 * 2.0);
+    EXPECT_NEAR(mean, 2.0, kZ * se) << "standard error " << se;
+}
+
+TEST(RenderFurnace, MirrorLobeAndGlassKeepTheBalance) {
+    // The walls reflect 0.5 diffusely and 0.3 as a mirror: still L = Le / (1 - 0.8). A lossless
+    // glass ball (ior 1.5) inside a uniform radiance field changes nothing seen from outside:
+    // the eta^2 radiance scaling on entering and leaving cancels.
+    RenderSettings settings;
+    settings.width = 32, settings.height = 24, settings.passes = 64, settings.seed = 8;
+    const RenderResult r = render_text(R"(
+        camera { location <0,0,-50> look_at <0,0,0> angle 40 }
+        sphere { <0,0,0>, 100 pigment { rgb 1 } finish { diffuse 0.5 reflection 0.3 emission 1 ambient 0 } }
+        sphere { <0,0,0>, 20 pigment { rgbf <1,1,1,1> } interior { ior 1.5 } }
+    )", settings);
+    double mean = 0, se = 0;
+    image_mean(r.film, mean, se);
+    EXPECT_LT(se, 0.01 * 5.0);
+    EXPECT_NEAR(mean, 5.0, kZ * se) << "standard error " << se;
+}
+
+TEST(RenderPointLight, ReceiverOnPlaneRecordsInverseSquareCosine) {
+    // Light 1 m above a diffuse floor; a 2 m x 2 m receiver lying on it, facing up
+    // (cross(edge1, edge2) = cross(z, x) = +y). Nothing is above the floor, so the illuminance
+    // is the direct term alone: E = 683 lm/W * I cos(theta) / d^2 with I = 2 W/sr in every
+    // channel (luminance weights sum to 1). Next-event estimation of a point light is exact, so
+    // the map's statistical error is zero and the bound is its standard error (0) plus rounding.
+    RenderSettings settings;
+    settings.render_image = false, settings.passes = 8, settings.seed = 1;
+    const RenderResult r = render_text(R"(
+        light_source { <100, 1000, -50> color rgb 2 }
+        plane { y, 0 pigment { rgb 0.7 } finish { diffuse 1 } }
+        illuminance_receiver { <-1000, 0, -1000>, <0, 0, 2000>, <2000, 0, 0> resolution <9, 7> name "floor" }
+    )", settings);
+    ASSERT_EQ(r.receivers.size(), 1u);
+    const ReceiverMap& map = r.receivers[0];
+    for (int j = 0; j < 7; ++j)
+        for (int i = 0; i < 9; ++i) {
+            const Vec3 p = map.cell_centre(i, j);
+            const Vec3 to_light = Vec3{100, 1000, -50} - p;
+            const double d_m = analytic::length(to_light) / 1000, cos_theta = to_light.y / analytic::length(to_light);
+            const double expected = 683 * 2 * cos_theta / (d_m * d_m);
+            EXPECT_NEAR(map.irradiance.photometric_mean(i, j), expected,
+                        kZ * map.irradiance.photometric_standard_error(i, j) + 1e-9 * expected)
+                << "cell " << i << "," << j;
+        }
+}
+
+TEST(RenderPointLight, SpotlightFollowsPovRayFalloff) {
+    // POV-Ray's spotlight: full intensity inside `radius`, none beyond `falloff`, a smoothstep
+    // in cos(angle) between. Receiver cells straight below (inside radius) get I / d^2, cells
+    // beyond the falloff cone nothing.
+    RenderSettings settings;
+    settings.render_image = false, settings.passes = 2, settings.seed = 1;
+    const RenderResult r = render_text(R"(
+        light_source { <0, 1000, 0> color rgb 1 spotlight radius 10 falloff 20 point_at <0, 0, 0> }
+        illuminance_receiver { <-5, 0, -5>, <0, 0, 10>, <10, 0, 0> resolution <1, 1> name "centre" }
+        illuminance_receiver { <995, 0, -5>, <0, 0, 10>, <10, 0, 0> resolution <1, 1> name "outside" }
+    )", settings);
+    EXPECT_NEAR(r.receivers[0].irradiance.photometric_mean(0, 0), 683.0, 1e-9 * 683);
+    EXPECT_EQ(r.receivers[1].irradiance.photometric_mean(0, 0), 0.0);
+}
+
+TEST(RenderPointLight, SceneUnitAndFadeFollowTheStatedConventions) {
+    // Intensity 1 W/sr, 2 scene units above the receiver: with length_unit "m" that is 2 m,
+    // E = 1/4 W/m^2; with "cm", 2 cm, E = 1/0.0004 W/m^2. fade_distance 0.5 fade_power 2 scales
+    // the intensity to 2 (0.5 unit)^2 in metres: the far field 2 D^2 / d^2 in W/m^2 whatever
+    // the unit.
+    auto lux_at = [](const std::string& unit, const std::string& fade) {
+        RenderSettings settings;
+        settings.render_image = false, settings.passes = 1;
+        const RenderResult r = render_text("global_settings { length_unit \"" + unit + "\" }\n"
+                                           "light_source { <0, 2, 0> color rgb 1 " + fade + " }\n"
+                                           "illuminance_receiver { <-0.001, 0, -0.001>, <0, 0, 0.002>, <0.002, 0, 0> "
+                                           "resolution <1, 1> }",
+                                           settings);
+        return r.receivers[0].irradiance.photometric_mean(0, 0);
+    };
+    EXPECT_NEAR(lux_at("m", ""), 683 * 0.25, 1e-9 * 683);
+    EXPECT_NEAR(lux_at("cm", ""), 683 / 0.0004, 1e-9 * 683 / 0.0004);
+    const double fade_far_field = 683 * 2 * 0.5 * 0.5 / (2 * 2);
+    EXPECT_NEAR(lux_at("m", "fade_distance 0.5 fade_power 2"), fade_far_field, 1e-9 * fade_far_field);
+    EXPECT_NEAR(lux_at("mm", "fade_distance 0.5 fade_power 2"), fade_far_field, 1e-9 * fade_far_field);
+}
+
+TEST(RenderAreaLight, LambertianRectangleMatchesContourIntegral) {
+    // A 200 mm x 100 mm area light 500 mm above the receiver, a spotlight with POV-Ray's
+    // "cosine falloff" (radius -90 falloff 90 tightness 1): its 4 x 4 points of colour 1 emit
+    // P = pi W, so the rectangle is a one-sided Lambertian emitter of radiance
+    // L = P / (pi A) = 1 / A = 5e-5 W/(mm^2 sr) facing down. The exact irradiance comes from
+    // Lambert's contour formula. Light sampling and BSDF sampling are both active (MIS).
+    RenderSettings settings;
+    settings.render_image = false, settings.passes = 256, settings.seed = 9;
+    const RenderResult r = render_text(R"(
+        light_source { <0, 500, 0> color rgb 1
+            area_light <200, 0, 0>, <0, 0, 100>, 4, 4
+            spotlight radius -90 falloff 90 tightness 1 point_at <0, 0, 0> }
+        illuminance_receiver { <-600, 0, -600>, <0, 0, 1200>, <1200, 0, 0> resolution <6, 6> name "floor" }
+    )", settings);
+    const ReceiverMap& map = r.receivers[0];
+    const double radiance = 1.0 / (200 * 100);  // W/(mm^2 sr)
+    const std::vector<Vec3> light{{-100, 500, -50}, {100, 500, -50}, {100, 500, 50}, {-100, 500, 50}};
+    // z = 5 with 36 cells: family-wise two-sided normal tail 36 * 5.7e-7 = 2e-5.
+    for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < 6; ++i) {
+            const double exact_w_mm2 = analytic::polygon_irradiance(radiance, light, map.cell_centre(i, j), {0, 1, 0});
+            const double expected = 683 * exact_w_mm2 * 1e6;
+            const double se = map.irradiance.photometric_standard_error(i, j);
+            EXPECT_LT(se, 0.05 * expected) << "cell " << i << "," << j;
+            EXPECT_NEAR(map.irradiance.photometric_mean(i, j), expected, 5 * se) << "cell " << i << "," << j;
+        }
+}
+
+TEST(RenderAreaLight, TwoSidedRectangleEmitsHalfItsPowerEachWay) {
+    // A plain (non-spot) area light stands for isotropic points: P = 4 pi c, emitted by both
+    // sides of the rectangle (L = P / (2 pi A)). Receivers 400 mm above and below the light at
+    // its centre see the same illuminance, and it equals the contour integral.
+    RenderSettings settings;
+    settings.render_image = false, settings.passes = 256, settings.seed = 2;
+    const RenderResult r = render_text(R"(
+        light_source { <0, 0, 0> color rgb 1 area_light <100, 0, 0>, <0, 0, 100>, 2, 2 }
+        illuminance_receiver { <-1, -400, -1>, <0, 0, 2>, <2, 0, 0> resolution <1, 1> name "below" }
+        illuminance_receiver { <-1, 400, -1>, <2, 0, 0>, <0, 0, 2> resolution <1, 1> name "above" }
+    )", settings);
+    const double radiance = 4 * analytic::kPi / (2 * analytic::kPi * 100 * 100);
+    const std::vector<Vec3> facing_down{{-50, 0, -50}, {50, 0, -50}, {50, 0, 50}, {-50, 0, 50}};
+    const std::vector<Vec3> facing_up{{-50, 0, -50}, {-50, 0, 50}, {50, 0, 50}, {50, 0, -50}};
+    const double below = 683e6 * analytic::polygon_irradiance(radiance, facing_down, {0, -400, 0}, {0, 1, 0});
+    const double above = 683e6 * analytic::polygon_irradiance(radiance, facing_up, {0, 400, 0}, {0, -1, 0});
+    EXPECT_NEAR(below, above, 1e-12 * below);
+    for (const ReceiverMap& map : r.receivers) {
+        const double se = map.irradiance.photometric_standard_error(0, 0);
+        EXPECT_NEAR(map.irradiance.photometric_mean(0, 0), below, kZ * se) << map.receiver.name;
+    }
+}
+
+}  // namespace
+}  // namespace rayset::tracer

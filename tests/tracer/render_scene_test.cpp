@@ -1,0 +1,163 @@
+// Tests of the Embree scene: every shape's intersections and normals against hand-computed
+// geometry (ellipsoids from scaled spheres, rotated boxes, planes, triangles, instanced meshes,
+// OBJ files), the object modifiers (no_shadow, no_image) and the camera's POV-Ray frame.
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "converters/error.h"
+#include "support/test_support.h"
+#include "tracer/render/camera.h"
+#include "tracer/render/render_scene.h"
+#include "tracer/scene_language/scene_language.h"
+
+namespace rayset::tracer {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Scene {
+    explicit Scene(const std::string& text) : scene(parse_scene_text(text, "test.pov")) {}
+    SurfaceHit hit(Vec3 o, Vec3 d, RayKind kind = RayKind::indirect) const {
+        SurfaceHit h;
+        h.object = -2;
+        if (!scene.intersect(o, analytic::normalized(d), 0, kInf, kind, h)) h.object = -1;
+        return h;
+    }
+    RenderScene scene;
+};
+
+void expect_vec(Vec3 a, Vec3 b, double tolerance) {
+    EXPECT_NEAR(a.x, b.x, tolerance);
+    EXPECT_NEAR(a.y, b.y, tolerance);
+    EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+TEST(RenderScene, NonUniformlyScaledSphereIsAnEllipsoid) {
+    const Scene s("sphere { <0,0,0>, 1 scale <2, 1, 0.5> translate <0, 0, 10> }");
+    SurfaceHit h = s.hit({-10, 0, 10}, {1, 0, 0});
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 8, 1e-5);  // semi-axis 2 along x
+    expect_vec(h.normal, {-1, 0, 0}, 1e-9);
+    h = s.hit({0, 0, 0}, {0, 0, 1});
+    EXPECT_NEAR(h.t, 9.5, 1e-5);  // semi-axis 0.5 along z
+    // A generic point: the normal of x^2/4 + y^2 + z'^2/0.25 = 1 is (x/4, y, 4 z').
+    const Vec3 target{1, 0.5, 10 - 0.5 * std::sqrt(1 - 0.25 - 0.25)};  // on the near side
+    h = s.hit({0, 0, 0}, target);
+    ASSERT_EQ(h.object, 0);
+    expect_vec(h.point, target, 1e-5);
+    expect_vec(h.normal, analytic::normalized({target.x / 4, target.y, 4 * (target.z - 10)}), 1e-5);
+}
+
+TEST(RenderScene, RotatedBoxHasOutwardNormals) {
+    // A unit cube turned 45 degrees about y: its corner points to -z; POV-Ray's rotate 45*y
+    // maps +x to (cos45, 0, -sin45).
+    const Scene s("box { <-1,-1,-1>, <1,1,1> rotate 45*y translate <0,0,10> }");
+    const SurfaceHit h = s.hit({0, 0, 0}, {0, 0, 1});
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 10 - std::sqrt(2.0), 1e-5);
+    const SurfaceHit side = s.hit({-10, 0.3, 10}, {1, 0, 0});
+    EXPECT_NEAR(side.t, 10 - std::sqrt(2.0), 1e-5);
+    EXPECT_LT(side.normal.x, 0);  // outward, toward the ray's origin
+    for (double a : {0.3, 1.1, 2.0, 3.7, 5.0}) {  // rays from far outside, all around
+        const Vec3 o{20 * std::cos(a), 0.2, 10 + 20 * std::sin(a)};
+        const SurfaceHit g = s.hit(o, Vec3{0, 0, 10} - o);
+        ASSERT_EQ(g.object, 0);
+        EXPECT_LT(analytic::dot(g.normal, Vec3{0, 0, 10} - o), 0) << "angle " << a;
+    }
+}
+
+TEST(RenderScene, PlaneIsInfiniteUserGeometry) {
+    const Scene s("plane { <0, 1, 1>, 2 }  sphere { <0,0,0>, 0.001 translate <1000,1000,1000> }");
+    // Points with dot(n, p) = 2 with n = (0, 1, 1)/sqrt 2.
+    const SurfaceHit h = s.hit({5000, -3000, 0}, {0, 1, 0});
+    ASSERT_EQ(h.object, 0);
+    // Embree keeps the hit distance in float: t ~ 3003 is exact to 2^-24 t = 1.8e-4.
+    EXPECT_NEAR(h.point.y, 2 * std::sqrt(2.0), 3003 * std::ldexp(1.0, -24));
+    expect_vec(h.normal, analytic::normalized({0, 1, 1}), 1e-12);
+}
+
+TEST(RenderScene, MeshInstancesShareOnePrototype) {
+    const Scene s(R"(
+        #declare M = mesh { triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> } }
+        object { M translate <0,0,5> }
+        object { M scale 2 rotate 90*y translate <10,0,0> }
+    )");
+    const SurfaceHit a = s.hit({0, 0, 0}, {0, 0, 1});
+    EXPECT_EQ(a.object, 0);
+    EXPECT_NEAR(a.t, 5, 1e-5);
+    // rotate 90*y maps +z to +x: the second copy is the plane x = 10, twice as large.
+    const SurfaceHit b = s.hit({0, 1.5, 0}, {1, 0, 0});
+    EXPECT_EQ(b.object, 1);
+    EXPECT_NEAR(b.t, 10, 1e-5);
+    expect_vec(b.normal, {std::copysign(1.0, b.normal.x), 0, 0}, 1e-6);
+    const auto& d = s.scene.description();
+    EXPECT_EQ(std::get<MeshShape>(d.objects[0].shape).mesh, std::get<MeshShape>(d.objects[1].shape).mesh);
+}
+
+TEST(RenderScene, Mesh2NormalsAreInterpolated) {
+    const Scene s(R"(
+        mesh2 { vertex_vectors { 3, <-1,-1,5>, <1,-1,5>, <0,1,5> }
+                normal_vectors { 3, <-1,0,-1>, <1,0,-1>, <0,0,-1> }
+                face_indices { 1, <0,1,2> } }
+    )");
+    const SurfaceHit h = s.hit({-0.5, -0.5, 0}, {0, 0, 1});
+    ASSERT_EQ(h.object, 0);
+    // (-0.5, -0.5) = a + u (b - a) + v (c - a) with u = 1/8, v = 1/4: weights 5/8, 1/8, 1/4
+    // -> (-0.5, 0, -1).
+    expect_vec(h.shading_normal, analytic::normalized({-0.5, 0, -1}), 1e-5);
+    expect_vec(h.normal, {0, 0, std::copysign(1.0, h.normal.z)}, 1e-9);
+}
+
+TEST(RenderScene, ObjMeshFileLoads) {
+    test::ScratchDir dir;
+    test::write_file(dir.file("quad.obj"), "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+    test::write_file(dir.file("scene.pov"), "mesh_file { \"quad.obj\" translate <0, 0, 3> }\n");
+    const RenderScene scene(parse_scene_file(dir.file("scene.pov")));
+    SurfaceHit h;
+    ASSERT_TRUE(scene.intersect({0.9, 0.9, 0}, {0, 0, 1}, 0, kInf, RayKind::camera, h));  // second triangle
+    EXPECT_NEAR(h.t, 3, 1e-6);
+    ASSERT_TRUE(scene.intersect({-0.9, -0.9, 0}, {0, 0, 1}, 0, kInf, RayKind::camera, h));
+    EXPECT_FALSE(scene.intersect({1.1, 0, 0}, {0, 0, 1}, 0, kInf, RayKind::camera, h));
+}
+
+TEST(RenderScene, ModifiersHideObjectsFromTheirRays) {
+    const Scene s(R"(
+        sphere { <0,0,5>, 1 no_shadow }
+        sphere { <0,0,10>, 1 no_image }
+        sphere { <0,0,15>, 1 }
+    )");
+    EXPECT_EQ(s.hit({0, 0, 0}, {0, 0, 1}, RayKind::camera).object, 0);
+    EXPECT_EQ(s.hit({0, 0, 0}, {0, 0, 1}, RayKind::shadow).object, 1);
+    EXPECT_EQ(s.hit({0, 0, 7}, {0, 0, 1}, RayKind::camera).object, 2);
+    EXPECT_FALSE(s.scene.occluded({0, 0, 0}, {0, 0, 1}, 0, 8.5));  // only the no_shadow sphere before 8.5
+    EXPECT_TRUE(s.scene.occluded({0, 0, 0}, {0, 0, 1}, 0, 9.5));
+}
+
+TEST(RenderCamera, PovRayFrameAndMirroredRight) {
+    Camera c;  // POV-Ray's default camera: at the origin looking along +z, right <1.33,0,0>
+    PerspectiveCamera camera(c, 100, 50);
+    expect_vec(camera.ray(50, 25).direction, {0, 0, 1}, 1e-12);
+    // Image left edge, top row: direction + (-0.5) right + 0.5 up.
+    expect_vec(camera.ray(0, 0).direction, analytic::normalized({-0.665, 0.5, 1}), 1e-12);
+    c.right = {-1, 0, 0};  // cornell.pov's right <-1,0,0>: the image's left is +x
+    expect_vec(PerspectiveCamera(c, 100, 50).ray(0, 25).direction, analytic::normalized({0.5, 0, 1}), 1e-12);
+}
+
+TEST(RenderLights, UnsupportedFadeAndShadowlessAreErrors) {
+    auto error = [](const std::string& text) {
+        try {
+            RenderScene scene(parse_scene_text(text, "test.pov"));
+        } catch (const rayset::Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(error("light_source { <0,0,0> color 1 fade_distance 2 fade_power 1 }"),
+              "not supported: fade_power 1 (only 2, read as the inverse-square law) at test.pov:1:1");
+    EXPECT_NE(error("light_source { <0,0,0> color 1 shadowless }").find("shadowless"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rayset::tracer

@@ -1,0 +1,37 @@
+// Command line of `raytrace`: our GNU-style options, POV-Ray's +W +H +O +I +L switches and
+// POV-Ray .ini files (Width=, Height=, Output_File_Name=, Input_File_Name=, Library_Path=).
+// Precedence: .ini files (in order), then + switches, then -- options.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rayset::tracer {
+
+struct RaytraceOptions {
+    std::string scene;
+    std::string output;       // EXR path; default: the scene's name with .exr, in the current folder
+    std::string png;          // preview path; default: the EXR's path with .png
+    bool no_png = false;
+    int width = 0, height = 0;  // 0: the renderer's default (320 x 240)
+    int passes = 0;             // 0: the scene's `passes`, else the renderer's rule
+    double time_limit = -1;     // < 0: the scene's `time_limit`
+    int threads = 0;
+    uint64_t seed = 0;
+    double exposure = 0;
+    std::vector<std::string> include_paths;
+    bool bench = false;
+    bool quiet = false;
+};
+
+// Returns false when the program should exit with `exit_code` (help shown, or a usage error
+// already reported on stderr). Throws rayset::Error for a bad .ini file (FILE:LINE: ...).
+bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& options, int& exit_code);
+
+// Applies one POV-Ray switch ("+W640", "+Oout.exr"); throws rayset::Error naming `where`.
+void apply_pov_switch(const std::string& text, const std::string& where, RaytraceOptions& options);
+// Reads a POV-Ray .ini file into `options`.
+void apply_ini_file(const std::string& path, RaytraceOptions& options);
+
+}  // namespace rayset::tracer

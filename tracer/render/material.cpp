@@ -1,0 +1,164 @@
+// POV-Ray texture -> physical material, and the mixed BSDF (see material.h and README.md).
+#include "tracer/render/material.h"
+
+#include <cmath>
+
+namespace rayset::tracer {
+
+using analytic::dot;
+using analytic::normalized;
+
+namespace {
+
+Rgb clamp01(Rgb a) {
+    auto c = [](double v) { return std::min(1.0, std::max(0.0, v)); };
+    return {c(a.red), c(a.green), c(a.blue)};
+}
+
+// Keeps every channel of diffuse + glossy + mirror_max + transmission at or below one, so no
+// surface reflects more than it receives: the specular lobes keep their weight, the diffuse
+// lobe takes what is left (POV-Ray adds them without such a limit).
+void conserve_energy(Material& m) {
+    auto fix = [](double& d, double& g, double& r, double& t) {
+        const double specular = g + r + t;
+        if (specular > 1) {
+            g /= specular, r /= specular, t /= specular;
+            d = 0;
+        } else {
+            d = std::min(d, 1 - specular);
+        }
+    };
+    fix(m.diffuse.red, m.glossy.red, m.mirror_max.red, m.transmission.red);
+    fix(m.diffuse.green, m.glossy.green, m.mirror_max.green, m.transmission.green);
+    fix(m.diffuse.blue, m.glossy.blue, m.mirror_max.blue, m.transmission.blue);
+    m.mirror_min = Rgb{std::min(m.mirror_min.red, m.mirror_max.red), std::min(m.mirror_min.green, m.mirror_max.green),
+                       std::min(m.mirror_min.blue, m.mirror_max.blue)};
+}
+
+}  // namespace
+
+Material material_from_pov(const ObjectInstance& object, double emission_scale) {
+    Material m;
+    if (!object.textured) return m;  // POV-Ray renders an untextured object black
+    const Colour& c = object.texture.pigment.colour;
+    const Finish& f = object.texture.finish;
+    const Rgb pigment = clamp01(c.rgb());
+    const double opacity = std::max(0.0, 1 - c.filter - c.transmit);
+    m.diffuse = (opacity * f.diffuse) * pigment;
+    m.transmission = clamp01(c.filter * pigment + Rgb{c.transmit, c.transmit, c.transmit});
+    m.ior = object.has_interior ? object.interior.ior : 1.0;
+
+    // POV-Ray's `specular` is a Blinn highlight of exponent 1/roughness; a Phong lobe about the
+    // mirror direction with a quarter of that exponent has nearly the same width.
+    double amount = 0, exponent = 0;
+    if (f.specular > 0) amount += f.specular, exponent = std::max(exponent, 0.25 / std::max(f.roughness, 1e-6));
+    if (f.phong > 0) amount += f.phong, exponent = std::max(exponent, f.phong_size);
+    const Rgb white{1, 1, 1};
+    m.glossy = amount * ((1 - f.metallic) * white + f.metallic * pigment);
+    m.glossy_exponent = std::max(exponent, 1.0);
+
+    m.mirror_min = clamp01(f.reflection_min);
+    m.mirror_max = clamp01(f.reflection_max);
+    m.mirror_falloff = f.reflection_falloff;
+    m.mirror_fresnel = f.reflection_fresnel;
+    m.emission = emission_scale * (f.emission * pigment);
+    conserve_energy(m);
+    return m;
+}
+
+double fresnel_dielectric(double cos_i, double eta) {
+    const double sin2_t = (1 - cos_i * cos_i) / (eta * eta);
+    if (sin2_t >= 1) return 1;  // total internal reflection
+    const double cos_t = std::sqrt(1 - sin2_t);
+    const double rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    const double rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+Bsdf::Bsdf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo)
+    : m_(material), wo_(wo) {
+    entering_ = dot(wo, normal) >= 0;
+    n_ = entering_ ? normal : -normal;
+    ns_ = dot(shading_normal, n_) >= 0 ? shading_normal : -shading_normal;
+    cos_o_ = std::max(0.0, dot(wo, ns_));
+    const double d = average(m_.diffuse), g = average(m_.glossy), r = is_black(m_.mirror_max) ? 0 : average(mirror_weight()),
+                 t = average(m_.transmission);
+    const double total = d + g + r + t;
+    if (total > 0) p_diffuse_ = d / total, p_glossy_ = g / total, p_mirror_ = r / total, p_dielectric_ = t / total;
+}
+
+Rgb Bsdf::mirror_weight() const {
+    const double c = std::max(0.0, dot(wo_, n_));
+    const double x = m_.mirror_fresnel ? fresnel_dielectric(c, m_.ior > 1 ? m_.ior : 1.5)
+                                       : std::pow(1 - c, m_.mirror_falloff);
+    return m_.mirror_min + x * (m_.mirror_max - m_.mirror_min);
+}
+
+Rgb Bsdf::eval(Vec3 wi) const {
+    const double cos_i = dot(wi, ns_);
+    if (cos_i <= 0 || dot(wi, n_) <= 0) return {};
+    Rgb f = (1 / kPi) * m_.diffuse;
+    if (p_glossy_ > 0) {
+        const double c = dot(wi, reflect(wo_, ns_));
+        if (c > 0) f += ((m_.glossy_exponent + 2) / (2 * kPi) * std::pow(c, m_.glossy_exponent)) * m_.glossy;
+    }
+    return cos_i * f;
+}
+
+double Bsdf::pdf(Vec3 wi) const {
+    const double cos_i = dot(wi, ns_);
+    if (cos_i <= 0 || dot(wi, n_) <= 0) return 0;
+    double p = p_diffuse_ * cos_i / kPi;
+    if (p_glossy_ > 0) {
+        const double c = dot(wi, reflect(wo_, ns_));
+        if (c > 0) p += p_glossy_ * (m_.glossy_exponent + 1) / (2 * kPi) * std::pow(c, m_.glossy_exponent);
+    }
+    return p;
+}
+
+bool Bsdf::sample(double u_lobe, double u1, double u2, BsdfSample& out) const {
+    if (u_lobe < p_diffuse_ && p_glossy_ == 0) {  // diffuse alone: f cos / pdf is the albedo over p_diffuse
+        out.wi = normalized(Frame(ns_).to_world(cosine_hemisphere(u1, u2)));
+        const double cos_i = dot(out.wi, ns_);
+        out.delta = false;
+        out.pdf = p_diffuse_ * cos_i / kPi;
+        if (out.pdf <= 0 || dot(out.wi, n_) <= 0) return false;
+        out.weight = (1 / p_diffuse_) * m_.diffuse;
+        return true;
+    }
+    if (u_lobe < p_diffuse_ + p_glossy_) {
+        const Vec3 local = u_lobe < p_diffuse_ ? cosine_hemisphere(u1, u2) : phong_lobe(m_.glossy_exponent, u1, u2);
+        out.wi = normalized(Frame(u_lobe < p_diffuse_ ? ns_ : reflect(wo_, ns_)).to_world(local));
+        out.pdf = pdf(out.wi);
+        out.delta = false;
+        if (out.pdf <= 0) return false;
+        out.weight = (1 / out.pdf) * eval(out.wi);
+        return true;
+    }
+    out.pdf = 0;
+    out.delta = true;
+    if (u_lobe < p_diffuse_ + p_glossy_ + p_mirror_) {
+        out.wi = reflect(wo_, n_);
+        out.weight = (1 / p_mirror_) * mirror_weight();
+        return true;
+    }
+    if (p_dielectric_ <= 0) return false;
+    // Smooth dielectric: reflect with probability F, else refract; radiance is compressed by
+    // eta^2 on entering a denser medium (pbrt's non-symmetric BTDF for radiance transport).
+    const double eta = entering_ ? m_.ior : 1 / m_.ior;
+    const double cos_i = std::max(0.0, dot(wo_, n_));
+    const double fresnel = fresnel_dielectric(cos_i, eta);
+    const Rgb weight = (1 / p_dielectric_) * m_.transmission;
+    if (u1 < fresnel) {
+        out.wi = reflect(wo_, n_);
+        out.weight = weight;
+        return true;
+    }
+    const double sin2_t = (1 - cos_i * cos_i) / (eta * eta);
+    const double cos_t = std::sqrt(std::max(0.0, 1 - sin2_t));
+    out.wi = normalized((-1 / eta) * wo_ + (cos_i / eta - cos_t) * n_);
+    out.weight = (1 / (eta * eta)) * weight;
+    return true;
+}
+
+}  // namespace rayset::tracer

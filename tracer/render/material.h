@@ -1,0 +1,62 @@
+// Physical materials made from POV-Ray textures (the mapping is in README.md beside this
+// file) and the BSDF a path samples at a surface point: a Lambertian lobe, a normalised Phong
+// lobe, a perfect mirror and a smooth dielectric, mixed with weights that never sum above one.
+#pragma once
+
+#include "tracer/render/rgb.h"
+#include "tracer/render/sampling.h"
+
+namespace rayset::tracer {
+
+struct Material {
+    Rgb diffuse;               // Lambertian albedo
+    Rgb glossy;                // albedo of the normalised Phong lobe about the mirror direction
+    double glossy_exponent = 40;
+    Rgb mirror_min, mirror_max;  // perfect mirror: weight at normal and at grazing incidence
+    double mirror_falloff = 1;
+    bool mirror_fresnel = false;
+    Rgb transmission;          // smooth dielectric lobe (Fresnel reflection + refraction)
+    double ior = 1;
+    Rgb emission;              // emitted radiance, renderer units (both sides)
+};
+
+// `emission_scale` converts W/(m^2 sr) to the renderer's radiance unit (see units.h).
+Material material_from_pov(const ObjectInstance& object, double emission_scale);
+
+struct BsdfSample {
+    Vec3 wi;
+    Rgb weight;        // f |cos| / pdf, lobe choice included
+    double pdf = 0;    // solid-angle pdf of the non-delta lobes (0 for a delta lobe)
+    bool delta = false;
+};
+
+// A material at one surface point seen from direction `wo` (unit, pointing away from it).
+class Bsdf {
+public:
+    // `normal`: the surface's geometric normal, outward for closed shapes (dielectrics use it
+    // to tell entering from leaving). `shading_normal` may differ (interpolated mesh normals).
+    Bsdf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo);
+
+    bool has_smooth_lobes() const { return p_diffuse_ + p_glossy_ > 0; }
+    // f |cos(wi)| of the non-delta lobes, and their sampling pdf.
+    Rgb eval(Vec3 wi) const;
+    double pdf(Vec3 wi) const;
+    bool sample(double u_lobe, double u1, double u2, BsdfSample& out) const;
+    // The normal on the side `wo` is on: where reflected rays leave from.
+    Vec3 facing_normal() const { return n_; }
+
+private:
+    Rgb mirror_weight() const;
+
+    const Material& m_;
+    Vec3 wo_, n_, ns_;
+    bool entering_;
+    double cos_o_;
+    double p_diffuse_ = 0, p_glossy_ = 0, p_mirror_ = 0, p_dielectric_ = 0;
+};
+
+// Unpolarised Fresnel reflectance of a smooth dielectric interface; eta = n_t / n_i,
+// cos_i > 0 on the incident side.
+double fresnel_dielectric(double cos_i, double eta);
+
+}  // namespace rayset::tracer

@@ -1,0 +1,100 @@
+// Path tracing with next-event estimation and MIS (see path_integrator.h).
+#include "tracer/render/path_integrator.h"
+
+#include <limits>
+
+namespace rayset::tracer {
+
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+}
+
+Rgb PathIntegrator::radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const {
+    PathState state;
+    state.origin = origin;
+    state.direction = direction;
+    return trace(state, rng, rays);
+}
+
+Rgb PathIntegrator::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
+    static const Material white = [] {
+        Material m;
+        m.diffuse = {1, 1, 1};
+        return m;
+    }();
+    const Bsdf bsdf(white, normal, normal, normal);
+    Rgb reflected = direct(bsdf, point, normal, rng, rays);
+    BsdfSample s;
+    const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
+    if (bsdf.sample(u_lobe, u1, u2, s)) {
+        PathState state;
+        state.origin = scene_.offset(point, normal, s.wi);
+        state.direction = s.wi;
+        state.kind = RayKind::indirect;
+        state.beta = s.weight;
+        state.bsdf_pdf = s.pdf;
+        state.depth = 1;
+        reflected += trace(state, rng, rays);
+    }
+    return kPi * reflected;
+}
+
+Rgb PathIntegrator::direct(const Bsdf& bsdf, Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
+    const double u_select = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
+    LightSample light;
+    if (!scene_.lights().sample(point, u_select, u1, u2, light)) return {};
+    const Rgb f = bsdf.eval(light.direction);
+    if (is_black(f) || is_black(light.radiance)) return {};
+    const Vec3 origin = scene_.offset(point, normal, light.direction);
+    ++rays;
+    if (scene_.occluded(origin, light.direction, 0, light.distance - scene_.epsilon())) return {};
+    const double weight = light.delta ? 1 : power_heuristic(light.pdf, bsdf.pdf(light.direction));
+    return (weight / light.pdf) * (f * light.radiance);
+}
+
+Rgb PathIntegrator::trace(PathState s, Pcg32& rng, uint64_t& rays) const {
+    const LightSet& lights = scene_.lights();
+    Rgb sum;
+    for (;; ++s.depth) {
+        SurfaceHit hit;
+        ++rays;
+        const bool found = scene_.intersect(s.origin, s.direction, 0, kInfinity, s.kind, hit);
+        if (!lights.rects().empty()) {
+            // Area lights are not geometry: a ray collects one if it crosses it before the first
+            // surface that casts shadows, which is exactly what light sampling tests.
+            double t_block = found ? hit.t : kInfinity;
+            if (found && scene_.description().objects[hit.object].no_shadow) {
+                ++rays;
+                t_block = scene_.nearest_shadow_caster(s.origin, s.direction, 0, kInfinity);
+            }
+            sum += s.beta * lights.crossed_radiance(s.origin, s.direction, t_block + scene_.epsilon(), s.bsdf_pdf);
+        }
+        if (!found) {
+            sum += s.beta * scene_.background();
+            break;
+        }
+        const Material& material = scene_.material(hit.object);
+        if (!is_black(material.emission)) sum += s.beta * material.emission;
+        const Vec3 wo = -s.direction;
+        const Bsdf bsdf(material, hit.normal, hit.shading_normal, wo);
+        if (bsdf.has_smooth_lobes() && !lights.empty())
+            sum += s.beta * direct(bsdf, hit.point, bsdf.facing_normal(), rng, rays);
+
+        BsdfSample sample;
+        const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
+        if (s.depth + 1 >= kMaxDepth || !bsdf.sample(u_lobe, u1, u2, sample) || is_black(sample.weight)) break;
+        s.beta *= sample.weight;
+        s.bsdf_pdf = sample.delta ? -1 : sample.pdf;
+        s.origin = scene_.offset(hit.point, hit.normal, sample.wi);
+        s.direction = sample.wi;
+        s.kind = RayKind::indirect;
+        if (s.depth + 1 >= kRouletteDepth) {
+            const double survive = std::min(0.95, max_component(s.beta));
+            if (rng.uniform_float() >= survive) break;
+            s.beta = (1 / survive) * s.beta;
+        }
+    }
+    return sum;
+}
+
+}  // namespace rayset::tracer

@@ -1,0 +1,42 @@
+// The reference integrator: unidirectional path tracing with next-event estimation, multiple
+// importance sampling (power heuristic) between light sampling and BSDF sampling for area
+// lights, and Russian roulette. Radiance and irradiance in renderer units (units.h).
+#pragma once
+
+#include <cstdint>
+
+#include "converters/random.h"
+#include "tracer/render/render_scene.h"
+
+namespace rayset::tracer {
+
+class PathIntegrator {
+public:
+    explicit PathIntegrator(const RenderScene& scene) : scene_(scene) {}
+
+    // Radiance arriving along a camera ray (origin, unit direction); `rays` counts every ray cast.
+    Rgb radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const;
+    // Irradiance at `point` on a virtual receiver of unit `normal` (not part of the scene),
+    // from the half-space the normal points into: pi times the radiance a white Lambertian
+    // surface there would reflect, estimated with the same path tracer.
+    Rgb irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
+
+    static constexpr int kMaxDepth = 256;      // a cap far beyond what Russian roulette lets live
+    static constexpr int kRouletteDepth = 3;   // bounces before Russian roulette starts
+
+private:
+    struct PathState {
+        Vec3 origin, direction;
+        RayKind kind = RayKind::camera;
+        Rgb beta{1, 1, 1};
+        double bsdf_pdf = -1;  // pdf of the sampled direction; < 0: no light sampling competes
+        int depth = 0;
+    };
+    Rgb trace(PathState state, Pcg32& rng, uint64_t& rays) const;
+    // Next-event estimation at a surface point (one light sample, MIS-weighted for area lights).
+    Rgb direct(const Bsdf& bsdf, Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
+
+    const RenderScene& scene_;
+};
+
+}  // namespace rayset::tracer

@@ -1,0 +1,110 @@
+// RenderScene: Embree device and scene, materials, lights, and the three ray queries.
+#include "tracer/render/render_scene.h"
+
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "converters/error.h"
+#include "tracer/render/scene_geometry.h"
+
+namespace rayset::tracer {
+
+namespace {
+
+uint8_t skip_flags(RayKind kind) {
+    switch (kind) {
+        case RayKind::camera: return kNoImage;
+        case RayKind::indirect: return kNoReflection;
+        case RayKind::shadow: return kNoShadow;
+    }
+    return 0;
+}
+
+RTCRayHit make_ray(Vec3 o, Vec3 d, double t_near, double t_far) {
+    RTCRayHit rh;
+    rh.ray.org_x = float(o.x), rh.ray.org_y = float(o.y), rh.ray.org_z = float(o.z);
+    rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
+    rh.ray.tnear = float(t_near);
+    rh.ray.tfar = t_far >= double(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity() : float(t_far);
+    rh.ray.time = 0;
+    rh.ray.mask = ~0u;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
+RecordedRay record_of(const RTCRay& ray, uint8_t skip, bool shadow) {
+    return {{ray.org_x, ray.org_y, ray.org_z}, {ray.dir_x, ray.dir_y, ray.dir_z}, ray.tnear, ray.tfar, skip, shadow};
+}
+
+void check_device(RTCDevice device, const char* what) {
+    const RTCError error = rtcGetDeviceError(device);
+    if (error != RTC_ERROR_NONE) throw Error(fmt::format("Embree failed while {} (error code {})", what, int(error)));
+}
+
+}  // namespace
+
+RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
+    units_.metres_per_unit = scene.global.millimetres_per_unit / 1000;
+    const double to_internal = 1 / units_.per_square_metre();
+    lights_ = LightSet(scene.lights, units_);
+    for (const ObjectInstance& o : scene.objects) materials_.push_back(material_from_pov(o, to_internal));
+    background_ = to_internal * scene.background.rgb();
+
+    device_ = rtcNewDevice(nullptr);
+    if (!device_) throw Error("cannot create the Embree device");
+    scene_ = rtcNewScene(device_);
+    rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+    tables_ = build_geometry(device_, scene_, scene);
+    rtcCommitScene(scene_);
+    check_device(device_, "building the scene");
+    epsilon_ = 1e-5 * tables_->extent;
+}
+
+RenderScene::~RenderScene() {
+    if (tables_)
+        for (RTCScene prototype : tables_->prototypes) rtcReleaseScene(prototype);
+    if (scene_) rtcReleaseScene(scene_);
+    if (device_) rtcReleaseDevice(device_);
+}
+
+Vec3 RenderScene::offset(Vec3 point, Vec3 normal, Vec3 direction) const {
+    const double scale = std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+    const double e = epsilon_ + 1e-6 * scale;  // float rounding of Embree's hit points
+    return point + (analytic::dot(direction, normal) >= 0 ? e : -e) * normal;
+}
+
+bool RenderScene::intersect(Vec3 origin, Vec3 direction, double t_near, double t_far, RayKind kind, SurfaceHit& hit) const {
+    TraceContext context;
+    rtcInitIntersectContext(&context.embree);
+    context.skip = skip_flags(kind);
+    RTCRayHit rh = make_ray(origin, direction, t_near, t_far);
+    if (recorder_) recorder_->push_back(record_of(rh.ray, context.skip, false));
+    rtcIntersect1(scene_, &context.embree, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    hit.t = rh.ray.tfar;
+    hit.point = origin + hit.t * direction;
+    resolve_hit(*tables_, rh.hit, hit);
+    return true;
+}
+
+double RenderScene::nearest_shadow_caster(Vec3 origin, Vec3 direction, double t_near, double t_far) const {
+    SurfaceHit hit;
+    return intersect(origin, direction, t_near, t_far, RayKind::shadow, hit) ? hit.t : t_far;
+}
+
+bool RenderScene::occluded(Vec3 origin, Vec3 direction, double t_near, double t_far) const {
+    TraceContext context;
+    rtcInitIntersectContext(&context.embree);
+    context.skip = kNoShadow;
+    RTCRayHit rh = make_ray(origin, direction, t_near, t_far);
+    if (recorder_) recorder_->push_back(record_of(rh.ray, context.skip, true));
+    rtcOccluded1(scene_, &context.embree, &rh.ray);
+    return rh.ray.tfar < 0;
+}
+
+}  // namespace rayset::tracer

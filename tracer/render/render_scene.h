@@ -1,0 +1,84 @@
+// The scene as the renderer queries it: the SceneDescription's objects in Embree 3 (world
+// triangles for triangles and boxes, instanced prototypes for meshes, user geometry for spheres,
+// ellipsoids and planes), their materials, the lights and the unit conventions.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <embree3/rtcore.h>
+
+#include "tracer/render/lights.h"
+#include "tracer/render/material.h"
+#include "tracer/render/units.h"
+
+namespace rayset::tracer {
+
+struct SurfaceHit {
+    double t = 0;
+    Vec3 point;
+    Vec3 normal;          // unit geometric normal (outward for closed shapes)
+    Vec3 shading_normal;  // unit; interpolated for meshes with normals, else `normal`
+    int object = -1;      // index into SceneDescription::objects
+};
+
+// Which objects a ray ignores, after POV-Ray's object modifiers.
+enum class RayKind {
+    camera,    // skips no_image objects
+    indirect,  // skips no_reflection objects
+    shadow,    // skips no_shadow objects
+};
+
+struct GeometryTables;
+
+// A ray as the renderer handed it to Embree (for the benchmark's bare replay).
+struct RecordedRay {
+    float origin[3], direction[3];
+    float t_near, t_far;
+    uint8_t skip;   // ObjectFlag bits the ray ignored
+    bool shadow;    // an occlusion query
+};
+
+class RenderScene {
+public:
+    explicit RenderScene(const SceneDescription& scene);
+    ~RenderScene();
+    RenderScene(const RenderScene&) = delete;
+    RenderScene& operator=(const RenderScene&) = delete;
+
+    const SceneDescription& description() const { return description_; }
+    const LightSet& lights() const { return lights_; }
+    const Material& material(int object) const { return materials_[object]; }
+    const SceneUnits& units() const { return units_; }
+    Rgb background() const { return background_; }  // renderer units
+    // Offset that moves a ray origin off the surface it starts on (scene units).
+    double epsilon() const { return epsilon_; }
+
+    // Nearest surface along (origin, unit direction) in (t_near, t_far) that this kind of ray sees.
+    bool intersect(Vec3 origin, Vec3 direction, double t_near, double t_far, RayKind kind, SurfaceHit& hit) const;
+    // Distance to the nearest shadow-casting surface (t_far when none).
+    double nearest_shadow_caster(Vec3 origin, Vec3 direction, double t_near, double t_far) const;
+    bool occluded(Vec3 origin, Vec3 direction, double t_near, double t_far) const;
+
+    // Benchmark support: while `sink` is set, every query appends its ray to it (single
+    // thread only); bare_embree_rays_per_second() replays such rays through rtcIntersect1 /
+    // rtcOccluded1 alone on `threads` threads and returns the rate.
+    void record_rays(std::vector<RecordedRay>* sink) { recorder_ = sink; }
+    double bare_embree_rays_per_second(const std::vector<RecordedRay>& rays, int threads, int repeats) const;
+    // Offsets a point off a surface along its normal, toward the side `direction` leaves to.
+    Vec3 offset(Vec3 point, Vec3 normal, Vec3 direction) const;
+
+private:
+    SceneDescription description_;
+    SceneUnits units_;
+    LightSet lights_;
+    std::vector<Material> materials_;
+    Rgb background_;
+    double epsilon_ = 1e-6;
+    RTCDevice device_ = nullptr;
+    RTCScene scene_ = nullptr;
+    std::unique_ptr<GeometryTables> tables_;
+    std::vector<RecordedRay>* recorder_ = nullptr;
+};
+
+}  // namespace rayset::tracer

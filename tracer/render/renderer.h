@@ -1,0 +1,44 @@
+// The progressive renderer: passes of one sample per pixel and per receiver cell, tiles spread
+// over TBB threads, a pass or time budget and a progress bar. Every pixel and cell draws from
+// its own PCG32 stream (stream = pixel index, seed mixed with the pass number), so an image
+// depends on the seed and the number of passes only, not on threads or timing.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tracer/film/film.h"
+#include "tracer/render/render_scene.h"
+
+namespace rayset::tracer {
+
+struct RenderSettings {
+    int width = 320, height = 240;  // POV-Ray's default size
+    int passes = 0;                 // 0: until time_limit, or kDefaultPasses without one
+    double time_limit = 0;          // seconds, checked between passes; 0: none
+    uint64_t seed = 0;
+    int threads = 0;                // 0: every core
+    bool render_image = true;       // false: receivers only
+    bool progress = false;          // progress bar on stderr (when it is a terminal)
+    int tile_size = 16;
+    static constexpr int kDefaultPasses = 16;
+};
+
+struct RenderResult {
+    Film film{1, 1};
+    std::vector<ReceiverMap> receivers;
+    int passes = 0;
+    double seconds = 0;
+    uint64_t rays = 0;  // every ray cast: camera, bounce, shadow
+};
+
+RenderResult render(const RenderScene& scene, const RenderSettings& settings);
+
+// Seed of the random streams of one pass.
+uint64_t pass_seed(uint64_t seed, int pass);
+
+// Index of the object each pixel's centre ray sees (-1: none), in the camera's frame; the
+// silhouette comparison against POV-Ray uses it.
+std::vector<int> object_id_image(const RenderScene& scene, int width, int height);
+
+}  // namespace rayset::tracer

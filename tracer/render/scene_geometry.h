@@ -1,0 +1,66 @@
+// Internal to render_scene.cpp and scene_geometry.cpp: what the renderer needs to turn an
+// Embree hit back into an object, a point and normals, and to skip objects by POV-Ray's
+// no_shadow / no_image / no_reflection modifiers.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <embree3/rtcore.h>
+
+#include "tracer/render/render_scene.h"
+
+namespace rayset::tracer {
+
+enum ObjectFlag : uint8_t { kNoShadow = 1, kNoImage = 2, kNoReflection = 4 };
+
+// Embree's context extended with the flags the ray skips (Embree hands the pointer back to
+// filter and user-geometry callbacks).
+struct TraceContext {
+    RTCIntersectContext embree;
+    uint8_t skip = 0;
+};
+
+struct QuadricPrim {
+    bool sphere = true;  // else a plane
+    int object = -1;
+    Matrix4 world_to_unit;  // sphere: world -> the unit sphere at the origin
+    Vec3 normal;            // plane: dot(normal, p) = distance, world
+    double distance = 0;
+};
+
+struct GeometryTables;
+
+// One Embree leaf geometry: world triangles, a mesh prototype or the quadrics.
+struct LeafTable {
+    const GeometryTables* tables = nullptr;
+    std::vector<int> prim_object;     // top-level triangles: object of each primitive
+    std::vector<Vec3> prim_normal;    // triangles: unit normal (world, or object space for prototypes)
+    std::shared_ptr<const TriangleMesh> mesh;  // prototypes: for interpolated normals
+    std::vector<QuadricPrim> quadrics;
+    float plane_extent = 1e6f;        // half-size of the box a plane's bounds span
+};
+
+struct InstanceRecord {
+    int object = -1;
+    Matrix4 object_to_world, world_to_object;
+    const LeafTable* prototype = nullptr;
+};
+
+struct GeometryTables {
+    std::vector<uint8_t> object_flags;                 // per object
+    std::vector<std::unique_ptr<LeafTable>> leaves;    // ownership
+    std::vector<RTCScene> prototypes;                  // released with the tables
+    std::vector<const LeafTable*> leaf_of_geometry;    // top-level geomID -> leaf (or null)
+    std::vector<int> instance_of_geometry;             // top-level geomID -> instances index (or -1)
+    std::vector<InstanceRecord> instances;
+    double extent = 1;                                 // size of the finite geometry's box
+};
+
+// Fills `scene` with the description's objects; returns the tables hits are resolved with.
+std::unique_ptr<GeometryTables> build_geometry(RTCDevice device, RTCScene scene, const SceneDescription& description);
+void add_quadric_geometry(RTCDevice device, RTCScene scene, GeometryTables& tables, LeafTable& leaf);
+// Fills the hit's object, normal and shading normal from an Embree hit (point and t set).
+void resolve_hit(const GeometryTables& tables, const RTCHit& embree_hit, SurfaceHit& hit);
+
+}  // namespace rayset::tracer

@@ -1,0 +1,124 @@
+// Polar chart: C-plane curves of one or more far fields over a ring grid labelled in intensity,
+// gamma 0 at the bottom, a legend naming each plane (and file when several are overlaid).
+#include "viz/polar_curves.h"
+#include "viz/view_style.h"
+#include "viz/views.h"
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkPoints.h>
+#include <vtkLegendBoxActor.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace rayset::viz {
+
+namespace {
+
+constexpr double kPlaneColours[6][3] = {{0.85, 0.15, 0.15}, {0.15, 0.35, 0.85}, {0.1, 0.6, 0.2},
+                                        {0.9, 0.5, 0.0},   {0.55, 0.2, 0.7},   {0.0, 0.6, 0.6}};
+
+void add_world_label(vtkRenderer* renderer, const std::string& text, double x, double y, int justify) {
+    auto label = vtkSmartPointer<vtkTextActor>::New();
+    label->SetInput(text.c_str());
+    label->GetTextProperty()->SetColor(0.35, 0.35, 0.35);
+    label->GetTextProperty()->SetFontSize(12);
+    label->GetTextProperty()->SetJustification(justify);
+    label->GetTextProperty()->SetVerticalJustificationToCentered();
+    label->GetPositionCoordinate()->SetCoordinateSystemToWorld();
+    label->GetPositionCoordinate()->SetValue(x, y, 0);
+    renderer->AddViewProp(label);
+}
+
+vtkSmartPointer<vtkActor> line_actor(vtkPolyData* data, const double colour[3], double width) {
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(data);
+    mapper->ScalarVisibilityOff();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
+    actor->GetProperty()->SetLineWidth(width);
+    return actor;
+}
+
+}  // namespace
+
+ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const IntensityTable*>& tables) {
+    double maximum = 0;
+    for (const auto* t : tables) maximum = std::max(maximum, t->max_intensity);
+    const double step = polar_ring_step(maximum);
+    const int rings = std::max(1, int(std::ceil(maximum / step - 1e-9)));
+    const double grey[3] = {0.75, 0.75, 0.75};
+    renderer->AddActor(line_actor(polar_grid(step, rings), grey, 1));
+    const std::string unit = tables.front()->unit;
+    for (int r = 1; r <= rings; ++r) add_world_label(renderer, fmt::format("{:g} {}", r * step, unit), 0.02 * step, r * step, 0);
+    const double outer = rings * step * 1.07;
+    add_world_label(renderer, "0\xC2\xB0", 0, -outer, 1);
+    add_world_label(renderer, "180\xC2\xB0", 0, outer, 1);
+    add_world_label(renderer, "90\xC2\xB0", outer, 0, 0);
+    add_world_label(renderer, "90\xC2\xB0", -outer, 0, 2);
+
+    auto legend = vtkSmartPointer<vtkLegendBoxActor>::New();
+    std::vector<std::pair<vtkSmartPointer<vtkPolyData>, std::string>> entries;
+    int colour = 0;
+    for (const auto* t : tables) {
+        auto curves = polar_curves(*t);
+        const auto planes = polar_planes(*t);
+        for (vtkIdType c = 0; c < curves->GetNumberOfCells(); ++c) {
+            // One polyline per plane, drawn in its own colour.
+            auto one = vtkSmartPointer<vtkPolyData>::New();
+            one->SetPoints(curves->GetPoints());
+            auto lines = vtkSmartPointer<vtkCellArray>::New();
+            lines->InsertNextCell(curves->GetCell(c));
+            one->SetLines(lines);
+            const double* rgb = kPlaneColours[colour % 6];
+            renderer->AddActor(line_actor(one, rgb, 2.5));
+            std::string name = fmt::format("C{:g}-C{:g}", planes[c], planes[c] + 180);
+            if (c == 2) name += " (max)";
+            if (tables.size() > 1) name = t->label + " " + name;
+            entries.emplace_back(one, name);
+            ++colour;
+        }
+    }
+    // A short horizontal line as each entry's symbol, in the entry's colour.
+    auto symbol = vtkSmartPointer<vtkPolyData>::New();
+    auto symbol_points = vtkSmartPointer<vtkPoints>::New();
+    symbol_points->InsertNextPoint(0, 0, 0);
+    symbol_points->InsertNextPoint(1, 0, 0);
+    auto symbol_line = vtkSmartPointer<vtkCellArray>::New();
+    const vtkIdType ends[2] = {0, 1};
+    symbol_line->InsertNextCell(2, ends);
+    symbol->SetPoints(symbol_points);
+    symbol->SetLines(symbol_line);
+    legend->SetNumberOfEntries(int(entries.size()));
+    colour = 0;
+    for (size_t e = 0; e < entries.size(); ++e, ++colour) {
+        double rgb[3] = {kPlaneColours[colour % 6][0], kPlaneColours[colour % 6][1], kPlaneColours[colour % 6][2]};
+        legend->SetEntry(int(e), symbol, entries[e].second.c_str(), rgb);
+    }
+    legend->GetEntryTextProperty()->SetColor(kText[0], kText[1], kText[2]);
+    legend->GetEntryTextProperty()->SetFontSize(12);
+    legend->BorderOff();
+    legend->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    legend->GetPositionCoordinate()->SetValue(0.70, 0.90 - 0.045 * entries.size());
+    legend->GetPosition2Coordinate()->SetCoordinateSystemToNormalizedViewport();
+    legend->GetPosition2Coordinate()->SetValue(0.28, 0.045 * entries.size());
+    renderer->AddViewProp(legend);
+
+    std::string title = tables.size() == 1 ? tables.front()->label + ": polar curves" : "polar curves";
+    for (const auto* t : tables)
+        title += fmt::format("\n{}maximum {:.4g} {} at C{:g} gamma {:g}", tables.size() > 1 ? t->label + ": " : "",
+                             t->max_intensity, t->unit, t->max_c_deg, t->max_gamma_deg);
+    add_title(renderer, title);
+    ViewHandles h;
+    h.flat = true;
+    return h;
+}
+
+}  // namespace rayset::viz
