@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build build --target rayconv -j "$(nproc)"
+cmake --build build --target rayconv raymodel -j "$(nproc)"
 rayconv=build/converters/rayconv
 out=out/example
 mkdir -p "$out"
@@ -26,4 +26,6 @@ echo "== far-field photometry (type C, 5 x 2.5 degree cells)"
 "$rayconv" farfield "$out/cluster.tm25ray" -o "$out/cluster.ies"
 "$rayconv" convert "$out/cluster.ies" "$out/cluster.ldt"
 "$rayconv" info "$out/cluster.ies"
+echo "== the paper's light-source model of the cluster (docs/light-model.md)"
+build/lightmodel/raymodel build "$out/cluster.tm25ray" -o "$out/cluster.vdb"
 echo "Outputs in $out/"
