@@ -169,7 +169,6 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
             density.add(origins);
             report(2, reader->progress());
         }
-        model.source.luminous = luminous_known ? reader->totals().luminous : std::nan("");
     }
 
     // Merge the threads' accumulators.
@@ -185,6 +184,13 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
         }
         for (size_t i = 0; i < total.spectrum.size(); ++i) total.spectrum[i] += a.spectrum[i];
         for (size_t k = 0; k < intensity_cells; ++k) total.diagrams[k].merge(a.diagrams[k]);
+    }
+
+    // Luminous flux of the rays: their luminous column, or their radiant flux weighted by V(lambda).
+    model.source.luminous = std::nan("");
+    if (luminous_known) {
+        model.source.luminous = 0;
+        for (double l : total.luminous) model.source.luminous += l;
     }
 
     // Occupied voxels grouped by flux cell; flux cells and diagrams that hold light.

@@ -4,7 +4,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libembree-dev libopenvdb-dev libboost-iostreams-dev libceres-dev libopenexr-dev libvtk9-dev
+  libembree-dev libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libceres-dev libopenexr-dev libvtk9-dev
   libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libeigen3-dev libpng-dev libtinyobjloader-dev xvfb xauth time
   povray  # the reference renderer of the framing test (tests/tracer/render_cornell_test.cpp)

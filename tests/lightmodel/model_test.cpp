@@ -4,6 +4,7 @@
 #include "lightmodel/model_support.h"
 
 #include "converters/random.h"
+#include "converters/spectrum.h"
 #include "converters/ray_stream.h"
 #include "lightmodel/direction_map.h"
 #include "lightmodel/model_file.h"
@@ -35,6 +36,11 @@ TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
         const BuiltSource& b = built_source(name);
         EXPECT_NEAR(b.model->total_flux() / b.ray_flux, 1, 1e-6) << name;
         EXPECT_NEAR(b.source->phi() / b.ray_flux, 1, 1e-6) << name;
+        if (std::string(name) != "cluster") {  // one wavelength, 555 nm: lm = W x 683.002 x V(555)
+            const double lm = b.ray_flux * kMaxLuminousEfficacy * photopic_efficiency(555);
+            EXPECT_NEAR(b.model->total_luminous() / lm, 1, 1e-6) << name;
+            EXPECT_NEAR(b.model->source.luminous / lm, 1, 1e-6) << name;
+        }
         write_model(*b.model, dir.file(std::string(name) + ".vdb"));
         const lightmodel::LightModel back = lightmodel::read_model(dir.file(std::string(name) + ".vdb"));
         EXPECT_NEAR(back.total_flux() / b.ray_flux, 1, 1e-12) << name;

@@ -129,7 +129,8 @@ LightSet::LightSet(const std::vector<LightSource>& lights, const SceneUnits& uni
             }
     for (double p : point_powers) cdf_.push_back(total_power_ += p);
     for (double p : rect_powers) cdf_.push_back(total_power_ += p);
-    for (size_t i = 0; i < cdf_.size(); ++i) probability_.push_back((cdf_[i] - (i ? cdf_[i - 1] : 0)) / total_power_);
+    for (size_t i = 0; i < cdf_.size(); ++i)
+        probability_.push_back(total_power_ > 0 ? (cdf_[i] - (i ? cdf_[i - 1] : 0)) / total_power_ : 0);
 }
 
 bool LightSet::sample(Vec3 p, double u_select, double u1, double u2, LightSample& out) const {
