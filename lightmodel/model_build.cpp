@@ -93,18 +93,19 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
     model.intensity_frame = LatticeFrame(bounds, options.intensity_resolution);
     const LatticeFrame& dframe = model.density_frame;
 
-    // Each density voxel belongs to the flux and intensity cells holding its centre, so the
-    // three lattices partition the same voxels and a ray's flux lands where its voxel is.
+    // The lattices nest: a density voxel belongs to the flux cell holding its centre, a flux
+    // cell to the intensity cell holding its centre (the three resolutions need not divide each
+    // other). A ray's flux and its direction so land in the same cell's flux and diagram.
     const size_t voxel_count = size_t(dframe.cell_count());
     std::vector<int32_t> voxel_flux_cell(voxel_count), voxel_intensity_cell(voxel_count);
     for (int32_t z = 0; z < dframe.dims()[2]; ++z)
         for (int32_t y = 0; y < dframe.dims()[1]; ++y)
             for (int32_t x = 0; x < dframe.dims()[0]; ++x) {
                 const Coord c{x, y, z};
-                const Vec3 centre = dframe.cell_centre(c);
-                voxel_flux_cell[size_t(dframe.linear(c))] = int32_t(model.flux_frame.linear(model.flux_frame.cell_of(centre)));
-                voxel_intensity_cell[size_t(dframe.linear(c))] =
-                    int32_t(model.intensity_frame.linear(model.intensity_frame.cell_of(centre)));
+                const Coord flux_cell = model.flux_frame.cell_of(dframe.cell_centre(c));
+                voxel_flux_cell[size_t(dframe.linear(c))] = int32_t(model.flux_frame.linear(flux_cell));
+                voxel_intensity_cell[size_t(dframe.linear(c))] = int32_t(
+                    model.intensity_frame.linear(model.intensity_frame.cell_of(model.flux_frame.cell_centre(flux_cell))));
             }
 
     // Pass 2: density, flux, spectra, diagrams.

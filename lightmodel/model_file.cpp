@@ -336,7 +336,8 @@ LightModel read_model(const std::string& path) {
             if (found == cell_index.end()) continue;  // a voxel whose rays carried no flux
             grouped[found->second].emplace_back(v, *it);
             FluxCell& cell = model.flux_cells[found->second];
-            if (cell.intensity_cell < 0) cell.intensity_cell = ia.getValue(vdb(model.intensity_frame.cell_of(centre)));
+            if (cell.intensity_cell < 0)
+                cell.intensity_cell = ia.getValue(vdb(model.intensity_frame.cell_of(model.flux_frame.cell_centre(cell.coord))));
         }
     }
     for (size_t c = 0; c < grouped.size(); ++c) {

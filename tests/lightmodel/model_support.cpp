@@ -13,7 +13,7 @@ std::unique_ptr<analytic::Source> make_truth(const std::string& name) {
     using namespace analytic;
     Spectrum spectrum;
     spectrum.wavelength_nm = 555;
-    if (name == "disk") return std::make_unique<LambertianDisk>(LambertianDisk::with_flux(1, 1, spectrum));
+    if (name == "disk" || name == "disk4m") return std::make_unique<LambertianDisk>(LambertianDisk::with_flux(1, 1, spectrum));
     if (name == "sphere") return std::make_unique<LambertianSphere>(LambertianSphere::with_flux(1, 1, spectrum));
     if (name == "lobe") return std::make_unique<CosineLobe>(CosineLobe::with_flux(4, 1, spectrum));
     return std::make_unique<ChipCluster>(ChipCluster::Layout{}, std::vector<double>{1.0 / 39},
@@ -33,7 +33,7 @@ const BuiltSource& built_source(const std::string& name) {
     BuiltSource b;
     b.truth = make_truth(name);
     b.ray_file = scratch.file(name + ".tm25ray");
-    const uint64_t rays = 1000000, seed = 7;
+    const uint64_t rays = name == "disk4m" ? 4000000 : 1000000, seed = 7;
     {
         auto out = create_rays(b.ray_file, RayFormat::tm25, synth_header(*b.truth, rays, seed));
         synthesize(*b.truth, rays, seed, *out);

@@ -22,7 +22,8 @@ struct BuiltSource {
 };
 
 // "disk" (radius 1 mm), "sphere" (radius 1 mm), "lobe" (cos^4), "cluster" (the 39 chips);
-// 1 W, 1e6 rays, seed 7. Built on first use and kept for the whole test binary.
+// 1 W, 1e6 rays, seed 7; "disk4m": the disk from 4e6 rays. Built on first use and kept for the
+// whole test binary.
 const BuiltSource& built_source(const std::string& name);
 
 }  // namespace rayset::test
