@@ -107,7 +107,10 @@ int connected_components(vtkPolyData* spheres) {
 TEST(ClusterModelViews, ExportedSpheresFormOneBlobPerChip) {
     auto spheres = read_polydata(export_dir() + "/spheres.vtp");
     ASSERT_GT(spheres->GetNumberOfPoints(), 39);
-    EXPECT_EQ(connected_components(spheres), 39);
+    const int components = connected_components(spheres);
+    RecordProperty("spheres", int(spheres->GetNumberOfPoints()));
+    RecordProperty("components", components);
+    EXPECT_EQ(components, 39);
 }
 
 TEST(ClusterModelViews, SpheresPngShowsTheBodyAndItsScalarBar) {
@@ -126,6 +129,8 @@ TEST(ClusterModelViews, SpheresPngShowsTheBodyAndItsScalarBar) {
     EXPECT_GT(s.foreground, 0.03 * s.width * s.height);
     // The bar is a colour gradient: many distinct colours there, not just text.
     EXPECT_GT(s.region_foreground, 0.3 * 0.12 * 0.8 * 0.5 * s.width * s.height);
+    RecordProperty("foreground_fraction", std::to_string(double(s.foreground) / (s.width * s.height)));
+    RecordProperty("bar_colours", s.region_colours);
     EXPECT_GT(s.region_colours, 50);
 }
 
@@ -153,6 +158,9 @@ TEST(ClusterModelViews, CentreCellDiagramIsTheLambertianLobe) {
     EXPECT_NEAR(pole[1], 0, 1e-12);
     const double expected = cell_flux / analytic::kPi;
     const double sigma = std::sqrt(2.25 / (0.0975 * rays) + 0.25 / (0.0925 * rays));
+    RecordProperty("pole_ratio", std::to_string(radius_z / expected));
+    RecordProperty("pole_bound", std::to_string(4 * sigma));
+    RecordProperty("cell_rays", std::to_string(rays));
     EXPECT_NEAR(radius_z / expected, 1, 4 * sigma) << "radius along +z " << radius_z << ", Phi_k/pi " << expected
                                                    << ", rays " << rays;
 
@@ -165,6 +173,7 @@ TEST(ClusterModelViews, CentreCellDiagramIsTheLambertianLobe) {
         double mean = 0;
         for (int i = 0; i < 72; ++i) mean += intensity->GetComponent(1 + (ring - 1) * 72 + i, 0) / 72;
         const double band_rays = rays * 2 * std::cos(theta) / 40;
+        RecordProperty("ring_" + std::to_string(ring), std::to_string(mean / (expected * std::cos(theta))));
         EXPECT_NEAR(mean / (expected * std::cos(theta)), 1, 4 / std::sqrt(band_rays)) << "theta " << theta;
     }
 }
@@ -186,6 +195,8 @@ TEST(ClusterModelViews, DiagramsAddUpToTheClusterIntensity) {
     const double truth = cluster.truth->intensity({0, 0, 1});
     EXPECT_NEAR(truth, 1 / analytic::kPi, 1e-12);
     const double sigma = std::sqrt(2.25 / (0.0975 * 1e6) + 0.25 / (0.0925 * 1e6));
+    RecordProperty("sum_ratio", std::to_string(sum / truth));
+    RecordProperty("sum_bound", std::to_string(4 * sigma));
     EXPECT_NEAR(sum / truth, 1, 4 * sigma) << "sum " << sum;
 }
 

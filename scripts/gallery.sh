@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Regenerates docs/gallery/: every rayview view rendered off-screen from the bundled example
+# (the synthetic 39-chip cluster) and the real files in ../shared/data when they are there.
+# Usage: scripts/gallery.sh        (after a build; runs under xvfb-run when there is no display)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${BUILD_DIR:-build}
+cmake --build "$build" --target rayview rayconv raymodel -j 2
+out=docs/gallery
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+run() { if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a "$@"; fi; }
+view() { run "$build/viz/rayview" "$@" --size 900x675 >/dev/null; }
+
+"$build/converters/rayconv" synth cluster --rays 1000000 --seed 7 -o "$work/cluster.tm25ray" >/dev/null
+"$build/lightmodel/raymodel" build "$work/cluster.tm25ray" -o "$work/cluster.vdb" >/dev/null
+mkdir -p "$out"
+view "$work/cluster.vdb" --show spheres --png "$out/cluster-spheres.png"
+view "$work/cluster.vdb" --show density --png "$out/cluster-density.png"
+view "$work/cluster.vdb" --show flux --png "$out/cluster-flux.png"
+view "$work/cluster.vdb" --show diagram --cell 2,2,0 --png "$out/cluster-diagram.png"
+view "$work/cluster.tm25ray" --show rays --points 3000 --png "$out/cluster-rays.png"
+view "$work/cluster.tm25ray" --show polar --png "$out/cluster-polar.png"
+
+data=../shared/data
+if [ -d "$data" ]; then
+  blue=$data/rayfiles/rayfile_LERTDUW_S2WP_blue_100k_20161013_IES_TM25.TM25RAY
+  view "$blue" --show farfield --png "$out/osram-blue-farfield.png"
+  view "$blue" --show polar --png "$out/osram-blue-polar.png"
+  view "$data/photometry/ABSOLUTE_LED.ies" --show farfield --png "$out/ies-farfield.png"
+  view "$blue" --show polar --compare "$work/cluster.tm25ray" --png "$out/compare-polar.png"
+fi
+echo "gallery written to $out"
