@@ -203,4 +203,29 @@ std::string format_double(double value) {
     return std::string(buffer, ptr);
 }
 
+void write_atomically(const std::string& path, const std::function<bool(const std::string&)>& write) {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    // Same extension, so writers that look at it (none of VTK's XML ones do) still agree.
+    const fs::path temporary = target.parent_path() / ("." + target.stem().string() + ".partial" + target.extension().string());
+    std::error_code ignored;
+    bool written = false;
+    try {
+        written = write(temporary.string()) && fs::exists(temporary);
+    } catch (const std::exception& e) {
+        fs::remove(temporary, ignored);
+        throw Error(path + ": cannot write: " + e.what());
+    }
+    if (!written) {
+        fs::remove(temporary, ignored);
+        throw Error(path + ": cannot write");
+    }
+    std::error_code error;
+    fs::rename(temporary, target, error);
+    if (error) {
+        fs::remove(temporary, ignored);
+        throw Error(path + ": cannot write: " + error.message());
+    }
+}
+
 }  // namespace rayset

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -73,6 +74,12 @@ private:
     uint64_t offset_ = 0;
     uint64_t line_number_ = 0;
 };
+
+// For writers that take a file name (OpenVDB, VTK): `write` gets a temporary path beside `path`
+// (hidden, same extension) and returns whether it succeeded; the file is then renamed into
+// place. On failure or an exception the temporary file is removed, whatever was at `path` is
+// untouched, and rayset::Error names `path`.
+void write_atomically(const std::string& path, const std::function<bool(const std::string&)>& write);
 
 // Writes to a temporary file beside the target and renames it into place on commit(). If the
 // object is destroyed without commit() (an error was thrown), the temporary file is removed and

@@ -1,6 +1,7 @@
 #include "lightmodel/model_file.h"
 
 #include "converters/error.h"
+#include "converters/io.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/points/PointAttribute.h>
@@ -10,7 +11,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -204,19 +204,13 @@ void write_model(const LightModel& model, const std::string& path) {
                         " seed=" + std::to_string(o.seed)));
 
     // Written beside the target and renamed into place: no half-written model on failure.
-    const std::filesystem::path target(path);
-    const std::filesystem::path temp = target.parent_path() / ("." + target.filename().string() + ".partial");
-    try {
-        openvdb::io::File file(temp.string());
+    write_atomically(path, [&](const std::string& temporary) {
+        openvdb::io::File file(temporary);
         file.setCompression(openvdb::io::COMPRESS_BLOSC);
         file.write(grids, meta);
         file.close();
-        std::filesystem::rename(temp, target);
-    } catch (const std::exception& e) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        throw Error(path + ": cannot write the model: " + e.what());
-    }
+        return true;
+    });
 }
 
 LightModel read_model(const std::string& path) {
