@@ -55,6 +55,9 @@ int run(int argc, char** argv) {
     settings.seed = options.seed;
     settings.threads = options.threads;
     settings.progress = !options.quiet;
+    settings.photons_per_pass = options.photons_per_pass;
+    settings.photon_radius = options.photon_radius;
+    settings.naive_sources = options.naive_sources;
     if (options.bench) {
         run_raytrace_benchmark(scene, settings);
         return 0;
@@ -66,10 +69,24 @@ int run(int argc, char** argv) {
             throw Error(target + ": the output folder does not exist");
     }
     const RenderResult result = render(scene, settings);
-    const std::vector<std::string> written = write_render_outputs(&result.film, result.receivers, request);
+    std::vector<std::string> written = write_render_outputs(&result.film, result.receivers, request);
+    for (const RenderLayer& layer : result.layers) {  // bidirectional: OUT.LAYER.exr, .png, receiver maps
+        OutputRequest layer_request = request;
+        auto with_layer = [&](const std::string& path) {
+            return path.empty() ? path : fs::path(path).replace_extension("." + layer.name + fs::path(path).extension().string()).string();
+        };
+        layer_request.exr = with_layer(request.exr);
+        layer_request.png = with_layer(request.png);
+        layer_request.receiver_prefix = request.receiver_prefix + "." + layer.name;
+        for (const std::string& file : write_render_outputs(&layer.film, layer.receivers, layer_request))
+            written.push_back(file);
+    }
     if (!options.quiet) {
         fmt::print("{} x {} pixels, {} passes in {:.2f} s, {:.3g} rays ({:.3g} rays/s)\n", settings.width,
                    settings.height, result.passes, result.seconds, double(result.rays), result.rays / result.seconds);
+        if (result.photons)
+            fmt::print("{:.3g} photons ({:.3g} photons/s), final gather radius {:.4g}\n", double(result.photons),
+                       result.photons / result.seconds, result.photon_radius);
         for (const std::string& file : written) fmt::print("wrote {}\n", file);
     }
     return 0;

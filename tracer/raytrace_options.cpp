@@ -136,6 +136,13 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
     app.add_flag("--bench", o.bench, "Benchmark: renderer rays/s against bare Embree rtcIntersect1 on the same "
                                      "rays, 1 and 2 threads; writes nothing");
     app.add_flag("-q,--quiet", o.quiet, "No progress bar or summary");
+    app.add_option("--photons", o.photons_per_pass, "Bidirectional: photons per pass (default: the pass's camera "
+                                                    "samples, at least 65536)")->check(CLI::PositiveNumber);
+    app.add_option("--photon-radius", o.photon_radius, "Bidirectional: gather radius of the first pass in scene "
+                                                       "units (default: 1/100 of the visible points' extent)")
+        ->check(CLI::PositiveNumber);
+    app.add_flag("--naive-sources", o.naive_sources, "Bidirectional: ray sources as their stored rays (the naive "
+                                                     "model of the paper's Figure 1) instead of the light model");
     try {
         std::reverse(rest.begin(), rest.end());  // CLI11 takes the arguments in reverse order
         app.parse(rest);

@@ -23,6 +23,10 @@ struct RaytraceOptions {
     std::vector<std::string> include_paths;
     bool bench = false;
     bool quiet = false;
+    // Bidirectional integrator (global_settings { integrator "bidirectional" }).
+    int photons_per_pass = 0;     // 0: the renderer's default
+    double photon_radius = 0;     // scene units; 0: the renderer's default
+    bool naive_sources = false;   // ray sources as their stored rays (paper Figure 1)
 };
 
 // Returns false when the program should exit with `exit_code` (help shown, or a usage error

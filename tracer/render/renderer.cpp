@@ -13,6 +13,7 @@
 #include "converters/random.h"
 #include "tracer/render/camera.h"
 #include "tracer/render/path_integrator.h"
+#include "tracer/render/ray_sources.h"
 
 namespace rayset::tracer {
 
@@ -75,6 +76,8 @@ void render_pass_receivers(const PassContext& c, std::vector<ReceiverMap>& maps,
 
 RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
     using Clock = std::chrono::steady_clock;
+    if (scene.description().global.integrator == "bidirectional")
+        return render_bidirectional(scene, RaySourceSet(scene.description(), settings.naive_sources), settings);
     const auto start = Clock::now();
     const PerspectiveCamera camera(scene.description().camera, settings.width, settings.height);
     const PathIntegrator integrator(scene);

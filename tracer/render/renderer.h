@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "tracer/film/film.h"
@@ -22,6 +23,18 @@ struct RenderSettings {
     bool progress = false;          // progress bar on stderr (when it is a terminal)
     int tile_size = 16;
     static constexpr int kDefaultPasses = 16;
+    // Bidirectional integrator (bidirectional_renderer.cpp).
+    int photons_per_pass = 0;   // 0: the camera samples of a pass (pixels + receiver cells), at least 65536
+    double photon_radius = 0;   // gather radius of the first pass, scene units; 0: 1/100 of the
+                                // diagonal of the box of the first pass's visible points
+    bool naive_sources = false; // ray sources as their stored rays (the paper's Figure 1)
+};
+
+// One light component of a bidirectional render, as its own image and receiver maps.
+struct RenderLayer {
+    std::string name;  // direct_visibility, primary, secondary
+    Film film{1, 1};
+    std::vector<ReceiverMap> receivers;
 };
 
 struct RenderResult {
@@ -30,9 +43,20 @@ struct RenderResult {
     int passes = 0;
     double seconds = 0;
     uint64_t rays = 0;  // every ray cast: camera, bounce, shadow
+    // Bidirectional only: the components (the film and receivers above hold their sum plus
+    // the ordinary lights), photons emitted, and the gather radius of the last pass.
+    std::vector<RenderLayer> layers;
+    uint64_t photons = 0;
+    double photon_radius = 0;
 };
 
+// The scene's integrator: global_settings { integrator "path" } (default) or "bidirectional".
 RenderResult render(const RenderScene& scene, const RenderSettings& settings);
+
+class RaySourceSet;
+// Progressive bidirectional render (bidirectional_integrator.h) with the scene's ray sources
+// already loaded; lights, emission and background are added by the path tracer.
+RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings);
 
 // Seed of the random streams of one pass.
 uint64_t pass_seed(uint64_t seed, int pass);

@@ -1,0 +1,75 @@
+// The bidirectional integrator of issue 6 (paper eqs. 1-5) for scenes lit by ray sources:
+//   camera pass  - camera rays through specular chains (mirror, glass); a ray that meets a
+//                  source body adds its radiance (direct visibility, eq. 2); at the first
+//                  vertex with a smooth lobe the primary light of the sources is estimated by
+//                  light sampling (eq. 3) and BSDF sampling (eq. 4) with the power heuristic,
+//                  and a visible point is kept for the photon pass;
+//   photon pass  - photons from every source (sample_Le), Russian roulette; a photon is
+//                  stored only after at least one scattering (eq. 5: secondary light), so
+//                  the direct light the camera pass computed is not counted twice.
+// The naive ray set has no body and cannot be light sampled: its photons are stored from
+// the first hit as well and make its primary light.
+// Radiance and irradiance in renderer units (units.h); ray-source bodies are not geometry:
+// light passes through them, and a ray adds every body it meets before the first surface.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "converters/random.h"
+#include "tracer/render/photon_grid.h"
+#include "tracer/render/ray_sources.h"
+#include "tracer/render/render_scene.h"
+
+namespace rayset::tracer {
+
+// A surface point where a camera path met its first smooth lobe, with the path throughput.
+struct VisiblePoint {
+    Vec3 point, normal, shading_normal, wo;
+    int object = -1;
+    Rgb beta;
+    uint32_t pixel = 0;
+};
+
+struct CameraSample {
+    Rgb direct_visibility, primary;
+};
+
+class BidirectionalIntegrator {
+public:
+    BidirectionalIntegrator(const RenderScene& scene, const RaySourceSet& sources) : scene_(scene), sources_(sources) {}
+
+    // Camera pass of one camera ray; visible points are appended to `visible` with `pixel`.
+    CameraSample camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng, uint64_t& rays,
+                             std::vector<VisiblePoint>& visible) const;
+    // Primary irradiance of the sources at a virtual receiver point (pi x the radiance a white
+    // Lambertian surface there would reflect), from the side `normal` points into.
+    Rgb receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
+
+    // Photons [first, first + count) of a pass of `emitted` photons; each photon i draws from
+    // stream i of `seed`, so the result does not depend on how the range is split.
+    std::vector<Photon> trace_photons(uint64_t first, uint64_t count, uint64_t emitted, uint64_t seed,
+                                      uint64_t& rays) const;
+
+    // Radiance the photons near a visible point reflect toward its wo (density estimation over
+    // a disk of the grid's radius), split into photons that came straight from a source and
+    // those that scattered before.
+    void gather(const VisiblePoint& vp, const PhotonGrid& grid, Rgb& direct, Rgb& scattered) const;
+    // Irradiance at a receiver point from photons that landed on a surface there facing the
+    // same way, split the same way.
+    void gather_irradiance(Vec3 point, Vec3 normal, const PhotonGrid& grid, Rgb& direct, Rgb& scattered) const;
+
+    static constexpr int kMaxDepth = 256;
+    static constexpr int kRouletteDepth = 3;
+
+private:
+    Rgb sample_sources(const Bsdf& bsdf, Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
+    // Radiance of every body a BSDF-sampled ray meets before the first surface, each weighted
+    // against light sampling of its source.
+    Rgb bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, Vec3 ref, uint64_t& rays) const;
+
+    const RenderScene& scene_;
+    const RaySourceSet& sources_;
+};
+
+}  // namespace rayset::tracer

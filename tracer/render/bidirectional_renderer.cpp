@@ -1,0 +1,225 @@
+// Progressive passes of the bidirectional integrator: camera pass over TBB tiles, photon pass,
+// density estimation at the pass's visible points, then the layers' films.
+//
+// Progressive photon mapping in the probabilistic form of Knaus & Zwicker 2011 ("Progressive
+// photon mapping: a probabilistic approach", ACM TOG 30(3)): every pass has fresh visible
+// points and photons, all gathers of pass i use one radius r_i, and the image is the average
+// of the passes. r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1) with alpha = 2/3 (the rule and value of
+// Hachisuka, Ogaki & Jensen 2008, "Progressive photon mapping"), so both the variance and the
+// bias of the average vanish as passes grow.
+#include "tracer/render/renderer.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "converters/progress.h"
+#include "tracer/render/bidirectional_integrator.h"
+#include "tracer/render/camera.h"
+#include "tracer/render/path_integrator.h"
+
+namespace rayset::tracer {
+
+namespace {
+
+constexpr double kAlpha = 2.0 / 3.0;
+constexpr uint64_t kPhotonBlock = 4096;
+constexpr uint64_t kMinimumPhotons = 65536;
+constexpr uint64_t kPhotonSeedSalt = 0x6A09E667F3BCC909ULL;  // photon streams apart from camera streams
+
+// Lights, emitting surfaces and the background are the path tracer's; skip it when there are none.
+bool has_ordinary_light(const RenderScene& scene) {
+    if (!scene.lights().empty() || !is_black(scene.background())) return true;
+    for (size_t i = 0; i < scene.description().objects.size(); ++i)
+        if (!is_black(scene.material(int(i)).emission)) return true;
+    return false;
+}
+
+// Per camera sample of one pass, renderer units.
+struct PassValues {
+    std::vector<Rgb> direct, primary, secondary, ordinary;
+    explicit PassValues(size_t n) : direct(n), primary(n), secondary(n), ordinary(n) {}
+};
+
+double default_radius(const std::vector<std::vector<VisiblePoint>>& points, const std::vector<ReceiverMap>& receivers) {
+    lightmodel::Box box;
+    for (const auto& tile : points)
+        for (const VisiblePoint& vp : tile) box.extend(vp.point);
+    for (const ReceiverMap& map : receivers)
+        for (int j = 0; j < map.receiver.ny; ++j)
+            for (int i = 0; i < map.receiver.nx; ++i) box.extend(map.cell_centre(i, j));
+    const double diagonal = box.lower.x <= box.upper.x ? analytic::length(box.extent()) : 0;
+    return diagonal > 0 ? diagonal / 100 : 1;
+}
+
+}  // namespace
+
+RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    const int w = settings.width, h = settings.height;
+    const PerspectiveCamera camera(scene.description().camera, w, h);
+    const BidirectionalIntegrator integrator(scene, sources);
+    const PathIntegrator path(scene);
+    const bool ordinary = has_ordinary_light(scene);
+    const double to_si = scene.units().per_square_metre();
+
+    RenderResult result;
+    for (const char* name : {"direct_visibility", "primary", "secondary"}) result.layers.push_back({name, Film(1, 1), {}});
+    auto make_maps = [&](std::vector<ReceiverMap>& maps) {
+        for (const IlluminanceReceiver& r : scene.description().receivers) maps.emplace_back(r);
+    };
+    make_maps(result.receivers);
+    for (RenderLayer& layer : result.layers) {
+        if (settings.render_image) layer.film = Film(w, h);
+        make_maps(layer.receivers);
+    }
+    if (settings.render_image) result.film = Film(w, h);
+
+    const size_t pixels = settings.render_image ? size_t(w) * h : 0;
+    std::vector<size_t> receiver_first;  // first cell of each receiver in the pass arrays
+    size_t cells = 0;
+    for (const ReceiverMap& map : result.receivers) receiver_first.push_back(cells), cells += size_t(map.receiver.nx) * map.receiver.ny;
+    const uint64_t photons_per_pass =
+        settings.photons_per_pass > 0 ? uint64_t(settings.photons_per_pass) : std::max<uint64_t>(kMinimumPhotons, pixels + cells);
+    double radius = settings.photon_radius;
+
+    const int tile = settings.tile_size, tiles_x = (w + tile - 1) / tile, tiles_y = (h + tile - 1) / tile;
+    const int tiles = settings.render_image ? tiles_x * tiles_y : 0;
+    const int pass_budget = settings.passes > 0 ? settings.passes
+                            : settings.time_limit > 0 ? std::numeric_limits<int>::max()
+                                                      : RenderSettings::kDefaultPasses;
+    tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+    ProgressBar progress("rendering", settings.progress);
+    std::atomic<uint64_t> rays{0};
+
+    while (result.passes < pass_budget && !(settings.time_limit > 0 && elapsed() >= settings.time_limit)) {
+        const uint64_t seed = pass_seed(settings.seed, result.passes);
+        PassValues image(pixels), cell(cells);
+        std::vector<std::vector<VisiblePoint>> visible(static_cast<size_t>(tiles));
+        arena.execute([&] {
+            // Camera pass.
+            tbb::parallel_for(tbb::blocked_range<int>(0, tiles), [&](const tbb::blocked_range<int>& range) {
+                uint64_t counted = 0;
+                for (int t = range.begin(); t != range.end(); ++t) {
+                    const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
+                    for (int y = y0; y < std::min(h, y0 + tile); ++y)
+                        for (int x = x0; x < std::min(w, x0 + tile); ++x) {
+                            const uint32_t p = uint32_t(y) * w + x;
+                            Pcg32 rng(seed, p);
+                            const double px = x + rng.uniform_float(), py = y + rng.uniform_float();
+                            const CameraRay ray = camera.ray(px, py);
+                            const CameraSample s = integrator.camera_path(ray.origin, ray.direction, p, rng, counted, visible[t]);
+                            image.direct[p] = s.direct_visibility;
+                            image.primary[p] = s.primary;
+                            if (ordinary) image.ordinary[p] = path.radiance(ray.origin, ray.direction, rng, counted);
+                        }
+                }
+                rays += counted;
+            });
+            const uint64_t stream = uint64_t(w) * h;
+            for (size_t r = 0; r < result.receivers.size(); ++r) {
+                const ReceiverMap& map = result.receivers[r];
+                const int nx = map.receiver.nx, ny = map.receiver.ny;
+                const Vec3 normal = map.front_normal();
+                tbb::parallel_for(tbb::blocked_range<int>(0, nx * ny), [&](const tbb::blocked_range<int>& range) {
+                    uint64_t counted = 0;
+                    for (int k = range.begin(); k != range.end(); ++k) {
+                        const size_t c = receiver_first[r] + size_t(k);
+                        Pcg32 rng(seed, stream + c);
+                        const Vec3 point = map.cell_centre(k % nx, k / nx);
+                        cell.primary[c] = integrator.receiver_primary(point, normal, rng, counted);
+                        if (ordinary) cell.ordinary[c] = path.irradiance(point, normal, rng, counted);
+                    }
+                    rays += counted;
+                });
+            }
+            if (sources.empty() || (tiles == 0 && cells == 0)) return;
+
+            // Photon pass, in fixed blocks so that the photons' order does not depend on threads.
+            if (!(radius > 0)) radius = default_radius(visible, result.receivers);
+            const uint64_t photon_seed = pass_seed(settings.seed ^ kPhotonSeedSalt, result.passes);
+            const size_t blocks = size_t((photons_per_pass + kPhotonBlock - 1) / kPhotonBlock);
+            std::vector<std::vector<Photon>> traced(blocks);
+            tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+                uint64_t counted = 0;
+                const uint64_t first = b * kPhotonBlock, count = std::min(kPhotonBlock, photons_per_pass - first);
+                traced[b] = integrator.trace_photons(first, count, photons_per_pass, photon_seed, counted);
+                rays += counted;
+            });
+            std::vector<Photon> photons;
+            for (auto& block : traced) photons.insert(photons.end(), block.begin(), block.end());
+            const PhotonGrid grid(std::move(photons), radius);
+
+            // Density estimation at the visible points and receiver cells.
+            tbb::parallel_for(0, tiles, [&](int t) {
+                for (const VisiblePoint& vp : visible[size_t(t)]) {
+                    Rgb direct, scattered;
+                    integrator.gather(vp, grid, direct, scattered);
+                    image.primary[vp.pixel] += direct;
+                    image.secondary[vp.pixel] += scattered;
+                }
+            });
+            for (size_t r = 0; r < result.receivers.size(); ++r) {
+                const ReceiverMap& map = result.receivers[r];
+                const int nx = map.receiver.nx;
+                const Vec3 normal = map.front_normal();
+                tbb::parallel_for(0, nx * map.receiver.ny, [&](int k) {
+                    const size_t c = receiver_first[r] + size_t(k);
+                    Rgb direct, scattered;
+                    integrator.gather_irradiance(map.cell_centre(k % nx, k / nx), normal, grid, direct, scattered);
+                    cell.primary[c] += direct;
+                    cell.secondary[c] += scattered;
+                });
+            }
+        });
+        result.photons += sources.empty() ? 0 : photons_per_pass;
+        result.photon_radius = radius;
+
+        auto accumulate = [&](const PassValues& v, size_t i, auto&& add) {
+            add(0, to_si * v.direct[i]);
+            add(1, to_si * v.primary[i]);
+            add(2, to_si * v.secondary[i]);
+            add(3, to_si * (v.direct[i] + v.primary[i] + v.secondary[i] + v.ordinary[i]));
+        };
+        for (size_t p = 0; p < pixels; ++p) {
+            const int x = int(p % w), y = int(p / w);
+            accumulate(image, p, [&](int layer, Rgb value) {
+                (layer < 3 ? result.layers[size_t(layer)].film : result.film).add(x, y, value);
+            });
+        }
+        for (size_t r = 0; r < result.receivers.size(); ++r) {
+            const int nx = result.receivers[r].receiver.nx, ny = result.receivers[r].receiver.ny;
+            for (int k = 0; k < nx * ny; ++k)
+                accumulate(cell, receiver_first[r] + size_t(k), [&](int layer, Rgb value) {
+                    (layer < 3 ? result.layers[size_t(layer)].receivers[r] : result.receivers[r]).irradiance.add(k % nx, k / nx, value);
+                });
+        }
+        if (settings.render_image) {
+            result.film.finish_pass();
+            for (RenderLayer& layer : result.layers) layer.film.finish_pass();
+        }
+        for (ReceiverMap& map : result.receivers) map.irradiance.finish_pass();
+        for (RenderLayer& layer : result.layers)
+            for (ReceiverMap& map : layer.receivers) map.irradiance.finish_pass();
+        ++result.passes;
+        radius *= std::sqrt((result.passes + kAlpha) / (result.passes + 1));
+
+        double fraction = settings.passes > 0 ? double(result.passes) / settings.passes : 0;
+        if (settings.time_limit > 0) fraction = std::max(fraction, elapsed() / settings.time_limit);
+        if (settings.passes == 0 && settings.time_limit <= 0) fraction = double(result.passes) / pass_budget;
+        progress.update(std::min(1.0, fraction));
+    }
+    progress.done();
+    result.seconds = elapsed();
+    result.rays = rays;
+    return result;
+}
+
+}  // namespace rayset::tracer

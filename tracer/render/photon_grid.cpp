@@ -1,0 +1,23 @@
+// Hashed photon grid (see photon_grid.h).
+#include "tracer/render/photon_grid.h"
+
+#include <cmath>
+
+namespace rayset::tracer {
+
+PhotonGrid::PhotonGrid(std::vector<Photon> photons, double radius) : photons_(std::move(photons)), radius_(radius) {
+    table_size_ = std::max<size_t>(1, 2 * photons_.size());
+    start_.assign(table_size_ + 1, 0);
+    std::vector<size_t> slot(photons_.size());
+    for (size_t i = 0; i < photons_.size(); ++i) {
+        const Vec3 p = photons_[i].position;
+        slot[i] = hash(cell_of(p.x), cell_of(p.y), cell_of(p.z));
+        ++start_[slot[i] + 1];
+    }
+    for (size_t h = 0; h < table_size_; ++h) start_[h + 1] += start_[h];
+    std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
+    order_.resize(photons_.size());
+    for (size_t i = 0; i < photons_.size(); ++i) order_[fill[slot[i]]++] = uint32_t(i);
+}
+
+}  // namespace rayset::tracer
