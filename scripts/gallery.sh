@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
-cmake --build "$build" --target rayview rayconv raymodel -j 2
+cmake --build "$build" --target rayview rayconv raymodel raytrace -j 2
 out=docs/gallery
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -21,6 +21,10 @@ view "$work/cluster.vdb" --show flux --png "$out/cluster-flux.png"
 view "$work/cluster.vdb" --show diagram --cell 2,2,0 --png "$out/cluster-diagram.png"
 view "$work/cluster.tm25ray" --show rays --points 3000 --png "$out/cluster-rays.png"
 view "$work/cluster.tm25ray" --show polar --png "$out/cluster-polar.png"
+# The tracer's image view: POV-Ray's Cornell box rendered by raytrace, its luminance layer Y.
+"$build/tracer/raytrace" tests/tracer/scenes/cornell.pov +W320 +H240 --passes 64 --no-png -q \
+  -o "$work/cornell.exr" >/dev/null
+view "$work/cornell.exr" --show image --layer Y --png "$out/cornell-luminance.png"
 
 data=../shared/data
 if [ -d "$data" ]; then
