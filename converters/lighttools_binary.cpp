@@ -1,6 +1,6 @@
 // LightTools binary ray data ("LTRF"): a 44-byte header, records of 7 or 8 f32, and the 7 bytes
 // "LTRFEND". There is no ray count: it follows from the file size. Layout in
-// /work/shared/formats.md "LightTools ray data"; verified against real LightTools exports.
+// ../shared/formats.md "LightTools ray data"; verified against real LightTools exports.
 #include "converters/codecs.h"
 #include "converters/io.h"
 #include "converters/lighttools_common.h"

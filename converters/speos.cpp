@@ -1,7 +1,7 @@
 // SPEOS binary .ray: a 28-byte header of 7 f32 (radiant total W, five values that are 2.0 in
 // every file seen, luminous total lm) and records of 8 f32: x y z l m n wavelength(nm) E, E a
 // relative radiant weight. No magic and no count: the size gives the count. Layout in
-// /work/shared/formats.md "SPEOS .ray"; verified on the ansys/optical-automation test files.
+// ../shared/formats.md "SPEOS .ray"; verified on the ansys/optical-automation test files.
 #include "converters/codecs.h"
 #include "converters/io.h"
 #include "converters/spectrum.h"

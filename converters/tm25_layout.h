@@ -1,4 +1,4 @@
-// Byte layout of an IES TM-25-13 ray file (see /work/shared/formats.md), shared by the TM-25
+// Byte layout of an IES TM-25-13 ray file (see ../shared/formats.md), shared by the TM-25
 // decoder (tm25.cpp) and encoder (tm25_encoder.cpp). Private to those two files.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Zemax OpticStudio binary source file (.DAT flux only, .SDF spectral): a 208-byte header and
-// records of 7 or 8 f32. Layout in /work/shared/formats.md "Zemax OpticStudio source file";
+// records of 7 or 8 f32. Layout in ../shared/formats.md "Zemax OpticStudio source file";
 // verified against files written by OpticStudio-compatible tools (ansys/optical-automation,
 // TM25RaySetTools).
 #include "converters/codecs.h"

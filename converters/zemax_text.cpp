@@ -1,7 +1,7 @@
 // Zemax OpticStudio text source file: a first line "nrays dim_units ray_format flux_type", then
 // one ray a line, 7 columns (x y z l m n flux) or 8 (wavelength in um). The only real files seen
 // are hand-made: they pad the first line with zeros to the row width and one of them has 8
-// columns under ray format 0, so both are accepted. Layout in /work/shared/formats.md.
+// columns under ray format 0, so both are accepted. Layout in ../shared/formats.md.
 #include "converters/codecs.h"
 #include "converters/io.h"
 #include "converters/zemax_common.h"
