@@ -1,37 +1,11 @@
-// Goniometric-diagram view: the polar surface of one intensity cell coloured by intensity, axes
-// in intensity units.
-#include "viz/view_style.h"
+// Goniometric-diagram view: a cell's polar surface is drawn exactly as a photometric solid is
+// (coloured by intensity, axes in intensity units), so it shares that view.
 #include "viz/views.h"
-#include "viz/vtk_arrays.h"
-
-#include <vtkActor.h>
-#include <vtkDataArray.h>
-#include <vtkPointData.h>
-#include <vtkPolyDataMapper.h>
 
 namespace rayset::viz {
 
 ViewHandles add_diagram_view(vtkRenderer* renderer, vtkPolyData* diagram, const std::string& title) {
-    double range[2];
-    diagram->GetPointData()->GetScalars()->GetRange(range);
-    auto lut = colour_map(range[0], range[1]);
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(diagram);
-    mapper->SetLookupTable(lut);
-    mapper->UseLookupTableScalarRangeOn();
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    renderer->AddActor(actor);
-
-    const std::string unit = field_string(diagram, "unit");
-    double bounds[6];
-    diagram->GetBounds(bounds);
-    add_scalar_bar(renderer, lut, "intensity (" + unit + ")");
-    add_axes(renderer, bounds, unit, "I_");
-    add_title(renderer, title);
-    ViewHandles h;
-    h.azimuth = -60, h.elevation = 15;
-    return h;
+    return add_farfield_view(renderer, diagram, title);
 }
 
 }  // namespace rayset::viz

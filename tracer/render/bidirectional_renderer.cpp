@@ -60,9 +60,7 @@ double default_radius(const std::vector<std::vector<VisiblePoint>>& points, cons
 }  // namespace
 
 RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings) {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
-    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    const PassBudget budget(settings);
     const int w = settings.width, h = settings.height;
     const PerspectiveCamera camera(scene.description().camera, w, h);
     const BidirectionalIntegrator integrator(scene, sources);
@@ -92,14 +90,11 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
 
     const int tile = settings.tile_size, tiles_x = (w + tile - 1) / tile, tiles_y = (h + tile - 1) / tile;
     const int tiles = settings.render_image ? tiles_x * tiles_y : 0;
-    const int pass_budget = settings.passes > 0 ? settings.passes
-                            : settings.time_limit > 0 ? std::numeric_limits<int>::max()
-                                                      : RenderSettings::kDefaultPasses;
     tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
     ProgressBar progress("rendering", settings.progress);
     std::atomic<uint64_t> rays{0};
 
-    while (result.passes < pass_budget && !(settings.time_limit > 0 && elapsed() >= settings.time_limit)) {
+    while (budget.allows_another(result.passes)) {
         const uint64_t seed = pass_seed(settings.seed, result.passes);
         PassValues image(pixels), cell(cells);
         std::vector<std::vector<VisiblePoint>> visible(static_cast<size_t>(tiles));
@@ -211,13 +206,10 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
         ++result.passes;
         radius *= std::sqrt((result.passes + kAlpha) / (result.passes + 1));
 
-        double fraction = settings.passes > 0 ? double(result.passes) / settings.passes : 0;
-        if (settings.time_limit > 0) fraction = std::max(fraction, elapsed() / settings.time_limit);
-        if (settings.passes == 0 && settings.time_limit <= 0) fraction = double(result.passes) / pass_budget;
-        progress.update(std::min(1.0, fraction));
+        progress.update(budget.fraction_done(result.passes));
     }
     progress.done();
-    result.seconds = elapsed();
+    result.seconds = budget.elapsed();
     result.rays = rays;
     return result;
 }

@@ -74,11 +74,32 @@ void render_pass_receivers(const PassContext& c, std::vector<ReceiverMap>& maps,
 
 }  // namespace
 
+PassBudget::PassBudget(const RenderSettings& settings)
+    : time_limit_(settings.time_limit),
+      passes_(settings.passes > 0       ? settings.passes
+              : settings.time_limit > 0 ? std::numeric_limits<int>::max()
+                                        : RenderSettings::kDefaultPasses),
+      timed_only_(settings.passes == 0 && settings.time_limit > 0),
+      start_(std::chrono::steady_clock::now()) {}
+
+double PassBudget::elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+bool PassBudget::allows_another(int passes_done) const {
+    return passes_done < passes_ && !(time_limit_ > 0 && elapsed() >= time_limit_);
+}
+
+double PassBudget::fraction_done(int passes_done) const {
+    double fraction = timed_only_ ? 0 : double(passes_done) / passes_;
+    if (time_limit_ > 0) fraction = std::max(fraction, elapsed() / time_limit_);
+    return std::min(1.0, fraction);
+}
+
 RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
-    using Clock = std::chrono::steady_clock;
     if (scene.description().global.integrator == "bidirectional")
         return render_bidirectional(scene, RaySourceSet(scene.description(), settings.naive_sources), settings);
-    const auto start = Clock::now();
+    const PassBudget budget(settings);
     const PerspectiveCamera camera(scene.description().camera, settings.width, settings.height);
     const PathIntegrator integrator(scene);
     const PassContext context{scene, integrator, camera, settings, scene.units().per_square_metre()};
@@ -87,14 +108,10 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
     if (settings.render_image) result.film = Film(settings.width, settings.height);
     for (const IlluminanceReceiver& r : scene.description().receivers) result.receivers.emplace_back(r);
 
-    const int pass_budget = settings.passes > 0 ? settings.passes
-                            : settings.time_limit > 0 ? std::numeric_limits<int>::max()
-                                                      : RenderSettings::kDefaultPasses;
     tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
     ProgressBar progress("rendering", settings.progress);
     std::atomic<uint64_t> rays{0};
-    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-    while (result.passes < pass_budget && !(settings.time_limit > 0 && elapsed() >= settings.time_limit)) {
+    while (budget.allows_another(result.passes)) {
         const uint64_t seed = pass_seed(settings.seed, result.passes);
         arena.execute([&] {
             if (settings.render_image) render_pass_image(context, result.film, seed, rays);
@@ -103,13 +120,10 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
         if (settings.render_image) result.film.finish_pass();
         for (ReceiverMap& map : result.receivers) map.irradiance.finish_pass();
         ++result.passes;
-        double fraction = settings.passes > 0 ? double(result.passes) / settings.passes : 0;
-        if (settings.time_limit > 0) fraction = std::max(fraction, elapsed() / settings.time_limit);
-        if (settings.passes == 0 && settings.time_limit <= 0) fraction = double(result.passes) / pass_budget;
-        progress.update(std::min(1.0, fraction));
+        progress.update(budget.fraction_done(result.passes));
     }
     progress.done();
-    result.seconds = elapsed();
+    result.seconds = budget.elapsed();
     result.rays = rays;
     return result;
 }

@@ -4,6 +4,7 @@
 // depends on the seed and the number of passes only, not on threads or timing.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -52,6 +53,22 @@ struct RenderResult {
 
 // The scene's integrator: global_settings { integrator "path" } (default) or "bidirectional".
 RenderResult render(const RenderScene& scene, const RenderSettings& settings);
+
+// The budget both renderers keep: `passes`, else passes until `time_limit`, else
+// kDefaultPasses; checked between passes. The clock starts at construction.
+class PassBudget {
+public:
+    explicit PassBudget(const RenderSettings& settings);
+    double elapsed() const;  // seconds
+    bool allows_another(int passes_done) const;
+    double fraction_done(int passes_done) const;  // for the progress bar, 0..1
+
+private:
+    double time_limit_;
+    int passes_;
+    bool timed_only_;
+    std::chrono::steady_clock::time_point start_;
+};
 
 class RaySourceSet;
 // Progressive bidirectional render (bidirectional_integrator.h) with the scene's ray sources
