@@ -44,20 +44,7 @@ ViewHandles add_density_view(vtkRenderer* renderer, vtkImageData* density, const
         auto kept = vtkSmartPointer<vtkThresholdPoints>::New();
         kept->SetInputData(density);
         kept->ThresholdByUpper(threshold);
-        auto cube = vtkSmartPointer<vtkCubeSource>::New();
-        cube->SetXLength(cell);
-        cube->SetYLength(cell);
-        cube->SetZLength(cell);
-        auto mapper = vtkSmartPointer<vtkGlyph3DMapper>::New();
-        mapper->SetInputConnection(kept->GetOutputPort());
-        mapper->SetSourceConnection(cube->GetOutputPort());
-        mapper->ScalingOff();
-        mapper->OrientOff();
-        mapper->SetLookupTable(lut);
-        mapper->UseLookupTableScalarRangeOn();
-        auto actor = vtkSmartPointer<vtkActor>::New();
-        actor->SetMapper(mapper);
-        renderer->AddActor(actor);
+        add_cell_cubes(renderer, kept->GetOutputPort(), cell, lut);
         h.set_threshold = [kept](double t) { kept->ThresholdByUpper(t); };
     }
     double bounds[6];

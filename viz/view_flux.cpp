@@ -23,21 +23,8 @@ ViewHandles add_flux_view(vtkRenderer* renderer, vtkImageData* flux, const std::
     auto lit = vtkSmartPointer<vtkThresholdPoints>::New();
     lit->SetInputData(flux);
     lit->ThresholdByUpper(std::numeric_limits<double>::min());  // cells holding light
-    auto cube = vtkSmartPointer<vtkCubeSource>::New();
     // Slightly smaller than the cell so neighbouring cells stay apart.
-    cube->SetXLength(0.92 * cell);
-    cube->SetYLength(0.92 * cell);
-    cube->SetZLength(0.92 * cell);
-    auto mapper = vtkSmartPointer<vtkGlyph3DMapper>::New();
-    mapper->SetInputConnection(lit->GetOutputPort());
-    mapper->SetSourceConnection(cube->GetOutputPort());
-    mapper->ScalingOff();
-    mapper->OrientOff();
-    mapper->SetLookupTable(lut);
-    mapper->UseLookupTableScalarRangeOn();
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    renderer->AddActor(actor);
+    add_cell_cubes(renderer, lit->GetOutputPort(), 0.92 * cell, lut);
 
     double bounds[6];
     flux->GetBounds(bounds);

@@ -1,6 +1,9 @@
 #include "viz/view_style.h"
 
+#include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCubeSource.h>
+#include <vtkGlyph3DMapper.h>
 #include <vtkCubeAxesActor.h>
 #include <vtkProperty.h>
 #include <vtkScalarBarActor.h>
@@ -96,6 +99,23 @@ void add_title(vtkRenderer* renderer, const std::string& text) {
     title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     title->GetPositionCoordinate()->SetValue(0.02, 0.97);
     renderer->AddViewProp(title);
+}
+
+void add_cell_cubes(vtkRenderer* renderer, vtkAlgorithmOutput* cells, double edge, vtkLookupTable* lut) {
+    auto cube = vtkSmartPointer<vtkCubeSource>::New();
+    cube->SetXLength(edge);
+    cube->SetYLength(edge);
+    cube->SetZLength(edge);
+    auto mapper = vtkSmartPointer<vtkGlyph3DMapper>::New();
+    mapper->SetInputConnection(cells);
+    mapper->SetSourceConnection(cube->GetOutputPort());
+    mapper->ScalingOff();
+    mapper->OrientOff();
+    mapper->SetLookupTable(lut);
+    mapper->UseLookupTableScalarRangeOn();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    renderer->AddActor(actor);
 }
 
 }  // namespace rayset::viz

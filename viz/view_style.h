@@ -2,6 +2,7 @@
 // map (viridis), scalar bars on the right of a panel, cube axes titled with their units.
 #pragma once
 
+#include <vtkAlgorithmOutput.h>
 #include <vtkLookupTable.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
@@ -21,5 +22,7 @@ void add_scalar_bar(vtkRenderer* renderer, vtkScalarsToColors* map, const std::s
 void add_axes(vtkRenderer* renderer, const double bounds[6], const std::string& unit, const std::string& prefix = "");
 // A title line at the top left of the renderer's viewport.
 void add_title(vtkRenderer* renderer, const std::string& text);
+// Lattice cells as cubes of edge `edge` at the points of `cells`, coloured by their scalars.
+void add_cell_cubes(vtkRenderer* renderer, vtkAlgorithmOutput* cells, double edge, vtkLookupTable* lut);
 
 }  // namespace rayset::viz
