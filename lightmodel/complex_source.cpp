@@ -29,6 +29,12 @@ double ComplexSource::L(Vec3 origin, Vec3 dir, const EmitterHit&, const Spectral
     return volume_.radiance_toward(origin, dir, 0, kInfinity, select);
 }
 
+LinearRgb ComplexSource::L_colour(Vec3 origin, Vec3 dir, const EmitterHit&) const {
+    LinearRgb colour;
+    volume_.radiance_toward(origin, dir, 0, kInfinity, {}, &colour);
+    return colour;
+}
+
 std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
                                                  const SpectralSelect& select) const {
     const VolumeSample point = volume_.sample_point(u_cell, u_voxel, u_point);
@@ -42,7 +48,7 @@ std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double
     BodyHit hit;
     if (!body_.intersect(ref, s.wi, kInfinity, hit)) return std::nullopt;
     s.distance = hit.t;
-    s.Li = volume_.radiance_toward(ref, s.wi, 0, kInfinity, select);
+    s.Li = volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour);
     s.pdf = volume_.pdf_direction(ref, s.wi);
     if (!(s.pdf > 0)) return std::nullopt;
     return s;
@@ -64,6 +70,7 @@ LeSample ComplexSource::sample_Le(const double u[7], const SpectralSelect& selec
     // Emitted radiance per volume eps = Phi_c D / V_c over pdf (Phi_c / Phi / V_c) D = Phi,
     // scaled to the selected part of the cell's light.
     s.flux = model_->total_flux() * volume_.cell_flux(point.flux_cell, select) / cell.flux;
+    s.flux_colour = model_->total_flux() * volume_.cell_colour(point.flux_cell);
     return s;
 }
 

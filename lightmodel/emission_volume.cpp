@@ -46,6 +46,13 @@ EmissionVolume::EmissionVolume(const LightModel& model) : model_(model) {
         running += model.flux_cells[c].flux;
         cell_cdf_[c] = running;
     }
+    cell_colour_ = cell_colours(model);
+}
+
+LinearRgb EmissionVolume::total_colour() const {
+    LinearRgb sum;
+    for (uint32_t c = 0; c < model_.flux_cells.size(); ++c) sum += model_.flux_cells[c].flux * cell_colour_[c];
+    return sum;
 }
 
 double EmissionVolume::cell_flux(uint32_t cell, const SpectralSelect& select) const {
@@ -66,14 +73,18 @@ double EmissionVolume::cell_volume(uint32_t cell) const {
 }
 
 double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
-                                       const SpectralSelect& select) const {
+                                       const SpectralSelect& select, LinearRgb* colour) const {
     const Vec3 emitted = -dir;
     double sum = 0;
+    LinearRgb colour_sum;
     traverse(origin, dir, tmin, tmax, [&](uint32_t c, double t0, double t1) {
         const FluxCell& cell = model_.flux_cells[c];
         const double d = model_.diagrams[size_t(cell.intensity_cell)].pdf(emitted);
-        sum += cell_flux(c, select) * d / (cell_volume(c) * cell.visible_fraction) * (t1 - t0);
+        const double per_flux = d / (cell_volume(c) * cell.visible_fraction) * (t1 - t0);
+        sum += cell_flux(c, select) * per_flux;
+        if (colour) colour_sum += (cell.flux * per_flux) * cell_colour_[c];
     });
+    if (colour) *colour = colour_sum;
     return sum;
 }
 

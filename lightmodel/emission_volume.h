@@ -13,6 +13,7 @@
 // never vanishes, so no grazing cosine is ever divided by.
 #pragma once
 
+#include "lightmodel/colour.h"
 #include "lightmodel/model.h"
 
 #include <vector>
@@ -41,8 +42,13 @@ public:
     double cell_flux(uint32_t cell, const SpectralSelect& select) const;
 
     // Radiance arriving at `origin` from direction `dir`: the light the voxels on the segment
-    // origin + t dir, t in [tmin, tmax], emit toward -dir.
-    double radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax, const SpectralSelect& select) const;
+    // origin + t dir, t in [tmin, tmax], emit toward -dir. With `colour`, the same line
+    // integral as a linear-sRGB triple (colour.h) is stored there too, from one traversal.
+    double radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax, const SpectralSelect& select,
+                           LinearRgb* colour = nullptr) const;
+    // Colour of one unit of a cell's flux (colour.h), and the colour of the whole source.
+    const LinearRgb& cell_colour(uint32_t cell) const { return cell_colour_[cell]; }
+    LinearRgb total_colour() const;
     // Solid-angle density at `origin` of the direction `dir` under sample_point().
     double pdf_direction(Vec3 origin, Vec3 dir) const;
 
@@ -65,6 +71,7 @@ private:
     const LightModel& model_;
     std::vector<int32_t> voxel_cell_;   // dense density lattice -> flux cell, -1 empty
     std::vector<double> cell_cdf_;      // over flux cells, by flux
+    std::vector<LinearRgb> cell_colour_;
     double voxel_volume_ = 0;
 };
 

@@ -4,6 +4,7 @@
 // records. Lengths mm; radiance in the selected quantity per (mm^2 sr).
 #pragma once
 
+#include "lightmodel/colour.h"
 #include "lightmodel/emission_volume.h"
 #include "lightmodel/lattice.h"
 
@@ -24,6 +25,7 @@ struct LiSample {
     double distance = 0;  // to the body hit along wi (for the shadow ray)
     double Li = 0;      // radiance arriving from wi
     double pdf = 0;     // sr^-1
+    LinearRgb Li_colour;  // the same radiance as a colour (colour.h), whatever the selection
 };
 
 // Photon emission: where and in which direction a photon leaves, and the flux it carries
@@ -34,6 +36,7 @@ struct LeSample {
     double pdf_position = 0;  // mm^-3 (volume) or probability of the ray (naive)
     double pdf_direction = 0; // sr^-1 (0: the direction is fixed, a delta)
     int32_t cell = -1;        // flux cell (spectrum) of the origin; -1 naive
+    LinearRgb flux_colour;    // the photon's whole flux as a colour (colour.h)
 };
 
 class Emitter {
@@ -41,11 +44,15 @@ public:
     virtual ~Emitter() = default;
     virtual double phi(const SpectralSelect& select = {}) const = 0;
     virtual Box bounds() const = 0;
+    // The source's whole flux as a colour (colour.h): what an RGB renderer emits.
+    virtual LinearRgb phi_colour() const = 0;
 
     // The body a camera ray sees; an emitter without one (the naive ray set) returns false.
     virtual bool intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hit) const = 0;
     // Radiance arriving at `origin` from direction `dir` whose ray met the body at `hit`.
     virtual double L(Vec3 origin, Vec3 dir, const EmitterHit& hit, const SpectralSelect& select = {}) const = 0;
+    // The same radiance as a colour (colour.h).
+    virtual LinearRgb L_colour(Vec3 origin, Vec3 dir, const EmitterHit& hit) const = 0;
 
     // Light sampling; nothing when the emitter cannot be sampled from `ref` (naive, or ref
     // inside the source).

@@ -4,6 +4,7 @@
 #include "converters/spectrum.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rayset::lightmodel {
 
@@ -30,6 +31,22 @@ NaiveRaySource::NaiveRaySource(const std::string& ray_file) {
         }
     }
     if (cdf_.empty() || !(running > 0)) throw Error(ray_file + ": no rays with flux to emit");
+    luminous_known_ = photometric.luminous_known();
+    default_efficacy_ = header.has_radiant ? kRgbLumensPerWatt : 1.0;
+    band_colour_.push_back(colour_per_flux({}, 1));
+    for (int b = 0; b < bins_.count; ++b) band_colour_.push_back(colour_per_flux(bin_colour_matching(bins_, b), 1));
+}
+
+LinearRgb NaiveRaySource::ray_colour(size_t i) const {
+    const double efficacy =
+        luminous_known_ && flux_[i] > 0 && std::isfinite(luminous_[i]) ? luminous_[i] / flux_[i] : default_efficacy_;
+    return (efficacy * flux_[i]) * band_colour_[size_t(band_[i] + 1)];
+}
+
+LinearRgb NaiveRaySource::phi_colour() const {
+    LinearRgb sum;
+    for (size_t i = 0; i < flux_.size(); ++i) sum += ray_colour(i);
+    return sum;
 }
 
 double NaiveRaySource::phi(const SpectralSelect& select) const {
@@ -53,6 +70,7 @@ LeSample NaiveRaySource::sample_Le(const double u[7], const SpectralSelect& sele
                         : (select.band < 0 || band_[i] == select.band) ? flux_[i]
                                                                         : 0.0;
     s.flux = flux_[i] > 0 ? cdf_.back() * part / flux_[i] : 0;
+    s.flux_colour = flux_[i] > 0 ? (cdf_.back() / flux_[i]) * ray_colour(i) : LinearRgb{};
     return s;
 }
 

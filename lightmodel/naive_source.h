@@ -18,8 +18,10 @@ public:
     size_t ray_count() const { return origins_.size(); }
     double phi(const SpectralSelect& select = {}) const override;
     Box bounds() const override { return bounds_; }
+    LinearRgb phi_colour() const override;
     bool intersect(Vec3, Vec3, double, EmitterHit&) const override { return false; }
     double L(Vec3, Vec3, const EmitterHit&, const SpectralSelect& = {}) const override { return 0; }
+    LinearRgb L_colour(Vec3, Vec3, const EmitterHit&) const override { return {}; }
     std::optional<LiSample> sample_Li(Vec3, double, double, Vec3, const SpectralSelect& = {}) const override {
         return std::nullopt;
     }
@@ -37,6 +39,12 @@ private:
     std::vector<int16_t> band_;     // spectral bin of the ray's wavelength, -1 unknown
     std::vector<double> cdf_;
     SpectralBins bins_;
+    // Colour of a unit of flux of each ray's spectral bin at 1 lm per unit (index bin + 1; 0:
+    // unknown wavelength, grey), scaled per ray by its efficacy.
+    std::vector<LinearRgb> band_colour_;
+    bool luminous_known_ = false;
+    double default_efficacy_ = kRgbLumensPerWatt;
+    LinearRgb ray_colour(size_t i) const;  // of the ray's whole flux
     Box bounds_;
 };
 

@@ -101,7 +101,7 @@ TEST(BidirectionalDisk, PrimaryIlluminanceMatchesClosedForm) {
             const double truth = 1e6 * disk_truth().irradiance(q, {0, 0, -1});  // W/m^2
             const Vec3 w = analytic::normalized(q);
             const double model_truth = truth * model.intensity(w) / disk_truth().intensity(w);
-            const double measured = primary.irradiance.mean(i, j).green;
+            const double measured = luminance_weight(primary.irradiance.mean(i, j));
             const double se = primary.irradiance.photometric_standard_error(i, j) / kLumensPerWatt;
             const double relative = measured / truth - 1;
             worst = std::max(worst, std::fabs(relative));
@@ -147,7 +147,7 @@ TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
             const Vec3 d = c.direction + s * c.right + t * c.up;
             const double distance = analytic::length(d), cos_theta = focal / distance;
             const double solid_angle = pixel_area * focal / (distance * distance * distance);
-            const double L = direct.mean(x, y).green;  // W/(m^2 sr)
+            const double L = luminance_weight(direct.mean(x, y));  // W/(m^2 sr)
             irradiance += L * solid_angle * cos_theta;
             // Where the pixel's footprint on the disk plane lies within 0.7 radii of the centre.
             const double footprint = D * std::sqrt(s * s * analytic::dot(c.right, c.right) + t * t * analytic::dot(c.up, c.up)) / focal;
@@ -196,7 +196,7 @@ TEST(BidirectionalDisk, CameraSeesTheDiskInAMirror) {
         for (int x = 0; x < settings.width; ++x) {
             const double s = (x + 0.5) / settings.width - 0.5, t = 0.5 - (y + 0.5) / settings.height;
             const double distance = analytic::length(c.direction + s * c.right + t * c.up);
-            irradiance += r.layers[0].film.mean(x, y).green * pixel_area * focal * focal / std::pow(distance, 4);
+            irradiance += luminance_weight(r.layers[0].film.mean(x, y)) * pixel_area * focal * focal / std::pow(distance, 4);
         }
     const lightmodel::ComplexSource model(
         std::make_shared<lightmodel::LightModel>(lightmodel::read_model(disk_files().model)));
@@ -230,7 +230,7 @@ double wall_average(const std::vector<ReceiverMap>& maps) {
     int cells = 0;
     for (const ReceiverMap& map : maps)
         for (int j = 0; j < map.irradiance.ny(); ++j)
-            for (int i = 0; i < map.irradiance.nx(); ++i) sum += map.irradiance.mean(i, j).green, ++cells;
+            for (int i = 0; i < map.irradiance.nx(); ++i) sum += luminance_weight(map.irradiance.mean(i, j)), ++cells;
     return sum / cells;
 }
 

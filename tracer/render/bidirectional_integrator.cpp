@@ -36,12 +36,12 @@ Rgb BidirectionalIntegrator::sample_sources(const Bsdf& bsdf, Vec3 point, Vec3 n
     const auto ls = sources_[j].sample_Li(point, u_cell, u_voxel, u_point);
     if (!ls) return {};
     const Rgb f = bsdf.eval(ls->wi);
-    if (is_black(f) || !(ls->Li > 0)) return {};
+    if (is_black(f) || is_black(ls->Li)) return {};
     ++rays;
     if (scene_.occluded(scene_.offset(point, normal, ls->wi), ls->wi, 0, ls->distance - scene_.epsilon())) return {};
     const double pdf_light = sources_.probability(j) * ls->pdf;
     const double weight = power_heuristic(pdf_light, bsdf.pdf(ls->wi));
-    return (weight * ls->Li / pdf_light) * f;
+    return (weight / pdf_light) * ls->Li * f;
 }
 
 Rgb BidirectionalIntegrator::bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, Vec3 ref,
@@ -49,14 +49,14 @@ Rgb BidirectionalIntegrator::bodies_crossed(Vec3 origin, Vec3 direction, double 
     SurfaceHit hit;
     ++rays;
     const double t_block = scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit) ? hit.t : kInfinity;
-    double sum = 0;
+    Rgb sum;
     for (size_t j = 0; j < sources_.size(); ++j) {
         double t = 0;
         if (!sources_[j].intersect(origin, direction, t_block, t)) continue;
         const double pdf_light = sources_.probability(j) * sources_[j].pdf_Li(ref, direction);
         sum += power_heuristic(bsdf_pdf, pdf_light) * sources_[j].radiance(origin, direction);
     }
-    return {sum, sum, sum};
+    return sum;
 }
 
 CameraSample BidirectionalIntegrator::camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng,
@@ -71,10 +71,8 @@ CameraSample BidirectionalIntegrator::camera_path(Vec3 origin, Vec3 direction, u
         const double t_block = found ? hit.t : kInfinity;
         for (size_t j = 0; j < sources_.size(); ++j) {
             double t = 0;
-            if (sources_[j].intersect(origin, direction, t_block, t)) {
-                const double L = sources_[j].radiance(origin, direction);
-                out.direct_visibility += beta * Rgb{L, L, L};
-            }
+            if (sources_[j].intersect(origin, direction, t_block, t))
+                out.direct_visibility += beta * sources_[j].radiance(origin, direction);
         }
         if (!found) break;
         const Material& material = scene_.material(hit.object);
@@ -127,8 +125,7 @@ std::vector<Photon> BidirectionalIntegrator::trace_photons(uint64_t first, uint6
         for (double& v : u) v = rng.uniform();
         const size_t j = sources_.choose(u[0]);
         const SourcePhoton emission = sources_[j].sample_Le(u);
-        const double flux = emission.flux / (sources_.probability(j) * double(emitted));
-        Rgb power{flux, flux, flux};
+        Rgb power = (1 / (sources_.probability(j) * double(emitted))) * emission.flux;
         Vec3 origin = emission.origin, direction = emission.direction;
         bool scattered = false;
         for (int depth = 0; depth < kMaxDepth; ++depth) {

@@ -33,20 +33,22 @@ double conformal_scale(const Matrix4& m) {
     return s;
 }
 
+Rgb to_rgb(const lightmodel::LinearRgb& c) { return {c.r, c.g, c.b}; }
+static_assert(lightmodel::kRgbLumensPerWatt == kLumensPerWatt, "one photometric convention");
+
 bool ends_with(const std::string& s, const std::string& suffix) {
     return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace
 
-PlacedRaySource::PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emitter, const Matrix4& to_world,
-                                 bool photometric_only)
+PlacedRaySource::PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emitter, const Matrix4& to_world)
     : emitter_(std::move(emitter)), to_world_(to_world), to_local_(to_world.inverse()) {
     k_ = conformal_scale(to_world);
     if (!(k_ > 0))
         throw Error("ray_source: the transform must keep angles (rotations, translations and one uniform scale)");
-    flux_scale_ = photometric_only ? 1 / kLumensPerWatt : 1;
-    radiance_scale_ = flux_scale_ / (k_ * k_);
+    power_ = luminance_weight(to_rgb(emitter_->phi_colour()));
+    radiance_scale_ = 1 / (k_ * k_);
 }
 
 PlacedRaySource::Local PlacedRaySource::to_local(Vec3 origin, Vec3 direction) const {
@@ -62,9 +64,9 @@ bool PlacedRaySource::intersect(Vec3 origin, Vec3 direction, double t_max, doubl
     return true;
 }
 
-double PlacedRaySource::radiance(Vec3 origin, Vec3 direction) const {
+Rgb PlacedRaySource::radiance(Vec3 origin, Vec3 direction) const {
     const Local l = to_local(origin, direction);
-    return radiance_scale_ * emitter_->L(l.origin, l.direction, lightmodel::EmitterHit{});
+    return radiance_scale_ * to_rgb(emitter_->L_colour(l.origin, l.direction, lightmodel::EmitterHit{}));
 }
 
 std::optional<SourceLiSample> PlacedRaySource::sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point) const {
@@ -73,7 +75,7 @@ std::optional<SourceLiSample> PlacedRaySource::sample_Li(Vec3 ref, double u_cell
     SourceLiSample out;
     out.wi = analytic::normalized(to_world_.vector(s->wi));
     out.distance = s->distance * k_;
-    out.Li = radiance_scale_ * s->Li;
+    out.Li = radiance_scale_ * to_rgb(s->Li_colour);
     out.pdf = s->pdf;  // a conformal map keeps solid angles
     return out;
 }
@@ -84,7 +86,7 @@ double PlacedRaySource::pdf_Li(Vec3 ref, Vec3 wi) const {
 
 SourcePhoton PlacedRaySource::sample_Le(const double u[7]) const {
     const lightmodel::LeSample s = emitter_->sample_Le(u);
-    return {to_world_.point(s.origin), analytic::normalized(to_world_.vector(s.direction)), flux_scale_ * s.flux};
+    return {to_world_.point(s.origin), analytic::normalized(to_world_.vector(s.direction)), to_rgb(s.flux_colour)};
 }
 
 RaySourceSet::RaySourceSet(const SceneDescription& scene, bool naive) : naive_(naive) {
@@ -96,14 +98,12 @@ RaySourceSet::RaySourceSet(const SceneDescription& scene, bool naive) : naive_(n
             if (ends_with(r.path, ".vdb"))
                 throw Error(fmt::format("{}: the naive model emits the stored rays; name the ray file, not a .vdb model",
                                         r.path));
-            const bool radiant = open_rays(r.path)->header().has_radiant;
-            add(PlacedRaySource(std::make_shared<lightmodel::NaiveRaySource>(r.path), to_world, !radiant));
+            add(PlacedRaySource(std::make_shared<lightmodel::NaiveRaySource>(r.path), to_world));
             continue;
         }
         auto model = std::make_shared<lightmodel::LightModel>(
             ends_with(r.path, ".vdb") ? lightmodel::read_model(r.path) : lightmodel::build_model(r.path, {}));
-        const bool photometric_only = model->flux_unit == "lm";
-        add(PlacedRaySource(std::make_shared<lightmodel::ComplexSource>(std::move(model)), to_world, photometric_only));
+        add(PlacedRaySource(std::make_shared<lightmodel::ComplexSource>(std::move(model)), to_world));
     }
 }
 

@@ -8,10 +8,11 @@
 // source_to_world(S p) with S the scaling from mm to the scene's length unit, so k, the
 // scene units per model mm, is (1 / millimetres_per_unit) x the transform's own scale. Flux
 // is the same in every frame; radiance per area scales by 1 / k^2: the model's
-// flux_unit/(mm^2 sr) becomes W/(unit^2 sr) (for a metre scene, x 1e6 = W/(m^2 sr)). A model
-// that carries only luminous flux (lm) is read as a grey radiant source of flux / 683 W, which
-// gives the right photometric values under the renderer's 683 lm/W convention (rgb.h). The
-// channels are grey: the per-cell spectra are not turned into colour yet.
+// flux/(mm^2 sr) becomes W/(unit^2 sr) (for a metre scene, x 1e6 = W/(m^2 sr)).
+// Colour: light is carried as the model's linear-sRGB colour (lightmodel/colour.h), whose
+// luminance is the model's luminous flux under the renderer's 683 lm/W convention (rgb.h) and
+// whose chromaticity is that of each flux cell's spectrum. A source without spectra is grey;
+// one that carries only luminous flux (lm) emits grey light of flux / 683 W.
 #pragma once
 
 #include <memory>
@@ -28,13 +29,13 @@ namespace rayset::tracer {
 struct SourceLiSample {
     Vec3 wi;              // unit, toward the source, scene frame
     double distance = 0;  // to the body along wi (shadow ray length), scene units
-    double Li = 0;        // renderer radiance units, grey
+    Rgb Li;               // renderer radiance units
     double pdf = 0;       // sr^-1, not including the choice of the source
 };
 
 struct SourcePhoton {
     Vec3 origin, direction;  // scene frame, direction unit
-    double flux = 0;         // W, of this photon (the model's sample flux, unit converted)
+    Rgb flux;                // W per channel, of this photon
 };
 
 // One ray source placed in the scene.
@@ -43,16 +44,17 @@ public:
     // `to_world`: model mm -> scene coordinates (source_to_world after the mm -> unit scale).
     // Throws rayset::Error when the transform does not keep angles (non-uniform scale or
     // shear): radiance and solid angles would no longer map one to one.
-    PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emitter, const Matrix4& to_world, bool photometric_only);
+    PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emitter, const Matrix4& to_world);
 
     const lightmodel::Emitter& emitter() const { return *emitter_; }
-    double power() const { return flux_scale_ * emitter_->phi(); }  // W
+    // Luminous flux / 683 (W at 555 nm): what the sources are chosen by.
+    double power() const { return power_; }
     double units_per_mm() const { return k_; }
 
     // The body along a scene ray (unit direction) before t_max; t in scene units.
     bool intersect(Vec3 origin, Vec3 direction, double t_max, double& t) const;
     // Radiance arriving at `origin` from the body along `direction` (call after intersect).
-    double radiance(Vec3 origin, Vec3 direction) const;
+    Rgb radiance(Vec3 origin, Vec3 direction) const;
     std::optional<SourceLiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point) const;
     double pdf_Li(Vec3 ref, Vec3 wi) const;
     SourcePhoton sample_Le(const double u[7]) const;
@@ -64,8 +66,8 @@ private:
     std::shared_ptr<const lightmodel::Emitter> emitter_;
     Matrix4 to_world_, to_local_;
     double k_ = 1;           // scene units per model mm
-    double flux_scale_ = 1;  // model flux unit -> W
-    double radiance_scale_ = 1;  // model flux_unit/(mm^2 sr) -> W/(unit^2 sr)
+    double power_ = 0;
+    double radiance_scale_ = 1;  // per mm^2 -> per unit^2
 };
 
 // Every ray source of a scene, with the choice probabilities of light sampling and photon
