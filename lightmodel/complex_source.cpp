@@ -69,8 +69,9 @@ LeSample ComplexSource::sample_Le(const double u[7], const SpectralSelect& selec
     s.cell = int32_t(point.flux_cell);
     // Emitted radiance per volume eps = Phi_c D / V_c over pdf (Phi_c / Phi / V_c) D = Phi,
     // scaled to the selected part of the cell's light.
-    s.flux = model_->total_flux() * volume_.cell_flux(point.flux_cell, select) / cell.flux;
-    s.flux_colour = model_->total_flux() * volume_.cell_colour(point.flux_cell);
+    const double phi = volume_.total_flux();
+    s.flux = phi * volume_.cell_flux(point.flux_cell, select) / cell.flux;
+    s.flux_colour = phi * volume_.cell_colour(point.flux_cell);
     return s;
 }
 

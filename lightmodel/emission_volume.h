@@ -38,6 +38,7 @@ public:
 
     const LightModel& model() const { return model_; }
     double total(const SpectralSelect& select) const;
+    double total_flux() const { return cell_cdf_.empty() ? 0 : cell_cdf_.back(); }  // flux_unit
     // Flux of one cell in the selected quantity.
     double cell_flux(uint32_t cell, const SpectralSelect& select) const;
 

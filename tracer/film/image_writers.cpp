@@ -74,12 +74,18 @@ void write_png(const std::string& path, int width, int height, const std::vector
 std::vector<uint8_t> tone_map_srgb(const Film& film, double exposure) {
     const int w = film.nx(), h = film.ny();
     if (exposure <= 0) {
+        // Over the lit pixels only: an image of a small source on black (the direct-visibility
+        // layer) is exposed for the source, not for the black around it.
         std::vector<double> luminance;
         for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) luminance.push_back(luminance_weight(film.mean(x, y)));
-        const size_t k = std::min(luminance.size() - 1, size_t(0.99 * double(luminance.size())));
-        std::nth_element(luminance.begin(), luminance.begin() + k, luminance.end());
-        exposure = luminance[k] > 0 ? 1 / luminance[k] : 1;
+            for (int x = 0; x < w; ++x)
+                if (const double v = luminance_weight(film.mean(x, y)); v > 0) luminance.push_back(v);
+        exposure = 1;
+        if (!luminance.empty()) {
+            const size_t k = std::min(luminance.size() - 1, size_t(0.99 * double(luminance.size())));
+            std::nth_element(luminance.begin(), luminance.begin() + k, luminance.end());
+            exposure = 1 / luminance[k];
+        }
     }
     std::vector<uint8_t> rgb;
     rgb.reserve(size_t(w) * h * 3);

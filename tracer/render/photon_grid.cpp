@@ -16,8 +16,12 @@ PhotonGrid::PhotonGrid(std::vector<Photon> photons, double radius) : photons_(st
     }
     for (size_t h = 0; h < table_size_; ++h) start_[h + 1] += start_[h];
     std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
-    order_.resize(photons_.size());
-    for (size_t i = 0; i < photons_.size(); ++i) order_[fill[slot[i]]++] = uint32_t(i);
+    std::vector<uint32_t> order(photons_.size());
+    for (size_t i = 0; i < photons_.size(); ++i) order[fill[slot[i]]++] = uint32_t(i);
+    // Store the photons in slot order: a gather then reads each slot's photons contiguously.
+    std::vector<Photon> sorted(photons_.size());
+    for (size_t k = 0; k < order.size(); ++k) sorted[k] = photons_[order[k]];
+    photons_ = std::move(sorted);
 }
 
 }  // namespace rayset::tracer

@@ -43,7 +43,7 @@ public:
         for (int s = 0; s < n; ++s) {
             if (s > 0 && slots[s] == slots[s - 1]) continue;
             for (uint32_t k = start_[slots[s]]; k < start_[slots[s] + 1]; ++k) {
-                const Photon& photon = photons_[order_[k]];
+                const Photon& photon = photons_[k];
                 const Vec3 d = photon.position - p;
                 if (analytic::dot(d, d) <= r2) f(photon);
             }
@@ -62,7 +62,7 @@ private:
     std::vector<Photon> photons_;
     double radius_;
     size_t table_size_ = 1;
-    std::vector<uint32_t> start_, order_;
+    std::vector<uint32_t> start_;  // photons of slot h: [start_[h], start_[h + 1])
 };
 
 }  // namespace rayset::tracer
