@@ -85,8 +85,10 @@ int run(int argc, char** argv) {
         fmt::print("{} x {} pixels, {} passes in {:.2f} s, {:.3g} rays ({:.3g} rays/s)\n", settings.width,
                    settings.height, result.passes, result.seconds, double(result.rays), result.rays / result.seconds);
         if (result.photons)
-            fmt::print("{:.3g} photons ({:.3g} photons/s), final gather radius {:.4g}\n", double(result.photons),
-                       result.photons / result.seconds, result.photon_radius);
+            fmt::print("{:.3g} photons ({:.3g} photons/s), final gather radius {:.4g}; photon grid {:.1f} MiB, "
+                       "visible points {:.1f} MiB (largest pass)\n",
+                       double(result.photons), result.photons / result.seconds, result.photon_radius,
+                       result.photon_bytes / 1048576.0, result.visible_point_bytes / 1048576.0);
         for (const std::string& file : written) fmt::print("wrote {}\n", file);
     }
     return 0;

@@ -9,6 +9,7 @@
 // bias of the average vanish as passes grow.
 #include "tracer/render/renderer.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -151,6 +152,10 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
             std::vector<Photon> photons;
             for (auto& block : traced) photons.insert(photons.end(), block.begin(), block.end());
             const PhotonGrid grid(std::move(photons), radius);
+            size_t visible_points = 0;
+            for (const auto& tile_points : visible) visible_points += tile_points.size();
+            result.photon_bytes = std::max(result.photon_bytes, grid.memory_bytes());
+            result.visible_point_bytes = std::max(result.visible_point_bytes, visible_points * sizeof(VisiblePoint));
 
             // Density estimation at the visible points and receiver cells.
             tbb::parallel_for(0, tiles, [&](int t) {

@@ -26,6 +26,7 @@ public:
 
     double radius() const { return radius_; }
     size_t size() const { return photons_.size(); }
+    size_t memory_bytes() const { return photons_.size() * sizeof(Photon) + start_.size() * sizeof(uint32_t); }
 
     // Calls f(photon) for every photon within the radius of p.
     template <class F>

@@ -49,6 +49,7 @@ struct RenderResult {
     std::vector<RenderLayer> layers;
     uint64_t photons = 0;
     double photon_radius = 0;
+    size_t photon_bytes = 0, visible_point_bytes = 0;  // the photon grid and visible points, largest pass
 };
 
 // The scene's integrator: global_settings { integrator "path" } (default) or "bidirectional".
