@@ -132,7 +132,7 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
     app.add_option("--seed", seed, "Random seed (default 0): same seed and passes, same image");
     app.add_option("--include-path", includes, "Folder searched for #include and mesh files (repeatable); or +Ldir");
     app.add_option("--exposure", exposure, "PNG preview: multiply radiance in W/(m^2 sr) by this before sRGB "
-                                           "(default: 1 / 99th percentile of the luminance of the lit pixels)")->check(CLI::PositiveNumber);
+                                           "(default: 1 / 99th percentile of the largest channel of the lit pixels)")->check(CLI::PositiveNumber);
     app.add_flag("--bench", o.bench, "Benchmark: renderer rays/s against bare Embree rtcIntersect1 on the same "
                                      "rays, 1 and 2 threads; writes nothing");
     app.add_flag("-q,--quiet", o.quiet, "No progress bar or summary");

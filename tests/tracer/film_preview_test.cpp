@@ -1,6 +1,6 @@
-// The PNG preview's automatic exposure: the 99th percentile of the lit pixels' luminance maps
-// to white, so a small bright source on black (the direct-visibility layer) is exposed for the
-// source, and an evenly lit image for its bright end.
+// The PNG preview: the 99th percentile of the lit pixels' largest channel maps to white, so a
+// small bright source on black (the direct-visibility layer) is exposed for the source; a
+// pixel too bright keeps its hue.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -28,6 +28,19 @@ TEST(FilmPreview, AutomaticExposureIgnoresBlackPixels) {
     EXPECT_EQ(code(5000), 0);                         // black stays black
     // An explicit exposure is used as given.
     EXPECT_EQ(int(tone_map_srgb(film, 1.0 / 50)[3 * 24]), srgb_code(25.0 / 50));
+}
+
+TEST(FilmPreview, TooBrightPixelsKeepTheirHue) {
+    Film film(2, 1);
+    film.add(0, 0, {0.2, 0.1, 4.0});  // a bright saturated blue
+    film.add(1, 0, {0.1, 0.1, 0.1});
+    film.finish_pass();
+    const std::vector<uint8_t> rgb = tone_map_srgb(film, 1);
+    // Scaled by 1/4 as a whole: (0.05, 0.025, 1), not clamped to (0.2, 0.1, 1).
+    EXPECT_EQ(int(rgb[0]), srgb_code(0.05));
+    EXPECT_EQ(int(rgb[1]), srgb_code(0.025));
+    EXPECT_EQ(int(rgb[2]), 255);
+    EXPECT_EQ(int(rgb[3]), srgb_code(0.1));
 }
 
 }  // namespace

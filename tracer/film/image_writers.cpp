@@ -75,23 +75,27 @@ std::vector<uint8_t> tone_map_srgb(const Film& film, double exposure) {
     const int w = film.nx(), h = film.ny();
     if (exposure <= 0) {
         // Over the lit pixels only: an image of a small source on black (the direct-visibility
-        // layer) is exposed for the source, not for the black around it.
-        std::vector<double> luminance;
+        // layer) is exposed for the source, not for the black around it. By the largest
+        // channel, not luminance: a saturated blue has little luminance but a large blue value.
+        std::vector<double> brightest;
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x)
-                if (const double v = luminance_weight(film.mean(x, y)); v > 0) luminance.push_back(v);
+                if (const double v = max_component(film.mean(x, y)); v > 0) brightest.push_back(v);
         exposure = 1;
-        if (!luminance.empty()) {
-            const size_t k = std::min(luminance.size() - 1, size_t(0.99 * double(luminance.size())));
-            std::nth_element(luminance.begin(), luminance.begin() + k, luminance.end());
-            exposure = 1 / luminance[k];
+        if (!brightest.empty()) {
+            const size_t k = std::min(brightest.size() - 1, size_t(0.99 * double(brightest.size())));
+            std::nth_element(brightest.begin(), brightest.begin() + k, brightest.end());
+            exposure = 1 / brightest[k];
         }
     }
     std::vector<uint8_t> rgb;
     rgb.reserve(size_t(w) * h * 3);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const Rgb c = exposure * film.mean(x, y);
+            Rgb c = exposure * film.mean(x, y);
+            // Too bright: scaled down as a whole, so the hue stays (a clipped blue chip would
+            // otherwise turn magenta, a green one cyan).
+            if (const double m = max_component(c); m > 1) c = (1 / m) * c;
             for (double v : {c.red, c.green, c.blue})
                 rgb.push_back(uint8_t(std::lround(255 * srgb_transfer(std::clamp(v, 0.0, 1.0)))));
         }

@@ -24,7 +24,8 @@ void write_exr(const std::string& path, int width, int height, const std::vector
 void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb);
 
 // Preview: radiance times `exposure` (when <= 0, the reciprocal of the 99th percentile of the
-// luminance of the pixels that are not black), clipped to [0, 1] per channel, then the sRGB transfer function.
+// largest channel over the pixels that are not black); a pixel brighter than 1 in some channel
+// is scaled down as a whole (hue kept); then the sRGB transfer function.
 std::vector<uint8_t> tone_map_srgb(const Film& film, double exposure);
 
 }  // namespace rayset::tracer

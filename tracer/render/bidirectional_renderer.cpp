@@ -48,13 +48,29 @@ struct PassValues {
 };
 
 double default_radius(const std::vector<std::vector<VisiblePoint>>& points, const std::vector<ReceiverMap>& receivers) {
-    lightmodel::Box box;
+    // The extent of the middle 90% of the points along each axis: a floor plane seen to its
+    // horizon must not make the radius (and so every gather) as wide as the floor.
+    std::vector<double> coordinates[3];
+    auto add = [&](Vec3 p) {
+        coordinates[0].push_back(p.x), coordinates[1].push_back(p.y), coordinates[2].push_back(p.z);
+    };
     for (const auto& tile : points)
-        for (const VisiblePoint& vp : tile) box.extend(vp.point);
+        for (const VisiblePoint& vp : tile) add(vp.point);
     for (const ReceiverMap& map : receivers)
         for (int j = 0; j < map.receiver.ny; ++j)
-            for (int i = 0; i < map.receiver.nx; ++i) box.extend(map.cell_centre(i, j));
-    const double diagonal = box.lower.x <= box.upper.x ? analytic::length(box.extent()) : 0;
+            for (int i = 0; i < map.receiver.nx; ++i) add(map.cell_centre(i, j));
+    if (coordinates[0].empty()) return 1;
+    double squares = 0;
+    for (std::vector<double>& c : coordinates) {
+        auto at = [&](double fraction) {
+            const auto k = c.begin() + std::ptrdiff_t(fraction * double(c.size() - 1));
+            std::nth_element(c.begin(), k, c.end());
+            return *k;
+        };
+        const double low = at(0.05), high = at(0.95);
+        squares += (high - low) * (high - low);
+    }
+    const double diagonal = std::sqrt(squares);
     return diagonal > 0 ? diagonal / 100 : 1;
 }
 

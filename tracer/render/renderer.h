@@ -27,7 +27,7 @@ struct RenderSettings {
     // Bidirectional integrator (bidirectional_renderer.cpp).
     int photons_per_pass = 0;   // 0: the camera samples of a pass (pixels + receiver cells), at least 65536
     double photon_radius = 0;   // gather radius of the first pass, scene units; 0: 1/100 of the
-                                // diagonal of the box of the first pass's visible points
+                                // diagonal of the box of the middle 90% (per axis) of the first pass's visible points
     bool naive_sources = false; // ray sources as their stored rays (the paper's Figure 1)
 };
 
