@@ -40,6 +40,9 @@ InterruptSignals::InterruptSignals() {
     action.sa_flags = SA_RESTART | SA_RESETHAND;
     sigaction(SIGINT, &action, &previous_int);
     sigaction(SIGTERM, &action, &previous_term);
+    // A signal the caller ignores stays ignored (the shell's background jobs ignore SIGINT).
+    if (previous_int.sa_handler == SIG_IGN) sigaction(SIGINT, &previous_int, nullptr);
+    if (previous_term.sa_handler == SIG_IGN) sigaction(SIGTERM, &previous_term, nullptr);
 }
 
 InterruptSignals::~InterruptSignals() {

@@ -10,8 +10,9 @@
 
 namespace rayset::tracer {
 
-// While alive, SIGINT and SIGTERM set flag() (and say on stderr that the render is stopping);
-// the handler then resets itself, so a second signal ends the process at once. One at a time.
+// While alive, SIGINT and SIGTERM (unless ignored when it began) set flag() and say on stderr
+// that the render is stopping; the handler then resets itself, so a second signal ends the
+// process at once. One at a time.
 class InterruptSignals {
 public:
     InterruptSignals();

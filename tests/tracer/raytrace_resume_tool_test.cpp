@@ -10,6 +10,7 @@
 #include <map>
 #include <thread>
 
+#include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfStringAttribute.h>
