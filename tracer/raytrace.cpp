@@ -99,6 +99,9 @@ int run(int argc, char** argv) {
         start = read_checkpoint(checkpoint_path, identity, blank_render(description, settings));
         if (!options.quiet)
             fmt::print("resuming from {}: {} passes done in {:.2f} s\n", checkpoint_path, start.passes, start.seconds);
+    } else if (fs::exists(checkpoint_path) && !options.quiet) {
+        std::fprintf(stderr, "raytrace: note: starting afresh; %s will be replaced (--resume continues it)\n",
+                     checkpoint_path.c_str());
     }
 
     CheckpointSchedule checkpoints(checkpoint_path, identity, options.checkpoint_interval, start.passes);

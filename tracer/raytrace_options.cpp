@@ -28,16 +28,16 @@ Examples:
   raytrace scene.pov --time 60 --threads 2 --seed 7 -o out/scene.exr
   raytrace render.ini            (Width=, Height=, Input_File_Name=, Output_File_Name=, Library_Path=)
 
-Stop and resume: while it renders, raytrace keeps OUT.checkpoint (OUT.exr without .exr), the
-state after the last completed pass, rewritten at most every --checkpoint-interval seconds and
-after the first and last passes. Ctrl-C (SIGINT) or SIGTERM abandons the pass under way, writes
-the outputs and the checkpoint of the last completed pass and exits with 130 or 143; a second
-Ctrl-C exits at once. Run the same command with --resume to continue: the result is bit for
-bit that of an uninterrupted render (same image, passes, rays; --passes and --time count the
-passes and time already done). After a kill -9 the last checkpoint is intact; --resume with
-the pass budget already reached just writes its outputs. A checkpoint made with another
-scene, size, seed or integrator setting is refused, naming what differs. A completed render
-removes the checkpoint (--keep-checkpoint keeps it, to add passes later).
+Stop and resume: while it renders, raytrace keeps OUT.checkpoint (OUT.exr with .checkpoint),
+the state after a completed pass: written after the first pass, then at most every
+--checkpoint-interval seconds, always whole (temporary file renamed). Ctrl-C (SIGINT) or
+SIGTERM abandons the pass under way, writes the outputs and the checkpoint of the last
+completed pass and exits with 130 or 143; a second Ctrl-C exits at once. The same command with
+--resume continues: the result is bit for bit that of an uninterrupted render (--passes and
+--time count what is already done). After a kill -9 the last checkpoint is intact; --resume
+with the budget already reached only writes its outputs. A checkpoint of another scene, size,
+seed or integrator setting is refused, naming what differs. A completed render removes the
+checkpoint (--keep-checkpoint keeps it, to add passes later).
 
 POV-Ray switches: +Wn width, +Hn height, +Ofile output, +Ifile scene, +Ldir include folder.
 Precedence: .ini files, then + switches, then the options below.)";

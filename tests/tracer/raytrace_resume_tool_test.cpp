@@ -202,5 +202,12 @@ TEST(RaytraceResume, BadCheckpointsAreRefusedAndNothingChanges) {
     EXPECT_EQ(exr_samples(f.dir.file("out.exr")), 4);
 }
 
+TEST(RaytraceResume, HelpDescribesStopAndResume) {
+    const auto r = test::run_command("'" + kRaytrace + "' --help");
+    EXPECT_EQ(r.status, 0);
+    for (const char* text : {"Stop and resume", "OUT.checkpoint", "--resume", "--keep-checkpoint", "--checkpoint-interval"})
+        EXPECT_NE(r.output.find(text), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace rayset::tracer

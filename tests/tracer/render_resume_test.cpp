@@ -70,6 +70,8 @@ void expect_same_state(const RenderResult& a, const RenderResult& b) {
     EXPECT_EQ(a.rays, b.rays);
     EXPECT_EQ(a.photons, b.photons);
     EXPECT_EQ(a.photon_radius, b.photon_radius);  // exactly
+    EXPECT_EQ(a.photon_bytes, b.photon_bytes);
+    EXPECT_EQ(a.visible_point_bytes, b.visible_point_bytes);
     expect_same_bits(a.film, b.film, "image");
     ASSERT_EQ(a.receivers.size(), b.receivers.size());
     for (size_t i = 0; i < a.receivers.size(); ++i) expect_same_bits(a.receivers[i].irradiance, b.receivers[i].irradiance, "receiver");

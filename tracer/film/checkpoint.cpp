@@ -207,7 +207,7 @@ void write_checkpoint(const std::string& path, const CheckpointIdentity& identit
     out.put(kCheckpointVersion);
     put_identity(out, identity);
     out.put(uint32_t(state.passes)), out.put(state.seconds), out.put(state.rays), out.put(state.photons);
-    out.put(state.photon_radius);
+    out.put(state.photon_radius), out.put(uint64_t(state.photon_bytes)), out.put(uint64_t(state.visible_point_bytes));
     out.put(state.film, state.receivers);
     out.put(uint32_t(state.layers.size()));
     for (const RenderLayer& layer : state.layers) out.put(layer.name), out.put(layer.film, layer.receivers);
@@ -256,6 +256,7 @@ RenderResult read_checkpoint(const std::string& path, const CheckpointIdentity& 
     state.passes = int(in.get<uint32_t>());
     state.seconds = in.get<double>(), state.rays = in.get<uint64_t>(), state.photons = in.get<uint64_t>();
     state.photon_radius = in.get<double>();
+    state.photon_bytes = size_t(in.get<uint64_t>()), state.visible_point_bytes = size_t(in.get<uint64_t>());
     in.get_grids(state.film, state.receivers, "");
     const uint32_t layers = in.get<uint32_t>();
     if (layers != state.layers.size())

@@ -7,7 +7,8 @@
 //   "RAYSETCK" (8 bytes), u32 version
 //   identity: str scene path, u64 scene hash, u32 width, u32 height, u64 seed, str integrator,
 //             u8 render_image, u32 photons_per_pass, f64 photon_radius, u8 naive_sources
-//   state:    u32 passes, f64 seconds, u64 rays, u64 photons, f64 photon_radius
+//   state:    u32 passes, f64 seconds, u64 rays, u64 photons, f64 photon_radius,
+//             u64 photon_bytes, u64 visible_point_bytes
 //   grids:    the film, u32 receiver count and per receiver str name + grid; u32 layer count and
 //             per layer str name, film, receivers as before
 //             (grid: u32 nx, u32 ny, u32 samples, nx*ny RGB sums as 3 f64, nx*ny f64 squares)
