@@ -1,11 +1,14 @@
-// raytrace: scene file -> path-traced image (OpenEXR + PNG preview) and illuminance maps.
+// raytrace: scene file -> path-traced image (OpenEXR + PNG preview) and illuminance maps,
+// with a checkpoint to resume an interrupted render from.
 #include <cstdio>
 #include <filesystem>
 
 #include <fmt/format.h>
 
 #include "converters/error.h"
+#include "tracer/film/checkpoint.h"
 #include "tracer/film/render_output.h"
+#include "tracer/raytrace_resume.h"
 #include "tracer/raytrace_options.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
@@ -35,6 +38,23 @@ OutputRequest output_request(const RaytraceOptions& o) {
     request.exposure = o.exposure;
     request.receiver_prefix = fs::path(exr).replace_extension("").string();
     return request;
+}
+
+// The image and receiver files of a render and of each of its light layers.
+std::vector<std::string> write_all_outputs(const RenderResult& result, const OutputRequest& request) {
+    std::vector<std::string> written = write_render_outputs(&result.film, result.receivers, request);
+    for (const RenderLayer& layer : result.layers) {  // bidirectional: OUT.LAYER.exr, .png, receiver maps
+        OutputRequest layer_request = request;
+        auto with_layer = [&](const std::string& path) {
+            return path.empty() ? path : fs::path(path).replace_extension("." + layer.name + fs::path(path).extension().string()).string();
+        };
+        layer_request.exr = with_layer(request.exr);
+        layer_request.png = with_layer(request.png);
+        layer_request.receiver_prefix = request.receiver_prefix + "." + layer.name;
+        for (const std::string& file : write_render_outputs(&layer.film, layer.receivers, layer_request))
+            written.push_back(file);
+    }
+    return written;
 }
 
 int run(int argc, char** argv) {
@@ -68,18 +88,44 @@ int run(int argc, char** argv) {
         if (!target.empty() && !folder.empty() && !fs::is_directory(folder))
             throw Error(target + ": the output folder does not exist");
     }
-    const RenderResult result = render(scene, settings);
-    std::vector<std::string> written = write_render_outputs(&result.film, result.receivers, request);
-    for (const RenderLayer& layer : result.layers) {  // bidirectional: OUT.LAYER.exr, .png, receiver maps
-        OutputRequest layer_request = request;
-        auto with_layer = [&](const std::string& path) {
-            return path.empty() ? path : fs::path(path).replace_extension("." + layer.name + fs::path(path).extension().string()).string();
-        };
-        layer_request.exr = with_layer(request.exr);
-        layer_request.png = with_layer(request.png);
-        layer_request.receiver_prefix = request.receiver_prefix + "." + layer.name;
-        for (const std::string& file : write_render_outputs(&layer.film, layer.receivers, layer_request))
-            written.push_back(file);
+    // Checked before the render: a checkpoint that does not fit is refused and nothing is written.
+    const std::string checkpoint_path = request.receiver_prefix + ".checkpoint";
+    const CheckpointIdentity identity = checkpoint_identity(description, settings);
+    RenderResult start;
+    if (options.resume) {
+        if (!fs::exists(checkpoint_path))
+            throw Error(checkpoint_path + ": no checkpoint to resume from (it is removed when a render completes; "
+                                          "--keep-checkpoint keeps it)");
+        start = read_checkpoint(checkpoint_path, identity, blank_render(description, settings));
+        if (!options.quiet)
+            fmt::print("resuming from {}: {} passes done in {:.2f} s\n", checkpoint_path, start.passes, start.seconds);
+    } else if (fs::exists(checkpoint_path) && !options.quiet) {
+        std::fprintf(stderr, "raytrace: note: starting afresh; %s will be replaced (--resume continues it)\n",
+                     checkpoint_path.c_str());
+    }
+
+    CheckpointSchedule checkpoints(checkpoint_path, identity, options.checkpoint_interval, start.passes);
+    const InterruptSignals interrupt;  // SIGINT, SIGTERM: stop between or within passes
+    RenderControl control;
+    control.after_pass = [&](const RenderResult& state) { checkpoints.after_pass(state); };
+    control.stop = &interrupt.flag();
+    const RenderResult result = render(scene, settings, std::move(start), control);
+    if (interrupt.signal() && result.passes == 0) {
+        std::fprintf(stderr, "raytrace: interrupted (%s) before the first pass was complete; nothing written\n",
+                     interrupt.signal_name());
+        return interrupt.exit_code();
+    }
+
+    std::vector<std::string> written = write_all_outputs(result, request);
+    // The outputs first: a checkpoint is never removed before what it led to is on disk.
+    if (interrupt.signal() || options.keep_checkpoint) checkpoints.write(result);
+    else checkpoints.remove();
+    if (interrupt.signal()) {
+        std::fprintf(stderr,
+                     "raytrace: interrupted (%s) after %d passes; wrote the outputs of pass %d and %s.\n"
+                     "Continue with the same command and --resume.\n",
+                     interrupt.signal_name(), result.passes, result.passes, checkpoint_path.c_str());
+        return interrupt.exit_code();
     }
     if (!options.quiet) {
         fmt::print("{} x {} pixels, {} passes in {:.2f} s, {:.3g} rays ({:.3g} rays/s)\n", settings.width,

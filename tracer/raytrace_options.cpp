@@ -28,6 +28,17 @@ Examples:
   raytrace scene.pov --time 60 --threads 2 --seed 7 -o out/scene.exr
   raytrace render.ini            (Width=, Height=, Input_File_Name=, Output_File_Name=, Library_Path=)
 
+Stop and resume: while it renders, raytrace keeps OUT.checkpoint (OUT.exr with .checkpoint),
+the state after a completed pass: written after the first pass, then at most every
+--checkpoint-interval seconds, always whole (temporary file renamed). Ctrl-C (SIGINT) or
+SIGTERM abandons the pass under way, writes the outputs and the checkpoint of the last
+completed pass and exits with 130 or 143; a second Ctrl-C exits at once. The same command with
+--resume continues: the result is bit for bit that of an uninterrupted render (--passes and
+--time count what is already done). After a kill -9 the last checkpoint is intact; --resume
+with the budget already reached only writes its outputs. A checkpoint of another scene, size,
+seed or integrator setting is refused, naming what differs. A completed render removes the
+checkpoint (--keep-checkpoint keeps it, to add passes later).
+
 POV-Ray switches: +Wn width, +Hn height, +Ofile output, +Ifile scene, +Ldir include folder.
 Precedence: .ini files, then + switches, then the options below.)";
 
@@ -143,6 +154,13 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
         ->check(CLI::PositiveNumber);
     app.add_flag("--naive-sources", o.naive_sources, "Bidirectional: ray sources as their stored rays (the naive "
                                                      "model of the paper's Figure 1) instead of the light model");
+    app.add_flag("--resume", o.resume, "Continue the interrupted render whose checkpoint is OUT.checkpoint (same "
+                                       "scene and options), up to --passes or --time in total");
+    app.add_flag("--keep-checkpoint", o.keep_checkpoint, "Keep OUT.checkpoint after the render completes (to "
+                                                         "resume later with more passes)");
+    app.add_option("--checkpoint-interval", o.checkpoint_interval, "Seconds between checkpoints (default 10; 0: "
+                                                                   "after every pass)")
+        ->check(CLI::NonNegativeNumber);
     try {
         std::reverse(rest.begin(), rest.end());  // CLI11 takes the arguments in reverse order
         app.parse(rest);

@@ -27,6 +27,10 @@ struct RaytraceOptions {
     int photons_per_pass = 0;     // 0: the renderer's default
     double photon_radius = 0;     // scene units; 0: the renderer's default
     bool naive_sources = false;   // ray sources as their stored rays (paper Figure 1)
+    // Stop and resume: OUT.checkpoint beside the output holds the last completed pass.
+    bool resume = false;              // continue from OUT.checkpoint
+    bool keep_checkpoint = false;     // keep OUT.checkpoint after a completed render
+    double checkpoint_interval = 10;  // seconds between checkpoints; 0: after every pass
 };
 
 // Returns false when the program should exit with `exit_code` (help shown, or a usage error

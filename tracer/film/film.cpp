@@ -2,8 +2,26 @@
 #include "tracer/film/film.h"
 
 #include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "converters/error.h"
 
 namespace rayset::tracer {
+
+SampleGrid SampleGrid::restored(int nx, int ny, int samples, std::vector<Rgb> sums,
+                                std::vector<double> photometric_squares) {
+    const size_t cells = size_t(nx) * ny;
+    if (nx < 1 || ny < 1 || samples < 0 || sums.size() != cells || photometric_squares.size() != cells)
+        throw Error(fmt::format("sample grid of {} x {} cells with {} sums and {} squares", nx, ny, sums.size(),
+                                photometric_squares.size()));
+    SampleGrid grid(nx, ny);
+    grid.samples_ = samples;
+    grid.sum_ = std::move(sums);
+    grid.photometric_squares_ = std::move(photometric_squares);
+    return grid;
+}
 
 Rgb SampleGrid::mean(int x, int y) const {
     return samples_ ? (1.0 / samples_) * sum_[size_t(y) * nx_ + x] : Rgb{};

@@ -15,6 +15,9 @@ namespace rayset::tracer {
 class SampleGrid {
 public:
     SampleGrid(int nx, int ny) : nx_(nx), ny_(ny), sum_(size_t(nx) * ny), photometric_squares_(size_t(nx) * ny) {}
+    // A grid continuing from stored sums (checkpoint.h): adding to it gives the very bits an
+    // uninterrupted grid would hold. Throws rayset::Error when the sizes disagree.
+    static SampleGrid restored(int nx, int ny, int samples, std::vector<Rgb> sums, std::vector<double> photometric_squares);
     int nx() const { return nx_; }
     int ny() const { return ny_; }
     int samples() const { return samples_; }
@@ -29,6 +32,9 @@ public:
     double photometric_mean(int x, int y) const { return photometric(mean(x, y)); }
     // Standard error of photometric_mean from the spread of the samples (0 with one sample).
     double photometric_standard_error(int x, int y) const;
+    // The accumulators themselves, row by row: what a checkpoint stores.
+    const std::vector<Rgb>& sums() const { return sum_; }
+    const std::vector<double>& photometric_squares() const { return photometric_squares_; }
 
 private:
     int nx_, ny_;

@@ -74,10 +74,15 @@ double default_radius(const std::vector<std::vector<VisiblePoint>>& points, cons
     return diagonal > 0 ? diagonal / 100 : 1;
 }
 
+// The radius after `passes_done` passes, the last of them gathered with `radius`.
+double shrunk_radius(double radius, int passes_done) { return radius * std::sqrt((passes_done + kAlpha) / (passes_done + 1)); }
+
 }  // namespace
 
-RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings) {
-    const PassBudget budget(settings);
+RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings,
+                                  RenderResult start, const RenderControl& control) {
+    RenderResult result = starting_state(scene, settings, std::move(start));
+    const PassBudget budget(settings, result.seconds);
     const int w = settings.width, h = settings.height;
     const PerspectiveCamera camera(scene.description().camera, w, h);
     const BidirectionalIntegrator integrator(scene, sources);
@@ -85,41 +90,30 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
     const bool ordinary = has_ordinary_light(scene);
     const double to_si = scene.units().per_square_metre();
 
-    RenderResult result;
-    for (const char* name : {"direct_visibility", "primary", "secondary"}) result.layers.push_back({name, Film(1, 1), {}});
-    auto make_maps = [&](std::vector<ReceiverMap>& maps) {
-        for (const IlluminanceReceiver& r : scene.description().receivers) maps.emplace_back(r);
-    };
-    make_maps(result.receivers);
-    for (RenderLayer& layer : result.layers) {
-        if (settings.render_image) layer.film = Film(w, h);
-        make_maps(layer.receivers);
-    }
-    if (settings.render_image) result.film = Film(w, h);
-
     const size_t pixels = settings.render_image ? size_t(w) * h : 0;
     std::vector<size_t> receiver_first;  // first cell of each receiver in the pass arrays
     size_t cells = 0;
     for (const ReceiverMap& map : result.receivers) receiver_first.push_back(cells), cells += size_t(map.receiver.nx) * map.receiver.ny;
     const uint64_t photons_per_pass =
         settings.photons_per_pass > 0 ? uint64_t(settings.photons_per_pass) : std::max<uint64_t>(kMinimumPhotons, pixels + cells);
-    double radius = settings.photon_radius;
+    // A continued render goes on from the radius its last pass used.
+    double radius = result.passes > 0 ? shrunk_radius(result.photon_radius, result.passes) : settings.photon_radius;
 
     const int tile = settings.tile_size, tiles_x = (w + tile - 1) / tile, tiles_y = (h + tile - 1) / tile;
     const int tiles = settings.render_image ? tiles_x * tiles_y : 0;
     tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
     ProgressBar progress("rendering", settings.progress);
-    std::atomic<uint64_t> rays{0};
 
-    while (budget.allows_another(result.passes)) {
+    while (!stop_requested(control) && budget.allows_another(result.passes)) {
         const uint64_t seed = pass_seed(settings.seed, result.passes);
+        std::atomic<uint64_t> rays{0};
         PassValues image(pixels), cell(cells);
         std::vector<std::vector<VisiblePoint>> visible(static_cast<size_t>(tiles));
         arena.execute([&] {
             // Camera pass.
             tbb::parallel_for(tbb::blocked_range<int>(0, tiles), [&](const tbb::blocked_range<int>& range) {
                 uint64_t counted = 0;
-                for (int t = range.begin(); t != range.end(); ++t) {
+                for (int t = range.begin(); t != range.end() && !stop_requested(control); ++t) {
                     const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
                     for (int y = y0; y < std::min(h, y0 + tile); ++y)
                         for (int x = x0; x < std::min(w, x0 + tile); ++x) {
@@ -141,6 +135,7 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
                 const int nx = map.receiver.nx, ny = map.receiver.ny;
                 const Vec3 normal = map.front_normal();
                 tbb::parallel_for(tbb::blocked_range<int>(0, nx * ny), [&](const tbb::blocked_range<int>& range) {
+                    if (stop_requested(control)) return;
                     uint64_t counted = 0;
                     for (int k = range.begin(); k != range.end(); ++k) {
                         const size_t c = receiver_first[r] + size_t(k);
@@ -152,7 +147,7 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
                     rays += counted;
                 });
             }
-            if (sources.empty() || (tiles == 0 && cells == 0)) return;
+            if (sources.empty() || (tiles == 0 && cells == 0) || stop_requested(control)) return;
 
             // Photon pass, in fixed blocks so that the photons' order does not depend on threads.
             if (!(radius > 0)) radius = default_radius(visible, result.receivers);
@@ -160,11 +155,13 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
             const size_t blocks = size_t((photons_per_pass + kPhotonBlock - 1) / kPhotonBlock);
             std::vector<std::vector<Photon>> traced(blocks);
             tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+                if (stop_requested(control)) return;
                 uint64_t counted = 0;
                 const uint64_t first = b * kPhotonBlock, count = std::min(kPhotonBlock, photons_per_pass - first);
                 traced[b] = integrator.trace_photons(first, count, photons_per_pass, photon_seed, counted);
                 rays += counted;
             });
+            if (stop_requested(control)) return;
             std::vector<Photon> photons;
             for (auto& block : traced) photons.insert(photons.end(), block.begin(), block.end());
             const PhotonGrid grid(std::move(photons), radius);
@@ -195,6 +192,7 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
                 });
             }
         });
+        if (stop_requested(control)) break;  // the pass may be incomplete: abandoned
         result.photons += sources.empty() ? 0 : photons_per_pass;
         result.photon_radius = radius;
 
@@ -225,13 +223,14 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
         for (RenderLayer& layer : result.layers)
             for (ReceiverMap& map : layer.receivers) map.irradiance.finish_pass();
         ++result.passes;
-        radius *= std::sqrt((result.passes + kAlpha) / (result.passes + 1));
-
+        radius = shrunk_radius(radius, result.passes);
+        result.rays += rays;
+        result.seconds = budget.elapsed();
+        if (control.after_pass) control.after_pass(result);
         progress.update(budget.fraction_done(result.passes));
     }
     progress.done();
     result.seconds = budget.elapsed();
-    result.rays = rays;
     return result;
 }
 

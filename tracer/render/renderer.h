@@ -4,8 +4,10 @@
 // depends on the seed and the number of passes only, not on threads or timing.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -52,14 +54,33 @@ struct RenderResult {
     size_t photon_bytes = 0, visible_point_bytes = 0;  // the photon grid and visible points, largest pass
 };
 
+// What a render is told besides its settings, for checkpoints and interruption.
+struct RenderControl {
+    // Called after every completed pass with the state so far (passes, accumulators, rays,
+    // photons, radius, seconds): what a checkpoint stores.
+    std::function<void(const RenderResult&)> after_pass;
+    // Once true (a signal handler may set it), the pass under way is abandoned and render
+    // returns the completed passes.
+    const std::atomic<bool>* stop = nullptr;
+};
+
+// The state before the first pass: zeroed film (when settings.render_image), receiver maps
+// and, for the bidirectional integrator, its layers.
+RenderResult blank_render(const SceneDescription& scene, const RenderSettings& settings);
+
 // The scene's integrator: global_settings { integrator "path" } (default) or "bidirectional".
-RenderResult render(const RenderScene& scene, const RenderSettings& settings);
+// `start`: a state to continue (from a checkpoint of the same scene and settings, or a render
+// stopped earlier); with start.passes == 0 the render starts afresh. Pass budgets count
+// start's passes and seconds: a continued render ends where an uninterrupted one would.
+RenderResult render(const RenderScene& scene, const RenderSettings& settings, RenderResult start = {},
+                    const RenderControl& control = {});
 
 // The budget both renderers keep: `passes`, else passes until `time_limit`, else
-// kDefaultPasses; checked between passes. The clock starts at construction.
+// kDefaultPasses; checked between passes. The clock starts at construction, from
+// `seconds_before` (the time a continued render has already spent).
 class PassBudget {
 public:
-    explicit PassBudget(const RenderSettings& settings);
+    explicit PassBudget(const RenderSettings& settings, double seconds_before = 0);
     double elapsed() const;  // seconds
     bool allows_another(int passes_done) const;
     double fraction_done(int passes_done) const;  // for the progress bar, 0..1
@@ -68,13 +89,22 @@ private:
     double time_limit_;
     int passes_;
     bool timed_only_;
+    double seconds_before_;
     std::chrono::steady_clock::time_point start_;
 };
 
 class RaySourceSet;
 // Progressive bidirectional render (bidirectional_integrator.h) with the scene's ray sources
 // already loaded; lights, emission and background are added by the path tracer.
-RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings);
+RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings,
+                                  RenderResult start = {}, const RenderControl& control = {});
+
+// Shared by both renderers: `start` if it continues a render (after checking it has the
+// layout of blank_render), else the blank state.
+RenderResult starting_state(const RenderScene& scene, const RenderSettings& settings, RenderResult start);
+inline bool stop_requested(const RenderControl& control) {
+    return control.stop && control.stop->load(std::memory_order_relaxed);
+}
 
 // Seed of the random streams of one pass.
 uint64_t pass_seed(uint64_t seed, int pass);
