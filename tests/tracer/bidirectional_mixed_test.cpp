@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "converters/analytic_sources.h"
+#include "converters/ray_stream.h"
 #include "converters/spectrum.h"
 #include "converters/synth.h"
 #include "lightmodel/complex_source.h"
@@ -92,6 +93,54 @@ TEST(BidirectionalMixed, WhiteLedFromTwoRayFilesPlusAPointLight) {
     const Rgb centre = map.irradiance.mean(1, 1) + map.irradiance.mean(2, 2);
     EXPECT_GT(centre.blue, 0);
     EXPECT_GT(centre.red, centre.blue);
+}
+
+TEST(BidirectionalMixed, LuminousOnlyFileGivesTheSameLux) {
+    // The same 555 nm disk twice: its ray file as synthesised (W and lm per ray), and a copy
+    // that keeps only the luminous column, as photometric ray files do (its wavelengths stay).
+    // One model is in W (683.002 lm/W at 555 nm), the other in lm: their lux and colour must
+    // agree to rounding, the same rays drawing the same samples.
+    test::ScratchDir scratch;
+    analytic::Spectrum spectrum;
+    spectrum.wavelength_nm = 555;
+    const auto disk = analytic::LambertianDisk::with_flux(1, 1, spectrum);
+    const std::string both = scratch.file("both.tm25ray"), luminous = scratch.file("luminous.tm25ray");
+    {
+        auto out = create_rays(both, RayFormat::tm25, synth_header(disk, 200000, 3));
+        synthesize(disk, 200000, 3, *out);
+    }
+    {
+        auto in = open_rays(both);
+        RayHeader header = in->header();
+        header.has_radiant = false;
+        header.stated_radiant = std::nan("");
+        auto out = create_rays(luminous, RayFormat::tm25, header);
+        RayChunk chunk;
+        while (in->read(chunk)) out->write(chunk);
+        out->finish();
+    }
+    ASSERT_FALSE(open_rays(luminous)->header().has_radiant);
+    auto lux = [&](const std::string& file) {
+        const std::string scene = R"(
+            global_settings { integrator "bidirectional" }
+            plane { y, 0 pigment { rgb 0 } }
+            ray_source { ")" + file + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
+            illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0> resolution <3, 3> name "floor" }
+        )";
+        RenderSettings settings;
+        settings.render_image = false, settings.passes = 64, settings.seed = 8, settings.photons_per_pass = 64;
+        return render(RenderScene(parse_scene_text(scene, scratch.file("s.pov"))), settings).receivers.at(0);
+    };
+    const ReceiverMap a = lux(both), b = lux(luminous);
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+            const double ea = a.irradiance.photometric_mean(i, j), eb = b.irradiance.photometric_mean(i, j);
+            EXPECT_GT(ea, 0);
+            EXPECT_NEAR(eb, ea, 1e-6 * ea) << i << "," << j;
+            const Rgb ca = a.irradiance.mean(i, j), cb = b.irradiance.mean(i, j);
+            EXPECT_NEAR(cb.red, ca.red, 1e-6 * ca.red);
+            EXPECT_NEAR(cb.blue, ca.blue, 1e-6 * ca.red);
+        }
 }
 
 }  // namespace
