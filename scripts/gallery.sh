@@ -34,4 +34,17 @@ if [ -d "$data" ]; then
   view "$data/photometry/ABSOLUTE_LED.ies" --show farfield --png "$out/ies-farfield.png"
   view "$blue" --show polar --compare "$work/cluster.tm25ray" --png "$out/compare-polar.png"
 fi
+# The paper's figures: the bundled example's box (examples/led_box.pov) at 320 x 240, 40 s
+# each (scripts/example.sh renders them at 640 x 480 into out/example/).
+"$build/converters/rayconv" synth cluster rings=1,6,12,20 chip=1 pitch=2 flux=1 wavelength=630,530,460 \
+  --rays 1000000 --seed 1 -o "$work/cluster.tm25ray" > /dev/null
+for mode in model naive; do
+  flag=""; [ "$mode" = naive ] && flag=--naive-sources
+  "$build/tracer/raytrace" examples/led_box.pov +L"$work" +W320 +H240 --time 40 -q $flag -o "$work/$mode.exr"
+done
+cp "$work/naive.png" "$out/paper-fig1-naive.png"
+cp "$work/model.direct_visibility.png" "$out/paper-fig4-direct-visibility.png"
+cp "$work/model.primary.png" "$out/paper-fig5-primary.png"
+cp "$work/model.secondary.png" "$out/paper-fig6-secondary.png"
+cp "$work/model.png" "$out/paper-fig7-full.png"
 echo "gallery written to $out"
