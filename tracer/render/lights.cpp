@@ -127,16 +127,35 @@ LightSet::LightSet(const std::vector<LightSource>& lights, const SceneUnits& uni
                 rects_low_ = {std::min(rects_low_.x, c.x), std::min(rects_low_.y, c.y), std::min(rects_low_.z, c.z)};
                 rects_high_ = {std::max(rects_high_.x, c.x), std::max(rects_high_.y, c.y), std::max(rects_high_.z, c.z)};
             }
+    // Widened once here: the box test runs for every ray the path tracer casts.
+    for (int k = 0; k < 3; ++k) {
+        double& lo = k == 0 ? rects_low_.x : k == 1 ? rects_low_.y : rects_low_.z;
+        double& hi = k == 0 ? rects_high_.x : k == 1 ? rects_high_.y : rects_high_.z;
+        const double margin = 1e-9 * (std::abs(lo) + std::abs(hi) + (hi - lo)) + 1e-300;
+        lo -= margin, hi += margin;
+    }
     for (double p : point_powers) cdf_.push_back(total_power_ += p);
     for (double p : rect_powers) cdf_.push_back(total_power_ += p);
     for (size_t i = 0; i < cdf_.size(); ++i)
         probability_.push_back(total_power_ > 0 ? (cdf_[i] - (i ? cdf_[i - 1] : 0)) / total_power_ : 0);
 }
 
+size_t LightSet::choose(double u_select) const {
+    const double x = u_select * total_power_;
+    size_t i = 0;
+    if (cdf_.size() <= 16) {
+        // The index upper_bound finds, counted without branches: for a handful of lights this
+        // is faster than a binary search whose branches the processor cannot predict.
+        for (double c : cdf_) i += c <= x;
+    } else {
+        i = size_t(std::upper_bound(cdf_.begin(), cdf_.end(), x) - cdf_.begin());
+    }
+    return std::min(i, cdf_.size() - 1);
+}
+
 bool LightSet::sample(Vec3 p, double u_select, double u1, double u2, LightSample& out) const {
     if (total_power_ <= 0) return false;
-    const size_t i = std::min(size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u_select * total_power_) - cdf_.begin()),
-                              cdf_.size() - 1);
+    const size_t i = choose(u_select);
     const double chosen = selection_probability(i);
     if (i < points_.size()) {
         const PointEmitter& light = points_[i];
@@ -166,19 +185,17 @@ bool LightSet::sample(Vec3 p, double u_select, double u1, double u2, LightSample
 
 namespace {
 
-// Slab test of a ray against a box widened by a relative margin (the box of coplanar
-// rectangles is flat).
+// Slab test of a ray against a box (already widened: the box of coplanar rectangles is flat).
 bool crosses_box(Vec3 origin, Vec3 direction, double t_max, Vec3 low, Vec3 high) {
     double t0 = 0, t1 = t_max;
     const double o[3] = {origin.x, origin.y, origin.z}, d[3] = {direction.x, direction.y, direction.z};
     const double lo[3] = {low.x, low.y, low.z}, hi[3] = {high.x, high.y, high.z};
     for (int k = 0; k < 3; ++k) {
-        const double margin = 1e-9 * (std::abs(lo[k]) + std::abs(hi[k]) + (hi[k] - lo[k])) + 1e-300;
         const double inverse = 1 / d[k];
-        double near = (lo[k] - margin - o[k]) * inverse, far = (hi[k] + margin - o[k]) * inverse;
+        double near = (lo[k] - o[k]) * inverse, far = (hi[k] - o[k]) * inverse;
         if (near > far) std::swap(near, far);
         if (std::isnan(near)) {  // parallel to the slab: inside it or not
-            if (o[k] < lo[k] - margin || o[k] > hi[k] + margin) return false;
+            if (o[k] < lo[k] || o[k] > hi[k]) return false;
             continue;
         }
         t0 = std::max(t0, near), t1 = std::min(t1, far);

@@ -59,12 +59,13 @@ public:
 
 private:
     double selection_probability(size_t light_index) const { return probability_[light_index]; }
+    size_t choose(double u_select) const;  // index into cdf_, proportional to power
 
     std::vector<PointEmitter> points_;
     std::vector<RectEmitter> rects_;
     std::vector<double> cdf_;          // over points_ then rects_
     std::vector<double> probability_;  // of choosing each light
-    Vec3 rects_low_, rects_high_;  // box around every rectangle: most rays miss it at once
+    Vec3 rects_low_, rects_high_;  // box around every rectangle, widened a little: most rays miss it at once
     double total_power_ = 0;
 };
 

@@ -5,6 +5,10 @@
 
 namespace rayset::tracer {
 
+PathIntegrator::PathIntegrator(const RenderScene& scene) : scene_(scene) {
+    for (const ObjectInstance& o : scene.description().objects) no_shadow_.push_back(o.no_shadow);
+}
+
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 }
@@ -52,18 +56,19 @@ Rgb PathIntegrator::direct(const Bsdf& bsdf, Vec3 point, Vec3 normal, Pcg32& rng
     return (weight / light.pdf) * (f * light.radiance);
 }
 
-Rgb PathIntegrator::trace(PathState s, Pcg32& rng, uint64_t& rays) const {
+Rgb PathIntegrator::trace(PathState& s, Pcg32& rng, uint64_t& rays) const {
     const LightSet& lights = scene_.lights();
     Rgb sum;
+    SurfaceHit hit;
+    BsdfSample sample;
     for (;; ++s.depth) {
-        SurfaceHit hit;
         ++rays;
         const bool found = scene_.intersect(s.origin, s.direction, 0, kInfinity, s.kind, hit);
         if (!lights.rects().empty()) {
             // Area lights are not geometry: a ray collects one if it crosses it before the first
             // surface that casts shadows, which is exactly what light sampling tests.
             double t_block = found ? hit.t : kInfinity;
-            if (found && scene_.description().objects[hit.object].no_shadow) {
+            if (found && no_shadow_[hit.object]) {
                 ++rays;
                 t_block = scene_.nearest_shadow_caster(s.origin, s.direction, 0, kInfinity);
             }
@@ -80,7 +85,6 @@ Rgb PathIntegrator::trace(PathState s, Pcg32& rng, uint64_t& rays) const {
         if (bsdf.has_smooth_lobes() && !lights.empty())
             sum += s.beta * direct(bsdf, hit.point, bsdf.facing_normal(), rng, rays);
 
-        BsdfSample sample;
         const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
         if (s.depth + 1 >= kMaxDepth || !bsdf.sample(u_lobe, u1, u2, sample) || is_black(sample.weight)) break;
         s.beta *= sample.weight;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "converters/random.h"
 #include "tracer/render/render_scene.h"
@@ -12,7 +13,7 @@ namespace rayset::tracer {
 
 class PathIntegrator {
 public:
-    explicit PathIntegrator(const RenderScene& scene) : scene_(scene) {}
+    explicit PathIntegrator(const RenderScene& scene);
 
     // Radiance arriving along a camera ray (origin, unit direction); `rays` counts every ray cast.
     Rgb radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const;
@@ -32,11 +33,14 @@ private:
         double bsdf_pdf = -1;  // pdf of the sampled direction; < 0: no light sampling competes
         int depth = 0;
     };
-    Rgb trace(PathState state, Pcg32& rng, uint64_t& rays) const;
+    // Follows the path from `state` (advanced in place: a by-value copy of this struct cost
+    // more than some of the arithmetic per bounce).
+    Rgb trace(PathState& state, Pcg32& rng, uint64_t& rays) const;
     // Next-event estimation at a surface point (one light sample, MIS-weighted for area lights).
     Rgb direct(const Bsdf& bsdf, Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
 
     const RenderScene& scene_;
+    std::vector<uint8_t> no_shadow_;  // per object: read on every hit, kept apart from the big ObjectInstance
 };
 
 }  // namespace rayset::tracer
