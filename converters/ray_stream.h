@@ -60,7 +60,7 @@ struct RayReadOptions {
     float direction_tolerance = 1e-3f;
     // Accept non-unit directions and normalise them instead of failing.
     bool normalise_directions = false;
-    size_t chunk_size = 1 << 16;
+    size_t chunk_size = 1 << 12;
     std::optional<RayFormat> format;  // skip detection
 };
 
