@@ -2,9 +2,11 @@
 
 #include <cerrno>
 #include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <random>
 #include <sys/stat.h>
@@ -37,31 +39,70 @@ std::FILE* open_for_reading(const std::string& path, uint64_t& size) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-BinaryInput::BinaryInput(const std::string& path) : path_(path) { file_ = open_for_reading(path, size_); }
+BinaryInput::BinaryInput(const std::string& path) : path_(path), buffer_(size_t(64) << 10) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) fail(path, "is a folder, not a file");
+    fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd_ < 0) fail(path, "cannot open: " + system_error_text());
+    struct stat st {};
+    if (::fstat(fd_, &st) != 0) {
+        std::string error = system_error_text();
+        ::close(fd_);
+        fail(path, "cannot read its size: " + error);
+    }
+    size_ = static_cast<uint64_t>(st.st_size);
+    // Codecs read front to back: a larger read-ahead where the file is not cached yet.
+    ::posix_fadvise(fd_, 0, 0, POSIX_FADV_SEQUENTIAL);
+}
 
 BinaryInput::~BinaryInput() {
-    if (file_) std::fclose(file_);
+    if (fd_ >= 0) ::close(fd_);
 }
 
 void BinaryInput::seek(uint64_t offset) {
     if (offset > size_) fail_here("seek past the end of the file (" + std::to_string(size_) + " bytes)");
-    if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0) fail_here("cannot seek: " + system_error_text());
+    if (::lseek(fd_, static_cast<off_t>(offset), SEEK_SET) < 0) fail_here("cannot seek: " + system_error_text());
+    buffered_begin_ = buffered_end_ = 0;
     offset_ = offset;
 }
 
+size_t BinaryInput::fill(uint8_t* out, size_t n, const char* what) {
+    size_t done = 0;
+    while (done < n) {
+        if (buffered_begin_ < buffered_end_) {
+            size_t take = std::min(n - done, buffered_end_ - buffered_begin_);
+            std::memcpy(out + done, buffer_.data() + buffered_begin_, take);
+            buffered_begin_ += take;
+            done += take;
+            continue;
+        }
+        // What fills the buffer at least is read directly; less is read through the buffer.
+        const bool direct = n - done >= buffer_.size();
+        uint8_t* into = direct ? out + done : buffer_.data();
+        ssize_t got = ::read(fd_, into, direct ? n - done : buffer_.size());
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) fail_here((what ? std::string("read error in ") + what : std::string("read error")) + ": " + system_error_text());
+        if (got == 0) break;
+        if (direct) {
+            done += static_cast<size_t>(got);
+        } else {
+            buffered_begin_ = 0;
+            buffered_end_ = static_cast<size_t>(got);
+        }
+    }
+    return done;
+}
+
 void BinaryInput::read(void* out, size_t n, const char* what) {
-    size_t got = std::fread(out, 1, n, file_);
-    if (got != n) {
-        if (std::ferror(file_)) fail_here(std::string("read error in ") + what + ": " + system_error_text());
+    size_t got = fill(static_cast<uint8_t*>(out), n, what);
+    if (got != n)
         fail_here(std::string("file ends inside ") + what + " (" + std::to_string(n) + " bytes expected, " +
                   std::to_string(got) + " left): the file is truncated");
-    }
     offset_ += n;
 }
 
 size_t BinaryInput::read_some(void* out, size_t n) {
-    size_t got = std::fread(out, 1, n, file_);
-    if (got < n && std::ferror(file_)) fail_here("read error: " + system_error_text());
+    size_t got = fill(static_cast<uint8_t*>(out), n, nullptr);
     offset_ += got;
     return got;
 }

@@ -14,6 +14,8 @@
 namespace rayset {
 
 // Sequential little-endian reads with the offset of every failure in the error message.
+// Small reads (header fields) come from a buffer; large ones (ray records) go from the file
+// straight into the caller's memory, so the bytes are copied once.
 class BinaryInput {
 public:
     explicit BinaryInput(const std::string& path);
@@ -42,10 +44,15 @@ public:
     [[noreturn]] void fail_here(const std::string& what) const { fail_at(offset_, what); }
 
 private:
+    // Up to n bytes into `out`, fewer only at the end of the file; `what` (if any) names a read error.
+    size_t fill(uint8_t* out, size_t n, const char* what);
+
     std::string path_;
-    std::FILE* file_ = nullptr;
+    int fd_ = -1;
     uint64_t size_ = 0;
     uint64_t offset_ = 0;
+    std::vector<uint8_t> buffer_;
+    size_t buffered_begin_ = 0, buffered_end_ = 0;  // the unread part of buffer_
 };
 
 // Line-oriented text input; strips "\r\n" and "\n". Line numbers are 1-based.
