@@ -95,8 +95,10 @@ public:
 
 private:
     friend std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options);
-    void validate(RayChunk& chunk);
-    void check_ray(RayChunk& chunk, size_t index);
+    class ReadAhead;
+    // Checks and scales a chunk (on the read-ahead thread: it changes nothing but the chunk).
+    RayTotals validate(RayChunk& chunk) const;
+    void check_ray(RayChunk& chunk, size_t index) const;
 
     std::unique_ptr<RayDecoder> decoder_;
     std::string path_;
@@ -105,6 +107,7 @@ private:
     double radiant_scale_ = 1, luminous_scale_ = 1;
     RayTotals totals_;
     std::vector<std::string> warnings_;
+    std::unique_ptr<ReadAhead> ahead_;  // started by the first read()
 };
 
 std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options = {});
