@@ -90,7 +90,9 @@ void write_atomically(const std::string& path, const std::function<bool(const st
 
 // Writes to a temporary file beside the target and renames it into place on commit(). If the
 // object is destroyed without commit() (an error was thrown), the temporary file is removed and
-// whatever was at the target path before is untouched.
+// whatever was at the target path before is untouched. commit() flushes the file to the disk
+// (fsync) before the rename, so that a crash cannot leave a half-written file under the name.
+// Small writes are gathered in a buffer; large ones go from the caller's memory to the file.
 class AtomicOutput {
 public:
     explicit AtomicOutput(const std::string& path);
@@ -108,10 +110,15 @@ public:
     void commit();
 
 private:
+    void flush();
+    void write_fully(const uint8_t* data, size_t n, uint64_t at);
+
     std::string path_;
     std::string temp_path_;
-    std::FILE* file_ = nullptr;
-    uint64_t offset_ = 0;
+    int fd_ = -1;
+    uint64_t offset_ = 0;      // bytes written, buffered ones included
+    std::vector<uint8_t> buffer_;
+    size_t buffered_ = 0;      // bytes waiting in buffer_, the last ones of offset_
     bool committed_ = false;
 };
 

@@ -65,8 +65,8 @@ template <class T> struct Lanes {
 };
 
 // Fields of up to kBlock rays regrouped one array per field: loops over 40-byte Ray records
-// are not vectorised, loops over contiguous floats are.
-constexpr size_t kBlock = 1024;
+// are not vectorised, loops over contiguous floats are. 512 rays keep a block (18 KiB) in L1.
+constexpr size_t kBlock = 512;
 struct Block {
     size_t n = 0;
     alignas(64) float ox[kBlock], oy[kBlock], oz[kBlock], dx[kBlock], dy[kBlock], dz[kBlock], weight[kBlock],
