@@ -186,19 +186,20 @@ RayTotals RayReader::validate(RayChunk& chunk) const {
         for (size_t i = 0; i < n; ++i) rays[i].radiant = float(double(rays[i].radiant) * radiant_scale_);
     if (luminous && float(luminous_scale_) != 1)
         for (size_t i = 0; i < n; ++i) rays[i].luminous = float(double(rays[i].luminous) * luminous_scale_);
-    // Even and odd rays in two sums: half as long a chain of dependent additions.
-    auto sum_of = [rays, n](float Ray::*flux) {
-        double even = 0, odd = 0;
-        size_t i = 0;
-        for (; i + 1 < n; i += 2) even += rays[i].*flux, odd += rays[i + 1].*flux;
-        if (i < n) even += rays[i].*flux;
-        return even + odd;
-    };
-    if (radiant) totals.radiant = sum_of(&Ray::radiant);
-    if (luminous) totals.luminous = sum_of(&Ray::luminous);
+    // One pass for both sums and the zero-flux count. Even and odd rays go to two sums each:
+    // half as long a chain of dependent additions. An absent column is summed (NaN) but unused.
+    double radiant_sum[2] = {0, 0}, luminous_sum[2] = {0, 0};
     uint64_t zero_flux = 0;
-    for (size_t i = 0; i < n; ++i)
-        zero_flux += ((!radiant) | (rays[i].radiant == 0)) & ((!luminous) | (rays[i].luminous == 0));
+    auto add = [&](const Ray& r, int parity) {
+        radiant_sum[parity] += r.radiant;
+        luminous_sum[parity] += r.luminous;
+        zero_flux += ((!radiant) | (r.radiant == 0)) & ((!luminous) | (r.luminous == 0));
+    };
+    size_t i = 0;
+    for (; i + 1 < n; i += 2) add(rays[i], 0), add(rays[i + 1], 1);
+    if (i < n) add(rays[i], 0);
+    if (radiant) totals.radiant = radiant_sum[0] + radiant_sum[1];
+    if (luminous) totals.luminous = luminous_sum[0] + luminous_sum[1];
     totals.zero_flux_rays = zero_flux;
     totals.rays = n;
     return totals;
