@@ -143,7 +143,7 @@ namespace {
 
 // One comparison chain per value: false for NaN and infinities as well as out-of-range values.
 inline bool finite_float(float v) { return std::abs(v) <= std::numeric_limits<float>::max(); }
-inline bool flux_ok(float v) { return v >= 0 && v <= std::numeric_limits<float>::max(); }
+inline bool flux_ok(float v) { return (v >= 0) & (v <= std::numeric_limits<float>::max()); }
 
 // The fast test every ray must pass; check_ray() says what is wrong with one that does not.
 // Bitwise & rather than &&: no branch per value, and every ray of a valid file evaluates all.
@@ -152,15 +152,41 @@ struct RayTest {
     bool radiant, luminous, per_ray_table;
     int32_t tables;
 
+    bool passes(float ox, float oy, float oz, float dx, float dy, float dz, float radiant_flux, float luminous_flux,
+                float wavelength, int32_t spectrum) const {
+        const float length2 = dx * dx + dy * dy + dz * dz;
+        return finite_float(ox) & finite_float(oy) & finite_float(oz) & (length2 >= min_length2) &
+               (length2 <= max_length2) & ((!radiant) | flux_ok(radiant_flux)) & ((!luminous) | flux_ok(luminous_flux)) &
+               (std::isnan(wavelength) | flux_ok(wavelength)) & ((!per_ray_table) | ((spectrum >= 0) & (spectrum < tables)));
+    }
     bool passes(const Ray& r) const {
-        const Vec3f& d = r.direction;
-        const float length2 = d.x * d.x + d.y * d.y + d.z * d.z;
-        return finite_float(r.origin.x) & finite_float(r.origin.y) & finite_float(r.origin.z) &
-               (length2 >= min_length2) & (length2 <= max_length2) & ((!radiant) | flux_ok(r.radiant)) &
-               ((!luminous) | flux_ok(r.luminous)) & (std::isnan(r.wavelength) | flux_ok(r.wavelength)) &
-               ((!per_ray_table) | ((r.spectrum >= 0) & (r.spectrum < tables)));
+        return passes(r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z, r.radiant,
+                      r.luminous, r.wavelength, r.spectrum);
     }
 };
+
+// Whether every ray passes. The fields are regrouped one array each, a block at a time, so
+// that the test runs over arrays, which the compiler vectorises (over 40-byte Ray records it
+// does not); a block of 256 rays (10 KiB) stays in L1.
+bool all_pass(const Ray* rays, size_t n, const RayTest& test) {
+    constexpr size_t kBlock = 256;
+    float ox[kBlock], oy[kBlock], oz[kBlock], dx[kBlock], dy[kBlock], dz[kBlock], radiant[kBlock], luminous[kBlock],
+        wavelength[kBlock];
+    int32_t spectrum[kBlock];
+    int pass = 1;
+    for (size_t start = 0; start < n; start += kBlock) {
+        const size_t count = std::min(kBlock, n - start);
+        for (size_t i = 0; i < count; ++i) {
+            const Ray& r = rays[start + i];
+            ox[i] = r.origin.x, oy[i] = r.origin.y, oz[i] = r.origin.z;
+            dx[i] = r.direction.x, dy[i] = r.direction.y, dz[i] = r.direction.z;
+            radiant[i] = r.radiant, luminous[i] = r.luminous, wavelength[i] = r.wavelength, spectrum[i] = r.spectrum;
+        }
+        for (size_t i = 0; i < count; ++i)
+            pass &= test.passes(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], radiant[i], luminous[i], wavelength[i], spectrum[i]);
+    }
+    return pass;
+}
 
 }  // namespace
 
@@ -174,9 +200,7 @@ RayTotals RayReader::validate(RayChunk& chunk) const {
     const size_t n = chunk.rays.size();
     // Nearly every chunk is valid: one pass finds out, without stopping at the first bad ray;
     // only a chunk that fails is walked again to report (or, if allowed, fix) its first bad ray.
-    bool all_pass = true;
-    for (size_t i = 0; i < n; ++i) all_pass &= test.passes(rays[i]);
-    if (!all_pass)
+    if (!all_pass(rays, n, test))
         for (size_t i = 0; i < n; ++i)
             if (!test.passes(rays[i])) check_ray(chunk, i);  // throws, or normalises an accepted direction
 
