@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -55,15 +56,6 @@ Vec3f cell_centre(int cell) {
     return {float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)};
 }
 
-// Running minima, maxima and sums kept in kLanes independent lanes, combined at the end. The
-// lanes let the compiler put one operation on a whole vector of rays: it will not reorder a
-// single floating-point min or sum itself, as that can change its result.
-constexpr size_t kLanes = 8;
-template <class T> struct Lanes {
-    T v[kLanes];
-    explicit Lanes(T init) { std::fill(v, v + kLanes, init); }
-};
-
 // Fields of up to kBlock rays regrouped one array per field: loops over 40-byte Ray records
 // are not vectorised, loops over contiguous floats are. 512 rays keep a block (18 KiB) in L1.
 constexpr size_t kBlock = 512;
@@ -85,21 +77,30 @@ struct Block {
     }
 };
 
-template <class T, class Op> void fold(Lanes<T>& lanes, const float* values, size_t n, Op op) {
-    size_t i = 0;
-    for (; i + kLanes <= n; i += kLanes)
-        for (size_t k = 0; k < kLanes; ++k) lanes.v[k] = op(lanes.v[k], values[i + k]);
-    for (; i < n; ++i) lanes.v[0] = op(lanes.v[0], values[i]);
-}
+// Minimum and maximum of a field, kept position by position within the blocks and combined at
+// the end: updating them is a loop of independent elements, which the compiler vectorises (a
+// single running minimum it will not, as reordering could change the result). The comparisons
+// are written so that a NaN value leaves them as they are.
+struct Extremes {
+    alignas(64) float lo[kBlock], hi[kBlock];
 
-template <class T, class Op> T combine(const Lanes<T>& lanes, Op op) {
-    T result = lanes.v[0];
-    for (size_t k = 1; k < kLanes; ++k) result = op(result, lanes.v[k]);
-    return result;
-}
+    Extremes() { std::fill(lo, lo + kBlock, INFINITY), std::fill(hi, hi + kBlock, -INFINITY); }
+    void add(const float* values, size_t n) {
+        for (size_t i = 0; i < n; ++i) {
+            lo[i] = values[i] < lo[i] ? values[i] : lo[i];
+            hi[i] = values[i] > hi[i] ? values[i] : hi[i];
+        }
+    }
+    float min() const { return *std::min_element(lo, lo + kBlock); }
+    float max() const { return *std::max_element(hi, hi + kBlock); }
+};
 
-const auto min_of = [](float a, float b) { return std::min(a, b); };
-const auto max_of = [](float a, float b) { return std::max(a, b); };
+// Sums kept in kLanes lanes, for the same reason.
+constexpr size_t kLanes = 8;
+struct LaneSums {
+    double v[kLanes] = {};
+    double total() const { return std::accumulate(v, v + kLanes, 0.0); }
+};
 
 // The running state of one summary pass.
 struct Accumulator {
@@ -125,24 +126,20 @@ struct Accumulator {
 
     void add_block(Block& b) {
         const size_t n = b.n;
-        // Origins are finite (the reader checked), so min/max need no NaN care.
-        const float* origin[3] = {b.ox, b.oy, b.oz};
-        for (int k = 0; k < 3; ++k) {
-            fold(lo[k], origin[k], n, min_of);
-            fold(hi[k], origin[k], n, max_of);
-        }
+        origin[0].add(b.ox, n), origin[1].add(b.oy, n), origin[2].add(b.oz, n);
         // NaN wavelengths are "unknown": counted (where the file promises wavelengths) and skipped.
         for (size_t i = 0; i < n; ++i) unknown += std::isnan(b.wavelength[i]);
-        fold(wmin, b.wavelength, n, [](float m, float w) { return std::isnan(w) ? m : std::min(m, w); });
-        fold(wmax, b.wavelength, n, [](float m, float w) { return std::isnan(w) ? m : std::max(m, w); });
+        wavelength.add(b.wavelength, n);
         // Flux-weighted direction sums, in double.
         const float* direction[3] = {b.dx, b.dy, b.dz};
         for (int k = 0; k < 3; ++k) {
             const float* d = direction[k];
+            LaneSums sums = mean[k];  // a local: `d` might alias it as far as the compiler knows
             size_t i = 0;
             for (; i + kLanes <= n; i += kLanes)
-                for (size_t l = 0; l < kLanes; ++l) mean[k].v[l] += double(b.weight[i + l]) * d[i + l];
-            for (; i < n; ++i) mean[k].v[0] += double(b.weight[i]) * d[i];
+                for (size_t l = 0; l < kLanes; ++l) sums.v[l] += double(b.weight[i + l]) * d[i + l];
+            for (; i < n; ++i) sums.v[0] += double(b.weight[i]) * d[i];
+            mean[k] = sums;
         }
         // The cells first (a loop the compiler vectorises), then the scattered stores.
         for (size_t i = 0; i < n; ++i) b.cell[i] = coverage_cell(b.dx[i], b.dy[i], b.dz[i]);
@@ -156,11 +153,10 @@ struct Accumulator {
     std::optional<double> shared_efficacy;
     double luminous_from_spectrum = 0;  // when the efficacy differs from ray to ray
     std::unique_ptr<Block> block = std::make_unique<Block>();
-    Lanes<double> mean[3] = {Lanes<double>(0), Lanes<double>(0), Lanes<double>(0)};
+    LaneSums mean[3];
     std::vector<uint8_t> reached = std::vector<uint8_t>(RaySummary::kCoverageCells, 0);
-    Lanes<float> lo[3] = {Lanes<float>(INFINITY), Lanes<float>(INFINITY), Lanes<float>(INFINITY)};
-    Lanes<float> hi[3] = {Lanes<float>(-INFINITY), Lanes<float>(-INFINITY), Lanes<float>(-INFINITY)};
-    Lanes<float> wmin = Lanes<float>(INFINITY), wmax = Lanes<float>(-INFINITY);
+    Extremes origin[3];  // x, y, z
+    Extremes wavelength;
     uint64_t unknown = 0;
 };
 
@@ -186,15 +182,14 @@ RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& 
         if (!a.shared_efficacy) s.luminous_from_spectrum = a.luminous_from_spectrum;
         else s.luminous_from_spectrum = std::isfinite(*a.shared_efficacy) ? *a.shared_efficacy * t.radiant : 0;
     }
-    s.min_origin = {combine(a.lo[0], min_of), combine(a.lo[1], min_of), combine(a.lo[2], min_of)};
-    s.max_origin = {combine(a.hi[0], max_of), combine(a.hi[1], max_of), combine(a.hi[2], max_of)};
+    s.min_origin = {a.origin[0].min(), a.origin[1].min(), a.origin[2].min()};
+    s.max_origin = {a.origin[0].max(), a.origin[1].max(), a.origin[2].max()};
     if (header.spectral == SpectralKind::per_ray_wavelength) s.unknown_wavelength_rays = a.unknown;
-    const float wmin = combine(a.wmin, min_of), wmax = combine(a.wmax, max_of);
+    const float wmin = a.wavelength.min(), wmax = a.wavelength.max();
     if (wmin <= wmax) s.min_wavelength = wmin, s.max_wavelength = wmax;
     if (header.spectral == SpectralKind::single_wavelength) s.min_wavelength = s.max_wavelength = header.single_wavelength;
 
-    const auto plus = [](double x, double y) { return x + y; };
-    const double mean[3] = {combine(a.mean[0], plus), combine(a.mean[1], plus), combine(a.mean[2], plus)};
+    const double mean[3] = {a.mean[0].total(), a.mean[1].total(), a.mean[2].total()};
     double norm = std::sqrt(mean[0] * mean[0] + mean[1] * mean[1] + mean[2] * mean[2]);
     Vec3f axis = norm > 0 ? Vec3f{float(mean[0] / norm), float(mean[1] / norm), float(mean[2] / norm)} : Vec3f{0, 0, 1};
     s.mean_direction = axis;
