@@ -2,9 +2,11 @@
 
 #include <cerrno>
 #include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <random>
 #include <sys/stat.h>
@@ -37,31 +39,70 @@ std::FILE* open_for_reading(const std::string& path, uint64_t& size) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-BinaryInput::BinaryInput(const std::string& path) : path_(path) { file_ = open_for_reading(path, size_); }
+BinaryInput::BinaryInput(const std::string& path) : path_(path), buffer_(size_t(64) << 10) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) fail(path, "is a folder, not a file");
+    fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd_ < 0) fail(path, "cannot open: " + system_error_text());
+    struct stat st {};
+    if (::fstat(fd_, &st) != 0) {
+        std::string error = system_error_text();
+        ::close(fd_);
+        fail(path, "cannot read its size: " + error);
+    }
+    size_ = static_cast<uint64_t>(st.st_size);
+    // Codecs read front to back: a larger read-ahead where the file is not cached yet.
+    ::posix_fadvise(fd_, 0, 0, POSIX_FADV_SEQUENTIAL);
+}
 
 BinaryInput::~BinaryInput() {
-    if (file_) std::fclose(file_);
+    if (fd_ >= 0) ::close(fd_);
 }
 
 void BinaryInput::seek(uint64_t offset) {
     if (offset > size_) fail_here("seek past the end of the file (" + std::to_string(size_) + " bytes)");
-    if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0) fail_here("cannot seek: " + system_error_text());
+    if (::lseek(fd_, static_cast<off_t>(offset), SEEK_SET) < 0) fail_here("cannot seek: " + system_error_text());
+    buffered_begin_ = buffered_end_ = 0;
     offset_ = offset;
 }
 
+size_t BinaryInput::fill(uint8_t* out, size_t n, const char* what) {
+    size_t done = 0;
+    while (done < n) {
+        if (buffered_begin_ < buffered_end_) {
+            size_t take = std::min(n - done, buffered_end_ - buffered_begin_);
+            std::memcpy(out + done, buffer_.data() + buffered_begin_, take);
+            buffered_begin_ += take;
+            done += take;
+            continue;
+        }
+        // What fills the buffer at least is read directly; less is read through the buffer.
+        const bool direct = n - done >= buffer_.size();
+        uint8_t* into = direct ? out + done : buffer_.data();
+        ssize_t got = ::read(fd_, into, direct ? n - done : buffer_.size());
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) fail_here((what ? std::string("read error in ") + what : std::string("read error")) + ": " + system_error_text());
+        if (got == 0) break;
+        if (direct) {
+            done += static_cast<size_t>(got);
+        } else {
+            buffered_begin_ = 0;
+            buffered_end_ = static_cast<size_t>(got);
+        }
+    }
+    return done;
+}
+
 void BinaryInput::read(void* out, size_t n, const char* what) {
-    size_t got = std::fread(out, 1, n, file_);
-    if (got != n) {
-        if (std::ferror(file_)) fail_here(std::string("read error in ") + what + ": " + system_error_text());
+    size_t got = fill(static_cast<uint8_t*>(out), n, what);
+    if (got != n)
         fail_here(std::string("file ends inside ") + what + " (" + std::to_string(n) + " bytes expected, " +
                   std::to_string(got) + " left): the file is truncated");
-    }
     offset_ += n;
 }
 
 size_t BinaryInput::read_some(void* out, size_t n) {
-    size_t got = std::fread(out, 1, n, file_);
-    if (got < n && std::ferror(file_)) fail_here("read error: " + system_error_text());
+    size_t got = fill(static_cast<uint8_t*>(out), n, nullptr);
     offset_ += got;
     return got;
 }
@@ -94,7 +135,7 @@ bool TextInput::next(std::string& line) {
 }
 
 // ---------------------------------------------------------------------------------------------
-AtomicOutput::AtomicOutput(const std::string& path) : path_(path) {
+AtomicOutput::AtomicOutput(const std::string& path) : path_(path), buffer_(size_t(64) << 10) {
     namespace fs = std::filesystem;
     fs::path target(path);
     fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
@@ -102,36 +143,61 @@ AtomicOutput::AtomicOutput(const std::string& path) : path_(path) {
     if (!fs::is_directory(dir, ec)) fail(path, "cannot write: folder " + dir.string() + " does not exist");
     // A hidden temporary name in the same folder, so the final rename is atomic.
     std::random_device rd;
-    for (int attempt = 0; attempt < 16 && !file_; ++attempt) {
+    for (int attempt = 0; attempt < 16 && fd_ < 0; ++attempt) {
         temp_path_ = (dir / ("." + target.filename().string() + ".tmp" + std::to_string(rd() % 1000000))).string();
-        file_ = std::fopen(temp_path_.c_str(), "wbx");
+        fd_ = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     }
-    if (!file_) fail(path, "cannot create a temporary file beside it: " + system_error_text());
-    std::setvbuf(file_, nullptr, _IOFBF, 1 << 20);
+    if (fd_ < 0) fail(path, "cannot create a temporary file beside it: " + system_error_text());
 }
 
 AtomicOutput::~AtomicOutput() {
-    if (file_) std::fclose(file_);
+    if (fd_ >= 0) ::close(fd_);
     if (!committed_) std::remove(temp_path_.c_str());
 }
 
+void AtomicOutput::write_fully(const uint8_t* data, size_t n, uint64_t at) {
+    while (n > 0) {
+        ssize_t done = ::pwrite(fd_, data, n, static_cast<off_t>(at));
+        if (done < 0 && errno == EINTR) continue;
+        if (done <= 0) fail(path_, "write failed: " + system_error_text());
+        data += done, n -= static_cast<size_t>(done), at += static_cast<uint64_t>(done);
+    }
+}
+
+void AtomicOutput::flush() {
+    write_fully(buffer_.data(), buffered_, offset_ - buffered_);
+    buffered_ = 0;
+}
+
 void AtomicOutput::write(const void* data, size_t n) {
-    if (n && std::fwrite(data, 1, n, file_) != n) fail(path_, "write failed: " + system_error_text());
+    const uint8_t* bytes = static_cast<const uint8_t*>(data);
+    if (buffered_ + n <= buffer_.size()) {
+        std::memcpy(buffer_.data() + buffered_, bytes, n);
+        buffered_ += n;
+    } else {
+        flush();
+        if (n < buffer_.size()) {
+            std::memcpy(buffer_.data(), bytes, n);
+            buffered_ = n;
+        } else {
+            write_fully(bytes, n, offset_);
+        }
+    }
     offset_ += n;
 }
 
 void AtomicOutput::patch(uint64_t offset, const void* data, size_t n) {
     if (offset + n > offset_) fail(path_, "internal error: patch beyond the written data");
-    if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0 || std::fwrite(data, 1, n, file_) != n ||
-        std::fseek(file_, 0, SEEK_END) != 0)
-        fail(path_, "write failed: " + system_error_text());
+    flush();
+    write_fully(static_cast<const uint8_t*>(data), n, offset);
 }
 
 void AtomicOutput::commit() {
     if (committed_) return;
-    if (std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0) fail(path_, "write failed: " + system_error_text());
-    int closed = std::fclose(file_);
-    file_ = nullptr;
+    flush();
+    if (::fsync(fd_) != 0) fail(path_, "write failed: " + system_error_text());
+    int closed = ::close(fd_);
+    fd_ = -1;
     if (closed != 0) fail(path_, "write failed: " + system_error_text());
     if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) fail(path_, "cannot move the finished file into place: " + system_error_text());
     committed_ = true;

@@ -14,6 +14,8 @@
 namespace rayset {
 
 // Sequential little-endian reads with the offset of every failure in the error message.
+// Small reads (header fields) come from a buffer; large ones (ray records) go from the file
+// straight into the caller's memory, so the bytes are copied once.
 class BinaryInput {
 public:
     explicit BinaryInput(const std::string& path);
@@ -42,10 +44,15 @@ public:
     [[noreturn]] void fail_here(const std::string& what) const { fail_at(offset_, what); }
 
 private:
+    // Up to n bytes into `out`, fewer only at the end of the file; `what` (if any) names a read error.
+    size_t fill(uint8_t* out, size_t n, const char* what);
+
     std::string path_;
-    std::FILE* file_ = nullptr;
+    int fd_ = -1;
     uint64_t size_ = 0;
     uint64_t offset_ = 0;
+    std::vector<uint8_t> buffer_;
+    size_t buffered_begin_ = 0, buffered_end_ = 0;  // the unread part of buffer_
 };
 
 // Line-oriented text input; strips "\r\n" and "\n". Line numbers are 1-based.
@@ -83,7 +90,9 @@ void write_atomically(const std::string& path, const std::function<bool(const st
 
 // Writes to a temporary file beside the target and renames it into place on commit(). If the
 // object is destroyed without commit() (an error was thrown), the temporary file is removed and
-// whatever was at the target path before is untouched.
+// whatever was at the target path before is untouched. commit() flushes the file to the disk
+// (fsync) before the rename, so that a crash cannot leave a half-written file under the name.
+// Small writes are gathered in a buffer; large ones go from the caller's memory to the file.
 class AtomicOutput {
 public:
     explicit AtomicOutput(const std::string& path);
@@ -101,10 +110,15 @@ public:
     void commit();
 
 private:
+    void flush();
+    void write_fully(const uint8_t* data, size_t n, uint64_t at);
+
     std::string path_;
     std::string temp_path_;
-    std::FILE* file_ = nullptr;
-    uint64_t offset_ = 0;
+    int fd_ = -1;
+    uint64_t offset_ = 0;      // bytes written, buffered ones included
+    std::vector<uint8_t> buffer_;
+    size_t buffered_ = 0;      // bytes waiting in buffer_, the last ones of offset_
     bool committed_ = false;
 };
 

@@ -140,14 +140,6 @@ Sums sum_fluxes(RayDecoder& decoder, size_t chunk_size) {
 
 }  // namespace
 
-RayReader::RayReader(std::unique_ptr<RayDecoder> decoder, std::string path, RayReadOptions options)
-    : decoder_(std::move(decoder)), path_(std::move(path)), options_(options) {
-    header_ = decoder_->header();
-    options_.chunk_size = std::max<size_t>(options_.chunk_size, 1);
-}
-
-RayReader::~RayReader() = default;
-
 std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options) {
     RayFormat format = options.format ? *options.format : detect_ray_format(path);
     const FormatEntry& e = entry(format);
@@ -189,108 +181,6 @@ std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptio
     reader->warnings_ = std::move(notes);
     reader->options_.flux_policy = policy;
     return reader;
-}
-
-double RayReader::progress() const {
-    uint64_t n = header_.ray_count;
-    return n ? std::min(1.0, double(totals_.rays) / double(n)) : 0.0;
-}
-
-bool RayReader::read(RayChunk& chunk) {
-    if (!decoder_->read(chunk, options_.chunk_size)) {
-        // End of the rays: checks that need all of them.
-        if (totals_.rays == 0) fail(path_, "the file holds no rays");
-        const bool no_light = (!header_.has_radiant || totals_.radiant <= 0) && (!header_.has_luminous || totals_.luminous <= 0);
-        if (no_light) fail(path_, "every ray has zero flux: the file carries no light");
-        if (totals_.zero_flux_rays)
-            warnings_.push_back(fmt::format("{}: {} of {} rays have zero flux (kept; they carry no light)", path_,
-                                            totals_.zero_flux_rays, totals_.rays));
-        if (options_.flux_policy == FluxPolicy::rays) {
-            auto check = [&](bool present, double stated, double sum, const char* what, const char* unit) {
-                if (present && std::isfinite(stated) && stated > 0 && !totals_agree(stated, sum))
-                    warnings_.push_back(fmt::format("{}: the rays' {} flux sums to {:.7g} {} but the header states {:.7g} {}: "
-                                                    "the rays are used (--trust header scales them to the header)",
-                                                    path_, what, sum, unit, stated, unit));
-            };
-            check(header_.has_radiant, header_.stated_radiant, totals_.radiant, "radiant", "W");
-            check(header_.has_luminous, header_.stated_luminous, totals_.luminous, "luminous", "lm");
-        }
-        return false;
-    }
-    validate(chunk);
-    return true;
-}
-
-namespace {
-// One comparison chain per value: false for NaN and infinities as well as out-of-range values.
-inline bool finite_float(float v) { return std::abs(v) <= std::numeric_limits<float>::max(); }
-inline bool flux_ok(float v) { return v >= 0 && v <= std::numeric_limits<float>::max(); }
-}  // namespace
-
-void RayReader::validate(RayChunk& chunk) {
-    const double tolerance = options_.direction_tolerance;
-    // |d| within [1 - tol, 1 + tol] as a test on |d|^2, which needs no square root per ray.
-    const float min_length2 = float((1 - tolerance) * (1 - tolerance)), max_length2 = float((1 + tolerance) * (1 + tolerance));
-    const bool radiant = header_.has_radiant, luminous = header_.has_luminous;
-    const bool per_ray_table = header_.spectral == SpectralKind::per_ray_table;
-    const int32_t tables = static_cast<int32_t>(header_.spectral_tables.size());
-    const float radiant_scale = float(radiant_scale_), luminous_scale = float(luminous_scale_);
-    double radiant_sum = 0, luminous_sum = 0;
-    for (size_t i = 0; i < chunk.rays.size(); ++i) {
-        Ray& r = chunk.rays[i];
-        const Vec3f& d = r.direction;
-        const float length2 = d.x * d.x + d.y * d.y + d.z * d.z;
-        bool ok = finite_float(r.origin.x) && finite_float(r.origin.y) && finite_float(r.origin.z) &&
-                  length2 >= min_length2 && length2 <= max_length2 && (!radiant || flux_ok(r.radiant)) &&
-                  (!luminous || flux_ok(r.luminous)) && (std::isnan(r.wavelength) || flux_ok(r.wavelength)) &&
-                  (!per_ray_table || (r.spectrum >= 0 && r.spectrum < tables));
-        if (!ok) check_ray(chunk, i);  // throws, or normalises an accepted direction
-        bool zero = true;
-        if (radiant) {
-            if (radiant_scale != 1) r.radiant = float(double(r.radiant) * radiant_scale_);
-            radiant_sum += r.radiant;
-            zero = r.radiant == 0;
-        }
-        if (luminous) {
-            if (luminous_scale != 1) r.luminous = float(double(r.luminous) * luminous_scale_);
-            luminous_sum += r.luminous;
-            zero = zero && r.luminous == 0;
-        }
-        totals_.zero_flux_rays += zero;
-    }
-    totals_.radiant += radiant_sum;
-    totals_.luminous += luminous_sum;
-    totals_.rays += chunk.rays.size();
-}
-
-// The slow path for a ray the fast test did not pass: says exactly what is wrong, or (for a
-// direction the user allowed with --normalise) fixes it.
-void RayReader::check_ray(RayChunk& chunk, size_t i) {
-    Ray& r = chunk.rays[i];
-    auto bad = [&](const std::string& what) {
-        uint64_t index = chunk.first_index + i;
-        fail(path_, decoder_->locate(index), fmt::format("ray {}: {}", index + 1, what));
-    };
-    if (!finite_float(r.origin.x) || !finite_float(r.origin.y) || !finite_float(r.origin.z))
-        bad(fmt::format("origin ({}, {}, {}) is not a finite number", r.origin.x, r.origin.y, r.origin.z));
-    const Vec3f& d = r.direction;
-    if (!finite_float(d.x) || !finite_float(d.y) || !finite_float(d.z))
-        bad(fmt::format("direction ({}, {}, {}) is not a finite number", d.x, d.y, d.z));
-    if (header_.has_radiant && !flux_ok(r.radiant)) bad(fmt::format("radiant flux {} is not a non-negative number", r.radiant));
-    if (header_.has_luminous && !flux_ok(r.luminous)) bad(fmt::format("luminous flux {} is not a non-negative number", r.luminous));
-    // NaN means "unknown wavelength" in real files; anything else must be a wavelength.
-    if (!std::isnan(r.wavelength) && !(r.wavelength > 0 && finite_float(r.wavelength)))
-        bad(fmt::format("wavelength {} nm is not a positive number (NaN would mean unknown)", r.wavelength));
-    const size_t tables = header_.spectral_tables.size();
-    if (header_.spectral == SpectralKind::per_ray_table && (r.spectrum < 0 || size_t(r.spectrum) >= tables))
-        bad(fmt::format("spectrum index {} is outside the file's {} spectral tables", r.spectrum + 1, tables));
-    const double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
-    if (std::abs(length - 1) > options_.direction_tolerance) {
-        if (!options_.normalise_directions || length == 0)
-            bad(fmt::format("direction ({}, {}, {}) has length {:.6g}, not 1{}", d.x, d.y, d.z, length,
-                            length == 0 ? "" : " (--normalise accepts and renormalises such directions)"));
-        r.direction = {float(d.x / length), float(d.y / length), float(d.z / length)};
-    }
 }
 
 std::unique_ptr<RayEncoder> create_rays(const std::string& path, RayFormat format, const RayHeader& header) {

@@ -60,7 +60,7 @@ struct RayReadOptions {
     float direction_tolerance = 1e-3f;
     // Accept non-unit directions and normalise them instead of failing.
     bool normalise_directions = false;
-    size_t chunk_size = 1 << 16;
+    size_t chunk_size = 1 << 12;
     std::optional<RayFormat> format;  // skip detection
 };
 
@@ -71,7 +71,9 @@ struct RayTotals {
     uint64_t zero_flux_rays = 0;
 };
 
-// The validating, scaling reader over a decoder.
+// The validating, scaling reader over a decoder. The decoder and the validation run on a
+// thread of the reader's own, a few chunks ahead of read(); call the reader from one thread at
+// a time. Memory: about five chunks (RayReadOptions::chunk_size rays each).
 class RayReader {
 public:
     RayReader(std::unique_ptr<RayDecoder> decoder, std::string path, RayReadOptions options);
@@ -95,8 +97,10 @@ public:
 
 private:
     friend std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options);
-    void validate(RayChunk& chunk);
-    void check_ray(RayChunk& chunk, size_t index);
+    class ReadAhead;
+    // Checks and scales a chunk (on the read-ahead thread: it changes nothing but the chunk).
+    RayTotals validate(RayChunk& chunk) const;
+    void check_ray(RayChunk& chunk, size_t index) const;
 
     std::unique_ptr<RayDecoder> decoder_;
     std::string path_;
@@ -105,6 +109,7 @@ private:
     double radiant_scale_ = 1, luminous_scale_ = 1;
     RayTotals totals_;
     std::vector<std::string> warnings_;
+    std::unique_ptr<ReadAhead> ahead_;  // started by the first read()
 };
 
 std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options = {});

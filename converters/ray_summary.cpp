@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <optional>
 #include <vector>
 
 namespace rayset {
@@ -13,12 +17,10 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // The azimuth is partitioned by the "diamond angle", a monotone stand-in for it in [0, 4) that
-// costs one division instead of an atan2 per ray; each cell's solid angle is then computed from
-// the true azimuths of its sector's edges, so coverage stays an exact share of the sphere.
-double diamond_angle(double x, double y) {
-    if (y >= 0) return x >= 0 ? y / (x + y) : 1 - x / (y - x);
-    return x < 0 ? 2 - y / (-x - y) : 3 + x / (x - y);
-}
+// costs one division instead of an atan2 per ray: in quadrant q (counted anticlockwise from
+// +x, +y) it is q + |y| / (|x| + |y|) for even q and q + |x| / (|x| + |y|) for odd q. Each
+// cell's solid angle is computed from the true azimuths of its sector's edges, so coverage
+// stays an exact share of the sphere.
 
 // Azimuth (radians, 0..2pi) of a diamond angle.
 double azimuth_of(double a) {
@@ -27,11 +29,15 @@ double azimuth_of(double a) {
     return std::atan2(t, 1 - t) + quadrant * kPi / 2;
 }
 
-int coverage_cell(const Vec3f& d) {
-    int band = std::clamp(static_cast<int>((d.z + 1) * 0.5 * RaySummary::kZBands), 0, RaySummary::kZBands - 1);
-    int sector = 0;
-    if (d.x != 0 || d.y != 0)
-        sector = std::min(RaySummary::kPhiBands - 1, static_cast<int>(diamond_angle(d.x, d.y) * (RaySummary::kPhiBands / 4)));
+// Branch-free: directions fall in the four quadrants at random, so branches on them would
+// mostly be mispredicted. The quadrant's boundaries take -0 as 0; (0, 0) is sector 0.
+inline int coverage_cell(float x, float y, float z) {
+    const int band = std::clamp(static_cast<int>((z + 1) * 0.5 * RaySummary::kZBands), 0, RaySummary::kZBands - 1);
+    const double ax = std::abs(double(x)), ay = std::abs(double(y)), sum = ax + ay;
+    const int quadrant = 2 * (y < 0) + ((y >= 0) != (x >= 0));  // 0 1 2 3 anticlockwise from +x +y
+    // The smallest normal double is below any sum of two floats but 0, where it gives 0 / min.
+    const double part = ((quadrant & 1) ? ax : ay) / std::max(sum, std::numeric_limits<double>::min());
+    const int sector = std::min(RaySummary::kPhiBands - 1, static_cast<int>((quadrant + part) * (RaySummary::kPhiBands / 4)));
     return band * RaySummary::kPhiBands + sector;
 }
 
@@ -50,38 +56,119 @@ Vec3f cell_centre(int cell) {
     return {float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)};
 }
 
+// Fields of up to kBlock rays regrouped one array per field: loops over 40-byte Ray records
+// are not vectorised, loops over contiguous floats are. 512 rays keep a block (18 KiB) in L1.
+constexpr size_t kBlock = 512;
+struct Block {
+    size_t n = 0;
+    alignas(64) float ox[kBlock], oy[kBlock], oz[kBlock], dx[kBlock], dy[kBlock], dz[kBlock], weight[kBlock],
+        wavelength[kBlock];
+    alignas(64) int32_t cell[kBlock];
+
+    void fill(const Ray* rays, size_t count, bool radiant) {
+        n = count;
+        for (size_t i = 0; i < n; ++i) {
+            const Ray& r = rays[i];
+            ox[i] = r.origin.x, oy[i] = r.origin.y, oz[i] = r.origin.z;
+            dx[i] = r.direction.x, dy[i] = r.direction.y, dz[i] = r.direction.z;
+            weight[i] = radiant ? r.radiant : r.luminous;
+            wavelength[i] = r.wavelength;
+        }
+    }
+};
+
+// Minimum and maximum of a field, kept position by position within the blocks and combined at
+// the end: updating them is a loop of independent elements, which the compiler vectorises (a
+// single running minimum it will not, as reordering could change the result). The comparisons
+// are written so that a NaN value leaves them as they are.
+struct Extremes {
+    alignas(64) float lo[kBlock], hi[kBlock];
+
+    Extremes() { std::fill(lo, lo + kBlock, INFINITY), std::fill(hi, hi + kBlock, -INFINITY); }
+    void add(const float* values, size_t n) {
+        for (size_t i = 0; i < n; ++i) {
+            lo[i] = values[i] < lo[i] ? values[i] : lo[i];
+            hi[i] = values[i] > hi[i] ? values[i] : hi[i];
+        }
+    }
+    float min() const { return *std::min_element(lo, lo + kBlock); }
+    float max() const { return *std::max_element(hi, hi + kBlock); }
+};
+
+// Sums kept in kLanes lanes, for the same reason.
+constexpr size_t kLanes = 8;
+struct LaneSums {
+    double v[kLanes] = {};
+    double total() const { return std::accumulate(v, v + kLanes, 0.0); }
+};
+
+// The running state of one summary pass.
+struct Accumulator {
+    explicit Accumulator(const RayHeader& header) : header(header), weights(header) {
+        spectral_luminous = !header.has_luminous && weights.luminous_known();
+        shared_efficacy = weights.shared_efficacy();
+    }
+
+    void add(const RayChunk& chunk) {
+        const size_t n = chunk.rays.size();
+        for (size_t start = 0; start < n; start += kBlock) {
+            const Ray* rays = chunk.rays.data() + start;
+            const size_t count = std::min(kBlock, n - start);
+            block->fill(rays, count, header.has_radiant);
+            add_block(*block);
+            if (spectral_luminous && !shared_efficacy)
+                for (size_t i = 0; i < count; ++i) {
+                    const double lm = weights.luminous(rays[i]);
+                    if (std::isfinite(lm)) luminous_from_spectrum += lm;
+                }
+        }
+    }
+
+    void add_block(Block& b) {
+        const size_t n = b.n;
+        origin[0].add(b.ox, n), origin[1].add(b.oy, n), origin[2].add(b.oz, n);
+        // NaN wavelengths are "unknown": counted (where the file promises wavelengths) and skipped.
+        for (size_t i = 0; i < n; ++i) unknown += std::isnan(b.wavelength[i]);
+        wavelength.add(b.wavelength, n);
+        // Flux-weighted direction sums, in double.
+        const float* direction[3] = {b.dx, b.dy, b.dz};
+        for (int k = 0; k < 3; ++k) {
+            const float* d = direction[k];
+            LaneSums sums = mean[k];  // a local: `d` might alias it as far as the compiler knows
+            size_t i = 0;
+            for (; i + kLanes <= n; i += kLanes)
+                for (size_t l = 0; l < kLanes; ++l) sums.v[l] += double(b.weight[i + l]) * d[i + l];
+            for (; i < n; ++i) sums.v[0] += double(b.weight[i]) * d[i];
+            mean[k] = sums;
+        }
+        // The cells first (a loop the compiler vectorises), then the scattered stores.
+        for (size_t i = 0; i < n; ++i) b.cell[i] = coverage_cell(b.dx[i], b.dy[i], b.dz[i]);
+        uint8_t* const seen = reached.data();  // a local: stores of bytes would force reloads of a member
+        for (size_t i = 0; i < n; ++i) seen[b.cell[i]] = 1;
+    }
+
+    const RayHeader& header;
+    PhotometricWeights weights;
+    bool spectral_luminous = false;
+    std::optional<double> shared_efficacy;
+    double luminous_from_spectrum = 0;  // when the efficacy differs from ray to ray
+    std::unique_ptr<Block> block = std::make_unique<Block>();
+    LaneSums mean[3];
+    std::vector<uint8_t> reached = std::vector<uint8_t>(RaySummary::kCoverageCells, 0);
+    Extremes origin[3];  // x, y, z
+    Extremes wavelength;
+    uint64_t unknown = 0;
+};
+
 }  // namespace
 
 RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& progress) {
     RaySummary s;
     const RayHeader& header = reader.header();
-    PhotometricWeights weights(header);
-    const bool spectral_luminous = !header.has_luminous && weights.luminous_known();
-    double luminous_from_spectrum = 0;
-    double mean[3] = {0, 0, 0};
-    std::vector<uint8_t> reached(RaySummary::kCoverageCells, 0);
-    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    float wmin = INFINITY, wmax = -INFINITY;
-
+    Accumulator a(header);
     RayChunk chunk;
     while (reader.read(chunk)) {
-        for (const Ray& r : chunk.rays) {
-            const float o[3] = {r.origin.x, r.origin.y, r.origin.z};
-            for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], o[k]), hi[k] = std::max(hi[k], o[k]);
-            if (std::isnan(r.wavelength)) {
-                if (header.spectral == SpectralKind::per_ray_wavelength) ++s.unknown_wavelength_rays;
-            } else {
-                wmin = std::min(wmin, r.wavelength);
-                wmax = std::max(wmax, r.wavelength);
-            }
-            double w = header.has_radiant ? r.radiant : r.luminous;
-            mean[0] += w * r.direction.x, mean[1] += w * r.direction.y, mean[2] += w * r.direction.z;
-            reached[coverage_cell(r.direction)] = 1;
-            if (spectral_luminous) {
-                double lm = weights.luminous(r);
-                if (std::isfinite(lm)) luminous_from_spectrum += lm;
-            }
-        }
+        a.add(chunk);
         if (progress) progress(reader.progress());
     }
     const RayTotals& t = reader.totals();
@@ -89,19 +176,27 @@ RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& 
     s.radiant = t.radiant;
     s.luminous = t.luminous;
     s.zero_flux_rays = t.zero_flux_rays;
-    if (spectral_luminous) s.luminous_from_spectrum = luminous_from_spectrum;
-    s.min_origin = {lo[0], lo[1], lo[2]};
-    s.max_origin = {hi[0], hi[1], hi[2]};
+    if (a.spectral_luminous) {
+        // One efficacy for every ray: the sum of radiant x efficacy is the efficacy times the
+        // radiant total, which the reader has summed already.
+        if (!a.shared_efficacy) s.luminous_from_spectrum = a.luminous_from_spectrum;
+        else s.luminous_from_spectrum = std::isfinite(*a.shared_efficacy) ? *a.shared_efficacy * t.radiant : 0;
+    }
+    s.min_origin = {a.origin[0].min(), a.origin[1].min(), a.origin[2].min()};
+    s.max_origin = {a.origin[0].max(), a.origin[1].max(), a.origin[2].max()};
+    if (header.spectral == SpectralKind::per_ray_wavelength) s.unknown_wavelength_rays = a.unknown;
+    const float wmin = a.wavelength.min(), wmax = a.wavelength.max();
     if (wmin <= wmax) s.min_wavelength = wmin, s.max_wavelength = wmax;
     if (header.spectral == SpectralKind::single_wavelength) s.min_wavelength = s.max_wavelength = header.single_wavelength;
 
+    const double mean[3] = {a.mean[0].total(), a.mean[1].total(), a.mean[2].total()};
     double norm = std::sqrt(mean[0] * mean[0] + mean[1] * mean[1] + mean[2] * mean[2]);
     Vec3f axis = norm > 0 ? Vec3f{float(mean[0] / norm), float(mean[1] / norm), float(mean[2] / norm)} : Vec3f{0, 0, 1};
     s.mean_direction = axis;
     double reached_solid_angle = 0;
     double min_cos = 1;
     for (int c = 0; c < RaySummary::kCoverageCells; ++c) {
-        if (!reached[c]) continue;
+        if (!a.reached[c]) continue;
         reached_solid_angle += cell_solid_angle(c);
         Vec3f v = cell_centre(c);
         min_cos = std::min(min_cos, double(v.x) * axis.x + double(v.y) * axis.y + double(v.z) * axis.z);

@@ -80,6 +80,12 @@ double PhotometricWeights::efficacy(const Ray& ray) const {
     return kNaN;
 }
 
+std::optional<double> PhotometricWeights::shared_efficacy() const {
+    const SpectralKind kind = header_->spectral;
+    if (kind != SpectralKind::single_wavelength && kind != SpectralKind::shared_table) return std::nullopt;
+    return efficacy(Ray{});
+}
+
 double PhotometricWeights::luminous(const Ray& ray) const {
     if (header_->has_luminous) return ray.luminous;
     if (header_->has_radiant) return ray.radiant * efficacy(ray);

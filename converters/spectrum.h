@@ -4,6 +4,7 @@
 
 #include "ray.h"
 
+#include <optional>
 #include <vector>
 
 namespace rayset {
@@ -34,6 +35,9 @@ public:
     double radiant(const Ray& ray) const;
     // Efficacy (lm/W) the ray's spectrum has; NaN when unknown.
     double efficacy(const Ray& ray) const;
+    // The efficacy every ray has when the header fixes it (one wavelength or one table; NaN if
+    // unknown), or nothing when it differs from ray to ray or there is no spectrum.
+    std::optional<double> shared_efficacy() const;
 
 private:
     const RayHeader* header_;

@@ -1,0 +1,262 @@
+// RayReader: validation, flux scaling and totals over a decoder, with decoding and validating
+// done ahead on a second thread (open_rays() and detection are in ray_stream.cpp).
+#include "converters/ray_stream.h"
+
+#include <algorithm>
+#include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <fmt/format.h>
+#include <limits>
+#include <mutex>
+#include <thread>
+
+namespace rayset {
+
+// ---------------------------------------------------------------------------------------------
+// Decoding and validating run on a thread of their own, a few chunks ahead of read(), so that
+// they overlap with whatever the caller does with the rays (summing, encoding, building). The
+// chunks circulate: read() swaps the caller's chunk for a full one, and the emptied one is
+// refilled, so memory stays at kSlots + 1 chunks. An error is handed over in order, after
+// the chunks before it, and read() throws it as it would have without the thread.
+class RayReader::ReadAhead {
+public:
+    explicit ReadAhead(const RayReader& reader) : reader_(reader), thread_([this] { run(); }) {}
+
+    ~ReadAhead() {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            stopping_ = true;
+        }
+        free_.notify_one();
+        thread_.join();
+    }
+
+    // The next chunk into `chunk` and its totals; false at the end. Rethrows a reading error.
+    bool take(RayChunk& chunk, RayTotals& totals) {
+        Slot* slot;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            filled_.wait(lock, [this] { return taken_ < produced_; });
+            slot = &slots_[taken_ % kSlots];
+        }
+        if (slot->error) std::rethrow_exception(slot->error);
+        if (slot->end) return false;  // stays the last slot: later calls end again
+        std::swap(chunk, slot->chunk);
+        totals = slot->totals;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            ++taken_;
+        }
+        free_.notify_one();
+        return true;
+    }
+
+private:
+    // Enough to ride out uneven chunk times; each is options.chunk_size rays.
+    static constexpr uint64_t kSlots = 4;
+    struct Slot {
+        RayChunk chunk;
+        RayTotals totals;
+        bool end = false;
+        std::exception_ptr error;
+    };
+
+    void run() {
+        for (;;) {
+            {
+                std::unique_lock<std::mutex> lock(mutex_);
+                free_.wait(lock, [this] { return stopping_ || produced_ - taken_ < kSlots; });
+                if (stopping_) return;
+            }
+            // The slot is this thread's until produced_ counts it.
+            Slot& slot = slots_[produced_ % kSlots];
+            try {
+                slot.end = !reader_.decoder_->read(slot.chunk, reader_.options_.chunk_size);
+                if (!slot.end) slot.totals = reader_.validate(slot.chunk);
+            } catch (...) {
+                slot.error = std::current_exception();
+            }
+            const bool last = slot.end || slot.error;
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                ++produced_;
+            }
+            filled_.notify_one();
+            if (last) return;
+        }
+    }
+
+    const RayReader& reader_;
+    Slot slots_[kSlots];
+    std::mutex mutex_;
+    std::condition_variable filled_, free_;
+    uint64_t produced_ = 0, taken_ = 0;  // slots filled and taken so far
+    bool stopping_ = false;
+    std::thread thread_;  // last: it starts once everything above is ready
+};
+
+RayReader::RayReader(std::unique_ptr<RayDecoder> decoder, std::string path, RayReadOptions options)
+    : decoder_(std::move(decoder)), path_(std::move(path)), options_(options) {
+    header_ = decoder_->header();
+    options_.chunk_size = std::max<size_t>(options_.chunk_size, 1);
+}
+
+RayReader::~RayReader() = default;  // stops the read-ahead thread first (ahead_ is the last member)
+
+double RayReader::progress() const {
+    uint64_t n = header_.ray_count;
+    return n ? std::min(1.0, double(totals_.rays) / double(n)) : 0.0;
+}
+
+bool RayReader::read(RayChunk& chunk) {
+    if (!ahead_) ahead_ = std::make_unique<ReadAhead>(*this);
+    RayTotals chunk_totals;
+    if (ahead_->take(chunk, chunk_totals)) {
+        totals_.radiant += chunk_totals.radiant;
+        totals_.luminous += chunk_totals.luminous;
+        totals_.rays += chunk_totals.rays;
+        totals_.zero_flux_rays += chunk_totals.zero_flux_rays;
+        return true;
+    }
+    // End of the rays: checks that need all of them.
+    if (totals_.rays == 0) fail(path_, "the file holds no rays");
+    const bool no_light = (!header_.has_radiant || totals_.radiant <= 0) && (!header_.has_luminous || totals_.luminous <= 0);
+    if (no_light) fail(path_, "every ray has zero flux: the file carries no light");
+    if (totals_.zero_flux_rays)
+        warnings_.push_back(fmt::format("{}: {} of {} rays have zero flux (kept; they carry no light)", path_,
+                                        totals_.zero_flux_rays, totals_.rays));
+    if (options_.flux_policy == FluxPolicy::rays) {
+        auto check = [&](bool present, double stated, double sum, const char* what, const char* unit) {
+            if (present && std::isfinite(stated) && stated > 0 && !totals_agree(stated, sum))
+                warnings_.push_back(fmt::format("{}: the rays' {} flux sums to {:.7g} {} but the header states {:.7g} {}: "
+                                                "the rays are used (--trust header scales them to the header)",
+                                                path_, what, sum, unit, stated, unit));
+        };
+        check(header_.has_radiant, header_.stated_radiant, totals_.radiant, "radiant", "W");
+        check(header_.has_luminous, header_.stated_luminous, totals_.luminous, "luminous", "lm");
+    }
+    return false;
+}
+
+namespace {
+
+// One comparison chain per value: false for NaN and infinities as well as out-of-range values.
+inline bool finite_float(float v) { return std::abs(v) <= std::numeric_limits<float>::max(); }
+inline bool flux_ok(float v) { return (v >= 0) & (v <= std::numeric_limits<float>::max()); }
+
+// The fast test every ray must pass; check_ray() says what is wrong with one that does not.
+// Bitwise & rather than &&: no branch per value, and every ray of a valid file evaluates all.
+struct RayTest {
+    float min_length2, max_length2;  // |d| within [1 - tol, 1 + tol] as a test on |d|^2: no root
+    bool radiant, luminous, per_ray_table;
+    int32_t tables;
+
+    bool passes(float ox, float oy, float oz, float dx, float dy, float dz, float radiant_flux, float luminous_flux,
+                float wavelength, int32_t spectrum) const {
+        const float length2 = dx * dx + dy * dy + dz * dz;
+        return finite_float(ox) & finite_float(oy) & finite_float(oz) & (length2 >= min_length2) &
+               (length2 <= max_length2) & ((!radiant) | flux_ok(radiant_flux)) & ((!luminous) | flux_ok(luminous_flux)) &
+               (std::isnan(wavelength) | flux_ok(wavelength)) & ((!per_ray_table) | ((spectrum >= 0) & (spectrum < tables)));
+    }
+    bool passes(const Ray& r) const {
+        return passes(r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z, r.radiant,
+                      r.luminous, r.wavelength, r.spectrum);
+    }
+};
+
+// Whether every ray passes. The fields are regrouped one array each, a block at a time, so
+// that the test runs over arrays, which the compiler vectorises (over 40-byte Ray records it
+// does not); a block of 256 rays (10 KiB) stays in L1.
+bool all_pass(const Ray* rays, size_t n, const RayTest& test) {
+    constexpr size_t kBlock = 256;
+    float ox[kBlock], oy[kBlock], oz[kBlock], dx[kBlock], dy[kBlock], dz[kBlock], radiant[kBlock], luminous[kBlock],
+        wavelength[kBlock];
+    int32_t spectrum[kBlock];
+    int pass = 1;
+    for (size_t start = 0; start < n; start += kBlock) {
+        const size_t count = std::min(kBlock, n - start);
+        for (size_t i = 0; i < count; ++i) {
+            const Ray& r = rays[start + i];
+            ox[i] = r.origin.x, oy[i] = r.origin.y, oz[i] = r.origin.z;
+            dx[i] = r.direction.x, dy[i] = r.direction.y, dz[i] = r.direction.z;
+            radiant[i] = r.radiant, luminous[i] = r.luminous, wavelength[i] = r.wavelength, spectrum[i] = r.spectrum;
+        }
+        for (size_t i = 0; i < count; ++i)
+            pass &= test.passes(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], radiant[i], luminous[i], wavelength[i], spectrum[i]);
+    }
+    return pass;
+}
+
+}  // namespace
+
+RayTotals RayReader::validate(RayChunk& chunk) const {
+    RayTotals totals;
+    const double tolerance = options_.direction_tolerance;
+    const RayTest test{float((1 - tolerance) * (1 - tolerance)), float((1 + tolerance) * (1 + tolerance)),
+                       header_.has_radiant, header_.has_luminous, header_.spectral == SpectralKind::per_ray_table,
+                       static_cast<int32_t>(header_.spectral_tables.size())};
+    Ray* rays = chunk.rays.data();
+    const size_t n = chunk.rays.size();
+    // Nearly every chunk is valid: one pass finds out, without stopping at the first bad ray;
+    // only a chunk that fails is walked again to report (or, if allowed, fix) its first bad ray.
+    if (!all_pass(rays, n, test))
+        for (size_t i = 0; i < n; ++i)
+            if (!test.passes(rays[i])) check_ray(chunk, i);  // throws, or normalises an accepted direction
+
+    const bool radiant = header_.has_radiant, luminous = header_.has_luminous;
+    // A scale within float rounding of 1 leaves the rays as they are.
+    if (radiant && float(radiant_scale_) != 1)
+        for (size_t i = 0; i < n; ++i) rays[i].radiant = float(double(rays[i].radiant) * radiant_scale_);
+    if (luminous && float(luminous_scale_) != 1)
+        for (size_t i = 0; i < n; ++i) rays[i].luminous = float(double(rays[i].luminous) * luminous_scale_);
+    // One pass for both sums and the zero-flux count. Even and odd rays go to two sums each:
+    // half as long a chain of dependent additions. An absent column is summed (NaN) but unused.
+    double radiant_sum[2] = {0, 0}, luminous_sum[2] = {0, 0};
+    uint64_t zero_flux = 0;
+    auto add = [&](const Ray& r, int parity) {
+        radiant_sum[parity] += r.radiant;
+        luminous_sum[parity] += r.luminous;
+        zero_flux += ((!radiant) | (r.radiant == 0)) & ((!luminous) | (r.luminous == 0));
+    };
+    size_t i = 0;
+    for (; i + 1 < n; i += 2) add(rays[i], 0), add(rays[i + 1], 1);
+    if (i < n) add(rays[i], 0);
+    if (radiant) totals.radiant = radiant_sum[0] + radiant_sum[1];
+    if (luminous) totals.luminous = luminous_sum[0] + luminous_sum[1];
+    totals.zero_flux_rays = zero_flux;
+    totals.rays = n;
+    return totals;
+}
+
+// The slow path for a ray the fast test did not pass: says exactly what is wrong, or (for a
+// direction the user allowed with --normalise) fixes it.
+void RayReader::check_ray(RayChunk& chunk, size_t i) const {
+    Ray& r = chunk.rays[i];
+    auto bad = [&](const std::string& what) {
+        uint64_t index = chunk.first_index + i;
+        fail(path_, decoder_->locate(index), fmt::format("ray {}: {}", index + 1, what));
+    };
+    if (!finite_float(r.origin.x) || !finite_float(r.origin.y) || !finite_float(r.origin.z))
+        bad(fmt::format("origin ({}, {}, {}) is not a finite number", r.origin.x, r.origin.y, r.origin.z));
+    const Vec3f& d = r.direction;
+    if (!finite_float(d.x) || !finite_float(d.y) || !finite_float(d.z))
+        bad(fmt::format("direction ({}, {}, {}) is not a finite number", d.x, d.y, d.z));
+    if (header_.has_radiant && !flux_ok(r.radiant)) bad(fmt::format("radiant flux {} is not a non-negative number", r.radiant));
+    if (header_.has_luminous && !flux_ok(r.luminous)) bad(fmt::format("luminous flux {} is not a non-negative number", r.luminous));
+    // NaN means "unknown wavelength" in real files; anything else must be a wavelength.
+    if (!std::isnan(r.wavelength) && !(r.wavelength > 0 && finite_float(r.wavelength)))
+        bad(fmt::format("wavelength {} nm is not a positive number (NaN would mean unknown)", r.wavelength));
+    const size_t tables = header_.spectral_tables.size();
+    if (header_.spectral == SpectralKind::per_ray_table && (r.spectrum < 0 || size_t(r.spectrum) >= tables))
+        bad(fmt::format("spectrum index {} is outside the file's {} spectral tables", r.spectrum + 1, tables));
+    const double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
+    if (std::abs(length - 1) > options_.direction_tolerance) {
+        if (!options_.normalise_directions || length == 0)
+            bad(fmt::format("direction ({}, {}, {}) has length {:.6g}, not 1{}", d.x, d.y, d.z, length,
+                            length == 0 ? "" : " (--normalise accepts and renormalises such directions)"));
+        r.direction = {float(d.x / length), float(d.y / length), float(d.z / length)};
+    }
+}
+
+}  // namespace rayset
