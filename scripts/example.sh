@@ -3,7 +3,7 @@
 # of 1 + 6 + 12 + 20), inspect it, convert it to LightTools, compute its far-field photometry
 # as IES and EULUMDAT, build its light model, and render the paper's box lit by it
 # (examples/led_box.pov): Figures 4-7 with the model, Figure 1 with the naive ray set in the
-# same time. Outputs go to out/example/. About 5 minutes on 2 cores.
+# same time. Outputs go to out/example/. Rendering takes 3 minutes on 2 cores.
 # Usage: scripts/example.sh        (installs missing Debian packages first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
