@@ -134,7 +134,7 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
     app.add_flag("--no-png", o.no_png, "Write no PNG preview");
     app.add_option("--width", width, "Image width in pixels (default 320); or +Wn")->check(CLI::Range(1, 65536));
     app.add_option("--height", height, "Image height in pixels (default 240); or +Hn")->check(CLI::Range(1, 65536));
-    app.add_option("--passes", passes, "Passes of one sample per pixel (default: the scene's `passes`, else 16, "
+    app.add_option("--passes", passes, "Progressive passes (default: the scene's `passes`, else 16, "
                                        "or unlimited with a time limit)")->check(CLI::PositiveNumber);
     app.add_option("--time", time_limit, "Time budget in seconds, checked between passes (default: the scene's "
                                          "`time_limit`)")->check(CLI::NonNegativeNumber);
@@ -148,7 +148,8 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
                                      "rays, 1 and 2 threads; writes nothing");
     app.add_flag("-q,--quiet", o.quiet, "No progress bar or summary");
     app.add_option("--photons", o.photons_per_pass, "Bidirectional: photons per pass (default: the pass's camera "
-                                                    "samples, at least 65536)")->check(CLI::PositiveNumber);
+                                                    "samples, at least 65536; a pass takes photons / (pixels + "
+                                                    "receiver cells) samples per pixel and cell, at least 1)")->check(CLI::PositiveNumber);
     app.add_option("--photon-radius", o.photon_radius, "Bidirectional: gather radius of the first pass in scene "
                                                        "units (default: 1/100 of the visible points' extent)")
         ->check(CLI::PositiveNumber);

@@ -74,6 +74,12 @@ double default_radius(const std::vector<std::vector<VisiblePoint>>& points, cons
     return diagonal > 0 ? diagonal / 100 : 1;
 }
 
+// Camera samples per pixel and receiver cell in one pass: as many as make the pass's camera
+// paths about as many as its photons, at least one.
+int camera_samples_per_pass(uint64_t photons_per_pass, size_t camera_points) {
+    return int(std::max<uint64_t>(1, photons_per_pass / std::max<uint64_t>(1, camera_points)));
+}
+
 // The radius after `passes_done` passes, the last of them gathered with `radius`.
 double shrunk_radius(double radius, int passes_done) { return radius * std::sqrt((passes_done + kAlpha) / (passes_done + 1)); }
 
@@ -96,6 +102,11 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
     for (const ReceiverMap& map : result.receivers) receiver_first.push_back(cells), cells += size_t(map.receiver.nx) * map.receiver.ny;
     const uint64_t photons_per_pass =
         settings.photons_per_pass > 0 ? uint64_t(settings.photons_per_pass) : std::max<uint64_t>(kMinimumPhotons, pixels + cells);
+    // Camera work balanced against photon work: a small image or a receiver-only render takes
+    // several samples per pixel and cell in each pass rather than leave the photon pass (and its
+    // fixed cost) to dominate; the primary light and antialiasing converge that much faster.
+    const int samples = camera_samples_per_pass(photons_per_pass, pixels + cells);
+    const double sample_weight = 1.0 / samples;
     // A continued render goes on from the radius its last pass used.
     double radius = result.passes > 0 ? shrunk_radius(result.photon_radius, result.passes) : settings.photon_radius;
 
@@ -119,12 +130,16 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
                         for (int x = x0; x < std::min(w, x0 + tile); ++x) {
                             const uint32_t p = uint32_t(y) * w + x;
                             Pcg32 rng(seed, p);
-                            const double px = x + rng.uniform_float(), py = y + rng.uniform_float();
-                            const CameraRay ray = camera.ray(px, py);
-                            const CameraSample s = integrator.camera_path(ray.origin, ray.direction, p, rng, counted, visible[t]);
-                            image.direct[p] = s.direct_visibility;
-                            image.primary[p] = s.primary;
-                            if (ordinary) image.ordinary[p] = path.radiance(ray.origin, ray.direction, rng, counted);
+                            for (int k = 0; k < samples; ++k) {
+                                const double px = x + rng.uniform_float(), py = y + rng.uniform_float();
+                                const CameraRay ray = camera.ray(px, py);
+                                const size_t first_point = visible[t].size();
+                                const CameraSample s = integrator.camera_path(ray.origin, ray.direction, p, rng, counted, visible[t]);
+                                for (size_t v = first_point; v < visible[t].size(); ++v) visible[t][v].beta = sample_weight * visible[t][v].beta;
+                                image.direct[p] += sample_weight * s.direct_visibility;
+                                image.primary[p] += sample_weight * s.primary;
+                                if (ordinary) image.ordinary[p] += sample_weight * path.radiance(ray.origin, ray.direction, rng, counted);
+                            }
                         }
                 }
                 rays += counted;
@@ -141,8 +156,10 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
                         const size_t c = receiver_first[r] + size_t(k);
                         Pcg32 rng(seed, stream + c);
                         const Vec3 point = map.cell_centre(k % nx, k / nx);
-                        cell.primary[c] = integrator.receiver_primary(point, normal, rng, counted);
-                        if (ordinary) cell.ordinary[c] = path.irradiance(point, normal, rng, counted);
+                        for (int n = 0; n < samples; ++n) {
+                            cell.primary[c] += sample_weight * integrator.receiver_primary(point, normal, rng, counted);
+                            if (ordinary) cell.ordinary[c] += sample_weight * path.irradiance(point, normal, rng, counted);
+                        }
                     }
                     rays += counted;
                 });

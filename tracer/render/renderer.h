@@ -1,5 +1,5 @@
-// The progressive renderer: passes of one sample per pixel and per receiver cell, tiles spread
-// over TBB threads, a pass or time budget and a progress bar. Every pixel and cell draws from
+// The progressive renderer: passes of one sample per pixel and per receiver cell (the
+// bidirectional one takes several when its photons outnumber them), tiles spread over TBB threads, a pass or time budget and a progress bar. Every pixel and cell draws from
 // its own PCG32 stream (stream = pixel index, seed mixed with the pass number), so an image
 // depends on the seed and the number of passes only, not on threads or timing.
 #pragma once
@@ -27,7 +27,8 @@ struct RenderSettings {
     int tile_size = 16;
     static constexpr int kDefaultPasses = 16;
     // Bidirectional integrator (bidirectional_renderer.cpp).
-    int photons_per_pass = 0;   // 0: the camera samples of a pass (pixels + receiver cells), at least 65536
+    int photons_per_pass = 0;   // 0: the camera samples of a pass (pixels + receiver cells), at least 65536;
+                                // a pass takes photons / (pixels + cells) samples per pixel and cell, at least 1
     double photon_radius = 0;   // gather radius of the first pass, scene units; 0: 1/100 of the
                                 // diagonal of the box of the middle 90% (per axis) of the first pass's visible points
     bool naive_sources = false; // ray sources as their stored rays (the paper's Figure 1)
