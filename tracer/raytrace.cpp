@@ -128,8 +128,10 @@ int run(int argc, char** argv) {
         return interrupt.exit_code();
     }
     if (!options.quiet) {
-        fmt::print("{} x {} pixels, {} passes in {:.2f} s, {:.3g} rays ({:.3g} rays/s)\n", settings.width,
-                   settings.height, result.passes, result.seconds, double(result.rays), result.rays / result.seconds);
+        fmt::print("{} x {} pixels, {} passes of {} sample{} per pixel in {:.2f} s, {:.3g} rays ({:.3g} rays/s)\n",
+                   settings.width, settings.height, result.passes, result.samples_per_pass,
+                   result.samples_per_pass == 1 ? "" : "s", result.seconds, double(result.rays),
+                   result.rays / result.seconds);
         if (result.photons)
             fmt::print("{:.3g} photons ({:.3g} photons/s), final gather radius {:.4g}; photon grid {:.1f} MiB, "
                        "visible points {:.1f} MiB (largest pass)\n",

@@ -62,10 +62,10 @@ int main(int argc, char** argv) {
     settings.passes = reference_passes;
     const RenderResult reference = render(scene, settings);
     const double pixels = double(settings.width) * settings.height;
-    std::printf("%s at %d x %d; reference %d passes in %.1f s: %.3g camera paths/s, %.3g photons/s, %.3g rays/s; "
+    std::printf("%s at %d x %d; reference %d passes (%d samples per pixel each) in %.1f s: %.3g camera paths/s, %.3g photons/s, %.3g rays/s; "
                 "photon grid %.1f MiB, visible points %.1f MiB (largest pass)\n",
-                argv[1], settings.width, settings.height, reference.passes, reference.seconds,
-                pixels * reference.passes / reference.seconds, reference.photons / reference.seconds,
+                argv[1], settings.width, settings.height, reference.passes, reference.samples_per_pass, reference.seconds,
+                pixels * reference.passes * reference.samples_per_pass / reference.seconds, reference.photons / reference.seconds,
                 reference.rays / reference.seconds, reference.photon_bytes / 1048576.0,
                 reference.visible_point_bytes / 1048576.0);
     std::printf("%8s %10s %12s %14s\n", "passes", "seconds", "rel. RMSE", "without ref noise");

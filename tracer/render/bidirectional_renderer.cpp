@@ -107,6 +107,7 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
     // fixed cost) to dominate; the primary light and antialiasing converge that much faster.
     const int samples = camera_samples_per_pass(photons_per_pass, pixels + cells);
     const double sample_weight = 1.0 / samples;
+    result.samples_per_pass = samples;
     // A continued render goes on from the radius its last pass used.
     double radius = result.passes > 0 ? shrunk_radius(result.photon_radius, result.passes) : settings.photon_radius;
 

@@ -45,6 +45,7 @@ struct RenderResult {
     Film film{1, 1};
     std::vector<ReceiverMap> receivers;
     int passes = 0;
+    int samples_per_pass = 1;  // camera samples per pixel and receiver cell in each pass
     double seconds = 0;
     uint64_t rays = 0;  // every ray cast: camera, bounce, shadow
     // Bidirectional only: the components (the film and receivers above hold their sum plus
