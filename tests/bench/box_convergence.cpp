@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
     std::printf("%8s %10s %12s %14s\n", "passes", "seconds", "rel. RMSE", "without ref noise");
     settings.seed = 2;  // independent of the reference
     bool reached = false;
-    for (int passes = 1; passes <= reference_passes / 8; passes *= 2) {
+    for (int passes = 1; passes <= reference_passes / 4; passes *= 2) {
         settings.passes = passes;
         const RenderResult r = render(scene, settings);
         const double raw = relative_rmse(r, reference);
