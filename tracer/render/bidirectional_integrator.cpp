@@ -27,19 +27,29 @@ const Material& white_lambertian() {
     return white;
 }
 
-// Camera wavelengths: half uniform over the range, half the sources' light (by luminance).
+// Camera wavelengths: camera paths carry only the ray sources' light (photons bring the
+// rest), so they are drawn in proportion to the sources' spectrum (by luminance) times the sum
+// of the colour matching functions, the film's weights; uniform when no source can be seen.
 lightmodel::BinnedSpectrum camera_density(const RaySourceSet& sources) {
-    std::array<double, lightmodel::kSpectrumBins> density{};
+    std::array<double, lightmodel::kSpectrumBins> light{};
     for (size_t j = 0; j < sources.size(); ++j) {
         const lightmodel::BinnedSpectrum s = sources[j].spectrum();
         if (s.is_zero()) continue;
         for (int k = 0; k < lightmodel::kSpectrumBins; ++k)
-            density[size_t(k)] += 0.5 * sources.probability(j) * s.value(k) / s.integral();
+            light[size_t(k)] += sources.probability(j) * s.value(k) / s.integral();
     }
-    double total = 0;
-    for (double d : density) total += d * lightmodel::kSpectrumBinNm;
-    const double uniform = (total > 0 ? total : 1) / (kLambdaMax - kLambdaMin);
-    for (double& d : density) d += uniform;
+    std::array<double, lightmodel::kSpectrumBins> density{};
+    bool any = false;
+    for (int k = 0; k < lightmodel::kSpectrumBins; ++k) {
+        double film = 0;  // mean of x + y + z over the bin
+        for (int i = 0; i < 10; ++i) {
+            const CieXyz c = cie_xyz(kLambdaMin + (k + (i + 0.5) / 10) * lightmodel::kSpectrumBinNm);
+            film += (c.x + c.y + c.z) / 10;
+        }
+        density[size_t(k)] = light[size_t(k)] * film;
+        any = any || density[size_t(k)] > 0;
+    }
+    if (!any) density.fill(1);
     return lightmodel::BinnedSpectrum(density);
 }
 

@@ -40,8 +40,9 @@ struct CameraSample {
 };
 
 // Q: what paths carry, Rgb (the default) or SampledSpectrum (spectral transport, spectrum.h).
-// Spectral camera paths draw their wavelengths from half uniform, half the sources' light
-// spectrum (so narrow-band sources are not missed); photons from their own light's spectrum.
+// Spectral camera paths draw their hero wavelength from the sources' light spectrum times the
+// colour matching functions (camera paths carry only that light); photons from their own
+// light's spectrum.
 template <class Q>
 class BidirectionalIntegratorOf {
 public:
