@@ -14,6 +14,7 @@
 #include "converters/analytic_sources.h"
 #include "converters/ray_stream.h"
 #include "converters/synth.h"
+#include "lightmodel/complex_source.h"
 #include "lightmodel/emission_spectrum.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
@@ -165,6 +166,38 @@ double series_over_bin(const ReflectanceSpectrum& a, double first) {
 }
 
 constexpr double kArea = 6 * 0.01;  // m^2 of wall
+
+TEST(SpectralSource, RadianceSpectrumHasTheLuminanceOfTheColour) {
+    // Two models (460 and 580 nm disks) and one without spectra (the same rays read as a
+    // model whose spectra were dropped: D65-shaped): along lines through each disk, the
+    // integral of V(lambda) x the spectral radiance (1 nm midpoints, 4 wavelengths a query)
+    // equals the luminance of the RGB radiance to 1e-6 (the shapes are normalised by the
+    // exact bin means of the interpolated V).
+    test::ScratchDir scratch;
+    const LineDisk blue = line_disk(scratch, 460, 1, 100000, 3), yellow = line_disk(scratch, 580, 2, 100000, 4);
+    auto grey_model = std::make_shared<lightmodel::LightModel>(lightmodel::read_model(yellow.model));
+    std::fill(grey_model->spectra.begin(), grey_model->spectra.end(), 0.f);
+    std::vector<std::shared_ptr<const lightmodel::LightModel>> models = {
+        std::make_shared<lightmodel::LightModel>(lightmodel::read_model(blue.model)),
+        std::make_shared<lightmodel::LightModel>(lightmodel::read_model(yellow.model)), grey_model};
+    for (const auto& m : models) {
+        const lightmodel::ComplexSource source(m);
+        for (const Vec3 origin : {Vec3{0, 0, 20}, Vec3{0.3, -0.2, 10}, Vec3{5, 5, 30}}) {
+            const Vec3 dir = analytic::normalized(Vec3{0.1, 0.05, 0} - origin);
+            const double rgb_luminance = lightmodel::luminance(source.L_colour(origin, dir, {}));
+            double spectral_luminance = 0;
+            for (double first = kLambdaMin; first < kLambdaMax; first += 4) {
+                lightmodel::SpectralQuery q;
+                for (int i = 0; i < 4; ++i) q.nm[i] = first + i + 0.5;
+                source.L_spectral(origin, dir, {}, q);
+                for (int i = 0; i < 4; ++i)
+                    if (q.nm[i] < kLambdaMax) spectral_luminance += lightmodel::photopic(q.nm[i]) * q.value[i];
+            }
+            ASSERT_GT(rgb_luminance, 0);
+            EXPECT_NEAR(spectral_luminance, rgb_luminance, 1e-6 * rgb_luminance);
+        }
+    }
+}
 
 TEST(SpectralBox, GreyWorldGivesTheSameLuxAsRgb) {
     // A white 555 nm disk and a grey box (albedo 0.5): spectral and RGB transport estimate the
