@@ -35,8 +35,12 @@ LinearRgb ComplexSource::L_colour(Vec3 origin, Vec3 dir, const EmitterHit&) cons
     return colour;
 }
 
+void ComplexSource::L_spectral(Vec3 origin, Vec3 dir, const EmitterHit&, SpectralQuery& query) const {
+    volume_.radiance_toward(origin, dir, 0, kInfinity, {}, nullptr, &query);
+}
+
 std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
-                                                 const SpectralSelect& select) const {
+                                                 const SpectralSelect& select, SpectralQuery* spectral) const {
     const VolumeSample point = volume_.sample_point(u_cell, u_voxel, u_point);
     const Vec3 to_point = point.point - ref;
     const double distance = length(to_point);
@@ -48,7 +52,7 @@ std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double
     BodyHit hit;
     if (!body_.intersect(ref, s.wi, kInfinity, hit)) return std::nullopt;
     s.distance = hit.t;
-    s.Li = volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour);
+    s.Li = volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour, spectral);
     s.pdf = volume_.pdf_direction(ref, s.wi);
     if (!(s.pdf > 0)) return std::nullopt;
     return s;
@@ -72,6 +76,7 @@ LeSample ComplexSource::sample_Le(const double u[7], const SpectralSelect& selec
     const double phi = volume_.total_flux();
     s.flux = phi * volume_.cell_flux(point.flux_cell, select) / cell.flux;
     s.flux_colour = phi * volume_.cell_colour(point.flux_cell);
+    s.spectrum = &volume_.cell_spectrum(point.flux_cell);
     return s;
 }
 

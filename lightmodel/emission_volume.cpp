@@ -47,6 +47,16 @@ EmissionVolume::EmissionVolume(const LightModel& model) : model_(model) {
         cell_cdf_[c] = running;
     }
     cell_colour_ = cell_colours(model);
+    cell_spectrum_ = cell_spectra(model);
+}
+
+BinnedSpectrum EmissionVolume::total_spectrum() const {
+    std::array<double, kSpectrumBins> sum{};
+    for (uint32_t c = 0; c < model_.flux_cells.size(); ++c) {
+        const double weight = model_.flux_cells[c].flux * luminance(cell_colour_[c]);
+        for (int k = 0; k < kSpectrumBins; ++k) sum[size_t(k)] += weight * cell_spectrum_[c].value(k);
+    }
+    return BinnedSpectrum(sum);
 }
 
 LinearRgb EmissionVolume::total_colour() const {
@@ -73,7 +83,7 @@ double EmissionVolume::cell_volume(uint32_t cell) const {
 }
 
 double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
-                                       const SpectralSelect& select, LinearRgb* colour) const {
+                                       const SpectralSelect& select, LinearRgb* colour, SpectralQuery* spectral) const {
     const Vec3 emitted = -dir;
     double sum = 0;
     LinearRgb colour_sum;
@@ -83,6 +93,10 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
         const double per_flux = d / (cell_volume(c) * cell.visible_fraction) * (t1 - t0);
         sum += cell_flux(c, select) * per_flux;
         if (colour) colour_sum += (cell.flux * per_flux) * cell_colour_[c];
+        if (spectral) {
+            const double weight = cell.flux * per_flux * luminance(cell_colour_[c]);
+            for (int i = 0; i < 4; ++i) spectral->value[i] += weight * cell_spectrum_[c](spectral->nm[i]);
+        }
     });
     if (colour) *colour = colour_sum;
     return sum;

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "lightmodel/colour.h"
+#include "lightmodel/emission_spectrum.h"
 #include "lightmodel/model.h"
 
 #include <vector>
@@ -44,12 +45,17 @@ public:
 
     // Radiance arriving at `origin` from direction `dir`: the light the voxels on the segment
     // origin + t dir, t in [tmin, tmax], emit toward -dir. With `colour`, the same line
-    // integral as a linear-sRGB triple (colour.h) is stored there too, from one traversal.
+    // integral as a linear-sRGB triple (colour.h) is stored there too, and with `spectral` its
+    // values at the query's wavelengths (emission_spectrum.h), from one traversal.
     double radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax, const SpectralSelect& select,
-                           LinearRgb* colour = nullptr) const;
+                           LinearRgb* colour = nullptr, SpectralQuery* spectral = nullptr) const;
     // Colour of one unit of a cell's flux (colour.h), and the colour of the whole source.
     const LinearRgb& cell_colour(uint32_t cell) const { return cell_colour_[cell]; }
     LinearRgb total_colour() const;
+    // Luminance-normalised spectrum of one cell (emission_spectrum.h), and the source's whole
+    // light as a spectrum: the cells' spectra weighted by their luminance weights.
+    const BinnedSpectrum& cell_spectrum(uint32_t cell) const { return cell_spectrum_[cell]; }
+    BinnedSpectrum total_spectrum() const;
     // Solid-angle density at `origin` of the direction `dir` under sample_point().
     double pdf_direction(Vec3 origin, Vec3 dir) const;
 
@@ -73,6 +79,7 @@ private:
     std::vector<int32_t> voxel_cell_;   // dense density lattice -> flux cell, -1 empty
     std::vector<double> cell_cdf_;      // over flux cells, by flux
     std::vector<LinearRgb> cell_colour_;
+    std::vector<BinnedSpectrum> cell_spectrum_;
     double voxel_volume_ = 0;
 };
 

@@ -37,6 +37,11 @@ struct LeSample {
     double pdf_direction = 0; // sr^-1 (0: the direction is fixed, a delta)
     int32_t cell = -1;        // flux cell (spectrum) of the origin; -1 naive
     LinearRgb flux_colour;    // the photon's whole flux as a colour (colour.h)
+    // Its spectrum (emission_spectrum.h): the photon's flux at wavelength l is
+    // luminance(flux_colour) x spectrum(l); or, for a ray of one known wavelength (naive),
+    // that wavelength (spectrum null), the flux there being luminance(flux_colour) / V(l).
+    const BinnedSpectrum* spectrum = nullptr;
+    double wavelength_nm = 0;
 };
 
 class Emitter {
@@ -53,11 +58,18 @@ public:
     virtual double L(Vec3 origin, Vec3 dir, const EmitterHit& hit, const SpectralSelect& select = {}) const = 0;
     // The same radiance as a colour (colour.h).
     virtual LinearRgb L_colour(Vec3 origin, Vec3 dir, const EmitterHit& hit) const = 0;
+    // The same radiance at the query's wavelengths (emission_spectrum.h), added to its values.
+    virtual void L_spectral(Vec3 origin, Vec3 dir, const EmitterHit& hit, SpectralQuery& query) const = 0;
+    // The whole light's spectrum, each part weighted by its luminance weight: where a camera
+    // path's wavelengths are worth sampling. Zero for an emitter a camera cannot see.
+    virtual BinnedSpectrum phi_spectrum() const = 0;
 
     // Light sampling; nothing when the emitter cannot be sampled from `ref` (naive, or ref
     // inside the source).
+    // With `spectral`, the radiance at its wavelengths is added to its values too.
     virtual std::optional<LiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
-                                              const SpectralSelect& select = {}) const = 0;
+                                              const SpectralSelect& select = {},
+                                              SpectralQuery* spectral = nullptr) const = 0;
     // Density of sample_Li drawing `wi` from `ref`, for MIS with BSDF sampling.
     virtual double pdf_Li(Vec3 ref, Vec3 wi) const = 0;
 

@@ -25,6 +25,7 @@ NaiveRaySource::NaiveRaySource(const std::string& ray_file) {
             luminous_.push_back(photometric.luminous_known() ? float(photometric.luminous(r)) : 0.f);
             const float wl = header.spectral == SpectralKind::single_wavelength ? header.single_wavelength : r.wavelength;
             band_.push_back(int16_t(bins_.bin_of(wl)));
+            wavelength_.push_back(wl);
             running += phi;
             cdf_.push_back(running);
             bounds_.extend(o);
@@ -33,6 +34,7 @@ NaiveRaySource::NaiveRaySource(const std::string& ray_file) {
     if (cdf_.empty() || !(running > 0)) throw Error(ray_file + ": no rays with flux to emit");
     luminous_known_ = photometric.luminous_known();
     default_efficacy_ = header.has_radiant ? kRgbLumensPerWatt : 1.0;
+    grey_ = d65_spectrum();
     band_colour_.push_back(colour_per_flux({}, 1));
     for (int b = 0; b < bins_.count; ++b) band_colour_.push_back(colour_per_flux(bin_colour_matching(bins_, b), 1));
 }
@@ -71,6 +73,8 @@ LeSample NaiveRaySource::sample_Le(const double u[7], const SpectralSelect& sele
                                                                         : 0.0;
     s.flux = flux_[i] > 0 ? cdf_.back() * part / flux_[i] : 0;
     s.flux_colour = flux_[i] > 0 ? (cdf_.back() / flux_[i]) * ray_colour(i) : LinearRgb{};
+    if (std::isfinite(wavelength_[i])) s.wavelength_nm = wavelength_[i];
+    else s.spectrum = &grey_;
     return s;
 }
 

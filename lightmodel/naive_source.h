@@ -22,12 +22,16 @@ public:
     bool intersect(Vec3, Vec3, double, EmitterHit&) const override { return false; }
     double L(Vec3, Vec3, const EmitterHit&, const SpectralSelect& = {}) const override { return 0; }
     LinearRgb L_colour(Vec3, Vec3, const EmitterHit&) const override { return {}; }
-    std::optional<LiSample> sample_Li(Vec3, double, double, Vec3, const SpectralSelect& = {}) const override {
+    void L_spectral(Vec3, Vec3, const EmitterHit&, SpectralQuery&) const override {}
+    BinnedSpectrum phi_spectrum() const override { return {}; }
+    std::optional<LiSample> sample_Li(Vec3, double, double, Vec3, const SpectralSelect& = {},
+                                      SpectralQuery* = nullptr) const override {
         return std::nullopt;
     }
     double pdf_Li(Vec3, Vec3) const override { return 0; }
     // u[0] picks the ray; the rest are unused. The position and direction are fixed by the ray
-    // (delta densities): pdf_position is the ray's probability, pdf_direction 0.
+    // (delta densities): pdf_position is the ray's probability, pdf_direction 0. A ray of known
+    // wavelength emits that wavelength alone; one without, a D65-shaped spectrum.
     LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const override;
     void pdf_Le(Vec3, Vec3, double& pdf_position, double& pdf_direction) const override {
         pdf_position = pdf_direction = 0;
@@ -37,6 +41,8 @@ private:
     std::vector<Vec3> origins_, directions_;
     std::vector<float> flux_, luminous_;
     std::vector<int16_t> band_;     // spectral bin of the ray's wavelength, -1 unknown
+    std::vector<float> wavelength_; // nm, NaN unknown
+    BinnedSpectrum grey_;           // of rays without a wavelength
     std::vector<double> cdf_;
     SpectralBins bins_;
     // Colour of a unit of flux of each ray's spectral bin at 1 lm per unit (index bin + 1; 0:

@@ -78,6 +78,7 @@ int run(int argc, char** argv) {
     settings.photons_per_pass = options.photons_per_pass;
     settings.photon_radius = options.photon_radius;
     settings.naive_sources = options.naive_sources;
+    settings.spectral = options.spectral;
     if (options.bench) {
         run_raytrace_benchmark(scene, settings);
         return 0;

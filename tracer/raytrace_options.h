@@ -27,6 +27,7 @@ struct RaytraceOptions {
     int photons_per_pass = 0;     // 0: the renderer's default
     double photon_radius = 0;     // scene units; 0: the renderer's default
     bool naive_sources = false;   // ray sources as their stored rays (paper Figure 1)
+    bool spectral = false;        // spectral transport (bidirectional)
     // Stop and resume: OUT.checkpoint beside the output holds the last completed pass.
     bool resume = false;              // continue from OUT.checkpoint
     bool keep_checkpoint = false;     // keep OUT.checkpoint after a completed render

@@ -32,7 +32,7 @@ struct CheckpointIdentity {
     uint64_t scene_hash = 0;  // scene_content_hash()
     int width = 0, height = 0;
     uint64_t seed = 0;
-    std::string integrator;
+    std::string integrator;    // "bidirectional spectral" with --spectral
     bool render_image = true;
     int photons_per_pass = 0;  // as set: 0 is the renderer's default
     double photon_radius = 0;  // as set

@@ -1,9 +1,11 @@
 // Camera pass, photon pass and density estimation of the bidirectional integrator
-// (see bidirectional_integrator.h).
+// (see bidirectional_integrator.h), one code path for RGB and spectral transport.
 #include "tracer/render/bidirectional_integrator.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace rayset::tracer {
 
@@ -19,23 +21,87 @@ const Material& white_lambertian() {
     static const Material white = [] {
         Material m;
         m.diffuse = {1, 1, 1};
+        m.spectra.diffuse = ReflectanceSpectrum::constant(1);
         return m;
     }();
     return white;
 }
 
+// Camera wavelengths: camera paths carry only the ray sources' light (photons bring the
+// rest), so they are drawn in proportion to the sources' spectrum (by luminance) times the sum
+// of the colour matching functions, the film's weights; uniform when no source can be seen.
+lightmodel::BinnedSpectrum camera_density(const RaySourceSet& sources) {
+    std::array<double, lightmodel::kSpectrumBins> light{};
+    for (size_t j = 0; j < sources.size(); ++j) {
+        const lightmodel::BinnedSpectrum s = sources[j].spectrum();
+        if (s.is_zero()) continue;
+        for (int k = 0; k < lightmodel::kSpectrumBins; ++k)
+            light[size_t(k)] += sources.probability(j) * s.value(k) / s.integral();
+    }
+    std::array<double, lightmodel::kSpectrumBins> density{};
+    bool any = false;
+    for (int k = 0; k < lightmodel::kSpectrumBins; ++k) {
+        double film = 0;  // mean of x + y + z over the bin
+        for (int i = 0; i < 10; ++i) {
+            const CieXyz c = cie_xyz(kLambdaMin + (k + (i + 0.5) / 10) * lightmodel::kSpectrumBinNm);
+            film += (c.x + c.y + c.z) / 10;
+        }
+        density[size_t(k)] = light[size_t(k)] * film;
+        any = any || density[size_t(k)] > 0;
+    }
+    if (!any) density.fill(1);
+    return lightmodel::BinnedSpectrum(density);
+}
+
+// The photon's light reflected toward a camera path, made RGB at the photon's wavelengths.
+Rgb reflected(const Bsdf& bsdf, const Material&, const Photon& p, double cos_i) {
+    return (1 / cos_i) * bsdf.eval(p.wi) * p.power;
+}
+Rgb reflected(const Bsdf& bsdf, const Material& material, const PhotonOf<SampledSpectrum>& p, double cos_i) {
+    double diffuse_factor, glossy_factor;
+    bsdf.smooth_factors(p.wi, diffuse_factor, glossy_factor);
+    if (!(diffuse_factor > 0)) return {};
+    SampledSpectrum f;
+    for (int i = 0; i < kWavelengths; ++i) {
+        const double nm = p.wavelengths.nm[i];
+        f.v[i] = diffuse_factor * material.spectra.diffuse(nm) + (glossy_factor > 0 ? glossy_factor * material.spectra.glossy(nm) : 0);
+    }
+    return to_rgb((1 / cos_i) * f * p.power, p.wavelengths);
+}
+
+Rgb photon_rgb(const Photon& p) { return p.power; }
+Rgb photon_rgb(const PhotonOf<SampledSpectrum>& p) { return to_rgb(p.power, p.wavelengths); }
+
+WavelengthsFor<Rgb> wavelengths_of(const PhotonWavelengths<Rgb>&) { return {}; }
+const SampledWavelengths& wavelengths_of(const PhotonWavelengths<SampledSpectrum>& p) { return p.wavelengths; }
+
 }  // namespace
 
-Rgb BidirectionalIntegrator::sample_sources(const Bsdf& bsdf, Vec3 point, Vec3 normal, Pcg32& rng,
-                                            uint64_t& rays) const {
+template <class Q>
+BidirectionalIntegratorOf<Q>::BidirectionalIntegratorOf(const RenderScene& scene, const RaySourceSet& sources)
+    : scene_(scene), sources_(sources) {
+    if constexpr (std::is_same_v<Q, SampledSpectrum>) camera_wavelength_density_ = camera_density(sources);
+}
+
+template <class Q>
+typename BidirectionalIntegratorOf<Q>::Wavelengths BidirectionalIntegratorOf<Q>::camera_wavelengths(Pcg32& rng) const {
+    if constexpr (std::is_same_v<Q, SampledSpectrum>)
+        return SampledWavelengths::sample(camera_wavelength_density_, rng.uniform());
+    else
+        return {};
+}
+
+template <class Q>
+Q BidirectionalIntegratorOf<Q>::sample_sources(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
+                                               const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const {
     if (sources_.empty()) return {};
     double u_cell = rng.uniform();
     const size_t j = sources_.choose(u_cell);
     const double u_voxel = rng.uniform();
     const Vec3 u_point{rng.uniform(), rng.uniform(), rng.uniform()};
-    const auto ls = sources_[j].sample_Li(point, u_cell, u_voxel, u_point);
+    const auto ls = sources_[j].sample_Li(point, u_cell, u_voxel, u_point, wavelengths);
     if (!ls) return {};
-    const Rgb f = bsdf.eval(ls->wi);
+    const Q f = bsdf.eval(ls->wi);
     if (is_black(f) || is_black(ls->Li)) return {};
     ++rays;
     if (scene_.occluded(scene_.offset(point, normal, ls->wi), ls->wi, 0, ls->distance - scene_.epsilon())) return {};
@@ -44,25 +110,28 @@ Rgb BidirectionalIntegrator::sample_sources(const Bsdf& bsdf, Vec3 point, Vec3 n
     return (weight / pdf_light) * ls->Li * f;
 }
 
-Rgb BidirectionalIntegrator::bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, Vec3 ref,
-                                            uint64_t& rays) const {
+template <class Q>
+Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, Vec3 ref,
+                                               const Wavelengths& wavelengths, uint64_t& rays) const {
     SurfaceHit hit;
     ++rays;
     const double t_block = scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit) ? hit.t : kInfinity;
-    Rgb sum;
+    Q sum{};
     for (size_t j = 0; j < sources_.size(); ++j) {
         double t = 0;
         if (!sources_[j].intersect(origin, direction, t_block, t)) continue;
         const double pdf_light = sources_.probability(j) * sources_[j].pdf_Li(ref, direction);
-        sum += power_heuristic(bsdf_pdf, pdf_light) * sources_[j].radiance(origin, direction);
+        sum += power_heuristic(bsdf_pdf, pdf_light) * sources_[j].radiance(origin, direction, wavelengths);
     }
     return sum;
 }
 
-CameraSample BidirectionalIntegrator::camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng,
-                                                  uint64_t& rays, std::vector<VisiblePoint>& visible) const {
-    CameraSample out;
-    Rgb beta{1, 1, 1};
+template <class Q>
+CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng,
+                                                       uint64_t& rays, std::vector<Point>& visible) const {
+    const Wavelengths wavelengths = camera_wavelengths(rng);
+    Q direct_visibility{}, primary{};
+    Q beta = constant_value<Q>(1);
     RayKind kind = RayKind::camera;
     for (int depth = 0; depth < kMaxDepth; ++depth) {
         SurfaceHit hit;
@@ -72,23 +141,27 @@ CameraSample BidirectionalIntegrator::camera_path(Vec3 origin, Vec3 direction, u
         for (size_t j = 0; j < sources_.size(); ++j) {
             double t = 0;
             if (sources_[j].intersect(origin, direction, t_block, t))
-                out.direct_visibility += beta * sources_[j].radiance(origin, direction);
+                direct_visibility += beta * sources_[j].radiance(origin, direction, wavelengths);
         }
         if (!found) break;
         const Material& material = scene_.material(hit.object);
         const Vec3 wo = -direction;
-        const Bsdf bsdf(material, hit.normal, hit.shading_normal, wo);
+        const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         if (bsdf.has_smooth_lobes()) {
-            out.primary += beta * sample_sources(bsdf, hit.point, bsdf.facing_normal(), rng, rays);
-            visible.push_back({hit.point, hit.normal, hit.shading_normal, wo, hit.object, beta, pixel});
+            primary += beta * sample_sources(bsdf, hit.point, bsdf.facing_normal(), wavelengths, rng, rays);
+            Point vp;
+            vp.point = hit.point, vp.normal = hit.normal, vp.shading_normal = hit.shading_normal, vp.wo = wo;
+            vp.object = hit.object, vp.beta = beta, vp.pixel = pixel;
+            if constexpr (std::is_same_v<Q, SampledSpectrum>) vp.wavelengths = wavelengths;
+            visible.push_back(vp);
         }
-        BsdfSample s;
+        BsdfSampleOf<Q> s;
         const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
         if (!bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight)) break;
         const Vec3 next_origin = scene_.offset(hit.point, hit.normal, s.wi);
         if (!s.delta) {
             // The smooth lobe ends the camera path: what lies beyond is the photons' part.
-            out.primary += beta * s.weight * bodies_crossed(next_origin, s.wi, s.pdf, hit.point, rays);
+            primary += beta * s.weight * bodies_crossed(next_origin, s.wi, s.pdf, hit.point, wavelengths, rays);
             break;
         }
         beta *= s.weight;
@@ -101,21 +174,25 @@ CameraSample BidirectionalIntegrator::camera_path(Vec3 origin, Vec3 direction, u
             beta = (1 / survive) * beta;
         }
     }
-    return out;
+    return {to_rgb(direct_visibility, wavelengths), to_rgb(primary, wavelengths)};
 }
 
-Rgb BidirectionalIntegrator::receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
-    const Bsdf bsdf(white_lambertian(), normal, normal, normal);
-    Rgb reflected = sample_sources(bsdf, point, normal, rng, rays);
-    BsdfSample s;
+template <class Q>
+Rgb BidirectionalIntegratorOf<Q>::receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
+    const Wavelengths wavelengths = camera_wavelengths(rng);
+    const BsdfOf<Q> bsdf(white_lambertian(), normal, normal, normal, wavelengths);
+    Q reflected_light = sample_sources(bsdf, point, normal, wavelengths, rng, rays);
+    BsdfSampleOf<Q> s;
     const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
     if (bsdf.sample(u_lobe, u1, u2, s) && !is_black(s.weight))
-        reflected += s.weight * bodies_crossed(scene_.offset(point, normal, s.wi), s.wi, s.pdf, point, rays);
-    return kPi * reflected;
+        reflected_light +=
+            s.weight * bodies_crossed(scene_.offset(point, normal, s.wi), s.wi, s.pdf, point, wavelengths, rays);
+    return kPi * to_rgb(reflected_light, wavelengths);
 }
 
-std::vector<Photon> BidirectionalIntegrator::trace_photons(uint64_t first, uint64_t count, uint64_t emitted,
-                                                           uint64_t seed, uint64_t& rays) const {
+template <class Q>
+std::vector<typename BidirectionalIntegratorOf<Q>::Photon> BidirectionalIntegratorOf<Q>::trace_photons(
+    uint64_t first, uint64_t count, uint64_t emitted, uint64_t seed, uint64_t& rays) const {
     std::vector<Photon> photons;
     if (sources_.empty()) return photons;
     const bool keep_direct = sources_.naive();
@@ -124,21 +201,34 @@ std::vector<Photon> BidirectionalIntegrator::trace_photons(uint64_t first, uint6
         double u[7];
         for (double& v : u) v = rng.uniform();
         const size_t j = sources_.choose(u[0]);
-        const SourcePhoton emission = sources_[j].sample_Le(u);
-        Rgb power = (1 / (sources_.probability(j) * double(emitted))) * emission.flux;
+        Photon photon;
+        const auto emission = [&] {
+            if constexpr (std::is_same_v<Q, SampledSpectrum>) {
+                auto e = sources_[j].sample_Le(u, rng.uniform());
+                photon.wavelengths = e.wavelengths;
+                return e;
+            } else {
+                return sources_[j].sample_Le(u);
+            }
+        }();
+        const Wavelengths& wavelengths = wavelengths_of(photon);
+        Q power = (1 / (sources_.probability(j) * double(emitted))) * emission.flux;
         Vec3 origin = emission.origin, direction = emission.direction;
         bool scattered = false;
         for (int depth = 0; depth < kMaxDepth; ++depth) {
             SurfaceHit hit;
             ++rays;
             if (!scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit)) break;
-            const Bsdf bsdf(scene_.material(hit.object), hit.normal, hit.shading_normal, -direction);
-            if (bsdf.has_smooth_lobes() && (scattered || keep_direct))
-                photons.push_back({hit.point, -direction, bsdf.facing_normal(), power, !scattered});
-            BsdfSample s;
+            const BsdfOf<Q> bsdf(scene_.material(hit.object), hit.normal, hit.shading_normal, -direction, wavelengths);
+            if (bsdf.has_smooth_lobes() && (scattered || keep_direct)) {
+                photon.position = hit.point, photon.wi = -direction, photon.normal = bsdf.facing_normal();
+                photon.power = power, photon.direct = !scattered;
+                photons.push_back(photon);
+            }
+            BsdfSampleOf<Q> s;
             const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
             if (!bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight)) break;
-            const Rgb next = power * s.weight;
+            const Q next = power * s.weight;
             // Roulette keeps the surviving photons' power near the emitted one.
             const double survive = std::min(1.0, max_component(next) / max_component(power));
             if (!(survive > 0) || rng.uniform_float() >= survive) break;
@@ -151,8 +241,10 @@ std::vector<Photon> BidirectionalIntegrator::trace_photons(uint64_t first, uint6
     return photons;
 }
 
-void BidirectionalIntegrator::gather(const VisiblePoint& vp, const PhotonGrid& grid, Rgb& direct, Rgb& scattered) const {
-    const Bsdf bsdf(scene_.material(vp.object), vp.normal, vp.shading_normal, vp.wo);
+template <class Q>
+void BidirectionalIntegratorOf<Q>::gather(const Point& vp, const Grid& grid, Rgb& direct, Rgb& scattered) const {
+    const Material& material = scene_.material(vp.object);
+    const Bsdf bsdf(material, vp.normal, vp.shading_normal, vp.wo);
     const Vec3 n = bsdf.facing_normal();
     Rgb sum_direct, sum_scattered;
     grid.for_each_near(vp.point, [&](const Photon& p) {
@@ -160,24 +252,29 @@ void BidirectionalIntegrator::gather(const VisiblePoint& vp, const PhotonGrid& g
         const double cos_i = std::fabs(dot(p.wi, vp.shading_normal));
         if (!(cos_i > 0)) return;
         // Bsdf::eval gives f |cos|; the photon's power already holds the projected area.
-        const Rgb contribution = (1 / cos_i) * bsdf.eval(p.wi) * p.power;
+        const Rgb contribution = reflected(bsdf, material, p, cos_i);
         (p.direct ? sum_direct : sum_scattered) += contribution;
     });
     const double area = kPi * grid.radius() * grid.radius();
-    direct = (1 / area) * (vp.beta * sum_direct);
-    scattered = (1 / area) * (vp.beta * sum_scattered);
+    const Rgb beta = throughput_to_rgb(vp.beta, wavelengths_of(vp));
+    direct = (1 / area) * (beta * sum_direct);
+    scattered = (1 / area) * (beta * sum_scattered);
 }
 
-void BidirectionalIntegrator::gather_irradiance(Vec3 point, Vec3 normal, const PhotonGrid& grid, Rgb& direct,
-                                                Rgb& scattered) const {
+template <class Q>
+void BidirectionalIntegratorOf<Q>::gather_irradiance(Vec3 point, Vec3 normal, const Grid& grid, Rgb& direct,
+                                                     Rgb& scattered) const {
     Rgb sum_direct, sum_scattered;
     grid.for_each_near(point, [&](const Photon& p) {
         if (dot(p.normal, normal) < kSameSurfaceCos || dot(p.wi, normal) <= 0) return;
-        (p.direct ? sum_direct : sum_scattered) += p.power;
+        (p.direct ? sum_direct : sum_scattered) += photon_rgb(p);
     });
     const double area = kPi * grid.radius() * grid.radius();
     direct = (1 / area) * sum_direct;
     scattered = (1 / area) * sum_scattered;
 }
+
+template class BidirectionalIntegratorOf<Rgb>;
+template class BidirectionalIntegratorOf<SampledSpectrum>;
 
 }  // namespace rayset::tracer

@@ -23,25 +23,39 @@
 
 namespace rayset::tracer {
 
-// A surface point where a camera path met its first smooth lobe, with the path throughput.
-struct VisiblePoint {
+// A surface point where a camera path met its first smooth lobe, with the path throughput
+// (and, when spectral, the path's wavelengths).
+template <class Q>
+struct VisiblePointOf : PhotonWavelengths<Q> {
     Vec3 point, normal, shading_normal, wo;
     int object = -1;
-    Rgb beta;
+    Q beta;
     uint32_t pixel = 0;
 };
+using VisiblePoint = VisiblePointOf<Rgb>;
 
+// A camera sample's light, linear sRGB whatever the transport (spectrum.h's film conversion).
 struct CameraSample {
     Rgb direct_visibility, primary;
 };
 
-class BidirectionalIntegrator {
+// Q: what paths carry, Rgb (the default) or SampledSpectrum (spectral transport, spectrum.h).
+// Spectral camera paths draw their hero wavelength from the sources' light spectrum times the
+// colour matching functions (camera paths carry only that light); photons from their own
+// light's spectrum.
+template <class Q>
+class BidirectionalIntegratorOf {
 public:
-    BidirectionalIntegrator(const RenderScene& scene, const RaySourceSet& sources) : scene_(scene), sources_(sources) {}
+    using Wavelengths = WavelengthsFor<Q>;
+    using Point = VisiblePointOf<Q>;
+    using Photon = PhotonOf<Q>;
+    using Grid = PhotonGridOf<Photon>;
+
+    BidirectionalIntegratorOf(const RenderScene& scene, const RaySourceSet& sources);
 
     // Camera pass of one camera ray; visible points are appended to `visible` with `pixel`.
     CameraSample camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng, uint64_t& rays,
-                             std::vector<VisiblePoint>& visible) const;
+                             std::vector<Point>& visible) const;
     // Primary irradiance of the sources at a virtual receiver point (pi x the radiance a white
     // Lambertian surface there would reflect), from the side `normal` points into.
     Rgb receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
@@ -54,22 +68,30 @@ public:
     // Radiance the photons near a visible point reflect toward its wo (density estimation over
     // a disk of the grid's radius), split into photons that came straight from a source and
     // those that scattered before.
-    void gather(const VisiblePoint& vp, const PhotonGrid& grid, Rgb& direct, Rgb& scattered) const;
+    // Spectral: each photon's light is reflected at its own wavelengths and made RGB there; the
+    // camera-side throughput (through mirrors, glass) is made RGB by the camera path's own
+    // wavelengths (throughput_to_rgb) and applied to that: exact for grey specular chains.
+    void gather(const Point& vp, const Grid& grid, Rgb& direct, Rgb& scattered) const;
     // Irradiance at a receiver point from photons that landed on a surface there facing the
     // same way, split the same way.
-    void gather_irradiance(Vec3 point, Vec3 normal, const PhotonGrid& grid, Rgb& direct, Rgb& scattered) const;
+    void gather_irradiance(Vec3 point, Vec3 normal, const Grid& grid, Rgb& direct, Rgb& scattered) const;
 
     static constexpr int kMaxDepth = 256;
     static constexpr int kRouletteDepth = 3;
 
 private:
-    Rgb sample_sources(const Bsdf& bsdf, Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
+    Wavelengths camera_wavelengths(Pcg32& rng) const;
+    Q sample_sources(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths, Pcg32& rng,
+                     uint64_t& rays) const;
     // Radiance of every body a BSDF-sampled ray meets before the first surface, each weighted
     // against light sampling of its source.
-    Rgb bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, Vec3 ref, uint64_t& rays) const;
+    Q bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, Vec3 ref, const Wavelengths& wavelengths,
+                     uint64_t& rays) const;
 
     const RenderScene& scene_;
     const RaySourceSet& sources_;
+    lightmodel::BinnedSpectrum camera_wavelength_density_;  // spectral only
 };
+using BidirectionalIntegrator = BidirectionalIntegratorOf<Rgb>;
 
 }  // namespace rayset::tracer

@@ -47,7 +47,8 @@ struct PassValues {
     explicit PassValues(size_t n) : direct(n), primary(n), secondary(n), ordinary(n) {}
 };
 
-double default_radius(const std::vector<std::vector<VisiblePoint>>& points, const std::vector<ReceiverMap>& receivers) {
+template <class Point>
+double default_radius(const std::vector<std::vector<Point>>& points, const std::vector<ReceiverMap>& receivers) {
     // The extent of the middle 90% of the points along each axis: a floor plane seen to its
     // horizon must not make the radius (and so every gather) as wide as the floor.
     std::vector<double> coordinates[3];
@@ -55,7 +56,7 @@ double default_radius(const std::vector<std::vector<VisiblePoint>>& points, cons
         coordinates[0].push_back(p.x), coordinates[1].push_back(p.y), coordinates[2].push_back(p.z);
     };
     for (const auto& tile : points)
-        for (const VisiblePoint& vp : tile) add(vp.point);
+        for (const Point& vp : tile) add(vp.point);
     for (const ReceiverMap& map : receivers)
         for (int j = 0; j < map.receiver.ny; ++j)
             for (int i = 0; i < map.receiver.nx; ++i) add(map.cell_centre(i, j));
@@ -83,15 +84,16 @@ int camera_samples_per_pass(uint64_t photons_per_pass, size_t camera_points) {
 // The radius after `passes_done` passes, the last of them gathered with `radius`.
 double shrunk_radius(double radius, int passes_done) { return radius * std::sqrt((passes_done + kAlpha) / (passes_done + 1)); }
 
-}  // namespace
-
-RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings,
-                                  RenderResult start, const RenderControl& control) {
+// The passes, with paths carrying Q (Rgb, or SampledSpectrum for spectral transport).
+template <class Q>
+RenderResult render_passes(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings,
+                           RenderResult start, const RenderControl& control) {
+    using Integrator = BidirectionalIntegratorOf<Q>;
     RenderResult result = starting_state(scene, settings, std::move(start));
     const PassBudget budget(settings, result.seconds);
     const int w = settings.width, h = settings.height;
     const PerspectiveCamera camera(scene.description().camera, w, h);
-    const BidirectionalIntegrator integrator(scene, sources);
+    const Integrator integrator(scene, sources);
     const PathIntegrator path(scene);
     const bool ordinary = has_ordinary_light(scene);
     const double to_si = scene.units().per_square_metre();
@@ -120,7 +122,7 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
         const uint64_t seed = pass_seed(settings.seed, result.passes);
         std::atomic<uint64_t> rays{0};
         PassValues image(pixels), cell(cells);
-        std::vector<std::vector<VisiblePoint>> visible(static_cast<size_t>(tiles));
+        std::vector<std::vector<typename Integrator::Point>> visible(static_cast<size_t>(tiles));
         arena.execute([&] {
             // Camera pass.
             tbb::parallel_for(tbb::blocked_range<int>(0, tiles), [&](const tbb::blocked_range<int>& range) {
@@ -171,7 +173,7 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
             if (!(radius > 0)) radius = default_radius(visible, result.receivers);
             const uint64_t photon_seed = pass_seed(settings.seed ^ kPhotonSeedSalt, result.passes);
             const size_t blocks = size_t((photons_per_pass + kPhotonBlock - 1) / kPhotonBlock);
-            std::vector<std::vector<Photon>> traced(blocks);
+            std::vector<std::vector<typename Integrator::Photon>> traced(blocks);
             tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
                 if (stop_requested(control)) return;
                 uint64_t counted = 0;
@@ -180,17 +182,17 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
                 rays += counted;
             });
             if (stop_requested(control)) return;
-            std::vector<Photon> photons;
+            std::vector<typename Integrator::Photon> photons;
             for (auto& block : traced) photons.insert(photons.end(), block.begin(), block.end());
-            const PhotonGrid grid(std::move(photons), radius);
+            const typename Integrator::Grid grid(std::move(photons), radius);
             size_t visible_points = 0;
             for (const auto& tile_points : visible) visible_points += tile_points.size();
             result.photon_bytes = std::max(result.photon_bytes, grid.memory_bytes());
-            result.visible_point_bytes = std::max(result.visible_point_bytes, visible_points * sizeof(VisiblePoint));
+            result.visible_point_bytes = std::max(result.visible_point_bytes, visible_points * sizeof(typename Integrator::Point));
 
             // Density estimation at the visible points and receiver cells.
             tbb::parallel_for(0, tiles, [&](int t) {
-                for (const VisiblePoint& vp : visible[size_t(t)]) {
+                for (const auto& vp : visible[size_t(t)]) {
                     Rgb direct, scattered;
                     integrator.gather(vp, grid, direct, scattered);
                     image.primary[vp.pixel] += direct;
@@ -250,6 +252,15 @@ RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& 
     progress.done();
     result.seconds = budget.elapsed();
     return result;
+}
+
+}  // namespace
+
+RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings,
+                                  RenderResult start, const RenderControl& control) {
+    if (settings.spectral || scene.description().global.spectral)
+        return render_passes<SampledSpectrum>(scene, sources, settings, std::move(start), control);
+    return render_passes<Rgb>(scene, sources, settings, std::move(start), control);
 }
 
 }  // namespace rayset::tracer

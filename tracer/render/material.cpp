@@ -63,7 +63,24 @@ Material material_from_pov(const ObjectInstance& object, double emission_scale) 
     m.mirror_fresnel = f.reflection_fresnel;
     m.emission = emission_scale * (f.emission * pigment);
     conserve_energy(m);
+    m.spectra = {upsample_reflectance(m.diffuse), upsample_reflectance(m.glossy), upsample_reflectance(m.mirror_min),
+                 upsample_reflectance(m.mirror_max), upsample_reflectance(m.transmission)};
     return m;
+}
+
+LobeColours<Rgb> lobe_colours(const Material& m, NoWavelengths) {
+    return {m.diffuse, m.glossy, m.mirror_min, m.mirror_max, m.transmission};
+}
+
+LobeColours<SampledSpectrum> lobe_colours(const Material& m, const SampledWavelengths& w) {
+    auto at = [&](const Rgb& rgb, const ReflectanceSpectrum& spectrum) {
+        SampledSpectrum s;
+        if (is_black(rgb)) return s;
+        for (int i = 0; i < kWavelengths; ++i) s.v[i] = spectrum(w.nm[i]);
+        return s;
+    };
+    return {at(m.diffuse, m.spectra.diffuse), at(m.glossy, m.spectra.glossy), at(m.mirror_min, m.spectra.mirror_min),
+            at(m.mirror_max, m.spectra.mirror_max), at(m.transmission, m.spectra.transmission)};
 }
 
 double fresnel_dielectric(double cos_i, double eta) {
@@ -75,8 +92,9 @@ double fresnel_dielectric(double cos_i, double eta) {
     return 0.5 * (rs * rs + rp * rp);
 }
 
-Bsdf::Bsdf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo)
-    : m_(material), wo_(wo) {
+template <class Q>
+BsdfOf<Q>::BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo, const WavelengthsFor<Q>& wavelengths)
+    : m_(material), c_(lobe_colours(material, wavelengths)), wo_(wo) {
     entering_ = dot(wo, normal) >= 0;
     n_ = entering_ ? normal : -normal;
     ns_ = dot(shading_normal, n_) >= 0 ? shading_normal : -shading_normal;
@@ -84,7 +102,7 @@ Bsdf::Bsdf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo)
     // Lobes are picked in proportion to their average albedo; the channel sums give the same
     // ratios with one division instead of eight (this runs at every hit).
     auto sum = [](Rgb a) { return a.red + a.green + a.blue; };
-    const double d = sum(m_.diffuse), g = sum(m_.glossy), r = is_black(m_.mirror_max) ? 0 : sum(mirror_weight()),
+    const double d = sum(m_.diffuse), g = sum(m_.glossy), r = is_black(m_.mirror_max) ? 0 : sum(mirror_weight_rgb()),
                  t = sum(m_.transmission);
     const double total = d + g + r + t;
     if (total > 0) {
@@ -93,25 +111,46 @@ Bsdf::Bsdf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo)
     }
 }
 
-Rgb Bsdf::mirror_weight() const {
+template <class Q>
+double BsdfOf<Q>::mirror_fraction() const {
     const double c = std::max(0.0, dot(wo_, n_));
-    const double x = m_.mirror_fresnel ? fresnel_dielectric(c, m_.ior > 1 ? m_.ior : 1.5)
-                                       : std::pow(1 - c, m_.mirror_falloff);
-    return m_.mirror_min + x * (m_.mirror_max - m_.mirror_min);
+    return m_.mirror_fresnel ? fresnel_dielectric(c, m_.ior > 1 ? m_.ior : 1.5) : std::pow(1 - c, m_.mirror_falloff);
 }
 
-Rgb Bsdf::eval(Vec3 wi) const {
+template <class Q>
+Rgb BsdfOf<Q>::mirror_weight_rgb() const {
+    return m_.mirror_min + mirror_fraction() * (m_.mirror_max - m_.mirror_min);
+}
+
+template <class Q>
+Q BsdfOf<Q>::mirror_weight() const {
+    return c_.mirror_min + mirror_fraction() * (c_.mirror_max - c_.mirror_min);
+}
+
+template <class Q>
+void BsdfOf<Q>::smooth_factors(Vec3 wi, double& diffuse_factor, double& glossy_factor) const {
+    diffuse_factor = glossy_factor = 0;
     const double cos_i = dot(wi, ns_);
-    if (cos_i <= 0 || dot(wi, n_) <= 0) return {};
-    Rgb f = (1 / kPi) * m_.diffuse;
+    if (cos_i <= 0 || dot(wi, n_) <= 0) return;
+    diffuse_factor = cos_i / kPi;
     if (p_glossy_ > 0) {
         const double c = dot(wi, reflect(wo_, ns_));
-        if (c > 0) f += ((m_.glossy_exponent + 2) / (2 * kPi) * std::pow(c, m_.glossy_exponent)) * m_.glossy;
+        if (c > 0) glossy_factor = cos_i * (m_.glossy_exponent + 2) / (2 * kPi) * std::pow(c, m_.glossy_exponent);
     }
-    return cos_i * f;
 }
 
-double Bsdf::pdf(Vec3 wi) const {
+template <class Q>
+Q BsdfOf<Q>::eval(Vec3 wi) const {
+    double diffuse_factor, glossy_factor;
+    smooth_factors(wi, diffuse_factor, glossy_factor);
+    if (!(diffuse_factor > 0)) return {};
+    Q f = diffuse_factor * c_.diffuse;
+    if (glossy_factor > 0) f += glossy_factor * c_.glossy;
+    return f;
+}
+
+template <class Q>
+double BsdfOf<Q>::pdf(Vec3 wi) const {
     const double cos_i = dot(wi, ns_);
     if (cos_i <= 0 || dot(wi, n_) <= 0) return 0;
     double p = p_diffuse_ * cos_i / kPi;
@@ -122,14 +161,15 @@ double Bsdf::pdf(Vec3 wi) const {
     return p;
 }
 
-bool Bsdf::sample(double u_lobe, double u1, double u2, BsdfSample& out) const {
+template <class Q>
+bool BsdfOf<Q>::sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out) const {
     if (u_lobe < p_diffuse_ && p_glossy_ == 0) {  // diffuse alone: f cos / pdf is the albedo over p_diffuse
         out.wi = normalized(Frame(ns_).to_world(cosine_hemisphere(u1, u2)));
         const double cos_i = dot(out.wi, ns_);
         out.delta = false;
         out.pdf = p_diffuse_ * cos_i / kPi;
         if (out.pdf <= 0 || dot(out.wi, n_) <= 0) return false;
-        out.weight = (1 / p_diffuse_) * m_.diffuse;
+        out.weight = (1 / p_diffuse_) * c_.diffuse;
         return true;
     }
     if (u_lobe < p_diffuse_ + p_glossy_) {
@@ -154,7 +194,7 @@ bool Bsdf::sample(double u_lobe, double u1, double u2, BsdfSample& out) const {
     const double eta = entering_ ? m_.ior : 1 / m_.ior;
     const double cos_i = std::max(0.0, dot(wo_, n_));
     const double fresnel = fresnel_dielectric(cos_i, eta);
-    const Rgb weight = (1 / p_dielectric_) * m_.transmission;
+    const Q weight = (1 / p_dielectric_) * c_.transmission;
     if (u1 < fresnel) {
         out.wi = reflect(wo_, n_);
         out.weight = weight;
@@ -166,5 +206,8 @@ bool Bsdf::sample(double u_lobe, double u1, double u2, BsdfSample& out) const {
     out.weight = (1 / (eta * eta)) * weight;
     return true;
 }
+
+template class BsdfOf<Rgb>;
+template class BsdfOf<SampledSpectrum>;
 
 }  // namespace rayset::tracer

@@ -4,7 +4,9 @@
 #pragma once
 
 #include "tracer/render/rgb.h"
+#include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/sampling.h"
+#include "tracer/render/spectrum.h"
 
 namespace rayset::tracer {
 
@@ -18,42 +20,69 @@ struct Material {
     Rgb transmission;          // smooth dielectric lobe (Fresnel reflection + refraction)
     double ior = 1;
     Rgb emission;              // emitted radiance, renderer units (both sides)
+    // The reflectances above as spectra, for spectral transport (rgb_upsampling.h).
+    struct Spectra {
+        ReflectanceSpectrum diffuse, glossy, mirror_min, mirror_max, transmission;
+    } spectra;
 };
+
+// A material's reflectances in the quantity a path carries: the RGB triples, or the spectra
+// at the path's wavelengths.
+template <class Q>
+struct LobeColours {
+    Q diffuse, glossy, mirror_min, mirror_max, transmission;
+};
+LobeColours<Rgb> lobe_colours(const Material& m, NoWavelengths);
+LobeColours<SampledSpectrum> lobe_colours(const Material& m, const SampledWavelengths& wavelengths);
 
 // `emission_scale` converts W/(m^2 sr) to the renderer's radiance unit (see units.h).
 Material material_from_pov(const ObjectInstance& object, double emission_scale);
 
-struct BsdfSample {
+template <class Q>
+struct BsdfSampleOf {
     Vec3 wi;
-    Rgb weight;        // f |cos| / pdf, lobe choice included
+    Q weight;          // f |cos| / pdf, lobe choice included
     double pdf = 0;    // solid-angle pdf of the non-delta lobes (0 for a delta lobe)
     bool delta = false;
 };
 
-// A material at one surface point seen from direction `wo` (unit, pointing away from it).
-class Bsdf {
+// A material at one surface point seen from direction `wo` (unit, pointing away from it), in
+// the quantity Q a path carries (Rgb, or SampledSpectrum at the path's wavelengths). Lobes are
+// chosen from the RGB albedos in both cases, so both make the same sampling decisions.
+template <class Q>
+class BsdfOf {
 public:
     // `normal`: the surface's geometric normal, outward for closed shapes (dielectrics use it
     // to tell entering from leaving). `shading_normal` may differ (interpolated mesh normals).
-    Bsdf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo);
+    BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo,
+           const WavelengthsFor<Q>& wavelengths = {});
 
     bool has_smooth_lobes() const { return p_diffuse_ + p_glossy_ > 0; }
     // f |cos(wi)| of the non-delta lobes, and their sampling pdf.
-    Rgb eval(Vec3 wi) const;
+    Q eval(Vec3 wi) const;
+    // The same as the two factors of f |cos(wi)| = diffuse_factor x diffuse albedo +
+    // glossy_factor x glossy albedo, for light carried at other wavelengths (photons).
+    void smooth_factors(Vec3 wi, double& diffuse_factor, double& glossy_factor) const;
     double pdf(Vec3 wi) const;
-    bool sample(double u_lobe, double u1, double u2, BsdfSample& out) const;
+    bool sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out) const;
     // The normal on the side `wo` is on: where reflected rays leave from.
     Vec3 facing_normal() const { return n_; }
 
 private:
-    Rgb mirror_weight() const;
+    double mirror_fraction() const;  // of the way from mirror_min to mirror_max
+    Rgb mirror_weight_rgb() const;   // what the lobe choice uses
+    Q mirror_weight() const;
 
     const Material& m_;
+    LobeColours<Q> c_;
     Vec3 wo_, n_, ns_;
     bool entering_;
     double cos_o_;
     double p_diffuse_ = 0, p_glossy_ = 0, p_mirror_ = 0, p_dielectric_ = 0;
 };
+
+using Bsdf = BsdfOf<Rgb>;
+using BsdfSample = BsdfSampleOf<Rgb>;
 
 // Unpolarised Fresnel reflectance of a smooth dielectric interface; eta = n_t / n_i,
 // cos_i > 0 on the incident side.

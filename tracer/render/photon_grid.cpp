@@ -5,7 +5,9 @@
 
 namespace rayset::tracer {
 
-PhotonGrid::PhotonGrid(std::vector<Photon> photons, double radius) : photons_(std::move(photons)), radius_(radius) {
+template <class PhotonType>
+PhotonGridOf<PhotonType>::PhotonGridOf(std::vector<Photon> photons, double radius)
+    : photons_(std::move(photons)), radius_(radius) {
     table_size_ = std::max<size_t>(1, 2 * photons_.size());
     start_.assign(table_size_ + 1, 0);
     std::vector<size_t> slot(photons_.size());
@@ -23,5 +25,8 @@ PhotonGrid::PhotonGrid(std::vector<Photon> photons, double radius) : photons_(st
     for (size_t k = 0; k < order.size(); ++k) sorted[k] = photons_[order[k]];
     photons_ = std::move(sorted);
 }
+
+template class PhotonGridOf<PhotonOf<Rgb>>;
+template class PhotonGridOf<PhotonOf<SampledSpectrum>>;
 
 }  // namespace rayset::tracer

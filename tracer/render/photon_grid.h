@@ -9,20 +9,29 @@
 #include <vector>
 
 #include "tracer/render/rgb.h"
+#include "tracer/render/spectrum.h"
 
 namespace rayset::tracer {
 
-struct Photon {
+// The photon's wavelengths when spectral (a base, so that RGB photons hold nothing more).
+template <class Q> struct PhotonWavelengths {};
+template <> struct PhotonWavelengths<SampledSpectrum> { SampledWavelengths wavelengths; };
+
+template <class Q>
+struct PhotonOf : PhotonWavelengths<Q> {
     Vec3 position;
     Vec3 wi;      // unit, toward where the photon came from
     Vec3 normal;  // unit surface normal on the side the photon arrived at
-    Rgb power;    // W
+    Q power;      // W (per nm at its wavelengths when spectral)
     bool direct = false;  // no scattering since the source (only the naive model keeps these)
 };
+using Photon = PhotonOf<Rgb>;
 
-class PhotonGrid {
+template <class PhotonType>
+class PhotonGridOf {
 public:
-    PhotonGrid(std::vector<Photon> photons, double radius);
+    using Photon = PhotonType;
+    PhotonGridOf(std::vector<Photon> photons, double radius);
 
     double radius() const { return radius_; }
     size_t size() const { return photons_.size(); }
@@ -65,5 +74,7 @@ private:
     size_t table_size_ = 1;
     std::vector<uint32_t> start_;  // photons of slot h: [start_[h], start_[h + 1])
 };
+
+using PhotonGrid = PhotonGridOf<Photon>;
 
 }  // namespace rayset::tracer

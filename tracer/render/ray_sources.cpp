@@ -36,6 +36,17 @@ double conformal_scale(const Matrix4& m) {
 Rgb to_rgb(const lightmodel::LinearRgb& c) { return {c.r, c.g, c.b}; }
 static_assert(lightmodel::kRgbLumensPerWatt == kLumensPerWatt, "one photometric convention");
 
+lightmodel::SpectralQuery spectral_query(const SampledWavelengths& wavelengths) {
+    lightmodel::SpectralQuery query;
+    for (int i = 0; i < kWavelengths; ++i) query.nm[i] = wavelengths.nm[i];
+    return query;
+}
+SampledSpectrum spectrum_of(const lightmodel::SpectralQuery& query) {
+    SampledSpectrum s;
+    for (int i = 0; i < kWavelengths; ++i) s.v[i] = query.value[i];
+    return s;
+}
+
 bool ends_with(const std::string& s, const std::string& suffix) {
     return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
@@ -64,12 +75,34 @@ bool PlacedRaySource::intersect(Vec3 origin, Vec3 direction, double t_max, doubl
     return true;
 }
 
-Rgb PlacedRaySource::radiance(Vec3 origin, Vec3 direction) const {
+Rgb PlacedRaySource::radiance(Vec3 origin, Vec3 direction, NoWavelengths) const {
     const Local l = to_local(origin, direction);
     return radiance_scale_ * to_rgb(emitter_->L_colour(l.origin, l.direction, lightmodel::EmitterHit{}));
 }
 
-std::optional<SourceLiSample> PlacedRaySource::sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point) const {
+SampledSpectrum PlacedRaySource::radiance(Vec3 origin, Vec3 direction, const SampledWavelengths& wavelengths) const {
+    const Local l = to_local(origin, direction);
+    lightmodel::SpectralQuery query = spectral_query(wavelengths);
+    emitter_->L_spectral(l.origin, l.direction, lightmodel::EmitterHit{}, query);
+    return radiance_scale_ * spectrum_of(query);
+}
+
+std::optional<SourceLiSampleOf<SampledSpectrum>> PlacedRaySource::sample_Li(Vec3 ref, double u_cell, double u_voxel,
+                                                                             Vec3 u_point,
+                                                                             const SampledWavelengths& wavelengths) const {
+    lightmodel::SpectralQuery query = spectral_query(wavelengths);
+    const auto s = emitter_->sample_Li(to_local_.point(ref), u_cell, u_voxel, u_point, {}, &query);
+    if (!s) return std::nullopt;
+    SourceLiSampleOf<SampledSpectrum> out;
+    out.wi = analytic::normalized(to_world_.vector(s->wi));
+    out.distance = s->distance * k_;
+    out.Li = radiance_scale_ * spectrum_of(query);
+    out.pdf = s->pdf;
+    return out;
+}
+
+std::optional<SourceLiSample> PlacedRaySource::sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
+                                                         NoWavelengths) const {
     const auto s = emitter_->sample_Li(to_local_.point(ref), u_cell, u_voxel, u_point);
     if (!s) return std::nullopt;
     SourceLiSample out;
@@ -86,7 +119,25 @@ double PlacedRaySource::pdf_Li(Vec3 ref, Vec3 wi) const {
 
 SourcePhoton PlacedRaySource::sample_Le(const double u[7]) const {
     const lightmodel::LeSample s = emitter_->sample_Le(u);
-    return {to_world_.point(s.origin), analytic::normalized(to_world_.vector(s.direction)), to_rgb(s.flux_colour)};
+    return {to_world_.point(s.origin), analytic::normalized(to_world_.vector(s.direction)), to_rgb(s.flux_colour), {}};
+}
+
+SourcePhotonOf<SampledSpectrum> PlacedRaySource::sample_Le(const double u[7], double u_wavelength) const {
+    const lightmodel::LeSample s = emitter_->sample_Le(u);
+    SourcePhotonOf<SampledSpectrum> out;
+    out.origin = to_world_.point(s.origin);
+    out.direction = analytic::normalized(to_world_.vector(s.direction));
+    const double luminance = lightmodel::luminance(s.flux_colour);
+    if (s.spectrum && !s.spectrum->is_zero()) {
+        out.wavelengths = SampledWavelengths::sample(*s.spectrum, u_wavelength);
+        for (int i = 0; i < kWavelengths; ++i) out.flux.v[i] = luminance * (*s.spectrum)(out.wavelengths.nm[i]);
+    } else if (!s.spectrum) {
+        // One wavelength: its flux is what makes the photon's luminance (zero where V is).
+        out.wavelengths = SampledWavelengths::single(s.wavelength_nm);
+        const double v = lightmodel::photopic(s.wavelength_nm);
+        out.flux.v[0] = v > 0 ? luminance / v : 0;
+    }
+    return out;
 }
 
 RaySourceSet::RaySourceSet(const SceneDescription& scene, bool naive) : naive_(naive) {

@@ -12,7 +12,9 @@
 // Colour: light is carried as the model's linear-sRGB colour (lightmodel/colour.h), whose
 // luminance is the model's luminous flux under the renderer's 683 lm/W convention (rgb.h) and
 // whose chromaticity is that of each flux cell's spectrum. A source without spectra is grey;
-// one that carries only luminous flux (lm) emits grey light of flux / 683 W.
+// one that carries only luminous flux (lm) emits grey light of flux / 683 W. Spectral transport
+// (spectrum.h) gets the same light at a path's wavelengths: each cell's luminance weight times
+// its luminance-normalised spectrum (lightmodel/emission_spectrum.h), so luminance is the same.
 #pragma once
 
 #include <memory>
@@ -22,21 +24,27 @@
 
 #include "lightmodel/emitter.h"
 #include "tracer/render/rgb.h"
+#include "tracer/render/spectrum.h"
 #include "tracer/scene_language/scene_description.h"
 
 namespace rayset::tracer {
 
-struct SourceLiSample {
+template <class Q>
+struct SourceLiSampleOf {
     Vec3 wi;              // unit, toward the source, scene frame
     double distance = 0;  // to the body along wi (shadow ray length), scene units
-    Rgb Li;               // renderer radiance units
+    Q Li;                 // renderer radiance units (per nm when spectral)
     double pdf = 0;       // sr^-1, not including the choice of the source
 };
+using SourceLiSample = SourceLiSampleOf<Rgb>;
 
-struct SourcePhoton {
+template <class Q>
+struct SourcePhotonOf {
     Vec3 origin, direction;  // scene frame, direction unit
-    Rgb flux;                // W per channel, of this photon
+    Q flux;                  // W per channel (per nm when spectral), of this photon
+    WavelengthsFor<Q> wavelengths;
 };
+using SourcePhoton = SourcePhotonOf<Rgb>;
 
 // One ray source placed in the scene.
 class PlacedRaySource {
@@ -53,11 +61,21 @@ public:
 
     // The body along a scene ray (unit direction) before t_max; t in scene units.
     bool intersect(Vec3 origin, Vec3 direction, double t_max, double& t) const;
-    // Radiance arriving at `origin` from the body along `direction` (call after intersect).
-    Rgb radiance(Vec3 origin, Vec3 direction) const;
-    std::optional<SourceLiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point) const;
+    // Radiance arriving at `origin` from the body along `direction` (call after intersect),
+    // as RGB or at a path's wavelengths.
+    Rgb radiance(Vec3 origin, Vec3 direction, NoWavelengths = {}) const;
+    SampledSpectrum radiance(Vec3 origin, Vec3 direction, const SampledWavelengths& wavelengths) const;
+    std::optional<SourceLiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
+                                            NoWavelengths = {}) const;
+    std::optional<SourceLiSampleOf<SampledSpectrum>> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
+                                                               const SampledWavelengths& wavelengths) const;
     double pdf_Li(Vec3 ref, Vec3 wi) const;
+    // A photon; spectral photons draw their wavelengths from the emitted light's spectrum by
+    // `u_wavelength` (hero sampling, spectrum.h), or carry a ray's single wavelength.
     SourcePhoton sample_Le(const double u[7]) const;
+    SourcePhotonOf<SampledSpectrum> sample_Le(const double u[7], double u_wavelength) const;
+    // The whole light's spectrum weighted by luminance (zero when a camera cannot see it).
+    lightmodel::BinnedSpectrum spectrum() const { return emitter_->phi_spectrum(); }
 
 private:
     struct Local { Vec3 origin, direction; double scale; };  // scale: model mm per scene unit of t

@@ -32,6 +32,7 @@ struct RenderSettings {
     double photon_radius = 0;   // gather radius of the first pass, scene units; 0: 1/100 of the
                                 // diagonal of the box of the middle 90% (per axis) of the first pass's visible points
     bool naive_sources = false; // ray sources as their stored rays (the paper's Figure 1)
+    bool spectral = false;      // spectral transport (spectrum.h); also global_settings { spectral on }
 };
 
 // One light component of a bidirectional render, as its own image and receiver maps.

@@ -169,6 +169,7 @@ struct GlobalSettings {
     std::string length_unit = "mm";  // mm, cm, m, in, ft
     double millimetres_per_unit = 1.0;
     std::string integrator = "path";  // "path" or "bidirectional"
+    bool spectral = false;            // bidirectional: spectral transport (`spectral on`)
     int passes = 0;                   // 0: the renderer's default
     double time_limit = 0;            // seconds; 0: no limit
 };

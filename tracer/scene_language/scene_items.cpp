@@ -129,6 +129,9 @@ void Parser::parse_global_settings(const Token& keyword) {
             if (name != "path" && name != "bidirectional")
                 fail(at, fmt::format("unknown integrator \"{}\" (expected \"path\" or \"bidirectional\")", name));
             g.integrator = name;
+        } else if (w == "spectral") {
+            next();
+            g.spectral = parse_float("after 'spectral' (on or off)") != 0;
         } else if (w == "passes") {
             next();
             g.passes = parse_int("after 'passes'", 1);
