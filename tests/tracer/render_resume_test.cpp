@@ -147,7 +147,9 @@ TEST(RenderResume, BidirectionalIntegratorContinuesBitForBit) {
     // Every kind of light is in the accumulators compared.
     for (const RenderLayer& layer : r.layers) {
         EXPECT_GT(total_green(layer.film), 0) << layer.name;
-        if (layer.name != "direct_visibility") EXPECT_GT(total_green(layer.receivers.at(0).irradiance), 0) << layer.name;
+        if (layer.name != "direct_visibility") {
+            EXPECT_GT(total_green(layer.receivers.at(0).irradiance), 0) << layer.name;
+        }
     }
     EXPECT_GT(r.photons, 0u);
 }
