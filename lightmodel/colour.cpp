@@ -38,9 +38,7 @@ Xyz bin_colour_matching(const SpectralBins& bins, int bin) {
 LinearRgb colour_per_flux(const Xyz& xyz, double efficacy) {
     const double scale = efficacy / kRgbLumensPerWatt;
     if (!(xyz.y > 0)) return {scale, scale, scale};
-    const double x = xyz.x / xyz.y, z = xyz.z / xyz.y;  // Y = 1
-    LinearRgb c{3.2404542 * x - 1.5371385 - 0.4985314 * z, -0.9692660 * x + 1.8760108 + 0.0415560 * z,
-                0.0556434 * x - 0.2040259 + 1.0572252 * z};
+    LinearRgb c = to_linear_srgb({xyz.x / xyz.y, 1, xyz.z / xyz.y});  // Y = 1
     // Toward white (1, 1, 1), which has the same Y = 1, until the most negative channel is 0.
     const double lowest = std::min({c.r, c.g, c.b});
     if (lowest < 0) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "lightmodel/srgb.h"
 #include "tracer/scene_language/scene_description.h"
 
 namespace rayset::tracer {
@@ -18,12 +19,11 @@ inline double max_component(Rgb a) { return std::max({a.red, a.green, a.blue}); 
 inline double average(Rgb a) { return (a.red + a.green + a.blue) / 3; }
 inline bool is_black(Rgb a) { return a.red <= 0 && a.green <= 0 && a.blue <= 0; }
 
-// Luminous efficacy at 555 nm and the luminance weights of linear sRGB (ITU-R BT.709
-// primaries, D65): a radiometric triple R, G, B in W/... per channel has the luminous value
-// 683 lm/W * (0.2126 R + 0.7152 G + 0.0722 B). The renderer's channels are not spectral; this
-// is the convention that gives them photometric meaning (radiance -> cd/m^2, irradiance -> lx).
-inline constexpr double kLumensPerWatt = 683.0;
-inline double luminance_weight(Rgb a) { return 0.2126 * a.red + 0.7152 * a.green + 0.0722 * a.blue; }
+// The photometric convention of lightmodel/srgb.h: a radiometric triple R, G, B in W/... per
+// channel has the luminous value 683 lm/W x (0.2126 R + 0.7152 G + 0.0722 B); this is what gives
+// the channels photometric meaning (radiance -> cd/m^2, irradiance -> lx).
+inline constexpr double kLumensPerWatt = lightmodel::kRgbLumensPerWatt;
+inline double luminance_weight(Rgb a) { return lightmodel::luminance(a.red, a.green, a.blue); }
 inline double photometric(Rgb a) { return kLumensPerWatt * luminance_weight(a); }
 
 }  // namespace rayset::tracer

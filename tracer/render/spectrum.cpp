@@ -9,30 +9,6 @@ namespace {
 
 constexpr double kRange = kLambdaMax - kLambdaMin;
 
-// IEC 61966-2-1 linear sRGB -> XYZ; its middle row is the luminance weights of rgb.h.
-constexpr double kRgbToXyz[3][3] = {{0.4124, 0.3576, 0.1805}, {0.2126, 0.7152, 0.0722}, {0.0193, 0.1192, 0.9505}};
-
-struct Matrix3 {
-    double m[3][3];
-};
-
-Matrix3 inverse(const double a[3][3]) {
-    Matrix3 r;
-    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
-            r.m[i][j] = (a[i1][j1] * a[i2][j2] - a[i1][j2] * a[i2][j1]) / det;
-        }
-    return r;
-}
-
-const Matrix3& xyz_to_rgb_matrix() {
-    static const Matrix3 m = inverse(kRgbToXyz);
-    return m;
-}
-
 }  // namespace
 
 SampledWavelengths SampledWavelengths::sample(const lightmodel::BinnedSpectrum& density, double u) {
@@ -61,16 +37,11 @@ CieXyz cie_xyz(double nm) {
 }
 
 Rgb xyz_to_rgb(const CieXyz& c) {
-    const auto& m = xyz_to_rgb_matrix().m;
-    return {m[0][0] * c.x + m[0][1] * c.y + m[0][2] * c.z, m[1][0] * c.x + m[1][1] * c.y + m[1][2] * c.z,
-            m[2][0] * c.x + m[2][1] * c.y + m[2][2] * c.z};
+    const lightmodel::LinearRgb rgb = lightmodel::to_linear_srgb(c);
+    return {rgb.r, rgb.g, rgb.b};
 }
 
-CieXyz rgb_to_xyz(const Rgb& c) {
-    const auto& m = kRgbToXyz;
-    return {m[0][0] * c.red + m[0][1] * c.green + m[0][2] * c.blue, m[1][0] * c.red + m[1][1] * c.green + m[1][2] * c.blue,
-            m[2][0] * c.red + m[2][1] * c.green + m[2][2] * c.blue};
-}
+CieXyz rgb_to_xyz(const Rgb& c) { return lightmodel::to_xyz({c.red, c.green, c.blue}); }
 
 Rgb to_rgb(const SampledSpectrum& value, const SampledWavelengths& w) {
     const double pdf_sum = w.pdf_sum();

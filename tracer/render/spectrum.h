@@ -94,7 +94,7 @@ inline Rgb throughput_to_rgb(const Rgb& value, NoWavelengths) { return value; }
 Rgb throughput_to_rgb(const SampledSpectrum& value, const SampledWavelengths& wavelengths);
 
 // CIE 1931 colour matching at one wavelength: x-bar, V(lambda), z-bar (see above).
-struct CieXyz { double x = 0, y = 0, z = 0; };
+using CieXyz = lightmodel::Xyz;
 CieXyz cie_xyz(double nm);
 // XYZ (Y in the renderer's luminance weight) -> linear sRGB, and back.
 Rgb xyz_to_rgb(const CieXyz& xyz);

@@ -1,0 +1,31 @@
+// Linear sRGB (IEC 61966-2-1: ITU-R BT.709 primaries, D65 white) and the photometric convention
+// every RGB value of the project follows: a radiometric triple R, G, B (W/... per channel) has
+// the luminous value 683 lm/W x Y, with Y the middle row of the sRGB -> XYZ matrix
+// (0.2126 R + 0.7152 G + 0.0722 B). The light model's colours (colour.h) and the renderer's
+// channels (tracer/render/rgb.h, spectrum.h) both take these numbers from here.
+#pragma once
+
+namespace rayset::lightmodel {
+
+// The efficacy that makes a grey triple (1, 1, 1) of 1 W carry 683 lm.
+inline constexpr double kRgbLumensPerWatt = 683.0;
+// Linear sRGB -> CIE XYZ (the standard's four-digit matrix); row 1 is the luminance weights.
+inline constexpr double kSrgbToXyz[3][3] = {{0.4124, 0.3576, 0.1805}, {0.2126, 0.7152, 0.0722}, {0.0193, 0.1192, 0.9505}};
+
+struct LinearRgb {
+    double r = 0, g = 0, b = 0;
+    LinearRgb& operator+=(const LinearRgb& o) { r += o.r, g += o.g, b += o.b; return *this; }
+};
+inline LinearRgb operator*(double s, const LinearRgb& c) { return {s * c.r, s * c.g, s * c.b}; }
+inline double luminance(double r, double g, double b) {
+    return kSrgbToXyz[1][0] * r + kSrgbToXyz[1][1] * g + kSrgbToXyz[1][2] * b;
+}
+inline double luminance(const LinearRgb& c) { return luminance(c.r, c.g, c.b); }
+
+struct Xyz { double x = 0, y = 0, z = 0; };
+
+Xyz to_xyz(const LinearRgb& c);
+// The exact inverse of kSrgbToXyz: to_linear_srgb(to_xyz(c)) == c up to rounding.
+LinearRgb to_linear_srgb(const Xyz& c);
+
+}  // namespace rayset::lightmodel
