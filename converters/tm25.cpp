@@ -10,6 +10,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 namespace rayset {
 namespace tm25 {
@@ -336,21 +339,52 @@ void Tm25Decoder::fail_spectrum_index(uint64_t index, float value) const {
                     tables + " (the file has " + tables + " spectral tables, byte 76)");
 }
 
-// Records to columns, one column at a time: each loop is a strided load and a contiguous
-// store, with no test per ray on which columns the file has.
+// The first eight values of records of `count` >= 7 floats into up to eight columns (null: not
+// kept), four records at a time: two loads and a 4 x 4 transpose in registers instead of a load
+// and a store per value. Returns how many records it did; it stops early enough that reading
+// eight values never passes the end of the last record.
+size_t unpack_leading(const float* records, size_t n, size_t count, float* const to[8]) {
+    size_t i = 0;
+#if defined(__SSE2__)
+    for (; i + 5 <= n; i += 4) {
+        const float* r = records + i * count;
+        for (int half = 0; half < 2; ++half) {
+            __m128 a = _mm_loadu_ps(r + 4 * half), b = _mm_loadu_ps(r + count + 4 * half),
+                   c = _mm_loadu_ps(r + 2 * count + 4 * half), d = _mm_loadu_ps(r + 3 * count + 4 * half);
+            _MM_TRANSPOSE4_PS(a, b, c, d);
+            float* const* column = to + 4 * half;
+            if (column[0]) _mm_storeu_ps(column[0] + i, a);
+            if (column[1]) _mm_storeu_ps(column[1] + i, b);
+            if (column[2]) _mm_storeu_ps(column[2] + i, c);
+            if (column[3]) _mm_storeu_ps(column[3] + i, d);
+        }
+    }
+#endif
+    return i;
+}
+
+// Records to columns, straight from the read buffer: positions, directions and whatever the
+// record has next in one pass (unpack_leading), the other columns one strided loop each.
 void Tm25Decoder::unpack(const float* records, size_t n, RayColumns& chunk, size_t at) const {
     const size_t count = columns_.count;
-    auto column = [&](int offset, std::vector<float>& out, float absent) {
-        float* to = out.data() + at;
-        if (offset < 0) return std::fill(to, to + n, absent);
-        const float* from = records + offset;
-        for (size_t i = 0; i < n; ++i) to[i] = from[i * count];
-    };
-    column(0, chunk.ox, 0), column(1, chunk.oy, 0), column(2, chunk.oz, 0);
-    column(3, chunk.dx, 0), column(4, chunk.dy, 0), column(5, chunk.dz, 0);
-    column(columns_.radiant, chunk.radiant, kUnknown);
-    column(columns_.luminous, chunk.luminous, kUnknown);
-    column(columns_.wavelength, chunk.wavelength, kUnknown);
+    float* leading[8] = {chunk.ox.data() + at, chunk.oy.data() + at, chunk.oz.data() + at,
+                         chunk.dx.data() + at, chunk.dy.data() + at, chunk.dz.data() + at, nullptr, nullptr};
+    struct Optional {
+        int offset;
+        float* to;
+    } optional[3] = {{columns_.radiant, chunk.radiant.data() + at},
+                     {columns_.luminous, chunk.luminous.data() + at},
+                     {columns_.wavelength, chunk.wavelength.data() + at}};
+    for (const Optional& column : optional)
+        if (column.offset == 6 || column.offset == 7) leading[column.offset] = column.to;
+    for (size_t i = unpack_leading(records, n, count, leading); i < n; ++i)
+        for (int k = 0; k < 8; ++k)
+            if (leading[k]) leading[k][i] = records[i * count + k];
+    for (const Optional& column : optional) {
+        if (column.offset < 0) std::fill(column.to, column.to + n, kUnknown);
+        if (column.offset > 7)
+            for (size_t i = 0; i < n; ++i) column.to[i] = records[i * count + column.offset];
+    }
     int32_t* spectrum = chunk.spectrum.data() + at;
     if (columns_.spectrum < 0) {
         std::fill(spectrum, spectrum + n, -1);
