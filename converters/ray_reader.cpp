@@ -229,8 +229,8 @@ RayTotals RayReader::validate(RayColumns& chunk) const {
         for (size_t i = 0; i < n; ++i) radiant_flux[i] = float(double(radiant_flux[i]) * radiant_scale_);
     if (luminous && float(luminous_scale_) != 1)
         for (size_t i = 0; i < n; ++i) luminous_flux[i] = float(double(luminous_flux[i]) * luminous_scale_);
-    // Even and odd rays go to two sums: half as long a chain of dependent additions, and the
-    // two sums are one SIMD register. (The order is fixed: totals do not depend on the chunking.)
+    // Even and odd rays go to two sums: half as long a chain of dependent additions. An absent
+    // column is not summed.
     auto pair_sum = [n](const float* flux) {
         double even = 0, odd = 0;
         size_t i = 0;
