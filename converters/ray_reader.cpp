@@ -77,9 +77,11 @@ private:
             // The slot is this thread's until produced_ counts it.
             Slot& slot = slots_[produced_ % kSlots];
             try {
-                slot.end = !reader_.decoder_->decode(slot.columns, reader_.options_.chunk_size);
-                if (!slot.end) slot.totals = reader_.validate(slot.columns);
-                if (!slot.end && records_) slot.columns.to_rays(slot.records);
+                // Records are made from columns this thread keeps: a slot holds one form only.
+                RayColumns& columns = records_ ? decoded_ : slot.columns;
+                slot.end = !reader_.decoder_->decode(columns, reader_.options_.chunk_size);
+                if (!slot.end) slot.totals = reader_.validate(columns);
+                if (!slot.end && records_) columns.to_rays(slot.records);
             } catch (...) {
                 slot.error = std::current_exception();
             }
@@ -95,6 +97,7 @@ private:
 
     const RayReader& reader_;
     const bool records_;
+    RayColumns decoded_;  // when handing out records
     Slot slots_[kSlots];
     std::mutex mutex_;
     std::condition_variable filled_, free_;

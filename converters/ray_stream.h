@@ -78,7 +78,7 @@ struct RayTotals {
 
 // The validating, scaling reader over a decoder. The decoder and the validation run on a
 // thread of the reader's own, a few chunks ahead of read(); call the reader from one thread at
-// a time. Memory: about five chunks (RayReadOptions::chunk_size rays each).
+// a time. Memory: about six chunks (RayReadOptions::chunk_size rays each).
 class RayReader {
 public:
     RayReader(std::unique_ptr<RayDecoder> decoder, std::string path, RayReadOptions options);
