@@ -109,8 +109,9 @@ struct Accumulator {
     }
 
     void add_block(const float* const direction[3], const float* weight, const float* wavelengths, size_t n) {
-        // NaN wavelengths are "unknown": counted (where the file promises wavelengths) and skipped.
-        for (size_t i = 0; i < n; ++i) unknown += std::isnan(wavelengths[i]);
+        // NaN wavelengths are "unknown": counted where the file promises wavelengths, and skipped.
+        if (header.spectral == SpectralKind::per_ray_wavelength)
+            for (size_t i = 0; i < n; ++i) unknown += std::isnan(wavelengths[i]);
         wavelength.add(wavelengths, n);
         // Flux-weighted direction sums, in double.
         for (int k = 0; k < 3; ++k) {
