@@ -17,10 +17,10 @@ using Head = std::vector<uint8_t>;
 
 // Shared by the decoders of fixed-size f32 records after a header (LightTools binary, Zemax
 // binary, SPEOS): clears `chunk` and sets its first index, reads the next records (at most
-// max_rays, none past `count`) of `columns` floats each into `records`, sizes chunk.rays to
+// max_rays, none past `count`) of `columns` floats each into `records`, sizes `chunk` to
 // match and advances `next`. Returns the number of records read, 0 at the end.
 size_t read_f32_records(BinaryInput& in, size_t columns, uint64_t count, size_t max_rays, uint64_t& next,
-                        std::vector<float>& records, RayChunk& chunk);
+                        std::vector<float>& records, RayColumns& chunk);
 
 bool sniff_tm25(const Head& head, uint64_t size);
 std::unique_ptr<RayDecoder> open_tm25(const std::string& path);

@@ -81,7 +81,7 @@ public:
         header_.ray_count = count_rows(path, in_.offset(), in_.line_number() + 1, {}).rows;
     }
 
-    bool read(RayChunk& chunk, size_t max_rays) override {
+    bool decode(RayColumns& chunk, size_t max_rays) override {
         chunk.clear();
         chunk.first_index = next_;
         if (next_ >= header_.ray_count) return false;
@@ -94,14 +94,15 @@ public:
             if (fields.size() != columns_.size())
                 in_.fail_here(fmt::format("expected {} comma-separated values (one per column of line {}) but found {}",
                                           columns_.size(), column_line_, fields.size()));
-            Ray& ray = chunk.rays.emplace_back();
+            Ray ray;
             chunk.extra.resize(chunk.extra.size() + extras);
             float* extra = chunk.extra.data() + chunk.extra.size() - extras;
             for (size_t j = 0; j < fields.size(); ++j) store(ray, extra, columns_[j], fields[j]);
+            chunk.push_back(ray);
             lines_.push_back(in_.line_number());
             ++next_;
         }
-        return !chunk.rays.empty();
+        return chunk.size() > 0;
     }
 
     // Blank lines may sit between rows, so only the rays of the last chunk have a known line.

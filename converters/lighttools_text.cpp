@@ -66,7 +66,7 @@ public:
         count_rays();
     }
 
-    bool read(RayChunk& chunk, size_t max_rays) override {
+    bool decode(RayColumns& chunk, size_t max_rays) override {
         chunk.clear();
         chunk.first_index = next_;
         if (next_ >= header_.ray_count) return false;
@@ -83,15 +83,16 @@ public:
             for (size_t j = 0; j < columns; ++j)
                 if (!parse_float(fields[j], v[j]))
                     in_.fail_here(fmt::format("'{}' is not a number", fields[j]), column_of(line_, fields[j]));
-            Ray& ray = chunk.rays.emplace_back();
+            Ray ray;
             ray.origin = {v[0], v[1], v[2]};
             ray.direction = {v[3], v[4], v[5]};
             set_lighttools_flux(ray, layout_, v[6]);
             if (layout_.wavelength) ray.wavelength = v[7];
+            chunk.push_back(ray);
             lines_.push_back(in_.line_number());
             ++next_;
         }
-        return !chunk.rays.empty();
+        return chunk.size() > 0;
     }
 
     // Blank lines may sit between rows, so only the rays of the last chunk have a known line.

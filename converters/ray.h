@@ -121,4 +121,38 @@ struct RayChunk {
     void clear() { rays.clear(); extra.clear(); }
 };
 
+// The same run of rays one array per field, as decoders fill it and the reader validates it:
+// loops over contiguous floats vectorise, loops over 40-byte Ray records do not. A column the
+// file does not carry holds what Ray holds then (NaN, spectrum -1). `extra` as in RayChunk.
+struct RayColumns {
+    std::vector<float> ox, oy, oz, dx, dy, dz, radiant, luminous, wavelength;
+    std::vector<int32_t> spectrum;
+    std::vector<float> extra;
+    uint64_t first_index = 0;  // index in the file of the first ray
+
+    size_t size() const { return ox.size(); }
+    void resize(size_t n) {
+        for (auto* column : {&ox, &oy, &oz, &dx, &dy, &dz, &radiant, &luminous, &wavelength}) column->resize(n);
+        spectrum.resize(n);
+    }
+    void clear() { resize(0), extra.clear(); }
+    Ray ray(size_t i) const {
+        return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, radiant[i], luminous[i], wavelength[i], spectrum[i]};
+    }
+    void set(size_t i, const Ray& r) {
+        ox[i] = r.origin.x, oy[i] = r.origin.y, oz[i] = r.origin.z;
+        dx[i] = r.direction.x, dy[i] = r.direction.y, dz[i] = r.direction.z;
+        radiant[i] = r.radiant, luminous[i] = r.luminous, wavelength[i] = r.wavelength, spectrum[i] = r.spectrum;
+    }
+    void push_back(const Ray& r) { resize(size() + 1), set(size() - 1, r); }
+    // The rays as records (what encoders and most consumers take).
+    void to_rays(RayChunk& chunk) const {
+        const size_t n = size();
+        chunk.rays.resize(n);
+        for (size_t i = 0; i < n; ++i) chunk.rays[i] = ray(i);
+        chunk.extra = extra;
+        chunk.first_index = first_index;
+    }
+};
+
 }  // namespace rayset

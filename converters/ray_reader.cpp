@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <limits>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 namespace rayset {
@@ -21,7 +22,9 @@ namespace rayset {
 // the chunks before it, and read() throws it as it would have without the thread.
 class RayReader::ReadAhead {
 public:
-    explicit ReadAhead(const RayReader& reader) : reader_(reader), thread_([this] { run(); }) {}
+    // `records`: hand out RayChunk records (made here, on this thread), else the columns.
+    ReadAhead(const RayReader& reader, bool records) : reader_(reader), records_(records), thread_([this] { run(); }) {}
+    bool hands_out_records() const { return records_; }
 
     ~ReadAhead() {
         {
@@ -32,8 +35,9 @@ public:
         thread_.join();
     }
 
-    // The next chunk into `chunk` and its totals; false at the end. Rethrows a reading error.
-    bool take(RayChunk& chunk, RayTotals& totals) {
+    // The next chunk into `records` or `columns` (whichever this hands out) and its totals;
+    // false at the end. Rethrows a reading error.
+    bool take(RayChunk* records, RayColumns* columns, RayTotals& totals) {
         Slot* slot;
         {
             std::unique_lock<std::mutex> lock(mutex_);
@@ -42,7 +46,8 @@ public:
         }
         if (slot->error) std::rethrow_exception(slot->error);
         if (slot->end) return false;  // stays the last slot: later calls end again
-        std::swap(chunk, slot->chunk);
+        if (records_) std::swap(*records, slot->records);
+        else std::swap(*columns, slot->columns);
         totals = slot->totals;
         {
             std::lock_guard<std::mutex> lock(mutex_);
@@ -56,7 +61,8 @@ private:
     // Enough to ride out uneven chunk times; each is options.chunk_size rays.
     static constexpr uint64_t kSlots = 4;
     struct Slot {
-        RayChunk chunk;
+        RayColumns columns;
+        RayChunk records;
         RayTotals totals;
         bool end = false;
         std::exception_ptr error;
@@ -72,8 +78,11 @@ private:
             // The slot is this thread's until produced_ counts it.
             Slot& slot = slots_[produced_ % kSlots];
             try {
-                slot.end = !reader_.decoder_->read(slot.chunk, reader_.options_.chunk_size);
-                if (!slot.end) slot.totals = reader_.validate(slot.chunk);
+                // Records are made from columns this thread keeps: a slot holds one form only.
+                RayColumns& columns = records_ ? decoded_ : slot.columns;
+                slot.end = !reader_.decoder_->decode(columns, reader_.options_.chunk_size);
+                if (!slot.end) slot.totals = reader_.validate(columns);
+                if (!slot.end && records_) columns.to_rays(slot.records);
             } catch (...) {
                 slot.error = std::current_exception();
             }
@@ -88,6 +97,8 @@ private:
     }
 
     const RayReader& reader_;
+    const bool records_;
+    RayColumns decoded_;  // when handing out records
     Slot slots_[kSlots];
     std::mutex mutex_;
     std::condition_variable filled_, free_;
@@ -109,17 +120,26 @@ double RayReader::progress() const {
     return n ? std::min(1.0, double(totals_.rays) / double(n)) : 0.0;
 }
 
-bool RayReader::read(RayChunk& chunk) {
-    if (!ahead_) ahead_ = std::make_unique<ReadAhead>(*this);
+bool RayReader::read(RayChunk& chunk) { return take(&chunk, nullptr); }
+bool RayReader::read(RayColumns& chunk) { return take(nullptr, &chunk); }
+
+bool RayReader::take(RayChunk* records, RayColumns* columns) {
+    if (!ahead_) ahead_ = std::make_unique<ReadAhead>(*this, records != nullptr);
+    if (ahead_->hands_out_records() != (records != nullptr))
+        throw std::logic_error("RayReader: read() as records and as columns mixed on one reader");
     RayTotals chunk_totals;
-    if (ahead_->take(chunk, chunk_totals)) {
+    if (ahead_->take(records, columns, chunk_totals)) {
         totals_.radiant += chunk_totals.radiant;
         totals_.luminous += chunk_totals.luminous;
         totals_.rays += chunk_totals.rays;
         totals_.zero_flux_rays += chunk_totals.zero_flux_rays;
         return true;
     }
-    // End of the rays: checks that need all of them.
+    finish();
+    return false;
+}
+
+void RayReader::finish() {
     if (totals_.rays == 0) fail(path_, "the file holds no rays");
     const bool no_light = (!header_.has_radiant || totals_.radiant <= 0) && (!header_.has_luminous || totals_.luminous <= 0);
     if (no_light) fail(path_, "every ray has zero flux: the file carries no light");
@@ -136,7 +156,6 @@ bool RayReader::read(RayChunk& chunk) {
         check(header_.has_radiant, header_.stated_radiant, totals_.radiant, "radiant", "W");
         check(header_.has_luminous, header_.stated_luminous, totals_.luminous, "luminous", "lm");
     }
-    return false;
 }
 
 namespace {
@@ -159,71 +178,81 @@ struct RayTest {
                (length2 <= max_length2) & ((!radiant) | flux_ok(radiant_flux)) & ((!luminous) | flux_ok(luminous_flux)) &
                (std::isnan(wavelength) | flux_ok(wavelength)) & ((!per_ray_table) | ((spectrum >= 0) & (spectrum < tables)));
     }
-    bool passes(const Ray& r) const {
-        return passes(r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z, r.radiant,
-                      r.luminous, r.wavelength, r.spectrum);
-    }
 };
 
-// Whether every ray passes. The fields are regrouped one array each, a block at a time, so
-// that the test runs over arrays, which the compiler vectorises (over 40-byte Ray records it
-// does not); a block of 256 rays (10 KiB) stays in L1.
-bool all_pass(const Ray* rays, size_t n, const RayTest& test) {
-    constexpr size_t kBlock = 256;
-    float ox[kBlock], oy[kBlock], oz[kBlock], dx[kBlock], dy[kBlock], dz[kBlock], radiant[kBlock], luminous[kBlock],
-        wavelength[kBlock];
-    int32_t spectrum[kBlock];
+// Whether every ray passes: a loop per group of columns, each of which the compiler
+// vectorises, and none over a column the file does not carry.
+bool all_pass(const RayColumns& c, const RayTest& test) {
+    const size_t n = c.size();
+    const float *ox = c.ox.data(), *oy = c.oy.data(), *oz = c.oz.data();
+    const float *dx = c.dx.data(), *dy = c.dy.data(), *dz = c.dz.data();
     int pass = 1;
-    for (size_t start = 0; start < n; start += kBlock) {
-        const size_t count = std::min(kBlock, n - start);
-        for (size_t i = 0; i < count; ++i) {
-            const Ray& r = rays[start + i];
-            ox[i] = r.origin.x, oy[i] = r.origin.y, oz[i] = r.origin.z;
-            dx[i] = r.direction.x, dy[i] = r.direction.y, dz[i] = r.direction.z;
-            radiant[i] = r.radiant, luminous[i] = r.luminous, wavelength[i] = r.wavelength, spectrum[i] = r.spectrum;
-        }
-        for (size_t i = 0; i < count; ++i)
-            pass &= test.passes(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], radiant[i], luminous[i], wavelength[i], spectrum[i]);
+    for (size_t i = 0; i < n; ++i) {
+        const float length2 = dx[i] * dx[i] + dy[i] * dy[i] + dz[i] * dz[i];
+        pass &= finite_float(ox[i]) & finite_float(oy[i]) & finite_float(oz[i]) & (length2 >= test.min_length2) &
+                (length2 <= test.max_length2);
+    }
+    auto all_flux_ok = [n, &pass](const float* flux) {
+        for (size_t i = 0; i < n; ++i) pass &= flux_ok(flux[i]);
+    };
+    if (test.radiant) all_flux_ok(c.radiant.data());
+    if (test.luminous) all_flux_ok(c.luminous.data());
+    const float* wavelength = c.wavelength.data();
+    for (size_t i = 0; i < n; ++i) pass &= std::isnan(wavelength[i]) | flux_ok(wavelength[i]);
+    if (test.per_ray_table) {
+        const int32_t* spectrum = c.spectrum.data();
+        for (size_t i = 0; i < n; ++i) pass &= (spectrum[i] >= 0) & (spectrum[i] < test.tables);
     }
     return pass;
 }
 
 }  // namespace
 
-RayTotals RayReader::validate(RayChunk& chunk) const {
+RayTotals RayReader::validate(RayColumns& chunk) const {
     RayTotals totals;
     const double tolerance = options_.direction_tolerance;
     const RayTest test{float((1 - tolerance) * (1 - tolerance)), float((1 + tolerance) * (1 + tolerance)),
                        header_.has_radiant, header_.has_luminous, header_.spectral == SpectralKind::per_ray_table,
                        static_cast<int32_t>(header_.spectral_tables.size())};
-    Ray* rays = chunk.rays.data();
-    const size_t n = chunk.rays.size();
+    const size_t n = chunk.size();
     // Nearly every chunk is valid: one pass finds out, without stopping at the first bad ray;
     // only a chunk that fails is walked again to report (or, if allowed, fix) its first bad ray.
-    if (!all_pass(rays, n, test))
-        for (size_t i = 0; i < n; ++i)
-            if (!test.passes(rays[i])) check_ray(chunk, i);  // throws, or normalises an accepted direction
+    if (!all_pass(chunk, test))
+        for (size_t i = 0; i < n; ++i) {
+            const Ray r = chunk.ray(i);
+            if (!test.passes(r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z, r.radiant,
+                             r.luminous, r.wavelength, r.spectrum))
+                check_ray(chunk, i);  // throws, or normalises an accepted direction
+        }
 
     const bool radiant = header_.has_radiant, luminous = header_.has_luminous;
+    float* const radiant_flux = chunk.radiant.data();
+    float* const luminous_flux = chunk.luminous.data();
     // A scale within float rounding of 1 leaves the rays as they are.
     if (radiant && float(radiant_scale_) != 1)
-        for (size_t i = 0; i < n; ++i) rays[i].radiant = float(double(rays[i].radiant) * radiant_scale_);
+        for (size_t i = 0; i < n; ++i) radiant_flux[i] = float(double(radiant_flux[i]) * radiant_scale_);
     if (luminous && float(luminous_scale_) != 1)
-        for (size_t i = 0; i < n; ++i) rays[i].luminous = float(double(rays[i].luminous) * luminous_scale_);
-    // One pass for both sums and the zero-flux count. Even and odd rays go to two sums each:
-    // half as long a chain of dependent additions. An absent column is summed (NaN) but unused.
-    double radiant_sum[2] = {0, 0}, luminous_sum[2] = {0, 0};
-    uint64_t zero_flux = 0;
-    auto add = [&](const Ray& r, int parity) {
-        radiant_sum[parity] += r.radiant;
-        luminous_sum[parity] += r.luminous;
-        zero_flux += ((!radiant) | (r.radiant == 0)) & ((!luminous) | (r.luminous == 0));
+        for (size_t i = 0; i < n; ++i) luminous_flux[i] = float(double(luminous_flux[i]) * luminous_scale_);
+    // Even and odd rays go to two sums: half as long a chain of dependent additions. An absent
+    // column is not summed.
+    auto pair_sum = [n](const float* flux) {
+        double even = 0, odd = 0;
+        size_t i = 0;
+        for (; i + 1 < n; i += 2) even += flux[i], odd += flux[i + 1];
+        if (i < n) even += flux[i];
+        return even + odd;
     };
-    size_t i = 0;
-    for (; i + 1 < n; i += 2) add(rays[i], 0), add(rays[i + 1], 1);
-    if (i < n) add(rays[i], 0);
-    if (radiant) totals.radiant = radiant_sum[0] + radiant_sum[1];
-    if (luminous) totals.luminous = luminous_sum[0] + luminous_sum[1];
+    if (radiant) totals.radiant = pair_sum(radiant_flux);
+    if (luminous) totals.luminous = pair_sum(luminous_flux);
+    // Counted 32 bits wide, a block at a time, which vectorises (64-bit counts would not).
+    uint64_t zero_flux = 0;
+    for (size_t start = 0; start < n; start += size_t(1) << 30) {
+        const size_t end = std::min(n, start + (size_t(1) << 30));
+        uint32_t zero = 0;
+        for (size_t i = start; i < end; ++i)
+            zero += ((!radiant) | (radiant_flux[i] == 0)) & ((!luminous) | (luminous_flux[i] == 0));
+        zero_flux += zero;
+    }
     totals.zero_flux_rays = zero_flux;
     totals.rays = n;
     return totals;
@@ -231,8 +260,8 @@ RayTotals RayReader::validate(RayChunk& chunk) const {
 
 // The slow path for a ray the fast test did not pass: says exactly what is wrong, or (for a
 // direction the user allowed with --normalise) fixes it.
-void RayReader::check_ray(RayChunk& chunk, size_t i) const {
-    Ray& r = chunk.rays[i];
+void RayReader::check_ray(RayColumns& chunk, size_t i) const {
+    Ray r = chunk.ray(i);
     auto bad = [&](const std::string& what) {
         uint64_t index = chunk.first_index + i;
         fail(path_, decoder_->locate(index), fmt::format("ray {}: {}", index + 1, what));
@@ -256,6 +285,7 @@ void RayReader::check_ray(RayChunk& chunk, size_t i) const {
             bad(fmt::format("direction ({}, {}, {}) has length {:.6g}, not 1{}", d.x, d.y, d.z, length,
                             length == 0 ? "" : " (--normalise accepts and renormalises such directions)"));
         r.direction = {float(d.x / length), float(d.y / length), float(d.z / length)};
+        chunk.set(i, r);
     }
 }
 

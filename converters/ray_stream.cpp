@@ -107,16 +107,22 @@ bool totals_agree(double stated, double sum) {
 double total_to_write(double stated, double sum) { return totals_agree(stated, sum) ? stated : sum; }
 
 size_t read_f32_records(BinaryInput& in, size_t columns, uint64_t count, size_t max_rays, uint64_t& next,
-                        std::vector<float>& records, RayChunk& chunk) {
+                        std::vector<float>& records, RayColumns& chunk) {
     chunk.clear();
     chunk.first_index = next;
     if (next >= count) return 0;
     const size_t n = static_cast<size_t>(std::min<uint64_t>(std::max<size_t>(max_rays, 1), count - next));
     records.resize(n * columns);
     in.read(records.data(), records.size() * sizeof(float), "a ray record");
-    chunk.rays.resize(n);
+    chunk.resize(n);
     next += n;
     return n;
+}
+
+bool RayDecoder::read(RayChunk& chunk, size_t max_rays) {
+    const bool more = decode(scratch_, max_rays);
+    scratch_.to_rays(chunk);
+    return more;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -128,12 +134,12 @@ struct Sums {
 
 Sums sum_fluxes(RayDecoder& decoder, size_t chunk_size) {
     Sums sums;
-    RayChunk chunk;
-    while (decoder.read(chunk, chunk_size))
-        for (const Ray& r : chunk.rays) {
+    RayColumns chunk;
+    while (decoder.decode(chunk, chunk_size))
+        for (size_t i = 0; i < chunk.size(); ++i) {
             // Invalid values are reported with their location by the validating pass.
-            if (std::isfinite(r.radiant)) sums.radiant += r.radiant;
-            if (std::isfinite(r.luminous)) sums.luminous += r.luminous;
+            if (std::isfinite(chunk.radiant[i])) sums.radiant += chunk.radiant[i];
+            if (std::isfinite(chunk.luminous[i])) sums.luminous += chunk.luminous[i];
         }
     return sums;
 }

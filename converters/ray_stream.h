@@ -19,9 +19,11 @@ class RayDecoder {
 public:
     virtual ~RayDecoder() = default;
     const RayHeader& header() const { return header_; }
-    // Appends up to max_rays rays (and their extras) to `chunk` after clearing it and setting
-    // chunk.first_index. Returns false when no ray is left.
-    virtual bool read(RayChunk& chunk, size_t max_rays) = 0;
+    // Puts the next up to max_rays rays (and their extras) into `columns` after clearing it and
+    // setting columns.first_index. Returns false when no ray is left.
+    virtual bool decode(RayColumns& columns, size_t max_rays) = 0;
+    // The same rays as records, for tests and tools that look at one decoder's rays as they are.
+    bool read(RayChunk& chunk, size_t max_rays);
     // Where ray `index` is in the file, for error messages ("byte 36928", "line 14").
     virtual Location locate(uint64_t index) const = 0;
     // Per-ray fluxes that are relative by the format's definition (LightTools, Zemax, SPEOS):
@@ -30,6 +32,9 @@ public:
 
 protected:
     RayHeader header_;
+
+private:
+    RayColumns scratch_;  // for read()
 };
 
 // Writes one format. Call write() for every chunk, then finish(), which patches counts and
@@ -73,7 +78,7 @@ struct RayTotals {
 
 // The validating, scaling reader over a decoder. The decoder and the validation run on a
 // thread of the reader's own, a few chunks ahead of read(); call the reader from one thread at
-// a time. Memory: about five chunks (RayReadOptions::chunk_size rays each).
+// a time. Memory: about six chunks (RayReadOptions::chunk_size rays each).
 class RayReader {
 public:
     RayReader(std::unique_ptr<RayDecoder> decoder, std::string path, RayReadOptions options);
@@ -88,7 +93,10 @@ public:
     double luminous_scale() const { return luminous_scale_; }
 
     // Next chunk of validated rays; false at the end. Throws Error naming the ray's location.
+    // As records or as columns: a reader hands out one or the other, whichever its first call
+    // asks for (the read-ahead thread then makes that form).
     bool read(RayChunk& chunk);
+    bool read(RayColumns& chunk);
     const RayTotals& totals() const { return totals_; }  // of the rays read so far
     // Warnings found so far (stated total disagrees, zero-flux rays, ...), one line each.
     const std::vector<std::string>& warnings() const { return warnings_; }
@@ -99,8 +107,11 @@ private:
     friend std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options);
     class ReadAhead;
     // Checks and scales a chunk (on the read-ahead thread: it changes nothing but the chunk).
-    RayTotals validate(RayChunk& chunk) const;
-    void check_ray(RayChunk& chunk, size_t index) const;
+    RayTotals validate(RayColumns& chunk) const;
+    void check_ray(RayColumns& chunk, size_t index) const;
+    // Takes the next chunk from the read-ahead thread (started by the first call) and adds its totals.
+    bool take(RayChunk* records, RayColumns* columns);
+    void finish();  // the checks that need every ray, at the end
 
     std::unique_ptr<RayDecoder> decoder_;
     std::string path_;

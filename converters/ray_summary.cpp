@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <numeric>
 #include <optional>
 #include <vector>
@@ -56,26 +55,9 @@ Vec3f cell_centre(int cell) {
     return {float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)};
 }
 
-// Fields of up to kBlock rays regrouped one array per field: loops over 40-byte Ray records
-// are not vectorised, loops over contiguous floats are. 512 rays keep a block (18 KiB) in L1.
+// The rays are taken kBlock at a time (the chunk's columns are contiguous floats, which the
+// loops below vectorise over); 512 rays keep a block's columns in L1.
 constexpr size_t kBlock = 512;
-struct Block {
-    size_t n = 0;
-    alignas(64) float ox[kBlock], oy[kBlock], oz[kBlock], dx[kBlock], dy[kBlock], dz[kBlock], weight[kBlock],
-        wavelength[kBlock];
-    alignas(64) int32_t cell[kBlock];
-
-    void fill(const Ray* rays, size_t count, bool radiant) {
-        n = count;
-        for (size_t i = 0; i < n; ++i) {
-            const Ray& r = rays[i];
-            ox[i] = r.origin.x, oy[i] = r.origin.y, oz[i] = r.origin.z;
-            dx[i] = r.direction.x, dy[i] = r.direction.y, dz[i] = r.direction.z;
-            weight[i] = radiant ? r.radiant : r.luminous;
-            wavelength[i] = r.wavelength;
-        }
-    }
-};
 
 // Minimum and maximum of a field, kept position by position within the blocks and combined at
 // the end: updating them is a loop of independent elements, which the compiler vectorises (a
@@ -109,42 +91,43 @@ struct Accumulator {
         shared_efficacy = weights.shared_efficacy();
     }
 
-    void add(const RayChunk& chunk) {
-        const size_t n = chunk.rays.size();
+    void add(const RayColumns& chunk) {
+        const size_t n = chunk.size();
+        const float* weight = header.has_radiant ? chunk.radiant.data() : chunk.luminous.data();
         for (size_t start = 0; start < n; start += kBlock) {
-            const Ray* rays = chunk.rays.data() + start;
             const size_t count = std::min(kBlock, n - start);
-            block->fill(rays, count, header.has_radiant);
-            add_block(*block);
+            const float* direction[3] = {chunk.dx.data() + start, chunk.dy.data() + start, chunk.dz.data() + start};
+            origin[0].add(chunk.ox.data() + start, count), origin[1].add(chunk.oy.data() + start, count);
+            origin[2].add(chunk.oz.data() + start, count);
+            add_block(direction, weight + start, chunk.wavelength.data() + start, count);
             if (spectral_luminous && !shared_efficacy)
-                for (size_t i = 0; i < count; ++i) {
-                    const double lm = weights.luminous(rays[i]);
+                for (size_t i = start; i < start + count; ++i) {
+                    const double lm = weights.luminous(chunk.ray(i));
                     if (std::isfinite(lm)) luminous_from_spectrum += lm;
                 }
         }
     }
 
-    void add_block(Block& b) {
-        const size_t n = b.n;
-        origin[0].add(b.ox, n), origin[1].add(b.oy, n), origin[2].add(b.oz, n);
-        // NaN wavelengths are "unknown": counted (where the file promises wavelengths) and skipped.
-        for (size_t i = 0; i < n; ++i) unknown += std::isnan(b.wavelength[i]);
-        wavelength.add(b.wavelength, n);
+    void add_block(const float* const direction[3], const float* weight, const float* wavelengths, size_t n) {
+        // NaN wavelengths are "unknown": counted where the file promises wavelengths, and skipped.
+        if (header.spectral == SpectralKind::per_ray_wavelength)
+            for (size_t i = 0; i < n; ++i) unknown += std::isnan(wavelengths[i]);
+        wavelength.add(wavelengths, n);
         // Flux-weighted direction sums, in double.
-        const float* direction[3] = {b.dx, b.dy, b.dz};
         for (int k = 0; k < 3; ++k) {
             const float* d = direction[k];
             LaneSums sums = mean[k];  // a local: `d` might alias it as far as the compiler knows
             size_t i = 0;
             for (; i + kLanes <= n; i += kLanes)
-                for (size_t l = 0; l < kLanes; ++l) sums.v[l] += double(b.weight[i + l]) * d[i + l];
-            for (; i < n; ++i) sums.v[0] += double(b.weight[i]) * d[i];
+                for (size_t l = 0; l < kLanes; ++l) sums.v[l] += double(weight[i + l]) * d[i + l];
+            for (; i < n; ++i) sums.v[0] += double(weight[i]) * d[i];
             mean[k] = sums;
         }
         // The cells first (a loop the compiler vectorises), then the scattered stores.
-        for (size_t i = 0; i < n; ++i) b.cell[i] = coverage_cell(b.dx[i], b.dy[i], b.dz[i]);
+        const float *dx = direction[0], *dy = direction[1], *dz = direction[2];
+        for (size_t i = 0; i < n; ++i) cell[i] = coverage_cell(dx[i], dy[i], dz[i]);
         uint8_t* const seen = reached.data();  // a local: stores of bytes would force reloads of a member
-        for (size_t i = 0; i < n; ++i) seen[b.cell[i]] = 1;
+        for (size_t i = 0; i < n; ++i) seen[cell[i]] = 1;
     }
 
     const RayHeader& header;
@@ -152,7 +135,7 @@ struct Accumulator {
     bool spectral_luminous = false;
     std::optional<double> shared_efficacy;
     double luminous_from_spectrum = 0;  // when the efficacy differs from ray to ray
-    std::unique_ptr<Block> block = std::make_unique<Block>();
+    alignas(64) int32_t cell[kBlock];
     LaneSums mean[3];
     std::vector<uint8_t> reached = std::vector<uint8_t>(RaySummary::kCoverageCells, 0);
     Extremes origin[3];  // x, y, z
@@ -166,7 +149,7 @@ RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& 
     RaySummary s;
     const RayHeader& header = reader.header();
     Accumulator a(header);
-    RayChunk chunk;
+    RayColumns chunk;
     while (reader.read(chunk)) {
         a.add(chunk);
         if (progress) progress(reader.progress());

@@ -57,16 +57,17 @@ class ZemaxBinaryDecoder : public RayDecoder {
 public:
     explicit ZemaxBinaryDecoder(const std::string& path) : in_(path) { parse_header(); }
 
-    bool read(RayChunk& chunk, size_t max_rays) override {
+    bool decode(RayColumns& chunk, size_t max_rays) override {
         const size_t columns = layout_.columns();
         const size_t n = read_f32_records(in_, columns, header_.ray_count, max_rays, next_, buffer_, chunk);
         for (size_t i = 0; i < n; ++i) {
             const float* f = &buffer_[i * columns];
-            Ray& ray = chunk.rays[i];
+            Ray ray;
             ray.origin = {f[0], f[1], f[2]};
             ray.direction = {f[3], f[4], f[5]};
             set_zemax_flux(ray, layout_, f[6]);
             if (layout_.wavelength) ray.wavelength = zemax_um_to_nm(f[7]);
+            chunk.set(i, ray);
         }
         return n > 0;
     }

@@ -43,7 +43,7 @@ public:
         if (first.rays > 0) decide_columns(first);
     }
 
-    bool read(RayChunk& chunk, size_t max_rays) override {
+    bool decode(RayColumns& chunk, size_t max_rays) override {
         chunk.clear();
         chunk.first_index = next_;
         if (next_ >= header_.ray_count) {
@@ -52,12 +52,13 @@ public:
         }
         lines_.clear();
         const size_t n = static_cast<size_t>(std::min<uint64_t>(std::max<size_t>(max_rays, 1), header_.ray_count - next_));
-        chunk.rays.resize(n);
         for (size_t i = 0; i < n; ++i) {
             if (!pending_ && !next_nonblank(line_))
                 in_.fail_here(fmt::format("the file ends after {} rays, but its first line states {}", next_ + i, header_.ray_count));
             pending_ = false;
-            parse_row(line_, chunk.rays[i]);
+            Ray ray;
+            parse_row(line_, ray);
+            chunk.push_back(ray);
             lines_.push_back(in_.line_number());
         }
         next_ += n;

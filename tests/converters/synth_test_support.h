@@ -163,11 +163,11 @@ public:
         header_ = header;
         header_.ray_count = rays_.size();
     }
-    bool read(RayChunk& chunk, size_t max_rays) override {
+    bool decode(RayColumns& chunk, size_t max_rays) override {
         chunk.clear();
         chunk.first_index = next_;
-        while (next_ < rays_.size() && chunk.rays.size() < max_rays) chunk.rays.push_back(rays_[next_++]);
-        return !chunk.rays.empty();
+        while (next_ < rays_.size() && chunk.size() < max_rays) chunk.push_back(rays_[next_++]);
+        return chunk.size() > 0;
     }
     Location locate(uint64_t index) const override { return Location::byte(index * sizeof(Ray)); }
 
