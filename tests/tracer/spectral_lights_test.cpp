@@ -2,7 +2,7 @@
 // colour is an illuminant spectrum, the upsampled colour x the luminance-normalised D65. A grey
 // point light gives exactly the RGB mode's lux in expectation (I cos / d^2); a coloured one over
 // a coloured floor gives the closed forms with the upsampled spectra, integrated here at
-// 0.01 nm. Seeds are fixed; every statistical bound is kZ standard errors of the estimate.
+// 0.01 nm; an emitting grey furnace and a coloured background likewise. Seeds are fixed; every statistical bound is kZ standard errors of the estimate.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -163,6 +163,50 @@ TEST(SpectralLights, ColouredPointLightOnColouredFloorGivesTheUpsampledClosedFor
                 mean, se, expected, rgb_mode, 100 * (rgb_mode / expected - 1));
     EXPECT_GT(se, 0);
     EXPECT_NEAR(mean, expected, kZ * se + 3e-5 * expected);
+}
+
+// Luminance (cd/m^2) of an image's pixels: mean and standard error, pixels independent and
+// identically distributed.
+void image_luminance(const Film& film, double& mean, double& standard_error) {
+    const int n = film.nx() * film.ny();
+    double sum = 0, squares = 0;
+    for (int y = 0; y < film.ny(); ++y)
+        for (int x = 0; x < film.nx(); ++x) {
+            const double v = film.photometric_mean(x, y);
+            sum += v, squares += v * v;
+        }
+    mean = sum / n;
+    standard_error = std::sqrt(std::max(0.0, squares / n - mean * mean) / (n - 1));
+}
+
+TEST(SpectralLights, EmittingFurnaceAndBackgroundAreIlluminantSpectra) {
+    // Inside a closed grey sphere (diffuse 0.5 + mirror 0.3, emission 1 W/(m^2 sr) per channel)
+    // the radiance is the geometric series 1 / (1 - 0.8) = 5 at every wavelength of the D65
+    // shape, so the luminance is 683 x 5 cd/m^2 (the RGB furnace's figure, render_physics_test).
+    RenderSettings settings;
+    settings.width = settings.height = 16, settings.passes = 8, settings.seed = 4;
+    const RenderResult furnace = render_text(with_mode(R"(
+        camera { location <0,0,-50> look_at <0,0,0> angle 40 }
+        sphere { <0,0,0>, 100 pigment { rgb 1 } finish { diffuse 0.5 reflection 0.3 emission 1 ambient 0 } }
+    )", true), settings);
+    double mean = 0, se = 0;
+    image_luminance(furnace.film, mean, se);
+    std::printf("spectral furnace: %.6g cd/m^2 (se %.2g), closed form %.6g\n", mean, se, 683 * 5.0);
+    EXPECT_GT(se, 0);
+    EXPECT_NEAR(mean, 683 * 5.0, kZ * se);
+
+    // A coloured background seen directly: 683 x integral of V x its illuminant spectrum.
+    const Rgb sky{0.2, 0.4, 0.9};
+    const double sky_luminance = 683 * luminance_integral([&](double nm) { return illuminant(sky, nm); });
+    const RenderResult background = render_text(with_mode(R"(
+        camera { location <0,0,-50> look_at <0,0,0> angle 40 }
+        background { rgb <0.2, 0.4, 0.9> }
+    )", true), settings);
+    image_luminance(background.film, mean, se);
+    std::printf("spectral background: %.6g cd/m^2 (se %.2g), closed form %.6g, RGB mode %.6g (%+.3f%%)\n", mean, se,
+                sky_luminance, photometric(sky), 100 * (photometric(sky) / sky_luminance - 1));
+    EXPECT_GT(se, 0);
+    EXPECT_NEAR(mean, sky_luminance, kZ * se);
 }
 
 }  // namespace
