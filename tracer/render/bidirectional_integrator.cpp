@@ -38,19 +38,7 @@ lightmodel::BinnedSpectrum camera_density(const RaySourceSet& sources) {
         for (int k = 0; k < lightmodel::kSpectrumBins; ++k)
             light[size_t(k)] += sources.probability(j) * s.value(k) / s.integral();
     }
-    std::array<double, lightmodel::kSpectrumBins> density{};
-    bool any = false;
-    for (int k = 0; k < lightmodel::kSpectrumBins; ++k) {
-        double film = 0;  // mean of x + y + z over the bin
-        for (int i = 0; i < 10; ++i) {
-            const CieXyz c = cie_xyz(kLambdaMin + (k + (i + 0.5) / 10) * lightmodel::kSpectrumBinNm);
-            film += (c.x + c.y + c.z) / 10;
-        }
-        density[size_t(k)] = light[size_t(k)] * film;
-        any = any || density[size_t(k)] > 0;
-    }
-    if (!any) density.fill(1);
-    return lightmodel::BinnedSpectrum(density);
+    return film_wavelength_density(light);
 }
 
 // The photon's light reflected toward a camera path, made RGB at the photon's wavelengths.

@@ -33,7 +33,8 @@ constexpr uint64_t kPhotonBlock = 4096;
 constexpr uint64_t kMinimumPhotons = 65536;
 constexpr uint64_t kPhotonSeedSalt = 0x6A09E667F3BCC909ULL;  // photon streams apart from camera streams
 
-// Lights, emitting surfaces and the background are the path tracer's; skip it when there are none.
+// Lights, emitting surfaces and the background are the path tracer's (in the transport Q of the
+// pass); skip it when there are none.
 bool has_ordinary_light(const RenderScene& scene) {
     if (!scene.lights().empty() || !is_black(scene.background())) return true;
     for (size_t i = 0; i < scene.description().objects.size(); ++i)
@@ -94,7 +95,7 @@ RenderResult render_passes(const RenderScene& scene, const RaySourceSet& sources
     const int w = settings.width, h = settings.height;
     const PerspectiveCamera camera(scene.description().camera, w, h);
     const Integrator integrator(scene, sources);
-    const PathIntegrator path(scene);
+    const PathIntegratorOf<Q> path(scene);
     const bool ordinary = has_ordinary_light(scene);
     const double to_si = scene.units().per_square_metre();
 

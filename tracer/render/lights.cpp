@@ -84,6 +84,7 @@ LightSet::LightSet(const std::vector<LightSource>& lights, const SceneUnits& uni
         PointEmitter point;
         point.position = source.position;
         point.intensity = intensity;
+        point.intensity_spectrum = IlluminantSpectrum(intensity);
         point.spot = source.spotlight;
         if (point.spot) {
             const Vec3 axis = source.point_at - source.position;
@@ -116,6 +117,7 @@ LightSet::LightSet(const std::vector<LightSource>& lights, const SceneUnits& uni
         if (point.spot && dot(rect.normal, point.axis) < 0) rect.normal = -rect.normal;
         const double projected = (rect.two_sided ? 2 : 1) * kPi * rect.area;  // W per unit radiance
         rect.radiance = (solid_angle / projected) * intensity;
+        rect.radiance_spectrum = IlluminantSpectrum(rect.radiance);
         rects_.push_back(rect);
         rect_powers.push_back(average(intensity) * solid_angle);
     }
@@ -163,7 +165,9 @@ bool LightSet::sample(Vec3 p, double u_select, double u1, double u2, LightSample
         out.distance = length(d);
         if (out.distance == 0) return false;
         out.direction = (1 / out.distance) * d;
-        out.radiance = (light.spot_factor(-out.direction) / (out.distance * out.distance)) * light.intensity;
+        out.spectrum_factor = light.spot_factor(-out.direction) / (out.distance * out.distance);
+        out.radiance = out.spectrum_factor * light.intensity;
+        out.spectrum = &light.intensity_spectrum;
         out.pdf = chosen;
         out.delta = true;
         return true;
@@ -178,6 +182,8 @@ bool LightSet::sample(Vec3 p, double u_select, double u1, double u2, LightSample
     if (rect.two_sided) cos_light = std::abs(cos_light);
     if (cos_light <= 0) return false;
     out.radiance = rect.radiance;
+    out.spectrum = &rect.radiance_spectrum;
+    out.spectrum_factor = 1;
     out.pdf = chosen * out.distance * out.distance / (rect.area * cos_light);
     out.delta = false;
     return true;
@@ -206,8 +212,9 @@ bool crosses_box(Vec3 origin, Vec3 direction, double t_max, Vec3 low, Vec3 high)
 
 }  // namespace
 
-Rgb LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf) const {
-    Rgb sum;
+template <class Q>
+Q LightSet::crossed(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf, const WavelengthsFor<Q>& wavelengths) const {
+    Q sum{};
     if (rects_.empty() || !crosses_box(origin, direction, t_max, rects_low_, rects_high_)) return sum;
     for (size_t k = 0; k < rects_.size(); ++k) {
         double t = 0, cos_light = 0;
@@ -217,9 +224,23 @@ Rgb LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double
             const double light_pdf = selection_probability(points_.size() + k) * t * t / (rects_[k].area * cos_light);
             weight = power_heuristic(bsdf_pdf, light_pdf);
         }
-        sum += weight * rects_[k].radiance;
+        sum += weight * emitted(rects_[k].radiance, rects_[k].radiance_spectrum, wavelengths);
     }
     return sum;
+}
+
+Rgb LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf, NoWavelengths w) const {
+    return crossed<Rgb>(origin, direction, t_max, bsdf_pdf, w);
+}
+
+SampledSpectrum LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
+                                           const SampledWavelengths& wavelengths) const {
+    return crossed<SampledSpectrum>(origin, direction, t_max, bsdf_pdf, wavelengths);
+}
+
+SampledSpectrum arriving_radiance(const LightSample& s, const SampledWavelengths& wavelengths) {
+    if (!s.spectrum) return {};
+    return s.spectrum_factor * emitted(s.radiance, *s.spectrum, wavelengths);
 }
 
 }  // namespace rayset::tracer

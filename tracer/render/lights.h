@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tracer/render/rgb.h"
+#include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/units.h"
 
 namespace rayset::tracer {
@@ -13,6 +14,7 @@ namespace rayset::tracer {
 struct PointEmitter {
     Vec3 position;
     Rgb intensity;  // W/sr along the axis (spot) or in every direction
+    IlluminantSpectrum intensity_spectrum;  // the same for spectral transport
     bool spot = false;
     Vec3 axis;      // unit, toward point_at
     double cos_radius = 0, cos_falloff = 0, tightness = 0;
@@ -26,6 +28,7 @@ struct RectEmitter {
     bool two_sided = false;
     double area = 0;
     Rgb radiance;     // renderer units, W/(unit^2 sr)
+    IlluminantSpectrum radiance_spectrum;  // the same for spectral transport
     Vec3 dual1, dual2;  // dot(q, dual_k) is q's coordinate along edge_k, for q in the plane
     // Distance along (origin, unit direction) to the rectangle in (0, t_max), if crossed from an
     // emitting side; `cos_light` receives |cos| at the light.
@@ -38,7 +41,14 @@ struct LightSample {
     Rgb radiance;         // arriving radiance (area) or intensity / d^2 (point): divide by pdf
     double pdf = 0;       // solid-angle pdf including the choice of the light; 1 for points
     bool delta = false;   // point emitter: no MIS
+    // For spectral transport: the radiance is spectrum_factor x the light's spectrum.
+    const IlluminantSpectrum* spectrum = nullptr;
+    double spectrum_factor = 0;
 };
+
+// A light sample's radiance in the quantity a path carries.
+inline Rgb arriving_radiance(const LightSample& s, NoWavelengths) { return s.radiance; }
+SampledSpectrum arriving_radiance(const LightSample& s, const SampledWavelengths& wavelengths);
 
 class LightSet {
 public:
@@ -55,9 +65,14 @@ public:
     // Radiance of area lights a ray crosses before t_max, each weighted by the power heuristic
     // against `bsdf_pdf` (pass bsdf_pdf < 0 for rays no light sampling could have made:
     // camera rays and delta bounces, weight 1).
-    Rgb crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf) const;
+    // Spectral transport passes the path's wavelengths.
+    Rgb crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf, NoWavelengths = {}) const;
+    SampledSpectrum crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
+                                     const SampledWavelengths& wavelengths) const;
 
 private:
+    template <class Q>
+    Q crossed(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf, const WavelengthsFor<Q>& wavelengths) const;
     double selection_probability(size_t light_index) const { return probability_[light_index]; }
     size_t choose(double u_select) const;  // index into cdf_, proportional to power
 

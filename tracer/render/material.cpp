@@ -62,6 +62,7 @@ Material material_from_pov(const ObjectInstance& object, double emission_scale) 
     m.mirror_falloff = f.reflection_falloff;
     m.mirror_fresnel = f.reflection_fresnel;
     m.emission = emission_scale * (f.emission * pigment);
+    m.emission_spectrum = IlluminantSpectrum(m.emission);
     conserve_energy(m);
     m.spectra = {upsample_reflectance(m.diffuse), upsample_reflectance(m.glossy), upsample_reflectance(m.mirror_min),
                  upsample_reflectance(m.mirror_max), upsample_reflectance(m.transmission)};

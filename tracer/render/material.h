@@ -20,6 +20,7 @@ struct Material {
     Rgb transmission;          // smooth dielectric lobe (Fresnel reflection + refraction)
     double ior = 1;
     Rgb emission;              // emitted radiance, renderer units (both sides)
+    IlluminantSpectrum emission_spectrum;  // the same for spectral transport
     // The reflectances above as spectra, for spectral transport (rgb_upsampling.h).
     struct Spectra {
         ReflectanceSpectrum diffuse, glossy, mirror_min, mirror_max, transmission;

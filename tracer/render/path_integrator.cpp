@@ -1,34 +1,65 @@
-// Path tracing with next-event estimation and MIS (see path_integrator.h).
+// Path tracing with next-event estimation and MIS (see path_integrator.h), one code path for
+// RGB and spectral transport.
 #include "tracer/render/path_integrator.h"
 
 #include <limits>
+#include <type_traits>
 
 namespace rayset::tracer {
 
-PathIntegrator::PathIntegrator(const RenderScene& scene) : scene_(scene) {
-    for (const ObjectInstance& o : scene.description().objects) no_shadow_.push_back(o.no_shadow);
-}
-
 namespace {
+
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-}
 
-Rgb PathIntegrator::radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const {
-    PathState state;
-    state.origin = origin;
-    state.direction = direction;
-    return trace(state, rng, rays);
-}
-
-Rgb PathIntegrator::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
+const Material& white_lambertian() {
     static const Material white = [] {
         Material m;
         m.diffuse = {1, 1, 1};
+        m.spectra.diffuse = ReflectanceSpectrum::constant(1);
         return m;
     }();
-    const Bsdf bsdf(white, normal, normal, normal);
-    Rgb reflected = direct(bsdf, point, normal, rng, rays);
-    BsdfSample s;
+    return white;
+}
+
+// D65 x the film's weights: ordinary lights are D65 times a smooth factor (grey ones exactly D65).
+lightmodel::BinnedSpectrum ordinary_light_density() {
+    const lightmodel::BinnedSpectrum d65 = lightmodel::d65_spectrum();
+    std::array<double, lightmodel::kSpectrumBins> light{};
+    for (int k = 0; k < lightmodel::kSpectrumBins; ++k) light[size_t(k)] = d65.value(k);
+    return film_wavelength_density(light);
+}
+
+}  // namespace
+
+template <class Q>
+PathIntegratorOf<Q>::PathIntegratorOf(const RenderScene& scene) : scene_(scene) {
+    for (const ObjectInstance& o : scene.description().objects) no_shadow_.push_back(o.no_shadow);
+    if constexpr (std::is_same_v<Q, SampledSpectrum>) wavelength_density_ = ordinary_light_density();
+}
+
+template <class Q>
+typename PathIntegratorOf<Q>::Wavelengths PathIntegratorOf<Q>::sample_wavelengths(Pcg32& rng) const {
+    if constexpr (std::is_same_v<Q, SampledSpectrum>)
+        return SampledWavelengths::sample(wavelength_density_, rng.uniform());
+    else
+        return {};
+}
+
+template <class Q>
+Rgb PathIntegratorOf<Q>::radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const {
+    const Wavelengths wavelengths = sample_wavelengths(rng);
+    PathState state;
+    state.origin = origin;
+    state.direction = direction;
+    return to_rgb(trace(state, wavelengths, rng, rays), wavelengths);
+}
+
+template <class Q>
+Rgb PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
+    const Wavelengths wavelengths = sample_wavelengths(rng);
+    const BsdfOf<Q> bsdf(white_lambertian(), normal, normal, normal, wavelengths);
+    Q reflected = direct(bsdf, point, normal, wavelengths, rng, rays);
+    BsdfSampleOf<Q> s;
     const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
     if (bsdf.sample(u_lobe, u1, u2, s)) {
         PathState state;
@@ -38,29 +69,32 @@ Rgb PathIntegrator::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& ra
         state.beta = s.weight;
         state.bsdf_pdf = s.pdf;
         state.depth = 1;
-        reflected += trace(state, rng, rays);
+        reflected += trace(state, wavelengths, rng, rays);
     }
-    return kPi * reflected;
+    return kPi * to_rgb(reflected, wavelengths);
 }
 
-Rgb PathIntegrator::direct(const Bsdf& bsdf, Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
+template <class Q>
+Q PathIntegratorOf<Q>::direct(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
+                              Pcg32& rng, uint64_t& rays) const {
     const double u_select = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
     LightSample light;
     if (!scene_.lights().sample(point, u_select, u1, u2, light)) return {};
-    const Rgb f = bsdf.eval(light.direction);
+    const Q f = bsdf.eval(light.direction);
     if (is_black(f) || is_black(light.radiance)) return {};
     const Vec3 origin = scene_.offset(point, normal, light.direction);
     ++rays;
     if (scene_.occluded(origin, light.direction, 0, light.distance - scene_.epsilon())) return {};
     const double weight = light.delta ? 1 : power_heuristic(light.pdf, bsdf.pdf(light.direction));
-    return (weight / light.pdf) * (f * light.radiance);
+    return (weight / light.pdf) * (f * arriving_radiance(light, wavelengths));
 }
 
-Rgb PathIntegrator::trace(PathState& s, Pcg32& rng, uint64_t& rays) const {
+template <class Q>
+Q PathIntegratorOf<Q>::trace(PathState& s, const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const {
     const LightSet& lights = scene_.lights();
-    Rgb sum;
+    Q sum{};
     SurfaceHit hit;
-    BsdfSample sample;
+    BsdfSampleOf<Q> sample;
     for (;; ++s.depth) {
         ++rays;
         const bool found = scene_.intersect(s.origin, s.direction, 0, kInfinity, s.kind, hit);
@@ -72,18 +106,19 @@ Rgb PathIntegrator::trace(PathState& s, Pcg32& rng, uint64_t& rays) const {
                 ++rays;
                 t_block = scene_.nearest_shadow_caster(s.origin, s.direction, 0, kInfinity);
             }
-            sum += s.beta * lights.crossed_radiance(s.origin, s.direction, t_block + scene_.epsilon(), s.bsdf_pdf);
+            sum += s.beta * lights.crossed_radiance(s.origin, s.direction, t_block + scene_.epsilon(), s.bsdf_pdf,
+                                                    wavelengths);
         }
         if (!found) {
-            sum += s.beta * scene_.background();
+            sum += s.beta * emitted(scene_.background(), scene_.background_spectrum(), wavelengths);
             break;
         }
         const Material& material = scene_.material(hit.object);
-        if (!is_black(material.emission)) sum += s.beta * material.emission;
+        if (!is_black(material.emission)) sum += s.beta * emitted(material.emission, material.emission_spectrum, wavelengths);
         const Vec3 wo = -s.direction;
-        const Bsdf bsdf(material, hit.normal, hit.shading_normal, wo);
+        const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         if (bsdf.has_smooth_lobes() && !lights.empty())
-            sum += s.beta * direct(bsdf, hit.point, bsdf.facing_normal(), rng, rays);
+            sum += s.beta * direct(bsdf, hit.point, bsdf.facing_normal(), wavelengths, rng, rays);
 
         const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
         if (s.depth + 1 >= kMaxDepth || !bsdf.sample(u_lobe, u1, u2, sample) || is_black(sample.weight)) break;
@@ -100,5 +135,8 @@ Rgb PathIntegrator::trace(PathState& s, Pcg32& rng, uint64_t& rays) const {
     }
     return sum;
 }
+
+template class PathIntegratorOf<Rgb>;
+template class PathIntegratorOf<SampledSpectrum>;
 
 }  // namespace rayset::tracer

@@ -1,6 +1,11 @@
 // The reference integrator: unidirectional path tracing with next-event estimation, multiple
 // importance sampling (power heuristic) between light sampling and BSDF sampling for area
 // lights, and Russian roulette. Radiance and irradiance in renderer units (units.h).
+//
+// Q: what paths carry, Rgb or SampledSpectrum (spectral transport, spectrum.h). Spectral paths
+// draw their own hero wavelength in proportion to D65 x (x-bar + y-bar + z-bar), the film's
+// weights on the renderer's white, and see lights, emitting surfaces and the background as
+// illuminant spectra (rgb_upsampling.h: IlluminantSpectrum).
 #pragma once
 
 #include <cstdint>
@@ -11,11 +16,15 @@
 
 namespace rayset::tracer {
 
-class PathIntegrator {
+template <class Q>
+class PathIntegratorOf {
 public:
-    explicit PathIntegrator(const RenderScene& scene);
+    using Wavelengths = WavelengthsFor<Q>;
 
-    // Radiance arriving along a camera ray (origin, unit direction); `rays` counts every ray cast.
+    explicit PathIntegratorOf(const RenderScene& scene);
+
+    // Radiance arriving along a camera ray (origin, unit direction), linear sRGB whatever the
+    // transport; `rays` counts every ray cast.
     Rgb radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const;
     // Irradiance at `point` on a virtual receiver of unit `normal` (not part of the scene),
     // from the half-space the normal points into: pi times the radiance a white Lambertian
@@ -29,18 +38,23 @@ private:
     struct PathState {
         Vec3 origin, direction;
         RayKind kind = RayKind::camera;
-        Rgb beta{1, 1, 1};
+        Q beta = constant_value<Q>(1);
         double bsdf_pdf = -1;  // pdf of the sampled direction; < 0: no light sampling competes
         int depth = 0;
     };
+    // Spectral: a path's wavelengths (one draw of rng); RGB: none, and no draw.
+    Wavelengths sample_wavelengths(Pcg32& rng) const;
     // Follows the path from `state` (advanced in place: a by-value copy of this struct cost
     // more than some of the arithmetic per bounce).
-    Rgb trace(PathState& state, Pcg32& rng, uint64_t& rays) const;
+    Q trace(PathState& state, const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const;
     // Next-event estimation at a surface point (one light sample, MIS-weighted for area lights).
-    Rgb direct(const Bsdf& bsdf, Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
+    Q direct(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths, Pcg32& rng,
+             uint64_t& rays) const;
 
     const RenderScene& scene_;
     std::vector<uint8_t> no_shadow_;  // per object: read on every hit, kept apart from the big ObjectInstance
+    lightmodel::BinnedSpectrum wavelength_density_;  // spectral only
 };
+using PathIntegrator = PathIntegratorOf<Rgb>;
 
 }  // namespace rayset::tracer

@@ -54,6 +54,7 @@ RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
     lights_ = LightSet(scene.lights, units_);
     for (const ObjectInstance& o : scene.objects) materials_.push_back(material_from_pov(o, to_internal));
     background_ = to_internal * scene.background.rgb();
+    background_spectrum_ = IlluminantSpectrum(background_);
 
     device_ = rtcNewDevice(nullptr);
     if (!device_) throw Error("cannot create the Embree device");

@@ -51,6 +51,7 @@ public:
     const Material& material(int object) const { return materials_[object]; }
     const SceneUnits& units() const { return units_; }
     Rgb background() const { return background_; }  // renderer units
+    const IlluminantSpectrum& background_spectrum() const { return background_spectrum_; }  // spectral transport
     // Offset that moves a ray origin off the surface it starts on (scene units).
     double epsilon() const { return epsilon_; }
 
@@ -74,6 +75,7 @@ private:
     LightSet lights_;
     std::vector<Material> materials_;
     Rgb background_;
+    IlluminantSpectrum background_spectrum_;
     double epsilon_ = 1e-6;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;

@@ -1,6 +1,7 @@
 // Jakob-Hanika RGB -> spectrum upsampling (see rgb_upsampling.h).
 #include "tracer/render/rgb_upsampling.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -184,6 +185,24 @@ Rgb reflected_colour(const ReflectanceSpectrum& spectrum) {
         for (int k = 0; k < 3; ++k) rgb[k] += w.w[size_t(k)][size_t(i)] * rho;
     }
     return {rgb[0], rgb[1], rgb[2]};
+}
+
+IlluminantSpectrum::IlluminantSpectrum(Rgb colour) {
+    colour = {std::max(0.0, colour.red), std::max(0.0, colour.green), std::max(0.0, colour.blue)};
+    scale_ = std::max({colour.red, colour.green, colour.blue});
+    if (scale_ > 0) shape_ = upsample_reflectance((1 / scale_) * colour);
+}
+
+double IlluminantSpectrum::operator()(double nm) const {
+    static const lightmodel::BinnedSpectrum d65 = lightmodel::d65_spectrum();
+    return scale_ > 0 ? scale_ * shape_(nm) * d65(nm) : 0;
+}
+
+SampledSpectrum emitted(const Rgb& colour, const IlluminantSpectrum& spectrum, const SampledWavelengths& w) {
+    SampledSpectrum s;
+    if (is_black(colour)) return s;
+    for (int i = 0; i < kWavelengths; ++i) s.v[i] = spectrum(w.nm[i]);
+    return s;
 }
 
 }  // namespace rayset::tracer

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "tracer/render/rgb.h"
+#include "tracer/render/spectrum.h"
 
 namespace rayset::tracer {
 
@@ -34,5 +35,28 @@ ReflectanceSpectrum upsample_reflectance(Rgb colour);
 // channel is the integral of its sRGB matching function x D65 x rho, normalised so that
 // rho = 1 gives exactly (1, 1, 1).
 Rgb reflected_colour(const ReflectanceSpectrum& spectrum);
+
+// An RGB emission (a POV-Ray light's colour, an emitting surface, the background) as a
+// spectrum, pbrt-v4's RGBIlluminantSpectrum: m x rho(lambda) x D65(lambda), with m the largest
+// channel, rho the fitted reflectance of colour / m and D65 the renderer's grey light (the
+// luminance-normalised D65 of lightmodel::d65_spectrum, which ray sources of unknown
+// wavelengths also emit). A grey (c, c, c) thus has exactly luminance c, as in RGB mode; a
+// coloured one has its colour's luminance up to the fit (reflected_colour).
+class IlluminantSpectrum {
+public:
+    IlluminantSpectrum() = default;  // black
+    explicit IlluminantSpectrum(Rgb colour);  // negative channels read as 0
+
+    double operator()(double nm) const;
+
+private:
+    ReflectanceSpectrum shape_;
+    double scale_ = 0;
+};
+
+// An emission in the quantity a path carries: the RGB triple, or its spectrum at the path's
+// wavelengths.
+inline Rgb emitted(const Rgb& colour, const IlluminantSpectrum&, NoWavelengths) { return colour; }
+SampledSpectrum emitted(const Rgb& colour, const IlluminantSpectrum& spectrum, const SampledWavelengths& wavelengths);
 
 }  // namespace rayset::tracer

@@ -30,6 +30,22 @@ SampledWavelengths SampledWavelengths::single(double nm) {
     return w;
 }
 
+lightmodel::BinnedSpectrum film_wavelength_density(const std::array<double, lightmodel::kSpectrumBins>& light) {
+    std::array<double, lightmodel::kSpectrumBins> density{};
+    bool any = false;
+    for (int k = 0; k < lightmodel::kSpectrumBins; ++k) {
+        double film = 0;  // mean of x + y + z over the bin
+        for (int i = 0; i < 10; ++i) {
+            const CieXyz c = cie_xyz(kLambdaMin + (k + (i + 0.5) / 10) * lightmodel::kSpectrumBinNm);
+            film += (c.x + c.y + c.z) / 10;
+        }
+        density[size_t(k)] = light[size_t(k)] * film;
+        any = any || density[size_t(k)] > 0;
+    }
+    if (!any) density.fill(1);
+    return lightmodel::BinnedSpectrum(density);
+}
+
 CieXyz cie_xyz(double nm) {
     const lightmodel::Xyz c = lightmodel::colour_matching(nm);
     const bool inside = nm >= kLambdaMin && nm <= kLambdaMax;

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "lightmodel/emission_spectrum.h"
@@ -71,6 +72,11 @@ struct SampledWavelengths {
     static SampledWavelengths single(double nm);
     double pdf_sum() const { return double(pdf[0]) + pdf[1] + pdf[2] + pdf[3]; }
 };
+
+// A hero-wavelength density for paths carrying light of spectral shape `light` (per
+// lightmodel bin, any scale): light x (x-bar + y-bar + z-bar), the film's weights; uniform
+// where that is zero everywhere.
+lightmodel::BinnedSpectrum film_wavelength_density(const std::array<double, lightmodel::kSpectrumBins>& light);
 
 // RGB transport carries no wavelengths; overloads on this type keep one code path for both.
 struct NoWavelengths {};
