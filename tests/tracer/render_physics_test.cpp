@@ -135,6 +135,30 @@ TEST(RenderPointLight, ReceiverOnPlaneRecordsInverseSquareCosine) {
         }
 }
 
+TEST(RenderPointLight, CameraSeesAPlaneWithLambertsLuminance) {
+    // A white diffuse plane (albedo 0.7) 1 m from a point light of I = 2 W/sr, seen straight on
+    // through a 1 degree camera between them: L = albedo / pi x I / d^2 in every channel
+    // (nothing else in the scene, so no interreflection). The same for a plane in POV-Ray's two
+    // orientations and for a finite slab in its place: the infinite plane must not differ.
+    // Bound: the 1 degree field reaches 4.4 mm off the axis, where cos / d^2 is lower by at
+    // most 6e-5 (the image mean by less); a shadow ray lost to self-intersection costs the
+    // whole pixel sample (before the fix here, 17% of them on the plane).
+    RenderSettings settings;
+    settings.width = settings.height = 8, settings.passes = 16, settings.seed = 2;
+    const double expected = 0.7 / analytic::kPi * 2 / (1.0 * 1.0);
+    for (const char* surface : {"plane { z, 0 pigment { rgb 0.7 } finish { diffuse 1 } }",
+                                "plane { -z, 0 pigment { rgb 0.7 } finish { diffuse 1 } }",
+                                "box { <-100, -100, 0>, <100, 100, 10> pigment { rgb 0.7 } finish { diffuse 1 } }"}) {
+        const RenderResult r = render_text(std::string(R"(
+            camera { location <0, 0, -500> look_at <0, 0, 0> angle 1 }
+            light_source { <0, 0, -1000> color rgb 2 }
+        )") + surface, settings);
+        double mean = 0, standard_error = 0;
+        image_mean(r.film, mean, standard_error);
+        EXPECT_NEAR(mean, expected, kZ * standard_error + 6e-5 * expected) << surface;
+    }
+}
+
 TEST(RenderPointLight, SpotlightFollowsPovRayFalloff) {
     // POV-Ray's spotlight: full intensity inside `radius`, none beyond `falloff`, a smoothstep
     // in cos(angle) between. Receiver cells straight below (inside radius) get I / d^2, cells

@@ -284,6 +284,10 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
     }
     const QuadricPrim& prim = leaf.quadrics[h.primID];
     hit.object = prim.object;
+    // Embree hands t back in float: at a distance t the point may miss the plane by t x 6e-8,
+    // more than the offset of a scene whose only geometry is an infinite plane (extent 1), and
+    // its shadow rays would then start behind the plane. Put the point back on the plane.
+    if (!prim.sphere) hit.point = hit.point - (analytic::dot(prim.normal, hit.point) - prim.distance) * prim.normal;
     hit.normal = prim.sphere ? unit_or_up(transpose_times(prim.world_to_unit, prim.world_to_unit.point(hit.point))) : prim.normal;
     hit.shading_normal = hit.normal;
 }
