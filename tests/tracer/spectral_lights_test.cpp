@@ -140,7 +140,6 @@ TEST(SpectralLights, ColouredPointLightOnColouredFloorGivesTheUpsampledClosedFor
 
     // The floor's luminance: pixels straight below the light (a slab's face at z = 0 facing the
     // light at z = -1000, camera between them) are independent, identically distributed to 3e-5.
-    // (A slab, not a plane: an infinite plane renders about 19% darker in RGB mode as well.)
     RenderSettings image = settings;
     image.render_image = true, image.width = image.height = 16, image.passes = 8;
     const std::string view_scene = R"(
