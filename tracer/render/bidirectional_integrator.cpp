@@ -17,16 +17,6 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // that light on a neighbouring wall near a corner is not spread onto this one.
 constexpr double kSameSurfaceCos = 0.9;
 
-const Material& white_lambertian() {
-    static const Material white = [] {
-        Material m;
-        m.diffuse = {1, 1, 1};
-        m.spectra.diffuse = ReflectanceSpectrum::constant(1);
-        return m;
-    }();
-    return white;
-}
-
 // Camera wavelengths: camera paths carry only the ray sources' light (photons bring the
 // rest), so they are drawn in proportion to the sources' spectrum (by luminance) times the sum
 // of the colour matching functions, the film's weights; uniform when no source can be seen.
@@ -72,14 +62,6 @@ BidirectionalIntegratorOf<Q>::BidirectionalIntegratorOf(const RenderScene& scene
 }
 
 template <class Q>
-typename BidirectionalIntegratorOf<Q>::Wavelengths BidirectionalIntegratorOf<Q>::camera_wavelengths(Pcg32& rng) const {
-    if constexpr (std::is_same_v<Q, SampledSpectrum>)
-        return SampledWavelengths::sample(camera_wavelength_density_, rng.uniform());
-    else
-        return {};
-}
-
-template <class Q>
 Q BidirectionalIntegratorOf<Q>::sample_sources(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
                                                const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const {
     if (sources_.empty()) return {};
@@ -117,7 +99,7 @@ Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, doub
 template <class Q>
 CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng,
                                                        uint64_t& rays, std::vector<Point>& visible) const {
-    const Wavelengths wavelengths = camera_wavelengths(rng);
+    const Wavelengths wavelengths = sample_wavelengths<Q>(camera_wavelength_density_, rng);
     Q direct_visibility{}, primary{};
     Q beta = constant_value<Q>(1);
     RayKind kind = RayKind::camera;
@@ -167,7 +149,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
 
 template <class Q>
 Rgb BidirectionalIntegratorOf<Q>::receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
-    const Wavelengths wavelengths = camera_wavelengths(rng);
+    const Wavelengths wavelengths = sample_wavelengths<Q>(camera_wavelength_density_, rng);
     const BsdfOf<Q> bsdf(white_lambertian(), normal, normal, normal, wavelengths);
     Q reflected_light = sample_sources(bsdf, point, normal, wavelengths, rng, rays);
     BsdfSampleOf<Q> s;

@@ -80,7 +80,6 @@ public:
     static constexpr int kRouletteDepth = 3;
 
 private:
-    Wavelengths camera_wavelengths(Pcg32& rng) const;
     Q sample_sources(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths, Pcg32& rng,
                      uint64_t& rays) const;
     // Radiance of every body a BSDF-sampled ray meets before the first surface, each weighted

@@ -211,4 +211,14 @@ bool BsdfOf<Q>::sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out
 template class BsdfOf<Rgb>;
 template class BsdfOf<SampledSpectrum>;
 
+const Material& white_lambertian() {
+    static const Material white = [] {
+        Material m;
+        m.diffuse = {1, 1, 1};
+        m.spectra.diffuse = ReflectanceSpectrum::constant(1);
+        return m;
+    }();
+    return white;
+}
+
 }  // namespace rayset::tracer

@@ -36,6 +36,10 @@ struct LobeColours {
 LobeColours<Rgb> lobe_colours(const Material& m, NoWavelengths);
 LobeColours<SampledSpectrum> lobe_colours(const Material& m, const SampledWavelengths& wavelengths);
 
+// A white Lambertian surface (albedo 1 in every channel and at every wavelength): what an
+// irradiance receiver stands for.
+const Material& white_lambertian();
+
 // `emission_scale` converts W/(m^2 sr) to the renderer's radiance unit (see units.h).
 Material material_from_pov(const ObjectInstance& object, double emission_scale);
 

@@ -11,16 +11,6 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-const Material& white_lambertian() {
-    static const Material white = [] {
-        Material m;
-        m.diffuse = {1, 1, 1};
-        m.spectra.diffuse = ReflectanceSpectrum::constant(1);
-        return m;
-    }();
-    return white;
-}
-
 // D65 x the film's weights: ordinary lights are D65 times a smooth factor (grey ones exactly D65).
 lightmodel::BinnedSpectrum ordinary_light_density() {
     const lightmodel::BinnedSpectrum d65 = lightmodel::d65_spectrum();
@@ -38,16 +28,8 @@ PathIntegratorOf<Q>::PathIntegratorOf(const RenderScene& scene) : scene_(scene) 
 }
 
 template <class Q>
-typename PathIntegratorOf<Q>::Wavelengths PathIntegratorOf<Q>::sample_wavelengths(Pcg32& rng) const {
-    if constexpr (std::is_same_v<Q, SampledSpectrum>)
-        return SampledWavelengths::sample(wavelength_density_, rng.uniform());
-    else
-        return {};
-}
-
-template <class Q>
 Rgb PathIntegratorOf<Q>::radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const {
-    const Wavelengths wavelengths = sample_wavelengths(rng);
+    const Wavelengths wavelengths = sample_wavelengths<Q>(wavelength_density_, rng);
     PathState state;
     state.origin = origin;
     state.direction = direction;
@@ -56,7 +38,7 @@ Rgb PathIntegratorOf<Q>::radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint6
 
 template <class Q>
 Rgb PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
-    const Wavelengths wavelengths = sample_wavelengths(rng);
+    const Wavelengths wavelengths = sample_wavelengths<Q>(wavelength_density_, rng);
     const BsdfOf<Q> bsdf(white_lambertian(), normal, normal, normal, wavelengths);
     Q reflected = direct(bsdf, point, normal, wavelengths, rng, rays);
     BsdfSampleOf<Q> s;

@@ -42,8 +42,6 @@ private:
         double bsdf_pdf = -1;  // pdf of the sampled direction; < 0: no light sampling competes
         int depth = 0;
     };
-    // Spectral: a path's wavelengths (one draw of rng); RGB: none, and no draw.
-    Wavelengths sample_wavelengths(Pcg32& rng) const;
     // Follows the path from `state` (advanced in place: a by-value copy of this struct cost
     // more than some of the arithmetic per bounce).
     Q trace(PathState& state, const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const;

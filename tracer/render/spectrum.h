@@ -16,7 +16,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
 
+#include "converters/random.h"
 #include "lightmodel/emission_spectrum.h"
 #include "tracer/render/rgb.h"
 
@@ -85,6 +87,15 @@ template <class Q> struct WavelengthsOf;
 template <> struct WavelengthsOf<Rgb> { using type = NoWavelengths; };
 template <> struct WavelengthsOf<SampledSpectrum> { using type = SampledWavelengths; };
 template <class Q> using WavelengthsFor = typename WavelengthsOf<Q>::type;
+
+// A path's wavelengths, hero drawn from `density`; RGB transport draws nothing.
+template <class Q>
+WavelengthsFor<Q> sample_wavelengths(const lightmodel::BinnedSpectrum& density, Pcg32& rng) {
+    if constexpr (std::is_same_v<Q, SampledSpectrum>)
+        return SampledWavelengths::sample(density, rng.uniform());
+    else
+        return {};
+}
 
 // A radiometric quantity (radiance, irradiance, flux) at a path's wavelengths -> linear sRGB,
 // the path's estimate of the spectral integrals (see the top of this file).
