@@ -39,6 +39,8 @@ public:
     }
 
     Location locate(uint64_t index) const override { return Location::byte(kHeaderSize + index * record_bytes()); }
+    bool can_seek() const override { return true; }
+    void seek(uint64_t index) override { in_.seek(locate(index).value), next_ = index; }
     bool flux_is_relative() const override { return true; }
 
 private:

@@ -1,9 +1,11 @@
 // RayReader: validation, flux scaling and totals over a decoder, with decoding and validating
-// done ahead on a second thread (open_rays() and detection are in ray_stream.cpp).
+// done ahead on a second thread (read) or in parts on several (read_in_parts); open_rays()
+// and detection are in ray_stream.cpp.
 #include "converters/ray_stream.h"
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
 #include <condition_variable>
 #include <exception>
 #include <fmt/format.h>
@@ -11,20 +13,19 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 namespace rayset {
 
 // ---------------------------------------------------------------------------------------------
 // Decoding and validating run on a thread of their own, a few chunks ahead of read(), so that
-// they overlap with whatever the caller does with the rays (summing, encoding, building). The
-// chunks circulate: read() swaps the caller's chunk for a full one, and the emptied one is
-// refilled, so memory stays at kSlots + 1 chunks. An error is handed over in order, after
+// they overlap with whatever the caller does with the rays (encoding, building). The chunks
+// circulate: read() swaps the caller's chunk for a full one, and the emptied one is refilled,
+// so memory stays at kSlots + 1 chunks. An error is handed over in order, after
 // the chunks before it, and read() throws it as it would have without the thread.
 class RayReader::ReadAhead {
 public:
-    // `records`: hand out RayChunk records (made here, on this thread), else the columns.
-    ReadAhead(const RayReader& reader, bool records) : reader_(reader), records_(records), thread_([this] { run(); }) {}
-    bool hands_out_records() const { return records_; }
+    explicit ReadAhead(const RayReader& reader) : reader_(reader), thread_([this] { run(); }) {}
 
     ~ReadAhead() {
         {
@@ -35,9 +36,8 @@ public:
         thread_.join();
     }
 
-    // The next chunk into `records` or `columns` (whichever this hands out) and its totals;
-    // false at the end. Rethrows a reading error.
-    bool take(RayChunk* records, RayColumns* columns, RayTotals& totals) {
+    // The next chunk into `records` and its totals; false at the end. Rethrows a reading error.
+    bool take(RayChunk& records, RayTotals& totals) {
         Slot* slot;
         {
             std::unique_lock<std::mutex> lock(mutex_);
@@ -46,8 +46,7 @@ public:
         }
         if (slot->error) std::rethrow_exception(slot->error);
         if (slot->end) return false;  // stays the last slot: later calls end again
-        if (records_) std::swap(*records, slot->records);
-        else std::swap(*columns, slot->columns);
+        std::swap(records, slot->records);
         totals = slot->totals;
         {
             std::lock_guard<std::mutex> lock(mutex_);
@@ -61,7 +60,6 @@ private:
     // Enough to ride out uneven chunk times; each is options.chunk_size rays.
     static constexpr uint64_t kSlots = 4;
     struct Slot {
-        RayColumns columns;
         RayChunk records;
         RayTotals totals;
         bool end = false;
@@ -78,11 +76,8 @@ private:
             // The slot is this thread's until produced_ counts it.
             Slot& slot = slots_[produced_ % kSlots];
             try {
-                // Records are made from columns this thread keeps: a slot holds one form only.
-                RayColumns& columns = records_ ? decoded_ : slot.columns;
-                slot.end = !reader_.decoder_->decode(columns, reader_.options_.chunk_size);
-                if (!slot.end) slot.totals = reader_.validate(columns);
-                if (!slot.end && records_) columns.to_rays(slot.records);
+                slot.end = !reader_.decoder_->decode(decoded_, reader_.options_.chunk_size);
+                if (!slot.end) slot.totals = reader_.validate(decoded_), decoded_.to_rays(slot.records);
             } catch (...) {
                 slot.error = std::current_exception();
             }
@@ -97,8 +92,7 @@ private:
     }
 
     const RayReader& reader_;
-    const bool records_;
-    RayColumns decoded_;  // when handing out records
+    RayColumns decoded_;
     Slot slots_[kSlots];
     std::mutex mutex_;
     std::condition_variable filled_, free_;
@@ -117,26 +111,87 @@ RayReader::~RayReader() = default;  // stops the read-ahead thread first (ahead_
 
 double RayReader::progress() const {
     uint64_t n = header_.ray_count;
-    return n ? std::min(1.0, double(totals_.rays) / double(n)) : 0.0;
+    uint64_t done = std::max<uint64_t>(totals_.rays, rays_in_parts_.load(std::memory_order_relaxed));
+    return n ? std::min(1.0, double(done) / double(n)) : 0.0;
 }
 
-bool RayReader::read(RayChunk& chunk) { return take(&chunk, nullptr); }
-bool RayReader::read(RayColumns& chunk) { return take(nullptr, &chunk); }
-
-bool RayReader::take(RayChunk* records, RayColumns* columns) {
-    if (!ahead_) ahead_ = std::make_unique<ReadAhead>(*this, records != nullptr);
-    if (ahead_->hands_out_records() != (records != nullptr))
-        throw std::logic_error("RayReader: read() as records and as columns mixed on one reader");
+bool RayReader::read(RayChunk& chunk) {
+    if (!ahead_) ahead_ = std::make_unique<ReadAhead>(*this);
     RayTotals chunk_totals;
-    if (ahead_->take(records, columns, chunk_totals)) {
-        totals_.radiant += chunk_totals.radiant;
-        totals_.luminous += chunk_totals.luminous;
-        totals_.rays += chunk_totals.rays;
-        totals_.zero_flux_rays += chunk_totals.zero_flux_rays;
+    if (ahead_->take(chunk, chunk_totals)) {
+        add(chunk_totals);
         return true;
     }
     finish();
     return false;
+}
+
+void RayReader::add(const RayTotals& chunk_totals) {
+    totals_.radiant += chunk_totals.radiant;
+    totals_.luminous += chunk_totals.luminous;
+    totals_.rays += chunk_totals.rays;
+    totals_.zero_flux_rays += chunk_totals.zero_flux_rays;
+}
+
+size_t RayReader::parts() const {
+    if (!reopen_ || !decoder_->can_seek()) return 1;
+    // Parts of at least 16 chunks: fewer would cost more in opening and threads than they save.
+    const uint64_t chunks_per_part = 16 * options_.chunk_size;
+    return static_cast<size_t>(std::clamp<uint64_t>(header_.ray_count / chunks_per_part, 1, kMaxParts));
+}
+
+void RayReader::read_in_parts(const std::function<void(size_t, const RayColumns&)>& visit,
+                              const std::function<void(double)>& progress) {
+    if (ahead_) throw std::logic_error("RayReader: read_in_parts() after read()");
+    const size_t parts = this->parts();
+    const uint64_t count = header_.ray_count;
+    struct Part {
+        RayTotals totals;
+        std::exception_ptr error;
+    };
+    std::vector<Part> results(parts);
+    std::atomic<size_t> next_part{0};
+    // The lowest part that failed: later parts stop early, earlier ones go on (one of them may
+    // hold an earlier bad ray, which is the one to report).
+    std::atomic<size_t> failed{parts};
+    auto read_part = [&](size_t p, bool report_progress) {
+        try {
+            // Part 0 uses the decoder open_rays() made, which also serves a single part.
+            std::unique_ptr<RayDecoder> own = p == 0 ? nullptr : reopen_();
+            RayDecoder& decoder = p == 0 ? *decoder_ : *own;
+            const uint64_t first = count * p / parts, end = parts == 1 ? UINT64_MAX : count * (p + 1) / parts;
+            if (first > 0) decoder.seek(first);
+            RayColumns chunk;
+            for (uint64_t next = first; next < end && failed.load(std::memory_order_relaxed) > p;) {
+                if (!decoder.decode(chunk, static_cast<size_t>(std::min<uint64_t>(options_.chunk_size, end - next)))) break;
+                const RayTotals t = validate(chunk);
+                Part& result = results[p];
+                result.totals.radiant += t.radiant, result.totals.luminous += t.luminous;
+                result.totals.rays += t.rays, result.totals.zero_flux_rays += t.zero_flux_rays;
+                visit(p, chunk);
+                next += chunk.size();
+                rays_in_parts_.fetch_add(chunk.size(), std::memory_order_relaxed);
+                if (report_progress && progress) progress(this->progress());
+            }
+        } catch (...) {
+            results[p].error = std::current_exception();
+            size_t seen = failed.load();
+            while (p < seen && !failed.compare_exchange_weak(seen, p)) {}
+        }
+    };
+    auto work = [&](bool report_progress) {
+        for (size_t p; (p = next_part.fetch_add(1)) < parts;) read_part(p, report_progress);
+    };
+    std::vector<std::thread> helpers;
+    const size_t threads = std::min<size_t>(parts, std::max(1u, std::thread::hardware_concurrency()));
+    for (size_t t = 1; t < threads; ++t) helpers.emplace_back(work, false);
+    work(true);
+    for (std::thread& t : helpers) t.join();
+    for (const Part& part : results) {
+        if (part.error) std::rethrow_exception(part.error);
+        add(part.totals);  // in part order: the sums do not depend on the threads
+    }
+    finish();
 }
 
 void RayReader::finish() {

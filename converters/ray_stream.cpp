@@ -186,6 +186,7 @@ std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptio
     reader->luminous_scale_ = luminous_scale;
     reader->warnings_ = std::move(notes);
     reader->options_.flux_policy = policy;
+    reader->reopen_ = [open = e.open, path] { return open(path); };
     return reader;
 }
 

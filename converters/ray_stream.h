@@ -6,6 +6,7 @@
 #include "error.h"
 #include "ray.h"
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -29,6 +30,10 @@ public:
     // Per-ray fluxes that are relative by the format's definition (LightTools, Zemax, SPEOS):
     // they are scaled to the stated total unless the user says otherwise.
     virtual bool flux_is_relative() const { return false; }
+    // Formats of fixed-size records can start at any ray (RayReader::read_in_parts opens a
+    // decoder per part and seeks); seek() is called before the first decode(), if at all.
+    virtual bool can_seek() const { return false; }
+    virtual void seek(uint64_t /*index*/) {}
 
 protected:
     RayHeader header_;
@@ -76,9 +81,11 @@ struct RayTotals {
     uint64_t zero_flux_rays = 0;
 };
 
-// The validating, scaling reader over a decoder. The decoder and the validation run on a
-// thread of the reader's own, a few chunks ahead of read(); call the reader from one thread at
-// a time. Memory: about six chunks (RayReadOptions::chunk_size rays each).
+// The validating, scaling reader over a decoder. read() hands out the rays in order; the
+// decoder and the validation run on a thread of the reader's own, a few chunks ahead of it
+// (memory: about six chunks of RayReadOptions::chunk_size rays). read_in_parts() is for
+// consumers to whom the order does not matter (summaries, histograms): it reads the file in
+// parts on several threads at once. A reader is read once, one way; call it from one thread.
 class RayReader {
 public:
     RayReader(std::unique_ptr<RayDecoder> decoder, std::string path, RayReadOptions options);
@@ -93,10 +100,21 @@ public:
     double luminous_scale() const { return luminous_scale_; }
 
     // Next chunk of validated rays; false at the end. Throws Error naming the ray's location.
-    // As records or as columns: a reader hands out one or the other, whichever its first call
-    // asks for (the read-ahead thread then makes that form).
     bool read(RayChunk& chunk);
-    bool read(RayColumns& chunk);
+
+    // The number of parts read_in_parts() reads: up to kMaxParts consecutive ranges of rays, a
+    // number that depends on the file alone (not on the machine), so that whatever a consumer
+    // sums per part and merges in part order comes out the same everywhere. One part for small
+    // files and for formats that cannot seek (the text ones).
+    static constexpr size_t kMaxParts = 8;
+    size_t parts() const;
+    // Reads every ray, calling visit(part, chunk) with each validated chunk: a part's chunks in
+    // order and on one thread, the parts on up to as many threads as the machine has cores.
+    // `progress` (if set) is called on the calling thread. Totals, warnings and the error of
+    // the first bad ray in the file come out as read() would give them.
+    void read_in_parts(const std::function<void(size_t part, const RayColumns& chunk)>& visit,
+                       const std::function<void(double)>& progress = {});
+
     const RayTotals& totals() const { return totals_; }  // of the rays read so far
     // Warnings found so far (stated total disagrees, zero-flux rays, ...), one line each.
     const std::vector<std::string>& warnings() const { return warnings_; }
@@ -109,8 +127,7 @@ private:
     // Checks and scales a chunk (on the read-ahead thread: it changes nothing but the chunk).
     RayTotals validate(RayColumns& chunk) const;
     void check_ray(RayColumns& chunk, size_t index) const;
-    // Takes the next chunk from the read-ahead thread (started by the first call) and adds its totals.
-    bool take(RayChunk* records, RayColumns* columns);
+    void add(const RayTotals& chunk_totals);
     void finish();  // the checks that need every ray, at the end
 
     std::unique_ptr<RayDecoder> decoder_;
@@ -120,6 +137,8 @@ private:
     double radiant_scale_ = 1, luminous_scale_ = 1;
     RayTotals totals_;
     std::vector<std::string> warnings_;
+    std::function<std::unique_ptr<RayDecoder>()> reopen_;  // how open_rays() made the decoder (one per part)
+    std::atomic<uint64_t> rays_in_parts_{0};  // read so far by read_in_parts(), for progress()
     std::unique_ptr<ReadAhead> ahead_;  // started by the first read()
 };
 

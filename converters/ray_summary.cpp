@@ -3,6 +3,8 @@
 #include "converters/spectrum.h"
 
 #include <algorithm>
+#include <cstring>
+#include <memory>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -28,15 +30,17 @@ double azimuth_of(double a) {
     return std::atan2(t, 1 - t) + quadrant * kPi / 2;
 }
 
+// In float, in the same operations as coverage_cells() below, so that both give the same cell.
 // Branch-free: directions fall in the four quadrants at random, so branches on them would
 // mostly be mispredicted. The quadrant's boundaries take -0 as 0; (0, 0) is sector 0.
 inline int coverage_cell(float x, float y, float z) {
-    const int band = std::clamp(static_cast<int>((z + 1) * 0.5 * RaySummary::kZBands), 0, RaySummary::kZBands - 1);
-    const double ax = std::abs(double(x)), ay = std::abs(double(y)), sum = ax + ay;
-    const int quadrant = 2 * (y < 0) + ((y >= 0) != (x >= 0));  // 0 1 2 3 anticlockwise from +x +y
-    // The smallest normal double is below any sum of two floats but 0, where it gives 0 / min.
-    const double part = ((quadrant & 1) ? ax : ay) / std::max(sum, std::numeric_limits<double>::min());
-    const int sector = std::min(RaySummary::kPhiBands - 1, static_cast<int>((quadrant + part) * (RaySummary::kPhiBands / 4)));
+    const int band = std::clamp(static_cast<int>((z + 1.0f) * (0.5f * RaySummary::kZBands)), 0, RaySummary::kZBands - 1);
+    const float ax = std::abs(x), ay = std::abs(y), sum = ax + ay;
+    const int odd = (y >= 0) != (x >= 0);
+    const int quadrant = ((y < 0) * 2) | odd;  // 0 1 2 3 anticlockwise from +x +y
+    // The smallest normal float is at most a sum that is not 0; (0, 0) gives 0 / min.
+    const float part = (odd ? ax : ay) / std::max(sum, std::numeric_limits<float>::min());
+    const int sector = std::min(RaySummary::kPhiBands - 1, static_cast<int>((float(quadrant) + part) * float(RaySummary::kPhiBands / 4)));
     return band * RaySummary::kPhiBands + sector;
 }
 
@@ -55,137 +59,197 @@ Vec3f cell_centre(int cell) {
     return {float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)};
 }
 
-// The rays are taken kBlock at a time (the chunk's columns are contiguous floats, which the
-// loops below vectorise over); 512 rays keep a block's columns in L1.
-constexpr size_t kBlock = 512;
+// Vectors of four lanes (GCC's vector extensions: SSE2 here, one AVX register for the doubles
+// where the compiler may use it). Four rays are taken at a time; every per-ray step below is
+// one vector operation for the four.
+using V4f = float __attribute__((vector_size(16)));
+using V4i = int32_t __attribute__((vector_size(16)));
+using V4d = double __attribute__((vector_size(32)));
 
-// Minimum and maximum of a field, kept position by position within the blocks and combined at
-// the end: updating them is a loop of independent elements, which the compiler vectorises (a
-// single running minimum it will not, as reordering could change the result). The comparisons
-// are written so that a NaN value leaves them as they are.
-struct Extremes {
-    alignas(64) float lo[kBlock], hi[kBlock];
+inline V4f load4(const float* p) {
+    V4f v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+inline V4d to_double(V4f v) { return __builtin_convertvector(v, V4d); }
+inline V4f splat(float v) { return V4f{v, v, v, v}; }
 
-    Extremes() { std::fill(lo, lo + kBlock, INFINITY), std::fill(hi, hi + kBlock, -INFINITY); }
-    void add(const float* values, size_t n) {
-        for (size_t i = 0; i < n; ++i) {
-            lo[i] = values[i] < lo[i] ? values[i] : lo[i];
-            hi[i] = values[i] > hi[i] ? values[i] : hi[i];
-        }
-    }
-    float min() const { return *std::min_element(lo, lo + kBlock); }
-    float max() const { return *std::max_element(hi, hi + kBlock); }
-};
+// coverage_cell() for four rays.
+inline V4i coverage_cells(V4f x, V4f y, V4f z) {
+    V4i band = __builtin_convertvector((z + 1.0f) * (0.5f * RaySummary::kZBands), V4i);  // truncates
+    band = band < 0 ? 0 : band;
+    band = band > RaySummary::kZBands - 1 ? RaySummary::kZBands - 1 : band;
+    const V4f ax = (V4f)((V4i)x & INT32_MAX), ay = (V4f)((V4i)y & INT32_MAX);  // |x|, |y|
+    const V4i odd = (y >= 0) != (x >= 0);             // masks: -1 or 0
+    const V4i quadrant = ((y < 0) & 2) | (odd & 1);
+    const V4f sum = ax + ay, smallest = splat(std::numeric_limits<float>::min());
+    const V4f part = (odd ? ax : ay) / (sum < smallest ? smallest : sum);
+    V4i sector = __builtin_convertvector((__builtin_convertvector(quadrant, V4f) + part) * float(RaySummary::kPhiBands / 4), V4i);
+    sector = sector > RaySummary::kPhiBands - 1 ? RaySummary::kPhiBands - 1 : sector;
+    return band * RaySummary::kPhiBands + sector;
+}
 
-// Sums kept in kLanes lanes, for the same reason.
+// Sums kept in kLanes lanes: ray i of a block goes to lane i % kLanes (a block's last rays
+// past a multiple of kLanes to lane 0), so a sum is the same however the work is vectorised.
 constexpr size_t kLanes = 8;
 struct LaneSums {
     double v[kLanes] = {};
     double total() const { return std::accumulate(v, v + kLanes, 0.0); }
+    void add(const LaneSums& other) {
+        for (size_t l = 0; l < kLanes; ++l) v[l] += other.v[l];
+    }
 };
 
-// The running state of one summary pass.
-struct Accumulator {
-    explicit Accumulator(const RayHeader& header) : header(header), weights(header) {
-        spectral_luminous = !header.has_luminous && weights.luminous_known();
-        shared_efficacy = weights.shared_efficacy();
+// The running state of the summary of one part of a file; parts are merged in file order.
+class Accumulator {
+public:
+    explicit Accumulator(const RayHeader& header) : header_(header), weights_(header) {
+        spectral_luminous_ = !header.has_luminous && weights_.luminous_known();
+        shared_efficacy_ = weights_.shared_efficacy();
     }
 
     void add(const RayColumns& chunk) {
         const size_t n = chunk.size();
-        const float* weight = header.has_radiant ? chunk.radiant.data() : chunk.luminous.data();
-        for (size_t start = 0; start < n; start += kBlock) {
-            const size_t count = std::min(kBlock, n - start);
-            const float* direction[3] = {chunk.dx.data() + start, chunk.dy.data() + start, chunk.dz.data() + start};
-            origin[0].add(chunk.ox.data() + start, count), origin[1].add(chunk.oy.data() + start, count);
-            origin[2].add(chunk.oz.data() + start, count);
-            add_block(direction, weight + start, chunk.wavelength.data() + start, count);
-            if (spectral_luminous && !shared_efficacy)
-                for (size_t i = start; i < start + count; ++i) {
-                    const double lm = weights.luminous(chunk.ray(i));
-                    if (std::isfinite(lm)) luminous_from_spectrum += lm;
+        const float* weight = header_.has_radiant ? chunk.radiant.data() : chunk.luminous.data();
+        for (size_t start = 0; start < n; start += kBlock) add_block(chunk, weight, start, std::min(kBlock, n - start));
+        if (spectral_luminous_ && !shared_efficacy_)
+            for (size_t i = 0; i < n; ++i) {
+                const double lm = weights_.luminous(chunk.ray(i));
+                if (std::isfinite(lm)) luminous_from_spectrum_ += lm;
+            }
+    }
+
+    // The part that comes after this one in the file.
+    void merge(const Accumulator& next) {
+        for (int k = 0; k < 4; ++k) {
+            low_[k] = next.low_[k] < low_[k] ? next.low_[k] : low_[k];
+            high_[k] = next.high_[k] > high_[k] ? next.high_[k] : high_[k];
+        }
+        for (int k = 0; k < 3; ++k) mean_[k].add(next.mean_[k]);
+        unknown_ += next.unknown_;
+        luminous_from_spectrum_ += next.luminous_from_spectrum_;
+        for (size_t c = 0; c < reached_.size(); ++c) reached_[c] |= next.reached_[c];
+    }
+
+    void finish(const RayTotals& totals, RaySummary& s) const;
+
+private:
+    // Up to kBlock rays from `start`: blocks keep the lanes of the sums as they were.
+    static constexpr size_t kBlock = 512;
+
+    void add_block(const RayColumns& c, const float* weight, size_t start, size_t n) {
+        const float* field[4] = {c.ox.data() + start, c.oy.data() + start, c.oz.data() + start, c.wavelength.data() + start};
+        const float *dx = c.dx.data() + start, *dy = c.dy.data() + start, *dz = c.dz.data() + start;
+        weight += start;
+        V4i unknown = {};
+        alignas(16) int32_t cells[kBlock];
+        // Locals: the byte stores to `seen` could alias members, which would then be reloaded.
+        V4f low[4], high[4];
+        std::copy(low_, low_ + 4, low), std::copy(high_, high_ + 4, high);
+        V4d mean[3][2];
+        for (int k = 0; k < 3; ++k)
+            for (int h = 0; h < 2; ++h) std::memcpy(&mean[k][h], mean_[k].v + 4 * h, sizeof(V4d));
+        uint8_t* const seen = reached_.data();
+        size_t i = 0;
+        for (; i + kLanes <= n; i += kLanes)
+            for (size_t h = 0; h < 2; ++h) {
+                const size_t j = i + 4 * h;
+                // Extremes: a NaN leaves them as they are (the comparison is false).
+                for (int k = 0; k < 4; ++k) {
+                    const V4f v = load4(field[k] + j);
+                    low[k] = v < low[k] ? v : low[k];
+                    high[k] = v > high[k] ? v : high[k];
                 }
+                const V4f wavelength = load4(field[3] + j);
+                unknown -= wavelength != wavelength;  // -1 per NaN
+                const V4f x = load4(dx + j), y = load4(dy + j), z = load4(dz + j);
+                // Flux-weighted direction sums, in double (a float times a float is exact there).
+                const V4d w = to_double(load4(weight + j));
+                mean[0][h] += w * to_double(x), mean[1][h] += w * to_double(y), mean[2][h] += w * to_double(z);
+                const V4i cell = coverage_cells(x, y, z);
+                std::memcpy(cells + j, &cell, sizeof cell);
+            }
+        // The scattered stores after the vector loop: a store per lane from inside it would first
+        // have to take the lane out of its register.
+        for (size_t c = 0; c < i; ++c) seen[cells[c]] = 1;
+        for (int k = 0; k < 3; ++k)
+            for (int h = 0; h < 2; ++h) std::memcpy(mean_[k].v + 4 * h, &mean[k][h], sizeof(V4d));
+        std::copy(low, low + 4, low_), std::copy(high, high + 4, high_);
+        for (; i < n; ++i) {  // the rays past the last multiple of kLanes
+            for (int k = 0; k < 4; ++k) {
+                const float v = field[k][i];
+                low_[k][0] = v < low_[k][0] ? v : low_[k][0];
+                high_[k][0] = v > high_[k][0] ? v : high_[k][0];
+            }
+            unknown[0] += std::isnan(field[3][i]);
+            mean_[0].v[0] += double(weight[i]) * dx[i], mean_[1].v[0] += double(weight[i]) * dy[i];
+            mean_[2].v[0] += double(weight[i]) * dz[i];
+            seen[coverage_cell(dx[i], dy[i], dz[i])] = 1;
         }
+        unknown_ += uint64_t(unknown[0]) + uint64_t(unknown[1]) + uint64_t(unknown[2]) + uint64_t(unknown[3]);
     }
 
-    void add_block(const float* const direction[3], const float* weight, const float* wavelengths, size_t n) {
-        // NaN wavelengths are "unknown": counted where the file promises wavelengths, and skipped.
-        if (header.spectral == SpectralKind::per_ray_wavelength)
-            for (size_t i = 0; i < n; ++i) unknown += std::isnan(wavelengths[i]);
-        wavelength.add(wavelengths, n);
-        // Flux-weighted direction sums, in double.
-        for (int k = 0; k < 3; ++k) {
-            const float* d = direction[k];
-            LaneSums sums = mean[k];  // a local: `d` might alias it as far as the compiler knows
-            size_t i = 0;
-            for (; i + kLanes <= n; i += kLanes)
-                for (size_t l = 0; l < kLanes; ++l) sums.v[l] += double(weight[i + l]) * d[i + l];
-            for (; i < n; ++i) sums.v[0] += double(weight[i]) * d[i];
-            mean[k] = sums;
-        }
-        // The cells first (a loop the compiler vectorises), then the scattered stores.
-        const float *dx = direction[0], *dy = direction[1], *dz = direction[2];
-        for (size_t i = 0; i < n; ++i) cell[i] = coverage_cell(dx[i], dy[i], dz[i]);
-        uint8_t* const seen = reached.data();  // a local: stores of bytes would force reloads of a member
-        for (size_t i = 0; i < n; ++i) seen[cell[i]] = 1;
-    }
+    static float lowest(V4f v) { return std::min({v[0], v[1], v[2], v[3]}); }
+    static float highest(V4f v) { return std::max({v[0], v[1], v[2], v[3]}); }
 
-    const RayHeader& header;
-    PhotometricWeights weights;
-    bool spectral_luminous = false;
-    std::optional<double> shared_efficacy;
-    double luminous_from_spectrum = 0;  // when the efficacy differs from ray to ray
-    alignas(64) int32_t cell[kBlock];
-    LaneSums mean[3];
-    std::vector<uint8_t> reached = std::vector<uint8_t>(RaySummary::kCoverageCells, 0);
-    Extremes origin[3];  // x, y, z
-    Extremes wavelength;
-    uint64_t unknown = 0;
+    const RayHeader& header_;
+    PhotometricWeights weights_;
+    bool spectral_luminous_ = false;
+    std::optional<double> shared_efficacy_;
+    double luminous_from_spectrum_ = 0;  // when the efficacy differs from ray to ray
+    LaneSums mean_[3];
+    // Lane-wise extremes of origin x, y, z and wavelength.
+    V4f low_[4] = {splat(INFINITY), splat(INFINITY), splat(INFINITY), splat(INFINITY)};
+    V4f high_[4] = {splat(-INFINITY), splat(-INFINITY), splat(-INFINITY), splat(-INFINITY)};
+    uint64_t unknown_ = 0;
+    std::vector<uint8_t> reached_ = std::vector<uint8_t>(RaySummary::kCoverageCells, 0);
 };
 
-}  // namespace
-
-RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& progress) {
-    RaySummary s;
-    const RayHeader& header = reader.header();
-    Accumulator a(header);
-    RayColumns chunk;
-    while (reader.read(chunk)) {
-        a.add(chunk);
-        if (progress) progress(reader.progress());
-    }
-    const RayTotals& t = reader.totals();
+void Accumulator::finish(const RayTotals& t, RaySummary& s) const {
     s.rays = t.rays;
     s.radiant = t.radiant;
     s.luminous = t.luminous;
     s.zero_flux_rays = t.zero_flux_rays;
-    if (a.spectral_luminous) {
+    if (spectral_luminous_) {
         // One efficacy for every ray: the sum of radiant x efficacy is the efficacy times the
         // radiant total, which the reader has summed already.
-        if (!a.shared_efficacy) s.luminous_from_spectrum = a.luminous_from_spectrum;
-        else s.luminous_from_spectrum = std::isfinite(*a.shared_efficacy) ? *a.shared_efficacy * t.radiant : 0;
+        if (!shared_efficacy_) s.luminous_from_spectrum = luminous_from_spectrum_;
+        else s.luminous_from_spectrum = std::isfinite(*shared_efficacy_) ? *shared_efficacy_ * t.radiant : 0;
     }
-    s.min_origin = {a.origin[0].min(), a.origin[1].min(), a.origin[2].min()};
-    s.max_origin = {a.origin[0].max(), a.origin[1].max(), a.origin[2].max()};
-    if (header.spectral == SpectralKind::per_ray_wavelength) s.unknown_wavelength_rays = a.unknown;
-    const float wmin = a.wavelength.min(), wmax = a.wavelength.max();
+    s.min_origin = {lowest(low_[0]), lowest(low_[1]), lowest(low_[2])};
+    s.max_origin = {highest(high_[0]), highest(high_[1]), highest(high_[2])};
+    if (header_.spectral == SpectralKind::per_ray_wavelength) s.unknown_wavelength_rays = unknown_;
+    const float wmin = lowest(low_[3]), wmax = highest(high_[3]);
     if (wmin <= wmax) s.min_wavelength = wmin, s.max_wavelength = wmax;
-    if (header.spectral == SpectralKind::single_wavelength) s.min_wavelength = s.max_wavelength = header.single_wavelength;
+    if (header_.spectral == SpectralKind::single_wavelength) s.min_wavelength = s.max_wavelength = header_.single_wavelength;
 
-    const double mean[3] = {a.mean[0].total(), a.mean[1].total(), a.mean[2].total()};
+    const double mean[3] = {mean_[0].total(), mean_[1].total(), mean_[2].total()};
     double norm = std::sqrt(mean[0] * mean[0] + mean[1] * mean[1] + mean[2] * mean[2]);
     Vec3f axis = norm > 0 ? Vec3f{float(mean[0] / norm), float(mean[1] / norm), float(mean[2] / norm)} : Vec3f{0, 0, 1};
     s.mean_direction = axis;
     double reached_solid_angle = 0;
     double min_cos = 1;
     for (int c = 0; c < RaySummary::kCoverageCells; ++c) {
-        if (!a.reached[c]) continue;
+        if (!reached_[c]) continue;
         reached_solid_angle += cell_solid_angle(c);
         Vec3f v = cell_centre(c);
         min_cos = std::min(min_cos, double(v.x) * axis.x + double(v.y) * axis.y + double(v.z) * axis.z);
     }
     s.sphere_coverage = reached_solid_angle / (4 * kPi);
     s.max_angle_from_mean_deg = std::acos(std::clamp(min_cos, -1.0, 1.0)) * 180 / kPi;
+}
+
+}  // namespace
+
+RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& progress) {
+    // One accumulator per part of the file (read on as many threads), merged in file order:
+    // the sums do not depend on which thread read what.
+    std::vector<std::unique_ptr<Accumulator>> parts;
+    for (size_t p = 0; p < reader.parts(); ++p) parts.push_back(std::make_unique<Accumulator>(reader.header()));
+    reader.read_in_parts([&](size_t part, const RayColumns& chunk) { parts[part]->add(chunk); }, progress);
+    for (size_t p = 1; p < parts.size(); ++p) parts[0]->merge(*parts[p]);
+    RaySummary s;
+    parts[0]->finish(reader.totals(), s);
     return s;
 }
 

@@ -102,6 +102,8 @@ public:
 
     bool decode(RayColumns& chunk, size_t max_rays) override;
     Location locate(uint64_t index) const override { return Location::byte(data_start_ + index * record_bytes_); }
+    bool can_seek() const override { return true; }
+    void seek(uint64_t index) override { in_.seek(locate(index).value), next_ = index; }
 
 private:
     void read_fixed_header();
