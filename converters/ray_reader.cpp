@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <limits>
 #include <mutex>
+#include <numeric>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -288,17 +289,18 @@ RayTotals RayReader::validate(RayColumns& chunk) const {
         for (size_t i = 0; i < n; ++i) radiant_flux[i] = float(double(radiant_flux[i]) * radiant_scale_);
     if (luminous && float(luminous_scale_) != 1)
         for (size_t i = 0; i < n; ++i) luminous_flux[i] = float(double(luminous_flux[i]) * luminous_scale_);
-    // Even and odd rays go to two sums: half as long a chain of dependent additions. An absent
-    // column is not summed.
-    auto pair_sum = [n](const float* flux) {
-        double even = 0, odd = 0;
+    // Eight sums (ray i to sum i % 8, the last n % 8 rays to the first) added at the end: a
+    // chain of dependent additions an eighth as long, in a loop the compiler vectorises.
+    auto lane_sum = [n](const float* flux) {
+        double lane[8] = {};
         size_t i = 0;
-        for (; i + 1 < n; i += 2) even += flux[i], odd += flux[i + 1];
-        if (i < n) even += flux[i];
-        return even + odd;
+        for (; i + 8 <= n; i += 8)
+            for (size_t l = 0; l < 8; ++l) lane[l] += flux[i + l];
+        for (; i < n; ++i) lane[0] += flux[i];
+        return std::accumulate(lane, lane + 8, 0.0);
     };
-    if (radiant) totals.radiant = pair_sum(radiant_flux);
-    if (luminous) totals.luminous = pair_sum(luminous_flux);
+    if (radiant) totals.radiant = lane_sum(radiant_flux);
+    if (luminous) totals.luminous = lane_sum(luminous_flux);
     // Counted 32 bits wide, a block at a time, which vectorises (64-bit counts would not).
     uint64_t zero_flux = 0;
     for (size_t start = 0; start < n; start += size_t(1) << 30) {
