@@ -1,5 +1,6 @@
-// RayReader decodes and validates ahead of read() on a thread of its own: what the caller sees
-// must be what a reader without that thread would give, errors included, in the same order.
+// RayReader decodes and validates ahead of read() on a thread of its own, and reads a file in
+// parts on several threads for read_in_parts(): what the caller sees must be what a reader
+// without those threads would give, errors included.
 #include <gtest/gtest.h>
 
 #include "converters/codecs.h"
@@ -7,6 +8,9 @@
 #include "support/test_support.h"
 
 #include <cmath>
+#include <mutex>
+#include <set>
+#include <vector>
 
 namespace rayset {
 namespace {
@@ -17,7 +21,7 @@ constexpr uint64_t kDataStart = 36288;  // no tables, labels or text
 // Ray i: origin (i, 0, 0), direction +z, radiant flux (i % 7 + 1) / 8 W (exact in float).
 float flux_of(size_t i) { return float(i % 7 + 1) / 8; }
 
-std::string write_file(const test::ScratchDir& dir, size_t rays, size_t bad_ray = SIZE_MAX) {
+std::string write_file(const test::ScratchDir& dir, size_t rays, std::set<size_t> bad_rays = {}) {
     RayHeader h;
     h.has_radiant = true;
     const std::string path = dir.file("rays.tm25ray");
@@ -26,7 +30,7 @@ std::string write_file(const test::ScratchDir& dir, size_t rays, size_t bad_ray 
     for (size_t i = 0; i < rays; ++i) {
         Ray r;
         r.origin = {float(i), 0, 0};
-        r.direction = {0, 0, i == bad_ray ? std::nanf("") : 1.0f};
+        r.direction = {0, 0, bad_rays.count(i) ? std::nanf("") : 1.0f};
         r.radiant = flux_of(i);
         chunk.rays.push_back(r);
     }
@@ -67,7 +71,7 @@ TEST(RayReader, HandsOutEveryRayInOrderWithTheirTotals) {
 TEST(RayReader, AnErrorComesAfterTheRaysBeforeIt) {
     test::ScratchDir dir;
     const size_t bad = 9000;
-    const std::string path = write_file(dir, 20000, bad);
+    const std::string path = write_file(dir, 20000, {bad});
     auto reader = open_rays(path, chunks_of(1000));
     RayChunk chunk;
     uint64_t handed_out = 0;
@@ -95,6 +99,110 @@ TEST(RayReader, CanBeDroppedBeforeTheEnd) {
         for (int k = 0; k < stop_after; ++k) ASSERT_TRUE(reader->read(chunk));
         reader.reset();  // joins the read-ahead thread, which may be waiting for room
     }
+}
+
+// What read_in_parts() handed out: each part's chunks as (first index, size), in the order seen.
+struct Visits {
+    std::mutex mutex;
+    std::vector<std::vector<std::pair<uint64_t, size_t>>> chunks;
+    bool values_right = true;
+};
+
+void read_all_in_parts(RayReader& reader, Visits& visits) {
+    visits.chunks.resize(reader.parts());
+    reader.read_in_parts([&](size_t part, const RayColumns& chunk) {
+        bool right = true;
+        for (size_t i = 0; i < chunk.size(); ++i) {
+            const uint64_t index = chunk.first_index + i;
+            right &= chunk.ox[i] == float(index) && chunk.radiant[i] == flux_of(index) && chunk.dz[i] == 1.0f;
+        }
+        std::lock_guard<std::mutex> lock(visits.mutex);
+        visits.chunks.at(part).emplace_back(chunk.first_index, chunk.size());
+        visits.values_right &= right;
+    });
+}
+
+TEST(RayReaderInParts, VisitsEveryRayOnceInConsecutivePartsWithTheTotalsOfRead) {
+    test::ScratchDir dir;
+    const size_t n = 25001;  // 8 parts of 3125 or 3126 rays, chunks of 100
+    const std::string path = write_file(dir, n);
+    auto reader = open_rays(path, chunks_of(100));
+    ASSERT_EQ(reader->parts(), RayReader::kMaxParts);
+    Visits visits;
+    read_all_in_parts(*reader, visits);
+    EXPECT_TRUE(visits.values_right);
+    // Part p holds rays [n p / 8, n (p + 1) / 8), its chunks one after another in file order.
+    uint64_t next = 0;
+    double sum = 0;
+    for (size_t p = 0; p < visits.chunks.size(); ++p) {
+        EXPECT_EQ(next, n * p / RayReader::kMaxParts) << "part " << p;
+        for (const auto& [first, size] : visits.chunks[p]) {
+            ASSERT_EQ(first, next) << "part " << p;
+            for (size_t i = 0; i < size; ++i) sum += flux_of(next + i);
+            next += size;
+        }
+    }
+    EXPECT_EQ(next, n);
+    EXPECT_EQ(reader->totals().rays, n);
+    EXPECT_EQ(reader->totals().radiant, sum);  // multiples of 1/8: exact in any order
+    EXPECT_DOUBLE_EQ(reader->progress(), 1.0);
+    // read() over the same file gives the same totals.
+    auto sequential = open_rays(path, chunks_of(100));
+    RayChunk chunk;
+    while (sequential->read(chunk)) {}
+    EXPECT_EQ(sequential->totals().radiant, reader->totals().radiant);
+    EXPECT_EQ(sequential->totals().rays, reader->totals().rays);
+}
+
+TEST(RayReaderInParts, ReportsTheFirstBadRayOfTheFileWhicheverPartFailsFirst) {
+    test::ScratchDir dir;
+    // Bad rays at the end of part 0 and the start of part 1 (of 8, 10000 rays each), which
+    // two threads start on at once: part 1 mostly fails first, and part 0 must still be read
+    // up to its own bad ray, the one to report.
+    const std::string path = write_file(dir, 80000, {9950, 10000});
+    const std::string expected = path + ": byte " + std::to_string(kDataStart + 9950 * kRecord) +
+                                 ": ray 9951: direction (0, 0, nan) is not a finite number";
+    for (int attempt = 0; attempt < 20; ++attempt) {  // thread timing differs from run to run
+        auto reader = open_rays(path, chunks_of(100));
+        ASSERT_EQ(reader->parts(), RayReader::kMaxParts);
+        try {
+            Visits visits;
+            read_all_in_parts(*reader, visits);
+            ADD_FAILURE() << "no error";
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()), expected);
+        }
+    }
+}
+
+TEST(RayReaderInParts, SmallFilesAndTextFormatsAreOnePart) {
+    test::ScratchDir dir;
+    // Fewer than 16 chunks per part would give a second part no work worth a thread.
+    auto small = open_rays(write_file(dir, 1599), chunks_of(100));
+    EXPECT_EQ(small->parts(), 1u);
+    // Text files cannot seek to a ray: one part, read front to back.
+    RayHeader h;
+    h.has_radiant = true;
+    const std::string csv = dir.file("rays.csv");
+    auto encoder = create_rays(csv, RayFormat::csv, h);
+    RayChunk chunk;
+    for (size_t i = 0; i < 5000; ++i) {
+        Ray r;
+        r.origin = {float(i), 0, 0};
+        r.direction = {0, 0, 1};
+        r.radiant = flux_of(i);
+        chunk.rays.push_back(r);
+    }
+    encoder->write(chunk);
+    encoder->finish();
+    auto reader = open_rays(csv, chunks_of(100));
+    EXPECT_EQ(reader->parts(), 1u);
+    Visits visits;
+    read_all_in_parts(*reader, visits);
+    EXPECT_TRUE(visits.values_right);
+    ASSERT_EQ(visits.chunks.size(), 1u);
+    EXPECT_EQ(visits.chunks[0].size(), 50u);
+    EXPECT_EQ(reader->totals().rays, 5000u);
 }
 
 }  // namespace
