@@ -3,9 +3,9 @@
 #include "converters/spectrum.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <memory>
-#include <cmath>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -59,9 +59,11 @@ Vec3f cell_centre(int cell) {
     return {float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)};
 }
 
-// Vectors of four lanes (GCC's vector extensions: SSE2 here, one AVX register for the doubles
-// where the compiler may use it). Four rays are taken at a time; every per-ray step below is
-// one vector operation for the four.
+// Vectors of four lanes (GCC's vector extensions, which compile to SSE2 on any x86-64; the four
+// doubles take two registers). Four rays are taken at a time: every per-ray step below is one
+// vector operation for the four. The vectors never cross a function boundary that is not
+// inlined, so the ABI note GCC gives on returning 32-byte vectors does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
 using V4f = float __attribute__((vector_size(16)));
 using V4i = int32_t __attribute__((vector_size(16)));
 using V4d = double __attribute__((vector_size(32)));
@@ -134,7 +136,7 @@ public:
     void finish(const RayTotals& totals, RaySummary& s) const;
 
 private:
-    // Up to kBlock rays from `start`: blocks keep the lanes of the sums as they were.
+    // Up to kBlock rays from `start`, whose cells fit an array on the stack.
     static constexpr size_t kBlock = 512;
 
     void add_block(const RayColumns& c, const float* weight, size_t start, size_t n) {

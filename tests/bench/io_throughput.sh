@@ -17,26 +17,53 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/rayset-bench.XXXXXX")
 shm=$(mktemp -d /dev/shm/rayset-bench.XXXXXX 2> /dev/null || true)
 trap 'rm -rf "$work" ${shm:+"$shm"}' EXIT
 
-# wall seconds and peak RSS (KiB) of a command, best of three runs (warm page cache)
+# Wall time in milliseconds (from the clock, not /usr/bin/time's 10 ms steps) and peak RSS
+# (KiB) of one run of a command; the page cache is warm after the first.
+run_once() {
+  local start end
+  start=$(date +%s%N)
+  /usr/bin/time -f "%M" -o "$work/rss" "$@" > /dev/null 2>&1
+  end=$(date +%s%N)
+  echo "$(( (end - start) / 1000 )) $(cat "$work/rss")"
+}
+
+# Best (least) wall time of $runs runs, as seconds, and the largest peak RSS seen.
+runs=${RUNS:-7}
 measure() {
-  local best="" rss=""
-  for _ in 1 2 3; do
-    /usr/bin/time -f "%e %M" -o "$work/t" "$@" > /dev/null 2>&1
-    read -r s m < "$work/t"
-    if [ -z "$best" ] || awk "BEGIN{exit !($s < $best)}"; then best=$s; rss=$m; fi
+  local best="" rss=0 us m
+  for _ in $(seq "$runs"); do
+    read -r us m < <(run_once "$@")
+    if [ -z "$best" ] || [ "$us" -lt "$best" ]; then best=$us; fi
+    if [ "$m" -gt "$rss" ]; then rss=$m; fi
   done
-  echo "$best $rss"
+  awk -v us="$best" -v m="$rss" 'BEGIN{printf "%.4f %d\n", us / 1e6, m}'
+}
+
+# cat and info in alternation, so that a slow spell of a shared machine hits both alike:
+# the best of each and the median of the per-round ratios.
+paired() { # file
+  local ratios=() best_cat="" best_info="" c i
+  for _ in $(seq "$runs"); do
+    read -r c _ < <(run_once cat "$1")
+    read -r i _ < <(run_once "$rayconv" info "$1")
+    ratios+=("$(awk -v c="$c" -v i="$i" 'BEGIN{print c / i}')")
+    if [ -z "$best_cat" ] || [ "$c" -lt "$best_cat" ]; then best_cat=$c; fi
+    if [ -z "$best_info" ] || [ "$i" -lt "$best_info" ]; then best_info=$i; fi
+  done
+  local median
+  median=$(printf "%s\n" "${ratios[@]}" | sort -g | awk '{v[NR]=$1} END{print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}')
+  echo "$best_cat $best_info $median"
 }
 
 row() { # name seconds rss bytes
-  awk -v n="$1" -v s="$2" -v m="$3" -v b="$4" 'BEGIN{printf "%-44s %8.2f s %9.0f MB/s %8.1f MiB peak\n", n, s, b/1e6/(s>0?s:1e-9), m/1024}'
+  awk -v n="$1" -v s="$2" -v m="$3" -v b="$4" 'BEGIN{printf "%-44s %8.3f s %9.0f MB/s %8.1f MiB peak\n", n, s, b/1e6/(s>0?s:1e-9), m/1024}'
 }
 
 small=$((rays / 10))
 "$rayconv" synth disk radius=1 flux=1 wavelength=550 --rays "$rays" --seed 1 -o "$work/big.tm25ray"
 "$rayconv" synth disk radius=1 flux=1 wavelength=550 --rays "$small" --seed 1 -o "$work/small.tm25ray"
 bytes=$(stat -c %s "$work/big.tm25ray")
-echo "file: $rays rays, $bytes bytes; $(nproc) cores"
+echo "file: $rays rays, $bytes bytes; $(nproc) cores; best of $runs runs (RUNS=...); load: $(cut -d' ' -f1-3 /proc/loadavg)"
 
 floor=""
 if command -v c++ > /dev/null; then
@@ -74,5 +101,6 @@ if [ -n "$shm" ]; then
 fi
 read -r s m < <(measure "$rayconv" convert "$work/big.tm25ray" "$work/out.ray" --to lighttools); row "rayconv convert tm25 -> lighttools" "$s" "$m" "$bytes"
 read -r s m2 < <(measure "$rayconv" info "$work/small.tm25ray"); row "rayconv info ($small rays)" "$s" "$m2" "$((bytes / 10))"
-awk -v c="$cat_s" -v i="$info_s" -v v="$conv_s" -v d="$dd_s" \
-  'BEGIN{printf "info at %.0f%% of cat throughput, convert at %.0f%% (at %.0f%% of dd conv=fsync)\n", 100*c/i, 100*c/v, 100*d/v}'
+read -r pc pi ratio < <(paired "$work/big.tm25ray")
+awk -v c="$cat_s" -v i="$info_s" -v v="$conv_s" -v d="$dd_s" -v pc="$pc" -v pi="$pi" -v r="$ratio" -v n="$runs" \
+  'BEGIN{printf "info at %.0f%% of cat throughput (best times); in %d alternating rounds: best cat %.3f s, best info %.3f s, median of the rounds\x27 ratios %.0f%%\nconvert at %.0f%% of cat > /dev/null, at %.0f%% of dd conv=fsync\n", 100*c/i, n, pc/1e6, pi/1e6, 100*r, 100*c/v, 100*d/v}'
