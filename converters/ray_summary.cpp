@@ -46,18 +46,24 @@ inline int coverage_cell(float x, float y, float z) {
 
 double sector_azimuth(int sector, double within) { return azimuth_of((sector + within) * 4.0 / RaySummary::kPhiBands); }
 
-double cell_solid_angle(int cell) {
-    int sector = cell % RaySummary::kPhiBands;
-    return 2.0 / RaySummary::kZBands * (sector_azimuth(sector, 1) - sector_azimuth(sector, 0));
-}
+// What the cells of a sector share: the width of its azimuths and the direction of their middle
+// (a table of sectors, so that the reached cells cost no atan2 each).
+struct Sectors {
+    double width[RaySummary::kPhiBands], cos_middle[RaySummary::kPhiBands], sin_middle[RaySummary::kPhiBands];
 
-Vec3f cell_centre(int cell) {
-    int band = cell / RaySummary::kPhiBands, sector = cell % RaySummary::kPhiBands;
-    double z = (band + 0.5) / RaySummary::kZBands * 2 - 1;
-    double phi = 0.5 * (sector_azimuth(sector, 0) + sector_azimuth(sector, 1));
-    double s = std::sqrt(std::max(0.0, 1 - z * z));
-    return {float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)};
-}
+    Sectors() {
+        for (int sector = 0; sector < RaySummary::kPhiBands; ++sector) {
+            const double from = sector_azimuth(sector, 0), to = sector_azimuth(sector, 1), middle = 0.5 * (from + to);
+            width[sector] = to - from, cos_middle[sector] = std::cos(middle), sin_middle[sector] = std::sin(middle);
+        }
+    }
+    double solid_angle(int cell) const { return 2.0 / RaySummary::kZBands * width[cell % RaySummary::kPhiBands]; }
+    Vec3f centre(int cell) const {
+        const int band = cell / RaySummary::kPhiBands, sector = cell % RaySummary::kPhiBands;
+        const double z = (band + 0.5) / RaySummary::kZBands * 2 - 1, s = std::sqrt(std::max(0.0, 1 - z * z));
+        return {float(s * cos_middle[sector]), float(s * sin_middle[sector]), float(z)};
+    }
+};
 
 // Vectors of four lanes (GCC's vector extensions, which compile to SSE2 on any x86-64; the four
 // doubles take two registers). Four rays are taken at a time: every per-ray step below is one
@@ -229,12 +235,13 @@ void Accumulator::finish(const RayTotals& t, RaySummary& s) const {
     double norm = std::sqrt(mean[0] * mean[0] + mean[1] * mean[1] + mean[2] * mean[2]);
     Vec3f axis = norm > 0 ? Vec3f{float(mean[0] / norm), float(mean[1] / norm), float(mean[2] / norm)} : Vec3f{0, 0, 1};
     s.mean_direction = axis;
+    const Sectors sectors;
     double reached_solid_angle = 0;
     double min_cos = 1;
     for (int c = 0; c < RaySummary::kCoverageCells; ++c) {
         if (!reached_[c]) continue;
-        reached_solid_angle += cell_solid_angle(c);
-        Vec3f v = cell_centre(c);
+        reached_solid_angle += sectors.solid_angle(c);
+        Vec3f v = sectors.centre(c);
         min_cos = std::min(min_cos, double(v.x) * axis.x + double(v.y) * axis.y + double(v.z) * axis.z);
     }
     s.sphere_coverage = reached_solid_angle / (4 * kPi);
