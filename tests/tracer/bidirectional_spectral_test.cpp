@@ -19,6 +19,7 @@
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 #include "support/test_support.h"
+#include "tracer/tracer_support.h"
 #include "tracer/render/renderer.h"
 #include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/spectrum.h"
@@ -101,47 +102,16 @@ LineDisk line_disk(const test::ScratchDir& scratch, double nm, double flux, uint
     return d;
 }
 
-// A closed cube (side 100 mm) of pigment P, finish diffuse d, with receivers on four walls and
-// the sources at its centre. Every unit of light at wavelength l lands on a wall once (primary)
-// and a / (1 - a) times more (secondary), a = the wall's reflectance at l, so the
-// wall-averaged illuminances are Phi_v / A and the sum over the light of Phi_v a / (1 - a) / A.
+// The closed box of tracer_support.h (its closed forms are there), 10 x 10 cells a wall.
 std::string coloured_box(const std::string& pigment, double diffuse, const std::vector<std::string>& sources,
                          bool spectral) {
-    char walls[1024];
-    std::snprintf(walls, sizeof walls, R"(
-        global_settings { integrator "bidirectional" spectral %s }
-        box { <-50, -50, -50>, <50, 50, 50> pigment { rgb %s } finish { diffuse %g ambient 0 } }
-        illuminance_receiver { <-50, -50, -50>, <0, 0, 100>, <100, 0, 0> resolution <10, 10> name "floor" }
-        illuminance_receiver { <-50, 50, -50>, <100, 0, 0>, <0, 0, 100> resolution <10, 10> name "ceiling" }
-        illuminance_receiver { <-50, -50, -50>, <0, 100, 0>, <0, 0, 100> resolution <10, 10> name "left" }
-        illuminance_receiver { <50, -50, -50>, <0, 0, 100>, <0, 100, 0> resolution <10, 10> name "right" }
-        illuminance_receiver { <-50, -50, -50>, <100, 0, 0>, <0, 100, 0> resolution <10, 10> name "near" }
-        illuminance_receiver { <-50, -50, 50>, <0, 100, 0>, <100, 0, 0> resolution <10, 10> name "far" }
-    )", spectral ? "on" : "off", pigment.c_str(), diffuse);
-    std::string text = walls;
-    for (const std::string& s : sources) text += "ray_source { \"" + s + "\" rotate <90, 0, 0> }\n";
-    return text;
-}
-
-// Wall average of the luminance weight (lx / 683) and its standard error from the cells.
-struct WallAverage {
-    double mean = 0, standard_error = 0;
-};
-WallAverage wall_average(const std::vector<ReceiverMap>& maps) {
-    double sum = 0, squares = 0;
-    int cells = 0;
-    for (const ReceiverMap& map : maps)
-        for (int j = 0; j < map.irradiance.ny(); ++j)
-            for (int i = 0; i < map.irradiance.nx(); ++i) {
-                sum += luminance_weight(map.irradiance.mean(i, j));
-                const double se = map.irradiance.photometric_standard_error(i, j) / kLumensPerWatt;
-                squares += se * se, ++cells;
-            }
-    return {sum / cells, std::sqrt(squares) / cells};
+    test::ClosedBox box;
+    box.pigment = pigment, box.diffuse = diffuse, box.cells = 10, box.spectral = spectral, box.sources = sources;
+    return test::closed_box_scene(box);
 }
 
 struct BoxResult {
-    WallAverage primary, secondary;
+    test::WallAverage primary, secondary;
 };
 // `primary_only`: many cheap passes with few photons (the light model's primary light is light
 // sampled at the receivers; the photons only make the secondary light).
@@ -151,7 +121,7 @@ BoxResult render_box(const test::ScratchDir& scratch, const std::string& text, b
     settings.render_image = false, settings.passes = primary_only ? 256 : 8, settings.seed = seed;
     settings.photons_per_pass = primary_only ? 64 : 200000, settings.photon_radius = 2, settings.naive_sources = naive;
     const RenderResult r = render(RenderScene(parse_scene_text(text, scratch.file("box.pov"))), settings);
-    return {wall_average(r.layers[1].receivers), wall_average(r.layers[2].receivers)};
+    return {test::wall_average(r.layers[1].receivers), test::wall_average(r.layers[2].receivers)};
 }
 
 // The luminance-weighted mean of a / (1 - a) over [first, first + 10) nm: the light of a model
@@ -164,8 +134,6 @@ double series_over_bin(const ReflectanceSpectrum& a, double first) {
     }
     return num / den;
 }
-
-constexpr double kArea = 6 * 0.01;  // m^2 of wall
 
 TEST(SpectralSource, RadianceSpectrumHasTheLuminanceOfTheColour) {
     // Two models (460 and 580 nm disks) and one without spectra (the same rays read as a
@@ -205,7 +173,7 @@ TEST(SpectralBox, GreyWorldGivesTheSameLuxAsRgb) {
     // the bounds of the RGB test of the same box (BidirectionalDisk.ClosedWhiteBoxConservesEnergy).
     test::ScratchDir scratch;
     const LineDisk disk = line_disk(scratch, 555, 1, 300000, 7);
-    const double primary_truth = 1e6 * disk.luminous_weight / (kArea * 1e6), secondary_truth = primary_truth;
+    const double primary_truth = 1e6 * disk.luminous_weight / (test::kClosedBoxArea * 1e6), secondary_truth = primary_truth;
     const BoxResult rgb = render_box(scratch, coloured_box("1", 0.5, {disk.model}, false), false, 9);
     const BoxResult spectral = render_box(scratch, coloured_box("1", 0.5, {disk.model}, true), false, 9);
     std::printf("grey box: primary RGB %.5g spectral %.5g (se %.2g) truth %.5g; secondary RGB %.5g spectral %.5g "
@@ -227,7 +195,7 @@ TEST(SpectralBox, NarrowBandSourcesSeeTheReflectanceAtTheirWavelengths) {
 
     // 1. The 460 nm disk as its stored rays (naive model): each photon carries 460 nm exactly,
     //    so the walls reflect a(460).
-    const double a460 = a(460), primary_blue = blue.luminous_weight / kArea;
+    const double a460 = a(460), primary_blue = blue.luminous_weight / test::kClosedBoxArea;
     const BoxResult naive = render_box(scratch, coloured_box(pigment, diffuse, {blue.rays}, true), true, 11);
     const double naive_truth = primary_blue * a460 / (1 - a460);
     // 2. The same disk through its light model: the model keeps 10 nm bins, so its light is
@@ -251,9 +219,9 @@ TEST(SpectralBox, NarrowBandSourcesSeeTheReflectanceAtTheirWavelengths) {
     // The camera side's hero wavelengths and the choice of one source per light sample make the
     // two-line primary light noisier (about 1.7% over the 8 passes above): many cheap passes.
     const BoxResult two_primary = render_box(scratch, two_lines, false, 14, true);
-    const double primary_two = primary_blue + yellow.luminous_weight / kArea;
+    const double primary_two = primary_blue + yellow.luminous_weight / test::kClosedBoxArea;
     const double two_truth = primary_blue * series_over_bin(a, 460) +
-                             yellow.luminous_weight / kArea * series_over_bin(a, 580);
+                             yellow.luminous_weight / test::kClosedBoxArea * series_over_bin(a, 580);
     const BoxResult two_rgb =
         render_box(scratch, coloured_box(pigment, diffuse, {blue.model, yellow.model}, false), false, 13);
     std::printf("460 + 580 nm, a(580) = %.4f: primary %.5g (se %.2g, RGB transport %.5g, truth %.5g); secondary "
