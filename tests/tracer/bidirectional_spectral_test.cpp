@@ -4,6 +4,7 @@
 // closed coloured box give the closed form of the geometric series at their wavelengths, with
 // the reflectance of the upsampled spectrum there, where RGB transport gives another answer
 // (metamerism). Seeds are fixed; the bounds are stated beside each check.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -30,20 +31,28 @@ namespace {
 
 TEST(SpectralUpsampling, FittedSpectraGiveTheirColourBackWithinBounds) {
     // Colours across the gamut, its primaries included: the spectrum's colour under D65 back
-    // through XYZ must match within 0.002 per channel (the fits reach 1e-4).
+    // through XYZ must match within 1e-6 per channel. The fit is deterministic; it stops once
+    // the squared colour error is below 1e-14 (each channel within 1e-7), and its worst here is
+    // 6.4e-8 (printed). The bound is 10x that stopping point, for another compiler or libm
+    // taking other Levenberg-Marquardt steps; a fit that stops short of it fails.
     const Rgb colours[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0},{0.8, 0.2, 0.1}, {0.1, 0.6, 0.3}, {0.2, 0.3, 0.9}, {0.5, 0.5, 0.2}, {0.9, 0.8, 0.1},
                            {0.05, 0.04, 0.06}, {0.16, 0.32, 0.72}, {0.7, 0.1, 0.6}, {0.3, 0.9, 0.9}};
+    double worst = 0;
     for (const Rgb& c : colours) {
         const ReflectanceSpectrum s = upsample_reflectance(c);
         const Rgb back = reflected_colour(s);
-        EXPECT_NEAR(back.red, c.red, 2e-3) << c.red << " " << c.green << " " << c.blue;
-        EXPECT_NEAR(back.green, c.green, 2e-3) << c.red << " " << c.green << " " << c.blue;
-        EXPECT_NEAR(back.blue, c.blue, 2e-3) << c.red << " " << c.green << " " << c.blue;
+        EXPECT_NEAR(back.red, c.red, 1e-6) << c.red << " " << c.green << " " << c.blue;
+        EXPECT_NEAR(back.green, c.green, 1e-6) << c.red << " " << c.green << " " << c.blue;
+        EXPECT_NEAR(back.blue, c.blue, 1e-6) << c.red << " " << c.green << " " << c.blue;
+        worst = std::max({worst, std::fabs(back.red - c.red), std::fabs(back.green - c.green),
+                          std::fabs(back.blue - c.blue)});
         for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 1) {
             ASSERT_GE(s(nm), 0);
             ASSERT_LE(s(nm), 1);
         }
     }
+    std::printf("upsampled spectra under D65: worst channel error %.2g over %zu colours\n", worst,
+                sizeof colours / sizeof colours[0]);
     // Greys are constants, exactly.
     for (double v : {0.0, 0.25, 1.0}) {
         const ReflectanceSpectrum s = upsample_reflectance({v, v, v});
@@ -169,20 +178,31 @@ TEST(SpectralSource, RadianceSpectrumHasTheLuminanceOfTheColour) {
 
 TEST(SpectralBox, GreyWorldGivesTheSameLuxAsRgb) {
     // A white 555 nm disk and a grey box (albedo 0.5): spectral and RGB transport estimate the
-    // same integrals; both against the closed forms within 1% (primary) and 2% (secondary),
-    // the bounds of the RGB test of the same box (BidirectionalDisk.ClosedWhiteBoxConservesEnergy).
+    // same integrals with the same light model.
+    // Primary: spectral against RGB transport of the same scene, within 4.5 joint standard
+    // errors (two-sided 6.8e-6 under the normal law; the two renders' samples are nearly
+    // independent, as a spectral path draws its wavelength first and so shifts every later
+    // draw, and a positive correlation would only make the bound safer). Not against the
+    // closed form: the radiance of this 3e5-ray model, summed over the walls, gives 0.7% more
+    // light than the disk emits (RGB 16.778 W/m^2, truth 16.667), in both transports, while the
+    // primary's standard error is 0.02% (the RGB test of this box,
+    // BidirectionalDisk.ClosedWhiteBoxConservesEnergy, holds a 1e6-ray model's primary to the
+    // closed form).
+    // Secondary: against the closed form within 2%, and against RGB within 2% of it, the
+    // bounds of that RGB test.
     test::ScratchDir scratch;
     const LineDisk disk = line_disk(scratch, 555, 1, 300000, 7);
     const double primary_truth = 1e6 * disk.luminous_weight / (test::kClosedBoxArea * 1e6), secondary_truth = primary_truth;
     const BoxResult rgb = render_box(scratch, coloured_box("1", 0.5, {disk.model}, false), false, 9);
     const BoxResult spectral = render_box(scratch, coloured_box("1", 0.5, {disk.model}, true), false, 9);
-    std::printf("grey box: primary RGB %.5g spectral %.5g (se %.2g) truth %.5g; secondary RGB %.5g spectral %.5g "
-                "(se %.2g) truth %.5g W/m^2 (x 683 lx)\n",
-                rgb.primary.mean, spectral.primary.mean, spectral.primary.standard_error, primary_truth,
-                rgb.secondary.mean, spectral.secondary.mean, spectral.secondary.standard_error, secondary_truth);
-    EXPECT_NEAR(spectral.primary.mean, primary_truth, 0.01 * primary_truth);
+    const double joint = std::hypot(rgb.primary.standard_error, spectral.primary.standard_error);
+    std::printf("grey box: primary RGB %.5g (se %.2g) spectral %.5g (se %.2g), difference %.2f joint se, truth %.5g; "
+                "secondary RGB %.5g spectral %.5g (se %.2g) truth %.5g W/m^2 (x 683 lx)\n",
+                rgb.primary.mean, rgb.primary.standard_error, spectral.primary.mean, spectral.primary.standard_error,
+                (spectral.primary.mean - rgb.primary.mean) / joint, primary_truth, rgb.secondary.mean,
+                spectral.secondary.mean, spectral.secondary.standard_error, secondary_truth);
+    EXPECT_NEAR(spectral.primary.mean, rgb.primary.mean, 4.5 * joint);
     EXPECT_NEAR(spectral.secondary.mean, secondary_truth, 0.02 * secondary_truth);
-    EXPECT_NEAR(spectral.primary.mean, rgb.primary.mean, 0.01 * primary_truth);
     EXPECT_NEAR(spectral.secondary.mean, rgb.secondary.mean, 0.02 * secondary_truth);
 }
 
