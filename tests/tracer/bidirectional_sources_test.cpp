@@ -17,6 +17,7 @@
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 #include "support/test_support.h"
+#include "tracer/tracer_support.h"
 #include "tracer/render/ray_sources.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
@@ -206,46 +207,27 @@ TEST(BidirectionalDisk, CameraSeesTheDiskInAMirror) {
     EXPECT_EQ(r.layers[1].film.mean(32, 32).green, 0);  // the black mirror has no smooth lobe
 }
 
-// Receivers on the six inner walls of a closed cube (side 100 mm, albedo a) with the disk at
-// its centre facing down. Every watt lands on a wall once (primary) and a / (1 - a) times more
-// after reflections (secondary), so the wall-averaged irradiances are Phi / A and
-// Phi a / ((1 - a) A), A = 6 x 0.01 m^2.
+// The disk at the centre of the closed box of tracer_support.h, white walls of albedo a: the
+// wall-averaged irradiances are Phi / A (primary) and Phi a / ((1 - a) A) (secondary).
 std::string closed_box(double albedo, const std::string& source) {
-    char walls[1024];
-    std::snprintf(walls, sizeof walls, R"(
-        global_settings { integrator "bidirectional" }
-        box { <-50, -50, -50>, <50, 50, 50> pigment { rgb 1 } finish { diffuse %g ambient 0 } }
-        illuminance_receiver { <-50, -50, -50>, <0, 0, 100>, <100, 0, 0> resolution <20, 20> name "floor" }
-        illuminance_receiver { <-50, 50, -50>, <100, 0, 0>, <0, 0, 100> resolution <20, 20> name "ceiling" }
-        illuminance_receiver { <-50, -50, -50>, <0, 100, 0>, <0, 0, 100> resolution <20, 20> name "left" }
-        illuminance_receiver { <50, -50, -50>, <0, 0, 100>, <0, 100, 0> resolution <20, 20> name "right" }
-        illuminance_receiver { <-50, -50, -50>, <100, 0, 0>, <0, 100, 0> resolution <20, 20> name "near" }
-        illuminance_receiver { <-50, -50, 50>, <0, 100, 0>, <100, 0, 0> resolution <20, 20> name "far" }
-    )", albedo);
-    return walls + std::string("ray_source { \"") + source + "\" rotate <90, 0, 0> }\n";
-}
-
-double wall_average(const std::vector<ReceiverMap>& maps) {
-    double sum = 0;
-    int cells = 0;
-    for (const ReceiverMap& map : maps)
-        for (int j = 0; j < map.irradiance.ny(); ++j)
-            for (int i = 0; i < map.irradiance.nx(); ++i) sum += luminance_weight(map.irradiance.mean(i, j)), ++cells;
-    return sum / cells;
+    test::ClosedBox box;
+    box.diffuse = albedo, box.sources = {source};
+    return test::closed_box_scene(box);
 }
 
 TEST(BidirectionalDisk, ClosedWhiteBoxConservesEnergy) {
-    const double albedo = 0.5, area = 6 * 0.01;  // m^2
+    const double albedo = 0.5, area = test::kClosedBoxArea;
     RenderSettings settings;
     // Gather radius below half a cell (5 mm): no gather disk reaches past a wall's edge.
     settings.render_image = false, settings.passes = 8, settings.seed = 9;
     settings.photons_per_pass = 200000, settings.photon_radius = 2;
     const RenderResult r = render_text(closed_box(albedo, disk_files().model), settings);
-    const double primary = wall_average(r.layers[1].receivers), secondary = wall_average(r.layers[2].receivers);
+    const double primary = test::wall_average(r.layers[1].receivers).mean;
+    const double secondary = test::wall_average(r.layers[2].receivers).mean;
     const double primary_truth = kDiskFlux / area, secondary_truth = kDiskFlux * albedo / ((1 - albedo) * area);
     std::printf("closed box: primary %.5g W/m^2 (truth %.5g), secondary %.5g W/m^2 (truth %.5g), "
                 "combined %.5g, final radius %.3g mm\n",
-                primary, primary_truth, secondary, secondary_truth, wall_average(r.receivers), r.photon_radius);
+                primary, primary_truth, secondary, secondary_truth, test::wall_average(r.receivers).mean, r.photon_radius);
     EXPECT_NEAR(primary, primary_truth, 0.01 * primary_truth);
     EXPECT_NEAR(secondary, secondary_truth, 0.02 * secondary_truth);
 }
@@ -253,12 +235,13 @@ TEST(BidirectionalDisk, ClosedWhiteBoxConservesEnergy) {
 TEST(BidirectionalDisk, NaiveRaySetConservesEnergyToo) {
     // The naive model (the stored rays as photons, paper Figure 1) has no body to light-sample:
     // its primary light is made of the photons' first hits, so the same balance must hold.
-    const double albedo = 0.5, area = 6 * 0.01;
+    const double albedo = 0.5, area = test::kClosedBoxArea;
     RenderSettings settings;
     settings.render_image = false, settings.passes = 8, settings.seed = 9;
     settings.photons_per_pass = 200000, settings.photon_radius = 2, settings.naive_sources = true;
     const RenderResult r = render_text(closed_box(albedo, disk_files().rays), settings);
-    const double primary = wall_average(r.layers[1].receivers), secondary = wall_average(r.layers[2].receivers);
+    const double primary = test::wall_average(r.layers[1].receivers).mean;
+    const double secondary = test::wall_average(r.layers[2].receivers).mean;
     const double primary_truth = kDiskFlux / area, secondary_truth = kDiskFlux * albedo / ((1 - albedo) * area);
     std::printf("closed box, naive rays: primary %.5g W/m^2 (truth %.5g), secondary %.5g W/m^2 (truth %.5g)\n",
                 primary, primary_truth, secondary, secondary_truth);

@@ -4,6 +4,7 @@
 // closed coloured box give the closed form of the geometric series at their wavelengths, with
 // the reflectance of the upsampled spectrum there, where RGB transport gives another answer
 // (metamerism). Seeds are fixed; the bounds are stated beside each check.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 #include "support/test_support.h"
+#include "tracer/tracer_support.h"
 #include "tracer/render/renderer.h"
 #include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/spectrum.h"
@@ -29,20 +31,28 @@ namespace {
 
 TEST(SpectralUpsampling, FittedSpectraGiveTheirColourBackWithinBounds) {
     // Colours across the gamut, its primaries included: the spectrum's colour under D65 back
-    // through XYZ must match within 0.002 per channel (the fits reach 1e-4).
+    // through XYZ must match within 1e-6 per channel. The fit is deterministic; it stops once
+    // the squared colour error is below 1e-14 (each channel within 1e-7), and its worst here is
+    // 6.4e-8 (printed). The bound is 10x that stopping point, for another compiler or libm
+    // taking other Levenberg-Marquardt steps; a fit that stops short of it fails.
     const Rgb colours[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0},{0.8, 0.2, 0.1}, {0.1, 0.6, 0.3}, {0.2, 0.3, 0.9}, {0.5, 0.5, 0.2}, {0.9, 0.8, 0.1},
                            {0.05, 0.04, 0.06}, {0.16, 0.32, 0.72}, {0.7, 0.1, 0.6}, {0.3, 0.9, 0.9}};
+    double worst = 0;
     for (const Rgb& c : colours) {
         const ReflectanceSpectrum s = upsample_reflectance(c);
         const Rgb back = reflected_colour(s);
-        EXPECT_NEAR(back.red, c.red, 2e-3) << c.red << " " << c.green << " " << c.blue;
-        EXPECT_NEAR(back.green, c.green, 2e-3) << c.red << " " << c.green << " " << c.blue;
-        EXPECT_NEAR(back.blue, c.blue, 2e-3) << c.red << " " << c.green << " " << c.blue;
+        EXPECT_NEAR(back.red, c.red, 1e-6) << c.red << " " << c.green << " " << c.blue;
+        EXPECT_NEAR(back.green, c.green, 1e-6) << c.red << " " << c.green << " " << c.blue;
+        EXPECT_NEAR(back.blue, c.blue, 1e-6) << c.red << " " << c.green << " " << c.blue;
+        worst = std::max({worst, std::fabs(back.red - c.red), std::fabs(back.green - c.green),
+                          std::fabs(back.blue - c.blue)});
         for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 1) {
             ASSERT_GE(s(nm), 0);
             ASSERT_LE(s(nm), 1);
         }
     }
+    std::printf("upsampled spectra under D65: worst channel error %.2g over %zu colours\n", worst,
+                sizeof colours / sizeof colours[0]);
     // Greys are constants, exactly.
     for (double v : {0.0, 0.25, 1.0}) {
         const ReflectanceSpectrum s = upsample_reflectance({v, v, v});
@@ -101,47 +111,16 @@ LineDisk line_disk(const test::ScratchDir& scratch, double nm, double flux, uint
     return d;
 }
 
-// A closed cube (side 100 mm) of pigment P, finish diffuse d, with receivers on four walls and
-// the sources at its centre. Every unit of light at wavelength l lands on a wall once (primary)
-// and a / (1 - a) times more (secondary), a = the wall's reflectance at l, so the
-// wall-averaged illuminances are Phi_v / A and the sum over the light of Phi_v a / (1 - a) / A.
+// The closed box of tracer_support.h (its closed forms are there), 10 x 10 cells a wall.
 std::string coloured_box(const std::string& pigment, double diffuse, const std::vector<std::string>& sources,
                          bool spectral) {
-    char walls[1024];
-    std::snprintf(walls, sizeof walls, R"(
-        global_settings { integrator "bidirectional" spectral %s }
-        box { <-50, -50, -50>, <50, 50, 50> pigment { rgb %s } finish { diffuse %g ambient 0 } }
-        illuminance_receiver { <-50, -50, -50>, <0, 0, 100>, <100, 0, 0> resolution <10, 10> name "floor" }
-        illuminance_receiver { <-50, 50, -50>, <100, 0, 0>, <0, 0, 100> resolution <10, 10> name "ceiling" }
-        illuminance_receiver { <-50, -50, -50>, <0, 100, 0>, <0, 0, 100> resolution <10, 10> name "left" }
-        illuminance_receiver { <50, -50, -50>, <0, 0, 100>, <0, 100, 0> resolution <10, 10> name "right" }
-        illuminance_receiver { <-50, -50, -50>, <100, 0, 0>, <0, 100, 0> resolution <10, 10> name "near" }
-        illuminance_receiver { <-50, -50, 50>, <0, 100, 0>, <100, 0, 0> resolution <10, 10> name "far" }
-    )", spectral ? "on" : "off", pigment.c_str(), diffuse);
-    std::string text = walls;
-    for (const std::string& s : sources) text += "ray_source { \"" + s + "\" rotate <90, 0, 0> }\n";
-    return text;
-}
-
-// Wall average of the luminance weight (lx / 683) and its standard error from the cells.
-struct WallAverage {
-    double mean = 0, standard_error = 0;
-};
-WallAverage wall_average(const std::vector<ReceiverMap>& maps) {
-    double sum = 0, squares = 0;
-    int cells = 0;
-    for (const ReceiverMap& map : maps)
-        for (int j = 0; j < map.irradiance.ny(); ++j)
-            for (int i = 0; i < map.irradiance.nx(); ++i) {
-                sum += luminance_weight(map.irradiance.mean(i, j));
-                const double se = map.irradiance.photometric_standard_error(i, j) / kLumensPerWatt;
-                squares += se * se, ++cells;
-            }
-    return {sum / cells, std::sqrt(squares) / cells};
+    test::ClosedBox box;
+    box.pigment = pigment, box.diffuse = diffuse, box.cells = 10, box.spectral = spectral, box.sources = sources;
+    return test::closed_box_scene(box);
 }
 
 struct BoxResult {
-    WallAverage primary, secondary;
+    test::WallAverage primary, secondary;
 };
 // `primary_only`: many cheap passes with few photons (the light model's primary light is light
 // sampled at the receivers; the photons only make the secondary light).
@@ -151,7 +130,7 @@ BoxResult render_box(const test::ScratchDir& scratch, const std::string& text, b
     settings.render_image = false, settings.passes = primary_only ? 256 : 8, settings.seed = seed;
     settings.photons_per_pass = primary_only ? 64 : 200000, settings.photon_radius = 2, settings.naive_sources = naive;
     const RenderResult r = render(RenderScene(parse_scene_text(text, scratch.file("box.pov"))), settings);
-    return {wall_average(r.layers[1].receivers), wall_average(r.layers[2].receivers)};
+    return {test::wall_average(r.layers[1].receivers), test::wall_average(r.layers[2].receivers)};
 }
 
 // The luminance-weighted mean of a / (1 - a) over [first, first + 10) nm: the light of a model
@@ -164,8 +143,6 @@ double series_over_bin(const ReflectanceSpectrum& a, double first) {
     }
     return num / den;
 }
-
-constexpr double kArea = 6 * 0.01;  // m^2 of wall
 
 TEST(SpectralSource, RadianceSpectrumHasTheLuminanceOfTheColour) {
     // Two models (460 and 580 nm disks) and one without spectra (the same rays read as a
@@ -201,20 +178,31 @@ TEST(SpectralSource, RadianceSpectrumHasTheLuminanceOfTheColour) {
 
 TEST(SpectralBox, GreyWorldGivesTheSameLuxAsRgb) {
     // A white 555 nm disk and a grey box (albedo 0.5): spectral and RGB transport estimate the
-    // same integrals; both against the closed forms within 1% (primary) and 2% (secondary),
-    // the bounds of the RGB test of the same box (BidirectionalDisk.ClosedWhiteBoxConservesEnergy).
+    // same integrals with the same light model.
+    // Primary: spectral against RGB transport of the same scene, within 4.5 joint standard
+    // errors (two-sided 6.8e-6 under the normal law; the two renders' samples are nearly
+    // independent, as a spectral path draws its wavelength first and so shifts every later
+    // draw, and a positive correlation would only make the bound safer). Not against the
+    // closed form: the radiance of this 3e5-ray model, summed over the walls, gives 0.7% more
+    // light than the disk emits (RGB 16.778 W/m^2, truth 16.667), in both transports, while the
+    // primary's standard error is 0.02% (the RGB test of this box,
+    // BidirectionalDisk.ClosedWhiteBoxConservesEnergy, holds a 1e6-ray model's primary to the
+    // closed form).
+    // Secondary: against the closed form within 2%, and against RGB within 2% of it, the
+    // bounds of that RGB test.
     test::ScratchDir scratch;
     const LineDisk disk = line_disk(scratch, 555, 1, 300000, 7);
-    const double primary_truth = 1e6 * disk.luminous_weight / (kArea * 1e6), secondary_truth = primary_truth;
+    const double primary_truth = 1e6 * disk.luminous_weight / (test::kClosedBoxArea * 1e6), secondary_truth = primary_truth;
     const BoxResult rgb = render_box(scratch, coloured_box("1", 0.5, {disk.model}, false), false, 9);
     const BoxResult spectral = render_box(scratch, coloured_box("1", 0.5, {disk.model}, true), false, 9);
-    std::printf("grey box: primary RGB %.5g spectral %.5g (se %.2g) truth %.5g; secondary RGB %.5g spectral %.5g "
-                "(se %.2g) truth %.5g W/m^2 (x 683 lx)\n",
-                rgb.primary.mean, spectral.primary.mean, spectral.primary.standard_error, primary_truth,
-                rgb.secondary.mean, spectral.secondary.mean, spectral.secondary.standard_error, secondary_truth);
-    EXPECT_NEAR(spectral.primary.mean, primary_truth, 0.01 * primary_truth);
+    const double joint = std::hypot(rgb.primary.standard_error, spectral.primary.standard_error);
+    std::printf("grey box: primary RGB %.5g (se %.2g) spectral %.5g (se %.2g), difference %.2f joint se, truth %.5g; "
+                "secondary RGB %.5g spectral %.5g (se %.2g) truth %.5g W/m^2 (x 683 lx)\n",
+                rgb.primary.mean, rgb.primary.standard_error, spectral.primary.mean, spectral.primary.standard_error,
+                (spectral.primary.mean - rgb.primary.mean) / joint, primary_truth, rgb.secondary.mean,
+                spectral.secondary.mean, spectral.secondary.standard_error, secondary_truth);
+    EXPECT_NEAR(spectral.primary.mean, rgb.primary.mean, 4.5 * joint);
     EXPECT_NEAR(spectral.secondary.mean, secondary_truth, 0.02 * secondary_truth);
-    EXPECT_NEAR(spectral.primary.mean, rgb.primary.mean, 0.01 * primary_truth);
     EXPECT_NEAR(spectral.secondary.mean, rgb.secondary.mean, 0.02 * secondary_truth);
 }
 
@@ -227,7 +215,7 @@ TEST(SpectralBox, NarrowBandSourcesSeeTheReflectanceAtTheirWavelengths) {
 
     // 1. The 460 nm disk as its stored rays (naive model): each photon carries 460 nm exactly,
     //    so the walls reflect a(460).
-    const double a460 = a(460), primary_blue = blue.luminous_weight / kArea;
+    const double a460 = a(460), primary_blue = blue.luminous_weight / test::kClosedBoxArea;
     const BoxResult naive = render_box(scratch, coloured_box(pigment, diffuse, {blue.rays}, true), true, 11);
     const double naive_truth = primary_blue * a460 / (1 - a460);
     // 2. The same disk through its light model: the model keeps 10 nm bins, so its light is
@@ -251,9 +239,9 @@ TEST(SpectralBox, NarrowBandSourcesSeeTheReflectanceAtTheirWavelengths) {
     // The camera side's hero wavelengths and the choice of one source per light sample make the
     // two-line primary light noisier (about 1.7% over the 8 passes above): many cheap passes.
     const BoxResult two_primary = render_box(scratch, two_lines, false, 14, true);
-    const double primary_two = primary_blue + yellow.luminous_weight / kArea;
+    const double primary_two = primary_blue + yellow.luminous_weight / test::kClosedBoxArea;
     const double two_truth = primary_blue * series_over_bin(a, 460) +
-                             yellow.luminous_weight / kArea * series_over_bin(a, 580);
+                             yellow.luminous_weight / test::kClosedBoxArea * series_over_bin(a, 580);
     const BoxResult two_rgb =
         render_box(scratch, coloured_box(pigment, diffuse, {blue.model, yellow.model}, false), false, 13);
     std::printf("460 + 580 nm, a(580) = %.4f: primary %.5g (se %.2g, RGB transport %.5g, truth %.5g); secondary "

@@ -7,6 +7,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "tracer/render/receiver_irradiance.h"
+
 namespace rayset::tracer {
 
 namespace {
@@ -149,15 +151,14 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
 
 template <class Q>
 Rgb BidirectionalIntegratorOf<Q>::receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
-    const Wavelengths wavelengths = sample_wavelengths<Q>(camera_wavelength_density_, rng);
-    const BsdfOf<Q> bsdf(white_lambertian(), normal, normal, normal, wavelengths);
-    Q reflected_light = sample_sources(bsdf, point, normal, wavelengths, rng, rays);
-    BsdfSampleOf<Q> s;
-    const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
-    if (bsdf.sample(u_lobe, u1, u2, s) && !is_black(s.weight))
-        reflected_light +=
-            s.weight * bodies_crossed(scene_.offset(point, normal, s.wi), s.wi, s.pdf, point, wavelengths, rays);
-    return kPi * to_rgb(reflected_light, wavelengths);
+    return white_lambertian_irradiance<Q>(
+        normal, camera_wavelength_density_, rng,
+        [&](const BsdfOf<Q>& bsdf, const Wavelengths& wavelengths) {
+            return sample_sources(bsdf, point, normal, wavelengths, rng, rays);
+        },
+        [&](const BsdfSampleOf<Q>& s, const Wavelengths& wavelengths) {
+            return s.weight * bodies_crossed(scene_.offset(point, normal, s.wi), s.wi, s.pdf, point, wavelengths, rays);
+        });
 }
 
 template <class Q>

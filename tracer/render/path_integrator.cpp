@@ -5,6 +5,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "tracer/render/receiver_irradiance.h"
+
 namespace rayset::tracer {
 
 namespace {
@@ -38,22 +40,21 @@ Rgb PathIntegratorOf<Q>::radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint6
 
 template <class Q>
 Rgb PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
-    const Wavelengths wavelengths = sample_wavelengths<Q>(wavelength_density_, rng);
-    const BsdfOf<Q> bsdf(white_lambertian(), normal, normal, normal, wavelengths);
-    Q reflected = direct(bsdf, point, normal, wavelengths, rng, rays);
-    BsdfSampleOf<Q> s;
-    const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
-    if (bsdf.sample(u_lobe, u1, u2, s)) {
-        PathState state;
-        state.origin = scene_.offset(point, normal, s.wi);
-        state.direction = s.wi;
-        state.kind = RayKind::indirect;
-        state.beta = s.weight;
-        state.bsdf_pdf = s.pdf;
-        state.depth = 1;
-        reflected += trace(state, wavelengths, rng, rays);
-    }
-    return kPi * to_rgb(reflected, wavelengths);
+    return white_lambertian_irradiance<Q>(
+        normal, wavelength_density_, rng,
+        [&](const BsdfOf<Q>& bsdf, const Wavelengths& wavelengths) {
+            return direct(bsdf, point, normal, wavelengths, rng, rays);
+        },
+        [&](const BsdfSampleOf<Q>& s, const Wavelengths& wavelengths) {
+            PathState state;
+            state.origin = scene_.offset(point, normal, s.wi);
+            state.direction = s.wi;
+            state.kind = RayKind::indirect;
+            state.beta = s.weight;
+            state.bsdf_pdf = s.pdf;
+            state.depth = 1;
+            return trace(state, wavelengths, rng, rays);
+        });
 }
 
 template <class Q>

@@ -1,0 +1,38 @@
+// Shared by the tracer tests: the closed box with a receiver on each of its six inner walls,
+// the scene of the energy-balance tests (primary and secondary light against closed forms),
+// and the wall average read from its receivers.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tracer/film/film.h"
+
+namespace rayset::test {
+
+// A closed cube (side 100 mm, centred on the origin) of `pigment` (a POV-Ray colour: "1",
+// "<0.2, 0.4, 0.9>") and finish diffuse `diffuse`, an illuminance receiver of cells x cells on
+// each inner wall, facing in, and the ray sources at its centre turned to emit toward -y
+// (rotate <90, 0, 0>); the bidirectional integrator, spectral transport if `spectral`.
+// Every unit of light at wavelength l lands on a wall once (primary) and a / (1 - a) times more
+// after reflections (secondary), a = the walls' reflectance at l: the wall-averaged
+// irradiances are Phi / A and the sum over the light of Phi a / ((1 - a) A), A = kClosedBoxArea.
+struct ClosedBox {
+    std::string pigment = "1";
+    double diffuse = 0.5;
+    int cells = 20;  // receiver cells along each edge of a wall
+    bool spectral = false;
+    std::vector<std::string> sources;  // ray files or light models
+};
+std::string closed_box_scene(const ClosedBox& box);
+
+constexpr double kClosedBoxArea = 6 * 0.01;  // m^2 of wall
+
+// Mean over every cell of the maps of the luminance weight (lx / 683, W/m^2 for a grey light),
+// and its standard error from the cells' own.
+struct WallAverage {
+    double mean = 0, standard_error = 0;
+};
+WallAverage wall_average(const std::vector<tracer::ReceiverMap>& maps);
+
+}  // namespace rayset::test
