@@ -20,6 +20,28 @@ namespace {
 
 std::string system_error_text() { return std::strerror(errno); }
 
+// Where a write to `path` goes, and how. A symbolic link is followed, so that the link stays a
+// link and the file it names is replaced. Only a regular file (or nothing yet) is replaced by
+// a temporary renamed into place: devices and pipes are written in place.
+struct OutputTarget {
+    std::filesystem::path file;
+    bool in_place = false;
+};
+
+OutputTarget output_target(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    OutputTarget target{fs::path(path)};
+    if (fs::is_symlink(target.file, ec) && fs::exists(target.file, ec)) {  // a dangling link is replaced
+        target.file = fs::canonical(target.file, ec);
+        if (ec) fail(path, "cannot follow the symbolic link: " + ec.message());
+    }
+    const fs::file_status status = fs::status(target.file, ec);
+    if (fs::is_directory(status)) fail(path, "is a folder, not a file");
+    target.in_place = fs::exists(status) && !fs::is_regular_file(status);
+    return target;
+}
+
 std::FILE* open_for_reading(const std::string& path, uint64_t& size) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) fail(path, "is a folder, not a file");
@@ -137,30 +159,42 @@ bool TextInput::next(std::string& line) {
 // ---------------------------------------------------------------------------------------------
 AtomicOutput::AtomicOutput(const std::string& path) : path_(path), buffer_(size_t(64) << 10) {
     namespace fs = std::filesystem;
-    fs::path target(path);
-    fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    const OutputTarget target = output_target(path);
+    if (target.in_place) {
+        fd_ = ::open(target.file.c_str(), O_WRONLY | O_CLOEXEC);
+        if (fd_ < 0) fail(path, "cannot open for writing: " + system_error_text());
+        return;
+    }
+    fs::path dir = target.file.has_parent_path() ? target.file.parent_path() : fs::path(".");
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) fail(path, "cannot write: folder " + dir.string() + " does not exist");
     // A hidden temporary name in the same folder, so the final rename is atomic.
     std::random_device rd;
     for (int attempt = 0; attempt < 16 && fd_ < 0; ++attempt) {
-        temp_path_ = (dir / ("." + target.filename().string() + ".tmp" + std::to_string(rd() % 1000000))).string();
+        temp_path_ = (dir / ("." + target.file.filename().string() + ".tmp" + std::to_string(rd() % 1000000))).string();
         fd_ = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     }
     if (fd_ < 0) fail(path, "cannot create a temporary file beside it: " + system_error_text());
+    final_path_ = target.file.string();
 }
 
 AtomicOutput::~AtomicOutput() {
     if (fd_ >= 0) ::close(fd_);
-    if (!committed_) std::remove(temp_path_.c_str());
+    if (!committed_ && !temp_path_.empty()) std::remove(temp_path_.c_str());
 }
 
 void AtomicOutput::write_fully(const uint8_t* data, size_t n, uint64_t at) {
+    // Appends with write(), which a pipe takes too; only a patch goes back, with pwrite().
+    const bool append = at == appended_;
     while (n > 0) {
-        ssize_t done = ::pwrite(fd_, data, n, static_cast<off_t>(at));
+        ssize_t done = append ? ::write(fd_, data, n) : ::pwrite(fd_, data, n, static_cast<off_t>(at));
         if (done < 0 && errno == EINTR) continue;
+        if (done < 0 && errno == ESPIPE)
+            fail(path_, "cannot write this format to a pipe: its header is completed after the rays, which needs a "
+                        "file (write to a file, or choose csv)");
         if (done <= 0) fail(path_, "write failed: " + system_error_text());
         data += done, n -= static_cast<size_t>(done), at += static_cast<uint64_t>(done);
+        if (append) appended_ += static_cast<uint64_t>(done);
     }
 }
 
@@ -195,11 +229,13 @@ void AtomicOutput::patch(uint64_t offset, const void* data, size_t n) {
 void AtomicOutput::commit() {
     if (committed_) return;
     flush();
-    if (::fsync(fd_) != 0) fail(path_, "write failed: " + system_error_text());
+    // A device or pipe has no disk to flush to (fsync fails on some); a file must reach its disk.
+    if (!temp_path_.empty() && ::fsync(fd_) != 0) fail(path_, "write failed: " + system_error_text());
     int closed = ::close(fd_);
     fd_ = -1;
     if (closed != 0) fail(path_, "write failed: " + system_error_text());
-    if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) fail(path_, "cannot move the finished file into place: " + system_error_text());
+    if (!temp_path_.empty() && std::rename(temp_path_.c_str(), final_path_.c_str()) != 0)
+        fail(path_, "cannot move the finished file into place: " + system_error_text());
     committed_ = true;
 }
 
@@ -271,10 +307,21 @@ std::string format_double(double value) {
 
 void write_atomically(const std::string& path, const std::function<bool(const std::string&)>& write) {
     namespace fs = std::filesystem;
-    const fs::path target(path);
-    // Same extension, so writers that look at it (none of VTK's XML ones do) still agree.
-    const fs::path temporary = target.parent_path() / ("." + target.stem().string() + ".partial" + target.extension().string());
+    const OutputTarget target = output_target(path);
     std::error_code ignored;
+    if (target.in_place) {
+        bool written = false;
+        try {
+            written = write(target.file.string());
+        } catch (const std::exception& e) {
+            throw Error(path + ": cannot write: " + e.what());
+        }
+        if (!written) throw Error(path + ": cannot write");
+        return;
+    }
+    // Same extension, so writers that look at it (none of VTK's XML ones do) still agree.
+    const fs::path temporary =
+        target.file.parent_path() / ("." + target.file.stem().string() + ".partial" + target.file.extension().string());
     bool written = false;
     try {
         written = write(temporary.string()) && fs::exists(temporary);
@@ -287,7 +334,7 @@ void write_atomically(const std::string& path, const std::function<bool(const st
         throw Error(path + ": cannot write");
     }
     std::error_code error;
-    fs::rename(temporary, target, error);
+    fs::rename(temporary, target.file, error);
     if (error) {
         fs::remove(temporary, ignored);
         throw Error(path + ": cannot write: " + error.message());

@@ -85,7 +85,8 @@ private:
 // For writers that take a file name (OpenVDB, VTK): `write` gets a temporary path beside `path`
 // (hidden, same extension) and returns whether it succeeded; the file is then renamed into
 // place. On failure or an exception the temporary file is removed, whatever was at `path` is
-// untouched, and rayset::Error names `path`.
+// untouched, and rayset::Error names `path`. Like AtomicOutput, it writes through a symbolic
+// link to the file it names, and into a device or pipe (/dev/null, a FIFO) in place.
 void write_atomically(const std::string& path, const std::function<bool(const std::string&)>& write);
 
 // Writes to a temporary file beside the target and renames it into place on commit(). If the
@@ -93,6 +94,9 @@ void write_atomically(const std::string& path, const std::function<bool(const st
 // whatever was at the target path before is untouched. commit() flushes the file to the disk
 // (fsync) before the rename, so that a crash cannot leave a half-written file under the name.
 // Small writes are gathered in a buffer; large ones go from the caller's memory to the file.
+// A symbolic link stays a link: the file it names is the one replaced. A device or pipe
+// (/dev/null, a FIFO) is written in place - renaming over it would replace the device itself,
+// and it holds nothing to protect; patch() then fails on a pipe, which cannot go back.
 class AtomicOutput {
 public:
     explicit AtomicOutput(const std::string& path);
@@ -114,9 +118,11 @@ private:
     void write_fully(const uint8_t* data, size_t n, uint64_t at);
 
     std::string path_;
-    std::string temp_path_;
+    std::string temp_path_;   // empty when writing a device or pipe in place
+    std::string final_path_;  // where the temporary goes: path_, or the file its link names
     int fd_ = -1;
     uint64_t offset_ = 0;      // bytes written, buffered ones included
+    uint64_t appended_ = 0;    // bytes written to the file in order (not patches)
     std::vector<uint8_t> buffer_;
     size_t buffered_ = 0;      // bytes waiting in buffer_, the last ones of offset_
     bool committed_ = false;
