@@ -120,25 +120,18 @@ bool RayReader::read(RayChunk& chunk) {
     if (!ahead_) ahead_ = std::make_unique<ReadAhead>(*this);
     RayTotals chunk_totals;
     if (ahead_->take(chunk, chunk_totals)) {
-        add(chunk_totals);
+        totals_ += chunk_totals;
         return true;
     }
     finish();
     return false;
 }
 
-void RayReader::add(const RayTotals& chunk_totals) {
-    totals_.radiant += chunk_totals.radiant;
-    totals_.luminous += chunk_totals.luminous;
-    totals_.rays += chunk_totals.rays;
-    totals_.zero_flux_rays += chunk_totals.zero_flux_rays;
-}
-
 size_t RayReader::parts() const {
     if (!reopen_ || !decoder_->can_seek()) return 1;
     // Parts of at least 16 chunks: fewer would cost more in opening and threads than they save.
-    const uint64_t chunks_per_part = 16 * options_.chunk_size;
-    return static_cast<size_t>(std::clamp<uint64_t>(header_.ray_count / chunks_per_part, 1, kMaxParts));
+    const uint64_t least_rays_per_part = 16 * options_.chunk_size;
+    return static_cast<size_t>(std::clamp<uint64_t>(header_.ray_count / least_rays_per_part, 1, kMaxParts));
 }
 
 void RayReader::read_in_parts(const std::function<void(size_t, const RayColumns&)>& visit,
@@ -165,10 +158,7 @@ void RayReader::read_in_parts(const std::function<void(size_t, const RayColumns&
             RayColumns chunk;
             for (uint64_t next = first; next < end && failed.load(std::memory_order_relaxed) > p;) {
                 if (!decoder.decode(chunk, static_cast<size_t>(std::min<uint64_t>(options_.chunk_size, end - next)))) break;
-                const RayTotals t = validate(chunk);
-                Part& result = results[p];
-                result.totals.radiant += t.radiant, result.totals.luminous += t.luminous;
-                result.totals.rays += t.rays, result.totals.zero_flux_rays += t.zero_flux_rays;
+                results[p].totals += validate(chunk);
                 visit(p, chunk);
                 next += chunk.size();
                 rays_in_parts_.fetch_add(chunk.size(), std::memory_order_relaxed);
@@ -190,7 +180,7 @@ void RayReader::read_in_parts(const std::function<void(size_t, const RayColumns&
     for (std::thread& t : helpers) t.join();
     for (const Part& part : results) {
         if (part.error) std::rethrow_exception(part.error);
-        add(part.totals);  // in part order: the sums do not depend on the threads
+        totals_ += part.totals;  // in part order: the sums do not depend on the threads
     }
     finish();
 }

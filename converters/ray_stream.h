@@ -79,6 +79,12 @@ struct RayTotals {
     double radiant = 0, luminous = 0;
     uint64_t rays = 0;
     uint64_t zero_flux_rays = 0;
+
+    RayTotals& operator+=(const RayTotals& more) {
+        radiant += more.radiant, luminous += more.luminous;
+        rays += more.rays, zero_flux_rays += more.zero_flux_rays;
+        return *this;
+    }
 };
 
 // The validating, scaling reader over a decoder. read() hands out the rays in order; the
@@ -127,7 +133,6 @@ private:
     // Checks and scales a chunk (on the read-ahead thread: it changes nothing but the chunk).
     RayTotals validate(RayColumns& chunk) const;
     void check_ray(RayColumns& chunk, size_t index) const;
-    void add(const RayTotals& chunk_totals);
     void finish();  // the checks that need every ray, at the end
 
     std::unique_ptr<RayDecoder> decoder_;
