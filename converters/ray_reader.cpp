@@ -214,7 +214,9 @@ inline bool flux_ok(float v) { return (v >= 0) & (v <= std::numeric_limits<float
 // Bitwise & rather than &&: no branch per value, and every ray of a valid file evaluates all.
 struct RayTest {
     float min_length2, max_length2;  // |d| within [1 - tol, 1 + tol] as a test on |d|^2: no root
-    bool radiant, luminous, per_ray_table;
+    // Which columns hold the file's values: a decoder fills the others with the unknown value
+    // (docs/architecture.md, "The ray record and its header").
+    bool radiant, luminous, wavelength, per_ray_table;
     int32_t tables;
 
     bool passes(float ox, float oy, float oz, float dx, float dy, float dz, float radiant_flux, float luminous_flux,
@@ -222,7 +224,7 @@ struct RayTest {
         const float length2 = dx * dx + dy * dy + dz * dz;
         return finite_float(ox) & finite_float(oy) & finite_float(oz) & (length2 >= min_length2) &
                (length2 <= max_length2) & ((!radiant) | flux_ok(radiant_flux)) & ((!luminous) | flux_ok(luminous_flux)) &
-               (std::isnan(wavelength) | flux_ok(wavelength)) & ((!per_ray_table) | ((spectrum >= 0) & (spectrum < tables)));
+               ((!this->wavelength) | std::isnan(wavelength) | flux_ok(wavelength)) & ((!per_ray_table) | ((spectrum >= 0) & (spectrum < tables)));
     }
 };
 
@@ -243,8 +245,10 @@ bool all_pass(const RayColumns& c, const RayTest& test) {
     };
     if (test.radiant) all_flux_ok(c.radiant.data());
     if (test.luminous) all_flux_ok(c.luminous.data());
-    const float* wavelength = c.wavelength.data();
-    for (size_t i = 0; i < n; ++i) pass &= std::isnan(wavelength[i]) | flux_ok(wavelength[i]);
+    if (test.wavelength) {
+        const float* wavelength = c.wavelength.data();
+        for (size_t i = 0; i < n; ++i) pass &= std::isnan(wavelength[i]) | flux_ok(wavelength[i]);
+    }
     if (test.per_ray_table) {
         const int32_t* spectrum = c.spectrum.data();
         for (size_t i = 0; i < n; ++i) pass &= (spectrum[i] >= 0) & (spectrum[i] < test.tables);
@@ -258,7 +262,8 @@ RayTotals RayReader::validate(RayColumns& chunk) const {
     RayTotals totals;
     const double tolerance = options_.direction_tolerance;
     const RayTest test{float((1 - tolerance) * (1 - tolerance)), float((1 + tolerance) * (1 + tolerance)),
-                       header_.has_radiant, header_.has_luminous, header_.spectral == SpectralKind::per_ray_table,
+                       header_.has_radiant, header_.has_luminous, header_.spectral == SpectralKind::per_ray_wavelength,
+                       header_.spectral == SpectralKind::per_ray_table,
                        static_cast<int32_t>(header_.spectral_tables.size())};
     const size_t n = chunk.size();
     // Nearly every chunk is valid: one pass finds out, without stopping at the first bad ray;
@@ -321,7 +326,8 @@ void RayReader::check_ray(RayColumns& chunk, size_t i) const {
     if (header_.has_radiant && !flux_ok(r.radiant)) bad(fmt::format("radiant flux {} is not a non-negative number", r.radiant));
     if (header_.has_luminous && !flux_ok(r.luminous)) bad(fmt::format("luminous flux {} is not a non-negative number", r.luminous));
     // NaN means "unknown wavelength" in real files; anything else must be a wavelength.
-    if (!std::isnan(r.wavelength) && !(r.wavelength > 0 && finite_float(r.wavelength)))
+    if (header_.spectral == SpectralKind::per_ray_wavelength && !std::isnan(r.wavelength) &&
+        !(r.wavelength > 0 && finite_float(r.wavelength)))
         bad(fmt::format("wavelength {} nm is not a positive number (NaN would mean unknown)", r.wavelength));
     const size_t tables = header_.spectral_tables.size();
     if (header_.spectral == SpectralKind::per_ray_table && (r.spectrum < 0 || size_t(r.spectrum) >= tables))

@@ -30,18 +30,33 @@ double azimuth_of(double a) {
     return std::atan2(t, 1 - t) + quadrant * kPi / 2;
 }
 
+// A cell is numbered band << 8 | sector: a shift instead of a multiplication by kPhiBands
+// (SSE2 has no 32-bit vector multiply); numbers whose sector is kPhiBands or more are unused.
+constexpr int kSectorBits = 8;
+static_assert(RaySummary::kPhiBands <= 1 << kSectorBits);
+constexpr int kCellNumbers = RaySummary::kZBands << kSectorBits, kSectorMask = (1 << kSectorBits) - 1;
+
+// The band and the sector as floats clamped to their ranges before they are truncated: a
+// minimum and a maximum, written as the comparisons SSE's minps and maxps make (a NaN band
+// goes to 0), instead of a clamp in integers, which SSE2 does in four instructions.
+constexpr float kTopBand = RaySummary::kZBands - 0.5f, kTopSector = RaySummary::kPhiBands - 0.5f;
+
 // In float, in the same operations as coverage_cells() below, so that both give the same cell.
 // Branch-free: directions fall in the four quadrants at random, so branches on them would
 // mostly be mispredicted. The quadrant's boundaries take -0 as 0; (0, 0) is sector 0.
 inline int coverage_cell(float x, float y, float z) {
-    const int band = std::clamp(static_cast<int>((z + 1.0f) * (0.5f * RaySummary::kZBands)), 0, RaySummary::kZBands - 1);
+    float band = (z + 1.0f) * (0.5f * RaySummary::kZBands);
+    band = band > 0.0f ? band : 0.0f;
+    band = band < kTopBand ? band : kTopBand;
     const float ax = std::abs(x), ay = std::abs(y), sum = ax + ay;
     const int odd = (y >= 0) != (x >= 0);
     const int quadrant = ((y < 0) * 2) | odd;  // 0 1 2 3 anticlockwise from +x +y
     // The smallest normal float is at most a sum that is not 0; (0, 0) gives 0 / min.
-    const float part = (odd ? ax : ay) / std::max(sum, std::numeric_limits<float>::min());
-    const int sector = std::min(RaySummary::kPhiBands - 1, static_cast<int>((float(quadrant) + part) * float(RaySummary::kPhiBands / 4)));
-    return band * RaySummary::kPhiBands + sector;
+    const float smallest = std::numeric_limits<float>::min();
+    const float part = (odd ? ax : ay) / (sum > smallest ? sum : smallest);
+    float sector = (float(quadrant) + part) * float(RaySummary::kPhiBands / 4);
+    sector = sector < kTopSector ? sector : kTopSector;
+    return static_cast<int>(band) << kSectorBits | static_cast<int>(sector);
 }
 
 double sector_azimuth(int sector, double within) { return azimuth_of((sector + within) * 4.0 / RaySummary::kPhiBands); }
@@ -57,48 +72,46 @@ struct Sectors {
             width[sector] = to - from, cos_middle[sector] = std::cos(middle), sin_middle[sector] = std::sin(middle);
         }
     }
-    double solid_angle(int cell) const { return 2.0 / RaySummary::kZBands * width[cell % RaySummary::kPhiBands]; }
+    double solid_angle(int cell) const { return 2.0 / RaySummary::kZBands * width[cell & kSectorMask]; }
     Vec3f centre(int cell) const {
-        const int band = cell / RaySummary::kPhiBands, sector = cell % RaySummary::kPhiBands;
+        const int band = cell >> kSectorBits, sector = cell & kSectorMask;
         const double z = (band + 0.5) / RaySummary::kZBands * 2 - 1, s = std::sqrt(std::max(0.0, 1 - z * z));
         return {float(s * cos_middle[sector]), float(s * sin_middle[sector]), float(z)};
     }
 };
 
-// Vectors of four lanes (GCC's vector extensions, which compile to SSE2 on any x86-64; the four
-// doubles take two registers). Four rays are taken at a time: every per-ray step below is one
-// vector operation for the four. The vectors never cross a function boundary that is not
-// inlined, so the ABI note GCC gives on returning 32-byte vectors does not apply.
-#pragma GCC diagnostic ignored "-Wpsabi"
+// Vectors of four lanes (GCC's vector extensions, which compile to SSE2 on any x86-64). Four
+// rays are taken at a time: every per-ray step below is one vector operation for the four.
 using V4f = float __attribute__((vector_size(16)));
 using V4i = int32_t __attribute__((vector_size(16)));
-using V4d = double __attribute__((vector_size(32)));
+using V4d = double __attribute__((vector_size(32)));  // two registers; never passed to a call
+#pragma GCC diagnostic ignored "-Wpsabi"  // GCC's note on passing 32-byte vectors by value
 
 inline V4f load4(const float* p) {
     V4f v;
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-inline V4d to_double(V4f v) { return __builtin_convertvector(v, V4d); }
 inline V4f splat(float v) { return V4f{v, v, v, v}; }
 
 // coverage_cell() for four rays.
 inline V4i coverage_cells(V4f x, V4f y, V4f z) {
-    V4i band = __builtin_convertvector((z + 1.0f) * (0.5f * RaySummary::kZBands), V4i);  // truncates
-    band = band < 0 ? 0 : band;
-    band = band > RaySummary::kZBands - 1 ? RaySummary::kZBands - 1 : band;
+    V4f band = (z + 1.0f) * (0.5f * RaySummary::kZBands);
+    band = band > 0.0f ? band : 0.0f;
+    band = band < kTopBand ? band : kTopBand;
     const V4f ax = (V4f)((V4i)x & INT32_MAX), ay = (V4f)((V4i)y & INT32_MAX);  // |x|, |y|
     const V4i odd = (y >= 0) != (x >= 0);             // masks: -1 or 0
     const V4i quadrant = ((y < 0) & 2) | (odd & 1);
     const V4f sum = ax + ay, smallest = splat(std::numeric_limits<float>::min());
-    const V4f part = (odd ? ax : ay) / (sum < smallest ? smallest : sum);
-    V4i sector = __builtin_convertvector((__builtin_convertvector(quadrant, V4f) + part) * float(RaySummary::kPhiBands / 4), V4i);
-    sector = sector > RaySummary::kPhiBands - 1 ? RaySummary::kPhiBands - 1 : sector;
-    return band * RaySummary::kPhiBands + sector;
+    const V4f part = (odd ? ax : ay) / (sum > smallest ? sum : smallest);
+    V4f sector = (__builtin_convertvector(quadrant, V4f) + part) * float(RaySummary::kPhiBands / 4);
+    sector = sector < kTopSector ? sector : kTopSector;
+    return __builtin_convertvector(band, V4i) << kSectorBits | __builtin_convertvector(sector, V4i);  // truncated
 }
 
 // Sums kept in kLanes lanes: ray i of a block goes to lane i % kLanes (a block's last rays
-// past a multiple of kLanes to lane 0), so a sum is the same however the work is vectorised.
+// past a multiple of kLanes to lane 0), so a sum is the same however the work is divided; eight
+// lanes are two vectors of four, whose additions do not wait for each other.
 constexpr size_t kLanes = 8;
 struct LaneSums {
     double v[kLanes] = {};
@@ -119,7 +132,13 @@ public:
     void add(const RayColumns& chunk) {
         const size_t n = chunk.size();
         const float* weight = header_.has_radiant ? chunk.radiant.data() : chunk.luminous.data();
-        for (size_t start = 0; start < n; start += kBlock) add_block(chunk, weight, start, std::min(kBlock, n - start));
+        // Only per-ray wavelengths are worth their extremes; otherwise the column is unknown.
+        const bool wavelengths = header_.spectral == SpectralKind::per_ray_wavelength;
+        for (size_t start = 0; start < n; start += kBlock) {
+            const size_t block = std::min(kBlock, n - start);
+            if (wavelengths) add_block<true>(chunk, weight, start, block);
+            else add_block<false>(chunk, weight, start, block);
+        }
         if (spectral_luminous_ && !shared_efficacy_)
             for (size_t i = 0; i < n; ++i) {
                 const double lm = weights_.luminous(chunk.ray(i));
@@ -142,10 +161,15 @@ public:
     void finish(const RayTotals& totals, RaySummary& s) const;
 
 private:
-    // Up to kBlock rays from `start`, whose cells fit an array on the stack.
-    static constexpr size_t kBlock = 512;
+    // Up to kBlock rays from `start`, whose cells fit an array on the stack; direction sums are
+    // kept in float for kGroup rays at a time.
+    static constexpr size_t kBlock = 512, kGroup = 64;
 
+    // Fields 0-2 are the origin, 3 the wavelength (extremes and unknowns kept only if asked:
+    // a register less in a loop that has few to spare).
+    template <bool kWavelength>
     void add_block(const RayColumns& c, const float* weight, size_t start, size_t n) {
+        constexpr int kFields = kWavelength ? 4 : 3;
         const float* field[4] = {c.ox.data() + start, c.oy.data() + start, c.oz.data() + start, c.wavelength.data() + start};
         const float *dx = c.dx.data() + start, *dy = c.dy.data() + start, *dz = c.dz.data() + start;
         weight += start;
@@ -154,42 +178,52 @@ private:
         // Locals: the byte stores to `seen` could alias members, which would then be reloaded.
         V4f low[4], high[4];
         std::copy(low_, low_ + 4, low), std::copy(high_, high_ + 4, high);
-        V4d mean[3][2];
-        for (int k = 0; k < 3; ++k)
-            for (int h = 0; h < 2; ++h) std::memcpy(&mean[k][h], mean_[k].v + 4 * h, sizeof(V4d));
         uint8_t* const seen = reached_.data();
         size_t i = 0;
-        for (; i + kLanes <= n; i += kLanes)
-            for (size_t h = 0; h < 2; ++h) {
-                const size_t j = i + 4 * h;
-                // Extremes: a NaN leaves them as they are (the comparison is false).
-                for (int k = 0; k < 4; ++k) {
-                    const V4f v = load4(field[k] + j);
-                    low[k] = v < low[k] ? v : low[k];
-                    high[k] = v > high[k] ? v : high[k];
+        const size_t vectorised = n - n % kLanes;
+        while (i < vectorised) {
+            // Flux-weighted direction sums of up to kGroup rays, in float: a lane adds at most
+            // kGroup / kLanes = 8 products, so its sum is within 9 u_f of the sum of their absolute
+            // values (Higham 4.2, with the products' own rounding; u_f = 2^-24), at a third of the
+            // instructions of sums in double. The groups' sums are added in double.
+            V4f mean[3][2] = {};
+            for (const size_t end = std::min(vectorised, i + kGroup); i < end; i += kLanes)
+                for (size_t h = 0, j = i; h < 2; ++h, j += 4) {
+                    // Extremes: a NaN leaves them as they are (the comparison is false).
+                    for (int k = 0; k < kFields; ++k) {
+                        const V4f v = load4(field[k] + j);
+                        low[k] = v < low[k] ? v : low[k];
+                        high[k] = v > high[k] ? v : high[k];
+                    }
+                    if constexpr (kWavelength) {
+                        const V4f wavelength = load4(field[3] + j);
+                        unknown -= wavelength != wavelength;  // -1 per NaN
+                    }
+                    const V4f x = load4(dx + j), y = load4(dy + j), z = load4(dz + j);
+                    const V4f w = load4(weight + j);
+                    mean[0][h] += w * x, mean[1][h] += w * y, mean[2][h] += w * z;
+                    const V4i cell = coverage_cells(x, y, z);
+                    std::memcpy(cells + j, &cell, sizeof cell);
                 }
-                const V4f wavelength = load4(field[3] + j);
-                unknown -= wavelength != wavelength;  // -1 per NaN
-                const V4f x = load4(dx + j), y = load4(dy + j), z = load4(dz + j);
-                // Flux-weighted direction sums, in double (a float times a float is exact there).
-                const V4d w = to_double(load4(weight + j));
-                mean[0][h] += w * to_double(x), mean[1][h] += w * to_double(y), mean[2][h] += w * to_double(z);
-                const V4i cell = coverage_cells(x, y, z);
-                std::memcpy(cells + j, &cell, sizeof cell);
-            }
+            for (int k = 0; k < 3; ++k)
+                for (int h = 0; h < 2; ++h) {
+                    V4d sum;
+                    std::memcpy(&sum, mean_[k].v + 4 * h, sizeof sum);
+                    sum += __builtin_convertvector(mean[k][h], V4d);
+                    std::memcpy(mean_[k].v + 4 * h, &sum, sizeof sum);
+                }
+        }
         // The scattered stores after the vector loop: a store per lane from inside it would first
         // have to take the lane out of its register.
         for (size_t c = 0; c < i; ++c) seen[cells[c]] = 1;
-        for (int k = 0; k < 3; ++k)
-            for (int h = 0; h < 2; ++h) std::memcpy(mean_[k].v + 4 * h, &mean[k][h], sizeof(V4d));
         std::copy(low, low + 4, low_), std::copy(high, high + 4, high_);
         for (; i < n; ++i) {  // the rays past the last multiple of kLanes
-            for (int k = 0; k < 4; ++k) {
+            for (int k = 0; k < kFields; ++k) {
                 const float v = field[k][i];
                 low_[k][0] = v < low_[k][0] ? v : low_[k][0];
                 high_[k][0] = v > high_[k][0] ? v : high_[k][0];
             }
-            unknown[0] += std::isnan(field[3][i]);
+            if constexpr (kWavelength) unknown[0] += std::isnan(field[3][i]);
             mean_[0].v[0] += double(weight[i]) * dx[i], mean_[1].v[0] += double(weight[i]) * dy[i];
             mean_[2].v[0] += double(weight[i]) * dz[i];
             seen[coverage_cell(dx[i], dy[i], dz[i])] = 1;
@@ -210,7 +244,7 @@ private:
     V4f low_[4] = {splat(INFINITY), splat(INFINITY), splat(INFINITY), splat(INFINITY)};
     V4f high_[4] = {splat(-INFINITY), splat(-INFINITY), splat(-INFINITY), splat(-INFINITY)};
     uint64_t unknown_ = 0;
-    std::vector<uint8_t> reached_ = std::vector<uint8_t>(RaySummary::kCoverageCells, 0);
+    std::vector<uint8_t> reached_ = std::vector<uint8_t>(kCellNumbers, 0);
 };
 
 void Accumulator::finish(const RayTotals& t, RaySummary& s) const {
@@ -238,7 +272,7 @@ void Accumulator::finish(const RayTotals& t, RaySummary& s) const {
     const Sectors sectors;
     double reached_solid_angle = 0;
     double min_cos = 1;
-    for (int c = 0; c < RaySummary::kCoverageCells; ++c) {
+    for (int c = 0; c < kCellNumbers; ++c) {
         if (!reached_[c]) continue;
         reached_solid_angle += sectors.solid_angle(c);
         Vec3f v = sectors.centre(c);

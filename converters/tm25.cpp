@@ -341,28 +341,34 @@ void Tm25Decoder::fail_spectrum_index(uint64_t index, float value) const {
                     tables + " (the file has " + tables + " spectral tables, byte 76)");
 }
 
-// The first eight values of records of `count` >= 7 floats into up to eight columns (null: not
-// kept), four records at a time: two loads and a 4 x 4 transpose in registers instead of a load
-// and a store per value. Returns how many records it did; it stops early enough that reading
-// eight values never passes the end of the last record.
+// The first eight values of records of `count` >= 7 floats into columns, four records at a
+// time: two loads and a 4 x 4 transpose in registers instead of a load and a store per value.
+// The first six (origin, direction) are always kept, the seventh and eighth where kSeventh and
+// kEighth say (which column is kept is a template argument so that the loop tests nothing).
+// Returns how many records it did; it stops early enough that reading eight values never
+// passes the end of the last record.
+template <bool kSeventh, bool kEighth>
 size_t unpack_leading(const float* records, size_t n, size_t count, float* const to[8]) {
     size_t i = 0;
 #if defined(__SSE2__)
     for (; i + 5 <= n; i += 4) {
         const float* r = records + i * count;
-        for (int half = 0; half < 2; ++half) {
-            __m128 a = _mm_loadu_ps(r + 4 * half), b = _mm_loadu_ps(r + count + 4 * half),
-                   c = _mm_loadu_ps(r + 2 * count + 4 * half), d = _mm_loadu_ps(r + 3 * count + 4 * half);
-            _MM_TRANSPOSE4_PS(a, b, c, d);
-            float* const* column = to + 4 * half;
-            if (column[0]) _mm_storeu_ps(column[0] + i, a);
-            if (column[1]) _mm_storeu_ps(column[1] + i, b);
-            if (column[2]) _mm_storeu_ps(column[2] + i, c);
-            if (column[3]) _mm_storeu_ps(column[3] + i, d);
-        }
+        __m128 a = _mm_loadu_ps(r), b = _mm_loadu_ps(r + count), c = _mm_loadu_ps(r + 2 * count), d = _mm_loadu_ps(r + 3 * count);
+        _MM_TRANSPOSE4_PS(a, b, c, d);
+        _mm_storeu_ps(to[0] + i, a), _mm_storeu_ps(to[1] + i, b), _mm_storeu_ps(to[2] + i, c), _mm_storeu_ps(to[3] + i, d);
+        a = _mm_loadu_ps(r + 4), b = _mm_loadu_ps(r + count + 4), c = _mm_loadu_ps(r + 2 * count + 4), d = _mm_loadu_ps(r + 3 * count + 4);
+        _MM_TRANSPOSE4_PS(a, b, c, d);
+        _mm_storeu_ps(to[4] + i, a), _mm_storeu_ps(to[5] + i, b);
+        if constexpr (kSeventh) _mm_storeu_ps(to[6] + i, c);
+        if constexpr (kEighth) _mm_storeu_ps(to[7] + i, d);
     }
 #endif
     return i;
+}
+
+size_t unpack_leading(const float* records, size_t n, size_t count, float* const to[8]) {
+    if (to[6]) return to[7] ? unpack_leading<true, true>(records, n, count, to) : unpack_leading<true, false>(records, n, count, to);
+    return to[7] ? unpack_leading<false, true>(records, n, count, to) : unpack_leading<false, false>(records, n, count, to);
 }
 
 // Records to columns, straight from the read buffer: positions, directions and whatever the
