@@ -25,6 +25,11 @@ struct RaySummary {
     uint64_t zero_flux_rays = 0;
 };
 
-RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& progress = {});
+// The summary's inner loop exists twice: portable (SSE2, any x86-64, or plain C++) and, where
+// the CPU has it, AVX2, which `fastest` picks. Both give the same bits; tests compare them.
+enum class SummaryKernel { fastest, portable };
+
+RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& progress = {},
+                          SummaryKernel kernel = SummaryKernel::fastest);
 
 }  // namespace rayset

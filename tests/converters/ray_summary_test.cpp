@@ -3,6 +3,7 @@
 
 #include "converters/ray_summary.h"
 #include "converters/synth.h"
+#include "ray_ops_test_support.h"
 #include "support/test_support.h"
 
 #include <cmath>
@@ -123,6 +124,45 @@ TEST(RaySummary, PartsReadOnSeveralThreadsGiveTheSummaryOfOnePart) {
     const double bound = 2 * 300000 * std::ldexp(1.0, -53);
     EXPECT_NEAR(a.radiant, b.radiant, bound * a.radiant);
     EXPECT_NEAR(a.luminous_from_spectrum, b.luminous_from_spectrum, bound * a.luminous_from_spectrum);
+}
+
+// The summary's AVX2 kernel (where the CPU has it) against the portable one: the same IEEE
+// operations in the same order, so every figure is the same to the bit. The rays are random
+// directions with, among them, the directions where cells meet: the axes, +-0 components,
+// the quadrant diagonals, z = +-1, and a ray count that leaves a tail of 5 past a multiple of 8.
+TEST(RaySummary, FastestKernelGivesThePortableKernelsFigures) {
+    test::ScratchDir dir;
+    std::vector<Ray> rays = test::numbered_rays(20000 + 5, true, false);
+    const float h = float(std::sqrt(0.5)), edges[][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},  {0, -1, 0}, {0, 0, 1},
+                                                       {0, 0, -1}, {-0.f, 1, 0}, {1, -0.f, 0}, {-1, -0.f, 0}, {-0.f, -1, 0},
+                                                       {h, h, 0},  {-h, h, 0}, {-h, -h, 0}, {h, -h, 0}, {-0.5f, 6.1e-17f, -0.8660254f}};
+    for (size_t e = 0; e < std::size(edges); ++e) {
+        rays[e * 997].direction = {edges[e][0], edges[e][1], edges[e][2]};  // spread over blocks
+        rays[rays.size() - 1 - e % 5].direction = {edges[e][0], edges[e][1], edges[e][2]};  // and the tail
+    }
+    for (size_t i = 0; i < rays.size(); i += 3) rays[i].wavelength = float(380 + i % 400);  // some unknown
+    RayHeader header;
+    header.has_radiant = true;
+    header.spectral = SpectralKind::per_ray_wavelength;
+    const std::string path = dir.file("edges.tm25ray");
+    test::write_rays(path, RayFormat::tm25, header, rays);
+    RayReadOptions options;
+    options.chunk_size = 100;  // 8 parts
+    auto fastest = open_rays(path, options), portable = open_rays(path, options);
+    const RaySummary a = summarise_rays(*fastest), b = summarise_rays(*portable, {}, SummaryKernel::portable);
+    EXPECT_EQ(a.unknown_wavelength_rays, b.unknown_wavelength_rays);
+    EXPECT_EQ(a.unknown_wavelength_rays, rays.size() - (rays.size() + 2) / 3);
+    EXPECT_EQ(a.min_wavelength, b.min_wavelength);
+    EXPECT_EQ(a.max_wavelength, b.max_wavelength);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ((&a.min_origin.x)[k], (&b.min_origin.x)[k]);
+        EXPECT_EQ((&a.max_origin.x)[k], (&b.max_origin.x)[k]);
+        EXPECT_EQ((&a.mean_direction.x)[k], (&b.mean_direction.x)[k]);
+    }
+    EXPECT_EQ(a.sphere_coverage, b.sphere_coverage);
+    EXPECT_EQ(a.max_angle_from_mean_deg, b.max_angle_from_mean_deg);
+    // The axes reach the cells at the poles and the edges: the widest angle is near 180 deg.
+    EXPECT_GT(a.max_angle_from_mean_deg, 175.0);
 }
 
 }  // namespace
