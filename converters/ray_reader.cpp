@@ -2,6 +2,7 @@
 // done ahead on a second thread (read) or in parts on several (read_in_parts); open_rays()
 // and detection are in ray_stream.cpp.
 #include "converters/ray_stream.h"
+#include "converters/simd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -230,7 +231,7 @@ struct RayTest {
 
 // Whether every ray passes: a loop per group of columns, each of which the compiler
 // vectorises, and none over a column the file does not carry.
-bool all_pass(const RayColumns& c, const RayTest& test) {
+RAYSET_ALWAYS_INLINE bool all_pass_loops(const RayColumns& c, const RayTest& test) {
     const size_t n = c.size();
     const float *ox = c.ox.data(), *oy = c.oy.data(), *oz = c.oz.data();
     const float *dx = c.dx.data(), *dy = c.dy.data(), *dz = c.dz.data();
@@ -256,10 +257,68 @@ bool all_pass(const RayColumns& c, const RayTest& test) {
     return pass;
 }
 
+// The fluxes scaled (a scale within float rounding of 1 leaves them as they are), summed, and
+// the rays with no flux counted.
+struct FluxColumns {
+    float* flux[2];  // radiant, luminous
+    bool present[2];
+    double scale[2];
+};
+
+RAYSET_ALWAYS_INLINE RayTotals flux_totals_loops(const FluxColumns& c, size_t n) {
+    for (int f = 0; f < 2; ++f)
+        if (c.present[f] && float(c.scale[f]) != 1)
+            for (size_t i = 0; i < n; ++i) c.flux[f][i] = float(double(c.flux[f][i]) * c.scale[f]);
+    // Eight sums (ray i to sum i % 8, the last n % 8 rays to the first) added at the end: a
+    // chain of dependent additions an eighth as long, in a loop the compiler vectorises.
+    auto lane_sum = [n](const float* flux) {
+        double lane[8] = {};
+        size_t i = 0;
+        for (; i + 8 <= n; i += 8)
+            for (size_t l = 0; l < 8; ++l) lane[l] += flux[i + l];
+        for (; i < n; ++i) lane[0] += flux[i];
+        return std::accumulate(lane, lane + 8, 0.0);
+    };
+    RayTotals totals;
+    if (c.present[0]) totals.radiant = lane_sum(c.flux[0]);
+    if (c.present[1]) totals.luminous = lane_sum(c.flux[1]);
+    // Counted 32 bits wide, a block at a time, which vectorises (64-bit counts would not).
+    const bool radiant = c.present[0], luminous = c.present[1];
+    const float *radiant_flux = c.flux[0], *luminous_flux = c.flux[1];
+    for (size_t start = 0; start < n; start += size_t(1) << 30) {
+        const size_t end = std::min(n, start + (size_t(1) << 30));
+        uint32_t zero = 0;
+        for (size_t i = start; i < end; ++i)
+            zero += ((!radiant) | (radiant_flux[i] == 0)) & ((!luminous) | (luminous_flux[i] == 0));
+        totals.zero_flux_rays += zero;
+    }
+    totals.rays = n;
+    return totals;
+}
+
+// Both compiled for AVX2 too (converters/simd.h).
+#if RAYSET_HAVE_AVX2_TARGET
+RAYSET_TARGET_AVX2 bool all_pass_avx2(const RayColumns& c, const RayTest& test) { return all_pass_loops(c, test); }
+RAYSET_TARGET_AVX2 RayTotals flux_totals_avx2(const FluxColumns& c, size_t n) { return flux_totals_loops(c, n); }
+#endif
+
+bool all_pass(const RayColumns& c, const RayTest& test) {
+#if RAYSET_HAVE_AVX2_TARGET
+    if (cpu_has_avx2()) return all_pass_avx2(c, test);
+#endif
+    return all_pass_loops(c, test);
+}
+
+RayTotals flux_totals(const FluxColumns& c, size_t n) {
+#if RAYSET_HAVE_AVX2_TARGET
+    if (cpu_has_avx2()) return flux_totals_avx2(c, n);
+#endif
+    return flux_totals_loops(c, n);
+}
+
 }  // namespace
 
 RayTotals RayReader::validate(RayColumns& chunk) const {
-    RayTotals totals;
     const double tolerance = options_.direction_tolerance;
     const RayTest test{float((1 - tolerance) * (1 - tolerance)), float((1 + tolerance) * (1 + tolerance)),
                        header_.has_radiant, header_.has_luminous, header_.spectral == SpectralKind::per_ray_wavelength,
@@ -276,38 +335,10 @@ RayTotals RayReader::validate(RayColumns& chunk) const {
                 check_ray(chunk, i);  // throws, or normalises an accepted direction
         }
 
-    const bool radiant = header_.has_radiant, luminous = header_.has_luminous;
-    float* const radiant_flux = chunk.radiant.data();
-    float* const luminous_flux = chunk.luminous.data();
-    // A scale within float rounding of 1 leaves the rays as they are.
-    if (radiant && float(radiant_scale_) != 1)
-        for (size_t i = 0; i < n; ++i) radiant_flux[i] = float(double(radiant_flux[i]) * radiant_scale_);
-    if (luminous && float(luminous_scale_) != 1)
-        for (size_t i = 0; i < n; ++i) luminous_flux[i] = float(double(luminous_flux[i]) * luminous_scale_);
-    // Eight sums (ray i to sum i % 8, the last n % 8 rays to the first) added at the end: a
-    // chain of dependent additions an eighth as long, in a loop the compiler vectorises.
-    auto lane_sum = [n](const float* flux) {
-        double lane[8] = {};
-        size_t i = 0;
-        for (; i + 8 <= n; i += 8)
-            for (size_t l = 0; l < 8; ++l) lane[l] += flux[i + l];
-        for (; i < n; ++i) lane[0] += flux[i];
-        return std::accumulate(lane, lane + 8, 0.0);
-    };
-    if (radiant) totals.radiant = lane_sum(radiant_flux);
-    if (luminous) totals.luminous = lane_sum(luminous_flux);
-    // Counted 32 bits wide, a block at a time, which vectorises (64-bit counts would not).
-    uint64_t zero_flux = 0;
-    for (size_t start = 0; start < n; start += size_t(1) << 30) {
-        const size_t end = std::min(n, start + (size_t(1) << 30));
-        uint32_t zero = 0;
-        for (size_t i = start; i < end; ++i)
-            zero += ((!radiant) | (radiant_flux[i] == 0)) & ((!luminous) | (luminous_flux[i] == 0));
-        zero_flux += zero;
-    }
-    totals.zero_flux_rays = zero_flux;
-    totals.rays = n;
-    return totals;
+    const FluxColumns flux{{chunk.radiant.data(), chunk.luminous.data()},
+                           {header_.has_radiant, header_.has_luminous},
+                           {radiant_scale_, luminous_scale_}};
+    return flux_totals(flux, n);
 }
 
 // The slow path for a ray the fast test did not pass: says exactly what is wrong, or (for a

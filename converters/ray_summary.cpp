@@ -1,5 +1,6 @@
 #include "converters/ray_summary.h"
 
+#include "converters/simd.h"
 #include "converters/spectrum.h"
 
 #include <algorithm>
@@ -12,19 +13,6 @@
 #include <vector>
 
 namespace rayset {
-
-// The block loop is also compiled for AVX2 where the compiler can (GCC or Clang on x86-64) and
-// chosen at run time; helpers it calls are always inlined, so they are compiled for it too.
-#if defined(__x86_64__) && defined(__GNUC__)
-#define RAYSET_SUMMARY_AVX2 1
-#else
-#define RAYSET_SUMMARY_AVX2 0
-#endif
-#if defined(__GNUC__)
-#define RAYSET_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define RAYSET_ALWAYS_INLINE inline
-#endif
 
 namespace {
 
@@ -123,9 +111,7 @@ struct LaneSums {
 class Accumulator {
 public:
     Accumulator(const RayHeader& header, SummaryKernel kernel) : header_(header), weights_(header) {
-#if RAYSET_SUMMARY_AVX2
-        avx2_ = kernel == SummaryKernel::fastest && __builtin_cpu_supports("avx2");
-#endif
+        avx2_ = kernel == SummaryKernel::fastest && cpu_has_avx2();
         spectral_luminous_ = !header.has_luminous && weights_.luminous_known();
         shared_efficacy_ = weights_.shared_efficacy();
     }
@@ -137,7 +123,7 @@ public:
         const bool wavelengths = header_.spectral == SpectralKind::per_ray_wavelength;
         for (size_t start = 0; start < n; start += kBlock) {
             const size_t block = std::min(kBlock, n - start);
-#if RAYSET_SUMMARY_AVX2
+#if RAYSET_HAVE_AVX2_TARGET
             if (avx2_) {
                 if (wavelengths) add_block_avx2<true>(chunk, weight, start, block);
                 else add_block_avx2<false>(chunk, weight, start, block);
@@ -173,12 +159,11 @@ private:
     // kept in float for kGroup rays at a time.
     static constexpr size_t kBlock = 512, kGroup = 64;
 
-#if RAYSET_SUMMARY_AVX2
-    // add_block() compiled for AVX2 (its three-operand forms and blends take about a quarter
-    // less time). Only "avx2": with FMA the compiler would fuse w * x + sum and round
-    // differently, and both versions must make the same IEEE operations in the same order.
+#if RAYSET_HAVE_AVX2_TARGET
+    // add_block() compiled for AVX2 (converters/simd.h): its three-operand forms and blends take
+    // about a quarter less time.
     template <bool kWavelength>
-    __attribute__((target("avx2"))) void add_block_avx2(const RayColumns& c, const float* weight, size_t start, size_t n) {
+    RAYSET_TARGET_AVX2 void add_block_avx2(const RayColumns& c, const float* weight, size_t start, size_t n) {
         add_block<kWavelength>(c, weight, start, n);
     }
 #endif
