@@ -308,37 +308,27 @@ std::string format_double(double value) {
 void write_atomically(const std::string& path, const std::function<bool(const std::string&)>& write) {
     namespace fs = std::filesystem;
     const OutputTarget target = output_target(path);
-    std::error_code ignored;
-    if (target.in_place) {
-        bool written = false;
-        try {
-            written = write(target.file.string());
-        } catch (const std::exception& e) {
-            throw Error(path + ": cannot write: " + e.what());
-        }
-        if (!written) throw Error(path + ": cannot write");
-        return;
-    }
-    // Same extension, so writers that look at it (none of VTK's XML ones do) still agree.
-    const fs::path temporary =
-        target.file.parent_path() / ("." + target.file.stem().string() + ".partial" + target.file.extension().string());
+    // A device or a pipe is written in place; anything else through a temporary file beside it
+    // (same extension, so writers that look at it - none of VTK's XML ones do - still agree).
+    const fs::path to = target.in_place ? target.file
+                                        : target.file.parent_path() / ("." + target.file.stem().string() + ".partial" +
+                                                                       target.file.extension().string());
+    auto fail = [&](const std::string& why) {
+        std::error_code ignored;
+        if (!target.in_place) fs::remove(to, ignored);
+        throw Error(path + ": cannot write" + (why.empty() ? "" : ": " + why));
+    };
     bool written = false;
     try {
-        written = write(temporary.string()) && fs::exists(temporary);
+        written = write(to.string()) && (target.in_place || fs::exists(to));
     } catch (const std::exception& e) {
-        fs::remove(temporary, ignored);
-        throw Error(path + ": cannot write: " + e.what());
+        fail(e.what());
     }
-    if (!written) {
-        fs::remove(temporary, ignored);
-        throw Error(path + ": cannot write");
-    }
+    if (!written) fail("");
+    if (target.in_place) return;
     std::error_code error;
-    fs::rename(temporary, target.file, error);
-    if (error) {
-        fs::remove(temporary, ignored);
-        throw Error(path + ": cannot write: " + error.message());
-    }
+    fs::rename(to, target.file, error);
+    if (error) fail(error.message());
 }
 
 }  // namespace rayset

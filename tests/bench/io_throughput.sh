@@ -27,13 +27,19 @@ run_once() {
   echo "$(( (end - start) / 1000 )) $(cat "$work/rss")"
 }
 
+# keep_least VAR VALUE: VAR becomes VALUE if it is empty or larger.
+keep_least() {
+  local -n least=$1
+  if [ -z "$least" ] || [ "$2" -lt "$least" ]; then least=$2; fi
+}
+
 # Best (least) wall time of $runs runs, as seconds, and the largest peak RSS seen.
 runs=${RUNS:-7}
 measure() {
   local best="" rss=0 us m
   for _ in $(seq "$runs"); do
     read -r us m < <(run_once "$@")
-    if [ -z "$best" ] || [ "$us" -lt "$best" ]; then best=$us; fi
+    keep_least best "$us"
     if [ "$m" -gt "$rss" ]; then rss=$m; fi
   done
   awk -v us="$best" -v m="$rss" 'BEGIN{printf "%.4f %d\n", us / 1e6, m}'
@@ -47,8 +53,8 @@ paired() { # file
     read -r c _ < <(run_once cat "$1")
     read -r i _ < <(run_once "$rayconv" info "$1")
     ratios+=("$(awk -v c="$c" -v i="$i" 'BEGIN{print c / i}')")
-    if [ -z "$best_cat" ] || [ "$c" -lt "$best_cat" ]; then best_cat=$c; fi
-    if [ -z "$best_info" ] || [ "$i" -lt "$best_info" ]; then best_info=$i; fi
+    keep_least best_cat "$c"
+    keep_least best_info "$i"
   done
   local median
   median=$(printf "%s\n" "${ratios[@]}" | sort -g | awk '{v[NR]=$1} END{print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}')
