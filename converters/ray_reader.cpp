@@ -149,30 +149,37 @@ void RayReader::read_in_parts(const std::function<void(size_t, const RayColumns&
     // The lowest part that failed: later parts stop early, earlier ones go on (one of them may
     // hold an earlier bad ray, which is the one to report).
     std::atomic<size_t> failed{parts};
-    auto read_part = [&](size_t p, bool report_progress) {
-        try {
-            // Part 0 uses the decoder open_rays() made, which also serves a single part.
-            std::unique_ptr<RayDecoder> own = p == 0 ? nullptr : reopen_();
-            RayDecoder& decoder = p == 0 ? *decoder_ : *own;
-            const uint64_t first = count * p / parts, end = parts == 1 ? UINT64_MAX : count * (p + 1) / parts;
-            if (first > 0) decoder.seek(first);
-            RayColumns chunk;
-            for (uint64_t next = first; next < end && failed.load(std::memory_order_relaxed) > p;) {
-                if (!decoder.decode(chunk, static_cast<size_t>(std::min<uint64_t>(options_.chunk_size, end - next)))) break;
-                results[p].totals += validate(chunk);
-                visit(p, chunk);
-                next += chunk.size();
-                rays_in_parts_.fetch_add(chunk.size(), std::memory_order_relaxed);
-                if (report_progress && progress) progress(this->progress());
-            }
-        } catch (...) {
-            results[p].error = std::current_exception();
-            size_t seen = failed.load();
-            while (p < seen && !failed.compare_exchange_weak(seen, p)) {}
+    auto record_failure = [&](size_t p) {
+        results[p].error = std::current_exception();
+        size_t seen = failed.load();
+        while (p < seen && !failed.compare_exchange_weak(seen, p)) {}
+    };
+    auto read_part = [&](size_t p, RayDecoder& decoder, RayColumns& chunk, bool report_progress) {
+        const uint64_t first = count * p / parts, end = parts == 1 ? UINT64_MAX : count * (p + 1) / parts;
+        if (parts > 1) decoder.seek(first);
+        for (uint64_t next = first; next < end && failed.load(std::memory_order_relaxed) > p;) {
+            if (!decoder.decode(chunk, static_cast<size_t>(std::min<uint64_t>(options_.chunk_size, end - next)))) break;
+            results[p].totals += validate(chunk);
+            visit(p, chunk);
+            next += chunk.size();
+            rays_in_parts_.fetch_add(chunk.size(), std::memory_order_relaxed);
+            if (report_progress && progress) progress(this->progress());
         }
     };
-    auto work = [&](bool report_progress) {
-        for (size_t p; (p = next_part.fetch_add(1)) < parts;) read_part(p, report_progress);
+    // The calling thread reads with the decoder open_rays() made (which also serves a single
+    // part) and reports progress; every other thread opens one of its own. A thread reads each
+    // part it takes with its one decoder and chunk, seeking to the part's first ray.
+    auto work = [&](bool calling_thread) {
+        std::unique_ptr<RayDecoder> own;
+        RayColumns chunk;
+        for (size_t p; (p = next_part.fetch_add(1)) < parts;) {
+            try {
+                if (!calling_thread && !own) own = reopen_();
+                read_part(p, calling_thread ? *decoder_ : *own, chunk, calling_thread);
+            } catch (...) {
+                record_failure(p);
+            }
+        }
     };
     std::vector<std::thread> helpers;
     const size_t threads = std::min<size_t>(parts, std::max(1u, std::thread::hardware_concurrency()));
