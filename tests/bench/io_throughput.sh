@@ -110,3 +110,16 @@ read -r s m2 < <(measure "$rayconv" info "$work/small.tm25ray"); row "rayconv in
 read -r pc pi ratio < <(paired "$work/big.tm25ray")
 awk -v c="$cat_s" -v i="$info_s" -v v="$conv_s" -v d="$dd_s" -v pc="$pc" -v pi="$pi" -v r="$ratio" -v n="$runs" \
   'BEGIN{printf "info at %.0f%% of cat throughput (best times); in %d alternating rounds: best cat %.3f s, best info %.3f s, median of the rounds\x27 ratios %.0f%%\nconvert at %.0f%% of cat > /dev/null, at %.0f%% of dd conv=fsync\n", 100*c/i, n, pc/1e6, pi/1e6, 100*r, 100*c/v, 100*d/v}'
+
+# Where info's time goes, if perf is installed: CPU time (all threads) against cat's. With two
+# cores, info's wall time is at least (its CPU time) / 2, and its CPU time is cat's copy plus
+# the decoding, validating and summarising.
+if command -v perf > /dev/null && perf stat -e task-clock true > /dev/null 2>&1; then
+  cpu_ms() { perf stat -x, -e task-clock "$@" 2>&1 > /dev/null | awk -F, '/task-clock/{print $1}'; }
+  best_cat_cpu="" best_info_cpu=""
+  for _ in $(seq "$runs"); do
+    keep_least best_cat_cpu "$(cpu_ms cat "$work/big.tm25ray" | cut -d. -f1)"
+    keep_least best_info_cpu "$(cpu_ms "$rayconv" info "$work/big.tm25ray" | cut -d. -f1)"
+  done
+  echo "CPU time (perf task-clock, all threads, best of $runs): cat $best_cat_cpu ms, rayconv info $best_info_cpu ms"
+fi
