@@ -96,7 +96,8 @@ RAYSET_ALWAYS_INLINE V4i coverage_cells(V4f x, V4f y, V4f z) {
 }
 
 // Sums kept in kLanes lanes: ray i of a block goes to lane i % kLanes (a block's last rays
-// past a multiple of kLanes to lane 0), so a sum is the same however the work is divided; eight
+// past a multiple of kLanes to lane 0), so a sum is the same however the loop is compiled; it
+// depends on the blocks, which follow the chunks and parts, which the file alone decides. Eight
 // lanes are two vectors of four, whose additions do not wait for each other.
 constexpr size_t kLanes = 8;
 struct LaneSums {
