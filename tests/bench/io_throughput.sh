@@ -4,6 +4,11 @@
 # Usage: tests/bench/io_throughput.sh BUILD_DIR [RAYS]      (default 10000000 rays)
 # Prints a table; figures go into issue notes, not into assertions.
 #
+# Reading is timed twice: `read_rays` (tests/bench) reads every ray as every rayconv command
+# does (detect, decode, validate, sum the fluxes, in parts on every core) and does nothing
+# else; `rayconv info` reads them and also summarises them (bounding box, wavelengths, the
+# direction coverage of 20000 cells and the mean direction).
+#
 # Comparators: reading is set against `cat > /dev/null` (a copy out of the page cache) and
 # against a plain loop summing the file's 32-bit words through mmap (what touching every byte
 # costs at all; compiled here if a C++ compiler is at hand). Converting writes the file and
@@ -13,6 +18,8 @@ set -euo pipefail
 build=${1:?usage: io_throughput.sh BUILD_DIR [RAYS]}
 rays=${2:-10000000}
 rayconv="$build/converters/rayconv"
+read_rays="$build/tests/bench/read_rays"
+[ -x "$read_rays" ] || { echo "io_throughput.sh: $read_rays not built (configure with RAYSET_BUILD_BENCHMARKS=ON and Google Benchmark installed)" >&2; exit 1; }
 work=$(mktemp -d "${TMPDIR:-/tmp}/rayset-bench.XXXXXX")
 shm=$(mktemp -d /dev/shm/rayset-bench.XXXXXX 2> /dev/null || true)
 trap 'rm -rf "$work" ${shm:+"$shm"}' EXIT
@@ -45,20 +52,21 @@ measure() {
   awk -v us="$best" -v m="$rss" 'BEGIN{printf "%.4f %d\n", us / 1e6, m}'
 }
 
-# cat and info in alternation, so that a slow spell of a shared machine hits both alike:
-# the best of each and the median of the per-round ratios.
-paired() { # file
-  local ratios=() best_cat="" best_info="" c i
+# cat and a reading command in alternation, so that a slow spell of a shared machine hits both
+# alike: the best of each and the median of the per-round ratios (cat's time over the command's).
+paired() { # file command...
+  local file=$1 ratios=() best_cat="" best_cmd="" c i
+  shift
   for _ in $(seq "$runs"); do
-    read -r c _ < <(run_once cat "$1")
-    read -r i _ < <(run_once "$rayconv" info "$1")
+    read -r c _ < <(run_once cat "$file")
+    read -r i _ < <(run_once "$@" "$file")
     ratios+=("$(awk -v c="$c" -v i="$i" 'BEGIN{print c / i}')")
     keep_least best_cat "$c"
-    keep_least best_info "$i"
+    keep_least best_cmd "$i"
   done
   local median
   median=$(printf "%s\n" "${ratios[@]}" | sort -g | awk '{v[NR]=$1} END{print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}')
-  echo "$best_cat $best_info $median"
+  echo "$best_cat $best_cmd $median"
 }
 
 row() { # name seconds rss bytes
@@ -97,7 +105,8 @@ fi
 read -r s m < <(measure cat "$work/big.tm25ray"); row "cat > /dev/null" "$s" "$m" "$bytes"; cat_s=$s
 if [ -n "$floor" ]; then read -r s m < <(measure "$floor" "$work/big.tm25ray"); row "sum of 32-bit words (mmap, one thread)" "$s" "$m" "$bytes"; fi
 read -r s m < <(measure sh -c "cat '$work/big.tm25ray' | wc -c"); row "cat | wc -c (bytes through a pipe)" "$s" "$m" "$bytes"
-read -r s m < <(measure "$rayconv" info "$work/big.tm25ray"); row "rayconv info" "$s" "$m" "$bytes"; info_s=$s
+read -r s m < <(measure "$read_rays" "$work/big.tm25ray"); row "read_rays (decode + validate)" "$s" "$m" "$bytes"; read_s=$s
+read -r s m < <(measure "$rayconv" info "$work/big.tm25ray"); row "rayconv info (read + summarise)" "$s" "$m" "$bytes"; info_s=$s
 read -r s m < <(measure dd if="$work/big.tm25ray" of="$work/copy.tm25ray" bs=1M conv=fsync status=none); row "dd conv=fsync (write + fsync, no parsing)" "$s" "$m" "$bytes"; dd_s=$s
 read -r s m < <(measure "$rayconv" convert "$work/big.tm25ray" "$work/out.tm25ray"); row "rayconv convert tm25 -> tm25" "$s" "$m" "$bytes"; conv_s=$s
 if [ -n "$shm" ]; then
@@ -107,19 +116,25 @@ if [ -n "$shm" ]; then
 fi
 read -r s m < <(measure "$rayconv" convert "$work/big.tm25ray" "$work/out.ray" --to lighttools); row "rayconv convert tm25 -> lighttools" "$s" "$m" "$bytes"
 read -r s m2 < <(measure "$rayconv" info "$work/small.tm25ray"); row "rayconv info ($small rays)" "$s" "$m2" "$((bytes / 10))"
-read -r pc pi ratio < <(paired "$work/big.tm25ray")
-awk -v c="$cat_s" -v i="$info_s" -v v="$conv_s" -v d="$dd_s" -v pc="$pc" -v pi="$pi" -v r="$ratio" -v n="$runs" \
-  'BEGIN{printf "info at %.0f%% of cat throughput (best times); in %d alternating rounds: best cat %.3f s, best info %.3f s, median of the rounds\x27 ratios %.0f%%\nconvert at %.0f%% of cat > /dev/null, at %.0f%% of dd conv=fsync\n", 100*c/i, n, pc/1e6, pi/1e6, 100*r, 100*c/v, 100*d/v}'
+percent() { awk -v a="$1" -v b="$2" 'BEGIN{printf "%.0f%%", 100 * a / b}'; }
+for reader in read_rays info; do
+  if [ "$reader" = read_rays ]; then best=$read_s; cmd=("$read_rays"); else best=$info_s; cmd=("$rayconv" info); fi
+  read -r pc pi ratio < <(paired "$work/big.tm25ray" "${cmd[@]}")
+  awk -v r="$reader" -v c="$cat_s" -v b="$best" -v n="$runs" -v pc="$pc" -v pi="$pi" -v m="$ratio" \
+    'BEGIN{printf "%s at %.0f%% of cat throughput (best times); in %d alternating rounds: best cat %.3f s, best %s %.3f s, median of the rounds\x27 ratios %.0f%%\n", r, 100*c/b, n, pc/1e6, r, pi/1e6, 100*m}'
+done
+echo "convert at $(percent "$cat_s" "$conv_s") of cat > /dev/null, at $(percent "$dd_s" "$conv_s") of dd conv=fsync"
 
-# Where info's time goes, if perf is installed: CPU time (all threads) against cat's. With two
-# cores, info's wall time is at least (its CPU time) / 2, and its CPU time is cat's copy plus
-# the decoding, validating and summarising.
+# Where the time goes, if perf is installed: CPU time (all threads) against cat's. With two
+# cores, a reader's wall time is at least (its CPU time) / 2, and its CPU time is cat's copy
+# plus the decoding and validating (and for info, summarising).
 if command -v perf > /dev/null && perf stat -e task-clock true > /dev/null 2>&1; then
   cpu_ms() { perf stat -x, -e task-clock "$@" 2>&1 > /dev/null | awk -F, '/task-clock/{print $1}'; }
-  best_cat_cpu="" best_info_cpu=""
+  best_cat_cpu="" best_read_cpu="" best_info_cpu=""
   for _ in $(seq "$runs"); do
     keep_least best_cat_cpu "$(cpu_ms cat "$work/big.tm25ray" | cut -d. -f1)"
+    keep_least best_read_cpu "$(cpu_ms "$read_rays" "$work/big.tm25ray" | cut -d. -f1)"
     keep_least best_info_cpu "$(cpu_ms "$rayconv" info "$work/big.tm25ray" | cut -d. -f1)"
   done
-  echo "CPU time (perf task-clock, all threads, best of $runs): cat $best_cat_cpu ms, rayconv info $best_info_cpu ms"
+  echo "CPU time (perf task-clock, all threads, best of $runs): cat $best_cat_cpu ms, read_rays $best_read_cpu ms, rayconv info $best_info_cpu ms"
 fi
