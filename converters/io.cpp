@@ -42,6 +42,27 @@ OutputTarget output_target(const std::string& path) {
     return target;
 }
 
+// A new, empty, hidden file beside `target` whose name no other writer holds: ".NAME.tmpNNNNNN.EXT",
+// created with O_EXCL. The output is written there and renamed over the target (same folder,
+// so the rename is atomic); the extension is kept for writers that go by it. Returns its open
+// descriptor; `path` (as the user gave it) names the failure.
+int create_temporary_beside(const std::string& path, const std::filesystem::path& target, std::string& temporary) {
+    namespace fs = std::filesystem;
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) fail(path, "cannot write: folder " + dir.string() + " does not exist");
+    std::random_device random;
+    int fd = -1;
+    for (int attempt = 0; attempt < 16 && fd < 0; ++attempt) {
+        const std::string name = "." + target.stem().string() + ".tmp" + std::to_string(random() % 1000000) + target.extension().string();
+        temporary = (dir / name).string();
+        fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0 && errno != EEXIST) break;
+    }
+    if (fd < 0) fail(path, "cannot create a temporary file beside it: " + system_error_text());
+    return fd;
+}
+
 std::FILE* open_for_reading(const std::string& path, uint64_t& size) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) fail(path, "is a folder, not a file");
@@ -158,23 +179,13 @@ bool TextInput::next(std::string& line) {
 
 // ---------------------------------------------------------------------------------------------
 AtomicOutput::AtomicOutput(const std::string& path) : path_(path), buffer_(size_t(64) << 10) {
-    namespace fs = std::filesystem;
     const OutputTarget target = output_target(path);
     if (target.in_place) {
         fd_ = ::open(target.file.c_str(), O_WRONLY | O_CLOEXEC);
         if (fd_ < 0) fail(path, "cannot open for writing: " + system_error_text());
         return;
     }
-    fs::path dir = target.file.has_parent_path() ? target.file.parent_path() : fs::path(".");
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec)) fail(path, "cannot write: folder " + dir.string() + " does not exist");
-    // A hidden temporary name in the same folder, so the final rename is atomic.
-    std::random_device rd;
-    for (int attempt = 0; attempt < 16 && fd_ < 0; ++attempt) {
-        temp_path_ = (dir / ("." + target.file.filename().string() + ".tmp" + std::to_string(rd() % 1000000))).string();
-        fd_ = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    }
-    if (fd_ < 0) fail(path, "cannot create a temporary file beside it: " + system_error_text());
+    fd_ = create_temporary_beside(path, target.file, temp_path_);
     final_path_ = target.file.string();
 }
 
@@ -308,19 +319,22 @@ std::string format_double(double value) {
 void write_atomically(const std::string& path, const std::function<bool(const std::string&)>& write) {
     namespace fs = std::filesystem;
     const OutputTarget target = output_target(path);
-    // A device or a pipe is written in place; anything else through a temporary file beside it
-    // (same extension, so writers that look at it - none of VTK's XML ones do - still agree).
-    const fs::path to = target.in_place ? target.file
-                                        : target.file.parent_path() / ("." + target.file.stem().string() + ".partial" +
-                                                                       target.file.extension().string());
+    // A device or a pipe is written in place; anything else through a temporary file beside it,
+    // made empty here (which reserves its name) and written by `write`.
+    std::string temporary;
+    if (!target.in_place) ::close(create_temporary_beside(path, target.file, temporary));
+    const fs::path to = target.in_place ? target.file : fs::path(temporary);
     auto fail = [&](const std::string& why) {
         std::error_code ignored;
         if (!target.in_place) fs::remove(to, ignored);
         throw Error(path + ": cannot write" + (why.empty() ? "" : ": " + why));
     };
+    // A writer that reports success but leaves the temporary empty (some fail silently) must
+    // not replace what the user had.
     bool written = false;
     try {
-        written = write(to.string()) && (target.in_place || fs::exists(to));
+        std::error_code ec;
+        written = write(to.string()) && (target.in_place || fs::file_size(to, ec) > 0);
     } catch (const std::exception& e) {
         fail(e.what());
     }

@@ -82,9 +82,10 @@ private:
     uint64_t line_number_ = 0;
 };
 
-// For writers that take a file name (OpenVDB, VTK): `write` gets a temporary path beside `path`
-// (hidden, same extension) and returns whether it succeeded; the file is then renamed into
-// place. On failure or an exception the temporary file is removed, whatever was at `path` is
+// For writers that take a file name (OpenVDB, VTK): `write` gets the path of an empty temporary
+// file beside `path` (hidden, same extension, named as AtomicOutput names its own) to overwrite,
+// and returns whether it succeeded; the file is then renamed into place. On failure, an
+// exception or an output left empty, the temporary file is removed, whatever was at `path` is
 // untouched, and rayset::Error names `path`. Like AtomicOutput, it writes through a symbolic
 // link to the file it names, and into a device or pipe (/dev/null, a FIFO) in place.
 void write_atomically(const std::string& path, const std::function<bool(const std::string&)>& write);

@@ -134,6 +134,52 @@ TEST(WriteAtomically, WritesThroughALinkAndIntoAPipe) {
     EXPECT_EQ(leftovers(dir.path()), 0);
 }
 
+// Two writers of one output at once (two commands run by a script, say) each write their own
+// temporary file: the one that finishes last is what stays, and neither fails or leaves a
+// temporary behind. A fixed temporary name would let the second writer take the first one's.
+TEST(WriteAtomically, TwoWritersOfOnePathAtOnceEachFinish) {
+    test::ScratchDir dir;
+    const std::string file = dir.file("model.vdb");
+    std::string inner_temporary, outer_temporary;
+    write_atomically(file, [&](const std::string& outer) {
+        outer_temporary = outer;
+        test::write_file(outer, "outer");
+        write_atomically(file, [&](const std::string& inner) {
+            inner_temporary = inner;
+            test::write_file(inner, "inner");
+            return true;
+        });
+        EXPECT_EQ(test::read_file(file), "inner");
+        return true;
+    });
+    EXPECT_NE(inner_temporary, outer_temporary);
+    EXPECT_EQ(fs::path(outer_temporary).extension(), ".vdb");  // kept for writers that go by it
+    EXPECT_EQ(test::read_file(file), "outer");
+    EXPECT_EQ(leftovers(dir.path()), 0);
+}
+
+TEST(AtomicOutput, TwoWritersOfOnePathAtOnceEachFinish) {
+    test::ScratchDir dir;
+    const std::string file = dir.file("rays.csv");
+    AtomicOutput first(file), second(file);
+    first.write(std::string_view("first"));
+    second.write(std::string_view("second"));
+    second.commit();
+    first.commit();
+    EXPECT_EQ(test::read_file(file), "first");
+    EXPECT_EQ(leftovers(dir.path()), 0);
+}
+
+// A writer that says it succeeded but wrote nothing (some fail silently) leaves the user's file.
+TEST(WriteAtomically, AnOutputLeftEmptyReplacesNothing) {
+    test::ScratchDir dir;
+    const std::string file = dir.file("scene.vtp");
+    test::write_file(file, "the user's scene");
+    EXPECT_THROW(write_atomically(file, [](const std::string&) { return true; }), Error);
+    EXPECT_EQ(test::read_file(file), "the user's scene");
+    EXPECT_EQ(leftovers(dir.path()), 0);
+}
+
 TEST(RayconvOutput, ConvertsIntoAPipeWhatItWritesToAFile) {
     test::ScratchDir dir;
     const std::string rays = dir.file("disk.tm25ray"), csv = dir.file("disk.csv");
