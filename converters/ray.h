@@ -145,14 +145,8 @@ struct RayColumns {
         radiant[i] = r.radiant, luminous[i] = r.luminous, wavelength[i] = r.wavelength, spectrum[i] = r.spectrum;
     }
     void push_back(const Ray& r) { resize(size() + 1), set(size() - 1, r); }
-    // The rays as records (what encoders and most consumers take).
-    void to_rays(RayChunk& chunk) const {
-        const size_t n = size();
-        chunk.rays.resize(n);
-        for (size_t i = 0; i < n; ++i) chunk.rays[i] = ray(i);
-        chunk.extra = extra;
-        chunk.first_index = first_index;
-    }
+    // The rays as records (what encoders and most consumers take); ray_columns.cpp.
+    void to_rays(RayChunk& chunk) const;
 };
 
 }  // namespace rayset

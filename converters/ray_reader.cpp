@@ -20,22 +20,33 @@
 namespace rayset {
 
 // ---------------------------------------------------------------------------------------------
-// Decoding and validating run on a thread of their own, a few chunks ahead of read(), so that
-// they overlap with whatever the caller does with the rays (encoding, building). The chunks
-// circulate: read() swaps the caller's chunk for a full one, and the emptied one is refilled,
-// so memory stays at kSlots + 1 chunks. An error is handed over in order, after
-// the chunks before it, and read() throws it as it would have without the thread.
+// Decoding and validating run ahead of read(), on threads of their own, so that they overlap
+// with whatever the caller does with the rays (encoding, building). Chunk k (of
+// options.chunk_size rays) goes to slot k % slot count: a decoding thread fills it once the
+// caller has taken chunk k - slot count, and read() turns it into the caller's ray records - on
+// the caller's thread, which would otherwise wait while the others decode - and frees it.
+// Formats of fixed-size records that the reader can open again (as for read_in_parts) are
+// decoded on as many threads as it has parts and the machine has cores, thread t taking
+// chunks t, t + T, ... with a decoder of its own that seeks to each; the others on one thread.
+// Memory stays at the slots' chunks of columns and the caller's records. The chunks, their
+// totals and an error reach the caller in file order - an error after the chunks before it -
+// as they would without the threads.
 class RayReader::ReadAhead {
 public:
-    explicit ReadAhead(const RayReader& reader) : reader_(reader), thread_([this] { run(); }) {}
+    explicit ReadAhead(const RayReader& reader) : reader_(reader) {
+        const size_t threads = std::min<size_t>(reader.parts(), std::max(1u, std::thread::hardware_concurrency()));
+        slots_.resize(2 * threads + 2);
+        free_ = std::vector<std::condition_variable>(threads);
+        for (size_t t = 0; t < threads; ++t) threads_.emplace_back([this, t, threads] { run(t, threads); });
+    }
 
     ~ReadAhead() {
         {
             std::lock_guard<std::mutex> lock(mutex_);
             stopping_ = true;
         }
-        free_.notify_one();
-        thread_.join();
+        for (auto& free : free_) free.notify_all();
+        for (std::thread& t : threads_) t.join();
     }
 
     // The next chunk into `records` and its totals; false at the end. Rethrows a reading error.
@@ -43,50 +54,62 @@ public:
         Slot* slot;
         {
             std::unique_lock<std::mutex> lock(mutex_);
-            filled_.wait(lock, [this] { return taken_ < produced_; });
-            slot = &slots_[taken_ % kSlots];
+            slot = &slots_[taken_ % slots_.size()];
+            filled_.wait(lock, [slot] { return slot->filled; });
         }
         if (slot->error) std::rethrow_exception(slot->error);
-        if (slot->end) return false;  // stays the last slot: later calls end again
-        std::swap(records, slot->records);
+        if (slot->end) return false;  // stays filled: later calls end again
+        slot->columns.to_rays(records);
         totals = slot->totals;
+        uint64_t freed_for;  // the chunk that may now use the slot
         {
             std::lock_guard<std::mutex> lock(mutex_);
-            ++taken_;
+            slot->filled = false;
+            freed_for = taken_++ + slots_.size();
         }
-        free_.notify_one();
+        free_[freed_for % free_.size()].notify_one();  // the thread that decodes it
         return true;
     }
 
 private:
-    // Enough to ride out uneven chunk times; each is options.chunk_size rays.
-    static constexpr uint64_t kSlots = 4;
     struct Slot {
-        RayChunk records;
+        RayColumns columns;
         RayTotals totals;
-        bool end = false;
+        bool filled = false, end = false;
         std::exception_ptr error;
     };
 
-    void run() {
-        for (;;) {
+    // Chunks first, first + step, ... until the end or an error.
+    void run(size_t first, size_t step) {
+        std::unique_ptr<RayDecoder> own;
+        RayDecoder* decoder = first == 0 ? reader_.decoder_.get() : nullptr;
+        const uint64_t chunk_size = reader_.options_.chunk_size, count = reader_.header_.ray_count;
+        for (uint64_t k = first;; k += step) {
             {
                 std::unique_lock<std::mutex> lock(mutex_);
-                free_.wait(lock, [this] { return stopping_ || produced_ - taken_ < kSlots; });
+                free_[first].wait(lock, [&] { return stopping_ || k < taken_ + slots_.size(); });
                 if (stopping_) return;
             }
-            // The slot is this thread's until produced_ counts it.
-            Slot& slot = slots_[produced_ % kSlots];
+            // The slot is this thread's until it is marked filled.
+            Slot& slot = slots_[k % slots_.size()];
             try {
-                slot.end = !reader_.decoder_->decode(decoded_, reader_.options_.chunk_size);
-                if (!slot.end) slot.totals = reader_.validate(decoded_), decoded_.to_rays(slot.records);
+                if (step == 1) {
+                    slot.end = !decoder->decode(slot.columns, chunk_size);
+                } else if (k * chunk_size >= count) {
+                    slot.end = true;
+                } else {
+                    if (!decoder) own = reader_.reopen_(), decoder = own.get();
+                    decoder->seek(k * chunk_size);
+                    slot.end = !decoder->decode(slot.columns, chunk_size);
+                }
+                if (!slot.end) slot.totals = reader_.validate(slot.columns);
             } catch (...) {
                 slot.error = std::current_exception();
             }
             const bool last = slot.end || slot.error;
             {
                 std::lock_guard<std::mutex> lock(mutex_);
-                ++produced_;
+                slot.filled = true;
             }
             filled_.notify_one();
             if (last) return;
@@ -94,13 +117,13 @@ private:
     }
 
     const RayReader& reader_;
-    RayColumns decoded_;
-    Slot slots_[kSlots];
+    std::vector<Slot> slots_;
     std::mutex mutex_;
-    std::condition_variable filled_, free_;
-    uint64_t produced_ = 0, taken_ = 0;  // slots filled and taken so far
+    std::condition_variable filled_;
+    std::vector<std::condition_variable> free_;  // one per thread, woken when its next slot is free
+    uint64_t taken_ = 0;  // chunks the caller has taken
     bool stopping_ = false;
-    std::thread thread_;  // last: it starts once everything above is ready
+    std::vector<std::thread> threads_;  // last: they start once everything above is ready
 };
 
 RayReader::RayReader(std::unique_ptr<RayDecoder> decoder, std::string path, RayReadOptions options)

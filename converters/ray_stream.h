@@ -87,9 +87,10 @@ struct RayTotals {
     }
 };
 
-// The validating, scaling reader over a decoder. read() hands out the rays in order; the
-// decoder and the validation run on a thread of the reader's own, a few chunks ahead of it
-// (memory: about six chunks of RayReadOptions::chunk_size rays). read_in_parts() is for
+// The validating, scaling reader over a decoder. read() hands out the rays in order; decoding
+// and validation run a few chunks ahead of it on threads of the reader's own - one, or for
+// large files of fixed-size records as many as parts() and the cores allow (memory: two chunks
+// of RayReadOptions::chunk_size rays per thread, and two more). read_in_parts() is for
 // consumers to whom the order does not matter (summaries, histograms): it reads the file in
 // parts on several threads at once. A reader is read once, one way; call it from one thread.
 class RayReader {

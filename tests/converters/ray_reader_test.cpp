@@ -1,4 +1,4 @@
-// RayReader decodes and validates ahead of read() on a thread of its own, and reads a file in
+// RayReader decodes and validates ahead of read() on threads of its own, and reads a file in
 // parts on several threads for read_in_parts(): what the caller sees must be what a reader
 // without those threads would give, errors included.
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include "converters/ray_stream.h"
 #include "support/test_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <set>
@@ -88,6 +89,61 @@ TEST(RayReader, AnErrorComesAfterTheRaysBeforeIt) {
                            ": direction (0, 0, nan) is not a finite number");
     // Asking again gives the same error, not rays past it.
     EXPECT_THROW(reader->read(chunk), Error);
+}
+
+// Files of fixed-size records that span enough chunks are decoded ahead on several threads
+// (as many as parts(), up to the cores), each taking every T-th chunk: what read() hands out
+// must still be every ray once, in file order, with the same totals. (With one core there is
+// one thread, and these tests check what the ones above do.)
+TEST(RayReader, DecodingOnSeveralThreadsHandsOutEveryRayInOrder) {
+    test::ScratchDir dir;
+    const size_t n = 25001;  // 251 chunks of 100, the last of 1
+    auto reader = open_rays(write_file(dir, n), chunks_of(100));
+    ASSERT_GT(reader->parts(), 1u);
+    RayChunk chunk;
+    size_t next = 0;
+    double sum = 0;
+    while (reader->read(chunk)) {
+        ASSERT_EQ(chunk.first_index, next);
+        ASSERT_EQ(chunk.size(), std::min<size_t>(100, n - next));
+        for (const Ray& r : chunk.rays) {
+            ASSERT_EQ(r.origin.x, float(next));
+            ASSERT_EQ(r.direction.z, 1.0f);
+            ASSERT_EQ(r.radiant, flux_of(next));
+            ASSERT_TRUE(std::isnan(r.luminous) && std::isnan(r.wavelength) && r.spectrum == -1);
+            sum += flux_of(next);
+            ++next;
+        }
+        EXPECT_EQ(reader->totals().rays, next);
+    }
+    EXPECT_EQ(next, n);
+    EXPECT_EQ(reader->totals().radiant, sum);
+    EXPECT_FALSE(reader->read(chunk));
+}
+
+// Bad rays in two neighbouring chunks, which two threads decode at once (the later one is
+// often found first): the error is the first bad ray's, after every ray before it, each time.
+TEST(RayReader, DecodingOnSeveralThreadsReportsTheFirstBadRay) {
+    test::ScratchDir dir;
+    const size_t first_bad = 9050, second_bad = 9120;  // chunks 90 and 91 of 100 rays
+    const std::string path = write_file(dir, 20000, {first_bad, second_bad});
+    for (int attempt = 0; attempt < 20; ++attempt) {
+        auto reader = open_rays(path, chunks_of(100));
+        ASSERT_GT(reader->parts(), 1u);
+        RayChunk chunk;
+        uint64_t handed_out = 0;
+        std::string message;
+        try {
+            while (reader->read(chunk)) handed_out += chunk.size();
+        } catch (const Error& e) {
+            message = e.what();
+        }
+        EXPECT_EQ(handed_out, 9000u) << "attempt " << attempt;  // the chunks before the bad ray's
+        EXPECT_EQ(message, path + ": byte " + std::to_string(kDataStart + first_bad * kRecord) + ": ray " +
+                               std::to_string(first_bad + 1) + ": direction (0, 0, nan) is not a finite number")
+            << "attempt " << attempt;
+        EXPECT_THROW(reader->read(chunk), Error);
+    }
 }
 
 TEST(RayReader, CanBeDroppedBeforeTheEnd) {
