@@ -4,10 +4,12 @@
 # Usage: tests/bench/io_throughput.sh BUILD_DIR [RAYS]      (default 10000000 rays)
 # Prints a table; figures go into issue notes, not into assertions.
 #
-# Reading is timed twice: `read_rays` (tests/bench) reads every ray as every rayconv command
-# does (detect, decode, validate, sum the fluxes, in parts on every core) and does nothing
-# else; `rayconv info` reads them and also summarises them (bounding box, wavelengths, the
-# direction coverage of 20000 cells and the mean direction).
+# Reading is timed three ways: `read_rays` (tests/bench) reads every ray through the library's
+# reader (detect, decode, validate, sum the fluxes) in parts on every core, as `rayconv info`
+# does, and does nothing else; `read_rays --sequential` reads them as records in file order,
+# as `rayconv convert` and the other commands do; `rayconv info` reads them in parts and also
+# summarises them (bounding box, wavelengths, the direction coverage of 20000 cells and the
+# mean direction).
 #
 # Comparators: reading is set against `cat > /dev/null` (a copy out of the page cache) and
 # against a plain loop summing the file's 32-bit words through mmap (what touching every byte
@@ -106,6 +108,7 @@ read -r s m < <(measure cat "$work/big.tm25ray"); row "cat > /dev/null" "$s" "$m
 if [ -n "$floor" ]; then read -r s m < <(measure "$floor" "$work/big.tm25ray"); row "sum of 32-bit words (mmap, one thread)" "$s" "$m" "$bytes"; fi
 read -r s m < <(measure sh -c "cat '$work/big.tm25ray' | wc -c"); row "cat | wc -c (bytes through a pipe)" "$s" "$m" "$bytes"
 read -r s m < <(measure "$read_rays" "$work/big.tm25ray"); row "read_rays (decode + validate)" "$s" "$m" "$bytes"; read_s=$s
+read -r s m < <(measure "$read_rays" --sequential "$work/big.tm25ray"); row "read_rays --sequential (records in order)" "$s" "$m" "$bytes"; sequential_s=$s
 read -r s m < <(measure "$rayconv" info "$work/big.tm25ray"); row "rayconv info (read + summarise)" "$s" "$m" "$bytes"; info_s=$s
 read -r s m < <(measure dd if="$work/big.tm25ray" of="$work/copy.tm25ray" bs=1M conv=fsync status=none); row "dd conv=fsync (write + fsync, no parsing)" "$s" "$m" "$bytes"; dd_s=$s
 read -r s m < <(measure "$rayconv" convert "$work/big.tm25ray" "$work/out.tm25ray"); row "rayconv convert tm25 -> tm25" "$s" "$m" "$bytes"; conv_s=$s
@@ -117,8 +120,12 @@ fi
 read -r s m < <(measure "$rayconv" convert "$work/big.tm25ray" "$work/out.ray" --to lighttools); row "rayconv convert tm25 -> lighttools" "$s" "$m" "$bytes"
 read -r s m2 < <(measure "$rayconv" info "$work/small.tm25ray"); row "rayconv info ($small rays)" "$s" "$m2" "$((bytes / 10))"
 percent() { awk -v a="$1" -v b="$2" 'BEGIN{printf "%.0f%%", 100 * a / b}'; }
-for reader in read_rays info; do
-  if [ "$reader" = read_rays ]; then best=$read_s; cmd=("$read_rays"); else best=$info_s; cmd=("$rayconv" info); fi
+for reader in read_rays "read_rays --sequential" info; do
+  case $reader in
+    read_rays) best=$read_s; cmd=("$read_rays") ;;
+    "read_rays --sequential") best=$sequential_s; cmd=("$read_rays" --sequential) ;;
+    *) best=$info_s; cmd=("$rayconv" info) ;;
+  esac
   read -r pc pi ratio < <(paired "$work/big.tm25ray" "${cmd[@]}")
   awk -v r="$reader" -v c="$cat_s" -v b="$best" -v n="$runs" -v pc="$pc" -v pi="$pi" -v m="$ratio" \
     'BEGIN{printf "%s at %.0f%% of cat throughput (best times); in %d alternating rounds: best cat %.3f s, best %s %.3f s, median of the rounds\x27 ratios %.0f%%\n", r, 100*c/b, n, pc/1e6, r, pi/1e6, 100*m}'
