@@ -333,8 +333,9 @@ void write_atomically(const std::string& path, const std::function<bool(const st
     // not replace what the user had.
     bool written = false;
     try {
+        written = write(to.string());
         std::error_code ec;
-        written = write(to.string()) && (target.in_place || fs::file_size(to, ec) > 0);
+        if (written && !target.in_place) written = fs::file_size(to, ec) > 0 && !ec;
     } catch (const std::exception& e) {
         fail(e.what());
     }
