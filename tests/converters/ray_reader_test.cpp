@@ -46,27 +46,57 @@ RayReadOptions chunks_of(size_t rays) {
     return options;
 }
 
+// Reads a file of write_file()'s n good rays to the end: every ray once, in order, in chunks of
+// `chunk_size`, with the running totals.
+void expect_every_ray_in_order(RayReader& reader, size_t n, size_t chunk_size) {
+    RayChunk chunk;
+    size_t next = 0;
+    double sum = 0;
+    while (reader.read(chunk)) {
+        ASSERT_EQ(chunk.first_index, next);
+        ASSERT_EQ(chunk.size(), std::min(chunk_size, n - next));
+        for (const Ray& r : chunk.rays) {
+            ASSERT_EQ(r.origin.x, float(next));
+            ASSERT_EQ(r.direction.z, 1.0f);
+            ASSERT_EQ(r.radiant, flux_of(next));
+            ASSERT_TRUE(std::isnan(r.luminous) && std::isnan(r.wavelength) && r.spectrum == -1);
+            sum += flux_of(next);
+            ++next;
+        }
+        EXPECT_EQ(reader.totals().rays, next);
+    }
+    EXPECT_EQ(next, n);
+    // Sums of multiples of 1/8 below 2^50 are exact in double, in any order.
+    EXPECT_EQ(reader.totals().radiant, sum);
+    EXPECT_FALSE(reader.read(chunk));  // the end stays the end
+}
+
+// Reads until an error: how many rays came before it, and its message.
+struct ReadToError {
+    uint64_t handed_out = 0;
+    std::string message;
+};
+ReadToError read_to_error(RayReader& reader) {
+    ReadToError result;
+    RayChunk chunk;
+    try {
+        while (reader.read(chunk)) result.handed_out += chunk.size();
+    } catch (const Error& e) {
+        result.message = e.what();
+    }
+    return result;
+}
+
+std::string bad_direction_message(const std::string& path, size_t bad) {
+    return path + ": byte " + std::to_string(kDataStart + bad * kRecord) + ": ray " + std::to_string(bad + 1) +
+           ": direction (0, 0, nan) is not a finite number";
+}
+
 TEST(RayReader, HandsOutEveryRayInOrderWithTheirTotals) {
     test::ScratchDir dir;
     const size_t n = 25001;  // not a multiple of the chunk size
     auto reader = open_rays(write_file(dir, n), chunks_of(1000));
-    RayChunk chunk;
-    size_t next = 0;
-    double sum = 0;
-    while (reader->read(chunk)) {
-        ASSERT_EQ(chunk.first_index, next);
-        for (const Ray& r : chunk.rays) {
-            ASSERT_EQ(r.origin.x, float(next));
-            ASSERT_EQ(r.radiant, flux_of(next));
-            sum += flux_of(next);
-            ++next;
-        }
-        EXPECT_EQ(reader->totals().rays, next);
-    }
-    EXPECT_EQ(next, n);
-    // Sums of multiples of 1/8 below 2^50 are exact in double, in any order.
-    EXPECT_EQ(reader->totals().radiant, sum);
-    EXPECT_FALSE(reader->read(chunk));  // the end stays the end
+    expect_every_ray_in_order(*reader, n, 1000);
 }
 
 TEST(RayReader, AnErrorComesAfterTheRaysBeforeIt) {
@@ -74,20 +104,13 @@ TEST(RayReader, AnErrorComesAfterTheRaysBeforeIt) {
     const size_t bad = 9000;
     const std::string path = write_file(dir, 20000, {bad});
     auto reader = open_rays(path, chunks_of(1000));
-    RayChunk chunk;
-    uint64_t handed_out = 0;
-    std::string message;
-    try {
-        while (reader->read(chunk)) handed_out += chunk.size();
-    } catch (const Error& e) {
-        message = e.what();
-    }
+    const ReadToError read = read_to_error(*reader);
     // The chunks before the bad ray's chunk arrive whole; the bad ray's chunk does not.
-    EXPECT_EQ(handed_out, bad);
+    EXPECT_EQ(read.handed_out, bad);
     EXPECT_EQ(reader->totals().rays, bad);
-    EXPECT_EQ(message, path + ": byte " + std::to_string(kDataStart + bad * kRecord) + ": ray " + std::to_string(bad + 1) +
-                           ": direction (0, 0, nan) is not a finite number");
+    EXPECT_EQ(read.message, bad_direction_message(path, bad));
     // Asking again gives the same error, not rays past it.
+    RayChunk chunk;
     EXPECT_THROW(reader->read(chunk), Error);
 }
 
@@ -100,25 +123,7 @@ TEST(RayReader, DecodingOnSeveralThreadsHandsOutEveryRayInOrder) {
     const size_t n = 25001;  // 251 chunks of 100, the last of 1
     auto reader = open_rays(write_file(dir, n), chunks_of(100));
     ASSERT_GT(reader->parts(), 1u);
-    RayChunk chunk;
-    size_t next = 0;
-    double sum = 0;
-    while (reader->read(chunk)) {
-        ASSERT_EQ(chunk.first_index, next);
-        ASSERT_EQ(chunk.size(), std::min<size_t>(100, n - next));
-        for (const Ray& r : chunk.rays) {
-            ASSERT_EQ(r.origin.x, float(next));
-            ASSERT_EQ(r.direction.z, 1.0f);
-            ASSERT_EQ(r.radiant, flux_of(next));
-            ASSERT_TRUE(std::isnan(r.luminous) && std::isnan(r.wavelength) && r.spectrum == -1);
-            sum += flux_of(next);
-            ++next;
-        }
-        EXPECT_EQ(reader->totals().rays, next);
-    }
-    EXPECT_EQ(next, n);
-    EXPECT_EQ(reader->totals().radiant, sum);
-    EXPECT_FALSE(reader->read(chunk));
+    expect_every_ray_in_order(*reader, n, 100);
 }
 
 // Bad rays in two neighbouring chunks, which two threads decode at once (the later one is
@@ -130,18 +135,10 @@ TEST(RayReader, DecodingOnSeveralThreadsReportsTheFirstBadRay) {
     for (int attempt = 0; attempt < 20; ++attempt) {
         auto reader = open_rays(path, chunks_of(100));
         ASSERT_GT(reader->parts(), 1u);
+        const ReadToError read = read_to_error(*reader);
+        EXPECT_EQ(read.handed_out, 9000u) << "attempt " << attempt;  // the chunks before the bad ray's
+        EXPECT_EQ(read.message, bad_direction_message(path, first_bad)) << "attempt " << attempt;
         RayChunk chunk;
-        uint64_t handed_out = 0;
-        std::string message;
-        try {
-            while (reader->read(chunk)) handed_out += chunk.size();
-        } catch (const Error& e) {
-            message = e.what();
-        }
-        EXPECT_EQ(handed_out, 9000u) << "attempt " << attempt;  // the chunks before the bad ray's
-        EXPECT_EQ(message, path + ": byte " + std::to_string(kDataStart + first_bad * kRecord) + ": ray " +
-                               std::to_string(first_bad + 1) + ": direction (0, 0, nan) is not a finite number")
-            << "attempt " << attempt;
         EXPECT_THROW(reader->read(chunk), Error);
     }
 }
