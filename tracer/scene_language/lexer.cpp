@@ -11,12 +11,18 @@
 namespace rayset::tracer {
 namespace {
 
+bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool is_alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
+bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+
 class Lexer {
 public:
-    Lexer(const std::string& text, int file, const std::string& name) : text_(text), file_(file), name_(name) {}
+    Lexer(const std::string& text, int file, SourceFile& out, NameTable& names)
+        : text_(text), file_(file), out_(out), names_(names) {
+        if (text_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = 3;  // UTF-8 byte-order mark
+    }
 
-    std::vector<Token> run() {
-        std::vector<Token> tokens;
+    void run() {
         for (;;) {
             skip_space_and_comments();
             Token token;
@@ -24,32 +30,31 @@ public:
             token.line = line_;
             token.column = column_;
             if (at_end()) {
-                tokens.push_back(token);
-                return tokens;
+                out_.tokens.push_back(token);
+                return;
             }
             const char c = peek();
-            if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
-                token.kind = TokenKind::identifier;
-                token.text = read_word();
-            } else if (std::isdigit(static_cast<unsigned char>(c)) ||
-                       (c == '.' && std::isdigit(static_cast<unsigned char>(peek(1))))) {
+            if (is_alpha(c) || c == '_') {
+                token.kind = TokenKind::word;
+                token.name = names_.intern(read_word());
+            } else if (is_digit(c) || (c == '.' && is_digit(peek(1)))) {
                 token.kind = TokenKind::number;
-                token.text = read_number();
-                token.number = std::strtod(token.text.c_str(), nullptr);
+                token.number = read_number();
             } else if (c == '"') {
                 token.kind = TokenKind::string;
-                token.text = read_string(token);
+                token.string = static_cast<uint32_t>(out_.strings.size());
+                out_.strings.push_back(read_string(token));
             } else if (c == '#') {
                 advance();
-                if (!std::isalpha(static_cast<unsigned char>(peek())))
-                    fail(token, "expected a directive name after '#'");
+                while (peek() == ' ' || peek() == '\t') advance();  // "#   debug" is "#debug"
+                if (!is_alpha(peek())) fail(token, "expected a directive name after '#'");
                 token.kind = TokenKind::directive;
-                token.text = read_word();
+                token.name = names_.intern(read_word());
             } else {
                 token.kind = TokenKind::symbol;
-                token.text = read_symbol(token);
+                token.symbol = read_symbol(token);
             }
-            tokens.push_back(std::move(token));
+            out_.tokens.push_back(token);
         }
     }
 
@@ -68,7 +73,7 @@ private:
     }
 
     [[noreturn]] void fail(const Token& at, const std::string& what) const {
-        throw SceneError(what, {name_, at.line, at.column}, "");
+        throw SceneError(what, {out_.path, at.line, at.column}, "");
     }
 
     void skip_line() {
@@ -76,18 +81,23 @@ private:
     }
 
     // Called with the position just past "/*".
-    void skip_block_comment(const Token& opened) {
+    void skip_block_comment(int line, int column) {
         for (;;) {
-            if (at_end()) fail(opened, "unclosed comment: expected '*/' before end of file for the comment opened");
+            if (at_end()) {
+                Token opened;
+                opened.line = line;
+                opened.column = column;
+                fail(opened, "unclosed comment: expected '*/' before end of file for the comment opened");
+            }
             const char c = advance();
             if (c == '*' && peek() == '/') {
                 advance();
                 return;
             }
             if (c == '/' && peek() == '*') {
-                Token nested{TokenKind::end, "", 0, file_, line_, column_ - 1};
+                const int nested_column = column_ - 1;
                 advance();
-                skip_block_comment(nested);
+                skip_block_comment(line_, nested_column);
             } else if (c == '/' && peek() == '/') {
                 skip_line();
             }
@@ -98,46 +108,59 @@ private:
         for (;;) {
             if (at_end()) return;
             const char c = peek();
-            if (std::isspace(static_cast<unsigned char>(c))) {
+            if (std::isspace(static_cast<unsigned char>(c)) || c == '\x1a') {  // ^Z: DOS end of file
                 advance();
             } else if (c == '/' && peek(1) == '/') {
                 skip_line();
             } else if (c == '/' && peek(1) == '*') {
-                Token opened{TokenKind::end, "", 0, file_, line_, column_};
+                const int line = line_, column = column_;
                 advance();
                 advance();
-                skip_block_comment(opened);
+                skip_block_comment(line, column);
             } else {
                 return;
             }
         }
     }
 
-    std::string read_word() {
-        std::string word;
-        while (std::isalnum(static_cast<unsigned char>(peek())) || peek() == '_') word += advance();
-        return word;
+    std::string_view read_word() {
+        const size_t start = pos_;
+        while (is_word_char(peek())) advance();
+        return std::string_view(text_).substr(start, pos_ - start);
     }
 
-    std::string read_number() {
-        std::string digits;
-        while (std::isdigit(static_cast<unsigned char>(peek()))) digits += advance();
-        if (peek() == '.' && std::isdigit(static_cast<unsigned char>(peek(1)))) {
-            digits += advance();
-            while (std::isdigit(static_cast<unsigned char>(peek()))) digits += advance();
-        } else if (peek() == '.' && !std::isalpha(static_cast<unsigned char>(peek(1)))) {
-            digits += advance();  // "1." is a number; "V.x" is not reached here
+    double read_number() {
+        const size_t start = pos_;
+        while (is_digit(peek())) advance();
+        if (peek() == '.' && is_digit(peek(1))) {
+            advance();
+            while (is_digit(peek())) advance();
+        } else if (peek() == '.' && !is_alpha(peek(1))) {
+            advance();  // "1." is a number; "V.x" is not reached here
         }
         if ((peek() == 'e' || peek() == 'E') &&
-            (std::isdigit(static_cast<unsigned char>(peek(1))) ||
-             ((peek(1) == '+' || peek(1) == '-') && std::isdigit(static_cast<unsigned char>(peek(2)))))) {
-            digits += advance();
-            if (peek() == '+' || peek() == '-') digits += advance();
-            while (std::isdigit(static_cast<unsigned char>(peek()))) digits += advance();
+            (is_digit(peek(1)) || ((peek(1) == '+' || peek(1) == '-') && is_digit(peek(2))))) {
+            advance();
+            if (peek() == '+' || peek() == '-') advance();
+            while (is_digit(peek())) advance();
         }
-        return digits;
+        return std::strtod(text_.substr(start, pos_ - start).c_str(), nullptr);
     }
 
+    static void append_utf8(std::string& out, unsigned code) {
+        if (code < 0x80) {
+            out += static_cast<char>(code);
+        } else if (code < 0x800) {
+            out += static_cast<char>(0xC0 | (code >> 6));
+            out += static_cast<char>(0x80 | (code & 0x3F));
+        } else {
+            out += static_cast<char>(0xE0 | (code >> 12));
+            out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+            out += static_cast<char>(0x80 | (code & 0x3F));
+        }
+    }
+
+    // POV-Ray's escapes; any other character after a backslash is an error, as in POV-Ray.
     std::string read_string(const Token& opened) {
         advance();  // opening quote
         std::string value;
@@ -145,56 +168,139 @@ private:
             if (at_end() || peek() == '\n') fail(opened, "unterminated string: expected '\"' before end of line");
             const char c = advance();
             if (c == '"') return value;
-            if (c == '\\' && !at_end()) {
-                const char e = advance();
-                switch (e) {
-                    case 'n': value += '\n'; break;
-                    case 't': value += '\t'; break;
-                    case '\\': value += '\\'; break;
-                    case '"': value += '"'; break;
-                    default: value += '\\'; value += e; break;  // POV-Ray keeps unknown escapes
-                }
-            } else {
+            if (c != '\\') {
                 value += c;
+                continue;
+            }
+            const Token escape{TokenKind::string, Symbol::none, 0, 0, 0, file_, line_, column_ - 1};
+            const char e = at_end() ? '\0' : advance();
+            switch (e) {
+                case 'a': value += '\a'; break;
+                case 'b': value += '\b'; break;
+                case 'f': value += '\f'; break;
+                case 'n': value += '\n'; break;
+                case 'r': value += '\r'; break;
+                case 't': value += '\t'; break;
+                case 'v': value += '\v'; break;
+                case '0': value += '\0'; break;
+                case '\\': value += '\\'; break;
+                case '\'': value += '\''; break;
+                case '"': value += '"'; break;
+                case 'u': {
+                    unsigned code = 0;
+                    for (int i = 0; i < 4; ++i) {
+                        const char h = peek();
+                        if (!std::isxdigit(static_cast<unsigned char>(h)))
+                            fail(escape, "illegal escape in string: '\\u' needs four hexadecimal digits");
+                        advance();
+                        code = code * 16 + static_cast<unsigned>(is_digit(h) ? h - '0' : std::tolower(h) - 'a' + 10);
+                    }
+                    append_utf8(value, code);
+                    break;
+                }
+                default:
+                    fail(escape, fmt::format("illegal escape '\\{}' in string (write '\\\\' for a backslash)",
+                                             e == '\0' ? std::string("end of file") : std::string(1, e)));
             }
         }
     }
 
-    std::string read_symbol(const Token& at) {
+    Symbol read_symbol(const Token& at) {
         const char c = advance();
-        if ((c == '<' || c == '>' || c == '!') && peek() == '=') {
-            advance();
-            return std::string(1, c) + "=";
+        if (peek() == '=') {
+            if (c == '<') return advance(), Symbol::less_equal;
+            if (c == '>') return advance(), Symbol::greater_equal;
+            if (c == '!') return advance(), Symbol::not_equal;
         }
-        static const std::string singles = "{}<>()[],;.+-*/=?:&|!";
-        if (singles.find(c) == std::string::npos)
-            fail(at, fmt::format("unexpected character '{}'", c));
-        return std::string(1, c);
+        switch (c) {
+            case '{': return Symbol::lbrace;
+            case '}': return Symbol::rbrace;
+            case '(': return Symbol::lparen;
+            case ')': return Symbol::rparen;
+            case '[': return Symbol::lbracket;
+            case ']': return Symbol::rbracket;
+            case '<': return Symbol::less;
+            case '>': return Symbol::greater;
+            case '=': return Symbol::equals;
+            case ',': return Symbol::comma;
+            case ';': return Symbol::semicolon;
+            case '.': return Symbol::dot;
+            case '+': return Symbol::plus;
+            case '-': return Symbol::minus;
+            case '*': return Symbol::star;
+            case '/': return Symbol::slash;
+            case '?': return Symbol::question;
+            case ':': return Symbol::colon;
+            case '&': return Symbol::ampersand;
+            case '|': return Symbol::bar;
+            case '!': return Symbol::bang;
+            default: break;
+        }
+        const unsigned byte = static_cast<unsigned char>(c);
+        if (byte < 0x20 || byte >= 0x7F)
+            fail(at, fmt::format("unexpected byte 0x{:02X} outside a string or comment", byte));
+        fail(at, fmt::format("unexpected character '{}'", c));
     }
 
     const std::string& text_;
     int file_;
-    const std::string& name_;
+    SourceFile& out_;
+    NameTable& names_;
     size_t pos_ = 0;
     int line_ = 1, column_ = 1;
 };
 
 }  // namespace
 
-std::vector<Token> tokenize(const std::string& text, int file, const std::string& file_name) {
-    return Lexer(text, file, file_name).run();
+void tokenize(const std::string& text, int file, SourceFile& out, NameTable& names) {
+    Lexer(text, file, out, names).run();
 }
 
-std::string describe(const Token& token) {
-    switch (token.kind) {
-        case TokenKind::identifier: return fmt::format("'{}'", token.text);
-        case TokenKind::number: return fmt::format("number {}", token.text);
-        case TokenKind::string: return fmt::format("string \"{}\"", token.text);
-        case TokenKind::symbol: return fmt::format("'{}'", token.text);
-        case TokenKind::directive: return fmt::format("'#{}'", token.text);
-        case TokenKind::end: return "end of file";
+const char* symbol_text(Symbol symbol) {
+    switch (symbol) {
+        case Symbol::none: return "";
+        case Symbol::lbrace: return "{";
+        case Symbol::rbrace: return "}";
+        case Symbol::lparen: return "(";
+        case Symbol::rparen: return ")";
+        case Symbol::lbracket: return "[";
+        case Symbol::rbracket: return "]";
+        case Symbol::less: return "<";
+        case Symbol::greater: return ">";
+        case Symbol::less_equal: return "<=";
+        case Symbol::greater_equal: return ">=";
+        case Symbol::equals: return "=";
+        case Symbol::not_equal: return "!=";
+        case Symbol::comma: return ",";
+        case Symbol::semicolon: return ";";
+        case Symbol::dot: return ".";
+        case Symbol::plus: return "+";
+        case Symbol::minus: return "-";
+        case Symbol::star: return "*";
+        case Symbol::slash: return "/";
+        case Symbol::question: return "?";
+        case Symbol::colon: return ":";
+        case Symbol::ampersand: return "&";
+        case Symbol::bar: return "|";
+        case Symbol::bang: return "!";
     }
-    return "?";
+    return "";
+}
+
+NameTable::NameTable() {
+#define RAYSET_INTERN(identifier, text) intern(text);
+    RAYSET_POV_KEYWORDS(RAYSET_INTERN)
+    RAYSET_CONTEXT_WORDS(RAYSET_INTERN)
+#undef RAYSET_INTERN
+}
+
+NameId NameTable::intern(std::string_view text) {
+    auto found = ids_.find(text);
+    if (found != ids_.end()) return found->second;
+    const NameId id = static_cast<NameId>(texts_.size());
+    texts_.emplace_back(text);
+    ids_.emplace(texts_.back(), id);
+    return id;
 }
 
 }  // namespace rayset::tracer

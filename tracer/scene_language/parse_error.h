@@ -4,7 +4,7 @@
 #include <string>
 
 #include "converters/error.h"
-#include "tracer/scene_language/scene_description.h"
+#include "tracer/scene_language/source_location.h"
 
 namespace rayset::tracer {
 

@@ -1,110 +1,132 @@
-// The top level of a scene file, the flattening of object trees into world-space instances,
-// and the public entry points.
+// The top level of a scene file, the parser's set-up and limits, and the public entry points.
+// A parse runs on a thread of its own with a large stack, so that the nesting limit, not the
+// machine's default stack, bounds how deep a scene may recurse.
 #include "tracer/scene_language/scene_language.h"
 
+#include <pthread.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
 
+#include "tracer/scene_language/grammar.h"
 #include "tracer/scene_language/parse_error.h"
 #include "tracer/scene_language/parser.h"
 
 namespace rayset::tracer {
 namespace fs = std::filesystem;
 
+namespace {
+
+constexpr size_t kParserStackBytes = size_t{512} << 20;
+constexpr const char* kPovRayIncludeFolder = "/usr/share/povray-3.7/include";
+
+long resident_kilobytes() {
+    std::FILE* statm = std::fopen("/proc/self/statm", "r");
+    if (!statm) return 0;
+    long total = 0, resident = 0;
+    const int read = std::fscanf(statm, "%ld %ld", &total, &resident);
+    std::fclose(statm);
+    return read == 2 ? resident * (sysconf(_SC_PAGESIZE) / 1024) : 0;
+}
+
+// Runs `body` on a thread with a stack of `bytes`, rethrowing what it throws.
+template <typename Body>
+void run_with_stack(size_t bytes, Body&& body) {
+    struct Task {
+        Body* body;
+        std::exception_ptr error;
+    } task{&body, nullptr};
+    auto trampoline = [](void* argument) -> void* {
+        auto* t = static_cast<Task*>(argument);
+        try {
+            (*t->body)();
+        } catch (...) {
+            t->error = std::current_exception();
+        }
+        return nullptr;
+    };
+    pthread_attr_t attributes;
+    pthread_attr_init(&attributes);
+    pthread_attr_setstacksize(&attributes, bytes);
+    pthread_t thread;
+    const int created = pthread_create(&thread, &attributes, trampoline, &task);
+    pthread_attr_destroy(&attributes);
+    if (created != 0) {
+        body();  // no thread: the caller's stack will have to do
+        return;
+    }
+    pthread_join(thread, nullptr);
+    if (task.error) std::rethrow_exception(task.error);
+}
+
+}  // namespace
+
+std::vector<std::string> default_include_paths() {
+    std::error_code error;
+    if (fs::is_directory(kPovRayIncludeFolder, error)) return {kPovRayIncludeFolder};
+    return {};
+}
+
+Parser::Parser(const ParseOptions& options) : options_(options), start_time_(std::chrono::system_clock::now()) {
+    std::error_code error;
+    search_paths_ = options.include_paths;
+    for (const std::string& folder : default_include_paths()) search_paths_.push_back(folder);
+    for (const std::string& folder : search_paths_) allowed_roots_.push_back(fs::weakly_canonical(folder, error).string());
+    for (const std::string& folder : options.allowed_roots)
+        allowed_roots_.push_back(fs::weakly_canonical(folder, error).string());
+    for (const std::string& folder : options.write_roots)
+        write_roots_.push_back(fs::weakly_canonical(folder, error).string());
+    baseline_rss_kb_ = resident_kilobytes();
+}
+
+Parser::~Parser() = default;
+
+void Parser::check_memory(const Token& at) {
+    tokens_since_memory_check_ = 0;
+    const long grown_mb = (resident_kilobytes() - baseline_rss_kb_) / 1024;
+    if (grown_mb > options_.max_memory_megabytes)
+        fail(at, fmt::format("memory limit: parsing the scene took more than {} MB (ParseOptions::max_memory_megabytes)",
+                             options_.max_memory_megabytes));
+}
+
 SceneDescription Parser::parse(const std::string& text, const std::string& path) {
     std::error_code error;
     const fs::path directory = fs::absolute(fs::path(path), error).parent_path();
-    allowed_roots_.push_back(fs::weakly_canonical(directory, error).string());
-    for (const std::string& folder : options_.include_paths) allowed_roots_.push_back(fs::weakly_canonical(folder, error).string());
-    for (const std::string& folder : options_.allowed_roots) allowed_roots_.push_back(fs::weakly_canonical(folder, error).string());
+    allowed_roots_.insert(allowed_roots_.begin(), fs::weakly_canonical(directory, error).string());
     scopes_.emplace_back();  // global: the main file's declarations live here
     push_file(text, path, directory.string(), nullptr);
 
     for (;;) {
         const Token token = peek();
-        if (token.kind == TokenKind::end) {
-            // A directive's expression may have read the end of file before its block opened.
-            if (!conditionals_.empty()) {
-                const Token& opened = conditionals_.back().opened;
-                fail(token, fmt::format("unclosed #{} opened at {}: expected #end before end of file", opened.text,
-                                        location_of(opened).str()));
-            }
-            break;
+        if (token.kind == TokenKind::end) break;
+        if (starts_object(*this, token)) {
+            add_to_scene(*this, parse_object(*this));
+            continue;
         }
-        const std::string w = token.kind == TokenKind::identifier ? token.text : "";
-        if (starts_object(token)) {
-            flatten(*parse_object(), Inherited{});
-        } else if (w == "camera") {
+        if (token.is(Symbol::semicolon)) {  // a stray ';' (POV-Ray ignores it)
             next();
-            scene_.camera = parse_camera(token);
-            scene_.has_camera = true;
-        } else if (w == "global_settings") {
-            next();
-            parse_global_settings(token);
-        } else if (w == "background") {
-            next();
-            parse_background(token);
-        } else if (w == "ray_source") {
-            next();
-            parse_ray_source(token);
-        } else if (w == "illuminance_receiver") {
-            next();
-            parse_receiver(token);
-        } else {
-            fail_identifier(token, "an object, light_source, camera, global_settings, background, ray_source or "
-                                   "illuminance_receiver");
+            continue;
         }
+        if (token.kind == TokenKind::word && is_keyword(token.name)) {
+            next();
+            if (parse_scene_statement(*this, token)) continue;
+        }
+        fail_identifier(token, "an object, light_source, camera, global_settings, background, ray_source or "
+                               "illuminance_receiver");
     }
     return std::move(scene_);
 }
 
-void Parser::flatten(const ObjectNode& node, const Inherited& parent) {
-    Inherited here = parent;
-    here.to_world = parent.to_world * node.transform;
-    if (node.texture) here.texture = &*node.texture;
-    if (node.interior) here.interior = &*node.interior;
-    here.no_shadow = parent.no_shadow || node.no_shadow;
-    here.no_image = parent.no_image || node.no_image;
-    here.no_reflection = parent.no_reflection || node.no_reflection;
-    here.hollow = parent.hollow || node.hollow;
-
-    switch (node.kind) {
-        case ObjectNode::Kind::union_of:
-            for (const ObjectRef& child : node.children) flatten(*child, here);
-            return;
-        case ObjectNode::Kind::light: {
-            LightSource light = node.light;
-            light.position = here.to_world.point(light.position);
-            light.point_at = here.to_world.point(light.point_at);
-            light.axis1 = here.to_world.vector(light.axis1);
-            light.axis2 = here.to_world.vector(light.axis2);
-            scene_.lights.push_back(light);
-            return;
-        }
-        case ObjectNode::Kind::shape: {
-            ObjectInstance instance;
-            instance.shape = node.shape;
-            instance.object_to_world = here.to_world;
-            instance.textured = here.texture != nullptr;
-            if (here.texture) instance.texture = *here.texture;
-            instance.has_interior = here.interior != nullptr;
-            if (here.interior) instance.interior = *here.interior;
-            instance.no_shadow = here.no_shadow;
-            instance.no_image = here.no_image;
-            instance.no_reflection = here.no_reflection;
-            instance.hollow = here.hollow;
-            instance.location = node.location;
-            scene_.objects.push_back(std::move(instance));
-            return;
-        }
-    }
-}
-
 SceneDescription parse_scene_text(const std::string& text, const std::string& virtual_path, const ParseOptions& options) {
-    return Parser(options).parse(text, virtual_path);
+    SceneDescription scene;
+    run_with_stack(kParserStackBytes, [&] { scene = Parser(options).parse(text, virtual_path); });
+    return scene;
 }
 
 SceneDescription parse_scene_file(const std::string& path, const ParseOptions& options) {

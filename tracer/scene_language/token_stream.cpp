@@ -1,124 +1,211 @@
-// Tokens across included files: one lookahead token, directives executed as they are reached,
-// and the helpers that turn a token into a located error message.
+// Tokens across files and macro bodies: one lookahead token, directives run and macros
+// expanded as they are reached, identifiers resolved when they are fetched (so a macro may
+// return a local identifier: it is resolved before the macro's #end removes it), and the
+// helpers that turn a token into a located error message.
 #include <fmt/format.h>
 
 #include "tracer/scene_language/parse_error.h"
 #include "tracer/scene_language/parser.h"
-#include "tracer/scene_language/pov_keywords.h"
 
 namespace rayset::tracer {
 
 void Parser::push_file(const std::string& text, const std::string& shown_path, const std::string& directory,
                        const Token* included_at) {
-    if (!lookahead_.empty()) {
-        // The lookahead was read from the including file just before the directive ended; give it
-        // back so that it follows the included text.
-        --frames_.back().pos;
-        lookahead_.clear();
-    }
+    auto source = std::make_shared<SourceFile>();
+    source->path = shown_path;
+    source->directory = directory;
     FileInfo info;
-    info.path = shown_path;
-    info.directory = directory;
+    info.source = source;
     if (included_at) {
         info.included = true;
         info.included_at = *included_at;
     }
     files_.push_back(info);
     scene_.files.push_back(shown_path);
+    tokenize(text, static_cast<int>(files_.size()) - 1, *source, names_);
     Frame frame;
-    frame.file = static_cast<int>(files_.size()) - 1;
-    frame.tokens = tokenize(text, frame.file, shown_path);
-    frame.conditionals_at_start = conditionals_.size();
+    frame.source = source;
+    frame.blocks_at_start = blocks_.size();
     frames_.push_back(std::move(frame));
     if (included_at) scopes_.emplace_back();
 }
 
-Token Parser::raw_next() {
+void Parser::leave_finished_files() {
     for (;;) {
-        Frame& frame = frames_.back();
-        const Token& token = frame.tokens[frame.pos];
-        if (token.kind != TokenKind::end) {
-            ++frame.pos;
-            return token;
-        }
-        if (conditionals_.size() > frame.conditionals_at_start) {
-            const Token& opened = conditionals_.back().opened;
-            fail(token, fmt::format("unclosed #{} opened at {}: expected #end before end of file", opened.text,
+        const Frame& frame = frames_.back();
+        const Token& token = frame.source->tokens[frame.pos];
+        if (token.kind != TokenKind::end) return;
+        if (blocks_.size() > frame.blocks_at_start) {
+            const Token& opened = blocks_.back().opened;
+            fail(token, fmt::format("unclosed #{} opened at {}: expected #end before end of file", word(opened),
                                     location_of(opened).str()));
         }
-        if (frames_.size() == 1) return token;
-        frames_.pop_back();
+        if (frames_.size() == 1) return;
+        frames_.pop_back();  // a file frame: macro bodies end at their #end
         scopes_.pop_back();
+    }
+}
+
+Token Parser::raw_next() {
+    leave_finished_files();
+    Frame& frame = frames_.back();
+    const Token& token = frame.source->tokens[frame.pos];
+    if (token.kind == TokenKind::end) return token;
+    ++frame.pos;
+    if (++tokens_since_memory_check_ >= 4096) check_memory(token);
+    return token;
+}
+
+const Token& Parser::raw_peek() {
+    leave_finished_files();
+    const Frame& frame = frames_.back();
+    return frame.source->tokens[frame.pos];
+}
+
+NameId Parser::next_raw_identifier(const std::string& purpose) {
+    if (have_lookahead_) give_back_lookahead();
+    const Token token = raw_next();
+    if (token.kind != TokenKind::word) fail_expected(fmt::format("an identifier {}", purpose), token);
+    return token.name;
+}
+
+void Parser::give_back_lookahead() {
+    // The lookahead was the last token taken from the current frame.
+    --frames_.back().pos;
+    have_lookahead_ = false;
+}
+
+SymbolRef Parser::resolve(NameId name) const { return is_keyword(name) ? nullptr : lookup(name); }
+
+void Parser::fill_lookahead() {
+    while (!have_lookahead_) {
+        const Token token = raw_next();
+        if (token.kind == TokenKind::directive) {
+            // Inside a directive's own expression, a directive of the same file ends it.
+            if (directive_frame_ != 0 && frames_.size() <= directive_frame_) {
+                lookahead_ = token;
+                lookahead_symbol_.reset();
+                have_lookahead_ = true;
+                return;
+            }
+            directive_position_ = frames_.back().pos - 1;
+            run_directive(token);
+            continue;
+        }
+        SymbolRef symbol = token.kind == TokenKind::word ? resolve(token.name) : nullptr;
+        if (symbol) {
+            if (const MacroRef* macro = std::get_if<MacroRef>(&symbol->value)) {
+                invoke_macro(token, *macro);
+                continue;
+            }
+            if (!symbol->deprecation.empty() && !(symbol->warn_once && symbol->warned)) {
+                symbol->warned = true;
+                warn(token, symbol->deprecation);
+            }
+        }
+        lookahead_ = token;
+        lookahead_symbol_ = std::move(symbol);
+        have_lookahead_ = true;
     }
 }
 
 const Token& Parser::peek() {
     for (;;) {
-        if (lookahead_.empty()) lookahead_.push_back(raw_next());
-        if (lookahead_.back().kind == TokenKind::directive && directive_depth_ == 0) {
-            const Token directive = lookahead_.back();
-            lookahead_.clear();
+        if (!have_lookahead_) fill_lookahead();
+        // A directive handed back by a directive's expression runs once that directive is done.
+        if (lookahead_.kind == TokenKind::directive && !(directive_frame_ != 0 && frames_.size() <= directive_frame_)) {
+            const Token directive = lookahead_;
+            have_lookahead_ = false;
+            directive_position_ = frames_.back().pos - 1;
             run_directive(directive);
             continue;
         }
-        return lookahead_.back();
+        return lookahead_;
     }
 }
 
 Token Parser::next() {
     peek();
-    Token token = lookahead_.back();
-    lookahead_.clear();
-    return token;
+    have_lookahead_ = false;
+    return lookahead_;
 }
 
-bool Parser::peek_symbol(const char* symbol) {
-    const Token& token = peek();
-    return token.kind == TokenKind::symbol && token.text == symbol;
+const Value* Parser::peek_value() {
+    peek();
+    return lookahead_symbol_ ? &lookahead_symbol_->value : nullptr;
 }
 
-bool Parser::accept_symbol(const char* symbol) {
-    if (!peek_symbol(symbol)) return false;
+bool Parser::accept(Symbol symbol) {
+    if (!peek_is(symbol)) return false;
     next();
     return true;
 }
 
-bool Parser::peek_word(const char* word) {
-    const Token& token = peek();
-    return token.kind == TokenKind::identifier && token.text == word;
-}
-
-bool Parser::accept_word(const char* word) {
-    if (!peek_word(word)) return false;
+bool Parser::accept(Keyword keyword) {
+    if (!peek_is(keyword)) return false;
     next();
     return true;
 }
 
-Token Parser::expect_symbol(const char* symbol, const std::string& purpose) {
-    if (!peek_symbol(symbol)) fail_expected(fmt::format("'{}' {}", symbol, purpose), peek());
+Token Parser::expect(Symbol symbol, const std::string& purpose) {
+    if (!peek_is(symbol)) fail_expected(fmt::format("'{}' {}", symbol_text(symbol), purpose), peek());
+    return next();
+}
+
+Token Parser::expect(Keyword keyword, const std::string& purpose) {
+    if (!peek_is(keyword)) fail_expected(fmt::format("'{}' {}", names_.text(id_of(keyword)), purpose), peek());
     return next();
 }
 
 Token Parser::expect_open(const Token& keyword) {
-    return expect_symbol("{", fmt::format("after '{}'", keyword.text));
+    const Token open = expect(Symbol::lbrace, fmt::format("after '{}'", word(keyword)));
+    if (++nesting_ > options_.max_nesting)
+        fail(open, fmt::format("nesting limit: more than {} blocks, calls and parentheses in progress "
+                               "(ParseOptions::max_nesting)", options_.max_nesting));
+    return open;
 }
 
 void Parser::expect_close(const Token& keyword, const Token& open) {
-    if (peek_symbol("}")) {
-        next();
-        return;
+    if (!peek_is(Symbol::rbrace))
+        fail_expected(fmt::format("'}}' to close '{}' opened at {}", word(keyword), location_of(open).str()), peek());
+    next();
+    --nesting_;
+}
+
+Parser::Nesting::Nesting(Parser& parser, const Token& at) : parser_(parser) {
+    if (++parser_.nesting_ > parser_.options_.max_nesting)
+        parser_.fail(at, fmt::format("nesting limit: more than {} blocks, calls and parentheses in progress "
+                                     "(ParseOptions::max_nesting)", parser_.options_.max_nesting));
+}
+
+const std::string& Parser::string_literal(const Token& token) const {
+    return files_[token.file].source->strings[token.string];
+}
+
+std::string Parser::describe(const Token& token) const {
+    switch (token.kind) {
+        case TokenKind::word: return fmt::format("'{}'", word(token));
+        case TokenKind::number: return fmt::format("number {}", token.number);
+        case TokenKind::string: return fmt::format("string \"{}\"", string_literal(token));
+        case TokenKind::symbol: return fmt::format("'{}'", symbol_text(token.symbol));
+        case TokenKind::directive: return fmt::format("'#{}'", word(token));
+        case TokenKind::end: return "end of file";
     }
-    fail_expected(fmt::format("'}}' to close '{}' opened at {}", keyword.text, location_of(open).str()), peek());
+    return "?";
 }
 
 SourceLocation Parser::location_of(const Token& token) const {
-    return {files_[token.file].path, token.line, token.column};
+    return {files_[token.file].source->path, token.line, token.column};
 }
 
 void Parser::fail(const Token& at, const std::string& what) const {
     std::string chain;
     for (int file = at.file; files_[file].included; file = files_[file].included_at.file)
         chain += fmt::format(" (included from {})", location_of(files_[file].included_at).str());
+    // Macro calls in progress, innermost first, so an error in a library macro names the call.
+    for (auto block = blocks_.rbegin(); block != blocks_.rend(); ++block)
+        if (block->kind == Block::Kind::macro_body)
+            chain += fmt::format(" (in macro {} called at {})", word(block->opened), location_of(block->opened).str());
     throw SceneError(what, location_of(at), chain);
 }
 
@@ -130,15 +217,19 @@ void Parser::fail_not_supported(const Token& at, const std::string& feature) con
     fail(at, fmt::format("not supported: {}", feature));
 }
 
-void Parser::fail_identifier(const Token& at, const std::string& expected) const {
-    if (at.kind == TokenKind::identifier) {
-        if (const Value* value = lookup(at.text))
-            fail(at, fmt::format("wrong type: '{}' is {}, expected {}", at.text, type_name(*value), expected));
-        if (is_pov_keyword(at.text) && !is_subset_keyword(at.text)) fail_not_supported(at, fmt::format("'{}'", at.text));
-        if (is_pov_keyword(at.text)) fail_expected(expected, at);
-        fail(at, fmt::format("unknown identifier '{}' (expected {})", at.text, expected));
+void Parser::fail_identifier(const Token& at, const std::string& expected) {
+    if (at.kind == TokenKind::word && !is_keyword(at.name)) {
+        if (const SymbolRef symbol = lookup(at.name))
+            fail(at, fmt::format("wrong type: '{}' is {}, expected {}", word(at), type_name(symbol->value), expected));
+        fail(at, fmt::format("unknown identifier '{}' (expected {})", word(at), expected));
     }
     fail_expected(expected, at);
+}
+
+void Parser::warn(const Token& at, const std::string& what) {
+    const std::string text = fmt::format("{}: warning: {}\n", location_of(at).str(), what);
+    if (options_.on_message) options_.on_message(MessageStream::warning, text);
+    else std::fputs(text.c_str(), stderr);
 }
 
 }  // namespace rayset::tracer

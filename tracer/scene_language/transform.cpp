@@ -88,6 +88,17 @@ Matrix4 pov_rotation(Vec3 degrees) {
     return rz * ry * rx;
 }
 
+Matrix4 axis_rotation(Vec3 axis, double degrees) {
+    const Vec3 k = normalized(axis);
+    const double angle = degrees * analytic::kPi / 180.0, c = std::cos(angle), s = std::sin(angle);
+    const double kk[3] = {k.x, k.y, k.z};
+    const double cross[3][3] = {{0, -k.z, k.y}, {k.z, 0, -k.x}, {-k.y, k.x, 0}};
+    Matrix4 r;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r(i, j) = (i == j ? c : 0.0) + s * cross[i][j] + (1 - c) * kk[i] * kk[j];
+    return r;
+}
+
 Matrix4 pov_matrix(const std::array<double, 12>& v) {
     Matrix4 r;
     for (int row = 0; row < 4; ++row)

@@ -36,6 +36,9 @@ Matrix4 scaling(Vec3 factors);
 // left-handed frame it turns clockwise when looking down the axis toward the origin
 // (rotate 90*y maps +x to -z and +z to +x).
 Matrix4 pov_rotation(Vec3 degrees);
+// POV-Ray's vaxis_rotate: `degrees` about `axis` (any length), Rodrigues' formula, which
+// agrees with pov_rotation about the coordinate axes.
+Matrix4 axis_rotation(Vec3 axis, double degrees);
 // POV-Ray's `matrix <m00, m01, m02, m10, ..., m32>`: 12 values of a row-vector matrix, the last
 // three the translation (x' = m00 x + m10 y + m20 z + m30).
 Matrix4 pov_matrix(const std::array<double, 12>& values);

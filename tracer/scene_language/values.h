@@ -1,16 +1,18 @@
-// What an identifier can hold while a scene is parsed: numbers (float, vector or colour as
-// POV-Ray's 1..5-term expressions), strings, objects (a tree that becomes instances when it
-// reaches the scene), textures, pigments, finishes, interiors, transforms and cameras.
+// What an identifier can hold while a scene is parsed: POV-Ray's identifier types. Numbers
+// (float, vector or colour as 1..5-term expressions) and strings by value; arrays, macros,
+// functions, splines, open files and every scene item (objects, textures, cameras, ...) by
+// shared pointer, so that a declared item is stored once however often it is used.
 #pragma once
 
 #include <array>
+#include <cstdio>
 #include <memory>
-#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
-#include "tracer/scene_language/scene_description.h"
+#include "tracer/scene_language/lexer.h"
+#include "tracer/scene_language/transform.h"
 
 namespace rayset::tracer {
 
@@ -26,31 +28,108 @@ struct Numeric {
     Vec3 vec3() const { return {v[0], v[1], v[2]}; }
 };
 
+// Scene items, defined by the scene description (scene_description.h and the headers it
+// includes); values hold them by pointer.
 struct ObjectNode;
-using ObjectRef = std::shared_ptr<const ObjectNode>;
+struct Texture;
+struct Pigment;
+struct Normal;
+struct Finish;
+struct Interior;
+struct Media;
+struct TextureAndInterior;
+struct Camera;
+struct Fog;
+struct Rainbow;
+struct SkySphere;
+struct BlendMap;
+struct Pattern;
+class UserFunction;
+struct Spline;
+struct Array;
+struct Macro;
+struct FileHandle;
 
-// An object as written: a shape, a union of children or a light, with its own transform (applied
-// after the children's) and modifiers. Declared objects are shared; `object { ID ... }` copies
-// the node before changing it.
-struct ObjectNode {
-    enum class Kind { shape, union_of, light } kind = Kind::shape;
-    Shape shape;
-    std::vector<ObjectRef> children;
-    LightSource light;  // in the node's own coordinates
-    Matrix4 transform;
-    std::optional<Texture> texture;
-    std::optional<Interior> interior;
-    bool no_shadow = false, no_image = false, no_reflection = false, hollow = false;
-    SourceLocation location;
+// Pattern-based items of the same C++ type are told apart by a tag, as POV-Ray's identifier
+// types tell them apart (a density is a pigment-like pattern, a density_map a pigment_map).
+template <typename T, int Tag>
+struct Tagged {
+    std::shared_ptr<const T> item;
 };
+
+using ObjectRef = std::shared_ptr<const ObjectNode>;
+using TextureRef = std::shared_ptr<const Texture>;
+using PigmentRef = std::shared_ptr<const Pigment>;
+using NormalRef = std::shared_ptr<const Normal>;
+using FinishRef = std::shared_ptr<const Finish>;
+using InteriorRef = std::shared_ptr<const Interior>;
+using MediaRef = std::shared_ptr<const Media>;
+using MaterialRef = std::shared_ptr<const TextureAndInterior>;
+using CameraRef = std::shared_ptr<const Camera>;
+using FogRef = std::shared_ptr<const Fog>;
+using RainbowRef = std::shared_ptr<const Rainbow>;
+using SkySphereRef = std::shared_ptr<const SkySphere>;
+using FunctionRef = std::shared_ptr<const UserFunction>;
+using SplineRef = std::shared_ptr<const Spline>;
+using ArrayRef = std::shared_ptr<Array>;
+using MacroRef = std::shared_ptr<const Macro>;
+using FileRef = std::shared_ptr<FileHandle>;
+using DensityRef = Tagged<Pigment, 0>;
+using ColourMapRef = Tagged<BlendMap, 1>;
+using PigmentMapRef = Tagged<BlendMap, 2>;
+using NormalMapRef = Tagged<BlendMap, 3>;
+using SlopeMapRef = Tagged<BlendMap, 4>;
+using TextureMapRef = Tagged<BlendMap, 5>;
+using DensityMapRef = Tagged<BlendMap, 6>;
 
 struct TransformValue {
     Matrix4 matrix;
 };
 
-using Value = std::variant<Numeric, std::string, ObjectRef, Texture, Pigment, Finish, Interior, TransformValue, Camera>;
+// std::monostate: an array element not yet assigned.
+using Value = std::variant<std::monostate, Numeric, std::string, ArrayRef, MacroRef, FunctionRef, SplineRef,
+                           FileRef, TransformValue, ObjectRef, TextureRef, PigmentRef, NormalRef, FinishRef,
+                           InteriorRef, MediaRef, MaterialRef, CameraRef, FogRef, RainbowRef, SkySphereRef,
+                           DensityRef, ColourMapRef, PigmentMapRef, NormalMapRef, SlopeMapRef, TextureMapRef,
+                           DensityMapRef>;
 
 // "a float", "a vector", "a texture", ... for messages.
 std::string type_name(const Value& value);
+
+// An array of up to five dimensions, stored flat in row-major order. Its elements share one
+// type, fixed by the first element assigned (as in POV-Ray).
+struct Array {
+    std::vector<int> sizes;
+    std::vector<Value> elements;
+    size_t element_type = 0;  // Value::index() of its elements; 0 until one is assigned
+};
+
+// `#macro NAME(PARAMS) BODY #end`: the body's tokens [body_start, body_end) of `file`, the
+// #end at body_end.
+struct Macro {
+    NameId name = 0;
+    std::vector<NameId> parameters;
+    std::shared_ptr<const SourceFile> file;
+    size_t body_start = 0, body_end = 0;
+    Token defined_at;
+};
+
+// A file opened by #fopen.
+struct FileHandle {
+    std::string path;
+    bool writing = false;
+    std::FILE* stream = nullptr;
+    std::shared_ptr<SourceFile> read_tokens;  // read mode: the file's tokens
+    size_t read_position = 0;
+    ~FileHandle();
+};
+
+// What an identifier names: its value, and for `#declare deprecated` the warning to give.
+struct SymbolEntry {
+    Value value;
+    std::string deprecation;  // empty: not deprecated
+    bool warn_once = false, warned = false;
+};
+using SymbolRef = std::shared_ptr<SymbolEntry>;
 
 }  // namespace rayset::tracer

@@ -1,0 +1,61 @@
+// The grammar of POV-Ray's scene items, as free functions over the Parser's public API. Each
+// `parse_X(parser, keyword)` is called with `keyword` just taken and reads the block after it.
+//   grammar_objects.cpp     shapes, CSG, object modifiers, light sources; flattening
+//   grammar_appearance.cpp  texture, pigment, normal, finish, interior, media, material,
+//                           patterns and their maps; #default
+//   grammar_scene.cpp       camera, global_settings, background, atmosphere; ray_source and
+//                           illuminance_receiver
+#pragma once
+
+#include "tracer/scene_language/appearance.h"
+#include "tracer/scene_language/parser.h"
+
+namespace rayset::tracer {
+
+// ---- objects
+bool starts_object(Parser& parser, const Token& token);
+ObjectRef parse_object(Parser& parser);  // the object keyword is the next token
+// Flattens an object tree into the scene's instances and lights.
+void add_to_scene(Parser& parser, const ObjectRef& object);
+// Parse-time geometry of a declared object, for min_extent, max_extent, inside and trace
+// (object space of the tree, its transforms applied). Each returns false when it cannot
+// answer for this kind of object; the caller reports that as not supported.
+bool object_bounding_box(const ObjectNode& object, Vec3& minimum, Vec3& maximum);
+bool object_inside(const ObjectNode& object, Vec3 point, bool& inside);
+bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& hit, Vec3& normal, bool& found);
+
+// ---- appearance
+TextureRef parse_texture(Parser& parser, const Token& keyword);
+PigmentRef parse_pigment(Parser& parser, const Token& keyword);
+NormalRef parse_normal(Parser& parser, const Token& keyword);
+FinishRef parse_finish(Parser& parser, const Token& keyword);
+InteriorRef parse_interior(Parser& parser, const Token& keyword);
+MediaRef parse_media(Parser& parser, const Token& keyword);
+DensityRef parse_density(Parser& parser, const Token& keyword);
+MaterialRef parse_material(Parser& parser, const Token& keyword);
+// After color_map / colour_map, pigment_map, normal_map, slope_map, texture_map, density_map.
+ColourMapRef parse_colour_map(Parser& parser, const Token& keyword);
+PigmentMapRef parse_pigment_map(Parser& parser, const Token& keyword);
+NormalMapRef parse_normal_map(Parser& parser, const Token& keyword);
+SlopeMapRef parse_slope_map(Parser& parser, const Token& keyword);
+TextureMapRef parse_texture_map(Parser& parser, const Token& keyword);
+DensityMapRef parse_density_map(Parser& parser, const Token& keyword);
+void parse_default(Parser& parser, const Token& directive);  // after #default
+// `function { pattern { PATTERN } }`: after `pattern`.
+std::shared_ptr<const Pattern> parse_function_pattern(Parser& parser, const Token& keyword);
+// A pattern's value or a pigment's colour at a point, for pattern and pigment functions;
+// false when it cannot be evaluated (the caller reports that as not supported).
+bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value);
+bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour);
+
+// ---- scene items
+CameraRef parse_camera(Parser& parser, const Token& keyword);
+FogRef parse_fog(Parser& parser, const Token& keyword);
+RainbowRef parse_rainbow(Parser& parser, const Token& keyword);
+SkySphereRef parse_sky_sphere(Parser& parser, const Token& keyword);
+// A top-level statement other than an object (camera, global_settings, background, fog,
+// rainbow, sky_sphere, media, ray_source, illuminance_receiver) whose keyword was just taken,
+// added to the scene; false (nothing read) when `keyword` starts none of them.
+bool parse_scene_statement(Parser& parser, const Token& keyword);
+
+}  // namespace rayset::tracer

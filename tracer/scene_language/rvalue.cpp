@@ -1,0 +1,198 @@
+// What may follow '=' in #declare and #local, or be passed to a macro (POV-Ray's RVALUE):
+// chosen by the first token, as POV-Ray chooses it. Arrays and their initialisers too.
+#include <fmt/format.h>
+
+#include "tracer/scene_language/grammar.h"
+#include "tracer/scene_language/parser.h"
+
+namespace rayset::tracer {
+namespace {
+
+// Arrays are copied whole by #declare B = A (POV-Ray copies every element).
+ArrayRef copy_array(const Array& array) {
+    auto copy = std::make_shared<Array>(array);
+    for (Value& element : copy->elements)
+        if (ArrayRef* inner = std::get_if<ArrayRef>(&element)) *inner = copy_array(**inner);
+    return copy;
+}
+
+}  // namespace
+
+Value Parser::parse_rvalue(const Token& purpose) {
+    const Token token = peek();
+    // Blocks may hold directives as anywhere else; only numbers and strings end at one.
+    const size_t saved_directive_frame = directive_frame_;
+    struct Restore {
+        size_t& frame;
+        size_t saved;
+        ~Restore() { frame = saved; }
+    } restore{directive_frame_, saved_directive_frame};
+    auto block = [&](auto&& parse) -> Value {
+        const Token keyword = next();
+        directive_frame_ = 0;
+        return parse(keyword);
+    };
+
+    if (token.kind == TokenKind::string) return parse_string();
+    if (token.kind == TokenKind::word && is_keyword(token.name)) {
+        if (starts_string(token)) return parse_string();
+        if (starts_object(*this, token)) {
+            directive_frame_ = 0;
+            return parse_object(*this);
+        }
+        switch (static_cast<Keyword>(token.name)) {
+            case Keyword::color: case Keyword::colour: case Keyword::rgb: case Keyword::rgbf: case Keyword::rgbt:
+            case Keyword::rgbft: case Keyword::srgb: case Keyword::srgbf: case Keyword::srgbt: case Keyword::srgbft:
+            case Keyword::red: case Keyword::green: case Keyword::blue: case Keyword::filter:
+            case Keyword::transmit: {
+                const Colour c = parse_colour();
+                return Numeric{{c.red, c.green, c.blue, c.filter, c.transmit}, 5};
+            }
+            case Keyword::array: return block([&](const Token& k) { return parse_array(k); });
+            case Keyword::function: return block([&](const Token& k) { return Value(parse_function(k)); });
+            case Keyword::spline: return block([&](const Token& k) { return Value(parse_spline(k)); });
+            case Keyword::transform:
+                return block([&](const Token& k) { return Value(TransformValue{parse_transform_block(k)}); });
+            case Keyword::texture: return block([&](const Token& k) { return Value(parse_texture(*this, k)); });
+            case Keyword::pigment: return block([&](const Token& k) { return Value(parse_pigment(*this, k)); });
+            case Keyword::normal: return block([&](const Token& k) { return Value(parse_normal(*this, k)); });
+            case Keyword::finish: return block([&](const Token& k) { return Value(parse_finish(*this, k)); });
+            case Keyword::interior: return block([&](const Token& k) { return Value(parse_interior(*this, k)); });
+            case Keyword::media: return block([&](const Token& k) { return Value(parse_media(*this, k)); });
+            case Keyword::density: return block([&](const Token& k) { return Value(parse_density(*this, k)); });
+            case Keyword::material: return block([&](const Token& k) { return Value(parse_material(*this, k)); });
+            case Keyword::color_map:
+            case Keyword::colour_map: return block([&](const Token& k) { return Value(parse_colour_map(*this, k)); });
+            case Keyword::pigment_map: return block([&](const Token& k) { return Value(parse_pigment_map(*this, k)); });
+            case Keyword::normal_map: return block([&](const Token& k) { return Value(parse_normal_map(*this, k)); });
+            case Keyword::slope_map: return block([&](const Token& k) { return Value(parse_slope_map(*this, k)); });
+            case Keyword::texture_map: return block([&](const Token& k) { return Value(parse_texture_map(*this, k)); });
+            case Keyword::density_map: return block([&](const Token& k) { return Value(parse_density_map(*this, k)); });
+            case Keyword::camera: return block([&](const Token& k) { return Value(parse_camera(*this, k)); });
+            case Keyword::fog: return block([&](const Token& k) { return Value(parse_fog(*this, k)); });
+            case Keyword::rainbow: return block([&](const Token& k) { return Value(parse_rainbow(*this, k)); });
+            case Keyword::sky_sphere: return block([&](const Token& k) { return Value(parse_sky_sphere(*this, k)); });
+            default: break;
+        }
+        if (is_numeric_builtin(token.name)) return parse_numeric();
+        fail_not_supported(token, fmt::format("'{}' as a value", word(token)));
+    }
+    if (token.kind == TokenKind::word) {
+        const Value* value = peek_value();
+        if (!value) fail_identifier(token, fmt::format("a value for '{}'", word(purpose)));
+        if (std::holds_alternative<Numeric>(*value)) return parse_numeric();
+        if (std::holds_alternative<std::string>(*value)) return parse_string();
+        const Value held = *value;
+        next();
+        if (const ArrayRef* array = std::get_if<ArrayRef>(&held)) {
+            if (!peek_is(Symbol::lbracket)) return copy_array(**array);
+            Value element = *array_element(token, **array, false);
+            if (std::holds_alternative<Numeric>(element) || std::holds_alternative<FunctionRef>(element) ||
+                std::holds_alternative<SplineRef>(element))
+                return parse_additive_after(parse_term_after(parse_postfix(parse_numeric_identifier(token, element))));
+            return element;
+        }
+        if (std::holds_alternative<FunctionRef>(held) || std::holds_alternative<SplineRef>(held)) {
+            if (!peek_is(Symbol::lparen)) return held;  // the function or spline itself
+            return parse_additive_after(parse_term_after(parse_postfix(parse_numeric_identifier(token, held))));
+        }
+        return held;
+    }
+    if (starts_expression(token)) return parse_numeric();
+    fail_expected(fmt::format("a value for '{}'", word(purpose)), token);
+}
+
+Value Parser::parse_array(const Token& keyword) {
+    auto array = std::make_shared<Array>();
+    long total = 1;
+    while (peek_is(Symbol::lbracket)) {
+        const Token open = next();
+        const Token at = peek();
+        const double size = parse_float("as the size of the array");
+        expect(Symbol::rbracket, fmt::format("to close '[' opened at {}", location_of(open).str()));
+        if (!(size >= 1)) fail(at, fmt::format("an array dimension must be at least 1, found {}", size));
+        if (array->sizes.size() == 5) fail(open, "an array has at most 5 dimensions");
+        if (size > static_cast<double>(options_.max_array_elements) ||
+            total * static_cast<long>(size) > options_.max_array_elements)
+            fail(at, fmt::format("array limit: more than {} elements (ParseOptions::max_array_elements)",
+                                 options_.max_array_elements));
+        array->sizes.push_back(static_cast<int>(size));
+        total *= static_cast<long>(size);
+    }
+    if (array->sizes.empty()) fail_expected("'[' with the size of the array after 'array'", peek());
+    array->elements.resize(static_cast<size_t>(total));
+    check_memory(keyword);
+    if (peek_is(Symbol::lbrace)) {
+        size_t index = 0;
+        parse_array_initialiser(*array, 0, index, keyword);
+    }
+    return array;
+}
+
+void Parser::parse_array_initialiser(Array& array, size_t dimension, size_t& index, const Token& keyword) {
+    const Token open = expect_open(keyword);
+    const int count = array.sizes[dimension];
+    for (int i = 0; i < count; ++i) {
+        if (i > 0) expect(Symbol::comma, fmt::format("between the elements of the array initialiser opened at {} "
+                                                     "({} elements in this dimension)", location_of(open).str(), count));
+        if (peek_is(Symbol::rbrace))
+            fail(peek(), fmt::format("the array initialiser opened at {} has {} element{}, the array {} in this "
+                                     "dimension", location_of(open).str(), i, i == 1 ? "" : "s", count));
+        if (dimension + 1 < array.sizes.size()) {
+            parse_array_initialiser(array, dimension + 1, index, keyword);
+            continue;
+        }
+        const Token at = peek();
+        Value value = parse_rvalue(keyword);
+        if (array.element_type != 0 && value.index() != array.element_type)
+            fail(at, fmt::format("the elements of this array are {}, found {} (an array holds one type)",
+                                 type_name(array.elements[0]), type_name(value)));
+        array.element_type = value.index();
+        array.elements[index++] = std::move(value);
+    }
+    accept_comma();
+    if (!peek_is(Symbol::rbrace))
+        fail_expected(fmt::format("'}}' after the {} elements of the initialiser opened at {}", count,
+                                  location_of(open).str()), peek());
+    expect_close(keyword, open);
+}
+
+std::string type_name(const Value& value) {
+    struct Namer {
+        std::string operator()(const std::monostate&) const { return "nothing (an unassigned array element)"; }
+        std::string operator()(const Numeric& n) const {
+            if (n.terms == 1) return "a float";
+            if (n.terms <= 3) return "a vector";
+            return n.terms == 4 ? "a 4-term vector" : "a colour";
+        }
+        std::string operator()(const std::string&) const { return "a string"; }
+        std::string operator()(const ArrayRef&) const { return "an array"; }
+        std::string operator()(const MacroRef&) const { return "a macro"; }
+        std::string operator()(const FunctionRef&) const { return "a function"; }
+        std::string operator()(const SplineRef&) const { return "a spline"; }
+        std::string operator()(const FileRef&) const { return "a file handle"; }
+        std::string operator()(const TransformValue&) const { return "a transform"; }
+        std::string operator()(const ObjectRef&) const { return "an object"; }
+        std::string operator()(const TextureRef&) const { return "a texture"; }
+        std::string operator()(const PigmentRef&) const { return "a pigment"; }
+        std::string operator()(const NormalRef&) const { return "a normal"; }
+        std::string operator()(const FinishRef&) const { return "a finish"; }
+        std::string operator()(const InteriorRef&) const { return "an interior"; }
+        std::string operator()(const MediaRef&) const { return "a media"; }
+        std::string operator()(const MaterialRef&) const { return "a material"; }
+        std::string operator()(const CameraRef&) const { return "a camera"; }
+        std::string operator()(const FogRef&) const { return "a fog"; }
+        std::string operator()(const RainbowRef&) const { return "a rainbow"; }
+        std::string operator()(const SkySphereRef&) const { return "a sky_sphere"; }
+        std::string operator()(const DensityRef&) const { return "a density"; }
+        std::string operator()(const ColourMapRef&) const { return "a color_map"; }
+        std::string operator()(const PigmentMapRef&) const { return "a pigment_map"; }
+        std::string operator()(const NormalMapRef&) const { return "a normal_map"; }
+        std::string operator()(const SlopeMapRef&) const { return "a slope_map"; }
+        std::string operator()(const TextureMapRef&) const { return "a texture_map"; }
+        std::string operator()(const DensityMapRef&) const { return "a density_map"; }
+    };
+    return std::visit(Namer{}, value);
+}
+
+}  // namespace rayset::tracer
