@@ -104,17 +104,17 @@ TEST(SceneLanguageCornell, ParsesWithTheValuesItsTextGives) {
     expect_vec(box.minimum, {21.3, 54.87, 22.7});
     expect_vec(box.maximum, {34.3, 54.88, 33.2});
     EXPECT_TRUE(patch.no_shadow);
-    ASSERT_TRUE(patch.textured);
-    EXPECT_DOUBLE_EQ(patch.texture.finish.ambient.red, 0.78);
-    EXPECT_DOUBLE_EQ(patch.texture.finish.diffuse, 0);
-    EXPECT_DOUBLE_EQ(patch.texture.pigment.colour.green, 1);
+    ASSERT_TRUE(patch.appearance.texture);
+    EXPECT_DOUBLE_EQ(patch.appearance.texture->finish.ambient.red, 0.78);
+    EXPECT_DOUBLE_EQ(patch.appearance.texture->finish.diffuse, 0);
+    EXPECT_DOUBLE_EQ(patch.appearance.texture->pigment.colour.green, 1);
 
     // Red wall (objects 9, 10): texture Red = pigment <0.57,0.025,0.025>, finish diffuse 0.75 ambient 0.
     const ObjectInstance& red = s.objects[9];
-    EXPECT_DOUBLE_EQ(red.texture.pigment.colour.red, 0.57);
-    EXPECT_DOUBLE_EQ(red.texture.pigment.colour.green, 0.025);
-    EXPECT_DOUBLE_EQ(red.texture.finish.diffuse, 0.75);
-    EXPECT_DOUBLE_EQ(red.texture.finish.ambient.red, 0);
+    EXPECT_DOUBLE_EQ(red.appearance.texture->pigment.colour.red, 0.57);
+    EXPECT_DOUBLE_EQ(red.appearance.texture->pigment.colour.green, 0.025);
+    EXPECT_DOUBLE_EQ(red.appearance.texture->finish.diffuse, 0.75);
+    EXPECT_DOUBLE_EQ(red.appearance.texture->finish.ambient.red, 0);
     EXPECT_FALSE(red.no_shadow);
 
     // The tall block's second triangle writes "<47.20 33.00 40.60>" without commas.
@@ -313,9 +313,9 @@ TEST(SceneLanguageDirectives, DeclaresEveryKindOfValue) {
     )");
     ASSERT_EQ(s.objects.size(), 1u);
     const ObjectInstance& o = s.objects[0];
-    EXPECT_DOUBLE_EQ(o.texture.pigment.colour.red, 1);
-    EXPECT_DOUBLE_EQ(o.texture.pigment.colour.filter, 0.5);
-    const Finish& f = o.texture.finish;
+    EXPECT_DOUBLE_EQ(o.appearance.texture->pigment.colour.red, 1);
+    EXPECT_DOUBLE_EQ(o.appearance.texture->pigment.colour.filter, 0.5);
+    const Finish& f = o.appearance.texture->finish;
     EXPECT_DOUBLE_EQ(f.diffuse, 0.5);
     EXPECT_DOUBLE_EQ(f.specular, 0.25);
     EXPECT_DOUBLE_EQ(f.roughness, 0.01);
@@ -329,8 +329,8 @@ TEST(SceneLanguageDirectives, DeclaresEveryKindOfValue) {
     EXPECT_DOUBLE_EQ(f.emission.green, 0.2);
     EXPECT_DOUBLE_EQ(f.ambient.green, 0.1);
     EXPECT_DOUBLE_EQ(f.ambient.red, 0);
-    ASSERT_TRUE(o.has_interior);
-    EXPECT_DOUBLE_EQ(o.interior.ior, 1.5);
+    ASSERT_TRUE(o.appearance.interior);
+    EXPECT_DOUBLE_EQ(o.appearance.interior->ior, 1.5);
     ASSERT_EQ(s.lights.size(), 1u);
     expect_vec(s.lights[0].position, {2, 2, 3});
     expect_vec(s.camera.location, {0, 1, -5});
@@ -417,13 +417,13 @@ TEST(SceneLanguageObjects, TexturesInheritThroughUnionsAndFlagsPropagate) {
         sphere { 0, 3 hollow off }
     )");
     ASSERT_EQ(s.objects.size(), 3u);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.pigment.colour.red, 1);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.finish.diffuse, 0.9);
-    EXPECT_DOUBLE_EQ(s.objects[1].texture.pigment.colour.green, 1);  // its own texture wins
-    EXPECT_DOUBLE_EQ(s.objects[1].texture.finish.diffuse, 0.6);      // with POV-Ray's default finish
+    EXPECT_DOUBLE_EQ(s.objects[0].appearance.texture->pigment.colour.red, 1);
+    EXPECT_DOUBLE_EQ(s.objects[0].appearance.texture->finish.diffuse, 0.9);
+    EXPECT_DOUBLE_EQ(s.objects[1].appearance.texture->pigment.colour.green, 1);  // its own texture wins
+    EXPECT_DOUBLE_EQ(s.objects[1].appearance.texture->finish.diffuse, 0.6);      // with POV-Ray's default finish
     EXPECT_TRUE(s.objects[0].no_shadow);
     EXPECT_TRUE(s.objects[1].no_shadow);
-    EXPECT_FALSE(s.objects[2].textured);
+    EXPECT_FALSE(s.objects[2].appearance.texture);
     EXPECT_FALSE(s.objects[2].hollow);
     ASSERT_EQ(s.lights.size(), 1u);
     expect_vec(s.lights[0].position, {0, 1, 10});  // a light in a union moves with it

@@ -128,7 +128,7 @@ TEST(RenderCornell, FramingAgreesWithPovRay) {
     int agree = 0;
     for (int i = 0; i < width * height; ++i) {
         Rgb ours{};
-        if (ids[i] >= 0) ours = scene.description().objects[ids[i]].texture.pigment.colour.rgb();
+        if (ids[i] >= 0) ours = scene.description().objects[ids[i]].appearance.texture->pigment.colour.rgb();
         const bool same = std::lround(255 * ours.red) == reference[3 * i] &&
                           std::lround(255 * ours.green) == reference[3 * i + 1] &&
                           std::lround(255 * ours.blue) == reference[3 * i + 2];

@@ -39,14 +39,14 @@ void conserve_energy(Material& m) {
 
 Material material_from_pov(const ObjectInstance& object, double emission_scale) {
     Material m;
-    if (!object.textured) return m;  // POV-Ray renders an untextured object black
-    const Colour& c = object.texture.pigment.colour;
-    const Finish& f = object.texture.finish;
+    if (!object.appearance.texture) return m;  // POV-Ray renders an untextured object black
+    const Colour& c = object.appearance.texture->pigment.colour;
+    const Finish& f = object.appearance.texture->finish;
     const Rgb pigment = clamp01(c.rgb());
     const double opacity = std::max(0.0, 1 - c.filter - c.transmit);
     m.diffuse = (opacity * f.diffuse) * pigment;
     m.transmission = clamp01(c.filter * pigment + Rgb{c.transmit, c.transmit, c.transmit});
-    m.ior = object.has_interior ? object.interior.ior : 1.0;
+    m.ior = object.appearance.interior ? object.appearance.interior->ior : 1.0;
 
     // POV-Ray's `specular` is a Blinn highlight of exponent 1/roughness; a Phong lobe about the
     // mirror direction with a quarter of that exponent has nearly the same width.

@@ -53,6 +53,14 @@ struct Interior {
     double ior = 1.0;
 };
 
+// What an object's own modifiers say about its appearance (texture, pigment, normal, finish,
+// interior, material ...), and, once the tree is flattened, what it ends up with: its own, else
+// the nearest enclosing union's (inherit_appearance).
+struct ObjectAppearance {
+    TextureRef texture;    // null: none (POV-Ray renders such an object black)
+    InteriorRef interior;  // null: none
+};
+
 // POV-Ray's `material { texture interior }`.
 struct TextureAndInterior {
     TextureRef texture;

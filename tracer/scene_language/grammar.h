@@ -25,6 +25,11 @@ bool object_inside(const ObjectNode& object, Vec3 point, bool& inside);
 bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& hit, Vec3& normal, bool& found);
 
 // ---- appearance
+// An object modifier about appearance (texture, pigment, normal, finish, interior, material,
+// ...), read into `appearance`; false (nothing read) when the next token starts none.
+bool parse_appearance_modifier(Parser& parser, ObjectAppearance& appearance);
+// What an object inside a union ends up with: what it lacks, the union's.
+void inherit_appearance(ObjectAppearance& inner, const ObjectAppearance& outer);
 TextureRef parse_texture(Parser& parser, const Token& keyword);
 PigmentRef parse_pigment(Parser& parser, const Token& keyword);
 NormalRef parse_normal(Parser& parser, const Token& keyword);

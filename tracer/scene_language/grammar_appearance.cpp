@@ -105,6 +105,41 @@ void parse_finish_body(Parser& p, Finish& finish, const Token& keyword, const To
 
 }  // namespace
 
+bool parse_appearance_modifier(Parser& p, ObjectAppearance& appearance) {
+    const Token keyword = p.peek();
+    auto texture_to_modify = [&]() -> Texture& {
+        auto texture = std::make_shared<Texture>(appearance.texture ? *appearance.texture
+                                                 : p.default_texture  ? *p.default_texture
+                                                                      : Texture{});
+        appearance.texture = texture;
+        return *texture;
+    };
+    if (keyword.is(Keyword::texture)) {
+        if (appearance.texture) p.fail_not_supported(keyword, "layered textures (a second texture on one object)");
+        p.next();
+        appearance.texture = parse_texture(p, keyword);
+    } else if (keyword.is(Keyword::pigment)) {
+        p.next();
+        const PigmentRef pigment = parse_pigment(p, keyword);
+        texture_to_modify().pigment = *pigment;
+    } else if (keyword.is(Keyword::finish)) {
+        p.next();
+        const FinishRef finish = parse_finish(p, keyword);
+        texture_to_modify().finish = *finish;
+    } else if (keyword.is(Keyword::interior)) {
+        p.next();
+        appearance.interior = parse_interior(p, keyword);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+void inherit_appearance(ObjectAppearance& inner, const ObjectAppearance& outer) {
+    if (!inner.texture) inner.texture = outer.texture;
+    if (!inner.interior) inner.interior = outer.interior;
+}
+
 TextureRef parse_texture(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto texture = std::make_shared<Texture>(p.default_texture ? *p.default_texture : Texture{});

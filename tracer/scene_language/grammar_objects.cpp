@@ -292,27 +292,8 @@ bool parse_light_modifier(Parser& p, LightSource& light) {
 bool parse_object_modifier(Parser& p, ObjectNode& node) {
     if (p.parse_transform_item(node.transform)) return true;
     const Token keyword = p.peek();
-    auto texture_to_modify = [&]() -> Texture& {
-        auto texture = std::make_shared<Texture>(node.texture ? *node.texture : Texture{});
-        node.texture = texture;
-        return *texture;
-    };
-    if (keyword.is(Keyword::texture)) {
-        if (node.texture) p.fail_not_supported(keyword, "layered textures (a second texture on one object)");
-        p.next();
-        node.texture = parse_texture(p, keyword);
-    } else if (keyword.is(Keyword::pigment)) {
-        p.next();
-        const PigmentRef pigment = parse_pigment(p, keyword);
-        texture_to_modify().pigment = *pigment;
-    } else if (keyword.is(Keyword::finish)) {
-        p.next();
-        const FinishRef finish = parse_finish(p, keyword);
-        texture_to_modify().finish = *finish;
-    } else if (keyword.is(Keyword::interior)) {
-        p.next();
-        node.interior = parse_interior(p, keyword);
-    } else if (keyword.is(Keyword::normal)) {
+    if (parse_appearance_modifier(p, node.appearance)) return true;
+    if (keyword.is(Keyword::normal)) {
         p.fail_not_supported(keyword, "normal (bump) patterns");
     } else if (keyword.is(Keyword::no_shadow)) {
         p.next();
@@ -344,16 +325,15 @@ void parse_object_modifiers(Parser& p, ObjectNode& node, const Token& keyword, c
 
 struct Inherited {
     Matrix4 to_world;
-    const Texture* texture = nullptr;
-    const Interior* interior = nullptr;
+    ObjectAppearance appearance;
     bool no_shadow = false, no_image = false, no_reflection = false, hollow = false;
 };
 
 void flatten(SceneDescription& scene, const ObjectNode& node, const Inherited& parent) {
     Inherited here = parent;
     here.to_world = parent.to_world * node.transform;
-    if (node.texture) here.texture = node.texture.get();
-    if (node.interior) here.interior = node.interior.get();
+    here.appearance = node.appearance;
+    inherit_appearance(here.appearance, parent.appearance);
     here.no_shadow = parent.no_shadow || node.no_shadow;
     here.no_image = parent.no_image || node.no_image;
     here.no_reflection = parent.no_reflection || node.no_reflection;
@@ -376,10 +356,7 @@ void flatten(SceneDescription& scene, const ObjectNode& node, const Inherited& p
             ObjectInstance instance;
             instance.shape = node.shape;
             instance.object_to_world = here.to_world;
-            instance.textured = here.texture != nullptr;
-            if (here.texture) instance.texture = *here.texture;
-            instance.has_interior = here.interior != nullptr;
-            if (here.interior) instance.interior = *here.interior;
+            instance.appearance = here.appearance;
             instance.no_shadow = here.no_shadow;
             instance.no_image = here.no_image;
             instance.no_reflection = here.no_reflection;

@@ -18,8 +18,7 @@ struct ObjectNode {
     std::vector<ObjectRef> children;
     LightSource light;  // in the node's own coordinates
     Matrix4 transform;
-    TextureRef texture;    // null: none given here
-    InteriorRef interior;  // null: none given here
+    ObjectAppearance appearance;  // what this node's own modifiers give
     bool no_shadow = false, no_image = false, no_reflection = false, hollow = false;
     SourceLocation location;
 };

@@ -51,10 +51,7 @@ using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, Mes
 struct ObjectInstance {
     Shape shape;                 // in object coordinates
     Matrix4 object_to_world;     // every transform of the object and its enclosing unions
-    bool textured = false;       // false: no texture anywhere up the tree (POV-Ray: black)
-    Texture texture;
-    bool has_interior = false;
-    Interior interior;
+    ObjectAppearance appearance;  // its own, else inherited from its unions
     bool no_shadow = false, no_image = false, no_reflection = false, hollow = false;
     SourceLocation location;     // where the shape's keyword is
 };
