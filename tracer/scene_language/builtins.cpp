@@ -288,11 +288,18 @@ Numeric Parser::parse_builtin_numeric(const Token& name) {
         }
         case Keyword::dimensions:
         case Keyword::dimension_size: {
+            // An array identifier, or an element of an array of arrays.
             const Token at = peek();
             const ArrayRef* array = peek_declared<ArrayRef>();
             if (!array) fail_identifier(at, fmt::format("an array identifier in '{}'", word(name)));
-            const ArrayRef held = *array;
+            ArrayRef held = *array;
             next();
+            while (peek_is(Symbol::lbracket)) {
+                const Value element = *array_element(at, *held, false);
+                if (!std::holds_alternative<ArrayRef>(element))
+                    fail(at, fmt::format("'{}': the element is {}, not an array", word(name), type_name(element)));
+                held = std::get<ArrayRef>(element);
+            }
             if (k == Keyword::dimensions) {
                 close();
                 return Numeric::scalar(static_cast<double>(held->sizes.size()));

@@ -75,16 +75,6 @@ void Parser::run_directive(const Token& directive) {
     fail(directive, fmt::format("unknown directive '#{}'", word(directive)));
 }
 
-namespace {
-
-std::string element_type_name(const Array& array) {
-    for (const Value& element : array.elements)
-        if (!std::holds_alternative<std::monostate>(element)) return type_name(element);
-    return "unassigned";
-}
-
-}  // namespace
-
 void Parser::directive_declare(const Token& directive, bool local) {
     const char* what = local ? "local" : "declare";
     // #declare deprecated [once] ["message"] NAME = ...
@@ -101,10 +91,11 @@ void Parser::directive_declare(const Token& directive, bool local) {
     check_declarable(name, name.name, what);
     if (deprecated && deprecation.empty())
         deprecation = fmt::format("identifier {} was declared deprecated", word(name));
-    auto expect_semicolon = [&](const Value& value) {
-        // POV-Ray 3.5 and later require ';' after floats, vectors and colours; it is optional
-        // after anything else.
-        if (std::holds_alternative<Numeric>(value) && version_ >= 3.5 && !peek_is(Symbol::semicolon))
+    // POV-Ray 3.5 and later require ';' after floats, vectors and colours; it is optional after
+    // anything else. The value is assigned before the ';' is looked for: the token after the
+    // declaration may be a macro call that uses it.
+    auto expect_semicolon = [&](bool numeric) {
+        if (numeric && version_ >= 3.5 && !peek_is(Symbol::semicolon))
             fail_expected(fmt::format("';' after the value of #{} {} (POV-Ray requires it after floats, "
                                       "vectors and colours)", what, word(name)), peek());
         accept(Symbol::semicolon);
@@ -118,18 +109,18 @@ void Parser::directive_declare(const Token& directive, bool local) {
         expect(Symbol::equals, fmt::format("after #{} {}[...]", what, word(name)));
         const Token start = peek();
         Value value = parse_rvalue(name);
-        if (array->element_type != 0 && value.index() != array->element_type)
-            fail(start, fmt::format("the elements of '{}' are {}, found {} (an array holds one type)", word(name),
-                                    element_type_name(*array), type_name(value)));
-        expect_semicolon(value);
-        array->element_type = value.index();
-        *slot = std::move(value);
+        if (const std::string why = array->mismatch(value); !why.empty())
+            fail(start, fmt::format("the elements of '{}' are {} (an array holds one type)", word(name), why));
+        const bool numeric = std::holds_alternative<Numeric>(value);
+        array->assign(static_cast<size_t>(slot - array->elements.data()), std::move(value));
+        expect_semicolon(numeric);
         return;
     }
     expect(Symbol::equals, fmt::format("after #{} {}", what, word(name)));
     Value value = parse_rvalue(name);
-    expect_semicolon(value);
+    const bool numeric = std::holds_alternative<Numeric>(value);
     assign(name, name.name, std::move(value), local, deprecation, warn_once);
+    expect_semicolon(numeric);
 }
 
 double Parser::parse_condition(const Token& directive) {

@@ -55,6 +55,7 @@ double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c 
 
 }  // namespace
 
+
 Numeric Numeric::promoted(int to_terms) const {
     if (terms >= to_terms) return *this;
     Numeric r = *this;
@@ -85,16 +86,29 @@ bool Parser::starts_expression(const Token& token) {
     }
 }
 
-Numeric Parser::parse_expression() {
-    const Token start = peek();
+Numeric as_stored(Numeric value) {
+    if (value.terms == 5)
+        for (double& term : value.v) term = static_cast<double>(static_cast<float>(term));
+    return value;
+}
+
+Value as_stored(Value value) {
+    if (Numeric* n = std::get_if<Numeric>(&value)) *n = as_stored(*n);
+    return value;
+}
+
+Numeric Parser::parse_expression() { return parse_conditional(); }
+
+Numeric Parser::parse_numeric() { return parse_additive_after(parse_term()); }
+
+Numeric Parser::parse_conditional() {
     Numeric condition = parse_logical();
     if (!peek_is(Symbol::question)) return condition;
     const Token question = next();
     if (condition.terms != 1) fail(question, "the condition before '?' must be a float, found a vector");
-    Numeric if_true = parse_expression();
+    Numeric if_true = parse_conditional();
     expect(Symbol::colon, fmt::format("in 'condition ? a : b' (the '?' is at {})", location_of(question).str()));
-    Numeric if_false = parse_expression();
-    (void)start;
+    Numeric if_false = parse_conditional();
     return truth(condition.v[0]) ? if_true : if_false;
 }
 
@@ -132,16 +146,15 @@ Numeric Parser::parse_relational() {
         const int order = left.compare(right);
         return Numeric::scalar(compare(order < 0 ? -1.0 : order > 0 ? 1.0 : 0.0, 0.0));
     }
-    Numeric result = parse_numeric();
+    Numeric result = parse_additive_after(parse_term());
     for (;;) {
         const Compare compare = comparison(peek());
         if (!compare) return result;
         next();
-        result = combine(result, parse_numeric(), compare);
+        result = combine(result, parse_additive_after(parse_term()), compare);
     }
 }
 
-Numeric Parser::parse_numeric() { return parse_additive_after(parse_term()); }
 
 Numeric Parser::parse_additive_after(Numeric result) {
     for (;;) {
@@ -196,7 +209,7 @@ Numeric Parser::parse_primary() {
     }
     if (token.is(Symbol::lparen)) {
         next();
-        const Numeric inner = parse_expression();
+        const Numeric inner = parse_conditional();
         expect(Symbol::rparen, fmt::format("to close '(' opened at {}", location_of(token).str()));
         return parse_postfix(inner);
     }
@@ -374,6 +387,7 @@ Colour Parser::parse_colour() {
         if (keyword) fail_expected("a colour after 'color'", peek());
         fail_identifier(start, "a colour");
     }
+    c = as_stored(c);
     return {c.v[0], c.v[1], c.v[2], c.v[3], c.v[4]};
 }
 

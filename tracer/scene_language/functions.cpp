@@ -96,7 +96,6 @@ double UserFunction::run(const Instruction* begin, const Instruction* end, const
             case Op::parameter: stack[top++] = parameters[in->index]; break;
             case Op::local: stack[top++] = locals[in->index]; break;
             case Op::negate: stack[top - 1] = -stack[top - 1]; break;
-            case Op::logical_not: stack[top - 1] = truth(stack[top - 1]) ? 0.0 : 1.0; break;
             case Op::add: --top, stack[top - 1] += stack[top]; break;
             case Op::subtract: --top, stack[top - 1] -= stack[top]; break;
             case Op::multiply: --top, stack[top - 1] *= stack[top]; break;
@@ -216,7 +215,7 @@ private:
         // Stack depth bookkeeping for the depth check.
         switch (op) {
             case Op::constant: case Op::parameter: case Op::local: ++depth_; break;
-            case Op::negate: case Op::logical_not: break;
+            case Op::negate: break;
             case Op::call_builtin: case Op::call_function: depth_ -= argument_count - 1; break;
             case Op::select3: depth_ -= 2; break;
             case Op::select4: depth_ -= 3; break;
@@ -274,8 +273,7 @@ private:
     }
     void unary() {
         if (p_.accept(Symbol::minus)) return unary(), emit(Op::negate);
-        if (p_.accept(Symbol::plus)) return unary();
-        if (p_.accept(Symbol::bang)) return unary(), emit(Op::logical_not);
+        if (p_.accept(Symbol::plus)) return unary();  // no '!' in function syntax (as in POV-Ray)
         primary();
     }
 
@@ -450,8 +448,11 @@ FunctionRef Parser::parse_function(const Token& keyword) {
         explicit_parameters = true;
         parameters.clear();
         do {
+            // An identifier, or x, y, z, u, v (POV-Ray refuses other reserved words here).
             const Token name = next();
-            if (name.kind != TokenKind::word) fail_expected("a parameter name", name);
+            const bool axis = name.is(Keyword::x) || name.is(Keyword::y) || name.is(Keyword::z) ||
+                              name.is(Keyword::u) || name.is(Keyword::v);
+            if (!name.is_identifier() && !axis) fail_expected("a parameter name (an identifier, or x, y, z, u, v)", name);
             for (NameId earlier : parameters)
                 if (earlier == name.name) fail(name, fmt::format("parameter '{}' appears twice", word(name)));
             parameters.push_back(name.name);

@@ -39,7 +39,7 @@ public:
 
     // The stack machine's instructions (public for the compiler in functions.cpp).
     enum class Op : uint8_t {
-        constant, parameter, local, negate, logical_not, add, subtract, multiply, divide, less, less_equal,
+        constant, parameter, local, negate, add, subtract, multiply, divide, less, less_equal,
         equal, not_equal, greater_equal, greater, logical_and, logical_or, call_builtin, call_function,
         select3, select4, sum, product
     };

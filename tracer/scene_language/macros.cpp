@@ -68,7 +68,7 @@ void Parser::invoke_macro(const Token& name, const MacroRef& macro) {
             }
         }
         auto entry = std::make_shared<SymbolEntry>();
-        entry->value = parse_rvalue(name);
+        entry->value = as_stored(parse_rvalue(name));
         parameters[macro->parameters[i]] = std::move(entry);
     }
     if (!peek_is(Symbol::rparen))

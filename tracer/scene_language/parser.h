@@ -203,6 +203,7 @@ private:
     Value* array_element(const Token& at, Array& array, bool for_assignment);
 
     // ---------------------------------------------------------------- expressions
+    Numeric parse_conditional();  // the full grammar, without the rounding of parse_expression
     Numeric parse_logical();
     Numeric parse_relational();
     Numeric parse_term();

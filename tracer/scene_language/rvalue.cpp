@@ -48,7 +48,12 @@ Value Parser::parse_rvalue(const Token& purpose) {
                 const Colour c = parse_colour();
                 return Numeric{{c.red, c.green, c.blue, c.filter, c.transmit}, 5};
             }
-            case Keyword::array: return block([&](const Token& k) { return parse_array(k); });
+            case Keyword::array:
+                // Not a block: what follows its sizes is looked at, and a directive there must
+                // wait until the array is declared (arrays.inc writes `#local A = array[N]`
+                // followed by directives that use A).
+                next();
+                return parse_array(token);
             case Keyword::function: return block([&](const Token& k) { return Value(parse_function(k)); });
             case Keyword::spline: return block([&](const Token& k) { return Value(parse_spline(k)); });
             case Keyword::transform:
@@ -102,6 +107,22 @@ Value Parser::parse_rvalue(const Token& purpose) {
     fail_expected(fmt::format("a value for '{}'", word(purpose)), token);
 }
 
+std::string Array::mismatch(const Value& value) const {
+    if (element_type == 0) return "";
+    const Numeric* n = std::get_if<Numeric>(&value);
+    if (value.index() == element_type && (!n || n->terms == element_terms)) return "";
+    for (const Value& element : elements)
+        if (!std::holds_alternative<std::monostate>(element))
+            return fmt::format("{}, found {}", type_name(element), type_name(value));
+    return fmt::format("of one type, found {}", type_name(value));
+}
+
+void Array::assign(size_t index, Value value) {
+    element_type = value.index();
+    if (const Numeric* n = std::get_if<Numeric>(&value)) element_terms = n->terms;
+    elements[index] = as_stored(std::move(value));
+}
+
 Value Parser::parse_array(const Token& keyword) {
     auto array = std::make_shared<Array>();
     long total = 1;
@@ -144,11 +165,9 @@ void Parser::parse_array_initialiser(Array& array, size_t dimension, size_t& ind
         }
         const Token at = peek();
         Value value = parse_rvalue(keyword);
-        if (array.element_type != 0 && value.index() != array.element_type)
-            fail(at, fmt::format("the elements of this array are {}, found {} (an array holds one type)",
-                                 type_name(array.elements[0]), type_name(value)));
-        array.element_type = value.index();
-        array.elements[index++] = std::move(value);
+        if (const std::string why = array.mismatch(value); !why.empty())
+            fail(at, fmt::format("the elements of this array are {} (an array holds one type)", why));
+        array.assign(index++, std::move(value));
     }
     accept_comma();
     if (!peek_is(Symbol::rbrace))

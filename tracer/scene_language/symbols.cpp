@@ -36,12 +36,12 @@ void Parser::assign(const Token& at, NameId name, Value value, bool local, const
         if (std::holds_alternative<FunctionRef>(existing->value) && std::holds_alternative<FunctionRef>(value))
             fail(at, fmt::format("'{}' is already a function: #undef it before declaring it again (as POV-Ray requires)",
                                  names_.text(name)));
-        existing->value = std::move(value);
+        existing->value = as_stored(std::move(value));
         if (!deprecation.empty()) existing->deprecation = deprecation, existing->warn_once = warn_once;
         return;
     }
     auto entry = std::make_shared<SymbolEntry>();
-    entry->value = std::move(value);
+    entry->value = as_stored(std::move(value));
     entry->deprecation = deprecation;
     entry->warn_once = warn_once;
     (local ? scopes_.back() : scopes_.front())[name] = std::move(entry);

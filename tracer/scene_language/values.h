@@ -28,6 +28,11 @@ struct Numeric {
     Vec3 vec3() const { return {v[0], v[1], v[2]}; }
 };
 
+// POV-Ray keeps values of five terms (colours) in single precision wherever it stores them (an
+// identifier, a macro parameter, an array element, a pigment): such a value as stored, rounded
+// to float term by term. Values inside an expression stay in double precision.
+Numeric as_stored(Numeric value);
+
 // Scene items, defined by the scene description (scene_description.h and the headers it
 // includes); values hold them by pointer.
 struct ObjectNode;
@@ -93,6 +98,9 @@ using Value = std::variant<std::monostate, Numeric, std::string, ArrayRef, Macro
                            DensityRef, ColourMapRef, PigmentMapRef, NormalMapRef, SlopeMapRef, TextureMapRef,
                            DensityMapRef>;
 
+// An identifier's value as stored (as_stored for numbers).
+Value as_stored(Value value);
+
 // "a float", "a vector", "a texture", ... for messages.
 std::string type_name(const Value& value);
 
@@ -102,6 +110,12 @@ struct Array {
     std::vector<int> sizes;
     std::vector<Value> elements;
     size_t element_type = 0;  // Value::index() of its elements; 0 until one is assigned
+    int element_terms = 0;    // numbers: 1 float, 2 to 4 vector, 5 colour (each its own type)
+
+    // Why `value` cannot be an element of this array ("colours, found a float"), or "" if it can.
+    std::string mismatch(const Value& value) const;
+    // Element `index` becomes `value` (as stored); the first assignment fixes the type.
+    void assign(size_t index, Value value);
 };
 
 // `#macro NAME(PARAMS) BODY #end`: the body's tokens [body_start, body_end) of `file`, the

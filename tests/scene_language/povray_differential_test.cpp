@@ -1,0 +1,139 @@
+// The scene language against POV-Ray itself: each file in povray/ prints values with #debug
+// (expressions, strings, random sequences, macros and directives, arrays, splines, functions,
+// the macros of the standard include files); POV-Ray 3.7 (Debian's `povray`) and our parser
+// read it, and every line must agree: the same text, and every number equal to the precision
+// POV-Ray printed it with (one unit in the last printed digit, for a rounding that falls the
+// other way). Skips, saying so, when povray is not installed.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "support/test_support.h"
+#include "tracer/scene_language/parse_error.h"
+#include "tracer/scene_language/scene_language.h"
+
+namespace rayset::tracer {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSnippets = fs::path(RAYSET_SOURCE_DIR) / "tests" / "scene_language" / "povray";
+
+bool povray_installed() { return std::system("command -v povray > /dev/null 2>&1") == 0; }
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// POV-Ray's debug stream for `scene`, parsed and rendered at 1 x 1 pixel in a scratch folder
+// (POV-Ray writes its streams beside its image).
+std::string povray_output(const fs::path& scene) {
+    test::ScratchDir dir;
+    const std::string command = "cd '" + dir.path().string() + "' && povray +I'" + scene.string() +
+                                "' +W1 +H1 -D -V +Oout.png +GDdebug.txt -GR -GS > povray.log 2>&1";
+    if (std::system(command.c_str()) != 0)
+        ADD_FAILURE() << "povray failed on " << scene << ":\n" << read_text(dir.path() / "povray.log");
+    return read_text(dir.path() / "debug.txt");
+}
+
+std::string our_output(const fs::path& scene) {
+    std::string debug;
+    ParseOptions options;
+    options.on_message = [&](MessageStream stream, const std::string& text) {
+        if (stream == MessageStream::debug) debug += text;
+    };
+    try {
+        parse_scene_file(scene.string(), options);
+    } catch (const Error& e) {
+        ADD_FAILURE() << "our parser failed on " << scene << ": " << e.what();
+    }
+    return debug;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+// The line with its numbers replaced by '#', and the numbers as printed.
+struct Printed {
+    std::string text;
+    std::vector<std::string> numbers;
+};
+
+Printed split_numbers(const std::string& line) {
+    static const std::regex number(R"([-+]?\d+(\.\d+)?(e[-+]\d+)?)");
+    Printed out;
+    std::string rest = line;
+    std::smatch match;
+    while (std::regex_search(rest, match, number)) {
+        out.text += match.prefix().str() + "#";
+        out.numbers.push_back(match.str());
+        rest = match.suffix().str();
+    }
+    out.text += rest;
+    return out;
+}
+
+// Equal to POV-Ray's printed precision: within one unit of its last printed digit.
+bool same_number(const std::string& ours, const std::string& theirs) {
+    if (ours == theirs) return true;
+    const size_t dot = theirs.find('.');
+    const size_t exponent = theirs.find('e');
+    const size_t end = exponent == std::string::npos ? theirs.size() : exponent;
+    const int decimals = dot == std::string::npos ? 0 : static_cast<int>(end - dot - 1);
+    double unit = std::pow(10.0, -decimals);
+    if (exponent != std::string::npos) unit *= std::pow(10.0, std::stod(theirs.substr(exponent + 1)));
+    return std::fabs(std::stod(ours) - std::stod(theirs)) <= 1.0001 * unit;
+}
+
+void expect_same_output(const std::string& file) {
+    const fs::path scene = kSnippets / file;
+    const std::vector<std::string> theirs = lines_of(povray_output(scene));
+    const std::vector<std::string> ours = lines_of(our_output(scene));
+    ASSERT_FALSE(theirs.empty()) << "POV-Ray printed nothing for " << file;
+    EXPECT_EQ(ours.size(), theirs.size()) << file << ": line counts differ";
+    int compared_numbers = 0;
+    for (size_t i = 0; i < std::min(ours.size(), theirs.size()); ++i) {
+        // POV-Ray wraps debug lines at 80 columns: the snippets keep theirs shorter.
+        ASSERT_LT(theirs[i].size(), 79u) << file << " line " << i + 1 << " is too long to compare";
+        const Printed a = split_numbers(ours[i]), b = split_numbers(theirs[i]);
+        EXPECT_EQ(a.text, b.text) << file << " line " << i + 1 << "\n ours:    " << ours[i] << "\n POV-Ray: " << theirs[i];
+        if (a.text != b.text || a.numbers.size() != b.numbers.size()) continue;
+        for (size_t k = 0; k < a.numbers.size(); ++k, ++compared_numbers)
+            EXPECT_TRUE(same_number(a.numbers[k], b.numbers[k]))
+                << file << " line " << i + 1 << " number " << k + 1 << "\n ours:    " << ours[i]
+                << "\n POV-Ray: " << theirs[i];
+    }
+    std::printf("%s: %zu lines, %d numbers agree with POV-Ray\n", file.c_str(), theirs.size(), compared_numbers);
+}
+
+class PovRayDifferential : public ::testing::TestWithParam<const char*> {
+protected:
+    void SetUp() override {
+        if (!povray_installed()) GTEST_SKIP() << "povray is not installed (scripts/install-deps.sh installs it)";
+    }
+};
+
+TEST_P(PovRayDifferential, DebugOutputAgrees) { expect_same_output(GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(Snippets, PovRayDifferential,
+                         ::testing::Values("expressions.pov", "strings.pov", "random.pov", "directives.pov",
+                                           "arrays.pov", "splines.pov", "functions.pov", "includes.pov"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                             std::string name = info.param;
+                             return name.substr(0, name.find('.'));
+                         });
+
+}  // namespace
+}  // namespace rayset::tracer
