@@ -513,7 +513,7 @@ TEST(SceneLanguageErrors, UnclosedBlocksAndExpectedTokens) {
     EXPECT_EQ(error_of("sphere { <1, 2 0, 1 }"),
               "expected a vector component or '>' to close the vector opened at test.pov:1:10, found '}' at test.pov:1:21");
     EXPECT_EQ(error_of("/* never closed"), "unclosed comment: expected '*/' before end of file for the comment opened at test.pov:1:1");
-    EXPECT_EQ(error_of("#declare S = \"abc\n"), "unterminated string: expected '\"' before end of line at test.pov:1:14");
+    EXPECT_EQ(error_of("#declare S = \"abc\n"), "unterminated string: expected '\"' before end of file at test.pov:1:14");
     EXPECT_EQ(error_of("sphere { 0, 1/0 }"), "division by zero at test.pov:1:14");
     EXPECT_EQ(error_of("sphere { 0, sqrt(-1) }"),
               "'sqrt': negative argument (POV-Ray would compute a meaningless number) at test.pov:1:13");

@@ -107,9 +107,11 @@ Numeric Parser::parse_builtin_numeric(const Token& name) {
     const Keyword k = keyword_of(name.name);
     if (Numeric constant; builtin_constant(name, constant)) return constant;
 
-    const Token open = expect(Symbol::lparen, fmt::format("after '{}'", word(name)));
-    auto close = [&] { expect(Symbol::rparen, fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str())); };
-    auto comma = [&] { expect(Symbol::comma, fmt::format("between the arguments of '{}'", word(name))); };
+    const Token open = expect(Symbol::lparen, [&] { return fmt::format("after '{}'", word(name)); });
+    auto close = [&] {
+        expect(Symbol::rparen, [&] { return fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str()); });
+    };
+    auto comma = [&] { expect(Symbol::comma, [&] { return fmt::format("between the arguments of '{}'", word(name)); }); };
     auto float_arg = [&]() {
         const Token at = peek();
         const Numeric n = parse_expression();
@@ -446,9 +448,11 @@ std::string Parser::parse_builtin_string(const Token& name) {
     if (k != Keyword::chr && k != Keyword::concat && k != Keyword::datetime && k != Keyword::str &&
         k != Keyword::strlwr && k != Keyword::strupr && k != Keyword::substr && k != Keyword::vstr)
         fail_identifier(name, "a string");
-    const Token open = expect(Symbol::lparen, fmt::format("after '{}'", word(name)));
-    auto close = [&] { expect(Symbol::rparen, fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str())); };
-    auto comma = [&] { expect(Symbol::comma, fmt::format("between the arguments of '{}'", word(name))); };
+    const Token open = expect(Symbol::lparen, [&] { return fmt::format("after '{}'", word(name)); });
+    auto close = [&] {
+        expect(Symbol::rparen, [&] { return fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str()); });
+    };
+    auto comma = [&] { expect(Symbol::comma, [&] { return fmt::format("between the arguments of '{}'", word(name)); }); };
     auto int_arg = [&](const char* what) {
         const double value = parse_float(fmt::format("as the {} of '{}'", what, word(name)));
         return static_cast<int>(std::clamp(std::trunc(value), -2147483648.0, 2147483647.0));

@@ -299,22 +299,25 @@ Numeric Parser::parse_vector_literal(const Token& open) {
     return result;
 }
 
-double Parser::parse_float(const std::string& purpose) {
+double Parser::parse_float(Purpose purpose) {
     const Token start = peek();
     const Numeric n = parse_numeric();
-    if (n.terms != 1)
-        fail(start, fmt::format("expected a float{}{}, found {}", purpose.empty() ? "" : " ", purpose,
+    if (n.terms != 1) {
+        const std::string why = purpose.str();
+        fail(start, fmt::format("expected a float{}{}, found {}", why.empty() ? "" : " ", why,
                                 n.terms <= 3 ? "a vector" : "a colour"));
+    }
     return n.v[0];
 }
 
-int Parser::parse_int(const std::string& purpose, int minimum) {
+int Parser::parse_int(Purpose purpose, int minimum) {
     const Token start = peek();
     const double value = parse_float(purpose);
     if (!(value >= -2147483648.0 && value < 2147483648.0))
-        fail(start, fmt::format("expected an integer {}, found {}", purpose, value));
+        fail(start, fmt::format("expected an integer {}, found {}", purpose.str(), value));
     const int truncated = static_cast<int>(std::trunc(value));  // POV-Ray rounds toward zero too
-    if (truncated < minimum) fail(start, fmt::format("expected an integer >= {} {}, found {}", minimum, purpose, value));
+    if (truncated < minimum)
+        fail(start, fmt::format("expected an integer >= {} {}, found {}", minimum, purpose.str(), value));
     return truncated;
 }
 

@@ -165,7 +165,8 @@ private:
         advance();  // opening quote
         std::string value;
         for (;;) {
-            if (at_end() || peek() == '\n') fail(opened, "unterminated string: expected '\"' before end of line");
+            // A string may run over several lines (POV-Ray's include files have such).
+            if (at_end()) fail(opened, "unterminated string: expected '\"' before end of file");
             const char c = advance();
             if (c == '"') return value;
             if (c != '\\') {

@@ -48,13 +48,15 @@ void Parser::directive_macro(const Token& directive) {
 }
 
 void Parser::invoke_macro(const Token& name, const MacroRef& macro) {
-    const Token open = expect(Symbol::lparen, fmt::format("after macro {} (its call needs parentheses)", word(name)));
+    const Token open =
+        expect(Symbol::lparen, [&] { return fmt::format("after macro {} (its call needs parentheses)", word(name)); });
     std::unordered_map<NameId, SymbolRef> parameters;
     for (size_t i = 0; i < macro->parameters.size(); ++i) {
         if (i > 0)
-            expect(Symbol::comma, fmt::format("between the arguments of {} ({} declared at {} takes {})", word(name),
-                                              word(name), location_of(macro->defined_at).str(),
-                                              macro->parameters.size()));
+            expect(Symbol::comma, [&] {
+                return fmt::format("between the arguments of {} ({} declared at {} takes {})", word(name), word(name),
+                                   location_of(macro->defined_at).str(), macro->parameters.size());
+            });
         if (peek_is(Symbol::rparen))
             fail(peek(), fmt::format("macro {} takes {} arguments, found {} (declared at {})", word(name),
                                      macro->parameters.size(), i, location_of(macro->defined_at).str()));

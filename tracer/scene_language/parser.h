@@ -20,6 +20,7 @@
 #pragma once
 
 #include <chrono>
+#include <type_traits>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -30,6 +31,23 @@
 #include "tracer/scene_language/values.h"
 
 namespace rayset::tracer {
+
+// What a value or token is read for, in messages ("as the sphere radius"): text, or a callable
+// that makes it, so that a message is only formatted when there is an error to report.
+class Purpose {
+public:
+    Purpose(const char* text = "") : text_(text) {}
+    Purpose(const std::string& text) : text_(text.c_str()) {}
+    template <typename Make, typename = std::enable_if_t<std::is_invocable_r_v<std::string, const Make&>>>
+    Purpose(const Make& make)
+        : object_(&make), make_([](const void* object) { return (*static_cast<const Make*>(object))(); }) {}
+    std::string str() const { return make_ ? make_(object_) : std::string(text_); }
+
+private:
+    const char* text_ = "";
+    const void* object_ = nullptr;
+    std::string (*make_)(const void*) = nullptr;
+};
 
 class Parser {
 public:
@@ -46,8 +64,8 @@ public:
     bool accept(Symbol symbol);
     bool accept(Keyword keyword);
     void accept_comma() { accept(Symbol::comma); }
-    Token expect(Symbol symbol, const std::string& purpose);
-    Token expect(Keyword keyword, const std::string& purpose);
+    Token expect(Symbol symbol, Purpose purpose);
+    Token expect(Keyword keyword, Purpose purpose);
     // '{' after `keyword`, counted against the nesting limit until its expect_close.
     Token expect_open(const Token& keyword);
     void expect_close(const Token& keyword, const Token& open);
@@ -73,8 +91,8 @@ public:
     // comparisons (so `box { <0,0,0> <1,1,1> }` is two corners); parentheses bring the full
     // grammar back.
     Numeric parse_numeric();
-    double parse_float(const std::string& purpose = "");
-    int parse_int(const std::string& purpose, int minimum);
+    double parse_float(Purpose purpose = {});
+    int parse_int(Purpose purpose, int minimum);
     Vec3 parse_vector();                  // three terms: a float promotes, a 2-vector pads
     Numeric parse_vector_terms(int terms);  // exactly `terms` terms, promoted the same way
     // `keyword [BOOL]`: true when no value follows.
@@ -226,7 +244,8 @@ private:
     void parse_array_initialiser(Array& array, size_t dimension, size_t& index, const Token& keyword);
 
     // ---------------------------------------------------------------- limits
-    void check_memory(const Token& at);
+    // Fails when the process has grown (or would grow by `more_bytes`) past the memory limit.
+    void check_memory(const Token& at, double more_bytes = 0);
     void count_iteration(const Token& at);
 
     const ParseOptions& options_;

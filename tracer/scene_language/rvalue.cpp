@@ -141,8 +141,8 @@ Value Parser::parse_array(const Token& keyword) {
         total *= static_cast<long>(size);
     }
     if (array->sizes.empty()) fail_expected("'[' with the size of the array after 'array'", peek());
+    check_memory(keyword, static_cast<double>(total) * sizeof(Value));
     array->elements.resize(static_cast<size_t>(total));
-    check_memory(keyword);
     if (peek_is(Symbol::lbrace)) {
         size_t index = 0;
         parse_array_initialiser(*array, 0, index, keyword);

@@ -87,12 +87,19 @@ Parser::Parser(const ParseOptions& options) : options_(options), start_time_(std
 
 Parser::~Parser() = default;
 
-void Parser::check_memory(const Token& at) {
+static long memory_limit_megabytes(const ParseOptions& options) {
+    if (options.max_memory_megabytes > 0) return options.max_memory_megabytes;
+    const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGESIZE);
+    return pages > 0 && page_size > 0 ? pages / 2 / (1048576 / page_size) : 4096;
+}
+
+void Parser::check_memory(const Token& at, double more_bytes) {
     tokens_since_memory_check_ = 0;
-    const long grown_mb = (resident_kilobytes() - baseline_rss_kb_) / 1024;
-    if (grown_mb > options_.max_memory_megabytes)
-        fail(at, fmt::format("memory limit: parsing the scene took more than {} MB (ParseOptions::max_memory_megabytes)",
-                             options_.max_memory_megabytes));
+    const long limit = memory_limit_megabytes(options_);
+    const double grown_mb = static_cast<double>(resident_kilobytes() - baseline_rss_kb_) / 1024 + more_bytes / 1048576;
+    if (grown_mb > static_cast<double>(limit))
+        fail(at, fmt::format("memory limit: parsing the scene took more than {} MB (ParseOptions::max_memory_megabytes, "
+                             "raytrace --max-parse-memory)", limit));
 }
 
 SceneDescription Parser::parse(const std::string& text, const std::string& path) {

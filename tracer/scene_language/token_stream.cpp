@@ -147,18 +147,18 @@ bool Parser::accept(Keyword keyword) {
     return true;
 }
 
-Token Parser::expect(Symbol symbol, const std::string& purpose) {
-    if (!peek_is(symbol)) fail_expected(fmt::format("'{}' {}", symbol_text(symbol), purpose), peek());
+Token Parser::expect(Symbol symbol, Purpose purpose) {
+    if (!peek_is(symbol)) fail_expected(fmt::format("'{}' {}", symbol_text(symbol), purpose.str()), peek());
     return next();
 }
 
-Token Parser::expect(Keyword keyword, const std::string& purpose) {
-    if (!peek_is(keyword)) fail_expected(fmt::format("'{}' {}", names_.text(id_of(keyword)), purpose), peek());
+Token Parser::expect(Keyword keyword, Purpose purpose) {
+    if (!peek_is(keyword)) fail_expected(fmt::format("'{}' {}", names_.text(id_of(keyword)), purpose.str()), peek());
     return next();
 }
 
 Token Parser::expect_open(const Token& keyword) {
-    const Token open = expect(Symbol::lbrace, fmt::format("after '{}'", word(keyword)));
+    const Token open = expect(Symbol::lbrace, [&] { return fmt::format("after '{}'", word(keyword)); });
     if (++nesting_ > options_.max_nesting)
         fail(open, fmt::format("nesting limit: more than {} blocks, calls and parentheses in progress "
                                "(ParseOptions::max_nesting)", options_.max_nesting));
@@ -202,10 +202,16 @@ void Parser::fail(const Token& at, const std::string& what) const {
     std::string chain;
     for (int file = at.file; files_[file].included; file = files_[file].included_at.file)
         chain += fmt::format(" (included from {})", location_of(files_[file].included_at).str());
-    // Macro calls in progress, innermost first, so an error in a library macro names the call.
-    for (auto block = blocks_.rbegin(); block != blocks_.rend(); ++block)
-        if (block->kind == Block::Kind::macro_body)
+    // Macro calls in progress, innermost first, so an error in a library macro names the call;
+    // a deep recursion is shown by its innermost calls and a count.
+    constexpr int kCallsShown = 4;
+    int calls = 0;
+    for (auto block = blocks_.rbegin(); block != blocks_.rend(); ++block) {
+        if (block->kind != Block::Kind::macro_body) continue;
+        if (++calls <= kCallsShown)
             chain += fmt::format(" (in macro {} called at {})", word(block->opened), location_of(block->opened).str());
+    }
+    if (calls > kCallsShown) chain += fmt::format(" (and {} more macro calls)", calls - kCallsShown);
     throw SceneError(what, location_of(at), chain);
 }
 
