@@ -64,7 +64,16 @@ int run(int argc, char** argv) {
 
     ParseOptions parse_options;
     parse_options.include_paths = options.include_paths;
+    parse_options.write_roots = options.write_roots;
+    parse_options.max_memory_megabytes = options.max_parse_memory_mb;
     const SceneDescription description = parse_scene_file(options.scene, parse_options);
+    if (options.parse_only) {
+        fmt::print("{}: {} objects, {} lights, {} ray sources, {} receivers, {}; {} files read\n", options.scene,
+                   description.objects.size(), description.lights.size(), description.ray_sources.size(),
+                   description.receivers.size(), description.has_camera ? "a camera" : "no camera",
+                   description.files.size());
+        return 0;
+    }
     RenderScene scene(description);
 
     RenderSettings settings;

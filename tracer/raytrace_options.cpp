@@ -147,6 +147,13 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
     app.add_flag("--bench", o.bench, "Benchmark: renderer rays/s against bare Embree rtcIntersect1 on the same "
                                      "rays, 1 and 2 threads; writes nothing");
     app.add_flag("-q,--quiet", o.quiet, "No progress bar or summary");
+    app.add_flag("--parse-only", o.parse_only, "Read the scene (includes, macros, every statement) and say what it "
+                                               "holds or why it cannot be read; render nothing");
+    app.add_option("--allow-write", o.write_roots, "Folder the scene's #fopen ... write/append may write to, "
+                                                   "relative names from the working directory (repeatable; "
+                                                   "default: none, writing is refused)");
+    app.add_option("--max-parse-memory", o.max_parse_memory_mb, "Megabytes the scene may make the parser grow by "
+                                                                "(default: half the RAM)")->check(CLI::PositiveNumber);
     app.add_option("--photons", o.photons_per_pass, "Bidirectional: photons per pass (default: the pass's camera "
                                                     "samples, at least 65536; a pass takes photons / (pixels + "
                                                     "receiver cells) samples per pixel and cell, at least 1)")->check(CLI::PositiveNumber);

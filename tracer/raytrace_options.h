@@ -22,6 +22,9 @@ struct RaytraceOptions {
     double exposure = 0;
     std::vector<std::string> include_paths;
     bool bench = false;
+    bool parse_only = false;                 // read the scene, report what it holds, render nothing
+    std::vector<std::string> write_roots;    // folders the scene's #fopen may write to
+    long max_parse_memory_mb = 0;            // 0: the parser's default (half the RAM)
     bool quiet = false;
     // Bidirectional integrator (global_settings { integrator "bidirectional" }).
     int photons_per_pass = 0;     // 0: the renderer's default

@@ -110,3 +110,28 @@ TEST(SceneLanguageLimits, ErrorsNameTheIncludeAndMacroChain) {
 
 }  // namespace
 }  // namespace rayset::tracer
+
+namespace rayset::tracer {
+namespace {
+
+TEST(SceneLanguageFiles, WritingNeedsAWriteRootAndStaysInsideIt) {
+    test::ScratchDir dir;
+    const std::filesystem::path previous = std::filesystem::current_path();
+    std::filesystem::current_path(dir.path());
+    const std::string scene = "#fopen F \"out.txt\" write\n#write (F, 1)\n#fclose F\n";
+    EXPECT_EQ(error_of(scene),
+              "#fopen \"out.txt\" for write: writing files is not allowed unless a folder is given for it (raytrace "
+              "--allow-write DIR, or ParseOptions::write_roots) at test.pov:1:10");
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out.txt")));
+    ParseOptions options;
+    options.write_roots = {dir.path().string()};
+    EXPECT_EQ(error_of(scene, options), "no error");
+    EXPECT_EQ(test::read_file(dir.file("out.txt")), "1");
+    EXPECT_EQ(error_of("#fopen F \"../escape.txt\" append\n", options),
+              "#fopen \"../escape.txt\" for append: writing files is not allowed outside the folders given for it "
+              "(raytrace --allow-write DIR, or ParseOptions::write_roots) at test.pov:1:10");
+    std::filesystem::current_path(previous);
+}
+
+}  // namespace
+}  // namespace rayset::tracer

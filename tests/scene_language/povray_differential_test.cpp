@@ -44,9 +44,14 @@ std::string povray_output(const fs::path& scene) {
     return read_text(dir.path() / "debug.txt");
 }
 
+// Our parser's debug text for `scene`, run like POV-Ray in a scratch folder it may write to.
 std::string our_output(const fs::path& scene) {
+    test::ScratchDir dir;
+    const fs::path previous = fs::current_path();
+    fs::current_path(dir.path());
     std::string debug;
     ParseOptions options;
+    options.write_roots = {dir.path().string()};
     options.on_message = [&](MessageStream stream, const std::string& text) {
         if (stream == MessageStream::debug) debug += text;
     };
@@ -55,6 +60,7 @@ std::string our_output(const fs::path& scene) {
     } catch (const Error& e) {
         ADD_FAILURE() << "our parser failed on " << scene << ": " << e.what();
     }
+    fs::current_path(previous);
     return debug;
 }
 
@@ -129,7 +135,8 @@ TEST_P(PovRayDifferential, DebugOutputAgrees) { expect_same_output(GetParam()); 
 
 INSTANTIATE_TEST_SUITE_P(Snippets, PovRayDifferential,
                          ::testing::Values("expressions.pov", "strings.pov", "random.pov", "directives.pov",
-                                           "arrays.pov", "splines.pov", "functions.pov", "includes.pov"),
+                                           "arrays.pov", "splines.pov", "functions.pov", "includes.pov",
+                                           "fileio.pov"),
                          [](const ::testing::TestParamInfo<const char*>& info) {
                              std::string name = info.param;
                              return name.substr(0, name.find('.'));

@@ -40,6 +40,7 @@ private:
 }  // namespace
 
 void Parser::run_directive(const Token& directive) {
+    if (word(directive).empty()) return;  // a lone '#'
     DirectiveFrame scope(directive_frame_, frames_.size());
     switch (static_cast<Keyword>(is_keyword(directive.name) ? directive.name : id_of(Keyword::size_))) {
         case Keyword::declare: return directive_declare(directive, false);

@@ -93,7 +93,13 @@ void Parser::directive_fopen(const Token& directive) {
     const Token mode = next();
     auto file = std::make_shared<FileHandle>();
     if (mode.is(Keyword::read)) {
-        file->path = resolve_file(name, name_token, "#fopen file");
+        // A file the scene wrote itself is read back from where it was written.
+        const fs::path written = fs::weakly_canonical(fs::current_path() / name);
+        bool in_write_root = false;
+        for (const std::string& root : write_roots_) in_write_root = in_write_root || within(written, fs::path(root));
+        std::error_code error;
+        file->path = in_write_root && fs::is_regular_file(written, error) ? written.string()
+                                                                          : resolve_file(name, name_token, "#fopen file");
         std::ifstream in(file->path, std::ios::binary);
         if (!in) fail(name_token, fmt::format("#fopen: \"{}\" cannot be read ({})", name, file->path));
         std::ostringstream text;
@@ -106,8 +112,8 @@ void Parser::directive_fopen(const Token& directive) {
         tokenize(text.str(), static_cast<int>(files_.size()) - 1, *file->read_tokens, names_);
     } else if (mode.is(Keyword::write) || mode.is(Keyword::append)) {
         const fs::path given(name);
-        const fs::path target =
-            fs::weakly_canonical(given.is_absolute() ? given : fs::path(files_[directive.file].source->directory) / given);
+        // Relative to the working directory, as POV-Ray writes.
+        const fs::path target = fs::weakly_canonical(given.is_absolute() ? given : fs::current_path() / given);
         bool allowed = false;
         for (const std::string& root : write_roots_) allowed = allowed || within(target, fs::path(root));
         if (!allowed)
@@ -162,10 +168,16 @@ void Parser::directive_read(const Token& directive) {
             fail(token, fmt::format("#read: expected a number in {}, found {}", file->path, describe(token)));
         return sign * token.number;
     };
+    // The file closes, undefining its handle, when a read meets its end: after an item with no
+    // comma after it, or where an item should be (POV-Ray's rule).
+    bool ended = false;
     while (accept(Symbol::comma)) {
         const Token variable = raw_next();
         if (!variable.is_identifier()) fail_expected("an identifier to read into", variable);
-        if (at_end()) break;
+        if (at_end()) {
+            ended = true;
+            break;
+        }
         const Token first = take();
         Value value;
         if (first.kind == TokenKind::string) {
@@ -186,7 +198,8 @@ void Parser::directive_read(const Token& directive) {
         } else {
             value = Numeric::scalar(read_number(first));
         }
-        if (!at_end() && data[file->read_position].is(Symbol::comma)) ++file->read_position;
+        if (data[file->read_position].is(Symbol::comma)) ++file->read_position;
+        else ended = at_end();
         const SymbolRef existing = lookup(variable.name);
         if (existing && existing->value.index() != value.index())
             fail(variable, fmt::format("#read: '{}' is {}, the file gives {}", word(variable),
@@ -194,8 +207,8 @@ void Parser::directive_read(const Token& directive) {
         assign(variable, variable.name, std::move(value), false);
     }
     expect(Symbol::rparen, "to close #read(");
-    if (at_end())
-        for (auto& scope : scopes_) scope.erase(handle.name);  // end of file: the handle goes (POV-Ray's rule)
+    if (ended)
+        for (auto& scope : scopes_) scope.erase(handle.name);
     (void)directive;
 }
 

@@ -47,9 +47,10 @@ public:
             } else if (c == '#') {
                 advance();
                 while (peek() == ' ' || peek() == '\t') advance();  // "#   debug" is "#debug"
-                if (!is_alpha(peek())) fail(token, "expected a directive name after '#'");
+                // A '#' with no name is a directive that does nothing, as in POV-Ray (which
+                // ignores it, except that it ends an expression like any directive).
                 token.kind = TokenKind::directive;
-                token.name = names_.intern(read_word());
+                token.name = names_.intern(is_alpha(peek()) ? read_word() : std::string_view());
             } else {
                 token.kind = TokenKind::symbol;
                 token.symbol = read_symbol(token);
