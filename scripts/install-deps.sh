@@ -7,7 +7,9 @@ packages=(
   libembree-dev libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libceres-dev libopenexr-dev libvtk9-dev
   libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libeigen3-dev libpng-dev libtinyobjloader-dev xvfb xauth time
-  povray  # the reference renderer of the framing test (tests/tracer/render_cornell_test.cpp)
+  # POV-Ray 3.7: the reference renderer of the framing and differential tests, its include
+  # folder (on raytrace's default include path) and its sample scenes (scripts/pov_compat.sh)
+  povray povray-includes povray-examples
 )
 
 missing=()
