@@ -591,3 +591,73 @@ TEST(SceneLanguageErrors, IncludeNotFoundOutsideRootsAndRecursion) {
 
 }  // namespace
 }  // namespace rayset::tracer
+
+namespace rayset::tracer {
+namespace {
+
+struct Messages {
+    std::string debug, warnings;
+    ParseOptions options() {
+        ParseOptions o;
+        o.on_message = [this](MessageStream stream, const std::string& text) {
+            (stream == MessageStream::debug ? debug : warnings) += text;
+        };
+        return o;
+    }
+};
+
+TEST(SceneLanguageMessages, DebugWarningErrorAndDeprecatedIdentifiers) {
+    Messages m;
+    parse_scene_text("#debug \"one\\n\"\n#warning concat(\"two \", str(2, 0, 0))\n#render \"three\\n\"\n"
+                     "#declare deprecated once \"use New\" Old = 1;\n#declare A = Old + Old;\n"
+                     "#declare deprecated Older = 2;\n#declare B = Older;\n",
+                     "test.pov", m.options());
+    EXPECT_EQ(m.debug, "one\nthree\n");
+    EXPECT_EQ(m.warnings, "test.pov:2:1: warning: two 2\ntest.pov:5:14: warning: use New\n"
+                          "test.pov:7:14: warning: identifier Older was declared deprecated\n");
+    EXPECT_EQ(error_of("#error concat(\"stop \", \"here\")"), "#error: stop here at test.pov:1:1");
+}
+
+TEST(SceneLanguageBuiltins, AnimationImageAndFileVariables) {
+    ParseOptions options;
+    options.animation.clock = 0.5;
+    options.animation.clock_delta = 0.25;
+    options.animation.clock_on = true;
+    options.animation.frame_number = 3;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 5;
+    options.animation.final_clock = 1;
+    options.animation.image_width = 640;
+    options.animation.image_height = 480;
+    const Vec3 v = parse_scene_text("camera { location <clock + clock_delta, frame_number * 10 + initial_frame + "
+                                    "final_frame * 100, image_width / image_height + clock_on + final_clock> }",
+                                    "test.pov", options)
+                       .camera.location;
+    expect_vec(v, {0.75, 531, 640.0 / 480 + 2});
+    EXPECT_DOUBLE_EQ(eval("version").x, 3.7);
+    EXPECT_DOUBLE_EQ(eval("version", "#version 3.5;").x, 3.5);
+    // input_file_name is the main file's name; now is days since 2000, so between 2020 and 2100.
+    Messages m;
+    parse_scene_text("#debug input_file_name", "some/folder/scene.pov", m.options());
+    EXPECT_EQ(m.debug, "scene.pov");
+    const double now = eval("now").x;
+    EXPECT_GT(now, 20 * 365.25);
+    EXPECT_LT(now, 100 * 365.25);
+}
+
+TEST(SceneLanguageBuiltins, TransformValuesComposeAndInvert) {
+    // vtransform of transforms.inc is a macro; a transform applied to a point through a
+    // function gives the same.
+    const std::string declarations =
+        "#declare T = transform { translate <1, 2, 3> rotate 90 * y scale 2 }\n"
+        "#declare F = function { transform { T } }\n"
+        "#declare G = function { transform { T inverse } }\n";
+    // (1,0,0) + <1,2,3> = (2,2,3); 90 degrees about y: (3,2,-2); times 2.
+    expect_vec(eval("F(1, 0, 0)", declarations), {6, 4, -4}, 1e-12);
+    expect_vec(eval("G(6, 4, -4)", declarations), {1, 0, 0}, 1e-12);
+    EXPECT_EQ(error_of("#declare T = transform { matrix <1,0,0, 0,1,0, 0,0,0, 0,0,0> inverse }"),
+              "'inverse' of a singular transform at test.pov:1:24");
+}
+
+}  // namespace
+}  // namespace rayset::tracer
