@@ -375,8 +375,7 @@ void Parser::directive_message(const Token& directive) {
 void Parser::directive_undef(const Token& directive) {
     const NameId name = next_raw_identifier("after #undef");
     (void)directive;
-    for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope)
-        if (scope->erase(name)) return;
+    symbols_.unbind_most_local(name);
 }
 
 void Parser::directive_default(const Token& directive) { parse_default(*this, directive); }

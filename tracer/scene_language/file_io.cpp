@@ -132,7 +132,7 @@ void Parser::directive_fopen(const Token& directive) {
     // File handles are always global (POV-Ray's rule).
     auto entry = std::make_shared<SymbolEntry>();
     entry->value = FileRef(std::move(file));
-    scopes_.front()[handle.name] = std::move(entry);
+    symbols_.bind(handle.name, std::move(entry), true);
 }
 
 void Parser::directive_fclose(const Token& directive) {
@@ -142,7 +142,7 @@ void Parser::directive_fclose(const Token& directive) {
         (void)directive;
         return;  // closing a file that is not open does nothing, as in POV-Ray
     }
-    for (auto& scope : scopes_) scope.erase(handle.name);
+    symbols_.unbind_everywhere(handle.name);
 }
 
 void Parser::directive_read(const Token& directive) {
@@ -208,7 +208,7 @@ void Parser::directive_read(const Token& directive) {
     }
     expect(Symbol::rparen, "to close #read(");
     if (ended)
-        for (auto& scope : scopes_) scope.erase(handle.name);
+        symbols_.unbind_everywhere(handle.name);
     (void)directive;
 }
 

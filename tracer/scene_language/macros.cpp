@@ -43,14 +43,14 @@ void Parser::directive_macro(const Token& directive) {
     // Macro names are global and permanent (POV-Ray's rule), like a #declare of a new name.
     auto entry = std::make_shared<SymbolEntry>();
     entry->value = MacroRef(std::move(macro));
-    for (auto& scope : scopes_) scope.erase(name.name);
-    scopes_.front()[name.name] = std::move(entry);
+    symbols_.unbind_everywhere(name.name);
+    symbols_.bind(name.name, std::move(entry), true);
 }
 
 void Parser::invoke_macro(const Token& name, const MacroRef& macro) {
     const Token open =
         expect(Symbol::lparen, [&] { return fmt::format("after macro {} (its call needs parentheses)", word(name)); });
-    std::unordered_map<NameId, SymbolRef> parameters;
+    std::vector<SymbolRef> parameters(macro->parameters.size());
     for (size_t i = 0; i < macro->parameters.size(); ++i) {
         if (i > 0)
             expect(Symbol::comma, [&] {
@@ -64,14 +64,14 @@ void Parser::invoke_macro(const Token& name, const MacroRef& macro) {
         if (peek().is_identifier() && lookahead_symbol_) {
             const Token& after = raw_peek();
             if (after.is(Symbol::comma) || after.is(Symbol::rparen)) {
-                parameters[macro->parameters[i]] = lookahead_symbol_;
+                parameters[i] = lookahead_symbol_;
                 next();
                 continue;
             }
         }
         auto entry = std::make_shared<SymbolEntry>();
         entry->value = as_stored(parse_rvalue(name));
-        parameters[macro->parameters[i]] = std::move(entry);
+        parameters[i] = std::move(entry);
     }
     if (!peek_is(Symbol::rparen))
         fail_expected(fmt::format("')' to close the call of macro {} opened at {} ({} argument{})", word(name),
@@ -89,14 +89,15 @@ void Parser::invoke_macro(const Token& name, const MacroRef& macro) {
     frame.kind = FrameKind::macro;
     frame.blocks_at_start = blocks_.size();
     frames_.push_back(std::move(frame));
-    scopes_.push_back(std::move(parameters));
+    symbols_.push_scope();
+    for (size_t i = 0; i < parameters.size(); ++i) symbols_.bind(macro->parameters[i], std::move(parameters[i]));
     enter_block(Block::Kind::macro_body, name);
 }
 
 void Parser::leave_macro() {
     blocks_.pop_back();
     frames_.pop_back();
-    scopes_.pop_back();
+    symbols_.pop_scope();
 }
 
 }  // namespace rayset::tracer

@@ -28,6 +28,7 @@
 
 #include "tracer/scene_language/lexer.h"
 #include "tracer/scene_language/scene_language.h"
+#include "tracer/scene_language/symbol_table.h"
 #include "tracer/scene_language/values.h"
 
 namespace rayset::tracer {
@@ -255,7 +256,7 @@ private:
     std::vector<FileInfo> files_;
     std::vector<Frame> frames_;
     std::vector<Block> blocks_;
-    std::vector<std::unordered_map<NameId, SymbolRef>> scopes_;  // [0] global
+    SymbolTable symbols_;
     std::vector<std::string> allowed_roots_, write_roots_;
     // The one lookahead token and, for a declared identifier, its entry.
     bool have_lookahead_ = false;

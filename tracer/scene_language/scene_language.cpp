@@ -106,7 +106,6 @@ SceneDescription Parser::parse(const std::string& text, const std::string& path)
     std::error_code error;
     const fs::path directory = fs::absolute(fs::path(path), error).parent_path();
     allowed_roots_.insert(allowed_roots_.begin(), fs::weakly_canonical(directory, error).string());
-    scopes_.emplace_back();  // global: the main file's declarations live here
     push_file(text, path, directory.string(), nullptr);
 
     for (;;) {

@@ -1,22 +1,65 @@
-// Identifier scopes as POV-Ray's reference manual states them ("Identifier Name Collisions"):
-// one table for the main file (global), one more for each include file and macro call in
-// progress. Referencing finds the most local version. #local creates or assigns in the
-// current table; #declare assigns to the most local existing version, or creates a global one.
+// Identifier scopes (symbol_table.h) and the rules of #declare and #local over them: #local
+// creates or assigns in the current table; #declare assigns to the most local existing
+// version, or creates a global one.
 // A macro parameter passed as a lone identifier is that identifier's own entry, so assigning
 // to the parameter (with either directive) assigns to the caller's identifier.
 #include <fmt/format.h>
 
 #include "tracer/scene_language/parser.h"
+#include "tracer/scene_language/symbol_table.h"
 
 namespace rayset::tracer {
 
-SymbolRef Parser::lookup(NameId name) const {
-    for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope) {
-        auto found = scope->find(name);
-        if (found != scope->end()) return found->second;
-    }
-    return nullptr;
+const SymbolRef SymbolTable::kNone;
+
+std::vector<SymbolTable::Binding>* SymbolTable::bindings_of(NameId name) {
+    if (name >= by_name_.size()) by_name_.resize(name + 1);
+    return &by_name_[name];
 }
+
+const SymbolRef& SymbolTable::find(NameId name) const {
+    if (name >= by_name_.size() || by_name_[name].empty()) return kNone;
+    return by_name_[name].back().symbol;
+}
+
+const SymbolRef& SymbolTable::find_in_innermost(NameId name) const {
+    if (name >= by_name_.size() || by_name_[name].empty() || by_name_[name].back().scope != depth()) return kNone;
+    return by_name_[name].back().symbol;
+}
+
+void SymbolTable::bind(NameId name, SymbolRef symbol, bool global) {
+    std::vector<Binding>& bindings = *bindings_of(name);
+    const uint32_t scope = global ? 0 : static_cast<uint32_t>(depth());
+    // Bindings are ordered by scope: the new one goes above those of outer scopes.
+    auto place = bindings.begin();
+    while (place != bindings.end() && place->scope < scope) ++place;
+    if (place != bindings.end() && place->scope == scope) {
+        place->symbol = std::move(symbol);
+        return;
+    }
+    bindings.insert(place, Binding{std::move(symbol), scope});
+    scope_names_[scope].push_back(name);
+}
+
+void SymbolTable::pop_scope() {
+    const uint32_t scope = static_cast<uint32_t>(depth());
+    for (NameId name : scope_names_.back()) {
+        std::vector<Binding>& bindings = by_name_[name];
+        if (!bindings.empty() && bindings.back().scope == scope) bindings.pop_back();  // else #undef took it
+    }
+    scope_names_.pop_back();
+}
+
+bool SymbolTable::unbind_most_local(NameId name) {
+    std::vector<Binding>& bindings = *bindings_of(name);
+    if (bindings.empty()) return false;
+    bindings.pop_back();
+    return true;
+}
+
+void SymbolTable::unbind_everywhere(NameId name) { bindings_of(name)->clear(); }
+
+SymbolRef Parser::lookup(NameId name) const { return symbols_.find(name); }
 
 void Parser::check_declarable(const Token& at, NameId name, const char* directive) {
     if (is_keyword(name))
@@ -25,13 +68,7 @@ void Parser::check_declarable(const Token& at, NameId name, const char* directiv
 
 void Parser::assign(const Token& at, NameId name, Value value, bool local, const std::string& deprecation,
                     bool warn_once) {
-    SymbolRef existing;
-    if (local) {
-        auto found = scopes_.back().find(name);
-        if (found != scopes_.back().end()) existing = found->second;
-    } else {
-        existing = lookup(name);
-    }
+    const SymbolRef& existing = local ? symbols_.find_in_innermost(name) : symbols_.find(name);
     if (existing) {
         if (std::holds_alternative<FunctionRef>(existing->value) && std::holds_alternative<FunctionRef>(value))
             fail(at, fmt::format("'{}' is already a function: #undef it before declaring it again (as POV-Ray requires)",
@@ -44,7 +81,7 @@ void Parser::assign(const Token& at, NameId name, Value value, bool local, const
     entry->value = as_stored(std::move(value));
     entry->deprecation = deprecation;
     entry->warn_once = warn_once;
-    (local ? scopes_.back() : scopes_.front())[name] = std::move(entry);
+    symbols_.bind(name, std::move(entry), !local);
 }
 
 Value* Parser::array_element(const Token& at, Array& array, bool for_assignment) {

@@ -27,7 +27,7 @@ void Parser::push_file(const std::string& text, const std::string& shown_path, c
     frame.source = source;
     frame.blocks_at_start = blocks_.size();
     frames_.push_back(std::move(frame));
-    if (included_at) scopes_.emplace_back();
+    if (included_at) symbols_.push_scope();
 }
 
 void Parser::leave_finished_files() {
@@ -42,7 +42,7 @@ void Parser::leave_finished_files() {
         }
         if (frames_.size() == 1) return;
         frames_.pop_back();  // a file frame: macro bodies end at their #end
-        scopes_.pop_back();
+        symbols_.pop_scope();
     }
 }
 
