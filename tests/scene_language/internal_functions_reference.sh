@@ -75,6 +75,7 @@ f_helix1 0.9 0.15 -0.2 2 2.5 0.2 1 1.5 1 0
 f_helix1 -0.8 0.3 0.4 3 1.5 0.25 0.8 1 0 30   # square cross section, rotated
 f_helix1 1.2 -0.4 -0.3 2.5 -1.2 0.15 1.1 0.7 2.6 -75
 f_helix1 0.1 0 0.05 1 1 0.3 1 1 1 0          # capped at the distance through the axis
+f_helix1 0.3 0.2 0.1 0 1 0.3 1 1 1 0         # no helix (P0 = 0): the cap
 f_helix2 0.4 0.2 0.3 0 8 0.35 0.4 0 0.5 0
 f_helix2 0.4 0.2 0.3 0 8 0.35 0.4 0 0.5 60   # the rotation has no effect
 f_helix2 -0.5 0.7 0.9 3 -2 0.3 1.2 5 3 0
@@ -161,7 +162,8 @@ f_spiral 0.3 0.01 0.2 0.2 0.04 1 0 0 1
 f_spiral -0.45 -0.03 0.6 0.3 0.05 1 0 0 0
 f_spiral 0.2 0.1 -0.1 0.25 0.04 1 0 0 3.6   # capped at the distance to the origin
 f_spiral 1.1 0.2 0.5 0.2 0.04 1 0 0 1        # outside the sphere of radius P2
-f_spiral 0 0.1 0 0.2 0.04 1 0 0 1            # on the axis: 1e-6 from it
+f_spiral 0 0 0 0.2 0 1 0 0 1                 # on the axis: 1e-6 from it
+f_spiral 0.3 0.1 0.2 0 0.04 1 0 0 1          # no spacing: the sphere alone
 f_steiners_roman 0.3 0.4 0.5 -1
 f_steiners_roman -0.7 0.2 0.9 2
 f_strophoid 0.3 0.2 0.4 -0.2 2 0.5 0.9

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -109,6 +110,8 @@ const Reference kReferences[] = {
     {"f_helix1", {1.2, -0.4, -0.3, 2.5, -1.2, 0.15, 1.1, 0.7, 2.6, -75}, 1.439558479126},
     // capped at the distance through the axis
     {"f_helix1", {0.1, 0, 0.05, 1, 1, 0.3, 1, 1, 1, 0}, 0.811803398875},
+    // no helix (P0 = 0): the cap
+    {"f_helix1", {0.3, 0.2, 0.1, 0, 1, 0.3, 1, 1, 1, 0}, 1.016227766017},
     {"f_helix2", {0.4, 0.2, 0.3, 0, 8, 0.35, 0.4, 0, 0.5, 0}, 0.059160849159},
     // the rotation has no effect
     {"f_helix2", {0.4, 0.2, 0.3, 0, 8, 0.35, 0.4, 0, 0.5, 60}, 0.059160849159},
@@ -207,7 +210,9 @@ const Reference kReferences[] = {
     // outside the sphere of radius P2
     {"f_spiral", {1.1, 0.2, 0.5, 0.2, 0.04, 1, 0, 0, 1}, 0.224744871392},
     // on the axis: 1e-6 from it
-    {"f_spiral", {0, 0.1, 0, 0.2, 0.04, 1, 0, 0, 1}, 0.060000000005},
+    {"f_spiral", {0, 0, 0, 0.2, 0, 1, 0, 0, 1}, 0.000001000000},
+    // no spacing: the sphere alone
+    {"f_spiral", {0.3, 0.1, 0.2, 0, 0.04, 1, 0, 0, 1}, -0.625834261323},
     {"f_steiners_roman", {0.3, 0.4, 0.5, -1}, 0.136900000000},
     {"f_steiners_roman", {-0.7, 0.2, 0.9, 2}, -0.645800000000},
     {"f_strophoid", {0.3, 0.2, 0.4, -0.2, 2, 0.5, 0.9}, -0.025534000000},

@@ -109,7 +109,7 @@ double witch_of_agnesi_2d(double x, double y, const Args& a) {
     return a.p(2) - y * (sqr(a.p(1)) + x * x);
 }
 
-// ---- Surfaces whose value is P0 times a polynomial in x, y, z (and P1...). ----
+// ---- Surfaces whose value is P0, the field strength, times a function of x, y, z, P1... ----
 
 template <double (*surface)(double, double, double, const Args&)>
 double field_surface(const double* a) {
@@ -342,7 +342,7 @@ double helix1(const double* a) {
     const double radial = r - major, along = turn / period / args.p(4);
     const double s = std::sin(radians(args.p(6))), c = std::cos(radians(args.p(6)));
     const double d = cross_section(radial * c + along * s, along * c - radial * s, args.p(5));
-    return std::min(d, r + major) - minor;
+    return std::min(r + major, d) - minor;  // the cap also when d is NaN (P0 or P1 zero)
 }
 // One helix, measured in the horizontal plane: the tube's centre at height y is
 // P3 (cos P1 y, sin P1 y); the offset is split into its radial and tangential parts. P0, P4
@@ -366,7 +366,7 @@ double spiral(const double* a) {
     double winding = r / spacing + std::atan2(args.z(), args.x()) / (2 * kPi) - 0.5;
     winding -= std::round(winding);
     const double tube = std::min(cross_section(spacing * winding, args.y(), args.p(5)), centre);
-    return std::max(tube - args.p(1), centre - args.p(2));
+    return std::max(centre - args.p(2), tube - args.p(1));  // the sphere when P0 = 0 (NaN)
 }
 
 // ---- Grids. ----
@@ -380,12 +380,13 @@ double hex_x(const double* a) {
         return std::max(std::fabs(dx), std::fabs(dx) / 2 + std::fabs(dy) * kSqrt3 / 2);
     };
     double best = HUGE_VAL;
-    const double row = std::floor(y / 1.5);
-    for (double j = row; j <= row + 1; ++j) {
+    for (int row = 0; row < 2; ++row) {
+        const double j = std::floor(y / 1.5) + row;
         const double shift = std::fmod(std::fabs(j), 2) * kSqrt3 / 2;
-        const double column = std::floor((x - shift) / kSqrt3);
-        for (double i = column; i <= column + 1; ++i)
+        for (int column = 0; column < 2; ++column) {
+            const double i = std::floor((x - shift) / kSqrt3) + column;
             best = std::min(best, hexagonal(x - shift - kSqrt3 * i, y - 1.5 * j));
+        }
     }
     return best;
 }
@@ -407,11 +408,13 @@ double mesh1(const double* a) {
                  up = args.p(4);
     const auto sign = [](double n) { return std::fmod(std::fabs(n), 2) == 0 ? 1.0 : -1.0; };
     double best = HUGE_VAL;
-    for (double j = std::floor(z / dz), last = j + 1; j <= last; ++j) {
+    for (int k = 0; k < 2; ++k) {
+        const double j = std::floor(z / dz) + k;
         const double centre = wave * std::cos(kPi * x / dx) * sign(j);
         best = std::min(best, std::hypot(across * (z - j * dz), up * (y - centre)));
     }
-    for (double i = std::floor(x / dx), last = i + 1; i <= last; ++i) {
+    for (int k = 0; k < 2; ++k) {
+        const double i = std::floor(x / dx) + k;
         const double centre = -wave * std::cos(kPi * z / dz) * sign(i);
         best = std::min(best, std::hypot(across * (x - i * dx), up * (y - centre)));
     }
