@@ -103,7 +103,7 @@ Numeric Parser::parse_numeric() { return parse_additive_after(parse_term()); }
 
 Numeric Parser::parse_conditional() {
     Numeric condition = parse_logical();
-    if (!peek_is(Symbol::question)) return condition;
+    if (!peek_operator().is(Symbol::question)) return condition;
     const Token question = next();
     if (condition.terms != 1) fail(question, "the condition before '?' must be a float, found a vector");
     Numeric if_true = parse_conditional();
@@ -115,9 +115,12 @@ Numeric Parser::parse_conditional() {
 Numeric Parser::parse_logical() {
     Numeric result = parse_relational();
     for (;;) {
-        if (accept(Symbol::ampersand)) {
+        const Token& op = peek_operator();
+        if (op.is(Symbol::ampersand)) {
+            next();
             result = combine(result, parse_relational(), [](double a, double b) { return double(truth(a) && truth(b)); });
-        } else if (accept(Symbol::bar)) {
+        } else if (op.is(Symbol::bar)) {
+            next();
             result = combine(result, parse_relational(), [](double a, double b) { return double(truth(a) || truth(b)); });
         } else {
             return result;
@@ -148,7 +151,7 @@ Numeric Parser::parse_relational() {
     }
     Numeric result = parse_additive_after(parse_term());
     for (;;) {
-        const Compare compare = comparison(peek());
+        const Compare compare = comparison(peek_operator());
         if (!compare) return result;
         next();
         result = combine(result, parse_additive_after(parse_term()), compare);
@@ -158,9 +161,12 @@ Numeric Parser::parse_relational() {
 
 Numeric Parser::parse_additive_after(Numeric result) {
     for (;;) {
-        if (accept(Symbol::plus)) result = combine(result, parse_term(), [](double a, double b) { return a + b; });
-        else if (accept(Symbol::minus)) result = combine(result, parse_term(), [](double a, double b) { return a - b; });
-        else return result;
+        const Token& op = peek_operator();
+        if (!op.is(Symbol::plus) && !op.is(Symbol::minus)) return result;
+        const bool add = op.is(Symbol::plus);
+        next();
+        result = combine(result, parse_term(), add ? [](double a, double b) { return a + b; }
+                                                   : [](double a, double b) { return a - b; });
     }
 }
 
@@ -168,9 +174,11 @@ Numeric Parser::parse_term() { return parse_term_after(parse_unary()); }
 
 Numeric Parser::parse_term_after(Numeric result) {
     for (;;) {
-        if (accept(Symbol::star)) {
+        const Token& op = peek_operator();
+        if (op.is(Symbol::star)) {
+            next();
             result = combine(result, parse_unary(), [](double a, double b) { return a * b; });
-        } else if (peek_is(Symbol::slash)) {
+        } else if (op.is(Symbol::slash)) {
             const Token slash = next();
             Numeric divisor = parse_unary();
             if (result.terms < divisor.terms) result = result.promoted(divisor.terms);
@@ -254,7 +262,7 @@ Numeric Parser::parse_numeric_identifier(const Token& token, const Value& value)
 }
 
 Numeric Parser::parse_postfix(Numeric value) {
-    if (!peek_is(Symbol::dot)) return value;
+    if (!peek_operator().is(Symbol::dot)) return value;
     const Token dot = next();
     const Token component = next();
     auto is = [&](Keyword k) { return component.is(k); };

@@ -174,6 +174,9 @@ private:
     const Token& raw_peek();    // the same without taking it (no directives, no macros)
     NameId next_raw_identifier(const std::string& purpose);
     void fill_lookahead();
+    // peek() where an operator may come next: there a directive may end a directive's expression.
+    const Token& peek_operator();
+    bool directive_ends_expression() const;
     void give_back_lookahead();
     SymbolRef resolve(NameId name) const;
 
@@ -266,6 +269,7 @@ private:
     // Frame depth of the directive whose expression is being read: a directive met in that
     // frame ends the expression instead of running.
     size_t directive_frame_ = 0;
+    bool operator_position_ = false;  // peek_operator() is looking
     int nesting_ = 0;
     long loop_iterations_ = 0;
     double version_ = 3.7;

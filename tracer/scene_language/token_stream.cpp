@@ -81,8 +81,7 @@ void Parser::fill_lookahead() {
     while (!have_lookahead_) {
         const Token token = raw_next();
         if (token.kind == TokenKind::directive) {
-            // Inside a directive's own expression, a directive of the same file ends it.
-            if (directive_frame_ != 0 && frames_.size() <= directive_frame_) {
+            if (directive_ends_expression()) {
                 lookahead_ = token;
                 lookahead_symbol_.reset();
                 have_lookahead_ = true;
@@ -109,11 +108,27 @@ void Parser::fill_lookahead() {
     }
 }
 
+// Inside a directive's expression, a directive of the directive's own file ends the expression
+// where an operator could follow (POV-Ray's rule: `#declare A = 1 #if ...` is an error, while
+// `#declare A = #if ... #end` runs the #if).
+bool Parser::directive_ends_expression() const {
+    return operator_position_ && directive_frame_ != 0 && frames_.size() <= directive_frame_;
+}
+
+const Token& Parser::peek_operator() {
+    operator_position_ = true;
+    struct Reset {
+        bool& flag;
+        ~Reset() { flag = false; }
+    } reset{operator_position_};
+    return peek();
+}
+
 const Token& Parser::peek() {
     for (;;) {
         if (!have_lookahead_) fill_lookahead();
         // A directive handed back by a directive's expression runs once that directive is done.
-        if (lookahead_.kind == TokenKind::directive && !(directive_frame_ != 0 && frames_.size() <= directive_frame_)) {
+        if (lookahead_.kind == TokenKind::directive && !directive_ends_expression()) {
             const Token directive = lookahead_;
             have_lookahead_ = false;
             directive_position_ = frames_.back().pos - 1;
