@@ -62,14 +62,21 @@ int run(int argc, char** argv) {
     int exit_code = 0;
     if (!parse_raytrace_options(argc, argv, options, exit_code)) return exit_code;
 
-    ParseOptions parse_options;
-    parse_options.include_paths = options.include_paths;
-    const SceneDescription description = parse_scene_file(options.scene, parse_options);
-    RenderScene scene(description);
-
     RenderSettings settings;
     if (options.width) settings.width = options.width;
     if (options.height) settings.height = options.height;
+    ParseOptions parse_options;
+    parse_options.include_paths = options.include_paths;
+    const AnimationFrames frames =
+        animation_frames(options.animation, settings.width, settings.height);
+    parse_options.animation = frames.first;
+    if (frames.last_frame > frames.first_frame && !options.quiet)
+        std::fprintf(stderr, "raytrace: note: rendering frame %d only of frames %d to %d (one frame "
+                             "per run; +SF chooses it)\n",
+                     frames.first_frame, frames.first_frame, frames.last_frame);
+    const SceneDescription description = parse_scene_file(options.scene, parse_options);
+    RenderScene scene(description);
+
     settings.passes = options.passes ? options.passes : description.global.passes;
     settings.time_limit = options.time_limit >= 0 ? options.time_limit : description.global.time_limit;
     settings.seed = options.seed;

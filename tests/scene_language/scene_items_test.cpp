@@ -72,10 +72,14 @@ TEST(SceneItemsCamera, DefaultsAsPovRay) {
 
 TEST(SceneItemsCamera, EveryProjectionKeyword) {
     const std::pair<const char*, CameraProjection> cases[] = {
-        {"perspective", CameraProjection::perspective},   {"orthographic", CameraProjection::orthographic},
-        {"fisheye", CameraProjection::fisheye},           {"ultra_wide_angle", CameraProjection::ultra_wide_angle},
-        {"omnimax", CameraProjection::omnimax},           {"panoramic", CameraProjection::panoramic},
-        {"cylinder 3", CameraProjection::cylinder},       {"spherical", CameraProjection::spherical}};
+        {"perspective", CameraProjection::perspective},
+        {"orthographic", CameraProjection::orthographic},
+        {"fisheye", CameraProjection::fisheye},
+        {"ultra_wide_angle", CameraProjection::ultra_wide_angle},
+        {"omnimax", CameraProjection::omnimax},
+        {"panoramic", CameraProjection::panoramic},
+        {"cylinder 3", CameraProjection::cylinder},
+        {"spherical", CameraProjection::spherical}};
     for (const auto& [text, projection] : cases) {
         const Camera c = camera_of(text);
         EXPECT_EQ(c.projection, projection) << text;
@@ -85,8 +89,10 @@ TEST(SceneItemsCamera, EveryProjectionKeyword) {
     EXPECT_EQ(camera_of("cylinder 1.7").cylinder_type, 1);  // truncated, as POV-Ray accepts it
     // A second type keyword before any other item replaces the first (POV-Ray accepts it).
     EXPECT_EQ(camera_of("orthographic fisheye").projection, CameraProjection::fisheye);
-    EXPECT_EQ(error_of("camera { cylinder 5 }"), "cylinder camera type 5 (expected 1, 2, 3 or 4) at test.pov:1:19");
-    EXPECT_EQ(error_of("camera { cylinder 0 }"), "cylinder camera type 0 (expected 1, 2, 3 or 4) at test.pov:1:19");
+    EXPECT_EQ(error_of("camera { cylinder 5 }"), "cylinder camera type 5 (expected 1, 2, 3 or 4) "
+                                                 "at test.pov:1:19");
+    EXPECT_EQ(error_of("camera { cylinder 0 }"), "cylinder camera type 0 (expected 1, 2, 3 or 4) "
+                                                 "at test.pov:1:19");
     // POV-Ray: "Expected 'perspective camera modifier', orthographic found instead".
     EXPECT_EQ(error_of("camera { location -z orthographic }"),
               "the camera type 'orthographic' must come first in the camera at test.pov:1:22");
@@ -102,11 +108,14 @@ TEST(SceneItemsCamera, PerspectiveAngle) {
     expect_vec(c.direction, {0, 0, 2});
     EXPECT_EQ(c.angle, 0);
     EXPECT_EQ(error_of("camera { angle 180 }"),
-              "a perspective camera's angle must be smaller than 180 degrees, found 180 at test.pov:1:16");
-    EXPECT_EQ(error_of("camera { angle -10 }"), "the camera's angle must not be negative, found -10 at test.pov:1:16");
+              "a perspective camera's angle must be smaller than 180 degrees, found 180 at "
+              "test.pov:1:16");
+    EXPECT_EQ(error_of("camera { angle -10 }"), "the camera's angle must not be negative, found "
+                                                "-10 at test.pov:1:16");
     EXPECT_EQ(error_of("camera { direction 0 angle 60 }"),
               "the camera direction is zero: 'angle' cannot set its length at test.pov:1:28");
-    EXPECT_EQ(error_of("camera { location 1 look_at 1 }"), "camera location and look_at must differ at test.pov:1:21");
+    EXPECT_EQ(error_of("camera { location 1 look_at 1 }"), "camera location and look_at must "
+                                                           "differ at test.pov:1:21");
 }
 
 TEST(SceneItemsCamera, OtherProjectionsKeepTheirAngle) {
@@ -114,7 +123,8 @@ TEST(SceneItemsCamera, OtherProjectionsKeepTheirAngle) {
     // degrees across, spherical 360 by 180.
     EXPECT_EQ(camera_of("fisheye").angle, 90);
     EXPECT_EQ(camera_of("cylinder 1").angle, 90);
-    EXPECT_EQ(camera_of("fisheye angle 400").angle, 400);  // no limit but for perspective and orthographic
+    // No limit but for perspective and orthographic.
+    EXPECT_EQ(camera_of("fisheye angle 400").angle, 400);
     Camera c = camera_of("spherical");
     EXPECT_EQ(c.angle, 360);
     EXPECT_EQ(c.vertical_angle, 180);
@@ -127,7 +137,8 @@ TEST(SceneItemsCamera, OtherProjectionsKeepTheirAngle) {
     expect_vec(camera_of("ultra_wide_angle direction 2*z angle 120").direction, {0, 0, 2});
     EXPECT_EQ(error_of("camera { spherical angle 10, -20 }"),
               "the camera's vertical angle must not be negative, found -20 at test.pov:1:30");
-    EXPECT_EQ(error_of("camera { fisheye angle -1 }"), "the camera's angle must not be negative, found -1 at test.pov:1:24");
+    EXPECT_EQ(error_of("camera { fisheye angle -1 }"), "the camera's angle must not be negative, "
+                                                       "found -1 at test.pov:1:24");
 }
 
 TEST(SceneItemsCamera, OrthographicSizeAsPovRayRendersIt) {
@@ -158,11 +169,13 @@ TEST(SceneItemsCamera, OrthographicSizeAsPovRayRendersIt) {
     expect_vec(c.right, {40, 0, 0}, 1e-12);
     expect_vec(c.up, {0, 30, 0}, 1e-12);
     EXPECT_EQ(error_of("camera { orthographic angle 180 }"),
-              "an orthographic camera's angle must be smaller than 180 degrees, found 180 at test.pov:1:29");
+              "an orthographic camera's angle must be smaller than 180 degrees, found 180 at "
+              "test.pov:1:29");
 }
 
 TEST(SceneItemsCamera, FocalBlur) {
-    Camera c = camera_of("aperture 0.5 blur_samples 3, 10 focal_point <0,0,5> confidence 0.95 variance 1/1000");
+    Camera c = camera_of("aperture 0.5 blur_samples 3, 10 focal_point <0,0,5> confidence 0.95 "
+                         "variance 1/1000");
     EXPECT_EQ(c.focal_blur.aperture, 0.5);
     EXPECT_EQ(c.focal_blur.min_samples, 3);
     EXPECT_EQ(c.focal_blur.max_samples, 10);
@@ -180,23 +193,26 @@ TEST(SceneItemsCamera, FocalBlur) {
     // variance 1 means the default, with a warning (POV-Ray's manual).
     EXPECT_DOUBLE_EQ(camera_of("variance 1").focal_blur.variance, 1.0 / 128);
     EXPECT_EQ(warnings_of("camera { variance 1 }"),
-              std::vector<std::string>{"test.pov:1:10: warning: focal blur variance 1 replaced by the default 1/128\n"});
+              std::vector<std::string>{"test.pov:1:10: warning: focal blur variance 1 replaced by "
+                                       "the default 1/128\n"});
     c = camera_of("aperture 1 blur_samples 5 bokeh { pigment { rgb <1, 0.5, 0> } }");
     ASSERT_TRUE(c.focal_blur.bokeh);
     EXPECT_FALSE(camera_of("bokeh { }").focal_blur.bokeh);
-    EXPECT_EQ(error_of("camera { blur_samples 0 }"), "expected an integer >= 1 after 'blur_samples', found 0 at test.pov:1:23");
+    EXPECT_EQ(error_of("camera { blur_samples 0 }"), "expected an integer >= 1 after "
+                                                     "'blur_samples', found 0 at test.pov:1:23");
     EXPECT_EQ(error_of("camera { blur_samples 10, 5 }"),
               "blur_samples: the minimum 10 is larger than the maximum 5 at test.pov:1:23");
     EXPECT_EQ(error_of("camera { bokeh { rgb 1 } }"),
-              "expected pigment or '}' to close 'bokeh' opened at test.pov:1:16, found 'rgb' at test.pov:1:18");
+              "expected pigment or '}' to close 'bokeh' opened at test.pov:1:16, found 'rgb' at "
+              "test.pov:1:18");
 }
 
 TEST(SceneItemsCamera, MeshCamera) {
     // Each mesh is read as an ordinary mesh object, here written inline (POV-Ray accepts both that
     // and `mesh { DECLARED_MESH transforms }`).
     const std::string m = "mesh { triangle { 0, x, y } }";
-    Camera c = parse("camera { mesh_camera { 2 1 100 mesh { triangle { 0, x, y } translate x } " + m +
-                     " } location -0.01*z }").camera;
+    Camera c = parse("camera { mesh_camera { 2 1 100 mesh { triangle { 0, x, y } translate x } " +
+                     m + " } location -0.01*z }").camera;
     EXPECT_EQ(c.projection, CameraProjection::mesh);
     EXPECT_EQ(c.mesh.rays_per_pixel, 2);
     EXPECT_EQ(c.mesh.distribution, 1);
@@ -210,24 +226,26 @@ TEST(SceneItemsCamera, MeshCamera) {
     // POV-Ray's checks (its messages: "Rays per pixel may not be 0", "Unrecognized distribution
     // method", "Rays per pixel must be <= number of meshes for distribution method #0", ...).
     EXPECT_EQ(error_of("camera { mesh_camera { 0 0 " + m + " } }"),
-              "expected an integer >= 1 as the mesh_camera's rays per pixel, found 0 at test.pov:1:24");
+              "expected an integer >= 1 as the mesh_camera's rays per pixel, found 0 at "
+              "test.pov:1:24");
     EXPECT_EQ(error_of("camera { mesh_camera { 1 4 " + m + " } }"),
               "unknown mesh_camera distribution 4 (expected 0, 1, 2 or 3) at test.pov:1:26");
     EXPECT_EQ(error_of("camera { mesh_camera { 1 0 } }"),
               "expected a mesh or mesh2 in the mesh_camera, found '}' at test.pov:1:28");
     EXPECT_EQ(error_of("camera { mesh_camera { 1 0 sphere { 0, 1 } } }"),
-              "expected mesh, mesh2, smooth or '}' to close 'mesh_camera' opened at test.pov:1:22, found 'sphere' at "
-              "test.pov:1:28");
+              "expected mesh, mesh2, smooth or '}' to close 'mesh_camera' opened at test.pov:1:22, "
+              "found 'sphere' at test.pov:1:28");
     EXPECT_EQ(error_of("camera { mesh_camera { 2 0 " + m + " } }"),
-              "mesh_camera distribution 0 takes at most one ray per pixel per mesh: 2 rays per pixel, 1 meshes at "
-              "test.pov:1:24");
+              "mesh_camera distribution 0 takes at most one ray per pixel per mesh: 2 rays per "
+              "pixel, 1 meshes at test.pov:1:24");
     EXPECT_EQ(error_of("camera { mesh_camera { 2 2 " + m + " " + m + " } }"),
               "mesh_camera distribution 2 takes 1 ray per pixel, found 2 at test.pov:1:24");
     // column 58: after "camera { mesh_camera { 1 0 " (27 characters) and the 30 of the mesh.
     EXPECT_EQ(error_of("camera { mesh_camera { 1 0 " + m + " smooth } }"),
               "'smooth' needs mesh_camera distribution 3, found 0 at test.pov:1:58");
     EXPECT_EQ(error_of("camera { mesh_camera { 1 0 " + m + " } angle 30 }"),
-              "'angle' does not apply to a mesh_camera (its rays come from the mesh faces) at test.pov:1:60");
+              "'angle' does not apply to a mesh_camera (its rays come from the mesh faces) at "
+              "test.pov:1:60");
 }
 
 TEST(SceneItemsCamera, DeclaredCameraTakesTransformsOnly) {
@@ -243,10 +261,11 @@ camera { Cam translate <1, 2, 3> })");
     EXPECT_EQ(s.camera.projection_location.str(), "test.pov:2:25");
     // POV-Ray: "No matching } in 'camera', location found instead".
     EXPECT_EQ(error_of("#declare Cam = camera { }\ncamera { Cam location 0 }"),
-              "expected a transform or '}' to close 'camera' opened at test.pov:2:8 (a declared camera takes "
-              "transforms only), found 'location' at test.pov:2:14");
+              "expected a transform or '}' to close 'camera' opened at test.pov:2:8 (a declared "
+              "camera takes transforms only), found 'location' at test.pov:2:14");
     // The last camera statement is the scene's.
-    expect_vec(parse("camera { location -z } camera { location -2*z }").camera.location, {0, 0, -2});
+    const SceneDescription two = parse("camera { location -z } camera { location -2*z }");
+    expect_vec(two.camera.location, {0, 0, -2});
 }
 
 // Needs the appearance grammar's normal patterns.
@@ -303,21 +322,23 @@ global_settings { max_intersections 200 })").global;
     EXPECT_EQ(parse("global_settings { max_trace_level 0 }").global.max_trace_level, 0);
     EXPECT_EQ(warnings_of("global_settings { hf_gray_16 on }"),
               std::vector<std::string>{
-                  "test.pov:1:19: warning: hf_gray_16 is deprecated in POV-Ray 3.7 and has no effect\n"});
+                  "test.pov:1:19: warning: hf_gray_16 is deprecated in POV-Ray 3.7 and has no "
+                  "effect\n"});
 }
 
 TEST(SceneItemsGlobalSettings, Errors) {
     EXPECT_EQ(error_of("global_settings { noise_generator 4 }"),
               "global_settings noise_generator must be in [1, 3], found 4 at test.pov:1:35");
-    EXPECT_EQ(error_of("global_settings { assumed_gamma 0 }"), "assumed_gamma must be positive, found 0 at test.pov:1:33");
+    EXPECT_EQ(error_of("global_settings { assumed_gamma 0 }"), "assumed_gamma must be positive, "
+                                                               "found 0 at test.pov:1:33");
     EXPECT_EQ(error_of("global_settings { charset latin1 }"),
               "expected ascii, utf8 or sys after 'charset', found 'latin1' at test.pov:1:27");
     EXPECT_EQ(error_of("global_settings { max_trace_level 1e12 }"),
-              "global_settings max_trace_level must be a whole number of at most 10 digits, found 1000000000000 at "
-              "test.pov:1:35");
+              "global_settings max_trace_level must be a whole number of at most 10 digits, found "
+              "1000000000000 at test.pov:1:35");
     EXPECT_EQ(error_of("global_settings { photon { } }"),
-              "unknown identifier 'photon' (expected a global setting or '}' to close 'global_settings' opened at "
-              "test.pov:1:17) at test.pov:1:19");
+              "unknown identifier 'photon' (expected a global setting or '}' to close "
+              "'global_settings' opened at test.pov:1:17) at test.pov:1:19");
 }
 
 TEST(SceneItemsGlobalSettings, RadiosityEveryKey) {
@@ -331,7 +352,8 @@ TEST(SceneItemsGlobalSettings, RadiosityEveryKey) {
     EXPECT_EQ(defaults.pretrace_end, 0.04);
     EXPECT_EQ(defaults.recursion_limit, 2);
     const GlobalSettings g = parse(R"(global_settings { radiosity {
-  adc_bailout 0.005 always_sample on brightness 1.5 count 100, 1000 error_bound 0.5 gray_threshold 0.3
+  adc_bailout 0.005 always_sample on brightness 1.5 count 100, 1000 error_bound 0.5
+  gray_threshold 0.3
   low_error_factor 0.4 max_sample 2 maximum_reuse 0.3 minimum_reuse 0.01 nearest_count 8 4 normal on
   media on subsurface off pretrace_start 0.1 pretrace_end 0.02 recursion_limit 3
   save_file "a.rad" load_file "b.rad" } })").global;
@@ -359,43 +381,52 @@ TEST(SceneItemsGlobalSettings, RadiosityEveryKey) {
     EXPECT_EQ(r.load_file, "b.rad");
     // A second block goes on from the first.
     const GlobalSettings twice =
-        parse("global_settings { radiosity { count 50 } } global_settings { radiosity { brightness 2 } }").global;
+        parse("global_settings { radiosity { count 50 } } global_settings { radiosity { brightness "
+              "2 } }").global;
     EXPECT_EQ(twice.radiosity->count, 50);
     EXPECT_EQ(twice.radiosity->brightness, 2);
     EXPECT_EQ(warnings_of("global_settings { radiosity { minimum_reuse 0.15 } }"),
               std::vector<std::string>{
-                  "test.pov:1:19: warning: radiosity maximum_reuse should be at least twice minimum_reuse\n"});
+                  "test.pov:1:19: warning: radiosity maximum_reuse should be at least twice "
+                  "minimum_reuse\n"});
 }
 
 TEST(SceneItemsGlobalSettings, RadiosityErrorsAsPovRay) {
     auto radiosity_error = [](const std::string& items) {
         return error_of("global_settings { radiosity { " + items + " } }");
     };
-    EXPECT_EQ(radiosity_error("count 0"), "expected an integer >= 1 after 'count', found 0 at test.pov:1:37");
-    EXPECT_EQ(radiosity_error("count 10, 5"), "radiosity count 10 is larger than its direction pool 5 at test.pov:1:41");
+    EXPECT_EQ(radiosity_error("count 0"), "expected an integer >= 1 after 'count', found 0 at "
+                                          "test.pov:1:37");
+    EXPECT_EQ(radiosity_error("count 10, 5"), "radiosity count 10 is larger than its direction "
+                                              "pool 5 at test.pov:1:41");
     EXPECT_EQ(radiosity_error("nearest_count 25"),
               "radiosity nearest_count must be in [1, 20], found 25 at test.pov:1:45");
     EXPECT_EQ(radiosity_error("nearest_count 5, 10"),
-              "radiosity nearest_count's adaptive pretrace value must be in [0, 5), found 10 at test.pov:1:48");
+              "radiosity nearest_count's adaptive pretrace value must be in [0, 5), found 10 at "
+              "test.pov:1:48");
     EXPECT_EQ(radiosity_error("recursion_limit 30"),
               "radiosity recursion_limit must be in [1, 20], found 30 at test.pov:1:47");
     EXPECT_EQ(radiosity_error("pretrace_start 2"),
               "radiosity pretrace_start must be in (0, 1], found 2 at test.pov:1:46");
-    EXPECT_EQ(radiosity_error("pretrace_end 0"), "radiosity pretrace_end must be in (0, 1], found 0 at test.pov:1:44");
-    EXPECT_EQ(radiosity_error("error_bound 0"), "radiosity error_bound must be > 0, found 0 at test.pov:1:43");
-    EXPECT_EQ(radiosity_error("brightness -1"), "radiosity brightness must be > 0, found -1 at test.pov:1:42");
+    EXPECT_EQ(radiosity_error("pretrace_end 0"), "radiosity pretrace_end must be in (0, 1], found "
+                                                 "0 at test.pov:1:44");
+    EXPECT_EQ(radiosity_error("error_bound 0"), "radiosity error_bound must be > 0, found 0 at "
+                                                "test.pov:1:43");
+    EXPECT_EQ(radiosity_error("brightness -1"), "radiosity brightness must be > 0, found -1 at "
+                                                "test.pov:1:42");
     EXPECT_EQ(radiosity_error("gray_threshold 2"),
               "radiosity gray_threshold must be in [0, 1], found 2 at test.pov:1:46");
     // A boolean here needs its value (POV-Ray: "Expected 'numeric expression', } found instead").
     EXPECT_EQ(radiosity_error("always_sample"),
               "expected a numeric expression, found '}' at test.pov:1:45");
-    // POV-Ray checks the pair when the block is read: "maximum_reuse must be larger than minimum_reuse".
+    // POV-Ray checks the pair when the block is read ("maximum_reuse must be larger than
+    // minimum_reuse").
     EXPECT_EQ(radiosity_error("minimum_reuse 0.3 maximum_reuse 0.2"),
               "radiosity maximum_reuse 0.2 must be larger than minimum_reuse 0.3 at test.pov:1:19");
     // importance belongs to objects and #default, not to global_settings.
     EXPECT_EQ(radiosity_error("importance 0.5"),
-              "expected a radiosity setting or '}' to close 'radiosity' opened at test.pov:1:29, found 'importance' "
-              "at test.pov:1:31");
+              "expected a radiosity setting or '}' to close 'radiosity' opened at test.pov:1:29, "
+              "found 'importance' at test.pov:1:31");
 }
 
 TEST(SceneItemsGlobalSettings, PhotonsEveryKey) {
@@ -429,7 +460,8 @@ TEST(SceneItemsGlobalSettings, PhotonsEveryKey) {
     EXPECT_EQ(p.media_radius, 3);
     EXPECT_EQ(p.media_radius_multiplier, 4);
     // radius: a comma keeps an empty place (POV-Ray's `radius ,0.5`).
-    const PhotonSettings r = *parse("global_settings { photons { radius ,0.5,,3 count 10 } }").global.photons;
+    const PhotonSettings r =
+        *parse("global_settings { photons { radius ,0.5,,3 count 10 } }").global.photons;
     EXPECT_EQ(r.radius, 0);
     EXPECT_EQ(r.radius_multiplier, 0.5);
     EXPECT_EQ(r.media_radius, 0);
@@ -438,8 +470,9 @@ TEST(SceneItemsGlobalSettings, PhotonsEveryKey) {
     // Both files: POV-Ray loads, with a warning.
     const std::string both = "global_settings { photons { save_file \"a\" load_file \"b\" } }";
     EXPECT_EQ(parse(both).global.photons->save_file, "");
-    EXPECT_EQ(warnings_of(both), std::vector<std::string>{"test.pov:1:19: warning: photons: both save_file and "
-                                                           "load_file given; the map is loaded (as POV-Ray does)\n"});
+    EXPECT_EQ(warnings_of(both),
+              std::vector<std::string>{"test.pov:1:19: warning: photons: both save_file and "
+                                       "load_file given; the map is loaded (as POV-Ray does)\n"});
     EXPECT_EQ(error_of("global_settings { photons { gather 100, 20 } }"),
               "photons gather: the minimum 100 must be less than the maximum 20 at test.pov:1:36");
     EXPECT_EQ(error_of("global_settings { photons { gather 20 } }"),
@@ -452,7 +485,8 @@ TEST(SceneItemsGlobalSettings, Subsurface) {
     EXPECT_EQ(empty.subsurface->diffuse_samples, 50);
     EXPECT_EQ(empty.subsurface->single_samples, 50);
     EXPECT_FALSE(empty.subsurface->radiosity);
-    const SubsurfaceSettings s = *parse("global_settings { subsurface { samples 10, 20 radiosity on } }").global.subsurface;
+    const SubsurfaceSettings s = *parse("global_settings { subsurface { samples 10, 20 radiosity "
+                                        "on } }").global.subsurface;
     EXPECT_EQ(s.diffuse_samples, 10);
     EXPECT_EQ(s.single_samples, 20);
     EXPECT_TRUE(s.radiosity);
@@ -479,7 +513,8 @@ TEST(SceneItemsAtmosphere, FogKeysAndDefaults) {
     EXPECT_EQ(defaults.turb_depth, 0.5);
     expect_vec(defaults.up, {0, 1, 0});
     EXPECT_EQ(defaults.location.str(), "test.pov:1:1");
-    const Fog f = parse(R"(fog { fog_type 2 distance 150 rgbf <0.5, 0.6, 0.7, 0.2> turbulence 0.5 octaves 3
+    const Fog f = parse(R"(fog { fog_type 2 distance 150 rgbf <0.5, 0.6, 0.7, 0.2> turbulence 0.5
+  octaves 3
   omega 0.3 lambda 3 turb_depth 0.2 fog_offset 25 fog_alt 1.5 })").atmosphere.fogs.at(0);
     EXPECT_EQ(f.fog_type, 2);
     EXPECT_EQ(f.distance, 150);
@@ -503,7 +538,9 @@ TEST(SceneItemsAtmosphere, FogKeysAndDefaults) {
 TEST(SceneItemsAtmosphere, FogUpTurnsWithTheTransformsBeforeIt) {
     // In POV-Ray 3.7 renders of a ground fog, `rotate -90*z up y` thins along y and
     // `up y rotate -90*z` along x; translate leaves up alone; `up 2*y` renders as `up y`.
-    auto up_of = [](const std::string& items) { return parse("fog { " + items + " }").atmosphere.fogs.at(0).up; };
+    auto up_of = [](const std::string& items) {
+        return parse("fog { " + items + " }").atmosphere.fogs.at(0).up;
+    };
     expect_vec(up_of("rotate -90*z up y"), {0, 1, 0});
     expect_vec(up_of("up y rotate -90*z"), {1, 0, 0}, 1e-15);
     expect_vec(up_of("up y translate 3*y"), {0, 1, 0});
@@ -513,19 +550,21 @@ TEST(SceneItemsAtmosphere, FogUpTurnsWithTheTransformsBeforeIt) {
 }
 
 TEST(SceneItemsAtmosphere, FogIdentifier) {
-    const SceneDescription s = parse("#declare F = fog { distance 10 rgb 1 up x }\nfog { F fog_type 2 rotate 90*z }");
+    const SceneDescription s = parse("#declare F = fog { distance 10 rgb 1 up x }\nfog { F "
+                                     "fog_type 2 rotate 90*z }");
     const Fog& f = s.atmosphere.fogs.at(0);
     EXPECT_EQ(f.distance, 10);
     EXPECT_EQ(f.fog_type, 2);
     expect_vec(f.up, {0, 1, 0}, 1e-15);  // rotate 90*z takes +x to +y
     EXPECT_EQ(f.location.str(), "test.pov:2:1");
     EXPECT_EQ(error_of("fog { fog_offset 1 spacing 2 }"),
-              "expected a fog keyword, a colour or '}' to close 'fog' opened at test.pov:1:5, found 'spacing' at "
-              "test.pov:1:20");
+              "expected a fog keyword, a colour or '}' to close 'fog' opened at test.pov:1:5, "
+              "found 'spacing' at test.pov:1:20");
 }
 
 TEST(SceneItemsAtmosphere, RainbowKeysAndChecks) {
-    const Rainbow r = parse(R"(rainbow { direction <0, 0, 1> angle 42.5 width 5 distance 1000 jitter 0.01
+    const Rainbow r = parse(R"(rainbow { direction <0, 0, 1> angle 42.5 width 5 distance 1000
+  jitter 0.01
   up <0, 1, 0> arc_angle 120 falloff_angle 30 })").atmosphere.rainbows.at(0);
     expect_vec(r.direction, {0, 0, 1});
     EXPECT_EQ(r.angle, 42.5);
@@ -541,15 +580,18 @@ TEST(SceneItemsAtmosphere, RainbowKeysAndChecks) {
     EXPECT_EQ(defaults.jitter, 0);
     expect_vec(defaults.up, {0, 1, 0});
     // Identifiers take further keys; rainbows add up.
-    const SceneDescription s = parse("#declare R = rainbow { direction z angle 40 }\nrainbow { R width 3 } rainbow { R }");
+    const SceneDescription s = parse("#declare R = rainbow { direction z angle 40 }\nrainbow { R "
+                                     "width 3 } rainbow { R }");
     ASSERT_EQ(s.atmosphere.rainbows.size(), 2u);
     EXPECT_EQ(s.atmosphere.rainbows[0].angle, 40);
     EXPECT_EQ(s.atmosphere.rainbows[0].width, 3);
     EXPECT_EQ(s.atmosphere.rainbows[1].location.str(), "test.pov:2:23");
     // POV-Ray's checks ("Rainbow's direction vector is zero.", "Rainbow's up and direction vector
     // are co-linear.", "Illegal arc angle in rainbow", "Arc angle is smaller than falloff angle").
-    EXPECT_EQ(error_of("rainbow { }"), "the rainbow's direction is zero (or not given) at test.pov:1:1");
-    EXPECT_EQ(error_of("rainbow { direction z up 0 }"), "the rainbow's up vector is zero at test.pov:1:1");
+    EXPECT_EQ(error_of("rainbow { }"), "the rainbow's direction is zero (or not given) at "
+                                       "test.pov:1:1");
+    EXPECT_EQ(error_of("rainbow { direction z up 0 }"), "the rainbow's up vector is zero at "
+                                                        "test.pov:1:1");
     EXPECT_EQ(error_of("rainbow { direction z up -2*z }"),
               "the rainbow's up and direction vectors are parallel at test.pov:1:1");
     EXPECT_EQ(error_of("rainbow { direction z arc_angle 400 }"),
@@ -558,31 +600,34 @@ TEST(SceneItemsAtmosphere, RainbowKeysAndChecks) {
               "the rainbow's falloff_angle must be in [0, 360] degrees, found -10 at test.pov:1:1");
     EXPECT_EQ(error_of("rainbow { direction z arc_angle 100 falloff_angle 120 }"),
               "the rainbow's falloff_angle 120 is larger than its arc_angle 100 at test.pov:1:1");
-    // No transforms and no colour in a rainbow (POV-Ray: "No matching } in 'rainbow', rotate found").
+    // No transforms and no colour in a rainbow (POV-Ray: "No matching } in 'rainbow', rotate
+    // found").
     EXPECT_EQ(error_of("rainbow { direction z rotate x }"),
-              "expected a rainbow keyword or '}' to close 'rainbow' opened at test.pov:1:9, found 'rotate' at "
-              "test.pov:1:23");
+              "expected a rainbow keyword or '}' to close 'rainbow' opened at test.pov:1:9, found "
+              "'rotate' at test.pov:1:23");
 }
 
 // Needs the appearance grammar's colour maps and media.
 TEST(SceneItemsAtmosphere, DISABLED_RainbowColourMapAndAtmosphericMedia) {
     const SceneDescription s = parse(R"(
-rainbow { direction z angle 42 width 5 color_map { [0 rgbt <1, 0, 0, 0.5>] [1 rgbt <0, 0, 1, 0.5>] } }
+rainbow { direction z angle 42 width 5
+  color_map { [0 rgbt <1, 0, 0, 0.5>] [1 rgbt <0, 0, 1, 0.5>] } }
 media { scattering { 1, 0.1 } }
 media { absorption 1 })");
     EXPECT_TRUE(s.atmosphere.rainbows.at(0).colour_map.item);
     ASSERT_EQ(s.atmosphere.media.size(), 2u);
     EXPECT_TRUE(s.atmosphere.media[1].media);
-    EXPECT_EQ(s.atmosphere.media[1].location.str(), "test.pov:4:1");
+    EXPECT_EQ(s.atmosphere.media[1].location.str(), "test.pov:5:1");
 }
 
 TEST(SceneItemsAtmosphere, SkySphere) {
     const SceneDescription s = parse(R"(
 sky_sphere { pigment { rgb <1, 0, 0> } }
-sky_sphere { rotate 90*y pigment { rgb <0, 0, 1> } pigment { rgbt <0, 1, 0, 0.5> } emission rgb <0.8, 0.8, 1>
-  translate y })");
+sky_sphere { rotate 90*y pigment { rgb <0, 0, 1> } pigment { rgbt <0, 1, 0, 0.5> }
+  emission rgb <0.8, 0.8, 1> translate y })");
     ASSERT_TRUE(s.atmosphere.sky_sphere);
-    const SkySphere& sky = *s.atmosphere.sky_sphere;  // the last one replaces the first (POV-Ray renders it so)
+    // The last sky sphere replaces the first (POV-Ray renders it so).
+    const SkySphere& sky = *s.atmosphere.sky_sphere;
     ASSERT_EQ(sky.pigments.size(), 2u);
     EXPECT_EQ(sky.pigments[0]->colour.blue, 1);
     EXPECT_EQ(sky.pigments[1]->colour.transmit, 0.5);
@@ -591,10 +636,12 @@ sky_sphere { rotate 90*y pigment { rgb <0, 0, 1> } pigment { rgbt <0, 1, 0, 0.5>
     // `rotate 90*y` the same in both places): +z turns to +x, then moves up 1.
     expect_vec(sky.transform.point({0, 0, 1}), {1, 1, 0}, 1e-15);
     EXPECT_EQ(sky.location.str(), "test.pov:3:1");
-    EXPECT_EQ(parse("sky_sphere { pigment { rgb 1 } emission 2 }").atmosphere.sky_sphere->emission.green, 2);
+    const SceneDescription bright = parse("sky_sphere { pigment { rgb 1 } emission 2 }");
+    EXPECT_EQ(bright.atmosphere.sky_sphere->emission.green, 2);
     // A declared sky sphere takes more layers and transforms.
     const SceneDescription layered =
-        parse("#declare S = sky_sphere { pigment { rgb 1 } scale 2 }\nsky_sphere { S pigment { rgbt 0.5 } }");
+        parse("#declare S = sky_sphere { pigment { rgb 1 } scale 2 }\nsky_sphere { S pigment { "
+              "rgbt 0.5 } }");
     EXPECT_EQ(layered.atmosphere.sky_sphere->pigments.size(), 2u);
     expect_vec(layered.atmosphere.sky_sphere->transform.point({1, 1, 1}), {2, 2, 2});
     // POV-Ray: "Empty sky_sphere statement."

@@ -65,8 +65,8 @@ SkySphereRef parse_sky_sphere(Parser& parser, const Token& keyword);
 void parse_global_settings(Parser& parser, const Token& keyword);
 void parse_atmospheric_media(Parser& parser, const Token& keyword);
 // A top-level statement other than an object (camera, global_settings, background, fog,
-// rainbow, sky_sphere, media, default, ray_source, illuminance_receiver) whose keyword was just taken,
-// added to the scene; false (nothing read) when `keyword` starts none of them.
+// rainbow, sky_sphere, media, default, ray_source, illuminance_receiver) whose keyword was just
+// taken, added to the scene; false (nothing read) when `keyword` starts none of them.
 bool parse_scene_statement(Parser& parser, const Token& keyword);
 
 }  // namespace rayset::tracer

@@ -62,25 +62,28 @@ bool parse_rainbow_key(Parser& p, const Token& token, Rainbow& rainbow) {
     else if (token.is(Keyword::up)) rainbow.up = p.parse_vector();
     else if (token.is(Keyword::arc_angle)) rainbow.arc_angle = p.parse_float(after);
     else if (token.is(Keyword::falloff_angle)) rainbow.falloff_angle = p.parse_float(after);
-    else if (token.is(Keyword::color_map) || token.is(Keyword::colour_map)) rainbow.colour_map = parse_colour_map(p, token);
+    else if (token.is(Keyword::color_map) || token.is(Keyword::colour_map))
+        rainbow.colour_map = parse_colour_map(p, token);
     else return false;
     return true;
 }
 
 // POV-Ray's checks once the block is read.
 void check_rainbow(Parser& p, const Token& keyword, const Rainbow& rainbow) {
-    if (length(rainbow.direction) == 0) p.fail(keyword, "the rainbow's direction is zero (or not given)");
+    if (length(rainbow.direction) == 0)
+        p.fail(keyword, "the rainbow's direction is zero (or not given)");
     if (length(rainbow.up) == 0) p.fail(keyword, "the rainbow's up vector is zero");
     if (length(cross(rainbow.up, rainbow.direction)) == 0)
         p.fail(keyword, "the rainbow's up and direction vectors are parallel");
     if (!(rainbow.arc_angle >= 0 && rainbow.arc_angle <= 360))
-        p.fail(keyword, fmt::format("the rainbow's arc_angle must be in [0, 360] degrees, found {}", rainbow.arc_angle));
+        p.fail(keyword, fmt::format("the rainbow's arc_angle must be in [0, 360] degrees, found {}",
+                                    rainbow.arc_angle));
     if (!(rainbow.falloff_angle >= 0 && rainbow.falloff_angle <= 360))
-        p.fail(keyword, fmt::format("the rainbow's falloff_angle must be in [0, 360] degrees, found {}",
-                                    rainbow.falloff_angle));
+        p.fail(keyword, fmt::format("the rainbow's falloff_angle must be in [0, 360] degrees, "
+                                    "found {}", rainbow.falloff_angle));
     if (rainbow.falloff_angle > rainbow.arc_angle)
-        p.fail(keyword, fmt::format("the rainbow's falloff_angle {} is larger than its arc_angle {}",
-                                    rainbow.falloff_angle, rainbow.arc_angle));
+        p.fail(keyword, fmt::format("the rainbow's falloff_angle {} is larger than its arc_angle "
+                                    "{}", rainbow.falloff_angle, rainbow.arc_angle));
 }
 
 }  // namespace
@@ -103,8 +106,8 @@ FogRef parse_fog(Parser& p, const Token& keyword) {
         }
         p.next();
         if (!parse_fog_key(p, token, *fog))
-            p.fail_identifier(token, fmt::format("a fog keyword, a colour or '}}' to close 'fog' opened at {}",
-                                                 p.location_of(open).str()));
+            p.fail_identifier(token, fmt::format("a fog keyword, a colour or '}}' to close 'fog' "
+                                                 "opened at {}", p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     // POV-Ray measures heights along the unit up vector (`up 2*y` renders as `up y`).
@@ -123,8 +126,8 @@ RainbowRef parse_rainbow(Parser& p, const Token& keyword) {
     while (!p.peek_is(Symbol::rbrace)) {
         const Token token = p.next();
         if (!parse_rainbow_key(p, token, *rainbow))
-            p.fail_identifier(token, fmt::format("a rainbow keyword or '}}' to close 'rainbow' opened at {}",
-                                                 p.location_of(open).str()));
+            p.fail_identifier(token, fmt::format("a rainbow keyword or '}}' to close 'rainbow' "
+                                                 "opened at {}", p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     check_rainbow(p, keyword, *rainbow);
@@ -149,8 +152,9 @@ SkySphereRef parse_sky_sphere(Parser& p, const Token& keyword) {
         if (token.is(Keyword::pigment)) sky->pigments.push_back(parse_pigment(p, token));
         else if (token.is(Keyword::emission)) sky->emission = p.parse_colour().rgb();
         else
-            p.fail_identifier(token, fmt::format("pigment, emission, a transform or '}}' to close 'sky_sphere' opened "
-                                                 "at {}", p.location_of(open).str()));
+            p.fail_identifier(token, fmt::format("pigment, emission, a transform or '}}' to close "
+                                                 "'sky_sphere' opened at {}",
+                                                 p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     if (sky->pigments.empty()) p.fail(keyword, "the sky_sphere has no pigment");

@@ -64,9 +64,10 @@ void parse_mesh_camera(Parser& p, const Token& keyword, MeshCamera& mesh) {
     const Token distribution_token = p.peek();
     mesh.distribution = p.parse_int("as the mesh_camera's distribution", 0);
     if (mesh.distribution > 3)
-        p.fail(distribution_token,
-               fmt::format("unknown mesh_camera distribution {} (expected 0, 1, 2 or 3)", mesh.distribution));
-    if (p.starts_expression(p.peek())) mesh.max_distance = p.parse_float("as the mesh_camera's max distance");
+        p.fail(distribution_token, fmt::format("unknown mesh_camera distribution {} (expected 0, "
+                                               "1, 2 or 3)", mesh.distribution));
+    if (p.starts_expression(p.peek()))
+        mesh.max_distance = p.parse_float("as the mesh_camera's max distance");
     Token smooth_token;
     for (;;) {
         const Token token = p.peek();
@@ -77,20 +78,25 @@ void parse_mesh_camera(Parser& p, const Token& keyword, MeshCamera& mesh) {
             smooth_token = p.next();
             mesh.smooth = true;
         } else {
-            p.fail_identifier(token, fmt::format("mesh, mesh2, smooth or '}}' to close 'mesh_camera' opened at {}",
+            p.fail_identifier(token, fmt::format("mesh, mesh2, smooth or '}}' to close "
+                                                 "'mesh_camera' opened at {}",
                                                  p.location_of(open).str()));
         }
     }
     if (mesh.meshes.empty()) p.fail_expected("a mesh or mesh2 in the mesh_camera", p.peek());
     p.expect_close(keyword, open);
     if (mesh.distribution == 0 && mesh.rays_per_pixel > static_cast<int>(mesh.meshes.size()))
-        p.fail(rays_token, fmt::format("mesh_camera distribution 0 takes at most one ray per pixel per mesh: {} "
-                                       "rays per pixel, {} meshes", mesh.rays_per_pixel, mesh.meshes.size()));
+        p.fail(rays_token, fmt::format("mesh_camera distribution 0 takes at most one ray per "
+                                       "pixel per mesh: {} rays per pixel, {} meshes",
+                                       mesh.rays_per_pixel, mesh.meshes.size()));
     if (mesh.distribution >= 2 && mesh.rays_per_pixel != 1)
-        p.fail(rays_token, fmt::format("mesh_camera distribution {} takes 1 ray per pixel, found {}",
+        p.fail(rays_token, fmt::format("mesh_camera distribution {} takes 1 ray per pixel, "
+                                       "found {}",
                                        mesh.distribution, mesh.rays_per_pixel));
     if (mesh.smooth && mesh.distribution != 3)
-        p.fail(smooth_token, fmt::format("'smooth' needs mesh_camera distribution 3, found {}", mesh.distribution));
+        p.fail(smooth_token,
+               fmt::format("'smooth' needs mesh_camera distribution 3, found {}",
+                           mesh.distribution));
 }
 
 // The projection keyword(s) that may open the block; a later one replaces an earlier one.
@@ -101,9 +107,10 @@ void parse_projection(Parser& p, Camera& camera) {
         camera.projection_location = p.location_of(token);
         if (entry->projection == CameraProjection::cylinder) {
             const Token at = p.peek();
-            camera.cylinder_type = static_cast<int>(std::trunc(p.parse_float("as the cylinder camera's type")));
-            if (camera.cylinder_type < 1 || camera.cylinder_type > 4)
-                p.fail(at, fmt::format("cylinder camera type {} (expected 1, 2, 3 or 4)", camera.cylinder_type));
+            const double type = std::trunc(p.parse_float("as the cylinder camera's type"));
+            if (!(type >= 1 && type <= 4))
+                p.fail(at, fmt::format("cylinder camera type {} (expected 1, 2, 3 or 4)", type));
+            camera.cylinder_type = static_cast<int>(type);
         } else if (entry->projection == CameraProjection::mesh) {
             camera.mesh = MeshCamera{};
             parse_mesh_camera(p, token, camera.mesh);
@@ -114,10 +121,12 @@ void parse_projection(Parser& p, Camera& camera) {
 // angle H: an orthographic camera's value is optional, a spherical camera takes a vertical one too.
 void parse_angle(Parser& p, const Token& keyword, const Camera& camera, CameraItems& items) {
     if (camera.projection == CameraProjection::mesh)
-        p.fail(keyword, "'angle' does not apply to a mesh_camera (its rays come from the mesh faces)");
+        p.fail(keyword,
+               "'angle' does not apply to a mesh_camera (its rays come from the mesh faces)");
     items.angle_given = true;
     items.angle_token = p.peek();
-    if (camera.projection == CameraProjection::orthographic && !p.starts_expression(p.peek())) return;
+    const bool orthographic = camera.projection == CameraProjection::orthographic;
+    if (orthographic && !p.starts_expression(p.peek())) return;
     const bool spherical = camera.projection == CameraProjection::spherical;
     items.angle = p.parse_float("after 'angle'");
     if (*items.angle < 0)
@@ -127,8 +136,9 @@ void parse_angle(Parser& p, const Token& keyword, const Camera& camera, CameraIt
     const Token vertical_token = p.peek();
     items.vertical_angle = p.parse_float("as the vertical angle");
     if (*items.vertical_angle < 0)
-        p.fail(vertical_token, fmt::format("the camera's vertical angle must not be negative, found {}",
-                                           *items.vertical_angle));
+        p.fail(vertical_token,
+               fmt::format("the camera's vertical angle must not be negative, found {}",
+                           *items.vertical_angle));
 }
 
 // blur_samples [MIN,] MAX: POV-Ray's minimum is 4 below 7 samples, else 7.
@@ -143,8 +153,9 @@ void parse_blur_samples(Parser& p, FocalBlur& blur) {
     blur.min_samples = first;
     blur.max_samples = p.parse_int("as the maximum of 'blur_samples'", 1);
     if (blur.min_samples > blur.max_samples)
-        p.fail(first_token, fmt::format("blur_samples: the minimum {} is larger than the maximum {}", blur.min_samples,
-                                        blur.max_samples));
+        p.fail(first_token, fmt::format("blur_samples: the minimum {} is larger than the "
+                                        "maximum {}",
+                                        blur.min_samples, blur.max_samples));
 }
 
 // bokeh { pigment { } }
@@ -199,19 +210,30 @@ bool parse_camera_item(Parser& p, Camera& camera, CameraItems& items) {
     const Token token = p.peek();
     if (p.parse_transform_item(items.transform)) return true;
     if (parse_focal_blur_item(p, camera)) return true;
-    if (token.is(Keyword::location)) p.next(), camera.location = p.parse_vector();
-    else if (token.is(Keyword::direction)) p.next(), camera.direction = p.parse_vector();
-    else if (token.is(Keyword::up)) p.next(), camera.up = p.parse_vector(), items.up_or_right_given = true;
-    else if (token.is(Keyword::right)) p.next(), camera.right = p.parse_vector(), items.up_or_right_given = true;
-    else if (token.is(Keyword::sky)) p.next(), camera.sky = p.parse_vector();
-    else if (token.is(Keyword::look_at)) p.next(), items.look_at_token = token, items.look_at = p.parse_vector();
-    else if (token.is(Keyword::angle)) p.next(), parse_angle(p, token, camera, items);
-    else if (token.is(Keyword::normal)) {
-        p.next();
-        camera.normal = parse_normal(p, token);
+    const struct {
+        Keyword keyword;
+        Vec3* vector;
+    } vectors[] = {{Keyword::location, &camera.location}, {Keyword::direction, &camera.direction},
+                   {Keyword::up, &camera.up},             {Keyword::right, &camera.right},
+                   {Keyword::sky, &camera.sky}};
+    for (const auto& entry : vectors)
+        if (token.is(entry.keyword)) {
+            p.next();
+            *entry.vector = p.parse_vector();
+            if (token.is(Keyword::up) || token.is(Keyword::right)) items.up_or_right_given = true;
+            return true;
+        }
+    if (token.is(Keyword::look_at)) {
+        items.look_at_token = p.next();
+        items.look_at = p.parse_vector();
+    } else if (token.is(Keyword::angle)) {
+        parse_angle(p, p.next(), camera, items);
+    } else if (token.is(Keyword::normal)) {
+        camera.normal = parse_normal(p, p.next());
         camera.normal_location = p.location_of(token);
     } else if (projection_of(token)) {
-        p.fail(token, fmt::format("the camera type '{}' must come first in the camera", p.word(token)));
+        p.fail(token,
+               fmt::format("the camera type '{}' must come first in the camera", p.word(token)));
     } else {
         return false;
     }
@@ -226,10 +248,11 @@ void apply_look_at(Parser& p, Camera& camera, Vec3 look_at, const Token& look_at
     const double right_length = length(camera.right);
     const double handedness = dot(cross(camera.up, camera.direction), camera.right);
     Vec3 direction = look_at - camera.location;
-    if (dot(direction, direction) < 1e-10) p.fail(look_at_token, "camera location and look_at must differ");
+    if (dot(direction, direction) < 1e-10)
+        p.fail(look_at_token, "camera location and look_at must differ");
     direction = normalized(direction);
     Vec3 right = cross(camera.sky, direction);
-    if (length(right) < 1e-10) right = camera.right;  // sky parallel to the view: keep the old right
+    if (length(right) < 1e-10) right = camera.right;  // sky along the view: keep the old right
     right = normalized(right);
     camera.up = up_length * cross(direction, right);
     camera.direction = direction_length * direction;
@@ -250,14 +273,16 @@ void apply_angle(Parser& p, Camera& camera, const CameraItems& items) {
     }
     if (!items.angle || *items.angle == 0) return;
     if (*items.angle >= 180)
-        p.fail(items.angle_token, fmt::format("{} camera's angle must be smaller than 180 degrees, found {}",
-                                              camera.projection == CameraProjection::perspective ? "a perspective"
-                                                                                                 : "an orthographic",
-                                              *items.angle));
+        p.fail(items.angle_token,
+               fmt::format("{} camera's angle must be smaller than 180 degrees, found {}",
+                           camera.projection == CameraProjection::perspective ? "a perspective"
+                                                                              : "an orthographic",
+                           *items.angle));
     if (length(camera.direction) == 0)
         p.fail(items.angle_token, "the camera direction is zero: 'angle' cannot set its length");
     camera.angle = *items.angle;
-    const double direction_length = length(camera.right) / std::tan(*items.angle * analytic::kPi / 360.0) / 2.0;
+    const double half_angle = *items.angle * analytic::kPi / 360.0;
+    const double direction_length = length(camera.right) / std::tan(half_angle) / 2.0;
     camera.direction = direction_length * normalized(camera.direction);
 }
 
@@ -269,7 +294,8 @@ void apply_orthographic_size(Camera& camera, const CameraItems& items) {
     if (items.up_or_right_given && !items.angle_given) return;
     const double direction_length = length(camera.direction);
     if (direction_length == 0) return;
-    const double scale = length(items.look_at.value_or(Vec3{0, 0, 1}) - camera.location) / direction_length;
+    const Vec3 look_at = items.look_at.value_or(Vec3{0, 0, 1});
+    const double scale = length(look_at - camera.location) / direction_length;
     camera.right = scale * camera.right;
     camera.up = scale * camera.up;
 }
@@ -297,8 +323,10 @@ CameraRef parse_camera(Parser& p, const Token& keyword) {
         Matrix4 transform;
         while (!p.peek_is(Symbol::rbrace))
             if (!p.parse_transform_item(transform))
-                p.fail_identifier(p.peek(), fmt::format("a transform or '}}' to close 'camera' opened at {} (a declared "
-                                                        "camera takes transforms only)", p.location_of(open).str()));
+                p.fail_identifier(p.peek(),
+                                  fmt::format("a transform or '}}' to close 'camera' opened at "
+                                              "{} (a declared camera takes transforms only)",
+                                              p.location_of(open).str()));
         p.expect_close(keyword, open);
         transform_camera(camera, transform);
         return result;
@@ -307,8 +335,8 @@ CameraRef parse_camera(Parser& p, const Token& keyword) {
     CameraItems items;
     while (!p.peek_is(Symbol::rbrace))
         if (!parse_camera_item(p, camera, items))
-            p.fail_identifier(p.peek(), fmt::format("a camera keyword or '}}' to close 'camera' opened at {}",
-                                                    p.location_of(open).str()));
+            p.fail_identifier(p.peek(), fmt::format("a camera keyword or '}}' to close 'camera' "
+                                                    "opened at {}", p.location_of(open).str()));
     p.expect_close(keyword, open);
     resolve_camera(p, camera, items);
     return result;

@@ -25,7 +25,7 @@ struct NumberKey {
     bool low_open = false;
 };
 
-// A key whose value is a boolean that must be written (`always_sample on`, not `always_sample`).
+// A key whose boolean value must be written (`always_sample on`, not `always_sample`).
 template <typename Settings>
 struct BoolKey {
     Keyword keyword;
@@ -40,18 +40,19 @@ std::string range_text(double low, double high, bool low_open) {
 
 // Reads the value of `key` (just taken as `token`) into `settings`, checking its range.
 template <typename Settings>
-void parse_number_key(Parser& p, const Token& token, const NumberKey<Settings>& key, Settings& settings,
-                      const char* block) {
+void parse_number_key(Parser& p, const Token& token, const NumberKey<Settings>& key,
+                      Settings& settings, const char* block) {
     const Token at = p.peek();
-    double value = p.parse_float(fmt::format("after '{}'", p.word(token)));
+    const std::string& name = p.word(token);
+    double value = p.parse_float(fmt::format("after '{}'", name));
     if (key.whole) value = std::trunc(value);
     const bool valid = (key.low_open ? value > key.low : value >= key.low) && value <= key.high;
     if (!valid)
-        p.fail(at, fmt::format("{} {} must be {}, found {}", block, p.word(token),
+        p.fail(at, fmt::format("{} {} must be {}, found {}", block, name,
                                range_text(key.low, key.high, key.low_open), value));
     if (key.whole && !(std::abs(value) < 2147483648.0))
-        p.fail(at, fmt::format("{} {} must be a whole number of at most 10 digits, found {}", block, p.word(token),
-                               value));
+        p.fail(at, fmt::format("{} {} must be a whole number of at most 10 digits, found {}", block,
+                               name, value));
     if (key.whole) settings.*key.whole = static_cast<int>(value);
     else settings.*key.real = value;
 }
@@ -71,18 +72,22 @@ bool parse_number_table_key(Parser& p, const Token& token, const NumberKey<Setti
 
 // True when `token` is one of the keys of `bools` (and its value was read).
 template <typename Settings, size_t N>
-bool parse_bool_table_key(Parser& p, const Token& token, const BoolKey<Settings> (&bools)[N], Settings& settings) {
+bool parse_bool_table_key(Parser& p, const Token& token, const BoolKey<Settings> (&bools)[N],
+                          Settings& settings) {
     for (const BoolKey<Settings>& key : bools)
         if (token.is(key.keyword)) {
             p.next();
-            settings.*key.member = p.parse_float(fmt::format("after '{}' (on or off)", p.word(token))) != 0;
+            const std::string purpose = fmt::format("after '{}' (on or off)", p.word(token));
+            settings.*key.member = p.parse_float(purpose) != 0;
             return true;
         }
     return false;
 }
 
 // `KEY first [,] [second]`: whether a second value follows.
-bool second_value_follows(Parser& p) { return p.accept(Symbol::comma) || p.starts_expression(p.peek()); }
+bool second_value_follows(Parser& p) {
+    return p.accept(Symbol::comma) || p.starts_expression(p.peek());
+}
 
 using Radiosity = RadiositySettings;
 const NumberKey<Radiosity> kRadiosityNumbers[] = {
@@ -105,20 +110,21 @@ const BoolKey<Radiosity> kRadiosityBools[] = {
     {Keyword::subsurface, &Radiosity::subsurface},
 };
 
-// count N [, POOL] and nearest_count N [, ADAPTIVE], with POV-Ray's rules between the two values.
-void parse_radiosity_counts(Parser& p, const Token& token, Radiosity& r) {
+// count N [, POOL]: the pool of directions holds at least N.
+void parse_radiosity_count(Parser& p, Radiosity& r) {
+    r.count = p.parse_int("after 'count'", 1);
+    r.direction_pool = 0;
+    if (!second_value_follows(p)) return;
     const Token at = p.peek();
-    if (token.is(Keyword::count)) {
-        r.count = p.parse_int("after 'count'", 1);
-        r.direction_pool = 0;
-        if (!second_value_follows(p)) return;
-        const Token pool_at = p.peek();
-        r.direction_pool = p.parse_int("as the direction pool of 'count'", 1);
-        if (r.direction_pool < r.count)
-            p.fail(pool_at, fmt::format("radiosity count {} is larger than its direction pool {}", r.count,
-                                        r.direction_pool));
-        return;
-    }
+    r.direction_pool = p.parse_int("as the direction pool of 'count'", 1);
+    if (r.direction_pool < r.count)
+        p.fail(at, fmt::format("radiosity count {} is larger than its direction pool {}", r.count,
+                               r.direction_pool));
+}
+
+// nearest_count N [, ADAPTIVE]: N in 1..20, ADAPTIVE in [0, N).
+void parse_radiosity_nearest_count(Parser& p, Radiosity& r) {
+    const Token at = p.peek();
     const double nearest = std::trunc(p.parse_float("after 'nearest_count'"));
     if (!(nearest >= 1 && nearest <= 20))
         p.fail(at, fmt::format("radiosity nearest_count must be in [1, 20], found {}", nearest));
@@ -126,10 +132,10 @@ void parse_radiosity_counts(Parser& p, const Token& token, Radiosity& r) {
     r.adaptive_nearest_count = 0;
     if (!second_value_follows(p)) return;
     const Token adaptive_at = p.peek();
-    const double adaptive = std::trunc(p.parse_float("as the adaptive pretrace value of 'nearest_count'"));
+    const double adaptive = std::trunc(p.parse_float("as the adaptive value of 'nearest_count'"));
     if (!(adaptive >= 0 && adaptive < r.nearest_count))
-        p.fail(adaptive_at, fmt::format("radiosity nearest_count's adaptive pretrace value must be in [0, {}), "
-                                        "found {}", r.nearest_count, adaptive));
+        p.fail(adaptive_at, fmt::format("radiosity nearest_count's adaptive pretrace value must be "
+                                        "in [0, {}), found {}", r.nearest_count, adaptive));
     r.adaptive_nearest_count = static_cast<int>(adaptive);
 }
 
@@ -144,18 +150,19 @@ void parse_radiosity(Parser& p, const Token& keyword, GlobalSettings& g) {
             parse_bool_table_key(p, token, kRadiosityBools, r))
             continue;
         p.next();
-        if (token.is(Keyword::count) || token.is(Keyword::nearest_count)) parse_radiosity_counts(p, token, r);
+        if (token.is(Keyword::count)) parse_radiosity_count(p, r);
+        else if (token.is(Keyword::nearest_count)) parse_radiosity_nearest_count(p, r);
         else if (token.is(Keyword::save_file)) r.save_file = p.parse_string();
         else if (token.is(Keyword::load_file)) r.load_file = p.parse_string();
         else
-            p.fail_identifier(token, fmt::format("a radiosity setting or '}}' to close 'radiosity' opened at {}",
-                                                 p.location_of(open).str()));
+            p.fail_identifier(token, fmt::format("a radiosity setting or '}}' to close 'radiosity' "
+                                                 "opened at {}", p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     // POV-Ray checks the pair once the block is read, whatever the order of the two keys.
     if (r.minimum_reuse >= r.maximum_reuse)
-        p.fail(keyword, fmt::format("radiosity maximum_reuse {} must be larger than minimum_reuse {}", r.maximum_reuse,
-                                    r.minimum_reuse));
+        p.fail(keyword, fmt::format("radiosity maximum_reuse {} must be larger than minimum_reuse "
+                                    "{}", r.maximum_reuse, r.minimum_reuse));
     if (r.minimum_reuse > r.maximum_reuse / 2)
         p.warn(keyword, "radiosity maximum_reuse should be at least twice minimum_reuse");
 }
@@ -183,27 +190,40 @@ void parse_photon_pair(Parser& p, const Token& token, PhotonSettings& photons) {
     p.accept_comma();
     photons.gather_max = p.parse_int("as the maximum of 'gather'", 0);
     if (photons.gather_min >= photons.gather_max)
-        p.fail(at, fmt::format("photons gather: the minimum {} must be less than the maximum {}", photons.gather_min,
-                               photons.gather_max));
+        p.fail(at, fmt::format("photons gather: the minimum {} must be less than the maximum {}",
+                               photons.gather_min, photons.gather_max));
 }
 
 // One key of the photons block (just taken as `token`); false when it is none.
 bool parse_photon_key(Parser& p, const Token& token, PhotonSettings& photons) {
     const std::string after = fmt::format("after '{}'", p.word(token));
-    if (token.is(Keyword::spacing)) photons.spacing = p.parse_float(after);
-    else if (token.is(Keyword::count)) photons.count = p.parse_int(after, -2147483647);
-    else if (token.is(Keyword::gather) || token.is(Keyword::expand_thresholds)) parse_photon_pair(p, token, photons);
-    else if (token.is(Keyword::media)) {
+    if (token.is(Keyword::spacing)) {
+        photons.spacing = p.parse_float(after);
+    } else if (token.is(Keyword::count)) {
+        photons.count = p.parse_int(after, -2147483647);
+    } else if (token.is(Keyword::gather) || token.is(Keyword::expand_thresholds)) {
+        parse_photon_pair(p, token, photons);
+    } else if (token.is(Keyword::media)) {
         photons.media_max_steps = p.parse_int(after, 0);
-        if (second_value_follows(p)) photons.media_factor = p.parse_float("as the factor of 'media'");
-    } else if (token.is(Keyword::jitter)) photons.jitter = p.parse_float(after);
-    else if (token.is(Keyword::max_trace_level)) photons.max_trace_level = p.parse_int(after, 0);
-    else if (token.is(Keyword::adc_bailout)) photons.adc_bailout = p.parse_float(after);
-    else if (token.is(Keyword::save_file)) photons.save_file = p.parse_string();
-    else if (token.is(Keyword::load_file)) photons.load_file = p.parse_string();
-    else if (token.is(Keyword::autostop)) photons.autostop = p.parse_float(after);
-    else if (token.is(Keyword::radius)) parse_photon_radius(p, photons);
-    else return false;
+        if (second_value_follows(p))
+            photons.media_factor = p.parse_float("as the factor of 'media'");
+    } else if (token.is(Keyword::jitter)) {
+        photons.jitter = p.parse_float(after);
+    } else if (token.is(Keyword::max_trace_level)) {
+        photons.max_trace_level = p.parse_int(after, 0);
+    } else if (token.is(Keyword::adc_bailout)) {
+        photons.adc_bailout = p.parse_float(after);
+    } else if (token.is(Keyword::save_file)) {
+        photons.save_file = p.parse_string();
+    } else if (token.is(Keyword::load_file)) {
+        photons.load_file = p.parse_string();
+    } else if (token.is(Keyword::autostop)) {
+        photons.autostop = p.parse_float(after);
+    } else if (token.is(Keyword::radius)) {
+        parse_photon_radius(p, photons);
+    } else {
+        return false;
+    }
     return true;
 }
 
@@ -214,12 +234,13 @@ void parse_photons(Parser& p, const Token& keyword, GlobalSettings& g) {
     while (!p.peek_is(Symbol::rbrace)) {
         const Token token = p.next();
         if (!parse_photon_key(p, token, photons))
-            p.fail_identifier(token, fmt::format("a photons setting or '}}' to close 'photons' opened at {}",
-                                                 p.location_of(open).str()));
+            p.fail_identifier(token, fmt::format("a photons setting or '}}' to close 'photons' "
+                                                 "opened at {}", p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     if (!photons.save_file.empty() && !photons.load_file.empty()) {
-        p.warn(keyword, "photons: both save_file and load_file given; the map is loaded (as POV-Ray does)");
+        p.warn(keyword, "photons: both save_file and load_file given; the map is loaded (as "
+                        "POV-Ray does)");
         photons.save_file.clear();
     }
 }
@@ -238,8 +259,8 @@ void parse_subsurface(Parser& p, const Token& keyword, GlobalSettings& g) {
         } else if (token.is(Keyword::radiosity)) {
             subsurface.radiosity = p.parse_float("after 'radiosity' (on or off)") != 0;
         } else {
-            p.fail_identifier(token, fmt::format("samples, radiosity or '}}' to close 'subsurface' opened at {}",
-                                                 p.location_of(open).str()));
+            p.fail_identifier(token, fmt::format("samples, radiosity or '}}' to close 'subsurface' "
+                                                 "opened at {}", p.location_of(open).str()));
         }
     }
     p.expect_close(keyword, open);
@@ -254,22 +275,33 @@ const NumberKey<GlobalSettings> kGlobalNumbers[] = {
     {Keyword::noise_generator, nullptr, &GlobalSettings::noise_generator, 1, 3},
 };
 
-// assumed_gamma G | srgb, charset ascii | utf8 | sys, ambient_light and irid_wavelength colours,
-// hf_gray_16 and the three blocks (`token` just taken); false for anything else.
+// assumed_gamma G | srgb
+void parse_assumed_gamma(Parser& p, const Token& keyword, GlobalSettings& g) {
+    g.assumed_gamma_set = true;
+    g.assumed_gamma_location = p.location_of(keyword);
+    g.assumed_gamma_srgb = p.accept(Keyword::srgb);
+    if (g.assumed_gamma_srgb) return;
+    const Token at = p.peek();
+    g.assumed_gamma = p.parse_float("after 'assumed_gamma'");
+    if (!(g.assumed_gamma > 0))
+        p.fail(at, fmt::format("assumed_gamma must be positive, found {}", g.assumed_gamma));
+}
+
+// charset ascii | utf8 | sys
+void parse_charset(Parser& p, GlobalSettings& g) {
+    const Token name = p.next();
+    if (name.is(Keyword::ascii)) g.charset = Charset::ascii;
+    else if (name.is(Keyword::utf8)) g.charset = Charset::utf8;
+    else if (name.is(Keyword::sys)) g.charset = Charset::sys;
+    else p.fail_expected("ascii, utf8 or sys after 'charset'", name);
+}
+
+// POV-Ray's keys that are not plain numbers (`token` just taken); false for anything else.
 bool parse_pov_key(Parser& p, const Token& token, GlobalSettings& g) {
     if (token.is(Keyword::assumed_gamma)) {
-        g.assumed_gamma_set = true;
-        g.assumed_gamma_srgb = p.accept(Keyword::srgb);
-        if (g.assumed_gamma_srgb) return true;
-        const Token at = p.peek();
-        g.assumed_gamma = p.parse_float("after 'assumed_gamma'");
-        if (!(g.assumed_gamma > 0)) p.fail(at, fmt::format("assumed_gamma must be positive, found {}", g.assumed_gamma));
+        parse_assumed_gamma(p, token, g);
     } else if (token.is(Keyword::charset)) {
-        const Token name = p.next();
-        if (name.is(Keyword::ascii)) g.charset = Charset::ascii;
-        else if (name.is(Keyword::utf8)) g.charset = Charset::utf8;
-        else if (name.is(Keyword::sys)) g.charset = Charset::sys;
-        else p.fail_expected("ascii, utf8 or sys after 'charset'", name);
+        parse_charset(p, g);
     } else if (token.is(Keyword::ambient_light)) {
         g.ambient_light = p.parse_colour().rgb();
     } else if (token.is(Keyword::irid_wavelength)) {
@@ -289,22 +321,31 @@ bool parse_pov_key(Parser& p, const Token& token, GlobalSettings& g) {
     return true;
 }
 
+// length_unit "UNIT": the scene's unit and millimetres per unit.
+void parse_length_unit(Parser& p, GlobalSettings& g) {
+    static const std::pair<const char*, double> units[] = {
+        {"um", 1e-3}, {"mm", 1.0}, {"cm", 10.0}, {"m", 1000.0}, {"in", 25.4}, {"ft", 304.8}};
+    const Token at = p.peek();
+    const std::string unit = p.parse_string();
+    for (const auto& [name, mm] : units)
+        if (unit == name) {
+            g.length_unit = unit;
+            g.millimetres_per_unit = mm;
+            return;
+        }
+    p.fail(at, fmt::format("unknown length_unit \"{}\" (expected um, mm, cm, m, in or ft)", unit));
+}
+
 // Our keys: length_unit, integrator, spectral, passes, time_limit (`token` just taken).
 bool parse_own_key(Parser& p, const Token& token, GlobalSettings& g) {
     if (token.is(ContextWord::length_unit)) {
-        const Token at = p.peek();
-        const std::string unit = p.parse_string();
-        static const std::pair<const char*, double> units[] = {
-            {"um", 1e-3}, {"mm", 1.0}, {"cm", 10.0}, {"m", 1000.0}, {"in", 25.4}, {"ft", 304.8}};
-        bool known = false;
-        for (const auto& [name, mm] : units)
-            if (unit == name) known = true, g.length_unit = unit, g.millimetres_per_unit = mm;
-        if (!known) p.fail(at, fmt::format("unknown length_unit \"{}\" (expected um, mm, cm, m, in or ft)", unit));
+        parse_length_unit(p, g);
     } else if (token.is(ContextWord::integrator)) {
         const Token at = p.peek();
         const std::string name = p.parse_string();
         if (name != "path" && name != "bidirectional")
-            p.fail(at, fmt::format("unknown integrator \"{}\" (expected \"path\" or \"bidirectional\")", name));
+            p.fail(at, fmt::format("unknown integrator \"{}\" (expected \"path\" or "
+                                   "\"bidirectional\")", name));
         g.integrator = name;
     } else if (token.is(ContextWord::spectral)) {
         g.spectral = p.parse_float("after 'spectral' (on or off)") != 0;
@@ -331,7 +372,8 @@ void parse_global_settings(Parser& p, const Token& keyword) {
         if (parse_number_table_key(p, token, kGlobalNumbers, g, "global_settings")) continue;
         p.next();
         if (!parse_pov_key(p, token, g) && !parse_own_key(p, token, g))
-            p.fail_identifier(token, fmt::format("a global setting or '}}' to close 'global_settings' opened at {}",
+            p.fail_identifier(token, fmt::format("a global setting or '}}' to close "
+                                                 "'global_settings' opened at {}",
                                                  p.location_of(open).str()));
     }
     p.expect_close(keyword, open);

@@ -50,7 +50,7 @@ struct FocalBlur {
     Vec3 focal_point{0, 0, 0};  // a point of the plane in focus (world coordinates)
     double confidence = 0.9;  // adaptive sampling: probability that the estimate is close enough
     double variance = 1.0 / 128;  // adaptive sampling: tolerated variance of the samples
-    PigmentRef bokeh;         // bokeh { pigment }: the lens shape over <0,0,0>..<1,1,0>; null: round
+    PigmentRef bokeh;  // bokeh { pigment }: the lens shape over <0,0,0>..<1,1,0>; null: round
 };
 
 // mesh_camera { rays_per_pixel distribution [max_distance] mesh {...} ... [smooth] }: each pixel's
@@ -145,7 +145,7 @@ struct PhotonSettings {
     std::optional<int> max_trace_level;  // unset: the global max_trace_level
     std::optional<double> adc_bailout;   // unset: the global adc_bailout
     std::string save_file, load_file;    // photon map files as written; empty: none
-    std::optional<double> autostop;      // 0..1 of the target's bounding box; unset: POV-Ray's default
+    std::optional<double> autostop;  // 0..1 of the target's bounding box; unset: POV-Ray's own
     double expand_increase = 0.2;  // expand_thresholds: density increase that discards an
     int expand_min = 40;           // expanded search, unless it found fewer photons than this
     double radius = 0;             // gather radius for surface photons; 0: POV-Ray's estimate
@@ -169,6 +169,7 @@ struct GlobalSettings {
     double assumed_gamma = 1.0;      // the gamma colour literals are encoded with
     bool assumed_gamma_srgb = false;  // `assumed_gamma srgb`: the sRGB curve instead
     bool assumed_gamma_set = false;
+    SourceLocation assumed_gamma_location;  // the last assumed_gamma keyword
     Charset charset = Charset::ascii;  // of strings (text objects)
     Rgb irid_wavelength{0.25, 0.18, 0.14};  // iridescence: relative wavelengths of r, g, b
     int max_intersections = 64;     // POV-Ray's intersection stack size
