@@ -1,6 +1,7 @@
 // raytrace: scene file -> path-traced image (OpenEXR + PNG preview) and illuminance maps,
 // with a checkpoint to resume an interrupted render from.
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -38,6 +39,25 @@ OutputRequest output_request(const RaytraceOptions& o) {
     request.exposure = o.exposure;
     request.receiver_prefix = fs::path(exr).replace_extension("").string();
     return request;
+}
+
+// The animation built-ins change the scene its text describes: a checkpoint made at another
+// clock or frame is of another scene. Without animation options the identity is the text's.
+void add_animation(CheckpointIdentity& identity, const AnimationSettings& animation) {
+    if (!animation.clock_on) return;
+    uint64_t hash = identity.scene_hash;  // FNV-1a, continued over the built-ins' bytes
+    const double values[] = {
+        animation.clock, animation.clock_delta, double(animation.frame_number),
+        double(animation.initial_frame), double(animation.final_frame), animation.initial_clock,
+        animation.final_clock};
+    for (const double value : values) {
+        unsigned char bytes[sizeof value];
+        std::memcpy(bytes, &value, sizeof value);
+        for (const unsigned char byte : bytes) hash = (hash ^ byte) * 1099511628211ull;
+    }
+    identity.scene_hash = hash;
+    identity.scene +=
+        fmt::format(" at clock {} (frame {})", animation.clock, animation.frame_number);
 }
 
 // The image and receiver files of a render and of each of its light layers.
@@ -98,7 +118,8 @@ int run(int argc, char** argv) {
     }
     // Checked before the render: a checkpoint that does not fit is refused and nothing is written.
     const std::string checkpoint_path = request.receiver_prefix + ".checkpoint";
-    const CheckpointIdentity identity = checkpoint_identity(description, settings);
+    CheckpointIdentity identity = checkpoint_identity(description, settings);
+    add_animation(identity, frames.first);
     RenderResult start;
     if (options.resume) {
         if (!fs::exists(checkpoint_path))

@@ -186,6 +186,16 @@ TEST(RaytraceTool, AnimationRendersTheFirstFrameOfTheSubsetAndSaysSo) {
                             "'1.5'"),
               std::string::npos)
         << r.output;
+    // A checkpoint made at another clock is of another scene: refused.
+    ASSERT_EQ(raytrace("anim.pov +W4 +H3 --passes 1 -q --no-png +K0.3 --keep-checkpoint",
+                       dir.path().string()).status, 0);
+    r = raytrace("anim.pov +W4 +H3 --passes 2 -q --no-png +K0.5 --resume", dir.path().string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("anim.pov at clock 0.3 (frame 0) with content hash"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("(this render: "), std::string::npos) << r.output;
+    EXPECT_EQ(raytrace("anim.pov +W4 +H3 --passes 2 -q --no-png +K0.3 --resume",
+                       dir.path().string()).status, 0);
     test::write_file(dir.file("bad.ini"), "Clock=soon\n");
     r = raytrace("bad.ini anim.pov", dir.path().string());
     EXPECT_NE(r.status, 0);
