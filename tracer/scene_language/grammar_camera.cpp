@@ -141,7 +141,8 @@ void parse_angle(Parser& p, const Token& keyword, const Camera& camera, CameraIt
                            *items.vertical_angle));
 }
 
-// blur_samples [MIN,] MAX: POV-Ray's minimum is 4 below 7 samples, else 7.
+// blur_samples [MIN,] MAX: POV-Ray's minimum is 4 below 7 samples, else 7 (here never above
+// the maximum).
 void parse_blur_samples(Parser& p, FocalBlur& blur) {
     const Token first_token = p.peek();
     const int first = p.parse_int("after 'blur_samples'", 1);
