@@ -1,6 +1,7 @@
 // raytrace: scene file -> path-traced image (OpenEXR + PNG preview) and illuminance maps,
 // with a checkpoint to resume an interrupted render from.
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -40,6 +41,25 @@ OutputRequest output_request(const RaytraceOptions& o) {
     return request;
 }
 
+// The animation built-ins change the scene its text describes: a checkpoint made at another
+// clock or frame is of another scene. Without animation options the identity is the text's.
+void add_animation(CheckpointIdentity& identity, const AnimationSettings& animation) {
+    if (!animation.clock_on) return;
+    uint64_t hash = identity.scene_hash;  // FNV-1a, continued over the built-ins' bytes
+    const double values[] = {
+        animation.clock, animation.clock_delta, double(animation.frame_number),
+        double(animation.initial_frame), double(animation.final_frame), animation.initial_clock,
+        animation.final_clock};
+    for (const double value : values) {
+        unsigned char bytes[sizeof value];
+        std::memcpy(bytes, &value, sizeof value);
+        for (const unsigned char byte : bytes) hash = (hash ^ byte) * 1099511628211ull;
+    }
+    identity.scene_hash = hash;
+    identity.scene +=
+        fmt::format(" at clock {} (frame {})", animation.clock, animation.frame_number);
+}
+
 // The image and receiver files of a render and of each of its light layers.
 std::vector<std::string> write_all_outputs(const RenderResult& result, const OutputRequest& request) {
     std::vector<std::string> written = write_render_outputs(&result.film, result.receivers, request);
@@ -62,23 +82,30 @@ int run(int argc, char** argv) {
     int exit_code = 0;
     if (!parse_raytrace_options(argc, argv, options, exit_code)) return exit_code;
 
+    RenderSettings settings;
+    if (options.width) settings.width = options.width;
+    if (options.height) settings.height = options.height;
     ParseOptions parse_options;
     parse_options.include_paths = options.include_paths;
     parse_options.write_roots = options.write_roots;
     parse_options.max_memory_megabytes = options.max_parse_memory_mb;
+    const AnimationFrames frames =
+        animation_frames(options.animation, settings.width, settings.height);
+    parse_options.animation = frames.first;
+    if (frames.last_frame > frames.first_frame && !options.quiet)
+        std::fprintf(stderr, "raytrace: note: rendering frame %d only of frames %d to %d (one frame "
+                             "per run; +SF chooses it)\n",
+                     frames.first_frame, frames.first_frame, frames.last_frame);
     const SceneDescription description = parse_scene_file(options.scene, parse_options);
     if (options.parse_only) {
-        fmt::print("{}: {} objects, {} lights, {} ray sources, {} receivers, {}; {} files read\n", options.scene,
-                   description.objects.size(), description.lights.size(), description.ray_sources.size(),
-                   description.receivers.size(), description.has_camera ? "a camera" : "no camera",
-                   description.files.size());
+        fmt::print("{}: {} objects, {} lights, {} ray sources, {} receivers, {}; {} files read\n",
+                   options.scene, description.objects.size(), description.lights.size(),
+                   description.ray_sources.size(), description.receivers.size(),
+                   description.has_camera ? "a camera" : "no camera", description.files.size());
         return 0;
     }
     RenderScene scene(description);
 
-    RenderSettings settings;
-    if (options.width) settings.width = options.width;
-    if (options.height) settings.height = options.height;
     settings.passes = options.passes ? options.passes : description.global.passes;
     settings.time_limit = options.time_limit >= 0 ? options.time_limit : description.global.time_limit;
     settings.seed = options.seed;
@@ -100,7 +127,8 @@ int run(int argc, char** argv) {
     }
     // Checked before the render: a checkpoint that does not fit is refused and nothing is written.
     const std::string checkpoint_path = request.receiver_prefix + ".checkpoint";
-    const CheckpointIdentity identity = checkpoint_identity(description, settings);
+    CheckpointIdentity identity = checkpoint_identity(description, settings);
+    add_animation(identity, frames.first);
     RenderResult start;
     if (options.resume) {
         if (!fs::exists(checkpoint_path))

@@ -59,8 +59,8 @@ TEST(SceneLanguageCornell, ParsesWithTheValuesItsTextGives) {
     EXPECT_DOUBLE_EQ(s.version, 3.7);
     EXPECT_DOUBLE_EQ(s.global.assumed_gamma, 1.0);
     ASSERT_TRUE(s.global.radiosity);
-    EXPECT_EQ(s.global.radiosity_settings.at("count"), std::vector<double>{200});
-    EXPECT_EQ(s.global.radiosity_settings.at("error_bound"), std::vector<double>{0.5});
+    EXPECT_EQ(s.global.radiosity->count, 200);
+    EXPECT_DOUBLE_EQ(s.global.radiosity->error_bound, 0.5);
 
     // Camera: angle 39.5 rescales the unit direction to |right| / tan(39.5/2 deg) / 2.
     ASSERT_TRUE(s.has_camera);
@@ -499,7 +499,8 @@ TEST(SceneLanguageErrors, UnknownIdentifierWrongTypeAndNotSupported) {
     EXPECT_EQ(error_of("#declare V = <1,2,3>;\nsphere { 0, V }"),
               "expected a float as the sphere radius, found a vector at test.pov:2:13");
     EXPECT_EQ(error_of("sphere { 0, 1 normal { bumps } }"), "not supported: normal (bump) patterns at test.pov:1:15");
-    EXPECT_EQ(error_of("camera { orthographic }"), "not supported: 'orthographic' camera (only perspective) at test.pov:1:10");
+    EXPECT_EQ(error_of("camera { location 0 orthographic }"),
+              "the camera type 'orthographic' must come first in the camera at test.pov:1:21");
     EXPECT_EQ(error_of("#declare sphere = 1;"), "cannot #declare 'sphere': it is a reserved word at test.pov:1:10");
 }
 

@@ -159,5 +159,42 @@ TEST(RenderLights, UnsupportedFadeAndShadowlessAreErrors) {
     EXPECT_NE(error("light_source { <0,0,0> color 1 shadowless }").find("shadowless"), std::string::npos);
 }
 
+// What the renderer does not render is refused with its place in the file; POV-Ray's hints
+// (radiosity, photons, max_trace_level ...) and ambient_light are accepted (README.md).
+TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
+    auto error = [](const std::string& text) {
+        try {
+            RenderScene scene(parse_scene_text(text, "test.pov"));
+        } catch (const rayset::Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(error("camera { orthographic location -5*z }"),
+              "not supported: orthographic camera (only perspective) at test.pov:1:10");
+    EXPECT_EQ(error("#declare C = camera { cylinder 2 }\ncamera { C translate x }"),
+              "not supported: cylinder camera (only perspective) at test.pov:1:23");
+    EXPECT_EQ(error("camera { location -5*z aperture 0.4 blur_samples 9 }"),
+              "not supported: focal blur (camera aperture 0.4) at test.pov:1:24");
+    EXPECT_EQ(error("sphere { 0, 1 }\nfog { distance 10 rgb 1 }"),
+              "not supported: fog at test.pov:2:1");
+    EXPECT_EQ(error("rainbow { direction z angle 42 width 5 }"),
+              "not supported: rainbow at test.pov:1:1");
+    EXPECT_EQ(error("sky_sphere { pigment { rgb 1 } }"),
+              "not supported: sky_sphere at test.pov:1:1");
+    EXPECT_EQ(error("global_settings { assumed_gamma 2.2 }"),
+              "not supported: assumed_gamma 2.2 (colours are read as linear: only 1.0) at "
+              "test.pov:1:19");
+    EXPECT_EQ(error("global_settings { assumed_gamma srgb }"),
+              "not supported: assumed_gamma srgb (colours are read as linear: only 1.0) at "
+              "test.pov:1:19");
+    EXPECT_EQ(error("global_settings { assumed_gamma 1 ambient_light 0.3 adc_bailout 0.1\n"
+                    "  max_trace_level 3 max_intersections 10 number_of_waves 3 noise_generator 1\n"
+                    "  charset utf8 irid_wavelength 0.5 mm_per_unit 1 radiosity { count 50 }\n"
+                    "  photons { count 1000 } subsurface { } }\n"
+                    "camera { perspective location -5*z angle 60 }"),
+              "no error");
+}
+
 }  // namespace
 }  // namespace rayset::tracer

@@ -117,5 +117,92 @@ TEST(RaytraceTool, BadIniAndSwitchesAreReported) {
     EXPECT_NE(r.output.find("cd/m^2"), std::string::npos) << r.output;
 }
 
+// A small scene that prints the animation built-ins (#debug goes to standard error).
+constexpr const char* kAnimationScene = R"(#version 3.7;
+#debug concat("clock ", str(clock,0,6), " delta ", str(clock_delta,0,6), " on ",
+              str(clock_on,0,0), " frame ", str(frame_number,0,0), "\n")
+#debug concat("if ", str(initial_frame,0,0), " ff ", str(final_frame,0,0), " ic ",
+              str(initial_clock,0,6), " fc ", str(final_clock,0,6), " w ", str(image_width,0,0),
+              " h ", str(image_height,0,0), "\n")
+camera { location -5*z }
+light_source { <0, 5, -5> rgb 1 }
+sphere { 0, 1 pigment { rgb 0.5 } }
+)";
+
+// The animation switches and .ini keys set the built-ins as POV-Ray 3.7 does: each expected
+// pair of lines is what /tmp/pv/pov.sh (POV-Ray 3.7.0.10) printed for the same options.
+TEST(RaytraceTool, AnimationSwitchesSetTheBuiltInsAsPovRay) {
+    test::ScratchDir dir;
+    test::write_file(dir.file("anim.pov"), kAnimationScene);
+    auto builtins = [&](const std::string& arguments) {
+        const auto r = raytrace("anim.pov +W4 +H3 --passes 1 -q --no-png " + arguments,
+                                dir.path().string());
+        EXPECT_EQ(r.status, 0) << r.output;
+        return r.output;
+    };
+    EXPECT_EQ(builtins(""), "clock 0.000000 delta 0.000000 on 0 frame 0\n"
+                            "if 0 ff 0 ic 0.000000 fc 0.000000 w 4 h 3\n");
+    EXPECT_EQ(builtins("+K0.3"), "clock 0.300000 delta 0.000000 on 1 frame 0\n"
+                                 "if 0 ff 0 ic 0.000000 fc 0.000000 w 4 h 3\n");
+    EXPECT_EQ(builtins("+KFI1 +KFF5 +SF3 +EF3"), "clock 0.500000 delta 0.250000 on 1 frame 3\n"
+                                                 "if 1 ff 5 ic 0.000000 fc 1.000000 w 4 h 3\n");
+    // A subset start below the initial frame is raised to it; +K is ignored in an animation.
+    EXPECT_EQ(builtins("+KFI3 +KFF10 +SF2 +EF2 +K0.7"),
+              "clock 0.000000 delta 0.142857 on 1 frame 3\n"
+              "if 3 ff 10 ic 0.000000 fc 1.000000 w 4 h 3\n");
+    // A final frame not above the initial one is no animation (POV-Ray: +KFI1 +KFF1).
+    EXPECT_EQ(builtins("+KFI1 +KFF1"), "clock 0.000000 delta 0.000000 on 0 frame 0\n"
+                                       "if 0 ff 0 ic 0.000000 fc 0.000000 w 4 h 3\n");
+    // .ini keys; a subset fraction 0.35 of the 11 frames 0..10 is frame 3.
+    test::write_file(dir.file("anim.ini"),
+                     "Initial_Frame=0\nFinal_Frame=10\nSubset_Start_Frame=0.35\n"
+                     "Subset_End_Frame=0.35\nInitial_Clock=2\nFinal_Clock=4\nWidth=8\nHeight=6\n");
+    const auto r = raytrace("anim.ini anim.pov --passes 1 -q --no-png", dir.path().string());
+    EXPECT_EQ(r.output, "clock 2.600000 delta 0.200000 on 1 frame 3\n"
+                        "if 0 ff 10 ic 2.000000 fc 4.000000 w 8 h 6\n");
+}
+
+TEST(RaytraceTool, AnimationRendersTheFirstFrameOfTheSubsetAndSaysSo) {
+    test::ScratchDir dir;
+    test::write_file(dir.file("anim.pov"), kAnimationScene);
+    auto r = raytrace("anim.pov +W4 +H3 --passes 1 --no-png +KFF10 +SF4", dir.path().string());
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("raytrace: note: rendering frame 4 only of frames 4 to 10 (one frame "
+                            "per run; +SF chooses it)"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("clock 0.333333 delta 0.111111 on 1 frame 4"), std::string::npos)
+        << r.output;
+    EXPECT_TRUE(fs::exists(dir.file("anim.exr")));
+    r = raytrace("anim.pov +KC +KFF4", dir.path().string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("command line: POV-Ray switch '+KC' is not supported (cyclic "
+                            "animation)"),
+              std::string::npos)
+        << r.output;
+    r = raytrace("anim.pov +KFI1.5", dir.path().string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("command line: Initial_Frame (+KFI) must be a whole frame number, got "
+                            "'1.5'"),
+              std::string::npos)
+        << r.output;
+    // A checkpoint made at another clock is of another scene: refused.
+    ASSERT_EQ(raytrace("anim.pov +W4 +H3 --passes 1 -q --no-png +K0.3 --keep-checkpoint",
+                       dir.path().string()).status, 0);
+    r = raytrace("anim.pov +W4 +H3 --passes 2 -q --no-png +K0.5 --resume", dir.path().string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("anim.pov at clock 0.3 (frame 0) with content hash"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("(this render: "), std::string::npos) << r.output;
+    EXPECT_EQ(raytrace("anim.pov +W4 +H3 --passes 2 -q --no-png +K0.3 --resume",
+                       dir.path().string()).status, 0);
+    test::write_file(dir.file("bad.ini"), "Clock=soon\n");
+    r = raytrace("bad.ini anim.pov", dir.path().string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("bad.ini:1: Clock (+K) must be a number, got 'soon'"),
+              std::string::npos)
+        << r.output;
+}
+
 }  // namespace
 }  // namespace rayset::tracer

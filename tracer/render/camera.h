@@ -8,6 +8,10 @@
 
 namespace rayset::tracer {
 
+// Throws rayset::Error ("not supported: FEATURE at FILE:LINE:COLUMN") for what the camera does
+// not render: a projection other than perspective, focal blur, a normal perturbation.
+void check_camera_renderable(const Camera& camera);
+
 struct CameraRay {
     Vec3 origin, direction;  // direction of unit length
 };

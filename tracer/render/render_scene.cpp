@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "converters/error.h"
+#include "tracer/render/camera.h"
 #include "tracer/render/scene_geometry.h"
 
 namespace rayset::tracer {
@@ -46,9 +47,33 @@ void check_device(RTCDevice device, const char* what) {
     if (error != RTC_ERROR_NONE) throw Error(fmt::format("Embree failed while {} (error code {})", what, int(error)));
 }
 
+[[noreturn]] void refuse(const std::string& feature, const SourceLocation& where) {
+    throw Error(fmt::format("not supported: {} at {}", feature, where.str()));
+}
+
+// What the renderer does not render is refused, never ignored (README.md, "Scene items"). The
+// global settings left out here are hints of POV-Ray's own algorithms or affect only features
+// refused elsewhere.
+void refuse_what_is_not_rendered(const SceneDescription& scene) {
+    check_camera_renderable(scene.camera);
+    const Atmosphere& atmosphere = scene.atmosphere;
+    if (!atmosphere.fogs.empty()) refuse("fog", atmosphere.fogs.front().location);
+    if (!atmosphere.rainbows.empty()) refuse("rainbow", atmosphere.rainbows.front().location);
+    if (atmosphere.sky_sphere) refuse("sky_sphere", atmosphere.sky_sphere->location);
+    if (!atmosphere.media.empty()) refuse("atmospheric media", atmosphere.media.front().location);
+    const GlobalSettings& global = scene.global;
+    const std::string linear = "(colours are read as linear: only 1.0)";
+    if (global.assumed_gamma_srgb)
+        refuse("assumed_gamma srgb " + linear, global.assumed_gamma_location);
+    if (global.assumed_gamma != 1)
+        refuse(fmt::format("assumed_gamma {} {}", global.assumed_gamma, linear),
+               global.assumed_gamma_location);
+}
+
 }  // namespace
 
 RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
+    refuse_what_is_not_rendered(scene);
     units_.metres_per_unit = scene.global.millimetres_per_unit / 1000;
     const double to_internal = 1 / units_.per_square_metre();
     lights_ = LightSet(scene.lights, units_);

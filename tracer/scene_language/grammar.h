@@ -3,8 +3,11 @@
 //   grammar_objects.cpp     shapes, CSG, object modifiers, light sources; flattening
 //   grammar_appearance.cpp  texture, pigment, normal, finish, interior, media, material,
 //                           patterns and their maps; #default
-//   grammar_scene.cpp       camera, global_settings, background, atmosphere; ray_source and
-//                           illuminance_receiver
+//   grammar_scene.cpp       the top-level statements that are not objects (the dispatcher),
+//                           background; ray_source and illuminance_receiver
+//   grammar_camera.cpp      camera
+//   grammar_global_settings.cpp  global_settings
+//   grammar_atmosphere.cpp  fog, rainbow, sky_sphere, atmospheric media
 #pragma once
 
 #include "tracer/scene_language/appearance.h"
@@ -58,9 +61,12 @@ CameraRef parse_camera(Parser& parser, const Token& keyword);
 FogRef parse_fog(Parser& parser, const Token& keyword);
 RainbowRef parse_rainbow(Parser& parser, const Token& keyword);
 SkySphereRef parse_sky_sphere(Parser& parser, const Token& keyword);
+// Into the scene: global_settings { } and a top-level media { }.
+void parse_global_settings(Parser& parser, const Token& keyword);
+void parse_atmospheric_media(Parser& parser, const Token& keyword);
 // A top-level statement other than an object (camera, global_settings, background, fog,
-// rainbow, sky_sphere, media, ray_source, illuminance_receiver) whose keyword was just taken,
-// added to the scene; false (nothing read) when `keyword` starts none of them.
+// rainbow, sky_sphere, media, default, ray_source, illuminance_receiver) whose keyword was just
+// taken, added to the scene; false (nothing read) when `keyword` starts none of them.
 bool parse_scene_statement(Parser& parser, const Token& keyword);
 
 }  // namespace rayset::tracer

@@ -26,6 +26,7 @@ struct SceneDescription {
     std::vector<RaySource> ray_sources;
     GlobalSettings global;
     Colour background;  // black unless `background { ... }`
+    Atmosphere atmosphere;  // fogs, rainbows, sky sphere, atmospheric media
     std::vector<std::string> files;  // every file read, main file first
 };
 
