@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -46,11 +47,27 @@ void check_device(RTCDevice device, const char* what) {
     if (error != RTC_ERROR_NONE) throw Error(fmt::format("Embree failed while {} (error code {})", what, int(error)));
 }
 
+// The light features the renderer does not render (lights.cpp refuses its own: shadowless,
+// circular and orient area lights, fade powers other than 2). media_interaction,
+// media_attenuation and photon flags matter only with media and photon mapping, which a path
+// tracer does not use; area_illumination is what its area lights always do.
+void refuse_unrendered(const LightSource& light) {
+    auto refuse = [&](const std::string& feature) {
+        throw Error(fmt::format("not supported: {} at {}", feature, light.location.str()));
+    };
+    if (light.cylinder) refuse("cylinder light_source");
+    if (light.parallel) refuse("parallel light_source");
+    if (!light.projected_through.empty()) refuse("projected_through");
+    if (light.light_group)
+        refuse(fmt::format("light_group (at {})", light.light_group->location.str()));
+}
+
 }  // namespace
 
 RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
     units_.metres_per_unit = scene.global.millimetres_per_unit / 1000;
     const double to_internal = 1 / units_.per_square_metre();
+    for (const LightSource& light : scene.lights) refuse_unrendered(light);
     lights_ = LightSet(scene.lights, units_);
     for (const ObjectInstance& o : scene.objects) materials_.push_back(material_from_pov(o, to_internal));
     background_ = to_internal * scene.background.rgb();

@@ -118,7 +118,8 @@ template <typename T>
 struct HasSturm<T, std::void_t<decltype(std::declval<T&>().sturm)>> : std::true_type {};
 
 bool takes_sturm(const Shape& shape) {
-    return std::visit([](const auto& s) { return HasSturm<std::decay_t<decltype(s)>>::value; }, shape);
+    return std::visit([](const auto& s) { return HasSturm<std::decay_t<decltype(s)>>::value; },
+                      shape);
 }
 
 void set_sturm(Shape& shape, bool sturm) {
@@ -146,7 +147,8 @@ void parse_photons(Parser& p, const Token& keyword, ObjectNode& node) {
         p.next();
         if (token.is(Keyword::target)) {
             photons.target = true;
-            if (p.starts_expression(p.peek())) photons.spacing_multiplier = p.parse_float("after 'target'");
+            if (p.starts_expression(p.peek()))
+                photons.spacing_multiplier = p.parse_float("after 'target'");
         } else if (token.is(Keyword::refraction)) {
             photons.refraction = p.parse_optional_bool();
         } else if (token.is(Keyword::reflection)) {
@@ -156,8 +158,11 @@ void parse_photons(Parser& p, const Token& keyword, ObjectNode& node) {
         } else if (token.is(Keyword::pass_through)) {
             photons.pass_through = p.parse_optional_bool();
         } else {
-            p.fail_identifier(token, fmt::format("target, refraction, reflection, collect, pass_through or '}}' to "
-                                                 "close 'photons' opened at {}", p.location_of(open).str()));
+            p.fail_identifier(
+                token,
+                fmt::format("target, refraction, reflection, collect, pass_through or '}}' to "
+                            "close 'photons' opened at {}",
+                            p.location_of(open).str()));
         }
     }
     p.expect_close(keyword, open);
@@ -168,12 +173,14 @@ void parse_object_radiosity(Parser& p, const Token& keyword, ObjectNode& node) {
     while (!p.peek_is(Symbol::rbrace)) {
         const Token token = p.next();
         if (!token.is(Keyword::importance))
-            p.fail_identifier(token, fmt::format("importance or '}}' to close 'radiosity' opened at {}",
-                                                 p.location_of(open).str()));
+            p.fail_identifier(token,
+                              fmt::format("importance or '}}' to close 'radiosity' opened at {}",
+                                          p.location_of(open).str()));
         const Token at = p.peek();
         const double importance = p.parse_float("after 'importance'");
         if (!(importance > 0 && importance <= 1))
-            p.fail(at, fmt::format("radiosity importance must lie in (0, 1], found {}", importance));
+            p.fail(at,
+                   fmt::format("radiosity importance must lie in (0, 1], found {}", importance));
         node.radiosity_importance = importance;
     }
     p.expect_close(keyword, open);
@@ -197,9 +204,10 @@ std::string unfit_to_clip(const ObjectNode& node) {
     const Shape& s = node.shape;
     if (const auto* mesh = std::get_if<MeshShape>(&s); mesh && !mesh->mesh->has_inside_vector)
         return "a mesh without inside_vector has no inside";
-    if (std::holds_alternative<TriangleShape>(s) || std::holds_alternative<SmoothTriangleShape>(s) ||
-        std::holds_alternative<BicubicPatchShape>(s) || std::holds_alternative<ParametricShape>(s) ||
-        std::holds_alternative<MeshFileShape>(s))
+    if (std::holds_alternative<TriangleShape>(s) ||
+        std::holds_alternative<SmoothTriangleShape>(s) ||
+        std::holds_alternative<BicubicPatchShape>(s) ||
+        std::holds_alternative<ParametricShape>(s) || std::holds_alternative<MeshFileShape>(s))
         return fmt::format("a {} has no inside", shape_keyword(s));
     return "";
 }
@@ -214,17 +222,19 @@ void parse_attached_objects(Parser& p, const Token& keyword, ObjectNode& node) {
         const Token other_token = p.next();
         const std::vector<ObjectRef>& source = clip ? node.bounded_by : node.clipped_by;
         if (source.empty())
-            p.fail(other_token, fmt::format("'{0} {{ {1} }}' without a {1} before it", p.word(keyword),
-                                            p.word(other_token)));
+            p.fail(other_token, fmt::format("'{0} {{ {1} }}' without a {1} before it",
+                                            p.word(keyword), p.word(other_token)));
         target = source;
     } else {
-        if (!starts_object(p, p.peek())) p.fail_expected(fmt::format("an object in '{}'", p.word(keyword)), p.peek());
+        if (!starts_object(p, p.peek()))
+            p.fail_expected(fmt::format("an object in '{}'", p.word(keyword)), p.peek());
         while (starts_object(p, p.peek())) {
             const Token at = p.peek();
             ObjectRef object = parse_object(p);
             const std::string why = unfit_to_clip(*object);
             if (!why.empty())
-                p.fail(at, fmt::format("'{}' takes untextured solid objects: {}", p.word(keyword), why));
+                p.fail(at, fmt::format("'{}' takes untextured solid objects: {}", p.word(keyword),
+                                       why));
             target.push_back(std::move(object));
         }
     }
@@ -261,10 +271,12 @@ bool parse_restricted_modifier(Parser& p, ObjectNode& node, Keyword keyword) {
     const Token token = p.peek();
     auto refuse = [&](const char* which) {
         p.fail(token, fmt::format("'{}' cannot be used with {} (only with {})", p.word(token),
-                                  node.kind == ObjectNode::Kind::shape ? shape_keyword(node.shape) : "this object",
+                                  node.kind == ObjectNode::Kind::shape ? shape_keyword(node.shape)
+                                                                       : "this object",
                                   which));
     };
-    const CsgShape* csg = node.kind == ObjectNode::Kind::csg ? std::get_if<CsgShape>(&node.shape) : nullptr;
+    const CsgShape* csg =
+        node.kind == ObjectNode::Kind::csg ? std::get_if<CsgShape>(&node.shape) : nullptr;
     if (keyword == Keyword::sturm) {
         if (node.kind != ObjectNode::Kind::shape || !takes_sturm(node.shape))
             refuse("blob, cubic, lathe, ovus, poly, polynomial, prism, quartic, sor and torus");
@@ -317,9 +329,10 @@ bool parse_node_transform(Parser& p, ObjectNode& node) {
     if (!p.parse_transform_item(step)) return false;
     // POV-Ray keeps a sphere a sphere through these (see ParseBounds).
     const bool uniform = step(0, 1) == 0 && step(0, 2) == 0 && step(1, 0) == 0 && step(1, 2) == 0 &&
-                         step(2, 0) == 0 && step(2, 1) == 0 && step(0, 0) == step(1, 1) && step(1, 1) == step(2, 2);
-    const bool similarity =
-        keyword.is(Keyword::translate) || keyword.is(Keyword::rotate) || (keyword.is(Keyword::scale) && uniform);
+                         step(2, 0) == 0 && step(2, 1) == 0 && step(0, 0) == step(1, 1) &&
+                         step(1, 1) == step(2, 2);
+    const bool similarity = keyword.is(Keyword::translate) || keyword.is(Keyword::rotate) ||
+                            (keyword.is(Keyword::scale) && uniform);
     transform_node(node, step, similarity);
     return true;
 }
@@ -344,12 +357,14 @@ bool parse_object_modifier(Parser& p, ObjectNode& node) {
     const Token token = p.peek();
     Keyword keyword;
     if (!keyword_of(token, keyword)) return false;
-    if (parse_flag_modifier(p, node, keyword) || parse_restricted_modifier(p, node, keyword)) return true;
+    if (parse_flag_modifier(p, node, keyword) || parse_restricted_modifier(p, node, keyword))
+        return true;
     switch (keyword) {
         case Keyword::no_shadow:
             p.next();
             node.no_shadow = true;
-            node.photons.pass_through = true;  // POV-Ray's rule; photons { pass_through off } undoes it
+            node.photons.pass_through =
+                true;  // POV-Ray's rule; photons { pass_through off } undoes it
             node.photons_given = true;
             return true;
         case Keyword::hollow:
@@ -380,12 +395,17 @@ void parse_object_modifiers(Parser& p, ObjectNode& node, const Token& keyword, c
         if (parse_object_modifier(p, node)) continue;
         const bool csg = node.kind == ObjectNode::Kind::csg;
         if (csg && starts_object(p, token))
-            p.fail(token, fmt::format("an object after the modifiers of '{}' opened at {} (its objects come first)",
-                                      p.word(keyword), p.location_of(open).str()));
+            p.fail(
+                token,
+                fmt::format(
+                    "an object after the modifiers of '{}' opened at {} (its objects come first)",
+                    p.word(keyword), p.location_of(open).str()));
         // What the appearance grammar does not read yet.
         if (token.is(Keyword::normal)) p.fail_not_supported(token, "normal (bump) patterns");
-        p.fail_identifier(token, fmt::format("{}an object modifier or '}}' to close '{}' opened at {}",
-                                             csg ? "an object, " : "", p.word(keyword), p.location_of(open).str()));
+        p.fail_identifier(
+            token,
+            fmt::format("{}an object modifier or '}}' to close '{}' opened at {}",
+                        csg ? "an object, " : "", p.word(keyword), p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     apply_bounding_rules(node);
@@ -395,8 +415,9 @@ int parse_count(Parser& p, const std::string& what) {
     const Token at = p.peek();
     const int count = p.parse_int(fmt::format("as the number of {}", what), 0);
     if (count > p.options().max_array_elements)
-        p.fail(at, fmt::format("{} {}: more than the limit of {} (ParseOptions::max_array_elements)", count, what,
-                               p.options().max_array_elements));
+        p.fail(at,
+               fmt::format("{} {}: more than the limit of {} (ParseOptions::max_array_elements)",
+                           count, what, p.options().max_array_elements));
     return count;
 }
 
@@ -467,8 +488,8 @@ private:
     // A union is split into its children unless it is clipped, bounded or inverted, as POV-Ray
     // splits it; a light_group is split likewise (inherit gives its children its group).
     static bool splits(const ObjectNode& node) {
-        return std::get<CsgShape>(node.shape).operation == CsgShape::Operation::union_of && !node.inverse &&
-               node.clipped_by.empty() && node.bounded_by.empty();
+        return std::get<CsgShape>(node.shape).operation == CsgShape::Operation::union_of &&
+               !node.inverse && node.clipped_by.empty() && node.bounded_by.empty();
     }
 
     Inherited inherit(const ObjectNode& node, const Inherited& parent) const {
@@ -497,7 +518,8 @@ private:
 
     // The instance of a shape or of a CSG kept whole; `here` is what it inherited, combined
     // with its own modifiers.
-    ObjectInstance instance(const ObjectNode& node, const Inherited& parent, const Inherited& here) {
+    ObjectInstance instance(const ObjectNode& node, const Inherited& parent,
+                            const Inherited& here) {
         ObjectInstance result;
         result.shape = node.shape;
         result.object_to_world = here.to_world;
@@ -515,8 +537,10 @@ private:
         result.radiosity_importance = here.radiosity_importance;
         result.light_group = here.light_group;
         result.location = node.location;
-        for (const ObjectRef& clip : node.clipped_by) result.clipped_by.push_back(bare_instance(*clip, parent));
-        for (const ObjectRef& bound : node.bounded_by) result.bounded_by.push_back(bare_instance(*bound, parent));
+        for (const ObjectRef& clip : node.clipped_by)
+            result.clipped_by.push_back(bare_instance(*clip, parent));
+        for (const ObjectRef& bound : node.bounded_by)
+            result.bounded_by.push_back(bare_instance(*bound, parent));
         if (auto* csg = std::get_if<CsgShape>(&result.shape))
             for (const ObjectRef& child : node.children) add_child(*csg, *child, here);
         return result;
@@ -552,8 +576,10 @@ private:
     void add_lights_inside(const ObjectNode& node, const Inherited& here) {
         for (const ObjectRef& child : node.children) {
             const Inherited inner = inherit(*child, here);
-            if (child->kind == ObjectNode::Kind::light) add_light(*child, here, inner);
-            else if (child->kind != ObjectNode::Kind::shape) add_lights_inside(*child, inner);
+            if (child->kind == ObjectNode::Kind::light)
+                add_light(*child, here, inner);
+            else if (child->kind != ObjectNode::Kind::shape)
+                add_lights_inside(*child, inner);
         }
     }
 
@@ -565,7 +591,8 @@ private:
         light.axis1 = m.vector(light.axis1);
         light.axis2 = m.vector(light.axis2);
         light.light_group = here.light_group;
-        if (node.projected_through) light.projected_through.push_back(bare_instance(*node.projected_through, parent));
+        if (node.projected_through)
+            light.projected_through.push_back(bare_instance(*node.projected_through, parent));
         const int index = static_cast<int>(scene_.lights.size());
         scene_.lights.push_back(std::move(light));
         if (node.looks_like) {
@@ -575,7 +602,8 @@ private:
             shown.light_group = here.light_group;
             const size_t first = scene_.objects.size();
             add(*node.looks_like, shown);
-            for (size_t k = first; k < scene_.objects.size(); ++k) scene_.objects[k].looks_like_of = index;
+            for (size_t k = first; k < scene_.objects.size(); ++k)
+                scene_.objects[k].looks_like_of = index;
         }
     }
 
@@ -584,6 +612,8 @@ private:
 
 }  // namespace
 
-void add_to_scene(Parser& parser, const ObjectRef& object) { Flattener(parser.scene()).add(*object, Inherited{}); }
+void add_to_scene(Parser& parser, const ObjectRef& object) {
+    Flattener(parser.scene()).add(*object, Inherited{});
+}
 
 }  // namespace rayset::tracer

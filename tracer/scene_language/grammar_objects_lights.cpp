@@ -31,11 +31,17 @@ void parse_light_photons(Parser& p, const Token& keyword, LightSource& light) {
         const Token token = p.peek();
         if (token.is(Symbol::rbrace)) break;
         p.next();
-        if (token.is(Keyword::reflection)) light.photons_reflection = p.parse_optional_bool();
-        else if (token.is(Keyword::refraction)) light.photons_refraction = p.parse_optional_bool();
-        else if (token.is(Keyword::area_light)) light.photons_area_light = p.parse_optional_bool();
-        else p.fail_identifier(token, fmt::format("reflection, refraction, area_light or '}}' to close 'photons' "
-                                                  "opened at {}", p.location_of(open).str()));
+        if (token.is(Keyword::reflection))
+            light.photons_reflection = p.parse_optional_bool();
+        else if (token.is(Keyword::refraction))
+            light.photons_refraction = p.parse_optional_bool();
+        else if (token.is(Keyword::area_light))
+            light.photons_area_light = p.parse_optional_bool();
+        else
+            p.fail_identifier(
+                token, fmt::format("reflection, refraction, area_light or '}}' to close 'photons' "
+                                   "opened at {}",
+                                   p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
 }
@@ -52,7 +58,8 @@ void parse_light_object(Parser& p, const Token& keyword, ObjectNode& node) {
     } else if (starts_object(p, p.peek())) {
         object = std::make_shared<ObjectNode>(*parse_object(p));
     } else {
-        p.fail_identifier(p.peek(), fmt::format("an object or an object identifier in '{}'", p.word(keyword)));
+        p.fail_identifier(
+            p.peek(), fmt::format("an object or an object identifier in '{}'", p.word(keyword)));
     }
     if (keyword.is(Keyword::looks_like))
         transform_node(*object, translation(node.transform.point(node.light.position)), true);
@@ -76,9 +83,56 @@ void parse_area_light(Parser& p, LightSource& light) {
 void check_spot_item(Parser& p, const Token& token, const LightSource& light) {
     const bool spot = light.spotlight || light.cylinder;
     if (spot || (token.is(Keyword::point_at) && light.parallel)) return;
-    p.fail(token, fmt::format("'{}' cannot be used with a {} light (write spotlight or cylinder{} before it)",
-                              p.word(token), light.shadowless ? "shadowless" : "point",
-                              token.is(Keyword::point_at) ? ", or parallel," : ""));
+    p.fail(
+        token,
+        fmt::format("'{}' cannot be used with a {} light (write spotlight or cylinder{} before it)",
+                    p.word(token), light.shadowless ? "shadowless" : "point",
+                    token.is(Keyword::point_at) ? ", or parallel," : ""));
+}
+
+// The light modifiers that set one value: a float, or a flag (bare, or `KEYWORD [BOOL]`).
+struct FloatItem {
+    Keyword keyword;
+    double LightSource::*value;
+    bool spot_only;  // needs a spotlight or cylinder type before it
+};
+const FloatItem kFloatItems[] = {
+    {Keyword::radius, &LightSource::radius, true},
+    {Keyword::falloff, &LightSource::falloff, true},
+    {Keyword::tightness, &LightSource::tightness, true},
+    {Keyword::fade_distance, &LightSource::fade_distance, false},
+    {Keyword::fade_power, &LightSource::fade_power, false},
+};
+struct FlagItem {
+    Keyword keyword;
+    bool LightSource::*flag;
+    bool takes_bool;  // POV-Ray takes no value after jitter, circular, orient, parallel
+};
+const FlagItem kFlagItems[] = {
+    {Keyword::parallel, &LightSource::parallel, false},
+    {Keyword::jitter, &LightSource::jitter, false},
+    {Keyword::circular, &LightSource::circular, false},
+    {Keyword::orient, &LightSource::orient, false},
+    {Keyword::area_illumination, &LightSource::area_illumination, true},
+    {Keyword::media_interaction, &LightSource::media_interaction, true},
+    {Keyword::media_attenuation, &LightSource::media_attenuation, true},
+};
+
+bool parse_light_value(Parser& p, LightSource& light, const Token& token, Keyword keyword) {
+    for (const FloatItem& item : kFloatItems)
+        if (item.keyword == keyword) {
+            if (item.spot_only) check_spot_item(p, token, light);
+            p.next();
+            light.*item.value = p.parse_float(fmt::format("after '{}'", p.word(token)));
+            return true;
+        }
+    for (const FlagItem& item : kFlagItems)
+        if (item.keyword == keyword) {
+            p.next();
+            light.*item.flag = item.takes_bool ? p.parse_optional_bool() : true;
+            return true;
+        }
+    return false;
 }
 
 bool parse_light_modifier(Parser& p, ObjectNode& node) {
@@ -86,36 +140,41 @@ bool parse_light_modifier(Parser& p, ObjectNode& node) {
     const Token token = p.peek();
     Keyword keyword;
     if (!keyword_of(token, keyword)) return false;
-    auto after = [&] { return fmt::format("after '{}'", p.word(token)); };
+    if (parse_light_value(p, light, token, keyword)) return true;
     switch (keyword) {
-        case Keyword::spotlight: p.next(), set_type(light, LightType::spotlight); break;
-        case Keyword::cylinder: p.next(), set_type(light, LightType::cylinder); break;
-        case Keyword::shadowless: p.next(), set_type(light, LightType::shadowless); break;
-        case Keyword::parallel: p.next(), light.parallel = true; break;
-        case Keyword::point_at: check_spot_item(p, token, light), p.next(), light.point_at = p.parse_vector(); break;
-        case Keyword::radius: check_spot_item(p, token, light), p.next(), light.radius = p.parse_float(after()); break;
-        case Keyword::falloff: check_spot_item(p, token, light), p.next(), light.falloff = p.parse_float(after()); break;
-        case Keyword::tightness:
-            check_spot_item(p, token, light), p.next(), light.tightness = p.parse_float(after());
-            break;
-        case Keyword::area_light: p.next(), parse_area_light(p, light); break;
+        case Keyword::spotlight:
+        case Keyword::cylinder:
+        case Keyword::shadowless:
+            p.next();
+            set_type(light, keyword == Keyword::spotlight  ? LightType::spotlight
+                            : keyword == Keyword::cylinder ? LightType::cylinder
+                                                           : LightType::shadowless);
+            return true;
+        case Keyword::point_at:
+            check_spot_item(p, token, light);
+            p.next();
+            light.point_at = p.parse_vector();
+            return true;
+        case Keyword::area_light:
+            p.next();
+            parse_area_light(p, light);
+            return true;
         case Keyword::adaptive:  // POV-Ray takes a negative value as 0
-            p.next(), light.adaptive = std::max(0, p.parse_int(after(), std::numeric_limits<int>::min()));
-            break;
-        case Keyword::jitter: p.next(), light.jitter = true; break;
-        case Keyword::circular: p.next(), light.circular = true; break;
-        case Keyword::orient: p.next(), light.orient = true; break;
-        case Keyword::area_illumination: p.next(), light.area_illumination = p.parse_optional_bool(); break;
-        case Keyword::fade_distance: p.next(), light.fade_distance = p.parse_float(after()); break;
-        case Keyword::fade_power: p.next(), light.fade_power = p.parse_float(after()); break;
-        case Keyword::media_interaction: p.next(), light.media_interaction = p.parse_optional_bool(); break;
-        case Keyword::media_attenuation: p.next(), light.media_attenuation = p.parse_optional_bool(); break;
-        case Keyword::photons: p.next(), parse_light_photons(p, token, light); break;
+            p.next();
+            light.adaptive =
+                std::max(0, p.parse_int("after 'adaptive'", std::numeric_limits<int>::min()));
+            return true;
+        case Keyword::photons:
+            p.next();
+            parse_light_photons(p, token, light);
+            return true;
         case Keyword::looks_like:
-        case Keyword::projected_through: p.next(), parse_light_object(p, token, node); break;
+        case Keyword::projected_through:
+            p.next();
+            parse_light_object(p, token, node);
+            return true;
         default: return false;
     }
-    return true;
 }
 
 }  // namespace
@@ -126,14 +185,17 @@ bool parse_light_modifier(Parser& p, ObjectNode& node) {
 ObjectRef parse_light_source(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     if (const ObjectRef* declared = p.peek_declared<ObjectRef>()) {
-        if ((*declared)->kind != ObjectNode::Kind::light) p.fail_identifier(p.peek(), "a light_source identifier");
+        if ((*declared)->kind != ObjectNode::Kind::light)
+            p.fail_identifier(p.peek(), "a light_source identifier");
         auto node = std::make_shared<ObjectNode>(**declared);
         p.next();
         while (!p.peek_is(Symbol::rbrace))
             if (!parse_node_transform(p, *node))
-                p.fail_identifier(p.peek(), fmt::format("a transform or '}}' to close 'light_source' opened at {} "
-                                                        "(a declared light takes no other modifier)",
-                                                        p.location_of(open).str()));
+                p.fail_identifier(
+                    p.peek(),
+                    fmt::format("a transform or '}}' to close 'light_source' opened at {} "
+                                "(a declared light takes no other modifier)",
+                                p.location_of(open).str()));
         p.expect_close(keyword, open);
         return node;
     }
@@ -147,19 +209,32 @@ ObjectRef parse_light_source(Parser& p, const Token& keyword) {
     for (;;) {
         if (p.peek_is(Symbol::rbrace)) break;
         if (!parse_light_modifier(p, *node) && !parse_node_transform(p, *node))
-            p.fail_identifier(p.peek(), fmt::format("a light_source modifier or '}}' to close 'light_source' opened at {}",
-                                                    p.location_of(open).str()));
+            p.fail_identifier(
+                p.peek(),
+                fmt::format("a light_source modifier or '}}' to close 'light_source' opened at {}",
+                            p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     return node;
 }
 
-// light_group { objects and lights, then transforms and global_lights }.
+// light_group { objects, lights and their identifiers, then transforms and global_lights }.
 ObjectRef parse_light_group(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto node = new_node(p, keyword, ObjectNode::Kind::light_group);
     node->shape = CsgShape{};
-    while (starts_object(p, p.peek())) node->children.push_back(parse_object(p));
+    // Unlike CSG, a light group takes bare object and light identifiers (povray:
+    // light_group { L1 }).
+    for (;;) {
+        if (starts_object(p, p.peek())) {
+            node->children.push_back(parse_object(p));
+        } else if (const ObjectRef* declared = p.peek_declared<ObjectRef>()) {
+            node->children.push_back(*declared);
+            p.next();
+        } else {
+            break;
+        }
+    }
     compute_csg_bounds(*node);
     for (;;) {
         const Token token = p.peek();
@@ -171,10 +246,16 @@ ObjectRef parse_light_group(Parser& p, const Token& keyword) {
             continue;
         }
         if (starts_object(p, token))
-            p.fail(token, fmt::format("an object after the modifiers of 'light_group' opened at {} (its objects and "
-                                      "lights come first)", p.location_of(open).str()));
-        p.fail_identifier(token, fmt::format("a transform, global_lights or '}}' to close 'light_group' opened at {}",
-                                             p.location_of(open).str()));
+            p.fail(
+                token,
+                fmt::format(
+                    "an object after the modifiers of 'light_group' opened at {} (its objects and "
+                    "lights come first)",
+                    p.location_of(open).str()));
+        p.fail_identifier(
+            token,
+            fmt::format("a transform, global_lights or '}}' to close 'light_group' opened at {}",
+                        p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     return node;

@@ -24,37 +24,43 @@ int parse_polynomial_order(Parser& p, const Token& keyword) {
     const Token at = p.peek();
     const int order = p.parse_int(fmt::format("as the order of '{}'", p.word(keyword)), 0);
     if (order < 2 || order > kMaxPolynomialOrder)
-        p.fail(at, fmt::format("the order of '{}' must lie in 2..{}, found {}", p.word(keyword), kMaxPolynomialOrder,
-                               order));
+        p.fail(at, fmt::format("the order of '{}' must lie in 2..{}, found {}", p.word(keyword),
+                               kMaxPolynomialOrder, order));
     return order;
 }
 
 // `<A1, A2, ..., An>` with exactly `count` terms (more than a vector holds).
 std::vector<double> parse_coefficients(Parser& p, const Token& keyword, size_t count) {
-    const Token open = p.expect(Symbol::less, fmt::format("before the coefficients of '{}'", p.word(keyword)));
+    const Token open =
+        p.expect(Symbol::less, fmt::format("before the coefficients of '{}'", p.word(keyword)));
     std::vector<double> coefficients;
     for (;;) {
         if (p.peek_is(Symbol::greater)) break;
         if (coefficients.size() == count)
-            p.fail(p.peek(), fmt::format("'{}' takes {} coefficients here, found more", p.word(keyword), count));
-        coefficients.push_back(p.parse_float(fmt::format("as a coefficient of '{}'", p.word(keyword))));
+            p.fail(p.peek(), fmt::format("'{}' takes {} coefficients here, found more",
+                                         p.word(keyword), count));
+        coefficients.push_back(
+            p.parse_float(fmt::format("as a coefficient of '{}'", p.word(keyword))));
         p.accept_comma();
     }
     if (coefficients.size() != count)
-        p.fail(p.peek(), fmt::format("'{}' takes {} coefficients here, found {}", p.word(keyword), count,
-                                     coefficients.size()));
-    p.expect(Symbol::greater, fmt::format("to close the coefficients opened at {}", p.location_of(open).str()));
+        p.fail(p.peek(), fmt::format("'{}' takes {} coefficients here, found {}", p.word(keyword),
+                                     count, coefficients.size()));
+    p.expect(Symbol::greater,
+             fmt::format("to close the coefficients opened at {}", p.location_of(open).str()));
     return coefficients;
 }
 
 // Two ends that must differ (cylinder, cone: POV-Ray's "degenerate" error).
 void check_ends(Parser& p, const Token& keyword, Vec3 base, Vec3 cap) {
     if (base.x == cap.x && base.y == cap.y && base.z == cap.z)
-        p.fail(keyword, fmt::format("degenerate {}: its base and cap are the same point", p.word(keyword)));
+        p.fail(keyword,
+               fmt::format("degenerate {}: its base and cap are the same point", p.word(keyword)));
 }
 
 template <typename ShapeT>
-ObjectRef finish(Parser& p, const NodePtr& node, ShapeT shape, const Token& keyword, const Token& open) {
+ObjectRef finish(Parser& p, const NodePtr& node, ShapeT shape, const Token& keyword,
+                 const Token& open) {
     node->shape = std::move(shape);
     finish_shape(p, *node, keyword, open);
     return node;
@@ -147,7 +153,8 @@ ObjectRef parse_plane(Parser& p, const Token& keyword) {
     const Vec3 n = p.parse_vector();
     p.accept_comma();
     if (length(n) < 1e-10) p.fail(at, "degenerate plane normal (zero length)");
-    return finish(p, node, PlaneShape{normalized(n), p.parse_float("as the plane distance")}, keyword, open);
+    return finish(p, node, PlaneShape{normalized(n), p.parse_float("as the plane distance")},
+                  keyword, open);
 }
 
 ObjectRef parse_disc(Parser& p, const Token& keyword) {
@@ -160,7 +167,8 @@ ObjectRef parse_disc(Parser& p, const Token& keyword) {
     if (length(d.normal) > 0) d.normal = normalized(d.normal);
     p.accept_comma();
     d.radius = p.parse_float("as the disc radius");
-    if (p.accept(Symbol::comma) || p.starts_expression(p.peek())) d.hole_radius = p.parse_float("as the hole radius");
+    if (p.accept(Symbol::comma) || p.starts_expression(p.peek()))
+        d.hole_radius = p.parse_float("as the hole radius");
     return finish(p, node, d, keyword, open);
 }
 
@@ -180,7 +188,8 @@ ObjectRef parse_smooth_triangle(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto node = new_node(p, keyword);
     SmoothTriangleShape t;
-    for (auto [corner, normal] : {std::pair{&t.a, &t.normal_a}, {&t.b, &t.normal_b}, {&t.c, &t.normal_c}}) {
+    for (auto [corner, normal] :
+         {std::pair{&t.a, &t.normal_a}, {&t.b, &t.normal_b}, {&t.c, &t.normal_c}}) {
         *corner = p.parse_vector();
         p.accept_comma();
         *normal = p.parse_vector();
@@ -229,8 +238,8 @@ ObjectRef parse_polynomial(Parser& p, const Token& keyword) {
         p.accept_comma();
         const auto term = std::find(terms.begin(), terms.end(), powers);
         if (term == terms.end())
-            p.fail(xyz, fmt::format("xyz({},{},{}) is not a term of a polynomial of order {}", powers[0], powers[1],
-                                    powers[2], poly.order));
+            p.fail(xyz, fmt::format("xyz({},{},{}) is not a term of a polynomial of order {}",
+                                    powers[0], powers[1], powers[2], poly.order));
         poly.coefficients[static_cast<size_t>(term - terms.begin())] = value;
     }
     return finish(p, node, poly, keyword, open);

@@ -15,11 +15,16 @@ bool same(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
 // The spline keyword of a lathe or prism, if the next token is one.
 bool parse_spline_kind(Parser& p, SplineKind& kind) {
-    if (p.accept(Keyword::linear_spline)) kind = SplineKind::linear;
-    else if (p.accept(Keyword::quadratic_spline)) kind = SplineKind::quadratic;
-    else if (p.accept(Keyword::cubic_spline)) kind = SplineKind::cubic;
-    else if (p.accept(Keyword::bezier_spline)) kind = SplineKind::bezier;
-    else return false;
+    if (p.accept(Keyword::linear_spline))
+        kind = SplineKind::linear;
+    else if (p.accept(Keyword::quadratic_spline))
+        kind = SplineKind::quadratic;
+    else if (p.accept(Keyword::cubic_spline))
+        kind = SplineKind::cubic;
+    else if (p.accept(Keyword::bezier_spline))
+        kind = SplineKind::bezier;
+    else
+        return false;
     return true;
 }
 
@@ -34,18 +39,20 @@ const char* spline_name(SplineKind kind) {
 }
 
 // POV-Ray's point counts: at least `minimum` (per spline kind), four per segment for Bezier.
-void check_spline_points(Parser& p, const Token& at, const char* shape, SplineKind kind, size_t count,
-                         const std::array<size_t, 3>& minimum) {
+void check_spline_points(Parser& p, const Token& at, const char* shape, SplineKind kind,
+                         size_t count, const std::array<size_t, 3>& minimum) {
     if (kind == SplineKind::bezier) {
         if (count == 0 || count % 4 != 0)
-            p.fail(at, fmt::format("{} with Bezier splines must have four points per segment, found {} points", shape,
-                                   count));
+            p.fail(at,
+                   fmt::format(
+                       "{} with Bezier splines must have four points per segment, found {} points",
+                       shape, count));
         return;
     }
     const size_t needed = minimum[static_cast<size_t>(kind)];
     if (count < needed)
-        p.fail(at, fmt::format("{} with {} splines must have at least {} points, found {}", shape, spline_name(kind),
-                               needed, count));
+        p.fail(at, fmt::format("{} with {} splines must have at least {} points, found {}", shape,
+                               spline_name(kind), needed, count));
 }
 
 // `COUNT, <p1>, <p2>, ...`: the count and that many 2-D points.
@@ -94,9 +101,12 @@ ObjectRef parse_prism(Parser& p, const Token& keyword) {
     PrismShape prism;
     for (;;) {
         if (parse_spline_kind(p, prism.spline)) continue;
-        if (p.accept(Keyword::linear_sweep)) prism.conic_sweep = false;
-        else if (p.accept(Keyword::conic_sweep)) prism.conic_sweep = true;
-        else break;
+        if (p.accept(Keyword::linear_sweep))
+            prism.conic_sweep = false;
+        else if (p.accept(Keyword::conic_sweep))
+            prism.conic_sweep = true;
+        else
+            break;
     }
     prism.height1 = p.parse_float("as the first prism height");
     p.accept_comma();
@@ -122,13 +132,17 @@ ObjectRef parse_sor(Parser& p, const Token& keyword) {
     const Token at = p.peek();
     sor.points = parse_points2(p, "sor points");
     const size_t n = sor.points.size();
-    if (n < 4) p.fail(at, fmt::format("a surface of revolution must have at least four points, found {}", n));
+    if (n < 4)
+        p.fail(at,
+               fmt::format("a surface of revolution must have at least four points, found {}", n));
     for (size_t i = 0; i + 1 < n; ++i) {
         const bool end = i == 0 || i + 2 == n;
         const double h = sor.points[i].y, next = sor.points[i + 1].y;
         if (end ? next < h : next <= h)
-            p.fail(at, fmt::format("incorrect point in surface of revolution: height {} of point {} does not rise above "
-                                   "{} of point {}", next, i + 2, h, i + 1));
+            p.fail(at, fmt::format("incorrect point in surface of revolution: height {} of point "
+                                   "{} does not rise above "
+                                   "{} of point {}",
+                                   next, i + 2, h, i + 1));
     }
     sor.open = p.accept(Keyword::open);
     node->shape = std::move(sor);
@@ -142,10 +156,14 @@ ObjectRef parse_sphere_sweep(Parser& p, const Token& keyword) {
     auto node = new_node(p, keyword);
     SphereSweepShape sweep;
     using Kind = SphereSweepShape::Kind;
-    if (p.accept(Keyword::linear_spline)) sweep.kind = Kind::linear_spline;
-    else if (p.accept(Keyword::b_spline)) sweep.kind = Kind::b_spline;
-    else if (p.accept(Keyword::cubic_spline)) sweep.kind = Kind::cubic_spline;
-    else p.fail_expected("linear_spline, b_spline or cubic_spline in 'sphere_sweep'", p.peek());
+    if (p.accept(Keyword::linear_spline))
+        sweep.kind = Kind::linear_spline;
+    else if (p.accept(Keyword::b_spline))
+        sweep.kind = Kind::b_spline;
+    else if (p.accept(Keyword::cubic_spline))
+        sweep.kind = Kind::cubic_spline;
+    else
+        p.fail_expected("linear_spline, b_spline or cubic_spline in 'sphere_sweep'", p.peek());
     const Token at = p.peek();
     const int count = parse_count(p, "sphere_sweep spheres");
     for (int i = 0; i < count; ++i) {
@@ -158,11 +176,12 @@ ObjectRef parse_sphere_sweep(Parser& p, const Token& keyword) {
     }
     const int needed = sweep.kind == Kind::linear_spline ? 2 : 4;
     if (count < needed)
-        p.fail(at, fmt::format("too few spheres for the interpolation: {} needs at least {}, found {}",
-                               sweep.kind == Kind::linear_spline ? "linear_spline"
-                               : sweep.kind == Kind::b_spline  ? "b_spline"
-                                                               : "cubic_spline",
-                               needed, count));
+        p.fail(at,
+               fmt::format("too few spheres for the interpolation: {} needs at least {}, found {}",
+                           sweep.kind == Kind::linear_spline ? "linear_spline"
+                           : sweep.kind == Kind::b_spline    ? "b_spline"
+                                                             : "cubic_spline",
+                           needed, count));
     if (p.accept(Keyword::tolerance)) sweep.tolerance = p.parse_float("after 'tolerance'");
     node->shape = std::move(sweep);
     finish_shape(p, *node, keyword, open);
@@ -176,12 +195,14 @@ ObjectRef parse_polygon(Parser& p, const Token& keyword) {
     PolygonShape polygon;
     const Token at = p.peek();
     const int count = parse_count(p, "polygon points");
-    if (count < 3) p.fail(at, fmt::format("a polygon needs at least three points, found {}", count));
+    if (count < 3)
+        p.fail(at, fmt::format("a polygon needs at least three points, found {}", count));
     for (int i = 0; i < count; ++i) {
         p.accept_comma();
         polygon.points.push_back(p.parse_vector());
     }
-    if (close_last_loop(polygon.points)) p.warn(at, "polygon not closed: closing it, as POV-Ray does");
+    if (close_last_loop(polygon.points))
+        p.warn(at, "polygon not closed: closing it, as POV-Ray does");
     node->shape = std::move(polygon);
     finish_shape(p, *node, keyword, open);
     return node;
@@ -196,17 +217,24 @@ ObjectRef parse_bicubic_patch(Parser& p, const Token& keyword) {
     BicubicPatchShape patch;
     bool have_type = false;
     for (;;) {
-        if (p.accept(Keyword::type)) patch.type = p.parse_int("after 'type'", 0), have_type = true;
-        else if (p.accept(Keyword::flatness)) patch.flatness = p.parse_float("after 'flatness'");
-        else if (p.accept(Keyword::u_steps)) patch.u_steps = p.parse_int("after 'u_steps'", 0);
-        else if (p.accept(Keyword::v_steps)) patch.v_steps = p.parse_int("after 'v_steps'", 0);
-        else break;
+        if (p.accept(Keyword::type))
+            patch.type = p.parse_int("after 'type'", 0), have_type = true;
+        else if (p.accept(Keyword::flatness))
+            patch.flatness = p.parse_float("after 'flatness'");
+        else if (p.accept(Keyword::u_steps))
+            patch.u_steps = p.parse_int("after 'u_steps'", 0);
+        else if (p.accept(Keyword::v_steps))
+            patch.v_steps = p.parse_int("after 'v_steps'", 0);
+        else
+            break;
         p.accept_comma();
     }
     const Token first = p.peek();
     if (!first.is(Symbol::less) && !p.peek_declared<Numeric>() && p.starts_expression(first))
-        p.fail_not_supported(first, "bicubic_patch parameters without their keywords (type, flatness, u_steps, "
-                                    "v_steps)");
+        p.fail_not_supported(
+            first,
+            "bicubic_patch parameters without their keywords (type, flatness, u_steps, "
+            "v_steps)");
     if (!have_type) p.fail(first, "bicubic_patch needs 'type' (0 or 1) before its points");
     for (size_t i = 0; i < patch.points.size(); ++i) {
         if (i > 0) p.accept_comma();
@@ -230,7 +258,8 @@ ObjectRef parse_text(Parser& p, const Token& keyword) {
         p.expect(Keyword::ttf, "(the font type) in 'text'");
         const Token at = p.peek();
         std::string name = p.parse_string();
-        if (std::filesystem::path(name).extension().empty()) name += ".ttf";  // as POV-Ray looks for it
+        if (std::filesystem::path(name).extension().empty())
+            name += ".ttf";  // as POV-Ray looks for it
         text.font_path = p.resolve_file(name, at, "font file");
     }
     p.accept_comma();

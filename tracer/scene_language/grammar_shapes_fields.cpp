@@ -44,9 +44,10 @@ BlobComponent parse_blob_component(Parser& p, const Token& keyword) {
                 p.fail(token, "a blob component takes no interior (give the blob one)");
             continue;
         }
-        p.fail_identifier(token, fmt::format("a texture, pigment, normal, finish, transform or '}}' to close the "
-                                             "blob component '{}' opened at {}", p.word(keyword),
-                                             p.location_of(open).str()));
+        p.fail_identifier(
+            token, fmt::format("a texture, pigment, normal, finish, transform or '}}' to close the "
+                               "blob component '{}' opened at {}",
+                               p.word(keyword), p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     return component;
@@ -68,13 +69,18 @@ void parse_height_field_image(Parser& p, HeightFieldShape& field) {
             }
     const Token at = p.peek();
     if (!p.starts_string(at))
-        p.fail_expected("an image type (gif, tga, pot, png, pgm, ppm, jpeg, tiff, sys, exr, hdr, iff, bmp), a file "
-                        "name or 'function' in 'height_field'", at);
+        p.fail_expected(
+            "an image type (gif, tga, pot, png, pgm, ppm, jpeg, tiff, sys, exr, hdr, iff, bmp), a "
+            "file "
+            "name or 'function' in 'height_field'",
+            at);
     field.image_path = p.resolve_file(p.parse_string(), at, "height_field image");
     for (;;) {
         if (p.accept(Keyword::gamma)) {
-            if (p.accept(Keyword::srgb)) field.image_srgb = true;
-            else field.image_gamma = p.parse_float("after 'gamma'");
+            if (p.accept(Keyword::srgb))
+                field.image_srgb = true;
+            else
+                field.image_gamma = p.parse_float("after 'gamma'");
         } else if (p.accept(Keyword::premultiplied)) {
             field.premultiplied = p.parse_optional_bool();
         } else {
@@ -89,15 +95,18 @@ void parse_height_field_function(Parser& p, const Token& function, HeightFieldSh
     field.function_width = p.parse_int("as the height_field function's x resolution", 1);
     p.accept_comma();
     field.function_height = p.parse_int("as the height_field function's y resolution", 1);
-    if (double(field.function_width) * field.function_height > double(p.options().max_array_elements))
+    if (double(field.function_width) * field.function_height >
+        double(p.options().max_array_elements))
         p.fail(at, fmt::format("a height_field of {} x {} samples is more than the limit of {} "
-                               "(ParseOptions::max_array_elements)", field.function_width, field.function_height,
+                               "(ParseOptions::max_array_elements)",
+                               field.function_width, field.function_height,
                                p.options().max_array_elements));
     field.function = p.parse_function(function);
 }
 
 // isosurface and parametric's own items; false when the next token is none of them.
-bool parse_function_shape_item(Parser& p, ContainedBy& contained_by, double& max_gradient, double& accuracy) {
+bool parse_function_shape_item(Parser& p, ContainedBy& contained_by, double& max_gradient,
+                               double& accuracy) {
     const Token token = p.peek();
     if (token.is(Keyword::contained_by)) {
         p.next();
@@ -149,8 +158,8 @@ void parse_precompute(Parser& p, ParametricShape& parametric) {
     const Token at = p.peek();
     parametric.precompute_depth = p.parse_int("after 'precompute'", 0);
     if (parametric.precompute_depth > kMaxPrecomputeDepth)
-        p.fail(at, fmt::format("precompute depth {} is more than POV-Ray's {}", parametric.precompute_depth,
-                               kMaxPrecomputeDepth));
+        p.fail(at, fmt::format("precompute depth {} is more than POV-Ray's {}",
+                               parametric.precompute_depth, kMaxPrecomputeDepth));
     static const Keyword axes[] = {Keyword::x, Keyword::y, Keyword::z};
     for (;;) {
         p.accept_comma();
@@ -161,8 +170,9 @@ void parse_precompute(Parser& p, ParametricShape& parametric) {
     }
 }
 
-const char* const kJuliaFunctions[] = {"sqr", "cube", "exp", "reciprocal", "sin", "asin", "sinh", "asinh", "cos",
-                                       "acos", "cosh", "acosh", "tan", "atan", "tanh", "atanh", "ln", "pwr"};
+const char* const kJuliaFunctions[] = {"sqr",  "cube",  "exp",  "reciprocal", "sin",  "asin",
+                                       "sinh", "asinh", "cos",  "acos",       "cosh", "acosh",
+                                       "tan",  "atan",  "tanh", "atanh",      "ln",   "pwr"};
 
 bool parse_julia_item(Parser& p, JuliaFractalShape& julia) {
     const Token token = p.peek();
@@ -182,7 +192,8 @@ bool parse_julia_item(Parser& p, JuliaFractalShape& julia) {
         const Token at = p.peek();
         const Numeric normal = p.parse_vector_terms(4);
         for (size_t i = 0; i < 4; ++i) julia.slice_normal[i] = normal.v[i];
-        if (julia.slice_normal[3] == 0) p.fail(at, "the slice normal's fourth (t) component must not be 0");
+        if (julia.slice_normal[3] == 0)
+            p.fail(at, "the slice normal's fourth (t) component must not be 0");
         p.accept_comma();
         julia.slice_distance = p.parse_float("as the slice distance");
     } else {
@@ -239,14 +250,16 @@ ObjectRef parse_blob(Parser& p, const Token& keyword) {
         if (token.is(Keyword::threshold)) {
             p.next();
             blob.threshold = p.parse_float("after 'threshold'");
-        } else if (token.is(Keyword::sphere) || token.is(Keyword::cylinder) || token.is(Keyword::component)) {
+        } else if (token.is(Keyword::sphere) || token.is(Keyword::cylinder) ||
+                   token.is(Keyword::component)) {
             p.next();
             blob.components.push_back(parse_blob_component(p, token));
         } else {
             break;
         }
     }
-    if (blob.components.empty()) p.fail(p.peek(), "a blob needs at least one component (sphere, cylinder)");
+    if (blob.components.empty())
+        p.fail(p.peek(), "a blob needs at least one component (sphere, cylinder)");
     node->shape = std::move(blob);
     finish_shape(p, *node, keyword, open);
     return node;
@@ -256,12 +269,17 @@ ObjectRef parse_height_field(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto node = new_node(p, keyword);
     HeightFieldShape field;
-    if (p.peek_is(Keyword::function)) parse_height_field_function(p, p.next(), field);
-    else parse_height_field_image(p, field);
+    if (p.peek_is(Keyword::function))
+        parse_height_field_function(p, p.next(), field);
+    else
+        parse_height_field_image(p, field);
     for (;;) {
-        if (p.accept(Keyword::smooth)) field.smooth = p.parse_optional_bool();
-        else if (p.accept(Keyword::water_level)) field.water_level = p.parse_float("after 'water_level'");
-        else break;
+        if (p.accept(Keyword::smooth))
+            field.smooth = p.parse_optional_bool();
+        else if (p.accept(Keyword::water_level))
+            field.water_level = p.parse_float("after 'water_level'");
+        else
+            break;
     }
     node->shape = std::move(field);
     finish_shape(p, *node, keyword, open);
@@ -289,7 +307,8 @@ ObjectRef parse_parametric(Parser& p, const Token& keyword) {
     ParametricShape parametric;
     for (size_t i = 0; i < 3; ++i) {
         if (i > 0) p.accept_comma();
-        const Token function = p.expect(Keyword::function, "(one for each of x, y, z) in 'parametric'");
+        const Token function =
+            p.expect(Keyword::function, "(one for each of x, y, z) in 'parametric'");
         parametric.functions[i] = p.parse_function(function);
     }
     p.accept_comma();
@@ -297,7 +316,8 @@ ObjectRef parse_parametric(Parser& p, const Token& keyword) {
     p.accept_comma();
     parametric.uv_maximum = parse_vec2(p, "as <u2, v2> of the parametric");
     for (;;) {
-        if (parse_function_shape_item(p, parametric.contained_by, parametric.max_gradient, parametric.accuracy))
+        if (parse_function_shape_item(p, parametric.contained_by, parametric.max_gradient,
+                                      parametric.accuracy))
             continue;
         if (!p.accept(Keyword::precompute)) break;
         parse_precompute(p, parametric);
@@ -318,8 +338,10 @@ ObjectRef parse_julia_fractal(Parser& p, const Token& keyword) {
     }
     if (julia.algebra == JuliaFractalShape::Algebra::quaternion && julia.function != "sqr" &&
         julia.function != "cube")
-        p.fail(keyword, fmt::format("illegal function '{}': a quaternion julia_fractal takes only sqr and cube",
-                                    julia.function));
+        p.fail(
+            keyword,
+            fmt::format("illegal function '{}': a quaternion julia_fractal takes only sqr and cube",
+                        julia.function));
     node->shape = std::move(julia);
     finish_shape(p, *node, keyword, open);
     return node;

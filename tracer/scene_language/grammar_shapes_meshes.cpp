@@ -15,7 +15,8 @@ using Triple = std::array<int, 3>;
 constexpr Triple kNone{-1, -1, -1};
 
 // The index of `texture` in the mesh's texture list, added on first use.
-int texture_index(TriangleMesh& mesh, std::map<const Texture*, int>& known, const TextureRef& texture) {
+int texture_index(TriangleMesh& mesh, std::map<const Texture*, int>& known,
+                  const TextureRef& texture) {
     auto [it, added] = known.emplace(texture.get(), static_cast<int>(mesh.textures.size()));
     if (added) mesh.textures.push_back(texture);
     return it->second;
@@ -25,7 +26,9 @@ int texture_index(TriangleMesh& mesh, std::map<const Texture*, int>& known, cons
 TextureRef parse_texture_identifier(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     const TextureRef* declared = p.peek_declared<TextureRef>();
-    if (!declared) p.fail_identifier(p.peek(), "a texture identifier (a mesh triangle takes no texture definition)");
+    if (!declared)
+        p.fail_identifier(p.peek(),
+                          "a texture identifier (a mesh triangle takes no texture definition)");
     TextureRef texture = *declared;
     p.next();
     p.expect_close(keyword, open);
@@ -92,8 +95,8 @@ private:
         return indices;
     }
 
-    void add(const std::array<Vec3, 3>& corners, const std::array<Vec3, 3>* normals, const std::array<Vec2, 3>* uv,
-             const Triple& textures) {
+    void add(const std::array<Vec3, 3>& corners, const std::array<Vec3, 3>* normals,
+             const std::array<Vec2, 3>* uv, const Triple& textures) {
         const int base = static_cast<int>(mesh_->vertices.size());
         for (const Vec3& corner : corners) mesh_->vertices.push_back(corner);
         mesh_->faces.push_back({base, base + 1, base + 2});
@@ -139,16 +142,22 @@ public:
         for (;;) {
             const Token token = p_.peek();
             int rank = 0;
-            if (token.is(Keyword::vertex_vectors) || token.is(Keyword::normal_vectors) || token.is(Keyword::uv_vectors))
+            if (token.is(Keyword::vertex_vectors) || token.is(Keyword::normal_vectors) ||
+                token.is(Keyword::uv_vectors))
                 rank = 0;
-            else if (token.is(Keyword::texture_list)) rank = 1;
+            else if (token.is(Keyword::texture_list))
+                rank = 1;
             else if (token.is(Keyword::face_indices) || token.is(Keyword::normal_indices) ||
                      token.is(Keyword::uv_indices))
                 rank = 2;
-            else break;
+            else
+                break;
             if (rank < rank_)
-                p_.fail(token, fmt::format("'{}' after the {} in mesh2: its sections come in the order vectors, "
-                                           "texture_list, indices", p_.word(token), rank_ == 2 ? "indices" : "texture_list"));
+                p_.fail(token,
+                        fmt::format(
+                            "'{}' after the {} in mesh2: its sections come in the order vectors, "
+                            "texture_list, indices",
+                            p_.word(token), rank_ == 2 ? "indices" : "texture_list"));
             rank_ = rank;
             p_.next();
             read_section(token);
@@ -156,7 +165,8 @@ public:
     }
 
     std::shared_ptr<TriangleMesh> finish(const Token& keyword) {
-        if (mesh_->vertices.empty() && !have_vertices_) p_.fail_expected("'vertex_vectors' in mesh2", p_.peek());
+        if (mesh_->vertices.empty() && !have_vertices_)
+            p_.fail_expected("'vertex_vectors' in mesh2", p_.peek());
         if (!have_faces_) p_.fail_expected("'face_indices' in mesh2", p_.peek());
         check_indices(mesh_->faces, face_at_, mesh_->vertices.size(), "vertex", "vertex_vectors");
         check_normals(keyword);
@@ -200,12 +210,15 @@ private:
         for (int i = 0; i < count; ++i) {
             p_.accept_comma();
             if (p_.peek_is(Symbol::rbrace))
-                p_.fail(p_.peek(), fmt::format("'{}' declares {} entries, found '}}' after {}", p_.word(name), count, i));
+                p_.fail(p_.peek(), fmt::format("'{}' declares {} entries, found '}}' after {}",
+                                               p_.word(name), count, i));
             read_entry();
         }
         p_.accept_comma();
         if (!p_.peek_is(Symbol::rbrace))
-            p_.fail_expected(fmt::format("'}}' after the {} entries declared by '{}'", count, p_.word(name)), p_.peek());
+            p_.fail_expected(
+                fmt::format("'}}' after the {} entries declared by '{}'", count, p_.word(name)),
+                p_.peek());
         p_.expect_close(name, open);
     }
 
@@ -237,12 +250,13 @@ private:
         mesh_->face_textures.push_back(textures);
     }
 
-    void check_indices(const std::vector<Triple>& faces, const std::vector<Token>& at, size_t limit, const char* what,
-                       const char* list) {
+    void check_indices(const std::vector<Triple>& faces, const std::vector<Token>& at, size_t limit,
+                       const char* what, const char* list) {
         for (size_t f = 0; f < faces.size(); ++f)
             for (int index : faces[f])
                 if (index < 0 || static_cast<size_t>(index) >= limit)
-                    p_.fail(at[f], fmt::format("{} index {} out of range: there are {} {}", what, index, limit, list));
+                    p_.fail(at[f], fmt::format("{} index {} out of range: there are {} {}", what,
+                                               index, limit, list));
     }
 
     // Without normal_indices the normals follow the vertices; with fewer normal_indices than
@@ -251,13 +265,17 @@ private:
         TriangleMesh& m = *mesh_;
         if (normal_indices_.kind != TokenKind::end) {
             if (m.normal_faces.size() > m.faces.size())
-                p_.fail(normal_indices_, fmt::format("normal_indices has {} entries, more than the {} faces",
-                                                     m.normal_faces.size(), m.faces.size()));
+                p_.fail(normal_indices_,
+                        fmt::format("normal_indices has {} entries, more than the {} faces",
+                                    m.normal_faces.size(), m.faces.size()));
             check_indices(m.normal_faces, normal_at_, m.normals.size(), "normal", "normal_vectors");
             m.normal_faces.resize(m.faces.size(), kNone);
         } else if (!m.normals.empty() && m.normals.size() != m.vertices.size()) {
-            p_.fail(keyword, fmt::format("without normal_indices, normal_vectors ({}) must match vertex_vectors ({})",
-                                         m.normals.size(), m.vertices.size()));
+            p_.fail(
+                keyword,
+                fmt::format(
+                    "without normal_indices, normal_vectors ({}) must match vertex_vectors ({})",
+                    m.normals.size(), m.vertices.size()));
         }
     }
 
@@ -265,12 +283,14 @@ private:
         TriangleMesh& m = *mesh_;
         if (uv_indices_.kind != TokenKind::end) {
             if (m.uv_faces.size() != m.faces.size())
-                p_.fail(uv_indices_, fmt::format("uv_indices has {} entries, face_indices {}", m.uv_faces.size(),
-                                                 m.faces.size()));
+                p_.fail(uv_indices_, fmt::format("uv_indices has {} entries, face_indices {}",
+                                                 m.uv_faces.size(), m.faces.size()));
             check_indices(m.uv_faces, uv_at_, m.uvs.size(), "uv", "uv_vectors");
         } else if (!m.uvs.empty() && m.uvs.size() != m.vertices.size()) {
-            p_.fail(keyword, fmt::format("without uv_indices, uv_vectors ({}) must match vertex_vectors ({})",
-                                         m.uvs.size(), m.vertices.size()));
+            p_.fail(
+                keyword,
+                fmt::format("without uv_indices, uv_vectors ({}) must match vertex_vectors ({})",
+                            m.uvs.size(), m.vertices.size()));
         }
     }
 
@@ -282,7 +302,8 @@ private:
             for (int index : m.face_textures[f])
                 if (static_cast<size_t>(index) >= m.textures.size())
                     p_.fail(texture_at_[with_texture],
-                            fmt::format("texture index {} out of range: texture_list has {}", index, m.textures.size()));
+                            fmt::format("texture index {} out of range: texture_list has {}", index,
+                                        m.textures.size()));
             ++with_texture;
         }
         if (with_texture == 0) m.face_textures.clear();
@@ -303,7 +324,8 @@ ObjectRef parse_mesh(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto node = new_node(p, keyword);
     MeshBuilder builder(p);
-    while (p.peek_is(Keyword::triangle) || p.peek_is(Keyword::smooth_triangle)) builder.triangle(p.next());
+    while (p.peek_is(Keyword::triangle) || p.peek_is(Keyword::smooth_triangle))
+        builder.triangle(p.next());
     std::shared_ptr<TriangleMesh> mesh = builder.finish(p.peek());
     parse_inside_vector(p, *mesh);
     node->shape = MeshShape{mesh};
@@ -331,7 +353,9 @@ ObjectRef parse_mesh_file(Parser& p, const Token& keyword) {
     std::string extension = std::filesystem::path(name).extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (extension != ".obj" && extension != ".ply")
-        p.fail(name_token, fmt::format("mesh_file \"{}\": unknown format '{}' (expected .obj or .ply)", name, extension));
+        p.fail(name_token,
+               fmt::format("mesh_file \"{}\": unknown format '{}' (expected .obj or .ply)", name,
+                           extension));
     auto node = new_node(p, keyword);
     node->shape = MeshFileShape{p.resolve_file(name, name_token, "mesh file"), extension.substr(1)};
     finish_shape(p, *node, keyword, open);

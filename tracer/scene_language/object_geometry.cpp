@@ -60,7 +60,8 @@ void add_point(Box& box, Vec3 p) {
 Box transformed(const Box& box, const Matrix4& m) {
     Box out = empty_box();
     for (int i = 0; i < 8; ++i)
-        add_point(out, m.point({i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y, i & 4 ? box.hi.z : box.lo.z}));
+        add_point(out, m.point({i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
+                                i & 4 ? box.hi.z : box.lo.z}));
     return out;
 }
 
@@ -91,7 +92,8 @@ Matrix4 axis_frame(Vec3 base, Vec3 cap, double radius) {
 bool is_similarity(const Matrix4& m) {
     const Vec3 c[3] = {m.vector({1, 0, 0}), m.vector({0, 1, 0}), m.vector({0, 0, 1})};
     const double scale = dot(c[0], c[0]), tolerance = 1e-12 * scale;
-    return std::abs(dot(c[1], c[1]) - scale) <= tolerance && std::abs(dot(c[2], c[2]) - scale) <= tolerance &&
+    return std::abs(dot(c[1], c[1]) - scale) <= tolerance &&
+           std::abs(dot(c[2], c[2]) - scale) <= tolerance &&
            std::abs(dot(c[0], c[1])) <= tolerance && std::abs(dot(c[0], c[2])) <= tolerance &&
            std::abs(dot(c[1], c[2])) <= tolerance;
 }
@@ -110,7 +112,8 @@ bool blob_box(const BlobShape& blob, Box& box) {
         if (!is_similarity(m)) {
             scale = 0;
             for (int row = 0; row < 3; ++row)
-                scale = std::max(scale, std::abs(m(row, 0)) + std::abs(m(row, 1)) + std::abs(m(row, 2)));
+                scale = std::max(scale,
+                                 std::abs(m(row, 0)) + std::abs(m(row, 1)) + std::abs(m(row, 2)));
         }
         const Vec3 c = m.point(component.centre);
         const double r = std::abs(component.radius) * scale;
@@ -146,7 +149,8 @@ bool lathe_box(const LatheShape& lathe, Box& box) {
 bool prism_box(const PrismShape& prism, Box& box) {
     Vec2 lo, hi;
     if (!spline_box(prism.spline, prism.points, lo, hi)) return false;
-    const double y0 = std::min(prism.height1, prism.height2), y1 = std::max(prism.height1, prism.height2);
+    const double y0 = std::min(prism.height1, prism.height2),
+                 y1 = std::max(prism.height1, prism.height2);
     box = {{lo.x, y0, lo.y}, {hi.x, y1, hi.y}};
     if (prism.conic_sweep) {
         box.lo.x = box.lo.z = 1e300, box.hi.x = box.hi.z = -1e300;
@@ -163,13 +167,15 @@ bool own_box(const Shape& shape, Box& box) {
     if (const auto* lathe = std::get_if<LatheShape>(&shape)) return lathe_box(*lathe, box);
     if (const auto* prism = std::get_if<PrismShape>(&shape)) return prism_box(*prism, box);
     if (std::holds_alternative<SuperellipsoidShape>(shape)) {
-        constexpr double kMargin = 1e-4;  // POV-Ray's box of a superellipsoid, 1.0001 wide of the origin
+        constexpr double kMargin =
+            1e-4;  // POV-Ray's box of a superellipsoid, 1.0001 wide of the origin
         box = {{-1 - kMargin, -1 - kMargin, -1 - kMargin}, {1 + kMargin, 1 + kMargin, 1 + kMargin}};
     } else if (const auto* iso = std::get_if<IsosurfaceShape>(&shape)) {
         const ContainedBy& c = iso->contained_by;
         const double r = std::abs(c.radius);
-        box = c.kind == ContainedBy::Kind::box ? Box{c.minimum, c.maximum}
-                                               : Box{c.centre - Vec3{r, r, r}, c.centre + Vec3{r, r, r}};
+        box = c.kind == ContainedBy::Kind::box
+                  ? Box{c.minimum, c.maximum}
+                  : Box{c.centre - Vec3{r, r, r}, c.centre + Vec3{r, r, r}};
     } else if (const auto* sweep = std::get_if<SphereSweepShape>(&shape)) {
         if (sweep->kind != SphereSweepShape::Kind::linear_spline) return false;
         box = empty_box();
@@ -198,18 +204,21 @@ bool exact_box(const Shape& shape, const Matrix4& to_parent, Box& box) {
     if (const auto* b = std::get_if<BoxShape>(&shape)) {
         box = transformed({b->minimum, b->maximum}, to_parent);
     } else if (const auto* c = std::get_if<CylinderShape>(&shape)) {
-        box = transformed({{-1, -1, 0}, {1, 1, 1}}, to_parent * axis_frame(c->base, c->cap, std::abs(c->radius)));
+        box = transformed({{-1, -1, 0}, {1, 1, 1}},
+                          to_parent * axis_frame(c->base, c->cap, std::abs(c->radius)));
     } else if (const auto* c = std::get_if<ConeShape>(&shape)) {
         const double r = std::max(std::abs(c->base_radius), std::abs(c->cap_radius));
         box = transformed({{-1, -1, 0}, {1, 1, 1}}, to_parent * axis_frame(c->base, c->cap, r));
     } else if (const auto* t = std::get_if<TorusShape>(&shape)) {
-        const double outer = std::abs(t->major_radius) + std::abs(t->minor_radius), r = std::abs(t->minor_radius);
+        const double outer = std::abs(t->major_radius) + std::abs(t->minor_radius),
+                     r = std::abs(t->minor_radius);
         box = transformed({{-outer, -r, -outer}, {outer, r, outer}}, to_parent);
     } else if (const auto* d = std::get_if<DiscShape>(&shape)) {
         // POV-Ray's disc box is 0.001 thick whatever its size.
         const double r = std::abs(d->radius);
         const Vec3 n = length(d->normal) > 0 ? d->normal : Vec3{0, 0, 1};
-        box = transformed({{-r, -r, -1e-3}, {r, r, 1e-3}}, to_parent * translation(d->centre) * z_onto(n));
+        box = transformed({{-r, -r, -1e-3}, {r, r, 1e-3}},
+                          to_parent * translation(d->centre) * z_onto(n));
     } else if (const auto* t = std::get_if<TriangleShape>(&shape)) {
         box = empty_box();
         for (Vec3 p : {t->a, t->b, t->c}) add_point(box, to_parent.point(p));
@@ -262,8 +271,10 @@ void cut_by_plane(Box& box, const ObjectNode& child, bool inverted) {
         const double rest = std::abs(along[(axis + 1) % 3]) + std::abs(along[(axis + 2) % 3]);
         if (rest > 1e-10) continue;
         // inside: n . p <= d
-        if (along[axis] > 0) *hi[axis] = std::min(*hi[axis], d / along[axis]);
-        else *lo[axis] = std::max(*lo[axis], d / along[axis]);
+        if (along[axis] > 0)
+            *hi[axis] = std::min(*hi[axis], d / along[axis]);
+        else
+            *lo[axis] = std::max(*lo[axis], d / along[axis]);
     }
 }
 
@@ -278,7 +289,8 @@ void intersection_bounds(ObjectNode& node, bool difference) {
     for (size_t i = 0; i < node.children.size(); ++i) {
         const ObjectNode& child = *node.children[i];
         const bool inverted = child.inverse != (difference && i > 0);
-        if (child.kind == ObjectNode::Kind::shape && std::holds_alternative<PlaneShape>(child.shape)) {
+        if (child.kind == ObjectNode::Kind::shape &&
+            std::holds_alternative<PlaneShape>(child.shape)) {
             cut_by_plane(box, child, inverted);
             continue;
         }
@@ -288,13 +300,17 @@ void intersection_bounds(ObjectNode& node, bool difference) {
             return;
         }
         if (child.bounds.infinite) continue;
-        box.lo = {std::max(box.lo.x, child.bounds.minimum.x), std::max(box.lo.y, child.bounds.minimum.y),
+        box.lo = {std::max(box.lo.x, child.bounds.minimum.x),
+                  std::max(box.lo.y, child.bounds.minimum.y),
                   std::max(box.lo.z, child.bounds.minimum.z)};
-        box.hi = {std::min(box.hi.x, child.bounds.maximum.x), std::min(box.hi.y, child.bounds.maximum.y),
+        box.hi = {std::min(box.hi.x, child.bounds.maximum.x),
+                  std::min(box.hi.y, child.bounds.maximum.y),
                   std::min(box.hi.z, child.bounds.maximum.z)};
     }
-    if (touches_unbounded(box)) set_unbounded(node.bounds);
-    else set_box(node.bounds, box);
+    if (touches_unbounded(box))
+        set_unbounded(node.bounds);
+    else
+        set_box(node.bounds, box);
 }
 
 // The overlap of the boxes of `objects` (clipped_by, bounded_by), if all are known.
@@ -304,14 +320,17 @@ std::optional<Box> overlap_of(const std::vector<ObjectRef>& objects) {
         if (!object->bounds.known) return std::nullopt;
         if (object->bounds.infinite) continue;
         const Box b = box_of(object->bounds);
-        box.lo = {std::max(box.lo.x, b.lo.x), std::max(box.lo.y, b.lo.y), std::max(box.lo.z, b.lo.z)};
-        box.hi = {std::min(box.hi.x, b.hi.x), std::min(box.hi.y, b.hi.y), std::min(box.hi.z, b.hi.z)};
+        box.lo = {std::max(box.lo.x, b.lo.x), std::max(box.lo.y, b.lo.y),
+                  std::max(box.lo.z, b.lo.z)};
+        box.hi = {std::min(box.hi.x, b.hi.x), std::min(box.hi.y, b.hi.y),
+                  std::min(box.hi.z, b.hi.z)};
     }
     return box;
 }
 
 double volume(const Box& b) {
-    return std::max(0.0, b.hi.x - b.lo.x) * std::max(0.0, b.hi.y - b.lo.y) * std::max(0.0, b.hi.z - b.lo.z);
+    return std::max(0.0, b.hi.x - b.lo.x) * std::max(0.0, b.hi.y - b.lo.y) *
+           std::max(0.0, b.hi.z - b.lo.z);
 }
 
 }  // namespace
@@ -370,7 +389,8 @@ void transform_bounds(ObjectNode& node, const Matrix4& step, bool similarity) {
         return set_sphere_box(bounds);
     }
     Box box;
-    if (node.kind == ObjectNode::Kind::shape && exact_box(node.shape, node.transform, box)) return set_box(bounds, box);
+    if (node.kind == ObjectNode::Kind::shape && exact_box(node.shape, node.transform, box))
+        return set_box(bounds, box);
     set_box(bounds, transformed(box_of(bounds), step));
 }
 
@@ -412,7 +432,8 @@ double polynomial_value(const PolynomialShape& poly, Vec3 p) {
     for (int i = poly.order; i >= 0; --i)
         for (int j = poly.order - i; j >= 0; --j)
             for (int k = poly.order - i - j; k >= 0; --k)
-                sum += poly.coefficients[term++] * std::pow(p.x, i) * std::pow(p.y, j) * std::pow(p.z, k);
+                sum += poly.coefficients[term++] * std::pow(p.x, i) * std::pow(p.y, j) *
+                       std::pow(p.z, k);
     return sum;
 }
 
@@ -428,8 +449,8 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
         const Vec3 q = p - s->centre;
         inside = dot(q, q) < s->radius * s->radius;
     } else if (const auto* b = std::get_if<BoxShape>(&shape)) {
-        inside = p.x >= b->minimum.x && p.x <= b->maximum.x && p.y >= b->minimum.y && p.y <= b->maximum.y &&
-                 p.z >= b->minimum.z && p.z <= b->maximum.z;
+        inside = p.x >= b->minimum.x && p.x <= b->maximum.x && p.y >= b->minimum.y &&
+                 p.y <= b->maximum.y && p.z >= b->minimum.z && p.z <= b->maximum.z;
     } else if (const auto* c = std::get_if<CylinderShape>(&shape)) {
         const Vec3 axis = c->cap - c->base, q = p - c->base;
         const double s = dot(q, axis) / dot(axis, axis);
@@ -447,11 +468,13 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
     } else if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
         inside = dot(plane->normal, p) < plane->distance;
     } else if (const auto* disc = std::get_if<DiscShape>(&shape)) {
-        inside = dot(disc->normal, p - disc->centre) < 0;  // its plane's inside, whatever the radius
+        inside =
+            dot(disc->normal, p - disc->centre) < 0;  // its plane's inside, whatever the radius
     } else if (const auto* q = std::get_if<QuadricShape>(&shape)) {
-        const double value = q->squares.x * p.x * p.x + q->squares.y * p.y * p.y + q->squares.z * p.z * p.z +
-                             q->mixed.x * p.x * p.y + q->mixed.y * p.x * p.z + q->mixed.z * p.y * p.z +
-                             dot(q->linear, p) + q->constant;
+        const double value = q->squares.x * p.x * p.x + q->squares.y * p.y * p.y +
+                             q->squares.z * p.z * p.z + q->mixed.x * p.x * p.y +
+                             q->mixed.y * p.x * p.z + q->mixed.z * p.y * p.z + dot(q->linear, p) +
+                             q->constant;
         inside = value < 0;
     } else if (const auto* poly = std::get_if<PolynomialShape>(&shape)) {
         inside = polynomial_value(*poly, p) < 0;
@@ -473,12 +496,14 @@ bool node_inside(const ObjectNode& node, Vec3 p, bool& inside) {
     Matrix4 to_local;
     if (!inverse_of(node.transform, to_local)) return false;
     const Vec3 local = to_local.point(p);
-    if (node.kind == ObjectNode::Kind::light || node.kind == ObjectNode::Kind::light_group) return false;
+    if (node.kind == ObjectNode::Kind::light || node.kind == ObjectNode::Kind::light_group)
+        return false;
     if (node.kind == ObjectNode::Kind::shape) {
         if (!shape_inside(node.shape, local, inside)) return false;
     } else {
         const auto operation = std::get<CsgShape>(node.shape).operation;
-        const bool any = operation == CsgShape::Operation::union_of || operation == CsgShape::Operation::merge;
+        const bool any =
+            operation == CsgShape::Operation::union_of || operation == CsgShape::Operation::merge;
         inside = !any;
         for (size_t i = 0; i < node.children.size(); ++i) {
             bool in = false;
@@ -522,10 +547,13 @@ std::vector<double> roots_between(std::vector<double> c, double lo, double hi) {
             continue;
         }
         if ((fa < 0) == (fb < 0)) continue;
-        for (int iteration = 0; iteration < 200 && b - a > 1e-15 * std::max(1.0, std::abs(a)); ++iteration) {
+        for (int iteration = 0; iteration < 200 && b - a > 1e-15 * std::max(1.0, std::abs(a));
+             ++iteration) {
             const double m = 0.5 * (a + b), fm = value(m);
-            if ((fm < 0) == (fa < 0)) a = m, fa = fm;
-            else b = m;
+            if ((fm < 0) == (fa < 0))
+                a = m, fa = fm;
+            else
+                b = m;
         }
         roots.push_back(0.5 * (a + b));
     }
@@ -560,7 +588,8 @@ void triangle_hit(Vec3 a, Vec3 b, Vec3 c, Vec3 o, Vec3 d, std::vector<Hit>& hits
 
 void mesh_hits(const TriangleMesh& mesh, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
     std::vector<Hit> all;
-    for (const auto& f : mesh.faces) triangle_hit(mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]], o, d, all);
+    for (const auto& f : mesh.faces)
+        triangle_hit(mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]], o, d, all);
     for (const Hit& hit : all)
         if (hit.t > 0) hits.push_back(hit);
 }
@@ -582,7 +611,8 @@ void box_hits(const BoxShape& box, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
             const double q[3] = {p.x, p.y, p.z};
             bool on_face = true;
             for (int other = 0; other < 3; ++other)
-                if (other != axis && (q[other] < lo[other] || q[other] > hi[other])) on_face = false;
+                if (other != axis && (q[other] < lo[other] || q[other] > hi[other]))
+                    on_face = false;
             if (!on_face) continue;
             Vec3 n;
             (axis == 0 ? n.x : axis == 1 ? n.y : n.z) = side ? 1 : -1;
@@ -592,7 +622,8 @@ void box_hits(const BoxShape& box, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
 }
 
 // A cylinder (equal radii) or cone about base -> cap, with its caps unless open.
-void cone_hits(Vec3 base, Vec3 cap, double r0, double r1, bool open, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
+void cone_hits(Vec3 base, Vec3 cap, double r0, double r1, bool open, Vec3 o, Vec3 d,
+               std::vector<Hit>& hits) {
     const Vec3 axis = cap - base;
     const double len = length(axis);
     const Vec3 u = (1 / len) * axis;
@@ -601,8 +632,8 @@ void cone_hits(Vec3 base, Vec3 cap, double r0, double r1, bool open, Vec3 o, Vec
     const double wu = dot(w, u), du = dot(d, u);
     const Vec3 wr = w - wu * u, dr = d - du * u;
     const double rw = r0 + slope * wu;
-    for (double t : quadratic_roots(dot(dr, dr) - slope * slope * du * du, 2 * (dot(wr, dr) - slope * rw * du),
-                                    dot(wr, wr) - rw * rw)) {
+    for (double t : quadratic_roots(dot(dr, dr) - slope * slope * du * du,
+                                    2 * (dot(wr, dr) - slope * rw * du), dot(wr, wr) - rw * rw)) {
         const double s = wu + t * du;
         if (s < 0 || s > len) continue;
         const Vec3 radial = wr + t * dr;
@@ -619,21 +650,25 @@ void cone_hits(Vec3 base, Vec3 cap, double r0, double r1, bool open, Vec3 o, Vec
 }
 
 void torus_hits(const TorusShape& torus, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
-    const double big = torus.major_radius * torus.major_radius, small = torus.minor_radius * torus.minor_radius;
+    const double big = torus.major_radius * torus.major_radius,
+                 small = torus.minor_radius * torus.minor_radius;
     const double outer = std::abs(torus.major_radius) + std::abs(torus.minor_radius);
-    const std::vector<double> span = quadratic_roots(dot(d, d), 2 * dot(o, d), dot(o, o) - outer * outer);
+    const std::vector<double> span =
+        quadratic_roots(dot(d, d), 2 * dot(o, d), dot(o, o) - outer * outer);
     if (span.size() < 2) return;
     // (|p|^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + z^2) along p = o + t d.
     const double a = dot(d, d), b = 2 * dot(o, d), c = dot(o, o) + big - small;
-    const double dxz = d.x * d.x + d.z * d.z, odxz = o.x * d.x + o.z * d.z, oxz = o.x * o.x + o.z * o.z;
+    const double dxz = d.x * d.x + d.z * d.z, odxz = o.x * d.x + o.z * d.z,
+                 oxz = o.x * o.x + o.z * o.z;
     const std::vector<double> coefficients{c * c - 4 * big * oxz, 2 * b * c - 8 * big * odxz,
                                            b * b + 2 * a * c - 4 * big * dxz, 2 * a * b, a * a};
     const double margin = 1e-9 * (span[1] - span[0]);
     for (double t : roots_between(coefficients, span[0] - margin, span[1] + margin)) {
         const Vec3 p = o + t * d;
         const double ring = std::hypot(p.x, p.z);
-        const Vec3 centre = ring > 0 ? Vec3{torus.major_radius * p.x / ring, 0, torus.major_radius * p.z / ring}
-                                     : Vec3{};
+        const Vec3 centre =
+            ring > 0 ? Vec3{torus.major_radius * p.x / ring, 0, torus.major_radius * p.z / ring}
+                     : Vec3{};
         hits.push_back({t, p - centre});
     }
 }
@@ -644,13 +679,15 @@ void disc_hit(const DiscShape& disc, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
     const double t = dot(disc.normal, disc.centre - o) / along;
     const Vec3 q = o + t * d - disc.centre;
     const double r2 = dot(q, q);
-    if (r2 <= disc.radius * disc.radius && r2 >= disc.hole_radius * disc.hole_radius) hits.push_back({t, disc.normal});
+    if (r2 <= disc.radius * disc.radius && r2 >= disc.hole_radius * disc.hole_radius)
+        hits.push_back({t, disc.normal});
 }
 
 bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
     if (const auto* s = std::get_if<SphereShape>(&shape)) {
         const Vec3 w = o - s->centre;
-        for (double t : quadratic_roots(dot(d, d), 2 * dot(w, d), dot(w, w) - s->radius * s->radius))
+        for (double t :
+             quadratic_roots(dot(d, d), 2 * dot(w, d), dot(w, w) - s->radius * s->radius))
             hits.push_back({t, w + t * d});
     } else if (const auto* b = std::get_if<BoxShape>(&shape)) {
         box_hits(*b, o, d, hits);
@@ -670,8 +707,8 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
         if (!mesh->mesh->normals.empty()) return false;  // smooth triangles' normals: not here
         std::vector<Hit> all;
         for (const auto& f : mesh->mesh->faces)
-            triangle_hit(mesh->mesh->vertices[f[0]], mesh->mesh->vertices[f[1]], mesh->mesh->vertices[f[2]], o, d,
-                         all);
+            triangle_hit(mesh->mesh->vertices[f[0]], mesh->mesh->vertices[f[1]],
+                         mesh->mesh->vertices[f[2]], o, d, all);
         hits.insert(hits.end(), all.begin(), all.end());
     } else {
         return false;
@@ -686,7 +723,8 @@ bool node_hits(const ObjectNode& node, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
     if (!inverse_of(node.transform, to_local)) return false;
     const Vec3 lo = to_local.point(o), ld = to_local.vector(d);
     std::vector<Hit> local;
-    if (node.kind == ObjectNode::Kind::light || node.kind == ObjectNode::Kind::light_group) return false;
+    if (node.kind == ObjectNode::Kind::light || node.kind == ObjectNode::Kind::light_group)
+        return false;
     if (node.kind == ObjectNode::Kind::shape) {
         if (!shape_hits(node.shape, lo, ld, local)) return false;
     } else {
@@ -731,16 +769,20 @@ bool node_hits(const ObjectNode& node, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
 
 }  // namespace
 
-bool object_inside(const ObjectNode& object, Vec3 point, bool& inside) { return node_inside(object, point, inside); }
+bool object_inside(const ObjectNode& object, Vec3 point, bool& inside) {
+    return node_inside(object, point, inside);
+}
 
-bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& hit, Vec3& normal, bool& found) {
+bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& hit, Vec3& normal,
+                  bool& found) {
     found = false;
     const double len = length(direction);
     if (!(len > 0)) return true;
     const Vec3 d = (1 / len) * direction;
     std::vector<Hit> hits;
     if (!node_hits(object, origin, d, hits)) return false;
-    constexpr double kMinimumDistance = 1e-6;  // a hit closer than this to the origin is the origin's own surface
+    constexpr double kMinimumDistance =
+        1e-6;  // a hit closer than this to the origin is the origin's own surface
     const Hit* nearest = nullptr;
     for (const Hit& h : hits)
         if (h.t > kMinimumDistance && (!nearest || h.t < nearest->t)) nearest = &h;

@@ -39,7 +39,7 @@ struct ObjectNode {
     ObjectAppearance appearance;  // what this node's own modifiers give
     bool no_shadow = false, no_image = false, no_reflection = false, no_radiosity = false;
     bool double_illuminate = false, inverse = false, uv_mapping = false, cutaway_textures = false;
-    std::optional<bool> hollow;                 // unset: as its enclosing CSG
+    std::optional<bool> hollow;                  // unset: as its enclosing CSG
     std::optional<double> radiosity_importance;  // unset: as its enclosing CSG, else 1
     ObjectPhotons photons;
     bool photons_given = false;  // a photons block or no_shadow: else as its enclosing CSG

@@ -44,7 +44,7 @@ struct ConeShape {
 };
 // Centred at the origin in the x-z plane, the y axis through its hole.
 struct TorusShape {
-    double major_radius = 1;  // centre of the hole to the middle of the rim
+    double major_radius = 1;    // centre of the hole to the middle of the rim
     double minor_radius = 0.5;  // radius of the rim's cross-section
     bool sturm = false;
 };
@@ -91,8 +91,8 @@ struct HeightFieldShape {
     // From `function W, H { ... }`: f(x, y) sampled on a W x H grid over [0, 1]^2.
     FunctionRef function;
     int function_width = 0, function_height = 0;
-    bool smooth = false;       // interpolated normals
-    double water_level = 0;    // heights below it are left out
+    bool smooth = false;     // interpolated normals
+    double water_level = 0;  // heights below it are left out
     bool hierarchy = true;
 };
 
@@ -111,11 +111,11 @@ struct IsosurfaceShape {
     double threshold = 0;
     double accuracy = 0.001;
     double max_gradient = 1.1;
-    bool evaluate = false;                  // dynamic max_gradient with the three values below
+    bool evaluate = false;                    // dynamic max_gradient with the three values below
     std::array<double, 3> evaluate_values{};  // P0 (minimum), P1 (over-estimate), P2 (attenuation)
-    bool open = false;                      // no surface where the container cuts it
-    int max_trace = 1;                      // intersections found per ray
-    bool all_intersections = false;         // every intersection (max_trace unlimited)
+    bool open = false;                        // no surface where the container cuts it
+    int max_trace = 1;                        // intersections found per ray
+    bool all_intersections = false;           // every intersection (max_trace unlimited)
 };
 
 // The surface <fx(u, v), fy(u, v), fz(u, v)> over the uv rectangle.
@@ -125,8 +125,8 @@ struct ParametricShape {
     ContainedBy contained_by;
     double max_gradient = 1.1;
     double accuracy = 0.001;
-    int precompute_depth = 0;                   // 0: no precompute
-    std::array<bool, 3> precompute_axes{};      // x, y, z ranges precomputed
+    int precompute_depth = 0;               // 0: no precompute
+    std::array<bool, 3> precompute_axes{};  // x, y, z ranges precomputed
 };
 
 // A 3-D slice of a 4-D julia set: h <- f(h) + parameter.
@@ -138,7 +138,7 @@ struct JuliaFractalShape {
     std::string function = "sqr";
     Vec2 power;  // pwr(x, y): the complex exponent x + iy
     int max_iteration = 20;
-    double precision = 20;  // values below 1 act as 1
+    double precision = 20;                           // values below 1 act as 1
     std::array<double, 4> slice_normal{0, 0, 0, 1};  // its fourth term is never 0
     double slice_distance = 0;
 };
@@ -218,12 +218,12 @@ struct PolygonShape {
 struct TriangleMesh {
     std::vector<Vec3> vertices;
     std::vector<std::array<int, 3>> faces;
-    std::vector<Vec3> normals;                     // smooth triangles and mesh2 normal_vectors
+    std::vector<Vec3> normals;  // smooth triangles and mesh2 normal_vectors
     // Per face: its normals; empty when normals (if any) follow `faces`. A face of a mesh that
     // mixes flat and smooth triangles has {-1, -1, -1} (flat).
     std::vector<std::array<int, 3>> normal_faces;
-    std::vector<Vec2> uvs;                      // uv_vectors
-    std::vector<std::array<int, 3>> uv_faces;   // per face; empty when uvs follow `faces`
+    std::vector<Vec2> uvs;                     // uv_vectors
+    std::vector<std::array<int, 3>> uv_faces;  // per face; empty when uvs follow `faces`
     // Per-triangle textures: `textures` holds them (texture_list of mesh2, the texture
     // identifiers of mesh); per face three indices into it (one repeated thrice for a single
     // texture, three for interpolation between the corners), or {-1, -1, -1} for the mesh's own.
@@ -262,9 +262,9 @@ struct PolynomialShape {
 };
 // A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0; inside where negative.
 struct QuadricShape {
-    Vec3 squares;  // A, B, C
-    Vec3 mixed;    // D (xy), E (xz), F (yz)
-    Vec3 linear;   // G, H, I
+    Vec3 squares;         // A, B, C
+    Vec3 mixed;           // D (xy), E (xz), F (yz)
+    Vec3 linear;          // G, H, I
     double constant = 0;  // J
 };
 
@@ -277,16 +277,22 @@ struct ObjectInstance;
 // are instances like the scene's, in world coordinates; difference subtracts the second and
 // later children from the first.
 struct CsgShape {
-    enum class Operation { union_of, merge, intersection, difference } operation = Operation::union_of;
+    enum class Operation {
+        union_of,
+        merge,
+        intersection,
+        difference
+    } operation = Operation::union_of;
     std::vector<ObjectInstance> children;
     bool split_union = true;  // union: photons shot at each child (`split_union off`: at the whole)
 };
 
-using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, MeshFileShape, CylinderShape,
-                           ConeShape, TorusShape, OvusShape, SuperellipsoidShape, BlobShape, HeightFieldShape,
-                           IsosurfaceShape, ParametricShape, JuliaFractalShape, LatheShape, PrismShape, SorShape,
-                           SphereSweepShape, TextShape, BicubicPatchShape, DiscShape, SmoothTriangleShape,
-                           PolygonShape, PolynomialShape, QuadricShape, CsgShape>;
+using Shape =
+    std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, MeshFileShape,
+                 CylinderShape, ConeShape, TorusShape, OvusShape, SuperellipsoidShape, BlobShape,
+                 HeightFieldShape, IsosurfaceShape, ParametricShape, JuliaFractalShape, LatheShape,
+                 PrismShape, SorShape, SphereSweepShape, TextShape, BicubicPatchShape, DiscShape,
+                 SmoothTriangleShape, PolygonShape, PolynomialShape, QuadricShape, CsgShape>;
 
 // The keyword that writes a shape ("sphere", "union", "mesh2" is "mesh" ...), for messages.
 const char* shape_keyword(const Shape& shape);
@@ -303,10 +309,10 @@ struct LightGroup {
 
 // An object's photons { } block: how POV-Ray's photon mapping treats it.
 struct ObjectPhotons {
-    bool target = false;          // photons are shot at it
+    bool target = false;            // photons are shot at it
     double spacing_multiplier = 1;  // `target S`: photon spacing times S
     bool refraction = false, reflection = false;
-    bool collect = true;       // photons are stored on it
+    bool collect = true;        // photons are stored on it
     bool pass_through = false;  // photons pass unaffected (set by no_shadow too)
 };
 
@@ -317,17 +323,18 @@ struct ObjectInstance {
     // Inherited from enclosing CSG (set there, set here).
     bool no_shadow = false, no_image = false, no_reflection = false, no_radiosity = false;
     bool double_illuminate = false;
-    bool hollow = false;  // its own `hollow [on|off]`, else its enclosing CSG's, else off
-    bool inverse = false;  // inside and outside swapped (its own only)
-    bool uv_mapping = false;        // textures mapped by the surface's uv coordinates
-    bool cutaway_textures = false;  // intersection, difference: cut faces keep the cutters' textures
+    bool hollow = false;      // its own `hollow [on|off]`, else its enclosing CSG's, else off
+    bool inverse = false;     // inside and outside swapped (its own only)
+    bool uv_mapping = false;  // textures mapped by the surface's uv coordinates
+    bool cutaway_textures =
+        false;  // intersection, difference: cut faces keep the cutters' textures
     ObjectPhotons photons;
     double radiosity_importance = 1;  // radiosity { importance }: its own, else its CSG's, else 1
     // Cut to the inside of all of these (clipped_by), and declared to lie inside all of these
     // (bounded_by); world coordinates, no textures.
     std::vector<ObjectInstance> clipped_by, bounded_by;
     std::shared_ptr<const LightGroup> light_group;  // null: lit by the scene's lights
-    int looks_like_of = -1;  // looks_like object of this light (index into the lights), or -1
+    int looks_like_of = -1;   // looks_like object of this light (index into the lights), or -1
     SourceLocation location;  // where the shape's keyword is
 };
 
