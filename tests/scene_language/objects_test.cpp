@@ -968,6 +968,13 @@ TEST(ObjectsLights, LightGroups) {
     EXPECT_EQ(inner->parent->parent, outer);
     EXPECT_EQ(s.objects[1].light_group, inner);
     expect_vec(s.lights[2].position, {0, 1, 1});
+    // In a CSG kept whole, a light group's objects and lights share one group.
+    const SceneDescription csg =
+        parse("difference { box { -1, 1 } light_group { sphere { 0, 0.5 } light_source { 5, 1 } } }");
+    ASSERT_EQ(csg.lights.size(), 1u);
+    ASSERT_TRUE(csg.lights[0].light_group);
+    const ObjectInstance& members = std::get<CsgShape>(csg.objects.at(0).shape).children.at(1);
+    EXPECT_EQ(std::get<CsgShape>(members.shape).children.at(0).light_group, csg.lights[0].light_group);
     // povray: objects and lights first, then only transforms and global_lights.
     EXPECT_EQ(error_of("light_group { sphere { 0, 1 } no_shadow }"),
               "expected a transform, global_lights or '}' to close 'light_group' opened at "
@@ -1146,6 +1153,18 @@ TEST(ObjectsGeometry, InsideAsPovRayAnswers) {
     // 3xz - 2y: the term order as POV-Ray evaluates it.
     EXPECT_EQ(inside("polynomial { 2, xyz(1,0,1):3, xyz(0,1,0):-2 }", "<1,1,0.5>"), 1);
     EXPECT_EQ(inside("polynomial { 2, xyz(1,0,1):3, xyz(0,1,0):-2 }", "<1,0.5,1>"), 0);
+    // A linear prism, even-odd over its outlines (a frame: the middle is a hole), conic too.
+    const std::string frame =
+        "prism { 0, 1, 10, <0,0>, <6,0>, <6,8>, <0,8>, <0,0>, <1,1>, <5,1>, <5,7>, <1,7>, <1,1> }";
+    EXPECT_EQ(inside(frame, "<3,0.5,4>"), 0);
+    EXPECT_EQ(inside(frame, "<0.5,0.5,4>"), 1);
+    EXPECT_EQ(inside(frame, "<0.5,1.5,4>"), 0);
+    const std::string conic = "prism { conic_sweep 0.5, 1, 4, <-1,-1>, <1,-1>, <0,1>, <-1,-1> }";
+    EXPECT_EQ(inside(conic, "<0,0.75,0>"), 1);
+    EXPECT_EQ(inside(conic, "<0.9,0.75,0>"), 0);
+    EXPECT_EQ(inside(conic, "<0.7,0.75,-0.7>"), 1);
+    EXPECT_EQ(inside(conic, "<0,0.25,0>"), 0);
+    EXPECT_EQ(inside("prism { 1, 0, 3, <-1,-1>, <1,-1>, <0,1> }", "<0,0.5,0>"), 1);
     EXPECT_EQ(error_of("#declare O = triangle { 0, x, y }\ncamera { location inside(O, 0) }"),
               "not supported: 'inside' of this kind of object at test.pov:2:19");
 }

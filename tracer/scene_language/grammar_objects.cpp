@@ -477,7 +477,6 @@ public:
                     for (const ObjectRef& child : node.children) add(*child, here);
                     return;
                 }
-                add_lights_inside(node, here);
                 break;
             case ObjectNode::Kind::shape: break;
         }
@@ -549,8 +548,8 @@ private:
     // A child of a CSG kept whole: lights are the scene's, light groups are unions of their
     // children with the group inherited.
     void add_child(CsgShape& csg, const ObjectNode& child, const Inherited& parent) {
-        if (child.kind == ObjectNode::Kind::light) return;
         const Inherited here = inherit(child, parent);
+        if (child.kind == ObjectNode::Kind::light) return add_light(child, parent, here);
         if (child.kind == ObjectNode::Kind::light_group) {
             ObjectInstance group;
             CsgShape members;
@@ -571,16 +570,6 @@ private:
         bare.to_world = parent.to_world;
         const Inherited here = inherit(node, bare);
         return instance(node, bare, here);
-    }
-
-    void add_lights_inside(const ObjectNode& node, const Inherited& here) {
-        for (const ObjectRef& child : node.children) {
-            const Inherited inner = inherit(*child, here);
-            if (child->kind == ObjectNode::Kind::light)
-                add_light(*child, here, inner);
-            else if (child->kind != ObjectNode::Kind::shape)
-                add_lights_inside(*child, inner);
-        }
     }
 
     void add_light(const ObjectNode& node, const Inherited& parent, const Inherited& here) {

@@ -15,8 +15,8 @@
 // is smaller in volume.
 //
 // inside and trace cover spheres, boxes, cylinders, cones, tori, planes, discs, triangles,
-// meshes (inside with an inside_vector; trace of flat triangles), quadrics and polynomials
-// (inside only), and CSG of those with transforms, inverse and clipped_by.
+// meshes (inside with an inside_vector; trace of flat triangles), quadrics, polynomials and
+// linear prisms (inside only), and CSG of those with transforms, inverse and clipped_by.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -444,7 +444,38 @@ struct Hit {
 
 void mesh_hits(const TriangleMesh& mesh, Vec3 o, Vec3 d, std::vector<Hit>& hits);
 
+// Whether (x, z) is inside the closed outlines of a linear prism (each sub-outline closes
+// where its first point repeats): an odd number of edge crossings, so that where an even
+// number of outlines overlap there is a hole, as POV-Ray has it.
+bool inside_outlines(const std::vector<Vec2>& points, double x, double z) {
+    bool inside = false;
+    size_t start = 0;
+    for (size_t i = 0; i + 1 < points.size(); ++i) {
+        const Vec2 a = points[i], b = points[i + 1];
+        if ((a.y > z) != (b.y > z) && x < a.x + (z - a.y) * (b.x - a.x) / (b.y - a.y))
+            inside = !inside;
+        if (b.x == points[start].x && b.y == points[start].y) start = i + 2, ++i;
+    }
+    return inside;
+}
+
+// A prism of linear spline between its heights; a conic one's outline scales with the height.
+bool prism_inside(const PrismShape& prism, Vec3 p, bool& inside) {
+    if (prism.spline != SplineKind::linear) return false;
+    const double low = std::min(prism.height1, prism.height2);
+    const double high = std::max(prism.height1, prism.height2);
+    inside = p.y >= low && p.y <= high;
+    if (!inside) return true;
+    if (!prism.conic_sweep) {
+        inside = inside_outlines(prism.points, p.x, p.z);
+    } else {
+        inside = p.y != 0 && inside_outlines(prism.points, p.x / p.y, p.z / p.y);
+    }
+    return true;
+}
+
 bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
+    if (const auto* prism = std::get_if<PrismShape>(&shape)) return prism_inside(*prism, p, inside);
     if (const auto* s = std::get_if<SphereShape>(&shape)) {
         const Vec3 q = p - s->centre;
         inside = dot(q, q) < s->radius * s->radius;
