@@ -876,8 +876,16 @@ TEST(ObjectsLights, AreaFadeMediaPhotons) {
     EXPECT_FALSE(l.photons_reflection);
     EXPECT_TRUE(l.photons_refraction);
     EXPECT_TRUE(l.photons_area_light);
-    EXPECT_EQ(parse("light_source { 0, 1 adaptive -1 }").lights[0].adaptive,
-              0);  // povray takes it as 0
+    // povray takes a negative adaptive as 0.
+    EXPECT_EQ(parse("light_source { 0, 1 adaptive -1 }").lights[0].adaptive, 0);
+
+    // povray's corrections of orient, with its warnings: circular, the first axis's length.
+    const std::string oriented = "light_source { 0, 1 area_light x, 2*y, 3, 2 orient }";
+    const LightSource o = parse(oriented).lights.at(0);
+    EXPECT_TRUE(o.circular);
+    expect_vec(o.axis2, {0, 1, 0});
+    EXPECT_EQ(warnings_of(oriented).size(), 3u);
+    EXPECT_TRUE(warnings_of("light_source { 0, 1 area_light x, y, 3, 3 circular orient }").empty());
 }
 
 TEST(ObjectsLights, WhatPovRayRefuses) {
@@ -969,12 +977,13 @@ TEST(ObjectsLights, LightGroups) {
     EXPECT_EQ(s.objects[1].light_group, inner);
     expect_vec(s.lights[2].position, {0, 1, 1});
     // In a CSG kept whole, a light group's objects and lights share one group.
-    const SceneDescription csg =
-        parse("difference { box { -1, 1 } light_group { sphere { 0, 0.5 } light_source { 5, 1 } } }");
+    const SceneDescription csg = parse(
+        "difference { box { -1, 1 } light_group { sphere { 0, 0.5 } light_source { 5, 1 } } }");
     ASSERT_EQ(csg.lights.size(), 1u);
     ASSERT_TRUE(csg.lights[0].light_group);
     const ObjectInstance& members = std::get<CsgShape>(csg.objects.at(0).shape).children.at(1);
-    EXPECT_EQ(std::get<CsgShape>(members.shape).children.at(0).light_group, csg.lights[0].light_group);
+    EXPECT_EQ(std::get<CsgShape>(members.shape).children.at(0).light_group,
+              csg.lights[0].light_group);
     // povray: objects and lights first, then only transforms and global_lights.
     EXPECT_EQ(error_of("light_group { sphere { 0, 1 } no_shadow }"),
               "expected a transform, global_lights or '}' to close 'light_group' opened at "

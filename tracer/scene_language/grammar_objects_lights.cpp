@@ -177,6 +177,26 @@ bool parse_light_modifier(Parser& p, ObjectNode& node) {
     }
 }
 
+// POV-Ray's corrections of an oriented area light at the end of its block, with its warnings
+// (checked with povray): orient makes it circular and takes the first axis's length for both.
+void correct_orient(Parser& p, const Token& keyword, LightSource& light) {
+    if (!light.area_light || !light.orient) return;
+    if (!light.circular) {
+        p.warn(keyword,
+               "orient can only be used with circular area lights: this one is now circular");
+        light.circular = true;
+    }
+    const double first = length(light.axis1), second = length(light.axis2);
+    if (first != second && second > 0) {
+        p.warn(keyword,
+               "with orient, the two axes of an area light must be of equal length: only the "
+               "first axis's length is used");
+        light.axis2 = (first / second) * light.axis2;
+    }
+    if (light.size1 != light.size2)
+        p.warn(keyword, "with orient, the two sample sizes of an area light should be equal");
+}
+
 }  // namespace
 
 // light_source { LIGHT_ID transforms } | light_source { <location> [, colour] modifiers }:
@@ -215,6 +235,7 @@ ObjectRef parse_light_source(Parser& p, const Token& keyword) {
                             p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
+    correct_orient(p, keyword, light);
     return node;
 }
 
