@@ -196,5 +196,48 @@ TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
               "no error");
 }
 
+TEST(RenderScene, RefusesWhatItDoesNotRender) {
+    auto error = [](const std::string& text) {
+        try {
+            RenderScene scene(parse_scene_text(text, "test.pov"));
+        } catch (const rayset::Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    auto refused = [](const std::string& feature, const std::string& at) {
+        return "not supported: " + feature + " at test.pov:" + at;
+    };
+    EXPECT_EQ(error("sphere { 0, 1 }\n  cylinder { 0, y, 1 }"), refused("cylinder", "2:3"));
+    EXPECT_EQ(error("difference { box { -1, 1 } sphere { 0, 2 } }"), refused("difference", "1:1"));
+    EXPECT_EQ(error("union { sphere { 0, 1 } sphere { x, 1 } inverse }"), refused("union", "1:1"));
+    EXPECT_EQ(error("sphere { 0, 1 clipped_by { plane { y, 0 } } }"), refused("clipped_by", "1:1"));
+    EXPECT_EQ(error("sphere { 0, 1 bounded_by { box { -1, 1 } } }"), refused("bounded_by", "1:1"));
+    EXPECT_EQ(error("sphere { 0, 1 inverse }"), refused("inverse", "1:1"));
+    EXPECT_EQ(error("sphere { 0, 1 double_illuminate }"), refused("double_illuminate", "1:1"));
+    EXPECT_EQ(error("sphere { 0, 1 no_radiosity }"), refused("no_radiosity", "1:1"));
+    EXPECT_EQ(error("sphere { 0, 1 uv_mapping }"), refused("uv_mapping", "1:1"));
+    EXPECT_EQ(error("sphere { 0, 0 }"), refused("sphere of radius 0 (only positive radii)", "1:1"));
+    EXPECT_EQ(error("light_group { box { 0, 1 } }"),
+              refused("light_group (at test.pov:1:1)", "1:15"));
+    EXPECT_EQ(error("#declare T = texture { pigment { rgb 1 } }\n"
+                    "mesh { triangle { 0, x, y texture { T } } }"),
+              refused("mesh triangle textures", "2:1"));
+    EXPECT_EQ(error("mesh { smooth_triangle { 0, y, x, y, z, y } triangle { 0, x, -z } }"),
+              refused("mesh mixing smooth and flat triangles", "1:1"));
+    EXPECT_EQ(error("light_source { 0, 1 cylinder }"), refused("cylinder light_source", "1:1"));
+    EXPECT_EQ(error("light_source { 0, 1 parallel point_at -y }"),
+              refused("parallel light_source", "1:1"));
+    EXPECT_EQ(error("light_source { 0, 1 projected_through { sphere { 0, 1 } } }"),
+              refused("projected_through", "1:1"));
+    EXPECT_EQ(error("light_group { light_source { 0, 1 } }"),
+              refused("light_group (at test.pov:1:1)", "1:15"));
+    // Photon and radiosity hints change nothing a path tracer computes; a looks_like object is
+    // an object without shadow.
+    EXPECT_EQ(error("sphere { 0, 1 photons { target } radiosity { importance 0.5 } hollow }"),
+              "no error");
+    EXPECT_EQ(error("light_source { 0, 1 looks_like { sphere { 0, 0.1 } } }"), "no error");
+}
+
 }  // namespace
 }  // namespace rayset::tracer

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -51,11 +52,24 @@ void check_device(RTCDevice device, const char* what) {
     throw Error(fmt::format("not supported: {} at {}", feature, where.str()));
 }
 
+// The light features the renderer does not render (lights.cpp refuses its own: shadowless,
+// circular and orient area lights, fade powers other than 2). media_interaction,
+// media_attenuation and photon flags matter only with media and photon mapping, which a path
+// tracer does not use; area_illumination is what its area lights always do.
+void refuse_unrendered(const LightSource& light) {
+    if (light.cylinder) refuse("cylinder light_source", light.location);
+    if (light.parallel) refuse("parallel light_source", light.location);
+    if (!light.projected_through.empty()) refuse("projected_through", light.location);
+    if (light.light_group)
+        refuse(fmt::format("light_group (at {})", light.light_group->location.str()), light.location);
+}
+
 // What the renderer does not render is refused, never ignored (README.md, "Scene items"). The
 // global settings left out here are hints of POV-Ray's own algorithms or affect only features
 // refused elsewhere.
 void refuse_what_is_not_rendered(const SceneDescription& scene) {
     check_camera_renderable(scene.camera);
+    for (const LightSource& light : scene.lights) refuse_unrendered(light);
     const Atmosphere& atmosphere = scene.atmosphere;
     if (!atmosphere.fogs.empty()) refuse("fog", atmosphere.fogs.front().location);
     if (!atmosphere.rainbows.empty()) refuse("rainbow", atmosphere.rainbows.front().location);

@@ -7,7 +7,11 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
 
+#include <fmt/format.h>
+
+#include "converters/error.h"
 #include "tracer/render/mesh_loader.h"
 
 namespace rayset::tracer {
@@ -17,6 +21,38 @@ using analytic::length;
 using analytic::normalized;
 
 namespace {
+
+// What the renderer does not render is refused, never dropped or approximated: the shapes
+// other than sphere, box, plane, triangle and mesh, CSG kept whole, and the modifiers that
+// change what is seen. Photon and radiosity hints (photons { }, radiosity { importance }),
+// hierarchy, sturm and hollow have nothing to change in a path tracer, which computes all
+// light transport; they pass.
+void refuse_unrendered(const ObjectInstance& o) {
+    const std::string where = o.location.str();
+    auto refuse = [&](const std::string& feature) {
+        throw Error(fmt::format("not supported: {} at {}", feature, where));
+    };
+    const Shape& s = o.shape;
+    const bool rendered_shape =
+        std::holds_alternative<SphereShape>(s) || std::holds_alternative<BoxShape>(s) ||
+        std::holds_alternative<PlaneShape>(s) || std::holds_alternative<TriangleShape>(s) ||
+        std::holds_alternative<MeshShape>(s) || std::holds_alternative<MeshFileShape>(s);
+    if (!rendered_shape) refuse(shape_keyword(s));
+    if (const auto* sphere = std::get_if<SphereShape>(&o.shape); sphere && !(sphere->radius > 0))
+        refuse(fmt::format("sphere of radius {} (only positive radii)", sphere->radius));
+    if (const auto* mesh = std::get_if<MeshShape>(&o.shape)) {
+        if (!mesh->mesh->face_textures.empty()) refuse("mesh triangle textures");
+        for (const auto& corners : mesh->mesh->normal_faces)
+            if (corners[0] < 0) refuse("mesh mixing smooth and flat triangles");
+    }
+    if (!o.clipped_by.empty()) refuse("clipped_by");
+    if (!o.bounded_by.empty()) refuse("bounded_by");
+    if (o.inverse) refuse("inverse");
+    if (o.double_illuminate) refuse("double_illuminate");
+    if (o.no_radiosity) refuse("no_radiosity");
+    if (o.uv_mapping) refuse("uv_mapping");
+    if (o.light_group) refuse(fmt::format("light_group (at {})", o.light_group->location.str()));
+}
 
 uint8_t flags_of(const ObjectInstance& o) {
     return uint8_t((o.no_shadow ? kNoShadow : 0) | (o.no_image ? kNoImage : 0) | (o.no_reflection ? kNoReflection : 0));
@@ -83,6 +119,7 @@ public:
         : device_(device), scene_(scene), description_(d), tables_(std::make_unique<GeometryTables>()) {}
 
     std::unique_ptr<GeometryTables> build() {
+        for (const ObjectInstance& o : description_.objects) refuse_unrendered(o);
         for (const ObjectInstance& o : description_.objects) tables_->object_flags.push_back(flags_of(o));
         LeafTable& plain = new_leaf();
         LeafTable& flagged = new_leaf();

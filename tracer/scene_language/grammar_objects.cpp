@@ -1,80 +1,94 @@
-// Objects: shapes, unions, object{} copies, meshes, light sources, the modifiers and transforms
-// they take, and the flattening of object trees into world-space instances and lights.
-#include <cmath>
-#include <filesystem>
+// Objects: which keyword starts which object, object { } copies, CSG (union, merge,
+// intersection, difference), the object modifiers every object takes, and the flattening of
+// object trees into world-space instances and lights.
+#include <type_traits>
+#include <utility>
 
 #include <fmt/format.h>
 
-#include "tracer/scene_language/grammar.h"
-#include "tracer/scene_language/object_tree.h"
+#include "tracer/scene_language/object_grammar.h"
 
 namespace rayset::tracer {
 namespace {
 
-ObjectRef parse_shape(Parser& p, const Token& keyword);
-ObjectRef parse_union(Parser& p, const Token& keyword);
+ObjectRef parse_csg(Parser& p, const Token& keyword);
 ObjectRef parse_object_statement(Parser& p, const Token& keyword);
-ObjectRef parse_mesh(Parser& p, const Token& keyword);
-ObjectRef parse_mesh2(Parser& p, const Token& keyword);
-ObjectRef parse_mesh_file(Parser& p, const Token& keyword);
-ObjectRef parse_light_source(Parser& p, const Token& keyword);
-bool parse_light_modifier(Parser& p, LightSource& light);
-bool parse_object_modifier(Parser& p, ObjectNode& node);
-void parse_object_modifiers(Parser& p, ObjectNode& node, const Token& keyword, const Token& open);
 
-ObjectRef parse_shape(Parser& p, const Token& keyword) {
-    const Token open = p.expect_open(keyword);
-    auto node = std::make_shared<ObjectNode>();
-    node->location = p.location_of(keyword);
-    if (keyword.is(Keyword::sphere)) {
-        SphereShape s;
-        s.centre = p.parse_vector();
-        p.accept_comma();
-        const Token at = p.peek();
-        s.radius = p.parse_float("as the sphere radius");
-        if (!(s.radius > 0)) p.fail(at, fmt::format("the sphere radius must be positive, found {}", s.radius));
-        node->shape = s;
-    } else if (keyword.is(Keyword::box)) {
-        const Vec3 a = p.parse_vector();
-        p.accept_comma();
-        const Vec3 b = p.parse_vector();
-        node->shape = BoxShape{{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)},
-                               {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}};
-    } else if (keyword.is(Keyword::plane)) {
-        const Token at = p.peek();
-        const Vec3 n = p.parse_vector();
-        p.accept_comma();
-        if (length(n) < 1e-10) p.fail(at, "degenerate plane normal (zero length)");
-        node->shape = PlaneShape{normalized(n), p.parse_float("as the plane distance")};
-    } else {  // triangle
-        TriangleShape t;
-        t.a = p.parse_vector();
-        p.accept_comma();
-        t.b = p.parse_vector();
-        p.accept_comma();
-        t.c = p.parse_vector();
-        node->shape = t;
-    }
-    parse_object_modifiers(p, *node, keyword, open);
-    return node;
+struct ObjectGrammar {
+    Keyword keyword;
+    ObjectRef (*parse)(Parser&, const Token&);
+};
+
+// Every keyword that starts an object (reference manual 3.4.5), and our mesh_file.
+const ObjectGrammar kObjectGrammar[] = {
+    {Keyword::sphere, parse_sphere},
+    {Keyword::box, parse_box},
+    {Keyword::cylinder, parse_cylinder},
+    {Keyword::cone, parse_cone},
+    {Keyword::torus, parse_torus},
+    {Keyword::ovus, parse_ovus},
+    {Keyword::superellipsoid, parse_superellipsoid},
+    {Keyword::plane, parse_plane},
+    {Keyword::disc, parse_disc},
+    {Keyword::triangle, parse_triangle},
+    {Keyword::smooth_triangle, parse_smooth_triangle},
+    {Keyword::poly, parse_poly},
+    {Keyword::cubic, parse_poly},
+    {Keyword::quartic, parse_poly},
+    {Keyword::polynomial, parse_polynomial},
+    {Keyword::quadric, parse_quadric},
+    {Keyword::lathe, parse_lathe},
+    {Keyword::prism, parse_prism},
+    {Keyword::sor, parse_sor},
+    {Keyword::sphere_sweep, parse_sphere_sweep},
+    {Keyword::polygon, parse_polygon},
+    {Keyword::bicubic_patch, parse_bicubic_patch},
+    {Keyword::text, parse_text},
+    {Keyword::blob, parse_blob},
+    {Keyword::height_field, parse_height_field},
+    {Keyword::isosurface, parse_isosurface},
+    {Keyword::parametric, parse_parametric},
+    {Keyword::julia_fractal, parse_julia_fractal},
+    {Keyword::mesh, parse_mesh},
+    {Keyword::mesh2, parse_mesh2},
+    {Keyword::mesh_file, parse_mesh_file},
+    {Keyword::union_, parse_csg},
+    {Keyword::composite, parse_csg},  // POV-Ray's old name for union
+    {Keyword::merge, parse_csg},
+    {Keyword::intersection, parse_csg},
+    {Keyword::difference, parse_csg},
+    {Keyword::object, parse_object_statement},
+    {Keyword::light_source, parse_light_source},
+    {Keyword::light_group, parse_light_group},
+};
+
+const ObjectGrammar* grammar_of(const Token& token) {
+    Keyword keyword;
+    if (!keyword_of(token, keyword)) return nullptr;
+    for (const ObjectGrammar& grammar : kObjectGrammar)
+        if (grammar.keyword == keyword) return &grammar;
+    return nullptr;
 }
 
-ObjectRef parse_union(Parser& p, const Token& keyword) {
+CsgShape::Operation csg_operation(const Token& keyword) {
+    if (keyword.is(Keyword::merge)) return CsgShape::Operation::merge;
+    if (keyword.is(Keyword::intersection)) return CsgShape::Operation::intersection;
+    if (keyword.is(Keyword::difference)) return CsgShape::Operation::difference;
+    return CsgShape::Operation::union_of;
+}
+
+// CSG: its objects first, then its modifiers (POV-Ray takes no object after a modifier).
+ObjectRef parse_csg(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
-    auto node = std::make_shared<ObjectNode>();
-    node->kind = ObjectNode::Kind::union_of;
-    node->location = p.location_of(keyword);
-    for (;;) {
-        const Token& token = p.peek();
-        if (token.is(Symbol::rbrace)) break;
-        if (starts_object(p, token)) {
-            node->children.push_back(parse_object(p));
-        } else if (!parse_object_modifier(p, *node)) {
-            p.fail_identifier(token, fmt::format("an object, an object modifier or '}}' to close 'union' opened at {}",
-                                                 p.location_of(open).str()));
-        }
-    }
-    p.expect_close(keyword, open);
+    auto node = new_node(p, keyword, ObjectNode::Kind::csg);
+    CsgShape csg;
+    csg.operation = csg_operation(keyword);
+    while (starts_object(p, p.peek())) node->children.push_back(parse_object(p));
+    if (node->children.size() < 2)
+        p.warn(keyword, fmt::format("'{}' with fewer than 2 objects", p.word(keyword)));
+    node->shape = csg;
+    compute_csg_bounds(*node);
+    parse_object_modifiers(p, *node, keyword, open);
     return node;
 }
 
@@ -89,321 +103,506 @@ ObjectRef parse_object_statement(Parser& p, const Token& keyword) {
     } else {
         p.fail_identifier(p.peek(), "an object identifier or an object after 'object {'");
     }
+    // A light takes the object modifiers here too (POV-Ray accepts them; they mean nothing to it).
     auto node = std::make_shared<ObjectNode>(*base);
-    if (node->kind == ObjectNode::Kind::light) {
-        for (;;) {
-            if (p.peek_is(Symbol::rbrace)) break;
-            if (!parse_light_modifier(p, node->light) && !p.parse_transform_item(node->transform))
-                p.fail_identifier(p.peek(), fmt::format("a light_source modifier or '}}' to close 'object' opened at {}",
-                                                        p.location_of(open).str()));
-        }
-        p.expect_close(keyword, open);
-    } else {
-        parse_object_modifiers(p, *node, keyword, open);
-    }
-    return node;
-}
-
-ObjectRef parse_mesh(Parser& p, const Token& keyword) {
-    const Token open = p.expect_open(keyword);
-    auto mesh = std::make_shared<TriangleMesh>();
-    auto node = std::make_shared<ObjectNode>();
-    node->location = p.location_of(keyword);
-    while (p.peek_is(Keyword::triangle)) {
-        const Token triangle = p.next();
-        const Token triangle_open = p.expect_open(triangle);
-        for (int i = 0; i < 3; ++i) {
-            if (i > 0) p.accept_comma();
-            mesh->vertices.push_back(p.parse_vector());
-        }
-        const int base = static_cast<int>(mesh->vertices.size()) - 3;
-        mesh->faces.push_back({base, base + 1, base + 2});
-        if (!p.peek_is(Symbol::rbrace))
-            p.fail_not_supported(p.peek(), "modifiers on a triangle inside a mesh (put them on the mesh)");
-        p.expect_close(triangle, triangle_open);
-    }
-    if (mesh->faces.empty()) p.fail_expected("at least one 'triangle { ... }' in the mesh", p.peek());
-    if (p.accept(Keyword::inside_vector)) p.parse_vector();  // only matters for CSG
-    node->shape = MeshShape{mesh};
     parse_object_modifiers(p, *node, keyword, open);
     return node;
 }
 
-ObjectRef parse_mesh2(Parser& p, const Token& keyword) {
-    const Token open = p.expect_open(keyword);
-    auto mesh = std::make_shared<TriangleMesh>();
-    auto node = std::make_shared<ObjectNode>();
-    node->location = p.location_of(keyword);
+// ---------------------------------------------------------------- modifiers
 
-    // "NAME { count, entry, entry, ... }" with exactly `count` entries.
-    auto read_list = [&](const Token& name, auto&& read_entry) {
-        const Token list_open = p.expect_open(name);
-        const int count = p.parse_int(fmt::format("as the number of entries of '{}'", p.word(name)), 0);
-        for (int i = 0; i < count; ++i) {
-            p.accept_comma();
-            if (p.peek_is(Symbol::rbrace))
-                p.fail(p.peek(), fmt::format("'{}' declares {} entries, found '}}' after {}", p.word(name), count, i));
-            read_entry();
-        }
-        p.accept_comma();
-        if (!p.peek_is(Symbol::rbrace))
-            p.fail_expected(fmt::format("'}}' after the {} entries declared by '{}'", count, p.word(name)), p.peek());
-        p.expect_close(name, list_open);
-    };
-    auto read_index_triple = [&](std::vector<std::array<int, 3>>& out) {
-        const Vec3 v = p.parse_vector();
-        out.push_back({static_cast<int>(v.x), static_cast<int>(v.y), static_cast<int>(v.z)});
-    };
-    std::vector<Token> face_tokens, normal_face_tokens;
-    Token faces_keyword, normal_indices_keyword;
-    bool have_vertices = false, have_faces = false, have_normal_indices = false;
+// The shapes with a sturm flag (blob, lathe, ovus, poly and its kin, prism, sor, torus).
+template <typename T, typename = void>
+struct HasSturm : std::false_type {};
+template <typename T>
+struct HasSturm<T, std::void_t<decltype(std::declval<T&>().sturm)>> : std::true_type {};
+
+bool takes_sturm(const Shape& shape) {
+    return std::visit([](const auto& s) { return HasSturm<std::decay_t<decltype(s)>>::value; },
+                      shape);
+}
+
+void set_sturm(Shape& shape, bool sturm) {
+    std::visit(
+        [&](auto& s) {
+            if constexpr (HasSturm<std::decay_t<decltype(s)>>::value) s.sturm = sturm;
+        },
+        shape);
+}
+
+bool* hierarchy_flag(Shape& shape) {
+    if (auto* blob = std::get_if<BlobShape>(&shape)) return &blob->hierarchy;
+    if (auto* mesh = std::get_if<MeshShape>(&shape)) return &mesh->hierarchy;
+    if (auto* field = std::get_if<HeightFieldShape>(&shape)) return &field->hierarchy;
+    return nullptr;
+}
+
+void parse_photons(Parser& p, const Token& keyword, ObjectNode& node) {
+    const Token open = p.expect_open(keyword);
+    ObjectPhotons& photons = node.photons;
+    node.photons_given = true;
     for (;;) {
         const Token token = p.peek();
-        if (token.is(Keyword::vertex_vectors)) {
-            p.next();
-            read_list(token, [&] { mesh->vertices.push_back(p.parse_vector()); });
-            have_vertices = true;
-        } else if (token.is(Keyword::normal_vectors)) {
-            p.next();
-            read_list(token, [&] { mesh->normals.push_back(p.parse_vector()); });
-        } else if (token.is(Keyword::face_indices)) {
-            faces_keyword = p.next();
-            read_list(faces_keyword, [&] {
-                face_tokens.push_back(p.peek());
-                read_index_triple(mesh->faces);
-            });
-            have_faces = true;
-        } else if (token.is(Keyword::normal_indices)) {
-            normal_indices_keyword = p.next();
-            read_list(normal_indices_keyword, [&] {
-                normal_face_tokens.push_back(p.peek());
-                read_index_triple(mesh->normal_faces);
-            });
-            have_normal_indices = true;
-        } else if (token.is(Keyword::uv_vectors) || token.is(Keyword::uv_indices) || token.is(Keyword::texture_list)) {
-            p.fail_not_supported(token, fmt::format("'{}' in mesh2", p.word(token)));
+        if (token.is(Symbol::rbrace)) break;
+        p.next();
+        if (token.is(Keyword::target)) {
+            photons.target = true;
+            if (p.starts_expression(p.peek()))
+                photons.spacing_multiplier = p.parse_float("after 'target'");
+        } else if (token.is(Keyword::refraction)) {
+            photons.refraction = p.parse_optional_bool();
+        } else if (token.is(Keyword::reflection)) {
+            photons.reflection = p.parse_optional_bool();
+        } else if (token.is(Keyword::collect)) {
+            photons.collect = p.parse_optional_bool();
+        } else if (token.is(Keyword::pass_through)) {
+            photons.pass_through = p.parse_optional_bool();
         } else {
-            break;
+            p.fail_identifier(
+                token,
+                fmt::format("target, refraction, reflection, collect, pass_through or '}}' to "
+                            "close 'photons' opened at {}",
+                            p.location_of(open).str()));
         }
     }
-    if (!have_vertices) p.fail_expected("'vertex_vectors' in mesh2", p.peek());
-    if (!have_faces) p.fail_expected("'face_indices' in mesh2", p.peek());
-    auto check = [&](const std::vector<std::array<int, 3>>& faces, const std::vector<Token>& at, size_t limit,
-                     const char* what, const char* list) {
-        for (size_t f = 0; f < faces.size(); ++f)
-            for (int index : faces[f])
-                if (index < 0 || static_cast<size_t>(index) >= limit)
-                    p.fail(at[f], fmt::format("{} index {} out of range: there are {} {}", what, index, limit, list));
-    };
-    check(mesh->faces, face_tokens, mesh->vertices.size(), "vertex", "vertex_vectors");
-    if (have_normal_indices) {
-        if (mesh->normal_faces.size() != mesh->faces.size())
-            p.fail(normal_indices_keyword, fmt::format("normal_indices has {} entries, face_indices {}",
-                                                       mesh->normal_faces.size(), mesh->faces.size()));
-        check(mesh->normal_faces, normal_face_tokens, mesh->normals.size(), "normal", "normal_vectors");
-    } else if (!mesh->normals.empty() && mesh->normals.size() != mesh->vertices.size()) {
-        p.fail(faces_keyword, fmt::format("without normal_indices, normal_vectors ({}) must match vertex_vectors ({})",
-                                          mesh->normals.size(), mesh->vertices.size()));
-    }
-    if (p.accept(Keyword::inside_vector)) p.parse_vector();
-    node->shape = MeshShape{mesh};
-    parse_object_modifiers(p, *node, keyword, open);
-    return node;
-}
-
-ObjectRef parse_mesh_file(Parser& p, const Token& keyword) {
-    const Token open = p.expect_open(keyword);
-    const Token name_token = p.peek();
-    const std::string name = p.parse_string();
-    std::string extension = std::filesystem::path(name).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".obj" && extension != ".ply")
-        p.fail(name_token, fmt::format("mesh_file \"{}\": unknown format '{}' (expected .obj or .ply)", name, extension));
-    auto node = std::make_shared<ObjectNode>();
-    node->location = p.location_of(keyword);
-    node->shape = MeshFileShape{p.resolve_file(name, name_token, "mesh file"), extension.substr(1)};
-    parse_object_modifiers(p, *node, keyword, open);
-    return node;
-}
-
-ObjectRef parse_light_source(Parser& p, const Token& keyword) {
-    const Token open = p.expect_open(keyword);
-    auto node = std::make_shared<ObjectNode>();
-    const ObjectRef* declared = p.peek_declared<ObjectRef>();
-    if (declared) {
-        if ((*declared)->kind != ObjectNode::Kind::light) p.fail_identifier(p.peek(), "a light_source identifier");
-        *node = **declared;
-        p.next();
-    } else {
-        node->kind = ObjectNode::Kind::light;
-        node->location = p.location_of(keyword);
-        node->light.location = node->location;
-        node->light.position = p.parse_vector();
-        p.accept_comma();
-        node->light.colour = p.parse_colour().rgb();
-    }
-    for (;;) {
-        if (p.peek_is(Symbol::rbrace)) break;
-        if (!parse_light_modifier(p, node->light) && !p.parse_transform_item(node->transform))
-            p.fail_identifier(p.peek(), fmt::format("a light_source modifier or '}}' to close 'light_source' opened at {}",
-                                                    p.location_of(open).str()));
-    }
     p.expect_close(keyword, open);
-    return node;
 }
 
-bool parse_light_modifier(Parser& p, LightSource& light) {
-    const Token token = p.peek();
-    if (token.is(Keyword::color) || token.is(Keyword::colour) || token.is(Keyword::rgb)) {
-        light.colour = p.parse_colour().rgb();
-        return true;
-    }
-    auto after = [&] { return fmt::format("after '{}'", p.word(token)); };
-    if (token.is(Keyword::spotlight)) light.spotlight = true;
-    else if (token.is(Keyword::point_at)) p.next(), light.point_at = p.parse_vector();
-    else if (token.is(Keyword::radius)) p.next(), light.radius = p.parse_float(after());
-    else if (token.is(Keyword::falloff)) p.next(), light.falloff = p.parse_float(after());
-    else if (token.is(Keyword::tightness)) p.next(), light.tightness = p.parse_float(after());
-    else if (token.is(Keyword::adaptive)) p.next(), light.adaptive = p.parse_int(after(), 0);
-    else if (token.is(Keyword::jitter)) p.next(), light.jitter = p.parse_optional_bool();
-    else if (token.is(Keyword::circular)) p.next(), light.circular = p.parse_optional_bool();
-    else if (token.is(Keyword::orient)) p.next(), light.orient = p.parse_optional_bool();
-    else if (token.is(Keyword::fade_distance)) p.next(), light.fade_distance = p.parse_float(after());
-    else if (token.is(Keyword::fade_power)) p.next(), light.fade_power = p.parse_float(after());
-    else if (token.is(Keyword::shadowless)) light.shadowless = true;
-    else if (token.is(Keyword::area_light)) {
-        // area_light <axis1>, <axis2>, size1, size2
-        p.next();
-        light.area_light = true;
-        light.axis1 = p.parse_vector();
-        p.accept_comma();
-        light.axis2 = p.parse_vector();
-        p.accept_comma();
-        light.size1 = p.parse_int("as the first area_light size", 1);
-        p.accept_comma();
-        light.size2 = p.parse_int("as the second area_light size", 1);
-    } else {
-        return false;
-    }
-    if (token.is(Keyword::spotlight) || token.is(Keyword::shadowless)) p.next();
-    return true;
-}
-
-bool parse_object_modifier(Parser& p, ObjectNode& node) {
-    if (p.parse_transform_item(node.transform)) return true;
-    const Token keyword = p.peek();
-    if (parse_appearance_modifier(p, node.appearance)) return true;
-    if (keyword.is(Keyword::normal)) {
-        p.fail_not_supported(keyword, "normal (bump) patterns");
-    } else if (keyword.is(Keyword::no_shadow)) {
-        p.next();
-        node.no_shadow = p.parse_optional_bool();
-    } else if (keyword.is(Keyword::no_image)) {
-        p.next();
-        node.no_image = p.parse_optional_bool();
-    } else if (keyword.is(Keyword::no_reflection)) {
-        p.next();
-        node.no_reflection = p.parse_optional_bool();
-    } else if (keyword.is(Keyword::hollow)) {
-        p.next();
-        node.hollow = p.parse_optional_bool();
-    } else {
-        return false;
-    }
-    return true;
-}
-
-void parse_object_modifiers(Parser& p, ObjectNode& node, const Token& keyword, const Token& open) {
-    for (;;) {
-        if (p.peek_is(Symbol::rbrace)) break;
-        if (!parse_object_modifier(p, node))
-            p.fail_identifier(p.peek(), fmt::format("an object modifier or '}}' to close '{}' opened at {}",
-                                                    p.word(keyword), p.location_of(open).str()));
+void parse_object_radiosity(Parser& p, const Token& keyword, ObjectNode& node) {
+    const Token open = p.expect_open(keyword);
+    while (!p.peek_is(Symbol::rbrace)) {
+        const Token token = p.next();
+        if (!token.is(Keyword::importance))
+            p.fail_identifier(token,
+                              fmt::format("importance or '}}' to close 'radiosity' opened at {}",
+                                          p.location_of(open).str()));
+        const Token at = p.peek();
+        const double importance = p.parse_float("after 'importance'");
+        if (!(importance > 0 && importance <= 1))
+            p.fail(at,
+                   fmt::format("radiosity importance must lie in (0, 1], found {}", importance));
+        node.radiosity_importance = importance;
     }
     p.expect_close(keyword, open);
 }
 
-struct Inherited {
-    Matrix4 to_world;
-    ObjectAppearance appearance;
-    bool no_shadow = false, no_image = false, no_reflection = false, hollow = false;
+// Why an object may not be a clipped_by or bounded_by object (POV-Ray takes untextured solid
+// objects only), or empty.
+std::string unfit_to_clip(const ObjectNode& node) {
+    if (node.appearance.texture) return "it has a texture";
+    switch (node.kind) {
+        case ObjectNode::Kind::light: return "a light_source is not an object with an inside";
+        case ObjectNode::Kind::csg:
+        case ObjectNode::Kind::light_group:
+            for (const ObjectRef& child : node.children) {
+                const std::string why = unfit_to_clip(*child);
+                if (!why.empty()) return why;
+            }
+            return "";
+        case ObjectNode::Kind::shape: break;
+    }
+    const Shape& s = node.shape;
+    if (const auto* mesh = std::get_if<MeshShape>(&s); mesh && !mesh->mesh->has_inside_vector)
+        return "a mesh without inside_vector has no inside";
+    if (std::holds_alternative<TriangleShape>(s) ||
+        std::holds_alternative<SmoothTriangleShape>(s) ||
+        std::holds_alternative<BicubicPatchShape>(s) ||
+        std::holds_alternative<ParametricShape>(s) || std::holds_alternative<MeshFileShape>(s))
+        return fmt::format("a {} has no inside", shape_keyword(s));
+    return "";
+}
+
+// clipped_by { OBJECTS } | clipped_by { bounded_by }, bounded_by likewise.
+void parse_attached_objects(Parser& p, const Token& keyword, ObjectNode& node) {
+    const Token open = p.expect_open(keyword);
+    const bool clip = keyword.is(Keyword::clipped_by);
+    std::vector<ObjectRef>& target = clip ? node.clipped_by : node.bounded_by;
+    const Keyword other = clip ? Keyword::bounded_by : Keyword::clipped_by;
+    if (p.peek_is(other)) {
+        const Token other_token = p.next();
+        const std::vector<ObjectRef>& source = clip ? node.bounded_by : node.clipped_by;
+        if (source.empty())
+            p.fail(other_token, fmt::format("'{0} {{ {1} }}' without a {1} before it",
+                                            p.word(keyword), p.word(other_token)));
+        target = source;
+    } else {
+        if (!starts_object(p, p.peek()))
+            p.fail_expected(fmt::format("an object in '{}'", p.word(keyword)), p.peek());
+        while (starts_object(p, p.peek())) {
+            const Token at = p.peek();
+            ObjectRef object = parse_object(p);
+            const std::string why = unfit_to_clip(*object);
+            if (!why.empty())
+                p.fail(at, fmt::format("'{}' takes untextured solid objects: {}", p.word(keyword),
+                                       why));
+            target.push_back(std::move(object));
+        }
+    }
+    p.expect_close(keyword, open);
+}
+
+struct FlagModifier {
+    Keyword keyword;
+    bool ObjectNode::*flag;
+    bool takes_bool;  // `KEYWORD [BOOL]`; else the bare keyword
 };
 
-void flatten(SceneDescription& scene, const ObjectNode& node, const Inherited& parent) {
-    Inherited here = parent;
-    here.to_world = parent.to_world * node.transform;
-    here.appearance = node.appearance;
-    inherit_appearance(here.appearance, parent.appearance);
-    here.no_shadow = parent.no_shadow || node.no_shadow;
-    here.no_image = parent.no_image || node.no_image;
-    here.no_reflection = parent.no_reflection || node.no_reflection;
-    here.hollow = parent.hollow || node.hollow;
+const FlagModifier kFlagModifiers[] = {
+    {Keyword::no_image, &ObjectNode::no_image, true},
+    {Keyword::no_reflection, &ObjectNode::no_reflection, true},
+    {Keyword::no_radiosity, &ObjectNode::no_radiosity, true},
+    {Keyword::double_illuminate, &ObjectNode::double_illuminate, true},
+    {Keyword::inverse, &ObjectNode::inverse, false},
+    {Keyword::uv_mapping, &ObjectNode::uv_mapping, false},
+};
 
-    switch (node.kind) {
-        case ObjectNode::Kind::union_of:
-            for (const ObjectRef& child : node.children) flatten(scene, *child, here);
-            return;
-        case ObjectNode::Kind::light: {
-            LightSource light = node.light;
-            light.position = here.to_world.point(light.position);
-            light.point_at = here.to_world.point(light.point_at);
-            light.axis1 = here.to_world.vector(light.axis1);
-            light.axis2 = here.to_world.vector(light.axis2);
-            scene.lights.push_back(light);
-            return;
+bool parse_flag_modifier(Parser& p, ObjectNode& node, Keyword keyword) {
+    for (const FlagModifier& modifier : kFlagModifiers)
+        if (modifier.keyword == keyword) {
+            p.next();
+            node.*modifier.flag = modifier.takes_bool ? p.parse_optional_bool() : true;
+            return true;
         }
-        case ObjectNode::Kind::shape: {
-            ObjectInstance instance;
-            instance.shape = node.shape;
-            instance.object_to_world = here.to_world;
-            instance.appearance = here.appearance;
-            instance.no_shadow = here.no_shadow;
-            instance.no_image = here.no_image;
-            instance.no_reflection = here.no_reflection;
-            instance.hollow = here.hollow;
-            instance.location = node.location;
-            scene.objects.push_back(std::move(instance));
-            return;
-        }
+    return false;
+}
+
+// sturm, hierarchy, split_union, cutaway_textures: only some objects take them.
+bool parse_restricted_modifier(Parser& p, ObjectNode& node, Keyword keyword) {
+    const Token token = p.peek();
+    auto refuse = [&](const char* which) {
+        p.fail(token, fmt::format("'{}' cannot be used with {} (only with {})", p.word(token),
+                                  node.kind == ObjectNode::Kind::shape ? shape_keyword(node.shape)
+                                                                       : "this object",
+                                  which));
+    };
+    const CsgShape* csg =
+        node.kind == ObjectNode::Kind::csg ? std::get_if<CsgShape>(&node.shape) : nullptr;
+    if (keyword == Keyword::sturm) {
+        if (node.kind != ObjectNode::Kind::shape || !takes_sturm(node.shape))
+            refuse("blob, cubic, lathe, ovus, poly, polynomial, prism, quartic, sor and torus");
+        p.next();
+        set_sturm(node.shape, p.parse_optional_bool());
+    } else if (keyword == Keyword::hierarchy) {
+        bool* flag = node.kind == ObjectNode::Kind::shape ? hierarchy_flag(node.shape) : nullptr;
+        if (!flag) refuse("blob, height_field, mesh and mesh2");
+        p.next();
+        *flag = p.parse_optional_bool();
+    } else if (keyword == Keyword::split_union) {
+        if (!csg || csg->operation != CsgShape::Operation::union_of) refuse("union");
+        p.next();
+        std::get<CsgShape>(node.shape).split_union = p.parse_optional_bool();
+    } else if (keyword == Keyword::cutaway_textures) {
+        if (!csg || (csg->operation != CsgShape::Operation::intersection &&
+                     csg->operation != CsgShape::Operation::difference))
+            refuse("intersection and difference");
+        p.next();
+        node.cutaway_textures = true;
+    } else {
+        return false;
     }
+    return true;
 }
 
 }  // namespace
 
+bool keyword_of(const Token& token, Keyword& keyword) {
+    if (token.kind != TokenKind::word || !is_keyword(token.name)) return false;
+    keyword = static_cast<Keyword>(token.name);
+    return true;
+}
+
+NodePtr new_node(Parser& p, const Token& keyword, ObjectNode::Kind kind) {
+    auto node = std::make_shared<ObjectNode>();
+    node->kind = kind;
+    node->location = p.location_of(keyword);
+    return node;
+}
+
+void finish_shape(Parser& p, ObjectNode& node, const Token& keyword, const Token& open) {
+    compute_shape_bounds(node);
+    parse_object_modifiers(p, node, keyword, open);
+}
+
+bool parse_node_transform(Parser& p, ObjectNode& node) {
+    const Token keyword = p.peek();
+    Matrix4 step;
+    if (!p.parse_transform_item(step)) return false;
+    // POV-Ray keeps a sphere a sphere through these (see ParseBounds).
+    const bool uniform = step(0, 1) == 0 && step(0, 2) == 0 && step(1, 0) == 0 && step(1, 2) == 0 &&
+                         step(2, 0) == 0 && step(2, 1) == 0 && step(0, 0) == step(1, 1) &&
+                         step(1, 1) == step(2, 2);
+    const bool similarity = keyword.is(Keyword::translate) || keyword.is(Keyword::rotate) ||
+                            (keyword.is(Keyword::scale) && uniform);
+    transform_node(node, step, similarity);
+    return true;
+}
+
+void transform_node(ObjectNode& node, const Matrix4& step, bool similarity) {
+    node.transform = step * node.transform;
+    auto carry = [&](ObjectRef& attached) {
+        auto moved = std::make_shared<ObjectNode>(*attached);
+        transform_node(*moved, step, similarity);
+        attached = moved;
+    };
+    for (ObjectRef& object : node.clipped_by) carry(object);
+    for (ObjectRef& object : node.bounded_by) carry(object);
+    if (node.looks_like) carry(node.looks_like);
+    if (node.projected_through) carry(node.projected_through);
+    transform_bounds(node, step, similarity);
+}
+
+bool parse_object_modifier(Parser& p, ObjectNode& node) {
+    if (parse_node_transform(p, node)) return true;
+    if (parse_appearance_modifier(p, node.appearance)) return true;
+    const Token token = p.peek();
+    Keyword keyword;
+    if (!keyword_of(token, keyword)) return false;
+    if (parse_flag_modifier(p, node, keyword) || parse_restricted_modifier(p, node, keyword))
+        return true;
+    switch (keyword) {
+        case Keyword::no_shadow:
+            p.next();
+            node.no_shadow = true;
+            node.photons.pass_through =
+                true;  // POV-Ray's rule; photons { pass_through off } undoes it
+            node.photons_given = true;
+            return true;
+        case Keyword::hollow:
+            p.next();
+            node.hollow = p.parse_optional_bool();
+            return true;
+        case Keyword::photons:
+            p.next();
+            parse_photons(p, token, node);
+            return true;
+        case Keyword::radiosity:
+            p.next();
+            parse_object_radiosity(p, token, node);
+            return true;
+        case Keyword::clipped_by:
+        case Keyword::bounded_by:
+            p.next();
+            parse_attached_objects(p, token, node);
+            return true;
+        default: return false;
+    }
+}
+
+void parse_object_modifiers(Parser& p, ObjectNode& node, const Token& keyword, const Token& open) {
+    for (;;) {
+        const Token& token = p.peek();
+        if (token.is(Symbol::rbrace)) break;
+        if (parse_object_modifier(p, node)) continue;
+        const bool csg = node.kind == ObjectNode::Kind::csg;
+        if (csg && starts_object(p, token))
+            p.fail(
+                token,
+                fmt::format(
+                    "an object after the modifiers of '{}' opened at {} (its objects come first)",
+                    p.word(keyword), p.location_of(open).str()));
+        // What the appearance grammar does not read yet.
+        if (token.is(Keyword::normal)) p.fail_not_supported(token, "normal (bump) patterns");
+        p.fail_identifier(
+            token,
+            fmt::format("{}an object modifier or '}}' to close '{}' opened at {}",
+                        csg ? "an object, " : "", p.word(keyword), p.location_of(open).str()));
+    }
+    p.expect_close(keyword, open);
+    apply_bounding_rules(node);
+}
+
+int parse_count(Parser& p, const std::string& what) {
+    const Token at = p.peek();
+    const int count = p.parse_int(fmt::format("as the number of {}", what), 0);
+    if (count > p.options().max_array_elements)
+        p.fail(at,
+               fmt::format("{} {}: more than the limit of {} (ParseOptions::max_array_elements)",
+                           count, what, p.options().max_array_elements));
+    return count;
+}
+
+Vec2 parse_vec2(Parser& p, const std::string& what) {
+    const Token at = p.peek();
+    const Numeric n = p.parse_numeric();
+    if (n.terms != 1 && n.terms != 2)
+        p.fail(at, fmt::format("expected a 2-D vector {}, found {} terms", what, n.terms));
+    const Numeric uv = n.promoted(2);
+    return {uv.v[0], uv.v[1]};
+}
+
+// ---------------------------------------------------------------- entry points
+
 bool starts_object(Parser& parser, const Token& token) {
     (void)parser;
-    return token.is(Keyword::sphere) || token.is(Keyword::box) || token.is(Keyword::plane) ||
-           token.is(Keyword::triangle) || token.is(Keyword::mesh) || token.is(Keyword::mesh2) ||
-           token.is(Keyword::union_) || token.is(Keyword::object) || token.is(Keyword::light_source) ||
-           token.is(Keyword::mesh_file);
+    return grammar_of(token) != nullptr;
 }
 
 ObjectRef parse_object(Parser& p) {
     const Token keyword = p.next();
-    if (keyword.is(Keyword::union_)) return parse_union(p, keyword);
-    if (keyword.is(Keyword::object)) return parse_object_statement(p, keyword);
-    if (keyword.is(Keyword::mesh)) return parse_mesh(p, keyword);
-    if (keyword.is(Keyword::mesh2)) return parse_mesh2(p, keyword);
-    if (keyword.is(Keyword::mesh_file)) return parse_mesh_file(p, keyword);
-    if (keyword.is(Keyword::light_source)) return parse_light_source(p, keyword);
-    return parse_shape(p, keyword);
+    const ObjectGrammar* grammar = grammar_of(keyword);
+    if (!grammar) p.fail_identifier(keyword, "an object");
+    return grammar->parse(p, keyword);
 }
 
-void add_to_scene(Parser& parser, const ObjectRef& object) { flatten(parser.scene(), *object, Inherited{}); }
+// ---------------------------------------------------------------- flattening
 
-bool object_bounding_box(const ObjectNode& object, Vec3& minimum, Vec3& maximum) {
-    (void)object, (void)minimum, (void)maximum;
-    return false;
-}
+namespace {
 
-bool object_inside(const ObjectNode& object, Vec3 point, bool& inside) {
-    (void)object, (void)point, (void)inside;
-    return false;
-}
+// What an object takes from the objects it is inside of.
+struct Inherited {
+    Matrix4 to_world;
+    ObjectAppearance appearance;
+    bool no_shadow = false, no_image = false, no_reflection = false, no_radiosity = false;
+    bool double_illuminate = false, uv_mapping = false, hollow = false;
+    double radiosity_importance = 1;
+    ObjectPhotons photons;
+    bool photons_given = false;
+    std::shared_ptr<const LightGroup> light_group;
+};
 
-bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& hit, Vec3& normal, bool& found) {
-    (void)object, (void)origin, (void)direction, (void)hit, (void)normal, (void)found;
-    return false;
+class Flattener {
+public:
+    explicit Flattener(SceneDescription& scene) : scene_(scene) {}
+
+    // Adds `node`'s instances and lights to the scene.
+    void add(const ObjectNode& node, const Inherited& parent) {
+        const Inherited here = inherit(node, parent);
+        switch (node.kind) {
+            case ObjectNode::Kind::light: add_light(node, parent, here); return;
+            case ObjectNode::Kind::light_group:
+                for (const ObjectRef& child : node.children) add(*child, here);
+                return;
+            case ObjectNode::Kind::csg:
+                if (splits(node)) {
+                    for (const ObjectRef& child : node.children) add(*child, here);
+                    return;
+                }
+                break;
+            case ObjectNode::Kind::shape: break;
+        }
+        scene_.objects.push_back(instance(node, parent, here));
+    }
+
+private:
+    // A union is split into its children unless it is clipped, bounded or inverted, as POV-Ray
+    // splits it; a light_group is split likewise (inherit gives its children its group).
+    static bool splits(const ObjectNode& node) {
+        return std::get<CsgShape>(node.shape).operation == CsgShape::Operation::union_of &&
+               !node.inverse && node.clipped_by.empty() && node.bounded_by.empty();
+    }
+
+    Inherited inherit(const ObjectNode& node, const Inherited& parent) const {
+        Inherited here = parent;
+        here.to_world = parent.to_world * node.transform;
+        here.appearance = node.appearance;
+        inherit_appearance(here.appearance, parent.appearance);
+        here.no_shadow = parent.no_shadow || node.no_shadow;
+        here.no_image = parent.no_image || node.no_image;
+        here.no_reflection = parent.no_reflection || node.no_reflection;
+        here.no_radiosity = parent.no_radiosity || node.no_radiosity;
+        here.double_illuminate = parent.double_illuminate || node.double_illuminate;
+        here.uv_mapping = parent.uv_mapping || node.uv_mapping;
+        here.hollow = node.hollow.value_or(parent.hollow);
+        here.radiosity_importance = node.radiosity_importance.value_or(parent.radiosity_importance);
+        if (node.photons_given) here.photons = node.photons, here.photons_given = true;
+        if (node.kind == ObjectNode::Kind::light_group) {
+            auto group = std::make_shared<LightGroup>();
+            group->parent = parent.light_group;
+            group->global_lights = node.global_lights;
+            group->location = node.location;
+            here.light_group = group;
+        }
+        return here;
+    }
+
+    // The instance of a shape or of a CSG kept whole; `here` is what it inherited, combined
+    // with its own modifiers.
+    ObjectInstance instance(const ObjectNode& node, const Inherited& parent,
+                            const Inherited& here) {
+        ObjectInstance result;
+        result.shape = node.shape;
+        result.object_to_world = here.to_world;
+        result.appearance = here.appearance;
+        result.no_shadow = here.no_shadow;
+        result.no_image = here.no_image;
+        result.no_reflection = here.no_reflection;
+        result.no_radiosity = here.no_radiosity;
+        result.double_illuminate = here.double_illuminate;
+        result.hollow = here.hollow;
+        result.inverse = node.inverse;
+        result.uv_mapping = here.uv_mapping;
+        result.cutaway_textures = node.cutaway_textures;
+        result.photons = here.photons;
+        result.radiosity_importance = here.radiosity_importance;
+        result.light_group = here.light_group;
+        result.location = node.location;
+        for (const ObjectRef& clip : node.clipped_by)
+            result.clipped_by.push_back(bare_instance(*clip, parent));
+        for (const ObjectRef& bound : node.bounded_by)
+            result.bounded_by.push_back(bare_instance(*bound, parent));
+        if (auto* csg = std::get_if<CsgShape>(&result.shape))
+            for (const ObjectRef& child : node.children) add_child(*csg, *child, here);
+        return result;
+    }
+
+    // A child of a CSG kept whole: lights are the scene's, light groups are unions of their
+    // children with the group inherited.
+    void add_child(CsgShape& csg, const ObjectNode& child, const Inherited& parent) {
+        const Inherited here = inherit(child, parent);
+        if (child.kind == ObjectNode::Kind::light) return add_light(child, parent, here);
+        if (child.kind == ObjectNode::Kind::light_group) {
+            ObjectInstance group;
+            CsgShape members;
+            for (const ObjectRef& member : child.children) add_child(members, *member, here);
+            group.shape = members;
+            group.object_to_world = here.to_world;
+            group.light_group = here.light_group;
+            group.location = child.location;
+            csg.children.push_back(std::move(group));
+            return;
+        }
+        csg.children.push_back(instance(child, parent, here));
+    }
+
+    // clipped_by, bounded_by and projected_through objects: shapes only, no appearance.
+    ObjectInstance bare_instance(const ObjectNode& node, const Inherited& parent) {
+        Inherited bare;
+        bare.to_world = parent.to_world;
+        const Inherited here = inherit(node, bare);
+        return instance(node, bare, here);
+    }
+
+    void add_light(const ObjectNode& node, const Inherited& parent, const Inherited& here) {
+        LightSource light = node.light;
+        const Matrix4& m = here.to_world;
+        light.position = m.point(light.position);
+        light.point_at = m.point(light.point_at);
+        light.axis1 = m.vector(light.axis1);
+        light.axis2 = m.vector(light.axis2);
+        light.light_group = here.light_group;
+        if (node.projected_through)
+            light.projected_through.push_back(bare_instance(*node.projected_through, parent));
+        const int index = static_cast<int>(scene_.lights.size());
+        scene_.lights.push_back(std::move(light));
+        if (node.looks_like) {
+            // POV-Ray gives it no_shadow so that it does not block its own light.
+            Inherited shown = parent;
+            shown.no_shadow = true;
+            shown.light_group = here.light_group;
+            const size_t first = scene_.objects.size();
+            add(*node.looks_like, shown);
+            for (size_t k = first; k < scene_.objects.size(); ++k)
+                scene_.objects[k].looks_like_of = index;
+        }
+    }
+
+    SceneDescription& scene_;
+};
+
+}  // namespace
+
+void add_to_scene(Parser& parser, const ObjectRef& object) {
+    Flattener(parser.scene()).add(*object, Inherited{});
 }
 
 }  // namespace rayset::tracer

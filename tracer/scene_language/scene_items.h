@@ -5,28 +5,47 @@
 // POV-Ray).
 #pragma once
 
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "tracer/scene_language/appearance.h"
+#include "tracer/scene_language/shapes.h"
 #include "tracer/scene_language/source_location.h"
 
 namespace rayset::tracer {
 
+// A light_source in world coordinates. Its type is the last of spotlight, cylinder and
+// shadowless written (each resets radius, falloff and tightness to its defaults); none of them:
+// a point light. `parallel` goes with any type.
 struct LightSource {
     Vec3 position;
     Rgb colour{1, 1, 1};
     bool spotlight = false;
+    bool cylinder = false;  // cylindrical: the spot's cone becomes a cylinder about point_at
     Vec3 point_at{0, 0, 1};
-    double radius = 30, falloff = 45, tightness = 0;  // degrees, POV-Ray's defaults
+    // Degrees, POV-Ray's spotlight defaults; a cylinder light's are 0.75, 1 and 0.
+    double radius = 30, falloff = 45, tightness = 0;
+    bool parallel = false;  // rays parallel to position -> point_at
     bool area_light = false;
     Vec3 axis1, axis2;          // full edge vectors of the area light
     int size1 = 1, size2 = 1;   // lights along each axis
     int adaptive = 0;
     bool jitter = false, circular = false, orient = false;
+    bool area_illumination = false;  // area lights also light surfaces as areas, not as points
     double fade_distance = 0, fade_power = 0;  // 0: no fading
     bool shadowless = false;
+    bool media_interaction = true;    // scattering media see it
+    bool media_attenuation = false;   // fog and media dim its light
+    // photons { }: whether it shoots photons that reflect, refract; per area-light point.
+    bool photons_reflection = true, photons_refraction = true, photons_area_light = false;
+    // projected_through { OBJECT }: only its light that passes through these reaches the scene
+    // (world coordinates, textures stripped). Its looks_like object is in the scene's objects
+    // (ObjectInstance::looks_like_of).
+    std::vector<ObjectInstance> projected_through;
+    std::shared_ptr<const LightGroup> light_group;  // null: a scene light; else lights its group only
     SourceLocation location;
 };
 
