@@ -482,6 +482,16 @@ TEST(AppearanceTextures, IdentifiersAndPartIdentifiers) {
     const Texture u = texture_of(appearance_of("texture { T pigment { filter 0.5 } }", declarations));
     EXPECT_DOUBLE_EQ(u.pigment.colour.red, 0);
     EXPECT_DOUBLE_EQ(u.pigment.colour.filter, 0.5);
+    // Array elements stand for identifiers.
+    const Texture w = texture_of(appearance_of(
+        "texture { A[1] pigment { Q[0] } }",
+        "#declare A = array[2] { texture { pigment { rgb 1 } }, texture { finish { phong 0.25 } } }\n"
+        "#declare Q = array[1] { pigment { rgb <0, 0, 1> } }"));
+    EXPECT_DOUBLE_EQ(w.finish.phong, 0.25);
+    EXPECT_DOUBLE_EQ(w.pigment.colour.blue, 1);
+    EXPECT_EQ(error_of("#declare A = array[1] { texture { } }\nsphere { 0, 1 pigment { A[0] } }"),
+              "wrong type: 'A' is an array, expected a colour, a pattern or a pigment modifier or '}' to close "
+              "'pigment' opened at test.pov:2:23 at test.pov:2:25");
     const Texture v = texture_of(appearance_of("texture { G pigment { marble } }",
                                                "#declare C = color_map { [0 rgb 1] [1 rgb 0] }\n"
                                                "#declare G = texture { pigment { gradient x color_map { C } } }"));

@@ -10,6 +10,8 @@
 #pragma once
 
 #include <functional>
+
+#include <fmt/format.h>
 #include <string>
 
 #include "tracer/scene_language/grammar.h"
@@ -73,6 +75,26 @@ void parse_interior_items(Parser& p, Interior& interior, const Token& keyword, c
 void parse_finish_body(Parser& p, Finish& finish, const Token& keyword, const Token& open);
 
 // ---- helpers
+// When the next token is an identifier, or an array element `A[i]...`, holding a T: takes it
+// into `out` and returns true; false (nothing taken) otherwise.
+template <class T>
+bool take_declared(Parser& p, T& out) {
+    if (const T* value = p.peek_declared<T>()) {
+        out = *value;
+        p.next();
+        return true;
+    }
+    const ArrayRef* array = p.peek_declared<ArrayRef>();
+    if (!array || (*array)->element_type != Value(T{}).index()) return false;
+    const Token at = p.peek();
+    const Value element = p.parse_rvalue(at);
+    if (const T* value = std::get_if<T>(&element)) {
+        out = *value;
+        return true;
+    }
+    p.fail(at, fmt::format("expected an element of '{}', found {}", p.word(at), type_name(element)));
+}
+
 // "to close 'pigment' opened at FILE:LINE:COLUMN" for messages.
 std::string closing_purpose(Parser& p, const Token& keyword, const Token& open, Symbol close = Symbol::rbrace);
 // A word POV-Ray reserves that our keyword table lacks (exr, hdr, bmp, number_of_sides ...).

@@ -61,11 +61,12 @@ bool is_texture_part(const Token& token) {
 
 // A pigment, normal or finish identifier written alone in a texture: it replaces that part.
 bool parse_part_identifier(Parser& p, Texture& texture) {
-    if (const PigmentRef* pigment = p.peek_declared<PigmentRef>()) texture.pigment = **pigment;
-    else if (const NormalRef* normal = p.peek_declared<NormalRef>()) texture.normal = *normal;
-    else if (const FinishRef* finish = p.peek_declared<FinishRef>()) texture.finish = **finish;
+    PigmentRef pigment;
+    FinishRef finish;
+    if (take_declared(p, pigment)) texture.pigment = *pigment;
+    else if (take_declared(p, texture.normal)) return true;
+    else if (take_declared(p, finish)) texture.finish = *finish;
     else return false;
-    p.next();
     return true;
 }
 
@@ -167,10 +168,8 @@ void parse_tiles(Parser& p, Texture& texture, const Token& tiles) {
 InteriorRef parse_interior_from(Parser& p, const Token& keyword, const InteriorRef& start) {
     const Token open = p.expect_open(keyword);
     auto interior = std::make_shared<Interior>(start ? *start : Interior{});
-    if (const InteriorRef* declared = p.peek_declared<InteriorRef>()) {
-        *interior = **declared;
-        p.next();
-    }
+    InteriorRef declared;
+    if (take_declared(p, declared)) *interior = *declared;
     interior->location = p.location_of(keyword);
     parse_interior_items(p, *interior, keyword, open);
     p.expect_close(keyword, open);
@@ -190,10 +189,8 @@ void modify_object_texture(Parser& p, const Token& keyword, ObjectAppearance& ap
 MaterialRef parse_material_block(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto material = std::make_shared<TextureAndInterior>();
-    if (const MaterialRef* declared = p.peek_declared<MaterialRef>()) {
-        *material = **declared;
-        p.next();
-    }
+    MaterialRef declared;
+    if (take_declared(p, declared)) *material = *declared;
     for (;;) {
         const Token token = p.peek();
         if (token.is(Symbol::rbrace)) break;
@@ -227,12 +224,9 @@ TextureRef parse_texture_body(Parser& p, const Token& keyword, const Token& open
     auto texture = std::make_shared<Texture>(default_texture(p));
     texture->location = p.location_of(keyword);
     const bool uv_mapping = p.accept(Keyword::uv_mapping);  // texture { uv_mapping TEXTURE_BODY }
-    bool from_identifier = false;
-    if (const TextureRef* declared = p.peek_declared<TextureRef>()) {
-        *texture = **declared;
-        p.next();
-        from_identifier = true;
-    }
+    TextureRef declared;
+    const bool from_identifier = take_declared(p, declared);
+    if (from_identifier) *texture = *declared;
     const Token first = p.peek();
     if (!from_identifier && is_pattern_type(p, first, PatternRole::texture)) {
         p.next();

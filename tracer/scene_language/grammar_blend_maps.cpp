@@ -99,25 +99,30 @@ void parse_entries(Parser& p, BlendMap& map, const Token& keyword, bool weights_
     }
 }
 
+// A map identifier (or array element) of the kind.
+bool take_declared_map(Parser& p, BlendMapKind kind, BlendMapPointer& result) {
+    auto take = [&](auto tagged) {
+        if (!take_declared(p, tagged)) return false;
+        result = tagged.item;
+        return true;
+    };
+    switch (kind) {
+        case BlendMapKind::colour: return take(ColourMapRef{});
+        case BlendMapKind::pigment: return take(PigmentMapRef{});
+        case BlendMapKind::normal: return take(NormalMapRef{});
+        case BlendMapKind::slope: return take(SlopeMapRef{});
+        case BlendMapKind::texture: return take(TextureMapRef{});
+        case BlendMapKind::density: return take(DensityMapRef{});
+    }
+    return false;
+}
+
 BlendMapPointer parse_map_block(Parser& p, const Token& keyword, BlendMapKind kind, bool weights_optional) {
     const Token open = p.expect_open(keyword);
     BlendMapPointer result;
-    const Value* declared = p.peek_value();
-    if (declared) {
-        const Token name = p.peek();
-        const BlendMapPointer* item = nullptr;
-        switch (kind) {
-            case BlendMapKind::colour: if (auto* m = std::get_if<ColourMapRef>(declared)) item = &m->item; break;
-            case BlendMapKind::pigment: if (auto* m = std::get_if<PigmentMapRef>(declared)) item = &m->item; break;
-            case BlendMapKind::normal: if (auto* m = std::get_if<NormalMapRef>(declared)) item = &m->item; break;
-            case BlendMapKind::slope: if (auto* m = std::get_if<SlopeMapRef>(declared)) item = &m->item; break;
-            case BlendMapKind::texture: if (auto* m = std::get_if<TextureMapRef>(declared)) item = &m->item; break;
-            case BlendMapKind::density: if (auto* m = std::get_if<DensityMapRef>(declared)) item = &m->item; break;
-        }
-        if (!item) p.fail_identifier(name, fmt::format("a {} identifier or '[' entries", map_keyword(kind)));
-        result = *item;
-        p.next();
-    } else {
+    if (!take_declared_map(p, kind, result)) {
+        if (p.peek().is_identifier() && p.peek_value())
+            p.fail_identifier(p.peek(), fmt::format("a {} identifier or '[' entries", map_keyword(kind)));
         auto map = std::make_shared<BlendMap>();
         map->kind = kind;
         parse_entries(p, *map, keyword, weights_optional);

@@ -128,10 +128,8 @@ bool parse_finish_item(Parser& p, Finish& finish) {
 }  // namespace
 
 void parse_finish_body(Parser& p, Finish& finish, const Token& keyword, const Token& open) {
-    if (const FinishRef* declared = p.peek_declared<FinishRef>()) {
-        finish = **declared;
-        p.next();
-    }
+    FinishRef declared;
+    if (take_declared(p, declared)) finish = *declared;
     finish.location = p.location_of(keyword);
     for (;;) {
         if (p.peek_is(Symbol::rbrace)) break;

@@ -75,10 +75,8 @@ bool parse_media_item(Parser& p, Media& media) {
 MediaRef parse_media(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto media = std::make_shared<Media>();
-    if (const MediaRef* declared = p.peek_declared<MediaRef>()) {
-        *media = **declared;
-        p.next();
-    }
+    MediaRef declared;
+    if (take_declared(p, declared)) *media = *declared;
     media->location = p.location_of(keyword);
     for (;;) {
         if (p.peek_is(Symbol::rbrace)) break;

@@ -157,9 +157,8 @@ void parse_slope(Parser& p, const Token& keyword, SlopeParameters& slope) {
 }
 
 void parse_object_pattern_object(Parser& p, Pattern& pattern) {
-    if (const ObjectRef* declared = p.peek_declared<ObjectRef>()) {
-        pattern.object = *declared;
-        p.next();
+    if (take_declared(p, pattern.object)) {
+        return;
     } else if (starts_object(p, p.peek())) {
         pattern.object = parse_object(p);
     } else {

@@ -122,15 +122,10 @@ Finish default_finish(Parser& p) { return default_texture(p).finish; }
 void parse_pigment_body(Parser& p, Pigment& pigment, PatternRole role, const Token& keyword, const Token& open,
                         Symbol close) {
     const bool uv_mapping = p.accept(Keyword::uv_mapping);  // pigment { uv_mapping PIGMENT_BODY }
-    if (role == PatternRole::pigment) {
-        if (const PigmentRef* declared = p.peek_declared<PigmentRef>()) {
-            pigment = **declared;
-            p.next();
-        }
-    } else if (const DensityRef* declared = p.peek_declared<DensityRef>()) {
-        pigment = *declared->item;
-        p.next();
-    }
+    PigmentRef declared_pigment;
+    DensityRef declared_density;
+    if (role == PatternRole::pigment && take_declared(p, declared_pigment)) pigment = *declared_pigment;
+    else if (role == PatternRole::density && take_declared(p, declared_density)) pigment = *declared_density.item;
     pigment.location = p.location_of(keyword);
     const Token type = p.peek();
     const bool colour_written = parse_pigment_type(p, pigment, role);
@@ -155,10 +150,8 @@ void parse_pigment_body(Parser& p, Pigment& pigment, PatternRole role, const Tok
 
 void parse_normal_body(Parser& p, Normal& normal, const Token& keyword, const Token& open, Symbol close) {
     const bool uv_mapping = p.accept(Keyword::uv_mapping);  // normal { uv_mapping NORMAL_BODY }
-    if (const NormalRef* declared = p.peek_declared<NormalRef>()) {
-        normal = **declared;
-        p.next();
-    }
+    NormalRef declared;
+    if (take_declared(p, declared)) normal = *declared;
     normal.location = p.location_of(keyword);
     const Token type = p.peek();
     const bool type_written = is_pattern_type(p, type, PatternRole::normal);
