@@ -96,23 +96,34 @@ std::map<PatternKind, BlendMap> make_builtin_maps() {
     const Colour marble_red{0.9, 0.08, 0.08};
     std::map<PatternKind, BlendMap> maps;
     maps[PatternKind::plain] = colour_map({{0, black}, {1, white}});
-    maps[PatternKind::agate] = colour_map({{0, white}, {0.5, {0.95, 0.75, 0.5}}, {0.5, {0.9, 0.7, 0.5}},
-                                           {0.6, {0.9, 0.7, 0.4}}, {0.6, {1, 0.7, 0.4}}, {1, {0.6, 0.3, 0}}});
-    maps[PatternKind::bozo] = colour_map({{0.4, white}, {0.4, green}, {0.6, green}, {0.6, blue}, {0.8, blue},
-                                          {0.8, red}});
-    maps[PatternKind::marble] = colour_map({{0, {0.9, 0.8, 0.8}}, {0.45, marble_red}, {0.45, black}, {0.55, black},
-                                            {0.55, marble_red}, {1, {0.9, 0.8, 0.8}}});
-    maps[PatternKind::radial] = colour_map({{0, cyan}, {0.333, yellow}, {0.666, magenta}, {1, cyan}});
-    maps[PatternKind::wood] = colour_map({{0.3, light_wood}, {0.3, dark_wood}, {0.7, dark_wood}, {0.7, light_wood}});
-    maps[PatternKind::mandel] = colour_map({{0, black}, {0.001, cyan}, {0.012, yellow}, {0.015, magenta},
-                                            {0.1, cyan}});
+    maps[PatternKind::agate] = colour_map({{0, white},
+                                           {0.5, {0.95, 0.75, 0.5}},
+                                           {0.5, {0.9, 0.7, 0.5}},
+                                           {0.6, {0.9, 0.7, 0.4}},
+                                           {0.6, {1, 0.7, 0.4}},
+                                           {1, {0.6, 0.3, 0}}});
+    maps[PatternKind::bozo] = colour_map(
+        {{0.4, white}, {0.4, green}, {0.6, green}, {0.6, blue}, {0.8, blue}, {0.8, red}});
+    maps[PatternKind::marble] = colour_map({{0, {0.9, 0.8, 0.8}},
+                                            {0.45, marble_red},
+                                            {0.45, black},
+                                            {0.55, black},
+                                            {0.55, marble_red},
+                                            {1, {0.9, 0.8, 0.8}}});
+    maps[PatternKind::radial] =
+        colour_map({{0, cyan}, {0.333, yellow}, {0.666, magenta}, {1, cyan}});
+    maps[PatternKind::wood] =
+        colour_map({{0.3, light_wood}, {0.3, dark_wood}, {0.7, dark_wood}, {0.7, light_wood}});
+    maps[PatternKind::mandel] =
+        colour_map({{0, black}, {0.001, cyan}, {0.012, yellow}, {0.015, magenta}, {0.1, cyan}});
     maps[PatternKind::julia] = maps[PatternKind::mandel];
     maps[PatternKind::checker] = colour_map({{0, blue}, {1, green}});
     maps[PatternKind::object] = maps[PatternKind::checker];
     maps[PatternKind::hexagon] = colour_map({{0, blue}, {1, green}, {2, red}});
     maps[PatternKind::brick] = colour_map({{0, {0.5, 0.5, 0.5}}, {1, {0.6, 0.15, 0.15}}});
     maps[PatternKind::square] = colour_map({{0, red}, {1, green}, {2, blue}, {3, yellow}});
-    maps[PatternKind::triangular] = colour_map({{0, red}, {1, green}, {2, blue}, {3, yellow}, {4, cyan}, {5, magenta}});
+    maps[PatternKind::triangular] =
+        colour_map({{0, red}, {1, green}, {2, blue}, {3, yellow}, {4, cyan}, {5, magenta}});
     maps[PatternKind::cubic] = maps[PatternKind::triangular];
     return maps;
 }

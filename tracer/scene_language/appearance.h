@@ -41,6 +41,7 @@ enum class PatternKind {
     image_map,     // pigment { image_map { ... } }: the image's colours
     bump_map,      // normal { bump_map { ... } }: the image's brightness as height
     material_map,  // texture { material_map { ... } }: the image's index picks a texture
+                   // (the last: the grammar goes through agate..material_map)
 };
 const char* pattern_name(PatternKind kind);  // POV-Ray's keyword: "checker", "image_map", ...
 
@@ -62,7 +63,9 @@ struct Turbulence {
 
 // A warp { ... } or a transform, in the order written (reference 3.4.7.5.5).
 struct Warp {
-    enum class Kind { transform, turbulence, black_hole, repeat, cylindrical, spherical, toroidal, planar, cubic };
+    enum class Kind {
+        transform, turbulence, black_hole, repeat, cylindrical, spherical, toroidal, planar, cubic
+    };
     Kind kind = Kind::transform;
     SourceLocation location;  // the warp keyword (transforms: none)
     // transform: from the pattern's space to the space it is placed in, composed from

@@ -12,10 +12,14 @@ namespace {
 // `above` laid over `below`, as POV-Ray layers textures: only plain layers.
 TextureRef layer(Parser& p, const Token& at, const TextureRef& below, const TextureRef& above) {
     if (above->kind == Texture::Kind::patterned)
-        p.fail(at, "cannot layer a patterned texture over another (POV-Ray: \"Cannot layer a patterned texture "
-                   "over another\")");
+        p.fail(at,
+               "cannot layer a patterned texture over another (POV-Ray: \"Cannot layer a patterned "
+               "texture "
+               "over another\")");
     if (below->kind == Texture::Kind::patterned)
-        p.fail(at, "cannot layer over a patterned texture (POV-Ray: \"Cannot layer over a patterned texture\")");
+        p.fail(at,
+               "cannot layer over a patterned texture (POV-Ray: \"Cannot layer over a patterned "
+               "texture\")");
     auto layered = std::make_shared<Texture>();
     layered->kind = Texture::Kind::layered;
     layered->location = below->location;
@@ -32,8 +36,12 @@ TextureRef layer(Parser& p, const Token& at, const TextureRef& below, const Text
 // with POV-Ray 3.7: `texture { LAYERED pigment { ... } }` changes the last layer written).
 Texture& top_layer(Parser& p, const Token& at, Texture& texture) {
     if (texture.kind == Texture::Kind::patterned)
-        p.fail(at, fmt::format("'{}' cannot modify a patterned texture (POV-Ray: \"Cannot layer over a patterned "
-                               "texture\")", p.word(at)));
+        p.fail(
+            at,
+            fmt::format(
+                "'{}' cannot modify a patterned texture (POV-Ray: \"Cannot layer over a patterned "
+                "texture\")",
+                p.word(at)));
     if (texture.kind == Texture::Kind::plain) return texture;
     auto top = std::make_shared<Texture>(*texture.layers.back());
     texture.layers.back() = top;
@@ -63,10 +71,14 @@ bool is_texture_part(const Token& token) {
 bool parse_part_identifier(Parser& p, Texture& texture) {
     PigmentRef pigment;
     FinishRef finish;
-    if (take_declared(p, pigment)) texture.pigment = *pigment;
-    else if (take_declared(p, texture.normal)) return true;
-    else if (take_declared(p, finish)) texture.finish = *finish;
-    else return false;
+    if (take_declared(p, pigment))
+        texture.pigment = *pigment;
+    else if (take_declared(p, texture.normal))
+        return true;
+    else if (take_declared(p, finish))
+        texture.finish = *finish;
+    else
+        return false;
     return true;
 }
 
@@ -88,7 +100,8 @@ void set_uv_mapping(Texture& texture) {
 }
 
 // The rest of a plain or layered texture: part identifiers, parts, transforms, uv_mapping.
-void parse_plain_texture_items(Parser& p, Texture& texture, const Token& keyword, const Token& open, Symbol close) {
+void parse_plain_texture_items(Parser& p, Texture& texture, const Token& keyword, const Token& open,
+                               Symbol close) {
     bool uv_mapping = false;
     for (;;) {
         const Token token = p.peek();
@@ -113,8 +126,8 @@ void parse_plain_texture_items(Parser& p, Texture& texture, const Token& keyword
 
 // The modifiers of a patterned texture: pattern modifiers, texture_map, transforms. After a
 // patterned texture identifier only transforms (reference 3.4.6.5).
-void parse_patterned_texture_items(Parser& p, Texture& texture, const Token& keyword, const Token& open, Symbol close,
-                                   bool from_identifier) {
+void parse_patterned_texture_items(Parser& p, Texture& texture, const Token& keyword,
+                                   const Token& open, Symbol close, bool from_identifier) {
     Matrix4 entries_transform;
     for (;;) {
         const Token token = p.peek();
@@ -126,12 +139,18 @@ void parse_patterned_texture_items(Parser& p, Texture& texture, const Token& key
         } else if (!from_identifier && token.is(Keyword::texture_map)) {
             p.next();
             texture.map = parse_map_modifier(p, token, BlendMapKind::texture, texture.pattern);
-        } else if (from_identifier || !parse_pattern_modifier(p, texture.pattern, PatternRole::texture)) {
+        } else if (from_identifier ||
+                   !parse_pattern_modifier(p, texture.pattern, PatternRole::texture)) {
             if (is_texture_part(token))
-                p.fail(token, fmt::format("a patterned texture takes no '{}': give it to the textures in its map "
-                                          "or list (POV-Ray's rule)", p.word(token)));
-            p.fail_identifier(token, fmt::format("{} or {}", from_identifier ? "a transform" : "a texture modifier",
-                                                 closing_purpose(p, keyword, open, close)));
+                p.fail(token,
+                       fmt::format(
+                           "a patterned texture takes no '{}': give it to the textures in its map "
+                           "or list (POV-Ray's rule)",
+                           p.word(token)));
+            p.fail_identifier(
+                token,
+                fmt::format("{} or {}", from_identifier ? "a transform" : "a texture modifier",
+                            closing_purpose(p, keyword, open, close)));
         }
     }
     texture.map = transformed_map(texture.map, entries_transform);
@@ -151,7 +170,8 @@ void parse_tiles(Parser& p, Texture& texture, const Token& tiles) {
             const TextureRef t = parse_texture(p, keyword);
             layers = layers ? layer(p, keyword, layers, t) : t;
         }
-        if (!layers) p.fail_expected(fmt::format("a texture for tile {} of 'tiles'", tile + 1), p.peek());
+        if (!layers)
+            p.fail_expected(fmt::format("a texture for tile {} of 'tiles'", tile + 1), p.peek());
         BlendMapEntry entry;
         entry.value = tile;
         entry.texture = layers;
@@ -179,7 +199,8 @@ InteriorRef parse_interior_from(Parser& p, const Token& keyword, const InteriorR
 // pigment, normal or finish as an object modifier: they modify the object's top texture
 // layer, or a copy of the default texture when it has none (reference 3.3.2.4).
 void modify_object_texture(Parser& p, const Token& keyword, ObjectAppearance& appearance) {
-    auto texture = std::make_shared<Texture>(appearance.texture ? *appearance.texture : default_texture(p));
+    auto texture =
+        std::make_shared<Texture>(appearance.texture ? *appearance.texture : default_texture(p));
     if (!appearance.texture) texture->location = p.location_of(keyword);
     parse_texture_part(p, keyword, top_layer(p, keyword, *texture));
     appearance.texture = texture;
@@ -197,21 +218,24 @@ MaterialRef parse_material_block(Parser& p, const Token& keyword) {
         Matrix4 transform;
         if (p.parse_transform_item(transform)) {
             // Only what the material holds so far moves (reference 3.4.5.5.3).
-            ObjectAppearance held{material->texture, material->interior_texture, material->interior};
+            ObjectAppearance held{material->texture, material->interior_texture,
+                                  material->interior};
             transform_appearance(held, transform);
             *material = {held.texture, held.interior_texture, held.interior};
             continue;
         }
         p.next();
         if (token.is(Keyword::texture) || token.is(Keyword::interior_texture)) {
-            TextureRef& slot = token.is(Keyword::texture) ? material->texture : material->interior_texture;
+            TextureRef& slot =
+                token.is(Keyword::texture) ? material->texture : material->interior_texture;
             const TextureRef t = parse_texture(p, token);
             slot = slot ? layer(p, token, slot, t) : t;
         } else if (token.is(Keyword::interior)) {
             material->interior = parse_interior_from(p, token, material->interior);
         } else {
-            p.fail_identifier(token, fmt::format("texture, interior_texture, interior, a transform or {}",
-                                                 closing_purpose(p, keyword, open)));
+            p.fail_identifier(token,
+                              fmt::format("texture, interior_texture, interior, a transform or {}",
+                                          closing_purpose(p, keyword, open)));
         }
     }
     p.expect_close(keyword, open);
@@ -232,14 +256,16 @@ TextureRef parse_texture_body(Parser& p, const Token& keyword, const Token& open
         p.next();
         texture->kind = Texture::Kind::patterned;
         texture->pattern = Pattern{};
-        const BlendMapPointer list = parse_pattern_type(p, first, texture->pattern, PatternRole::texture, nullptr);
+        const BlendMapPointer list =
+            parse_pattern_type(p, first, texture->pattern, PatternRole::texture, nullptr);
         texture->map = list;
     } else if (!from_identifier && first.is(Keyword::tiles)) {
         p.next();
         parse_tiles(p, *texture, first);
     }
     if (texture->kind == Texture::Kind::patterned)
-        parse_patterned_texture_items(p, *texture, keyword, open, close, from_identifier || first.is(Keyword::tiles));
+        parse_patterned_texture_items(p, *texture, keyword, open, close,
+                                      from_identifier || first.is(Keyword::tiles));
     else
         parse_plain_texture_items(p, *texture, keyword, open, close);
     if (uv_mapping) set_uv_mapping(*texture);
@@ -253,19 +279,25 @@ TextureRef parse_texture(Parser& p, const Token& keyword) {
     return texture;
 }
 
-TextureRef layer_textures(Parser& p, const Token& at, const TextureRef& below, const TextureRef& above) {
+TextureRef layer_textures(Parser& p, const Token& at, const TextureRef& below,
+                          const TextureRef& above) {
     return layer(p, at, below, above);
 }
 
-InteriorRef parse_interior(Parser& p, const Token& keyword) { return parse_interior_from(p, keyword, nullptr); }
+InteriorRef parse_interior(Parser& p, const Token& keyword) {
+    return parse_interior_from(p, keyword, nullptr);
+}
 
-MaterialRef parse_material(Parser& p, const Token& keyword) { return parse_material_block(p, keyword); }
+MaterialRef parse_material(Parser& p, const Token& keyword) {
+    return parse_material_block(p, keyword);
+}
 
 bool parse_appearance_modifier(Parser& p, ObjectAppearance& appearance) {
     const Token keyword = p.peek();
     if (keyword.is(Keyword::texture) || keyword.is(Keyword::interior_texture)) {
         p.next();
-        TextureRef& slot = keyword.is(Keyword::texture) ? appearance.texture : appearance.interior_texture;
+        TextureRef& slot =
+            keyword.is(Keyword::texture) ? appearance.texture : appearance.interior_texture;
         const TextureRef texture = parse_texture(p, keyword);
         slot = slot ? layer(p, keyword, slot, texture) : texture;
     } else if (is_texture_part(keyword)) {
@@ -280,12 +312,14 @@ bool parse_appearance_modifier(Parser& p, ObjectAppearance& appearance) {
         // The material's texture is layered over the object's; its interior replaces the object's.
         const MaterialRef material = parse_material(p, keyword);
         if (material->texture)
-            appearance.texture = appearance.texture ? layer(p, keyword, appearance.texture, material->texture)
-                                                    : material->texture;
+            appearance.texture = appearance.texture
+                                     ? layer(p, keyword, appearance.texture, material->texture)
+                                     : material->texture;
         if (material->interior_texture)
-            appearance.interior_texture = appearance.interior_texture
-                                              ? layer(p, keyword, appearance.interior_texture, material->interior_texture)
-                                              : material->interior_texture;
+            appearance.interior_texture =
+                appearance.interior_texture
+                    ? layer(p, keyword, appearance.interior_texture, material->interior_texture)
+                    : material->interior_texture;
         if (material->interior) appearance.interior = material->interior;
     } else {
         return false;
@@ -316,16 +350,22 @@ void parse_default(Parser& p, const Token& directive) {
             if (texture->kind == Texture::Kind::layered)
                 p.fail(token, "the default texture cannot be layered (POV-Ray's rule)");
             if (texture->kind == Texture::Kind::patterned)
-                p.fail(token, "the default texture cannot be patterned, tiles or a material_map (POV-Ray's rule)");
+                p.fail(token,
+                       "the default texture cannot be patterned, tiles or a material_map "
+                       "(POV-Ray's rule)");
             p.default_texture = texture;
             continue;
         }
         auto texture = std::make_shared<Texture>(default_texture(p));
-        if (token.is(Keyword::pigment)) texture->pigment = *parse_pigment(p, token);
-        else if (token.is(Keyword::normal)) texture->normal = parse_normal(p, token);
-        else if (token.is(Keyword::finish)) texture->finish = *parse_finish(p, token);
-        else p.fail_identifier(token, fmt::format("texture, pigment, normal, finish or {}",
-                                                  closing_purpose(p, directive, open)));
+        if (token.is(Keyword::pigment))
+            texture->pigment = *parse_pigment(p, token);
+        else if (token.is(Keyword::normal))
+            texture->normal = parse_normal(p, token);
+        else if (token.is(Keyword::finish))
+            texture->finish = *parse_finish(p, token);
+        else
+            p.fail_identifier(token, fmt::format("texture, pigment, normal, finish or {}",
+                                                 closing_purpose(p, directive, open)));
         p.default_texture = texture;
     }
     p.expect_close(directive, open);

@@ -41,8 +41,9 @@ void parse_colour_entry(Parser& p, BlendMap& map, double value, const Token& ope
     // Old form: what was read is the second value, a float filling all five terms.
     if (first.green != first.red || first.blue != first.red || first.filter != first.red ||
         first.transmit != first.red)
-        p.fail_expected(fmt::format("']' to close the color_map entry opened at {}", p.location_of(open).str()),
-                        p.peek());
+        p.fail_expected(
+            fmt::format("']' to close the color_map entry opened at {}", p.location_of(open).str()),
+            p.peek());
     map.entries.push_back(colour_entry(value, p.parse_colour()));
     p.accept_comma();
     map.entries.push_back(colour_entry(first.red, p.parse_colour()));
@@ -54,10 +55,13 @@ void parse_entry_item(Parser& p, BlendMap& map, BlendMapEntry& entry, const Toke
         case BlendMapKind::pigment:
         case BlendMapKind::density: {
             // A density starts black, a pigment as the #default one (as their blocks do).
-            auto pigment = std::make_shared<Pigment>(map.kind == BlendMapKind::pigment ? default_pigment(p) : Pigment{});
+            auto pigment = std::make_shared<Pigment>(
+                map.kind == BlendMapKind::pigment ? default_pigment(p) : Pigment{});
             pigment->location = p.location_of(open);
-            parse_pigment_body(p, *pigment, map.kind == BlendMapKind::pigment ? PatternRole::pigment : PatternRole::density,
-                               open, open, Symbol::rbracket);
+            parse_pigment_body(
+                p, *pigment,
+                map.kind == BlendMapKind::pigment ? PatternRole::pigment : PatternRole::density,
+                open, open, Symbol::rbracket);
             entry.pigment = pigment;
             break;
         }
@@ -74,7 +78,9 @@ void parse_entry_item(Parser& p, BlendMap& map, BlendMapEntry& entry, const Toke
             entry.slope = point.v[1];
             break;
         }
-        case BlendMapKind::texture: entry.texture = parse_texture_body(p, open, open, Symbol::rbracket); break;
+        case BlendMapKind::texture:
+            entry.texture = parse_texture_body(p, open, open, Symbol::rbracket);
+            break;
     }
 }
 
@@ -83,10 +89,14 @@ void parse_entries(Parser& p, BlendMap& map, const Token& keyword, bool weights_
     while (p.peek_is(Symbol::lbracket)) {
         const Token open = p.next();
         if (map.entries.size() >= kMaxMapEntries)
-            p.fail(open, fmt::format("'{}' has more than {} entries (POV-Ray's limit)", p.word(keyword), kMaxMapEntries));
+            p.fail(open, fmt::format("'{}' has more than {} entries (POV-Ray's limit)",
+                                     p.word(keyword), kMaxMapEntries));
         BlendMapEntry entry;
-        if (weights_optional && !p.starts_expression(p.peek())) entry.value = 1.0;  // average: weight 1
-        else entry.value = p.parse_float(fmt::format("as the value of a '{}' entry", p.word(keyword)));
+        if (weights_optional && !p.starts_expression(p.peek()))
+            entry.value = 1.0;  // average: weight 1
+        else
+            entry.value =
+                p.parse_float(fmt::format("as the value of a '{}' entry", p.word(keyword)));
         p.accept_comma();
         if (map.kind == BlendMapKind::colour) {
             parse_colour_entry(p, map, entry.value, open);
@@ -94,8 +104,8 @@ void parse_entries(Parser& p, BlendMap& map, const Token& keyword, bool weights_
             parse_entry_item(p, map, entry, open);
             map.entries.push_back(entry);
         }
-        p.expect(Symbol::rbracket, fmt::format("to close the '{}' entry opened at {}", p.word(keyword),
-                                               p.location_of(open).str()));
+        p.expect(Symbol::rbracket, fmt::format("to close the '{}' entry opened at {}",
+                                               p.word(keyword), p.location_of(open).str()));
     }
 }
 
@@ -117,17 +127,21 @@ bool take_declared_map(Parser& p, BlendMapKind kind, BlendMapPointer& result) {
     return false;
 }
 
-BlendMapPointer parse_map_block(Parser& p, const Token& keyword, BlendMapKind kind, bool weights_optional) {
+BlendMapPointer parse_map_block(Parser& p, const Token& keyword, BlendMapKind kind,
+                                bool weights_optional) {
     const Token open = p.expect_open(keyword);
     BlendMapPointer result;
     if (!take_declared_map(p, kind, result)) {
         if (p.peek().is_identifier() && p.peek_value())
-            p.fail_identifier(p.peek(), fmt::format("a {} identifier or '[' entries", map_keyword(kind)));
+            p.fail_identifier(p.peek(),
+                              fmt::format("a {} identifier or '[' entries", map_keyword(kind)));
         auto map = std::make_shared<BlendMap>();
         map->kind = kind;
         parse_entries(p, *map, keyword, weights_optional);
         if (map->entries.empty())
-            p.fail_expected(fmt::format("at least one '[' entry in '{}' (POV-Ray's rule)", p.word(keyword)), p.peek());
+            p.fail_expected(
+                fmt::format("at least one '[' entry in '{}' (POV-Ray's rule)", p.word(keyword)),
+                p.peek());
         result = map;
     }
     if (!p.peek_is(Symbol::rbrace))
@@ -137,9 +151,11 @@ BlendMapPointer parse_map_block(Parser& p, const Token& keyword, BlendMapKind ki
 }
 
 // One item of a block pattern's list, or false when the next token starts none.
-bool parse_list_item(Parser& p, PatternRole role, BlendMapKind& kind, BlendMapEntry& entry, bool first) {
+bool parse_list_item(Parser& p, PatternRole role, BlendMapKind& kind, BlendMapEntry& entry,
+                     bool first) {
     const Token token = p.peek();
-    const bool colour = (role == PatternRole::pigment || role == PatternRole::density) && p.starts_colour(token);
+    const bool colour =
+        (role == PatternRole::pigment || role == PatternRole::density) && p.starts_colour(token);
     const Keyword item_keyword = role == PatternRole::pigment   ? Keyword::pigment
                                  : role == PatternRole::normal  ? Keyword::normal
                                  : role == PatternRole::texture ? Keyword::texture
@@ -147,7 +163,7 @@ bool parse_list_item(Parser& p, PatternRole role, BlendMapKind& kind, BlendMapEn
     const bool block = token.is(item_keyword);
     if (!colour && !block) return false;
     if (first) {
-        kind = colour ? BlendMapKind::colour
+        kind = colour                         ? BlendMapKind::colour
                : role == PatternRole::pigment ? BlendMapKind::pigment
                : role == PatternRole::normal  ? BlendMapKind::normal
                : role == PatternRole::texture ? BlendMapKind::texture
@@ -176,7 +192,8 @@ bool parse_list_item(Parser& p, PatternRole role, BlendMapKind& kind, BlendMapEn
 }
 
 // A list item not written: the pattern's built-in colour, a flat normal, the default texture.
-void fill_missing_item(Parser& p, PatternKind pattern, BlendMapKind kind, size_t index, BlendMapEntry& entry) {
+void fill_missing_item(Parser& p, PatternKind pattern, BlendMapKind kind, size_t index,
+                       BlendMapEntry& entry) {
     const BlendMap& builtin = builtin_colour_map(pattern);
     const Colour colour = index < builtin.entries.size() ? builtin.entries[index].colour : Colour{};
     switch (kind) {
@@ -189,7 +206,9 @@ void fill_missing_item(Parser& p, PatternKind pattern, BlendMapKind kind, size_t
             break;
         }
         case BlendMapKind::normal: entry.normal = std::make_shared<Normal>(); break;
-        case BlendMapKind::texture: entry.texture = std::make_shared<Texture>(default_texture(p)); break;
+        case BlendMapKind::texture:
+            entry.texture = std::make_shared<Texture>(default_texture(p));
+            break;
         case BlendMapKind::slope: break;
     }
 }
@@ -218,12 +237,16 @@ BlendMapPointer parse_block_list(Parser& p, PatternKind kind, PatternRole role) 
     return map;
 }
 
-BlendMapPointer parse_map_modifier(Parser& p, const Token& keyword, BlendMapKind kind, const Pattern& pattern) {
+BlendMapPointer parse_map_modifier(Parser& p, const Token& keyword, BlendMapKind kind,
+                                   const Pattern& pattern) {
     const PatternKind k = pattern.kind;
     if (list_size(k) > 0 || k == PatternKind::image_map || k == PatternKind::bump_map ||
         k == PatternKind::material_map)
-        p.fail(keyword, fmt::format("'{}' cannot be used with the {} pattern (POV-Ray's rule: it takes a list or "
-                                    "its image)", p.word(keyword), pattern_name(k)));
+        p.fail(keyword,
+               fmt::format(
+                   "'{}' cannot be used with the {} pattern (POV-Ray's rule: it takes a list or "
+                   "its image)",
+                   p.word(keyword), pattern_name(k)));
     return parse_map_block(p, keyword, kind, k == PatternKind::average);
 }
 

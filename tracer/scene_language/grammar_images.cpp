@@ -10,8 +10,9 @@ namespace {
 
 // POV-Ray's bitmap types; exr, hdr and bmp are reserved words our keyword table lacks.
 bool bitmap_type(Parser& p, const Token& token, std::string& type) {
-    static constexpr Keyword kTypes[] = {Keyword::gif, Keyword::iff, Keyword::jpeg, Keyword::pgm, Keyword::png,
-                                         Keyword::ppm, Keyword::sys, Keyword::tga, Keyword::tiff};
+    static constexpr Keyword kTypes[] = {Keyword::gif, Keyword::iff, Keyword::jpeg,
+                                         Keyword::pgm, Keyword::png, Keyword::ppm,
+                                         Keyword::sys, Keyword::tga, Keyword::tiff};
     for (Keyword keyword : kTypes)
         if (token.is(keyword)) {
             type = p.word(token);
@@ -39,15 +40,18 @@ void parse_image_source(Parser& p, ImageMap& image, const Token& keyword) {
     if (bitmap_type(p, token, image.file_type)) p.next();
     const Token name_token = p.peek();
     if (!p.starts_string(name_token))
-        p.fail_identifier(name_token, fmt::format("a file name after the bitmap type in '{}'", p.word(keyword)));
+        p.fail_identifier(
+            name_token, fmt::format("a file name after the bitmap type in '{}'", p.word(keyword)));
     const std::string name = p.parse_string();
     image.path = p.resolve_file(name, name_token, "image file");
     // gamma and premultiplied belong right after the file name.
     for (;;) {
         if (p.accept(Keyword::gamma)) {
             image.gamma_given = true;
-            if (p.accept(Keyword::srgb)) image.gamma_srgb = true;
-            else image.gamma = p.parse_float("after 'gamma'");
+            if (p.accept(Keyword::srgb))
+                image.gamma_srgb = true;
+            else
+                image.gamma = p.parse_float("after 'gamma'");
         } else if (p.accept(Keyword::premultiplied)) {
             image.premultiplied_given = true;
             image.premultiplied = p.parse_optional_bool();
@@ -61,7 +65,8 @@ void parse_image_source(Parser& p, ImageMap& image, const Token& keyword) {
 ImageMap::PaletteAmount parse_palette_amount(Parser& p, const Token& keyword) {
     ImageMap::PaletteAmount entry;
     if (!p.accept(Keyword::all)) {
-        entry.index = p.parse_int(fmt::format("as the palette index after '{}'", p.word(keyword)), 0);
+        entry.index =
+            p.parse_int(fmt::format("as the palette index after '{}'", p.word(keyword)), 0);
         p.accept_comma();
     }
     entry.amount = p.parse_float(fmt::format("as the amount after '{}'", p.word(keyword)));
@@ -70,24 +75,33 @@ ImageMap::PaletteAmount parse_palette_amount(Parser& p, const Token& keyword) {
 
 // A bitmap modifier; false when the next token is none.
 bool parse_bitmap_modifier(Parser& p, ImageMap& image, const Token& keyword) {
+    static const std::vector<KeywordField<ImageMap>> fields = {
+        whole_field(Keyword::map_type, &ImageMap::map_type, 0),
+        flag_field(Keyword::once, &ImageMap::once),
+        whole_field(Keyword::interpolate, &ImageMap::interpolate, 0),
+        flag_field(Keyword::use_index, &ImageMap::use_index),
+    };
+    if (parse_keyword_field(p, image, fields)) return true;
     const Token token = p.peek();
     const bool image_map = keyword.is(Keyword::image_map);
-    auto after = [&] { return fmt::format("after '{}'", p.word(token)); };
-    if (token.is(Keyword::map_type)) p.next(), image.map_type = static_cast<int>(p.parse_float(after()));
-    else if (token.is(Keyword::once)) p.next(), image.once = true;
-    else if (token.is(Keyword::interpolate)) p.next(), image.interpolate = static_cast<int>(p.parse_float(after()));
-    else if (image_map && token.is(Keyword::filter)) p.next(), image.filter.push_back(parse_palette_amount(p, token));
-    else if (image_map && token.is(Keyword::transmit)) p.next(), image.transmit.push_back(parse_palette_amount(p, token));
-    else if (keyword.is(Keyword::image_pattern) && token.is(Keyword::use_alpha)) p.next(), image.use_alpha = true;
-    else if (token.is(Keyword::use_index)) p.next(), image.use_index = true;
-    else if (token.is(Keyword::use_color) || token.is(Keyword::use_colour)) p.next(), image.use_index = false;
-    else return false;
+    if (image_map && p.accept(Keyword::filter)) {
+        image.filter.push_back(parse_palette_amount(p, token));
+    } else if (image_map && p.accept(Keyword::transmit)) {
+        image.transmit.push_back(parse_palette_amount(p, token));
+    } else if (keyword.is(Keyword::image_pattern) && p.accept(Keyword::use_alpha)) {
+        image.use_alpha = true;
+    } else if (p.accept(Keyword::use_color) || p.accept(Keyword::use_colour)) {
+        image.use_index = false;
+    } else {
+        return false;
+    }
     return true;
 }
 
 }  // namespace
 
-std::shared_ptr<const ImageMap> parse_image(Parser& p, const Token& keyword, const std::function<bool()>& on_item) {
+std::shared_ptr<const ImageMap> parse_image(Parser& p, const Token& keyword,
+                                            const std::function<bool()>& on_item) {
     const Token open = p.expect_open(keyword);
     auto image = std::make_shared<ImageMap>();
     image->location = p.location_of(keyword);
@@ -96,15 +110,20 @@ std::shared_ptr<const ImageMap> parse_image(Parser& p, const Token& keyword, con
         const Token token = p.peek();
         if (token.is(Symbol::rbrace)) break;
         std::string type;
-        if (!have_source && (bitmap_type(p, token, type) || token.is(Keyword::function) || p.starts_string(token))) {
+        if (!have_source && (bitmap_type(p, token, type) || token.is(Keyword::function) ||
+                             p.starts_string(token))) {
             parse_image_source(p, *image, keyword);
             have_source = true;
         } else if (!parse_bitmap_modifier(p, *image, keyword) && !(on_item && on_item())) {
-            p.fail_identifier(token, fmt::format("{} or {}", have_source ? "a bitmap modifier" : "a bitmap type and file",
-                                                 closing_purpose(p, keyword, open)));
+            p.fail_identifier(
+                token, fmt::format("{} or {}",
+                                   have_source ? "a bitmap modifier" : "a bitmap type and file",
+                                   closing_purpose(p, keyword, open)));
         }
     }
-    if (!have_source) p.fail_expected(fmt::format("a bitmap type and file name in '{}'", p.word(keyword)), p.peek());
+    if (!have_source)
+        p.fail_expected(fmt::format("a bitmap type and file name in '{}'", p.word(keyword)),
+                        p.peek());
     p.expect_close(keyword, open);
     return image;
 }

@@ -11,69 +11,19 @@
 namespace rayset::tracer {
 namespace {
 
-struct PatternKeyword {
-    Keyword keyword;
-    PatternKind kind;
-};
-
-// The pattern types that are one keyword (mandel, julia and magnet are read apart).
-constexpr PatternKeyword kPatternKeywords[] = {
-    {Keyword::agate, PatternKind::agate},
-    {Keyword::aoi, PatternKind::aoi},
-    {Keyword::average, PatternKind::average},
-    {Keyword::boxed, PatternKind::boxed},
-    {Keyword::bozo, PatternKind::bozo},
-    {Keyword::brick, PatternKind::brick},
-    {Keyword::bumps, PatternKind::bumps},
-    {Keyword::cells, PatternKind::cells},
-    {Keyword::checker, PatternKind::checker},
-    {Keyword::crackle, PatternKind::crackle},
-    {Keyword::cubic, PatternKind::cubic},
-    {Keyword::cylindrical, PatternKind::cylindrical},
-    {Keyword::density_file, PatternKind::density_file},
-    {Keyword::dents, PatternKind::dents},
-    {Keyword::facets, PatternKind::facets},
-    {Keyword::function, PatternKind::function},
-    {Keyword::gradient, PatternKind::gradient},
-    {Keyword::granite, PatternKind::granite},
-    {Keyword::hexagon, PatternKind::hexagon},
-    {Keyword::image_pattern, PatternKind::image_pattern},
-    {Keyword::julia, PatternKind::julia},
-    {Keyword::leopard, PatternKind::leopard},
-    {Keyword::mandel, PatternKind::mandel},
-    {Keyword::marble, PatternKind::marble},
-    {Keyword::object, PatternKind::object},
-    {Keyword::onion, PatternKind::onion},
-    {Keyword::pavement, PatternKind::pavement},
-    {Keyword::pigment_pattern, PatternKind::pigment_pattern},
-    {Keyword::planar, PatternKind::planar},
-    {Keyword::quilted, PatternKind::quilted},
-    {Keyword::radial, PatternKind::radial},
-    {Keyword::ripples, PatternKind::ripples},
-    {Keyword::slope, PatternKind::slope},
-    {Keyword::spherical, PatternKind::spherical},
-    {Keyword::spiral1, PatternKind::spiral1},
-    {Keyword::spiral2, PatternKind::spiral2},
-    {Keyword::spotted, PatternKind::spotted},
-    {Keyword::square, PatternKind::square},
-    {Keyword::tiling, PatternKind::tiling},
-    {Keyword::triangular, PatternKind::triangular},
-    {Keyword::waves, PatternKind::waves},
-    {Keyword::wood, PatternKind::wood},
-    {Keyword::wrinkles, PatternKind::wrinkles},
-    {Keyword::image_map, PatternKind::image_map},
-    {Keyword::bump_map, PatternKind::bump_map},
-    {Keyword::material_map, PatternKind::material_map},
-};
-
-bool pattern_keyword(const Token& token, PatternKind& kind) {
+// The pattern a keyword names: its keyword is its name (pattern_name), and magnet starts a
+// magnet mandel or julia.
+bool pattern_keyword(Parser& p, const Token& token, PatternKind& kind) {
+    if (token.kind != TokenKind::word || !is_keyword(token.name)) return false;
     if (token.is(Keyword::magnet)) {
         kind = PatternKind::mandel;  // or julia: the keyword after the magnet type says
         return true;
     }
-    for (const PatternKeyword& entry : kPatternKeywords)
-        if (token.is(entry.keyword)) {
-            kind = entry.kind;
+    const std::string& word = p.word(token);
+    for (int k = static_cast<int>(PatternKind::agate);
+         k <= static_cast<int>(PatternKind::material_map); ++k)
+        if (word == pattern_name(static_cast<PatternKind>(k))) {
+            kind = static_cast<PatternKind>(k);
             return true;
         }
     return false;
@@ -104,7 +54,8 @@ const char* roles_allowed(PatternKind kind) {
         case PatternKind::bump_map: return "a normal";
         case PatternKind::image_map: return "a pigment";
         case PatternKind::material_map: return "a texture";
-        default: return "a pigment, normal, texture or density (not a pattern function, in POV-Ray 3.7)";
+        default:
+            return "a pigment, normal, texture or density (not a pattern function, in POV-Ray 3.7)";
     }
 }
 
@@ -185,7 +136,8 @@ void parse_type_parameters(Parser& p, const Token& keyword, Pattern& pattern) {
             const Token at = p.peek();
             pattern.tiling = static_cast<int>(p.parse_float("as the tiling number"));
             if (pattern.tiling < 1 || pattern.tiling > 27)
-                p.fail(at, fmt::format("the tiling number must be between 1 and 27, found {}", pattern.tiling));
+                p.fail(at, fmt::format("the tiling number must be between 1 and 27, found {}",
+                                       pattern.tiling));
             break;
         }
         case PatternKind::mandel:
@@ -202,22 +154,13 @@ void parse_type_parameters(Parser& p, const Token& keyword, Pattern& pattern) {
 
 // ---------------------------------------------------------------- warps
 
-void parse_turbulence_items(Parser& p, Turbulence& turbulence) {
-    for (;;) {
-        const Token token = p.peek();
-        if (token.is(Keyword::octaves)) {
-            p.next();
-            turbulence.octaves = static_cast<int>(p.parse_float("after 'octaves'"));
-        } else if (token.is(Keyword::omega)) {
-            p.next();
-            turbulence.omega = p.parse_float("after 'omega'");
-        } else if (token.is(Keyword::lambda)) {
-            p.next();
-            turbulence.lambda = p.parse_float("after 'lambda'");
-        } else {
-            return;
-        }
-    }
+const std::vector<KeywordField<Turbulence>>& turbulence_fields() {
+    static const std::vector<KeywordField<Turbulence>> fields = {
+        whole_field(Keyword::octaves, &Turbulence::octaves, 0),
+        number_field(Keyword::omega, &Turbulence::omega),
+        number_field(Keyword::lambda, &Turbulence::lambda),
+    };
+    return fields;
 }
 
 void parse_repeat_warp(Parser& p, const Token& at, Warp& warp) {
@@ -225,12 +168,13 @@ void parse_repeat_warp(Parser& p, const Token& at, Warp& warp) {
     warp.repeat = p.parse_vector();
     const int axes = (warp.repeat.x != 0) + (warp.repeat.y != 0) + (warp.repeat.z != 0);
     if (axes == 0) p.fail(at, "a repeat warp needs a direction along one axis, found <0, 0, 0>");
-    if (axes > 1) p.fail(at, "a repeat warp repeats along one axis only (two components must be 0)");
-    for (;;) {
-        if (p.accept(Keyword::offset)) warp.offset = p.parse_vector();
-        else if (p.accept(Keyword::flip)) warp.flip = p.parse_vector();
-        else return;
-    }
+    if (axes > 1)
+        p.fail(at, "a repeat warp repeats along one axis only (two components must be 0)");
+    static const std::vector<KeywordField<Warp>> fields = {
+        vector_field(Keyword::offset, &Warp::offset),
+        vector_field(Keyword::flip, &Warp::flip),
+    };
+    while (parse_keyword_field(p, warp, fields)) {}
 }
 
 void parse_black_hole_warp(Parser& p, Warp& warp) {
@@ -238,28 +182,30 @@ void parse_black_hole_warp(Parser& p, Warp& warp) {
     warp.centre = p.parse_vector();
     p.accept_comma();
     warp.radius = p.parse_float("as the black hole radius");
-    for (;;) {
-        const Token token = p.peek();
-        auto after = [&] { return fmt::format("after '{}'", p.word(token)); };
-        if (token.is(Keyword::strength)) p.next(), warp.strength = p.parse_float(after());
-        else if (token.is(Keyword::falloff)) p.next(), warp.falloff = p.parse_float(after());
-        else if (token.is(Keyword::inverse)) p.next(), warp.inverse = true;
-        else if (token.is(Keyword::type)) p.next(), warp.black_hole_type = p.parse_int(after(), 0);
-        else if (token.is(Keyword::repeat)) p.next(), warp.black_hole_repeat = p.parse_vector();
-        else if (token.is(Keyword::turbulence)) p.next(), warp.black_hole_turbulence = p.parse_vector();
-        else return;
-    }
+    static const std::vector<KeywordField<Warp>> fields = {
+        number_field(Keyword::strength, &Warp::strength),
+        number_field(Keyword::falloff, &Warp::falloff),
+        flag_field(Keyword::inverse, &Warp::inverse),
+        whole_field(Keyword::type, &Warp::black_hole_type, 0),
+        vector_field(Keyword::repeat, &Warp::black_hole_repeat),
+        vector_field(Keyword::turbulence, &Warp::black_hole_turbulence),
+    };
+    while (parse_keyword_field(p, warp, fields)) {}
 }
 
+// cylindrical, spherical, toroidal: orientation, dist_exp; toroidal also major_radius.
 void parse_mapping_warp(Parser& p, Warp& warp) {
-    for (;;) {
-        const Token token = p.peek();
-        if (token.is(Keyword::orientation)) p.next(), warp.orientation = p.parse_vector();
-        else if (token.is(Keyword::dist_exp)) p.next(), warp.distance_exponent = p.parse_float("after 'dist_exp'");
-        else if (token.is(Keyword::major_radius) && warp.kind == Warp::Kind::toroidal)
-            p.next(), warp.major_radius = p.parse_float("after 'major_radius'");
-        else return;
-    }
+    static const std::vector<KeywordField<Warp>> fields = {
+        vector_field(Keyword::orientation, &Warp::orientation),
+        number_field(Keyword::dist_exp, &Warp::distance_exponent),
+    };
+    static const std::vector<KeywordField<Warp>> toroidal_fields = {
+        vector_field(Keyword::orientation, &Warp::orientation),
+        number_field(Keyword::dist_exp, &Warp::distance_exponent),
+        number_field(Keyword::major_radius, &Warp::major_radius),
+    };
+    while (parse_keyword_field(p, warp,
+                               warp.kind == Warp::Kind::toroidal ? toroidal_fields : fields)) {}
 }
 
 Warp parse_warp(Parser& p, const Token& keyword) {
@@ -274,8 +220,9 @@ Warp parse_warp(Parser& p, const Token& keyword) {
     } else if (item.is(Keyword::turbulence)) {
         warp.kind = Warp::Kind::turbulence;
         warp.turbulence.amount = p.parse_vector();
-        parse_turbulence_items(p, warp.turbulence);
-    } else if (item.is(Keyword::cylindrical) || item.is(Keyword::spherical) || item.is(Keyword::toroidal)) {
+        while (parse_keyword_field(p, warp.turbulence, turbulence_fields())) {}
+    } else if (item.is(Keyword::cylindrical) || item.is(Keyword::spherical) ||
+               item.is(Keyword::toroidal)) {
         warp.kind = item.is(Keyword::cylindrical) ? Warp::Kind::cylindrical
                     : item.is(Keyword::spherical) ? Warp::Kind::spherical
                                                   : Warp::Kind::toroidal;
@@ -290,8 +237,10 @@ Warp parse_warp(Parser& p, const Token& keyword) {
     } else if (item.is(Keyword::cubic)) {
         warp.kind = Warp::Kind::cubic;
     } else {
-        p.fail_expected("repeat, black_hole, turbulence, cylindrical, spherical, toroidal, planar or cubic in 'warp'",
-                        item);
+        p.fail_expected(
+            "repeat, black_hole, turbulence, cylindrical, spherical, toroidal, planar or cubic in "
+            "'warp'",
+            item);
     }
     p.expect_close(keyword, open);
     return warp;
@@ -320,8 +269,12 @@ const KindModifier kKindModifiers[] = {
     {Keyword::size, {PatternKind::facets}, "facets"},
     {Keyword::interpolate, {PatternKind::density_file}, "density_file"},
     {Keyword::exponent, {PatternKind::mandel, PatternKind::julia}, "mandel or julia (not magnet)"},
-    {Keyword::interior, {PatternKind::mandel, PatternKind::julia, PatternKind::pavement}, "fractal or pavement"},
-    {Keyword::exterior, {PatternKind::mandel, PatternKind::julia, PatternKind::pavement}, "fractal or pavement"},
+    {Keyword::interior,
+     {PatternKind::mandel, PatternKind::julia, PatternKind::pavement},
+     "fractal or pavement"},
+    {Keyword::exterior,
+     {PatternKind::mandel, PatternKind::julia, PatternKind::pavement},
+     "fractal or pavement"},
     {Keyword::pattern, {PatternKind::pavement}, "pavement"},
 };
 
@@ -337,14 +290,18 @@ bool is_kind_modifier(const Token& token, const KindModifier*& modifier) {
 void parse_fractal_colouring(Parser& p, const Token& keyword, Pattern& pattern) {
     const bool exterior = keyword.is(Keyword::exterior);
     const Token at = p.peek();
-    const int type = static_cast<int>(p.parse_float(fmt::format("as the {} type", p.word(keyword))));
+    const int type =
+        static_cast<int>(p.parse_float(fmt::format("as the {} type", p.word(keyword))));
     const int highest = exterior ? 8 : 6;
     if (type < 0 || type > highest)
-        p.fail(at, fmt::format("the fractal {} type must be 0 to {}, found {}", p.word(keyword), highest, type));
+        p.fail(at, fmt::format("the fractal {} type must be 0 to {}, found {}", p.word(keyword),
+                               highest, type));
     p.accept_comma();
     const double factor = p.parse_float(fmt::format("as the {} factor", p.word(keyword)));
-    if (exterior) pattern.fractal.exterior_type = type, pattern.fractal.exterior_factor = factor;
-    else pattern.fractal.interior_type = type, pattern.fractal.interior_factor = factor;
+    if (exterior)
+        pattern.fractal.exterior_type = type, pattern.fractal.exterior_factor = factor;
+    else
+        pattern.fractal.interior_type = type, pattern.fractal.interior_factor = factor;
 }
 
 // After a kind modifier's keyword (taken), allowed for this pattern.
@@ -362,8 +319,10 @@ void parse_kind_modifier(Parser& p, const Token& keyword, Pattern& pattern) {
         case Keyword::offset: pattern.crackle.offset = p.parse_float(after()); break;
         case Keyword::solid: pattern.crackle.solid = p.parse_optional_bool(); break;
         case Keyword::form:
-            if (pavement) pattern.pavement.form = whole();
-            else pattern.crackle.form = p.parse_vector();
+            if (pavement)
+                pattern.pavement.form = whole();
+            else
+                pattern.crackle.form = p.parse_vector();
             break;
         case Keyword::coords: pattern.facets_coords = p.parse_float(after()); break;
         case Keyword::size: pattern.facets_size = p.parse_float(after()); break;
@@ -372,9 +331,12 @@ void parse_kind_modifier(Parser& p, const Token& keyword, Pattern& pattern) {
         case Keyword::pattern: pattern.pavement.pattern = whole(); break;
         case Keyword::interior:
         case Keyword::exterior:
-            if (!pavement) parse_fractal_colouring(p, keyword, pattern);
-            else if (keyword.is(Keyword::interior)) pattern.pavement.interior = whole();
-            else pattern.pavement.exterior = whole();
+            if (!pavement)
+                parse_fractal_colouring(p, keyword, pattern);
+            else if (keyword.is(Keyword::interior))
+                pattern.pavement.interior = whole();
+            else
+                pattern.pavement.exterior = whole();
             break;
         default: break;
     }
@@ -392,35 +354,41 @@ Waveform waveform_of(const Token& token, bool& found) {
     return Waveform::ramp;
 }
 
+const std::vector<KeywordField<Pattern>>& pattern_fields() {
+    static const std::vector<KeywordField<Pattern>> fields = {
+        number_field(Keyword::phase, &Pattern::phase),
+        flag_field(Keyword::uv_mapping, &Pattern::uv_mapping),
+    };
+    return fields;
+}
+
 // Modifiers every pattern takes; false when the next token is none of them.
 bool parse_general_modifier(Parser& p, const Token& token, Pattern& pattern) {
-    auto after = [&] { return fmt::format("after '{}'", p.word(token)); };
     bool is_wave = false;
     const Waveform wave = waveform_of(token, is_wave);
     if (is_wave) {
         p.next();
         pattern.waveform = wave;
-        if (wave == Waveform::poly) pattern.poly_exponent = p.starts_expression(p.peek()) ? p.parse_float() : 1.0;
+        if (wave == Waveform::poly)
+            pattern.poly_exponent = p.starts_expression(p.peek()) ? p.parse_float() : 1.0;
         return true;
     }
-    if (token.is(Keyword::turbulence)) p.next(), pattern.turbulence.amount = p.parse_vector();
-    else if (token.is(Keyword::octaves)) p.next(), pattern.turbulence.octaves = static_cast<int>(p.parse_float(after()));
-    else if (token.is(Keyword::omega)) p.next(), pattern.turbulence.omega = p.parse_float(after());
-    else if (token.is(Keyword::lambda)) p.next(), pattern.turbulence.lambda = p.parse_float(after());
-    else if (token.is(Keyword::frequency)) {
-        p.next();
-        pattern.frequency = p.parse_float(after());
+    if (parse_keyword_field(p, pattern, pattern_fields()) ||
+        parse_keyword_field(p, pattern.turbulence, turbulence_fields()))
+        return true;
+    if (p.accept(Keyword::turbulence)) {
+        pattern.turbulence.amount = p.parse_vector();
+    } else if (p.accept(Keyword::frequency)) {
+        pattern.frequency = p.parse_float("after 'frequency'");
         pattern.frequency_written = true;
-    }
-    else if (token.is(Keyword::phase)) p.next(), pattern.phase = p.parse_float(after());
-    else if (token.is(Keyword::warp)) p.next(), pattern.warps.push_back(parse_warp(p, token));
-    else if (token.is(Keyword::uv_mapping)) p.next(), pattern.uv_mapping = true;
-    else if (token.is(Keyword::noise_generator)) {
-        p.next();
+    } else if (p.accept(Keyword::warp)) {
+        pattern.warps.push_back(parse_warp(p, token));
+    } else if (p.accept(Keyword::noise_generator)) {
         const Token at = p.peek();
-        pattern.noise_generator = static_cast<int>(p.parse_float(after()));
+        pattern.noise_generator = static_cast<int>(p.parse_float("after 'noise_generator'"));
         if (pattern.noise_generator < 0 || pattern.noise_generator > 3)
-            p.fail(at, fmt::format("noise_generator must be 0, 1, 2 or 3, found {}", pattern.noise_generator));
+            p.fail(at, fmt::format("noise_generator must be 0, 1, 2 or 3, found {}",
+                                   pattern.noise_generator));
     } else {
         return false;
     }
@@ -441,20 +409,18 @@ const char* role_name(PatternRole role) {
 }
 
 bool is_pattern_type(Parser& p, const Token& token, PatternRole role) {
-    (void)p;
-    PatternKind kind;
-    if (!pattern_keyword(token, kind)) return false;
     (void)role;  // a pattern not allowed in the role is reported by parse_pattern_type
-    return true;
+    PatternKind kind;
+    return pattern_keyword(p, token, kind);
 }
 
-BlendMapPointer parse_pattern_type(Parser& p, const Token& keyword, Pattern& pattern, PatternRole role,
-                                   double* amount) {
+BlendMapPointer parse_pattern_type(Parser& p, const Token& keyword, Pattern& pattern,
+                                   PatternRole role, double* amount) {
     PatternKind kind = PatternKind::plain;
-    pattern_keyword(keyword, kind);
+    pattern_keyword(p, keyword, kind);
     if (!allowed_in(kind, role))
-        p.fail(keyword, fmt::format("'{}' can only be used in {}, found in a {}", p.word(keyword), roles_allowed(kind),
-                                    role_name(role)));
+        p.fail(keyword, fmt::format("'{}' can only be used in {}, found in a {}", p.word(keyword),
+                                    roles_allowed(kind), role_name(role)));
     pattern.kind = kind;
     pattern.location = p.location_of(keyword);
     // POV-Ray's patterns that default to a triangle wave set it with their keyword; the others
@@ -517,18 +483,20 @@ bool parse_pattern_modifier(Parser& p, Pattern& pattern, PatternRole role) {
         is_word(p, token, "number_of_tiles")) {
         if (!modifier) {  // number_of_sides, number_of_tiles: pavement
             if (pattern.kind != PatternKind::pavement)
-                p.fail(token, fmt::format("'{}' can only be used with pavement, found with {}", p.word(token),
-                                          pattern_name(pattern.kind)));
+                p.fail(token, fmt::format("'{}' can only be used with pavement, found with {}",
+                                          p.word(token), pattern_name(pattern.kind)));
             p.next();
-            const int value = static_cast<int>(p.parse_float(fmt::format("after '{}'", p.word(token))));
-            (is_word(p, token, "number_of_sides") ? pattern.pavement.sides : pattern.pavement.tiles) = value;
+            const int value =
+                static_cast<int>(p.parse_float(fmt::format("after '{}'", p.word(token))));
+            (is_word(p, token, "number_of_sides") ? pattern.pavement.sides
+                                                  : pattern.pavement.tiles) = value;
             return true;
         }
         bool allowed = false;
         for (PatternKind kind : modifier->kinds) allowed = allowed || kind == pattern.kind;
         if (!allowed)
-            p.fail(token, fmt::format("'{}' can only be used with {}, found with {}", p.word(token), modifier->kinds_text,
-                                      pattern_name(pattern.kind)));
+            p.fail(token, fmt::format("'{}' can only be used with {}, found with {}", p.word(token),
+                                      modifier->kinds_text, pattern_name(pattern.kind)));
         p.next();
         parse_kind_modifier(p, token, pattern);
         return true;
@@ -541,7 +509,8 @@ std::shared_ptr<const Pattern> parse_function_pattern(Parser& p, const Token& ke
     auto pattern = std::make_shared<Pattern>();
     const Token type = p.next();
     if (!is_pattern_type(p, type, PatternRole::function))
-        p.fail_identifier(type, fmt::format("a pattern type after 'pattern {{' opened at {}", p.location_of(open).str()));
+        p.fail_identifier(type, fmt::format("a pattern type after 'pattern {{' opened at {}",
+                                            p.location_of(open).str()));
     parse_pattern_type(p, type, *pattern, PatternRole::function, nullptr);
     for (;;) {
         if (p.peek_is(Symbol::rbrace)) break;
@@ -551,14 +520,16 @@ std::shared_ptr<const Pattern> parse_function_pattern(Parser& p, const Token& ke
             continue;
         }
         if (!parse_pattern_modifier(p, *pattern, PatternRole::function))
-            p.fail_identifier(p.peek(), fmt::format("a pattern modifier or {}", closing_purpose(p, keyword, open)));
+            p.fail_identifier(p.peek(), fmt::format("a pattern modifier or {}",
+                                                    closing_purpose(p, keyword, open)));
     }
     p.expect_close(keyword, open);
     return pattern;
 }
 
 std::string closing_purpose(Parser& p, const Token& keyword, const Token& open, Symbol close) {
-    return fmt::format("'{}' to close '{}' opened at {}", symbol_text(close), p.word(keyword), p.location_of(open).str());
+    return fmt::format("'{}' to close '{}' opened at {}", symbol_text(close), p.word(keyword),
+                       p.location_of(open).str());
 }
 
 bool is_word(Parser& p, const Token& token, const char* word) {

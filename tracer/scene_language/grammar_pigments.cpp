@@ -14,15 +14,20 @@ bool same_place(const Token& a, const Token& b) {
 
 // A token that is no modifier; `type_allowed` while the type may still come (nothing but an
 // identifier read).
-[[noreturn]] void fail_modifier(Parser& p, PatternRole role, const Token& keyword, const Token& open, Symbol close,
-                                bool type_allowed) {
+[[noreturn]] void fail_modifier(Parser& p, PatternRole role, const Token& keyword,
+                                const Token& open, Symbol close, bool type_allowed) {
     const Token token = p.peek();
-    const bool is_type = is_pattern_type(p, token, role) || (role != PatternRole::normal && p.starts_colour(token));
+    const bool is_type =
+        is_pattern_type(p, token, role) || (role != PatternRole::normal && p.starts_colour(token));
     if (is_type && !type_allowed)
-        p.fail(token, fmt::format("the {} type ('{}') must come first in '{}' opened at {}, before its modifiers "
-                                  "(POV-Ray's rule)", role_name(role), p.word(token), p.word(keyword),
-                                  p.location_of(open).str()));
-    const char* types = !type_allowed ? "" : role == PatternRole::normal ? "a pattern or " : "a colour, a pattern or ";
+        p.fail(token,
+               fmt::format(
+                   "the {} type ('{}') must come first in '{}' opened at {}, before its modifiers "
+                   "(POV-Ray's rule)",
+                   role_name(role), p.word(token), p.word(keyword), p.location_of(open).str()));
+    const char* types = !type_allowed                 ? ""
+                        : role == PatternRole::normal ? "a pattern or "
+                                                      : "a colour, a pattern or ";
     p.fail_identifier(token, fmt::format("{}a {} modifier or {}", types, role_name(role),
                                          closing_purpose(p, keyword, open, close)));
 }
@@ -30,7 +35,8 @@ bool same_place(const Token& a, const Token& b) {
 // color_map / colour_map after a colour was written: POV-Ray refuses a map on a solid colour.
 void check_map_allowed(Parser& p, const Token& keyword, bool colour_written) {
     if (colour_written)
-        p.fail(keyword, fmt::format("'{}' cannot be used with a solid colour (POV-Ray's rule)", p.word(keyword)));
+        p.fail(keyword, fmt::format("'{}' cannot be used with a solid colour (POV-Ray's rule)",
+                                    p.word(keyword)));
 }
 
 // The type at the start of a pigment or density body: a colour or a pattern. True when a
@@ -54,7 +60,8 @@ bool parse_pigment_type(Parser& p, Pigment& pigment, PatternRole role) {
 }
 
 // One pigment or density modifier other than transforms and pattern modifiers.
-bool parse_pigment_only_modifier(Parser& p, Pigment& pigment, PatternRole role, bool colour_written) {
+bool parse_pigment_only_modifier(Parser& p, Pigment& pigment, PatternRole role,
+                                 bool colour_written) {
     const Token token = p.peek();
     if (token.is(Keyword::color_map) || token.is(Keyword::colour_map)) {
         p.next();
@@ -68,7 +75,8 @@ bool parse_pigment_only_modifier(Parser& p, Pigment& pigment, PatternRole role, 
         p.next();
         check_map_allowed(p, token, colour_written);
         pigment.map = parse_map_modifier(p, token, BlendMapKind::density, pigment.pattern);
-    } else if (role == PatternRole::pigment && (token.is(Keyword::quick_color) || token.is(Keyword::quick_colour))) {
+    } else if (role == PatternRole::pigment &&
+               (token.is(Keyword::quick_color) || token.is(Keyword::quick_colour))) {
         p.next();
         pigment.quick_colour_given = true;
         pigment.quick_colour = p.parse_colour();
@@ -87,7 +95,8 @@ bool parse_normal_only_modifier(Parser& p, Normal& normal) {
         const bool slope = token.is(Keyword::slope_map);
         if (!slope && normal.pattern.kind == PatternKind::facets)
             p.fail(token, "'normal_map' cannot be used with facets (POV-Ray's rule)");
-        normal.map = parse_map_modifier(p, token, slope ? BlendMapKind::slope : BlendMapKind::normal, normal.pattern);
+        normal.map = parse_map_modifier(
+            p, token, slope ? BlendMapKind::slope : BlendMapKind::normal, normal.pattern);
     } else if (token.is(Keyword::bump_size)) {
         p.next();
         normal.amount = p.parse_float(after());
@@ -119,13 +128,15 @@ Normal default_normal(Parser& p) {
 
 Finish default_finish(Parser& p) { return default_texture(p).finish; }
 
-void parse_pigment_body(Parser& p, Pigment& pigment, PatternRole role, const Token& keyword, const Token& open,
-                        Symbol close) {
+void parse_pigment_body(Parser& p, Pigment& pigment, PatternRole role, const Token& keyword,
+                        const Token& open, Symbol close) {
     const bool uv_mapping = p.accept(Keyword::uv_mapping);  // pigment { uv_mapping PIGMENT_BODY }
     PigmentRef declared_pigment;
     DensityRef declared_density;
-    if (role == PatternRole::pigment && take_declared(p, declared_pigment)) pigment = *declared_pigment;
-    else if (role == PatternRole::density && take_declared(p, declared_density)) pigment = *declared_density.item;
+    if (role == PatternRole::pigment && take_declared(p, declared_pigment))
+        pigment = *declared_pigment;
+    else if (role == PatternRole::density && take_declared(p, declared_density))
+        pigment = *declared_density.item;
     pigment.location = p.location_of(keyword);
     const Token type = p.peek();
     const bool colour_written = parse_pigment_type(p, pigment, role);
@@ -142,13 +153,15 @@ void parse_pigment_body(Parser& p, Pigment& pigment, PatternRole role, const Tok
             entries_transform = transform * entries_transform;
         } else if (!parse_pattern_modifier(p, pigment.pattern, role) &&
                    !parse_pigment_only_modifier(p, pigment, role, colour_written)) {
-            fail_modifier(p, role, keyword, open, close, !type_written && same_place(p.peek(), type));
+            fail_modifier(p, role, keyword, open, close,
+                          !type_written && same_place(p.peek(), type));
         }
     }
     pigment.map = transformed_map(pigment.map, entries_transform);
 }
 
-void parse_normal_body(Parser& p, Normal& normal, const Token& keyword, const Token& open, Symbol close) {
+void parse_normal_body(Parser& p, Normal& normal, const Token& keyword, const Token& open,
+                       Symbol close) {
     const bool uv_mapping = p.accept(Keyword::uv_mapping);  // normal { uv_mapping NORMAL_BODY }
     NormalRef declared;
     if (take_declared(p, declared)) normal = *declared;
@@ -157,7 +170,8 @@ void parse_normal_body(Parser& p, Normal& normal, const Token& keyword, const To
     const bool type_written = is_pattern_type(p, type, PatternRole::normal);
     if (type_written) {
         p.next();
-        const BlendMapPointer list = parse_pattern_type(p, type, normal.pattern, PatternRole::normal, &normal.amount);
+        const BlendMapPointer list =
+            parse_pattern_type(p, type, normal.pattern, PatternRole::normal, &normal.amount);
         if (list_size(normal.pattern.kind) > 0) normal.map = list;
     }
     if (uv_mapping) normal.pattern.uv_mapping = true;
@@ -170,7 +184,8 @@ void parse_normal_body(Parser& p, Normal& normal, const Token& keyword, const To
             entries_transform = transform * entries_transform;
         } else if (!parse_pattern_modifier(p, normal.pattern, PatternRole::normal) &&
                    !parse_normal_only_modifier(p, normal)) {
-            fail_modifier(p, PatternRole::normal, keyword, open, close, !type_written && same_place(p.peek(), type));
+            fail_modifier(p, PatternRole::normal, keyword, open, close,
+                          !type_written && same_place(p.peek(), type));
         }
     }
     normal.map = transformed_map(normal.map, entries_transform);
@@ -201,6 +216,5 @@ NormalRef parse_normal(Parser& p, const Token& keyword) {
     p.expect_close(keyword, open);
     return normal;
 }
-
 
 }  // namespace rayset::tracer

@@ -49,8 +49,10 @@ double radial(Vec3 p) {
 int brick(Vec3 p, Vec3 size, double mortar) {
     // Even rows of bricks (along y) are offset by half a brick along z, odd rows along x;
     // mortar fills the last `mortar` of each brick along every axis.
-    if (static_cast<long long>(std::floor(p.y / size.y)) % 2 == 0) p.z += size.z / 2;
-    else p.x += size.x / 2;
+    if (static_cast<long long>(std::floor(p.y / size.y)) % 2 == 0)
+        p.z += size.z / 2;
+    else
+        p.x += size.x / 2;
     const bool in_mortar = fraction(p.x / size.x) >= 1 - mortar / size.x ||
                            fraction(p.y / size.y) >= 1 - mortar / size.y ||
                            fraction(p.z / size.z) >= 1 - mortar / size.z;
@@ -68,8 +70,10 @@ int hexagon(Vec3 p) {
     const double q = 2.0 / 3.0 * p.x, r = -p.x / 3.0 + std::sqrt(3.0) / 3.0 * p.z, s = -q - r;
     double rq = std::round(q), rr = std::round(r), rs = std::round(s);
     const double dq = std::fabs(rq - q), dr = std::fabs(rr - r), ds = std::fabs(rs - s);
-    if (dq > dr && dq > ds) rq = -rr - rs;
-    else if (!(dr > ds)) rr = -rq - rs;
+    if (dq > dr && dq > ds)
+        rq = -rr - rs;
+    else if (!(dr > ds))
+        rr = -rq - rs;
     return static_cast<int>(((static_cast<long long>(2 * rq + rr) % 3) + 3) % 3);
 }
 
@@ -105,7 +109,9 @@ bool raw_value(const Pattern& pattern, Vec3 p, double& value) {
             value = 1 - std::min(1.0, std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}));
             return true;
         case PatternKind::spherical: value = 1 - std::min(1.0, length); return true;
-        case PatternKind::cylindrical: value = 1 - std::min(1.0, std::sqrt(p.x * p.x + p.z * p.z)); return true;
+        case PatternKind::cylindrical:
+            value = 1 - std::min(1.0, std::sqrt(p.x * p.x + p.z * p.z));
+            return true;
         case PatternKind::planar: value = 1 - std::min(1.0, std::fabs(p.y)); return true;
         case PatternKind::onion: value = std::fmod(length, 1.0); return true;
         case PatternKind::leopard: {
@@ -124,7 +130,8 @@ bool raw_value(const Pattern& pattern, Vec3 p, double& value) {
             return true;
         }
         case PatternKind::checker:
-            value = static_cast<double>(floor_mod(std::floor(p.x) + std::floor(p.y) + std::floor(p.z), 2));
+            value = static_cast<double>(
+                floor_mod(std::floor(p.x) + std::floor(p.y) + std::floor(p.z), 2));
             return true;
         case PatternKind::brick: value = brick(p, pattern.brick_size, pattern.mortar); return true;
         case PatternKind::hexagon: value = hexagon(p); return true;
@@ -167,8 +174,9 @@ double shaped(Waveform waveform, double exponent, double v) {
 }
 
 Colour blend(const Colour& a, const Colour& b, double t) {
-    return {a.red + t * (b.red - a.red), a.green + t * (b.green - a.green), a.blue + t * (b.blue - a.blue),
-            a.filter + t * (b.filter - a.filter), a.transmit + t * (b.transmit - a.transmit)};
+    return {a.red + t * (b.red - a.red), a.green + t * (b.green - a.green),
+            a.blue + t * (b.blue - a.blue), a.filter + t * (b.filter - a.filter),
+            a.transmit + t * (b.transmit - a.transmit)};
 }
 
 // POV-Ray's lookup: at or past the last entry its item, at or before the first the first's,
