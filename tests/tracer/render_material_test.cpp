@@ -55,15 +55,20 @@ TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
         }
         return std::string("no error");
     };
-    EXPECT_EQ(error("sphere { 0, 1 pigment { rgb 1 scale 2 rotate y } finish { ambient 0.3 brilliance 2 } }"),
-              "no error");  // transforms of a uniform colour change nothing; ambient is not physical
-    EXPECT_EQ(error("sphere { 0, 1 pigment { checker } }"), "not supported: pigment pattern 'checker' at test.pov:1:25");
-    EXPECT_EQ(error("sphere { 0, 1\n normal { bumps 0.5 } }"), "not supported: normal 'bumps' at test.pov:2:11");
+    // Transforms of a uniform colour change nothing; ambient is not physical.
+    EXPECT_EQ(error("sphere { 0, 1 pigment { rgb 1 scale 2 rotate y } finish { ambient 0.3 } }"),
+              "no error");
+    EXPECT_EQ(error("sphere { 0, 1 pigment { checker } }"),
+              "not supported: pigment pattern 'checker' at test.pov:1:25");
+    EXPECT_EQ(error("sphere { 0, 1\n normal { bumps 0.5 } }"),
+              "not supported: normal 'bumps' at test.pov:2:11");
     EXPECT_EQ(error("sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }"),
               "not supported: layered textures at test.pov:1:15");
-    EXPECT_EQ(error("sphere { 0, 1 texture { gradient x texture_map { [0 pigment { rgb 1 }] [1 pigment { rgb 0 }] } } }"),
+    EXPECT_EQ(error("sphere { 0, 1 texture { gradient x texture_map { [0 pigment { rgb 1 }] "
+                    "[1 pigment { rgb 0 }] } } }"),
               "not supported: patterned textures (gradient) at test.pov:1:25");
-    EXPECT_EQ(error("sphere { 0, 1 finish { irid { 0.3 } } }"), "not supported: finish 'irid' at test.pov:1:15");
+    EXPECT_EQ(error("sphere { 0, 1 finish { irid { 0.3 } } }"),
+              "not supported: finish 'irid' at test.pov:1:15");
     EXPECT_EQ(error("sphere { 0, 1 finish { diffuse 0.6, 0.2 } }"),
               "not supported: finish diffuse with a back-side amount at test.pov:1:15");
     EXPECT_EQ(error("sphere { 0, 1 finish { reflection { 0.5 metallic } } }"),

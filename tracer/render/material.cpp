@@ -52,16 +52,16 @@ public:
     void check_texture(const Texture& texture) const {
         if (texture.kind == Texture::Kind::layered) fail("layered textures", texture.location);
         if (texture.kind == Texture::Kind::patterned)
-            fail(fmt::format("patterned textures ({})", pattern_name(texture.pattern.kind)), texture.pattern.location);
+            fail(fmt::format("patterned textures ({})", pattern_name(texture.pattern.kind)),
+                 texture.pattern.location);
         const Pigment& pigment = texture.pigment;
         if (pigment.pattern.kind != PatternKind::plain)
-            fail(fmt::format("pigment pattern '{}'", pattern_name(pigment.pattern.kind)), pigment.pattern.location);
-        if (texture.normal) {
-            const Normal& normal = *texture.normal;
-            fail(normal.pattern.kind == PatternKind::plain ? std::string("normal")
-                                                             : fmt::format("normal '{}'", pattern_name(normal.pattern.kind)),
-                 normal.pattern.location.file.empty() ? normal.location : normal.pattern.location);
-        }
+            fail(fmt::format("pigment pattern '{}'", pattern_name(pigment.pattern.kind)),
+                 pigment.pattern.location);
+        // A normal without a pattern perturbs nothing.
+        if (texture.normal && texture.normal->pattern.kind != PatternKind::plain)
+            fail(fmt::format("normal '{}'", pattern_name(texture.normal->pattern.kind)),
+                 texture.normal->pattern.location);
         check_finish(texture.finish);
     }
     void check_finish(const Finish& f) const {
