@@ -835,6 +835,11 @@ TEST(AppearanceEvaluation, ContinuousPatternsFrequencyPhaseAndWaveforms) {
     EXPECT_NEAR(pattern_at("gradient x poly_wave 0.5", {0.6, 0, 0}), 0.774597, 1e-6);
     EXPECT_NEAR(pattern_at("hexagon cubic_wave", {1.5, 0, 0}), -4, 1e-12);
     EXPECT_NEAR(pattern_at("function { x * 1.5 }", {1, 0, 0}), 0.5, 1e-12);
+    EXPECT_NEAR(pattern_at("pigment_pattern { rgbft <0.5, 1, 0.25, 0.5, 0.5> }", {0, 0, 0}),
+                0.297 * 0.5 + 0.589 + 0.114 * 0.25, 1e-12);
+    EXPECT_NEAR(pattern_at("pigment_pattern { rgb 2 }", {0, 0, 0}), 0.99999, 1e-12);
+    EXPECT_NEAR(pattern_at("pigment_pattern { checker rgb 0.5, rgb 1 } scale 2", {0.5, 0.5, 0.5}),
+                0.5, 1e-12);
     EXPECT_NEAR(pattern_at("gradient x scale 2 translate x", {2, 0, 0}), 0.5, 1e-12);
     EXPECT_NEAR(pattern_at("leopard", {1, 2, 3}),
                 std::pow((std::sin(1.0) + std::sin(2.0) + std::sin(3.0)) / 3, 2), 1e-12);

@@ -1,8 +1,8 @@
 // Parse-time evaluation of patterns and pigments (pattern and pigment functions): exact for
-// solid colours and for the patterns that need no noise, image or surface: agate..wrinkles
-// minus those, i.e. boxed, brick, checker, cubic, cylindrical, function, gradient, hexagon,
-// leopard, marble and wood (without turbulence), object (where the object can answer),
-// onion, planar, radial, spherical, square and triangular, through transforms, frequency,
+// solid colours and for the patterns that need no noise, image or surface: boxed, brick,
+// checker, cubic, cylindrical, function, gradient, hexagon, leopard, marble and wood (without
+// turbulence), object (where the object can answer), onion, pigment_pattern (of such
+// pigments), planar, radial, spherical, square and triangular, through transforms, frequency,
 // phase, waveforms and colour, pigment and list maps. Everything else returns false.
 //
 // Every rule below was read back from POV-Ray 3.7 itself through `function { pattern { ... } }`
@@ -142,6 +142,13 @@ bool raw_value(const Pattern& pattern, Vec3 p, double& value) {
             bool inside = false;
             if (!pattern.object || !object_inside(*pattern.object, p, inside)) return false;
             value = inside ? 1 : 0;
+            return true;
+        }
+        case PatternKind::pigment_pattern: {
+            // The pigment's grey (POV-Ray's weights; filter and transmit play no part).
+            Colour c;
+            if (!pattern.pigment || !evaluate_pigment(*pattern.pigment, p, c)) return false;
+            value = 0.297 * c.red + 0.589 * c.green + 0.114 * c.blue;
             return true;
         }
         case PatternKind::function: {
