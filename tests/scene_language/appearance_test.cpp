@@ -577,7 +577,7 @@ TEST(AppearanceTextures, PatternedTexturesTilesAndMaterialMaps) {
         "sphere { 0, 1 texture { material_map { gif \"m.gif\" map_type 2 texture { "
         "pigment { rgb 1 } } texture { pigment { rgb 0 } } texture { finish { phong 1 } } "
         "} scale 30 } }");
-    const Texture& mm = *parse_scene_file(dir.file("s.pov")).objects.at(0).appearance.texture;
+    const Texture mm = *parse_scene_file(dir.file("s.pov")).objects.at(0).appearance.texture;
     EXPECT_EQ(mm.pattern.kind, PatternKind::material_map);
     EXPECT_EQ(mm.pattern.image->map_type, 2);
     ASSERT_EQ(mm.map->entries.size(), 3u);

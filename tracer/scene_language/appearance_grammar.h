@@ -10,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 
 #include <fmt/format.h>
 #include <string>
@@ -99,6 +100,14 @@ bool take_declared(Parser& p, T& out) {
            fmt::format("expected an element of '{}', found {}", p.word(at), type_name(element)));
 }
 
+// A float read where POV-Ray takes a whole number: truncated, as POV-Ray does, and kept within
+// int's range (a huge or undefined value cannot overflow the conversion).
+inline int truncated(double value) {
+    if (!(value > -2147483648.0)) return std::numeric_limits<int>::min();
+    if (!(value < 2147483647.0)) return std::numeric_limits<int>::max();
+    return static_cast<int>(value);
+}
+
 // `KEYWORD VALUE` items written once, as tables: the field each keyword sets. A float item
 // may stand for a whole number (POV-Ray truncates: `octaves 2.7` is 2).
 template <class Item>
@@ -161,7 +170,7 @@ bool parse_keyword_field(Parser& p, Item& item, const std::vector<KeywordField<I
             if (!(value >= entry.minimum))
                 p.fail(at, fmt::format("'{}' must be at least {}, found {}", p.word(token),
                                        entry.minimum, value));
-            item.*entry.whole = static_cast<int>(value);
+            item.*entry.whole = truncated(value);
         }
         return true;
     }

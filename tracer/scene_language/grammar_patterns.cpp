@@ -130,11 +130,11 @@ void parse_type_parameters(Parser& p, const Token& keyword, Pattern& pattern) {
         case PatternKind::gradient: pattern.gradient = p.parse_vector(); break;
         case PatternKind::spiral1:
         case PatternKind::spiral2:
-            pattern.spiral_arms = static_cast<int>(p.parse_float("as the number of spiral arms"));
+            pattern.spiral_arms = truncated(p.parse_float("as the number of spiral arms"));
             break;
         case PatternKind::tiling: {
             const Token at = p.peek();
-            pattern.tiling = static_cast<int>(p.parse_float("as the tiling number"));
+            pattern.tiling = truncated(p.parse_float("as the tiling number"));
             if (pattern.tiling < 1 || pattern.tiling > 27)
                 p.fail(at, fmt::format("the tiling number must be between 1 and 27, found {}",
                                        pattern.tiling));
@@ -290,8 +290,7 @@ bool is_kind_modifier(const Token& token, const KindModifier*& modifier) {
 void parse_fractal_colouring(Parser& p, const Token& keyword, Pattern& pattern) {
     const bool exterior = keyword.is(Keyword::exterior);
     const Token at = p.peek();
-    const int type =
-        static_cast<int>(p.parse_float(fmt::format("as the {} type", p.word(keyword))));
+    const int type = truncated(p.parse_float(fmt::format("as the {} type", p.word(keyword))));
     const int highest = exterior ? 8 : 6;
     if (type < 0 || type > highest)
         p.fail(at, fmt::format("the fractal {} type must be 0 to {}, found {}", p.word(keyword),
@@ -307,7 +306,7 @@ void parse_fractal_colouring(Parser& p, const Token& keyword, Pattern& pattern) 
 // After a kind modifier's keyword (taken), allowed for this pattern.
 void parse_kind_modifier(Parser& p, const Token& keyword, Pattern& pattern) {
     auto after = [&] { return fmt::format("after '{}'", p.word(keyword)); };
-    auto whole = [&] { return static_cast<int>(p.parse_float(after())); };
+    auto whole = [&] { return truncated(p.parse_float(after())); };
     const bool pavement = pattern.kind == PatternKind::pavement;
     switch (static_cast<Keyword>(keyword.name)) {
         case Keyword::agate_turb: pattern.agate_turbulence = p.parse_float(after()); break;
@@ -385,7 +384,7 @@ bool parse_general_modifier(Parser& p, const Token& token, Pattern& pattern) {
         pattern.warps.push_back(parse_warp(p, token));
     } else if (p.accept(Keyword::noise_generator)) {
         const Token at = p.peek();
-        pattern.noise_generator = static_cast<int>(p.parse_float("after 'noise_generator'"));
+        pattern.noise_generator = truncated(p.parse_float("after 'noise_generator'"));
         if (pattern.noise_generator < 0 || pattern.noise_generator > 3)
             p.fail(at, fmt::format("noise_generator must be 0, 1, 2 or 3, found {}",
                                    pattern.noise_generator));
@@ -486,8 +485,7 @@ bool parse_pattern_modifier(Parser& p, Pattern& pattern, PatternRole role) {
                 p.fail(token, fmt::format("'{}' can only be used with pavement, found with {}",
                                           p.word(token), pattern_name(pattern.kind)));
             p.next();
-            const int value =
-                static_cast<int>(p.parse_float(fmt::format("after '{}'", p.word(token))));
+            const int value = truncated(p.parse_float(fmt::format("after '{}'", p.word(token))));
             (is_word(p, token, "number_of_sides") ? pattern.pavement.sides
                                                   : pattern.pavement.tiles) = value;
             return true;

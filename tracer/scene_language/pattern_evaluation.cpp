@@ -46,10 +46,19 @@ double radial(Vec3 p) {
     return 1.25 - fraction(1.25 - turns);
 }
 
+// floor(v) mod n in [0, n), safe for any v (an infinite or undefined one gives 0).
+int cell_mod(double v, int n) {
+    const double cell = std::floor(v);
+    if (!std::isfinite(cell)) return 0;
+    double r = std::fmod(cell, n);
+    if (r < 0) r += n;
+    return static_cast<int>(r);
+}
+
 int brick(Vec3 p, Vec3 size, double mortar) {
     // Even rows of bricks (along y) are offset by half a brick along z, odd rows along x;
     // mortar fills the last `mortar` of each brick along every axis.
-    if (static_cast<long long>(std::floor(p.y / size.y)) % 2 == 0)
+    if (cell_mod(p.y / size.y, 2) == 0)
         p.z += size.z / 2;
     else
         p.x += size.x / 2;
@@ -57,11 +66,6 @@ int brick(Vec3 p, Vec3 size, double mortar) {
                            fraction(p.y / size.y) >= 1 - mortar / size.y ||
                            fraction(p.z / size.z) >= 1 - mortar / size.z;
     return in_mortar ? 0 : 1;
-}
-
-long long floor_mod(double v, long long n) {
-    const long long f = static_cast<long long>(std::floor(v));
-    return ((f % n) + n) % n;
 }
 
 // Hexagons of side 1 in the x-z plane, one centred at the origin (0), its neighbour toward +z
@@ -74,12 +78,12 @@ int hexagon(Vec3 p) {
         rq = -rr - rs;
     else if (!(dr > ds))
         rr = -rq - rs;
-    return static_cast<int>(((static_cast<long long>(2 * rq + rr) % 3) + 3) % 3);
+    return cell_mod(2 * rq + rr, 3);
 }
 
 int square(Vec3 p) {
     static const int kIndex[2][2] = {{0, 1}, {3, 2}};  // [x cell mod 2][z cell mod 2]
-    return kIndex[floor_mod(p.x, 2)][floor_mod(p.z, 2)];
+    return kIndex[cell_mod(p.x, 2)][cell_mod(p.z, 2)];
 }
 
 // Equilateral triangles of side 1 in the x-z plane in rows of height sqrt(3)/2 from z = 0.
@@ -90,8 +94,7 @@ int triangular(Vec3 p) {
     const double skewed = p.x - 0.5 * rows;
     const double column = std::floor(skewed);
     const bool down = (skewed - column) + (rows - row) >= 1;
-    const long long cell = static_cast<long long>(column) + 2 * static_cast<long long>(row);
-    return kIndex[((cell % 3) + 3) % 3][down ? 1 : 0];
+    return kIndex[(cell_mod(column, 3) + 2 * cell_mod(row, 3)) % 3][down ? 1 : 0];
 }
 
 int cubic(Vec3 p) {
@@ -130,8 +133,7 @@ bool raw_value(const Pattern& pattern, Vec3 p, double& value) {
             return true;
         }
         case PatternKind::checker:
-            value = static_cast<double>(
-                floor_mod(std::floor(p.x) + std::floor(p.y) + std::floor(p.z), 2));
+            value = cell_mod(std::floor(p.x) + std::floor(p.y) + std::floor(p.z), 2);
             return true;
         case PatternKind::brick: value = brick(p, pattern.brick_size, pattern.mortar); return true;
         case PatternKind::hexagon: value = hexagon(p); return true;
