@@ -631,6 +631,20 @@ TEST(AppearanceTextures, LayersAsPovRayLaysThem) {
     EXPECT_DOUBLE_EQ(c.interior_texture->pigment.colour.red, 0);
 }
 
+// What `#declare T = texture { A } texture { B } texture { C }` makes (the rvalue reader calls
+// layer_textures for each texture after the first): one stack, bottom first.
+TEST(AppearanceTextures, LayerTexturesStacksBottomFirst) {
+    Parser parser{ParseOptions{}};
+    auto a = std::make_shared<Texture>(), b = std::make_shared<Texture>(),
+         c = std::make_shared<Texture>();
+    const TextureRef ab = layer_textures(parser, Token{}, a, b);
+    const TextureRef abc = layer_textures(parser, Token{}, ab, c);
+    ASSERT_EQ(abc->kind, Texture::Kind::layered);
+    ASSERT_EQ(abc->layers.size(), 3u);
+    EXPECT_EQ(abc->layers[0], a);
+    EXPECT_EQ(abc->layers[2], c);
+}
+
 TEST(AppearanceTextures, TransformsReachEveryLayer) {
     auto below = std::make_shared<Texture>();
     auto above = std::make_shared<Texture>();
@@ -752,6 +766,19 @@ TEST(AppearanceDefault, OneDefaultTextureAsPovRayKeepsIt) {
               "expected texture, pigment, normal, finish or '}' to close 'default' opened at "
               "test.pov:1:10, found "
               "'sphere' at test.pov:1:12");
+}
+
+TEST(AppearanceDefault, SceneDefaultAppearanceIsTheDefaultOfTheMoment) {
+    Parser parser{ParseOptions{}};
+    ObjectAppearance a = scene_default_appearance(parser);
+    ASSERT_TRUE(a.texture);
+    EXPECT_DOUBLE_EQ(a.texture->finish.diffuse, 0.6);  // POV-Ray's own default texture
+    EXPECT_FALSE(a.interior);
+    auto texture = std::make_shared<Texture>();
+    texture->pigment.colour.red = 1;
+    parser.default_texture = texture;
+    a = scene_default_appearance(parser);
+    EXPECT_DOUBLE_EQ(a.texture->pigment.colour.red, 1);
 }
 
 // ---------------------------------------------------------------- transforms of appearances

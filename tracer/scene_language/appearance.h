@@ -188,7 +188,9 @@ struct Pattern {
     double frequency = 1;
     bool frequency_written = false;
     double phase = 0;
-    Turbulence turbulence;               // classic turbulence: applied before every warp
+    // Classic turbulence: applied before every warp and transform; agate, marble, wood,
+    // spiral1 and spiral2 use it in their own way (reference 3.4.7.5.5.9).
+    Turbulence turbulence;
     // Warps and transforms in the order written. A point is taken through them from the last
     // to the first (each undone), then through the classic turbulence, then the pattern.
     std::vector<Warp> warps;
