@@ -327,7 +327,8 @@ TEST(SceneLanguageDirectives, DeclaresEveryKindOfValue) {
     EXPECT_FLOAT_EQ(f.reflection_min.red, 0.1);
     EXPECT_FLOAT_EQ(f.reflection_max.blue, 0.9);
     EXPECT_TRUE(f.reflection_fresnel);
-    EXPECT_DOUBLE_EQ(f.metallic, 0.5);
+    EXPECT_DOUBLE_EQ(f.reflection_metallic, 0.5);  // reflection's own, not the highlights'
+    EXPECT_DOUBLE_EQ(f.metallic, 0);
     EXPECT_FLOAT_EQ(f.emission.green, 0.2);
     EXPECT_FLOAT_EQ(f.ambient.green, 0.1);
     EXPECT_DOUBLE_EQ(f.ambient.red, 0);
@@ -494,11 +495,13 @@ TEST(SceneLanguageErrors, UnknownIdentifierWrongTypeAndNotSupported) {
     EXPECT_EQ(error_of("sphere { 0, Radius }"),
               "unknown identifier 'Radius' (expected a numeric expression) at test.pov:1:13");
     EXPECT_EQ(error_of("#declare T = texture { pigment { rgb 1 } }\nsphere { 0, 1 pigment { T } }"),
-              "wrong type: 'T' is a texture, expected a colour or '}' to close 'pigment' opened at test.pov:2:23 "
-              "at test.pov:2:25");
+              "wrong type: 'T' is a texture, expected a colour, a pattern or a pigment modifier or '}' to close "
+              "'pigment' opened at test.pov:2:23 at test.pov:2:25");
     EXPECT_EQ(error_of("#declare V = <1,2,3>;\nsphere { 0, V }"),
               "expected a float as the sphere radius, found a vector at test.pov:2:13");
-    EXPECT_EQ(error_of("sphere { 0, 1 normal { bumps } }"), "not supported: normal (bump) patterns at test.pov:1:15");
+    EXPECT_EQ(error_of("sphere { 0, 1 normal { bumps } foo }"),
+              "unknown identifier 'foo' (expected an object modifier or '}' to close 'sphere' opened at test.pov:1:8) "
+              "at test.pov:1:32");
     EXPECT_EQ(error_of("camera { location 0 orthographic }"),
               "the camera type 'orthographic' must come first in the camera at test.pov:1:21");
     EXPECT_EQ(error_of("#declare sphere = 1;"), "cannot #declare 'sphere': it is a reserved word at test.pov:1:10");

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "converters/error.h"
 #include "converters/random.h"
 #include "tracer/render/material.h"
 #include "tracer/scene_language/scene_language.h"
@@ -42,6 +43,42 @@ TEST(RenderMaterial, PovRayTextureMapping) {
     EXPECT_DOUBLE_EQ(m.glossy.red, 0.5);
     m = material_of("sphere { 0, 1 pigment { rgb 1 } finish { emission 2 } }");
     EXPECT_DOUBLE_EQ(m.emission.blue, 2);
+}
+
+// The renderer refuses, at the place the scene writes it, what it does not render.
+TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
+    auto error = [](const std::string& object) {
+        try {
+            material_of(object);
+        } catch (const rayset::Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    // Transforms of a uniform colour change nothing; ambient is not physical.
+    EXPECT_EQ(error("sphere { 0, 1 pigment { rgb 1 scale 2 rotate y } finish { ambient 0.3 } }"),
+              "no error");
+    EXPECT_EQ(error("sphere { 0, 1 pigment { checker } }"),
+              "not supported: pigment pattern 'checker' at test.pov:1:25");
+    EXPECT_EQ(error("sphere { 0, 1\n normal { bumps 0.5 } }"),
+              "not supported: normal 'bumps' at test.pov:2:11");
+    EXPECT_EQ(error("sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }"),
+              "not supported: layered textures at test.pov:1:15");
+    EXPECT_EQ(error("sphere { 0, 1 texture { gradient x texture_map { [0 pigment { rgb 1 }] "
+                    "[1 pigment { rgb 0 }] } } }"),
+              "not supported: patterned textures (gradient) at test.pov:1:25");
+    EXPECT_EQ(error("sphere { 0, 1 finish { irid { 0.3 } } }"),
+              "not supported: finish 'irid' at test.pov:1:15");
+    EXPECT_EQ(error("sphere { 0, 1 finish { diffuse 0.6, 0.2 } }"),
+              "not supported: finish diffuse with a back-side amount at test.pov:1:15");
+    EXPECT_EQ(error("sphere { 0, 1 finish { reflection { 0.5 metallic } } }"),
+              "not supported: reflection 'metallic' at test.pov:1:15");
+    EXPECT_EQ(error("sphere { 0, 1 hollow interior { media { emission 1 } } }"),
+              "not supported: media at test.pov:1:33");
+    EXPECT_EQ(error("sphere { 0, 1 interior { ior 1.5 fade_distance 2 fade_power 2 } }"),
+              "not supported: interior fade_distance/fade_power at test.pov:1:15");
+    EXPECT_EQ(error("sphere { 0, 1 interior_texture { pigment { rgb 1 } } }"),
+              "not supported: interior_texture at test.pov:1:15");
 }
 
 TEST(RenderMaterial, FresnelAtNormalIncidence) {

@@ -3,6 +3,10 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "converters/error.h"
+
 namespace rayset::tracer {
 
 using analytic::dot;
@@ -35,10 +39,71 @@ void conserve_energy(Material& m) {
                        std::min(m.mirror_min.blue, m.mirror_max.blue)};
 }
 
+// What the renderer does not render of POV-Ray's appearance is refused, never approximated:
+// it renders a plain texture of a uniform pigment (transforms of a uniform colour change
+// nothing), no normal, the finish keywords of README.md, and an interior's ior.
+class Refusal {
+public:
+    explicit Refusal(const ObjectInstance& object) : object_(object) {}
+    [[noreturn]] void fail(const std::string& feature, const SourceLocation& where) const {
+        const SourceLocation& at = where.file.empty() ? object_.location : where;
+        throw Error(fmt::format("not supported: {} at {}", feature, at.str()));
+    }
+    void check_texture(const Texture& texture) const {
+        if (texture.kind == Texture::Kind::layered) fail("layered textures", texture.location);
+        if (texture.kind == Texture::Kind::patterned)
+            fail(fmt::format("patterned textures ({})", pattern_name(texture.pattern.kind)),
+                 texture.pattern.location);
+        const Pigment& pigment = texture.pigment;
+        if (pigment.pattern.kind != PatternKind::plain)
+            fail(fmt::format("pigment pattern '{}'", pattern_name(pigment.pattern.kind)),
+                 pigment.pattern.location);
+        // A normal without a pattern perturbs nothing.
+        if (texture.normal && texture.normal->pattern.kind != PatternKind::plain)
+            fail(fmt::format("normal '{}'", pattern_name(texture.normal->pattern.kind)),
+                 texture.normal->pattern.location);
+        check_finish(texture.finish);
+    }
+    void check_finish(const Finish& f) const {
+        struct Unrendered {
+            bool present;
+            const char* feature;
+        };
+        const Unrendered unrendered[] = {
+            {f.diffuse_albedo || f.specular_albedo || f.phong_albedo, "finish 'albedo'"},
+            {f.diffuse_back != 0, "finish diffuse with a back-side amount"},
+            {f.crand != 0, "finish 'crand'"},
+            {f.reflection_exponent != 1, "reflection 'exponent'"},
+            {f.reflection_metallic != 0, "reflection 'metallic'"},
+            {f.irid_amount != 0, "finish 'irid'"},
+            {f.subsurface, "finish 'subsurface'"},
+            {f.legacy_ior != 0 || f.legacy_refraction != 0 || f.legacy_caustics != 0,
+             "ior, refraction or caustics in a finish (give them in interior { })"},
+        };
+        for (const Unrendered& item : unrendered)
+            if (item.present) fail(item.feature, f.location);
+    }
+    void check_interior(const Interior& interior) const {
+        if (!interior.media.empty()) fail("media", interior.media.front()->location);
+        if (interior.caustics != 0) fail("interior 'caustics'", interior.location);
+        if (interior.dispersion != 1) fail("interior 'dispersion'", interior.location);
+        if (interior.fade_distance != 0 || interior.fade_power != 0)
+            fail("interior fade_distance/fade_power", interior.location);
+    }
+
+private:
+    const ObjectInstance& object_;
+};
+
 }  // namespace
 
 Material material_from_pov(const ObjectInstance& object, double emission_scale) {
     Material m;
+    const Refusal refusal(object);
+    if (object.appearance.texture) refusal.check_texture(*object.appearance.texture);
+    if (object.appearance.interior_texture)
+        refusal.fail("interior_texture", object.appearance.interior_texture->location);
+    if (object.appearance.interior) refusal.check_interior(*object.appearance.interior);
     if (!object.appearance.texture) return m;  // POV-Ray renders an untextured object black
     const Colour& c = object.appearance.texture->pigment.colour;
     const Finish& f = object.appearance.texture->finish;

@@ -1,8 +1,9 @@
 // The grammar of POV-Ray's scene items, as free functions over the Parser's public API. Each
 // `parse_X(parser, keyword)` is called with `keyword` just taken and reads the block after it.
 //   grammar_objects.cpp     shapes, CSG, object modifiers, light sources; flattening
-//   grammar_appearance.cpp  texture, pigment, normal, finish, interior, media, material,
-//                           patterns and their maps; #default
+//   grammar_appearance.cpp  texture, material, object appearance modifiers, #default; with
+//                           grammar_patterns, _images, _blend_maps, _pigments, _finish,
+//                           _media.cpp (appearance_grammar.h) and pattern_evaluation.cpp
 //   grammar_scene.cpp       the top-level statements that are not objects (the dispatcher),
 //                           background; ray_source and illuminance_receiver
 //   grammar_camera.cpp      camera
@@ -28,11 +29,20 @@ bool object_inside(const ObjectNode& object, Vec3 point, bool& inside);
 bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& hit, Vec3& normal, bool& found);
 
 // ---- appearance
-// An object modifier about appearance (texture, pigment, normal, finish, interior, material,
-// ...), read into `appearance`; false (nothing read) when the next token starts none.
+// An object modifier about appearance (texture, pigment, normal, finish, interior,
+// interior_texture, material), read into `appearance`; false (nothing read) when the next token
+// starts none. A second texture is layered over the first, as in POV-Ray.
 bool parse_appearance_modifier(Parser& parser, ObjectAppearance& appearance);
-// What an object inside a union ends up with: what it lacks, the union's.
+// What an object inside a union ends up with: what it lacks, the union's. Both in the same
+// coordinates (transform_appearance in appearance.h moves an object's appearance with it).
 void inherit_appearance(ObjectAppearance& inner, const ObjectAppearance& outer);
+// What an object added to the scene inherits when neither it nor its unions give a texture:
+// the #default texture of that moment (POV-Ray attaches it then, not when the object is
+// declared), in world coordinates.
+ObjectAppearance scene_default_appearance(Parser& parser);
+// `above` layered over `below` (#declare T = texture { } texture { }), with POV-Ray's rules:
+// patterned textures cannot be layers.
+TextureRef layer_textures(Parser& parser, const Token& at, const TextureRef& below, const TextureRef& above);
 TextureRef parse_texture(Parser& parser, const Token& keyword);
 PigmentRef parse_pigment(Parser& parser, const Token& keyword);
 NormalRef parse_normal(Parser& parser, const Token& keyword);
@@ -52,7 +62,8 @@ void parse_default(Parser& parser, const Token& directive);  // after #default
 // `function { pattern { PATTERN } }`: after `pattern`.
 std::shared_ptr<const Pattern> parse_function_pattern(Parser& parser, const Token& keyword);
 // A pattern's value or a pigment's colour at a point, for pattern and pigment functions;
-// false when it cannot be evaluated (the caller reports that as not supported).
+// false when it cannot be evaluated (the caller reports that as not supported): exact for
+// solid colours and the patterns that need no noise (pattern_evaluation.cpp lists them).
 bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value);
 bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour);
 

@@ -1,134 +1,326 @@
-// texture { pigment { ... } finish { ... } }, interior { ior }, material, and #default. Pigments
-// are uniform colours; patterns and normals are reported as not supported.
+// Textures (reference 3.4.6): plain, patterned (texture_map, texture lists, tiles,
+// material_map) and layered; the appearance modifiers of objects (texture, pigment, normal,
+// finish, interior, interior_texture, material) with POV-Ray's rules for layering and
+// inheritance; material { }; and #default (3.3.2.4). The error texts in quotes are POV-Ray's.
 #include <fmt/format.h>
 
-#include "tracer/scene_language/grammar.h"
+#include "tracer/scene_language/appearance_grammar.h"
 
 namespace rayset::tracer {
 namespace {
 
-void parse_pigment_body(Parser& p, Pigment& pigment, const Token& keyword, const Token& open) {
-    if (const PigmentRef* declared = p.peek_declared<PigmentRef>()) {
-        pigment = **declared;
-        p.next();
+// `above` laid over `below`, as POV-Ray layers textures: only plain layers.
+TextureRef layer(Parser& p, const Token& at, const TextureRef& below, const TextureRef& above) {
+    if (above->kind == Texture::Kind::patterned)
+        p.fail(at,
+               "cannot layer a patterned texture over another (POV-Ray: \"Cannot layer a patterned "
+               "texture "
+               "over another\")");
+    if (below->kind == Texture::Kind::patterned)
+        p.fail(at,
+               "cannot layer over a patterned texture (POV-Ray: \"Cannot layer over a patterned "
+               "texture\")");
+    auto layered = std::make_shared<Texture>();
+    layered->kind = Texture::Kind::layered;
+    layered->location = below->location;
+    for (const TextureRef& part : {below, above}) {
+        if (part->kind == Texture::Kind::layered)
+            layered->layers.insert(layered->layers.end(), part->layers.begin(), part->layers.end());
+        else
+            layered->layers.push_back(part);
     }
-    for (;;) {
-        const Token token = p.peek();
-        if (token.is(Symbol::rbrace)) break;
-        if (p.starts_colour(token)) {
-            pigment.colour = p.parse_colour();
-            continue;
-        }
-        Matrix4 ignored;  // transforms do not change a uniform colour
-        if (!p.parse_transform_item(ignored))
-            p.fail_identifier(token, fmt::format("a colour or '}}' to close '{}' opened at {}", p.word(keyword),
-                                                 p.location_of(open).str()));
+    return layered;
+}
+
+// The layer that pigment, normal and finish statements modify: the top one (POV-Ray's, checked
+// with POV-Ray 3.7: `texture { LAYERED pigment { ... } }` changes the last layer written).
+Texture& top_layer(Parser& p, const Token& at, Texture& texture) {
+    if (texture.kind == Texture::Kind::patterned)
+        p.fail(
+            at,
+            fmt::format(
+                "'{}' cannot modify a patterned texture (POV-Ray: \"Cannot layer over a patterned "
+                "texture\")",
+                p.word(at)));
+    if (texture.kind == Texture::Kind::plain) return texture;
+    auto top = std::make_shared<Texture>(*texture.layers.back());
+    texture.layers.back() = top;
+    return *top;
+}
+
+// pigment { }, normal { } or finish { } (keyword taken) modifying the plain texture's own.
+void parse_texture_part(Parser& p, const Token& keyword, Texture& texture) {
+    const Token open = p.expect_open(keyword);
+    if (keyword.is(Keyword::pigment)) {
+        parse_pigment_body(p, texture.pigment, PatternRole::pigment, keyword, open, Symbol::rbrace);
+    } else if (keyword.is(Keyword::normal)) {
+        auto normal = std::make_shared<Normal>(texture.normal ? *texture.normal : Normal{});
+        parse_normal_body(p, *normal, keyword, open, Symbol::rbrace);
+        texture.normal = normal;
+    } else {
+        parse_finish_body(p, texture.finish, keyword, open);
     }
     p.expect_close(keyword, open);
 }
 
-Rgb parse_rgb(Parser& p) { return p.parse_colour().rgb(); }  // a float or a colour
+bool is_texture_part(const Token& token) {
+    return token.is(Keyword::pigment) || token.is(Keyword::normal) || token.is(Keyword::finish);
+}
 
-void parse_finish_body(Parser& p, Finish& finish, const Token& keyword, const Token& open) {
-    if (const FinishRef* declared = p.peek_declared<FinishRef>()) {
-        finish = **declared;
-        p.next();
+// A pigment, normal or finish identifier written alone in a texture: it replaces that part.
+bool parse_part_identifier(Parser& p, Texture& texture) {
+    PigmentRef pigment;
+    FinishRef finish;
+    if (take_declared(p, pigment))
+        texture.pigment = *pigment;
+    else if (take_declared(p, texture.normal))
+        return true;
+    else if (take_declared(p, finish))
+        texture.finish = *finish;
+    else
+        return false;
+    return true;
+}
+
+// uv_mapping in a texture: its pattern, pigment and normal (every layer's) are looked up at
+// the surface's <u, v, 0>.
+void set_uv_mapping(Texture& texture) {
+    texture.pattern.uv_mapping = true;
+    texture.pigment.pattern.uv_mapping = true;
+    if (texture.normal) {
+        auto normal = std::make_shared<Normal>(*texture.normal);
+        normal->pattern.uv_mapping = true;
+        texture.normal = normal;
     }
+    for (TextureRef& layer : texture.layers) {
+        auto copy = std::make_shared<Texture>(*layer);
+        set_uv_mapping(*copy);
+        layer = copy;
+    }
+}
+
+// The rest of a plain or layered texture: part identifiers, parts, transforms, uv_mapping.
+void parse_plain_texture_items(Parser& p, Texture& texture, const Token& keyword, const Token& open,
+                               Symbol close) {
+    bool uv_mapping = false;
+    for (;;) {
+        const Token token = p.peek();
+        if (token.is(close)) break;
+        Matrix4 transform;
+        if (p.parse_transform_item(transform)) {
+            // Only the parts written so far move (reference 3.4.6).
+            transform_texture(texture, transform);
+        } else if (is_texture_part(token)) {
+            p.next();
+            parse_texture_part(p, token, top_layer(p, token, texture));
+        } else if (token.is(Keyword::uv_mapping)) {
+            p.next();
+            uv_mapping = true;
+        } else if (!parse_part_identifier(p, top_layer(p, token, texture))) {
+            p.fail_identifier(token, fmt::format("pigment, normal, finish, a transform or {}",
+                                                 closing_purpose(p, keyword, open, close)));
+        }
+    }
+    if (uv_mapping) set_uv_mapping(texture);
+}
+
+// The modifiers of a patterned texture: pattern modifiers, texture_map, transforms. After a
+// patterned texture identifier only transforms (reference 3.4.6.5).
+void parse_patterned_texture_items(Parser& p, Texture& texture, const Token& keyword,
+                                   const Token& open, Symbol close, bool from_identifier) {
+    Matrix4 entries_transform;
+    for (;;) {
+        const Token token = p.peek();
+        if (token.is(close)) break;
+        Matrix4 transform;
+        if (p.parse_transform_item(transform)) {
+            transform_pattern(texture.pattern, transform);
+            entries_transform = transform * entries_transform;
+        } else if (!from_identifier && token.is(Keyword::texture_map)) {
+            p.next();
+            texture.map = parse_map_modifier(p, token, BlendMapKind::texture, texture.pattern);
+        } else if (from_identifier ||
+                   !parse_pattern_modifier(p, texture.pattern, PatternRole::texture)) {
+            if (is_texture_part(token))
+                p.fail(token,
+                       fmt::format(
+                           "a patterned texture takes no '{}': give it to the textures in its map "
+                           "or list (POV-Ray's rule)",
+                           p.word(token)));
+            p.fail_identifier(
+                token,
+                fmt::format("{} or {}", from_identifier ? "a transform" : "a texture modifier",
+                            closing_purpose(p, keyword, open, close)));
+        }
+    }
+    texture.map = transformed_map(texture.map, entries_transform);
+}
+
+// tiles { TEXTURE... tile2 TEXTURE... }: POV-Ray's old checker of two (possibly layered)
+// textures.
+void parse_tiles(Parser& p, Texture& texture, const Token& tiles) {
+    const Token open = p.expect_open(tiles);
+    auto textures = std::make_shared<BlendMap>();
+    textures->kind = BlendMapKind::texture;
+    for (int tile = 0; tile < 2; ++tile) {
+        if (tile == 1) p.expect(Keyword::tile2, "after the first tile's textures");
+        TextureRef layers;
+        while (p.peek_is(Keyword::texture)) {
+            const Token keyword = p.next();
+            const TextureRef t = parse_texture(p, keyword);
+            layers = layers ? layer(p, keyword, layers, t) : t;
+        }
+        if (!layers)
+            p.fail_expected(fmt::format("a texture for tile {} of 'tiles'", tile + 1), p.peek());
+        BlendMapEntry entry;
+        entry.value = tile;
+        entry.texture = layers;
+        textures->entries.push_back(entry);
+    }
+    p.expect_close(tiles, open);
+    texture.kind = Texture::Kind::patterned;
+    texture.pattern = Pattern{};
+    texture.pattern.kind = PatternKind::checker;
+    texture.pattern.location = p.location_of(tiles);
+    texture.map = textures;
+}
+
+InteriorRef parse_interior_from(Parser& p, const Token& keyword, const InteriorRef& start) {
+    const Token open = p.expect_open(keyword);
+    auto interior = std::make_shared<Interior>(start ? *start : Interior{});
+    InteriorRef declared;
+    if (take_declared(p, declared)) *interior = *declared;
+    interior->location = p.location_of(keyword);
+    parse_interior_items(p, *interior, keyword, open);
+    p.expect_close(keyword, open);
+    return interior;
+}
+
+// pigment, normal or finish as an object modifier: they modify the object's top texture
+// layer, or a copy of the default texture when it has none (reference 3.3.2.4).
+void modify_object_texture(Parser& p, const Token& keyword, ObjectAppearance& appearance) {
+    auto texture =
+        std::make_shared<Texture>(appearance.texture ? *appearance.texture : default_texture(p));
+    if (!appearance.texture) texture->location = p.location_of(keyword);
+    parse_texture_part(p, keyword, top_layer(p, keyword, *texture));
+    appearance.texture = texture;
+}
+
+// material { [ID] texture... interior_texture interior transforms }
+MaterialRef parse_material_block(Parser& p, const Token& keyword) {
+    const Token open = p.expect_open(keyword);
+    auto material = std::make_shared<TextureAndInterior>();
+    MaterialRef declared;
+    if (take_declared(p, declared)) *material = *declared;
     for (;;) {
         const Token token = p.peek();
         if (token.is(Symbol::rbrace)) break;
-        auto after = [&] { return fmt::format("after '{}'", p.word(token)); };
-        if (token.is(Keyword::ambient)) {
-            p.next();
-            finish.ambient = parse_rgb(p);
-        } else if (token.is(Keyword::emission)) {
-            p.next();
-            finish.emission = parse_rgb(p);
-        } else if (token.is(Keyword::diffuse)) {
-            p.next();
-            if (p.peek_is(Keyword::albedo)) p.fail_not_supported(p.peek(), "'albedo'");
-            finish.diffuse = p.parse_float(after());
-            if (p.accept(Symbol::comma)) p.fail_not_supported(token, "diffuse with a back-side value");
-        } else if (token.is(Keyword::brilliance)) {
-            p.next();
-            finish.brilliance = p.parse_float(after());
-        } else if (token.is(Keyword::specular)) {
-            p.next();
-            finish.specular = p.parse_float(after());
-        } else if (token.is(Keyword::roughness)) {
-            p.next();
-            const Token at = p.peek();
-            finish.roughness = p.parse_float(after());
-            if (!(finish.roughness > 0)) p.fail(at, "roughness must be positive");
-        } else if (token.is(Keyword::phong)) {
-            p.next();
-            finish.phong = p.parse_float(after());
-        } else if (token.is(Keyword::phong_size)) {
-            p.next();
-            finish.phong_size = p.parse_float(after());
-        } else if (token.is(Keyword::metallic)) {
-            p.next();
-            finish.metallic = p.starts_expression(p.peek()) ? p.parse_float() : 1.0;
-        } else if (token.is(Keyword::conserve_energy)) {
-            p.next();
-            finish.conserve_energy = p.parse_optional_bool();
-        } else if (token.is(Keyword::reflection)) {
-            p.next();
-            if (p.peek_is(Symbol::lbrace)) {
-                // reflection { [min,] max [fresnel on] [falloff F] [metallic M] }
-                const Token reflection_open = p.expect_open(token);
-                const Rgb first_value = parse_rgb(p);
-                p.accept_comma();
-                finish.reflection_min = finish.reflection_max = first_value;
-                if (p.starts_colour(p.peek())) finish.reflection_max = parse_rgb(p);
-                for (;;) {
-                    if (p.peek_is(Symbol::rbrace)) break;
-                    const Token item = p.next();
-                    if (item.is(Keyword::fresnel)) finish.reflection_fresnel = p.parse_optional_bool();
-                    else if (item.is(Keyword::falloff)) finish.reflection_falloff = p.parse_float("after 'falloff'");
-                    else if (item.is(Keyword::metallic))
-                        finish.metallic = p.starts_expression(p.peek()) ? p.parse_float() : 1.0;
-                    else p.fail_identifier(item, fmt::format("fresnel, falloff, metallic or '}}' to close 'reflection' "
-                                                             "opened at {}", p.location_of(reflection_open).str()));
-                }
-                p.expect_close(token, reflection_open);
-            } else {
-                finish.reflection_min = finish.reflection_max = parse_rgb(p);
-            }
+        Matrix4 transform;
+        if (p.parse_transform_item(transform)) {
+            // Only what the material holds so far moves (reference 3.4.5.5.3).
+            ObjectAppearance held{material->texture, material->interior_texture,
+                                  material->interior};
+            transform_appearance(held, transform);
+            *material = {held.texture, held.interior_texture, held.interior};
+            continue;
+        }
+        p.next();
+        if (token.is(Keyword::texture) || token.is(Keyword::interior_texture)) {
+            TextureRef& slot =
+                token.is(Keyword::texture) ? material->texture : material->interior_texture;
+            const TextureRef t = parse_texture(p, token);
+            slot = slot ? layer(p, token, slot, t) : t;
+        } else if (token.is(Keyword::interior)) {
+            material->interior = parse_interior_from(p, token, material->interior);
         } else {
-            p.fail_identifier(token, fmt::format("a finish keyword or '}}' to close '{}' opened at {}", p.word(keyword),
-                                                 p.location_of(open).str()));
+            p.fail_identifier(token,
+                              fmt::format("texture, interior_texture, interior, a transform or {}",
+                                          closing_purpose(p, keyword, open)));
         }
     }
     p.expect_close(keyword, open);
+    return material;
 }
 
 }  // namespace
 
+TextureRef parse_texture_body(Parser& p, const Token& keyword, const Token& open, Symbol close) {
+    auto texture = std::make_shared<Texture>(default_texture(p));
+    texture->location = p.location_of(keyword);
+    const bool uv_mapping = p.accept(Keyword::uv_mapping);  // texture { uv_mapping TEXTURE_BODY }
+    TextureRef declared;
+    const bool from_identifier = take_declared(p, declared);
+    if (from_identifier) *texture = *declared;
+    const Token first = p.peek();
+    if (!from_identifier && is_pattern_type(p, first, PatternRole::texture)) {
+        p.next();
+        texture->kind = Texture::Kind::patterned;
+        texture->pattern = Pattern{};
+        const BlendMapPointer list =
+            parse_pattern_type(p, first, texture->pattern, PatternRole::texture, nullptr);
+        texture->map = list;
+    } else if (!from_identifier && first.is(Keyword::tiles)) {
+        p.next();
+        parse_tiles(p, *texture, first);
+    }
+    if (texture->kind == Texture::Kind::patterned)
+        parse_patterned_texture_items(p, *texture, keyword, open, close,
+                                      from_identifier || first.is(Keyword::tiles));
+    else
+        parse_plain_texture_items(p, *texture, keyword, open, close);
+    if (uv_mapping) set_uv_mapping(*texture);
+    return texture;
+}
+
+TextureRef parse_texture(Parser& p, const Token& keyword) {
+    const Token open = p.expect_open(keyword);
+    TextureRef texture = parse_texture_body(p, keyword, open, Symbol::rbrace);
+    p.expect_close(keyword, open);
+    return texture;
+}
+
+TextureRef layer_textures(Parser& p, const Token& at, const TextureRef& below,
+                          const TextureRef& above) {
+    return layer(p, at, below, above);
+}
+
+InteriorRef parse_interior(Parser& p, const Token& keyword) {
+    return parse_interior_from(p, keyword, nullptr);
+}
+
+MaterialRef parse_material(Parser& p, const Token& keyword) {
+    return parse_material_block(p, keyword);
+}
+
 bool parse_appearance_modifier(Parser& p, ObjectAppearance& appearance) {
     const Token keyword = p.peek();
-    auto texture_to_modify = [&]() -> Texture& {
-        auto texture = std::make_shared<Texture>(appearance.texture ? *appearance.texture
-                                                 : p.default_texture  ? *p.default_texture
-                                                                      : Texture{});
-        appearance.texture = texture;
-        return *texture;
-    };
-    if (keyword.is(Keyword::texture)) {
-        if (appearance.texture) p.fail_not_supported(keyword, "layered textures (a second texture on one object)");
+    if (keyword.is(Keyword::texture) || keyword.is(Keyword::interior_texture)) {
         p.next();
-        appearance.texture = parse_texture(p, keyword);
-    } else if (keyword.is(Keyword::pigment)) {
+        TextureRef& slot =
+            keyword.is(Keyword::texture) ? appearance.texture : appearance.interior_texture;
+        const TextureRef texture = parse_texture(p, keyword);
+        slot = slot ? layer(p, keyword, slot, texture) : texture;
+    } else if (is_texture_part(keyword)) {
         p.next();
-        const PigmentRef pigment = parse_pigment(p, keyword);
-        texture_to_modify().pigment = *pigment;
-    } else if (keyword.is(Keyword::finish)) {
-        p.next();
-        const FinishRef finish = parse_finish(p, keyword);
-        texture_to_modify().finish = *finish;
+        modify_object_texture(p, keyword, appearance);
     } else if (keyword.is(Keyword::interior)) {
         p.next();
-        appearance.interior = parse_interior(p, keyword);
+        // An object's interior modifies the one it has (checked with POV-Ray 3.7: media add up).
+        appearance.interior = parse_interior_from(p, keyword, appearance.interior);
+    } else if (keyword.is(Keyword::material)) {
+        p.next();
+        // The material's texture is layered over the object's; its interior replaces the object's.
+        const MaterialRef material = parse_material(p, keyword);
+        if (material->texture)
+            appearance.texture = appearance.texture
+                                     ? layer(p, keyword, appearance.texture, material->texture)
+                                     : material->texture;
+        if (material->interior_texture)
+            appearance.interior_texture =
+                appearance.interior_texture
+                    ? layer(p, keyword, appearance.interior_texture, material->interior_texture)
+                    : material->interior_texture;
+        if (material->interior) appearance.interior = material->interior;
     } else {
         return false;
     }
@@ -137,108 +329,46 @@ bool parse_appearance_modifier(Parser& p, ObjectAppearance& appearance) {
 
 void inherit_appearance(ObjectAppearance& inner, const ObjectAppearance& outer) {
     if (!inner.texture) inner.texture = outer.texture;
+    if (!inner.interior_texture) inner.interior_texture = outer.interior_texture;
     if (!inner.interior) inner.interior = outer.interior;
 }
 
-TextureRef parse_texture(Parser& p, const Token& keyword) {
-    const Token open = p.expect_open(keyword);
-    auto texture = std::make_shared<Texture>(p.default_texture ? *p.default_texture : Texture{});
-    if (const TextureRef* declared = p.peek_declared<TextureRef>()) {
-        *texture = **declared;
-        p.next();
-    }
-    for (;;) {
-        const Token token = p.peek();
-        if (token.is(Symbol::rbrace)) break;
-        if (token.is(Keyword::pigment)) {
-            p.next();
-            const Token pigment_open = p.expect_open(token);
-            parse_pigment_body(p, texture->pigment, token, pigment_open);
-        } else if (token.is(Keyword::finish)) {
-            p.next();
-            const Token finish_open = p.expect_open(token);
-            parse_finish_body(p, texture->finish, token, finish_open);
-        } else if (token.is(Keyword::normal)) {
-            p.fail_not_supported(token, "normal (bump) patterns");
-        } else {
-            Matrix4 ignored;  // transforms do not change a uniform colour
-            if (!p.parse_transform_item(ignored))
-                p.fail_identifier(token, fmt::format("pigment, finish or '}}' to close 'texture' opened at {}",
-                                                     p.location_of(open).str()));
-        }
-    }
-    p.expect_close(keyword, open);
-    return texture;
-}
-
-PigmentRef parse_pigment(Parser& p, const Token& keyword) {
-    const Token open = p.expect_open(keyword);
-    auto pigment = std::make_shared<Pigment>();
-    parse_pigment_body(p, *pigment, keyword, open);
-    return pigment;
-}
-
-FinishRef parse_finish(Parser& p, const Token& keyword) {
-    const Token open = p.expect_open(keyword);
-    auto finish = std::make_shared<Finish>();
-    parse_finish_body(p, *finish, keyword, open);
-    return finish;
-}
-
-InteriorRef parse_interior(Parser& p, const Token& keyword) {
-    const Token open = p.expect_open(keyword);
-    auto interior = std::make_shared<Interior>();
-    if (const InteriorRef* declared = p.peek_declared<InteriorRef>()) {
-        *interior = **declared;
-        p.next();
-    }
-    for (;;) {
-        const Token token = p.peek();
-        if (token.is(Symbol::rbrace)) break;
-        if (token.is(Keyword::ior)) {
-            p.next();
-            const Token at = p.peek();
-            interior->ior = p.parse_float("after 'ior'");
-            if (!(interior->ior > 0)) p.fail(at, "ior must be positive");
-        } else {
-            p.fail_identifier(token, fmt::format("ior or '}}' to close 'interior' opened at {}", p.location_of(open).str()));
-        }
-    }
-    p.expect_close(keyword, open);
-    return interior;
-}
-
-NormalRef parse_normal(Parser& p, const Token& keyword) { p.fail_not_supported(keyword, "normal (bump) patterns"); }
-MediaRef parse_media(Parser& p, const Token& keyword) { p.fail_not_supported(keyword, "'media'"); }
-DensityRef parse_density(Parser& p, const Token& keyword) { p.fail_not_supported(keyword, "'density'"); }
-ColourMapRef parse_colour_map(Parser& p, const Token& keyword) { p.fail_not_supported(keyword, "'color_map'"); }
-PigmentMapRef parse_pigment_map(Parser& p, const Token& keyword) { p.fail_not_supported(keyword, "'pigment_map'"); }
-NormalMapRef parse_normal_map(Parser& p, const Token& keyword) { p.fail_not_supported(keyword, "'normal_map'"); }
-SlopeMapRef parse_slope_map(Parser& p, const Token& keyword) { p.fail_not_supported(keyword, "'slope_map'"); }
-TextureMapRef parse_texture_map(Parser& p, const Token& keyword) { p.fail_not_supported(keyword, "'texture_map'"); }
-DensityMapRef parse_density_map(Parser& p, const Token& keyword) { p.fail_not_supported(keyword, "'density_map'"); }
-
-MaterialRef parse_material(Parser& p, const Token& keyword) {
-    p.fail_not_supported(keyword, "'material'");
+ObjectAppearance scene_default_appearance(Parser& p) {
+    ObjectAppearance appearance;
+    appearance.texture = std::make_shared<Texture>(default_texture(p));
+    return appearance;
 }
 
 void parse_default(Parser& p, const Token& directive) {
-    p.fail_not_supported(directive, "#default");
-}
-
-std::shared_ptr<const Pattern> parse_function_pattern(Parser& p, const Token& keyword) {
-    p.fail_not_supported(keyword, "pattern functions");
-}
-
-bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value) {
-    (void)pattern, (void)point, (void)value;
-    return false;
-}
-
-bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour) {
-    (void)point;
-    colour = pigment.colour;
-    return true;
+    const Token open = p.expect_open(directive);
+    for (;;) {
+        const Token token = p.peek();
+        if (token.is(Symbol::rbrace)) break;
+        p.next();
+        if (token.is(Keyword::texture)) {
+            const TextureRef texture = parse_texture(p, token);
+            if (texture->kind == Texture::Kind::layered)
+                p.fail(token, "the default texture cannot be layered (POV-Ray's rule)");
+            if (texture->kind == Texture::Kind::patterned)
+                p.fail(token,
+                       "the default texture cannot be patterned, tiles or a material_map "
+                       "(POV-Ray's rule)");
+            p.default_texture = texture;
+            continue;
+        }
+        auto texture = std::make_shared<Texture>(default_texture(p));
+        if (token.is(Keyword::pigment))
+            texture->pigment = *parse_pigment(p, token);
+        else if (token.is(Keyword::normal))
+            texture->normal = parse_normal(p, token);
+        else if (token.is(Keyword::finish))
+            texture->finish = *parse_finish(p, token);
+        else
+            p.fail_identifier(token, fmt::format("texture, pigment, normal, finish or {}",
+                                                 closing_purpose(p, directive, open)));
+        p.default_texture = texture;
+    }
+    p.expect_close(directive, open);
 }
 
 }  // namespace rayset::tracer

@@ -1,0 +1,131 @@
+// Bitmaps used as patterns (reference 3.4.7.6, 3.4.7.7, 3.4.6.2.3, 3.4.6.5.3, 3.4.7.4.2):
+// image_map, bump_map, material_map and image_pattern, their file or function image and the
+// bitmap modifiers.
+#include <fmt/format.h>
+
+#include "tracer/scene_language/appearance_grammar.h"
+
+namespace rayset::tracer {
+namespace {
+
+// POV-Ray's bitmap types; exr, hdr and bmp are reserved words our keyword table lacks.
+bool bitmap_type(Parser& p, const Token& token, std::string& type) {
+    static constexpr Keyword kTypes[] = {Keyword::gif, Keyword::iff, Keyword::jpeg,
+                                         Keyword::pgm, Keyword::png, Keyword::ppm,
+                                         Keyword::sys, Keyword::tga, Keyword::tiff};
+    for (Keyword keyword : kTypes)
+        if (token.is(keyword)) {
+            type = p.word(token);
+            return true;
+        }
+    for (const char* word : {"exr", "hdr", "bmp"})
+        if (is_word(p, token, word)) {
+            type = word;
+            return true;
+        }
+    return false;
+}
+
+void parse_image_source(Parser& p, ImageMap& image, const Token& keyword) {
+    const Token token = p.peek();
+    if (token.is(Keyword::function)) {
+        p.next();
+        image.file_type = "function";
+        image.function_width = p.parse_int("as the function image's width", 1);
+        p.accept_comma();
+        image.function_height = p.parse_int("as the function image's height", 1);
+        image.function = p.parse_function(token);
+        return;
+    }
+    if (bitmap_type(p, token, image.file_type)) p.next();
+    const Token name_token = p.peek();
+    if (!p.starts_string(name_token))
+        p.fail_identifier(
+            name_token, fmt::format("a file name after the bitmap type in '{}'", p.word(keyword)));
+    const std::string name = p.parse_string();
+    image.path = p.resolve_file(name, name_token, "image file");
+    // gamma and premultiplied belong right after the file name.
+    for (;;) {
+        if (p.accept(Keyword::gamma)) {
+            image.gamma_given = true;
+            if (p.accept(Keyword::srgb))
+                image.gamma_srgb = true;
+            else
+                image.gamma = p.parse_float("after 'gamma'");
+        } else if (p.accept(Keyword::premultiplied)) {
+            image.premultiplied_given = true;
+            image.premultiplied = p.parse_optional_bool();
+        } else {
+            return;
+        }
+    }
+}
+
+// filter / transmit: `PALETTE_INDEX, AMOUNT` or `all AMOUNT`.
+ImageMap::PaletteAmount parse_palette_amount(Parser& p, const Token& keyword) {
+    ImageMap::PaletteAmount entry;
+    if (!p.accept(Keyword::all)) {
+        entry.index =
+            p.parse_int(fmt::format("as the palette index after '{}'", p.word(keyword)), 0);
+        p.accept_comma();
+    }
+    entry.amount = p.parse_float(fmt::format("as the amount after '{}'", p.word(keyword)));
+    return entry;
+}
+
+// A bitmap modifier; false when the next token is none.
+bool parse_bitmap_modifier(Parser& p, ImageMap& image, const Token& keyword) {
+    static const std::vector<KeywordField<ImageMap>> fields = {
+        whole_field(Keyword::map_type, &ImageMap::map_type, 0),
+        flag_field(Keyword::once, &ImageMap::once),
+        whole_field(Keyword::interpolate, &ImageMap::interpolate, 0),
+        flag_field(Keyword::use_index, &ImageMap::use_index),
+    };
+    if (parse_keyword_field(p, image, fields)) return true;
+    const Token token = p.peek();
+    const bool image_map = keyword.is(Keyword::image_map);
+    if (image_map && p.accept(Keyword::filter)) {
+        image.filter.push_back(parse_palette_amount(p, token));
+    } else if (image_map && p.accept(Keyword::transmit)) {
+        image.transmit.push_back(parse_palette_amount(p, token));
+    } else if (keyword.is(Keyword::image_pattern) && p.accept(Keyword::use_alpha)) {
+        image.use_alpha = true;
+    } else if (p.accept(Keyword::use_color) || p.accept(Keyword::use_colour)) {
+        image.use_index = false;
+    } else {
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::shared_ptr<const ImageMap> parse_image(Parser& p, const Token& keyword,
+                                            const std::function<bool()>& on_item) {
+    const Token open = p.expect_open(keyword);
+    auto image = std::make_shared<ImageMap>();
+    image->location = p.location_of(keyword);
+    bool have_source = false;
+    for (;;) {
+        const Token token = p.peek();
+        if (token.is(Symbol::rbrace)) break;
+        std::string type;
+        if (!have_source && (bitmap_type(p, token, type) || token.is(Keyword::function) ||
+                             p.starts_string(token))) {
+            parse_image_source(p, *image, keyword);
+            have_source = true;
+        } else if (!parse_bitmap_modifier(p, *image, keyword) && !(on_item && on_item())) {
+            p.fail_identifier(
+                token, fmt::format("{} or {}",
+                                   have_source ? "a bitmap modifier" : "a bitmap type and file",
+                                   closing_purpose(p, keyword, open)));
+        }
+    }
+    if (!have_source)
+        p.fail_expected(fmt::format("a bitmap type and file name in '{}'", p.word(keyword)),
+                        p.peek());
+    p.expect_close(keyword, open);
+    return image;
+}
+
+}  // namespace rayset::tracer

@@ -1,0 +1,264 @@
+// Parse-time evaluation of patterns and pigments (pattern and pigment functions): exact for
+// solid colours and for the patterns that need no noise, image or surface: boxed, brick,
+// checker, cubic, cylindrical, function, gradient, hexagon, leopard, marble and wood (without
+// turbulence), object (where the object can answer), onion, pigment_pattern (of such
+// pigments), planar, radial, spherical, square and triangular, through transforms, frequency,
+// phase, waveforms and colour, pigment and list maps. Everything else returns false.
+//
+// Every rule below was read back from POV-Ray 3.7 itself through `function { pattern { ... } }`
+// and `function { pigment { ... } }` at random points (to 1e-6), since the manual leaves the
+// details out: the wrap of values by fmod(v, 1.00001), the ranges of gradient and radial, the
+// layout of brick, hexagon, square and triangular, and the order of map lookups.
+#include <cmath>
+
+#include "tracer/scene_language/appearance_grammar.h"
+#include "tracer/scene_language/functions.h"
+#include "tracer/scene_language/object_tree.h"
+
+namespace rayset::tracer {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double fraction(double v) { return v - std::floor(v); }
+
+// The point in the pattern's own space: every warp undone from the last written to the
+// first. Only transforms are exact here; the classic turbulence must be zero.
+bool pattern_space_point(const Pattern& pattern, Vec3& point) {
+    const Vec3 zero{0, 0, 0};
+    if (pattern.uv_mapping) return false;  // needs a surface's u, v
+    const Vec3& turbulence = pattern.turbulence.amount;
+    if (turbulence.x != zero.x || turbulence.y != zero.y || turbulence.z != zero.z) return false;
+    for (auto warp = pattern.warps.rbegin(); warp != pattern.warps.rend(); ++warp) {
+        if (warp->kind != Warp::Kind::transform) return false;
+        point = warp->transform.inverse().point(point);
+    }
+    return true;
+}
+
+// gradient and function: values above 1 keep their fraction, the rest stay for the wrap.
+double above_one_wrapped(double v) { return v > 1 ? std::fmod(v, 1.0) : v; }
+
+// radial: the angle from +x toward -z in turns, in (0.25, 1.25]; 0.25 on the y axis.
+double radial(Vec3 p) {
+    if (p.x == 0 && p.z == 0) return 0.25;
+    const double turns = std::atan2(-p.z, p.x) / (2 * kPi);
+    return 1.25 - fraction(1.25 - turns);
+}
+
+// floor(v) mod n in [0, n), safe for any v (an infinite or undefined one gives 0).
+int cell_mod(double v, int n) {
+    const double cell = std::floor(v);
+    if (!std::isfinite(cell)) return 0;
+    double r = std::fmod(cell, n);
+    if (r < 0) r += n;
+    return static_cast<int>(r);
+}
+
+int brick(Vec3 p, Vec3 size, double mortar) {
+    // Even rows of bricks (along y) are offset by half a brick along z, odd rows along x;
+    // mortar fills the last `mortar` of each brick along every axis.
+    if (cell_mod(p.y / size.y, 2) == 0)
+        p.z += size.z / 2;
+    else
+        p.x += size.x / 2;
+    const bool in_mortar = fraction(p.x / size.x) >= 1 - mortar / size.x ||
+                           fraction(p.y / size.y) >= 1 - mortar / size.y ||
+                           fraction(p.z / size.z) >= 1 - mortar / size.z;
+    return in_mortar ? 0 : 1;
+}
+
+// Hexagons of side 1 in the x-z plane, one centred at the origin (0), its neighbour toward +z
+// (1) and the ones beside (2): axial coordinates rounded to the nearest hexagon.
+int hexagon(Vec3 p) {
+    const double q = 2.0 / 3.0 * p.x, r = -p.x / 3.0 + std::sqrt(3.0) / 3.0 * p.z, s = -q - r;
+    double rq = std::round(q), rr = std::round(r), rs = std::round(s);
+    const double dq = std::fabs(rq - q), dr = std::fabs(rr - r), ds = std::fabs(rs - s);
+    if (dq > dr && dq > ds)
+        rq = -rr - rs;
+    else if (!(dr > ds))
+        rr = -rq - rs;
+    return cell_mod(2 * rq + rr, 3);
+}
+
+int square(Vec3 p) {
+    static const int kIndex[2][2] = {{0, 1}, {3, 2}};  // [x cell mod 2][z cell mod 2]
+    return kIndex[cell_mod(p.x, 2)][cell_mod(p.z, 2)];
+}
+
+// Equilateral triangles of side 1 in the x-z plane in rows of height sqrt(3)/2 from z = 0.
+int triangular(Vec3 p) {
+    static const int kIndex[3][2] = {{0, 3}, {4, 5}, {2, 1}};  // [(i + 2 row) mod 3][down]
+    const double rows = p.z / (std::sqrt(3.0) / 2);
+    const double row = std::floor(rows);
+    const double skewed = p.x - 0.5 * rows;
+    const double column = std::floor(skewed);
+    const bool down = (skewed - column) + (rows - row) >= 1;
+    return kIndex[(cell_mod(column, 3) + 2 * cell_mod(row, 3)) % 3][down ? 1 : 0];
+}
+
+int cubic(Vec3 p) {
+    const double ax = std::fabs(p.x), ay = std::fabs(p.y), az = std::fabs(p.z);
+    if (ax >= ay && ax >= az) return p.x > 0 ? 0 : 3;
+    if (ay >= az) return p.y > 0 ? 1 : 4;
+    return p.z > 0 ? 2 : 5;
+}
+
+// The pattern's own value before frequency, phase and waveform; false when not exact here.
+bool raw_value(const Pattern& pattern, Vec3 p, double& value) {
+    const double length = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    switch (pattern.kind) {
+        case PatternKind::boxed:
+            value = 1 - std::min(1.0, std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}));
+            return true;
+        case PatternKind::spherical: value = 1 - std::min(1.0, length); return true;
+        case PatternKind::cylindrical:
+            value = 1 - std::min(1.0, std::sqrt(p.x * p.x + p.z * p.z));
+            return true;
+        case PatternKind::planar: value = 1 - std::min(1.0, std::fabs(p.y)); return true;
+        case PatternKind::onion: value = std::fmod(length, 1.0); return true;
+        case PatternKind::leopard: {
+            const double s = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3;
+            value = s * s;
+            return true;
+        }
+        case PatternKind::marble: value = p.x; return true;
+        case PatternKind::wood: value = std::sqrt(p.x * p.x + p.y * p.y); return true;
+        case PatternKind::radial: value = radial(p); return true;
+        case PatternKind::gradient: {
+            const Vec3 g = pattern.gradient;
+            const double norm = std::sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
+            if (norm == 0) return false;
+            value = above_one_wrapped((p.x * g.x + p.y * g.y + p.z * g.z) / norm);
+            return true;
+        }
+        case PatternKind::checker:
+            value = cell_mod(std::floor(p.x) + std::floor(p.y) + std::floor(p.z), 2);
+            return true;
+        case PatternKind::brick: value = brick(p, pattern.brick_size, pattern.mortar); return true;
+        case PatternKind::hexagon: value = hexagon(p); return true;
+        case PatternKind::square: value = square(p); return true;
+        case PatternKind::triangular: value = triangular(p); return true;
+        case PatternKind::cubic: value = cubic(p); return true;
+        case PatternKind::object: {
+            bool inside = false;
+            if (!pattern.object || !object_inside(*pattern.object, p, inside)) return false;
+            value = inside ? 1 : 0;
+            return true;
+        }
+        case PatternKind::pigment_pattern: {
+            // The pigment's grey (POV-Ray's weights; filter and transmit play no part).
+            Colour c;
+            if (!pattern.pigment || !evaluate_pigment(*pattern.pigment, p, c)) return false;
+            value = 0.297 * c.red + 0.589 * c.green + 0.114 * c.blue;
+            return true;
+        }
+        case PatternKind::function: {
+            if (!pattern.function || pattern.function->result_terms() != 1) return false;
+            const double arguments[3] = {p.x, p.y, p.z};
+            try {
+                value = above_one_wrapped(pattern.function->evaluate(arguments).v[0]);
+            } catch (const FunctionNotSupported&) {
+                return false;
+            }
+            return true;
+        }
+        default: return false;
+    }
+}
+
+double shaped(Waveform waveform, double exponent, double v) {
+    switch (waveform) {
+        case Waveform::ramp: return v;
+        case Waveform::triangle: {
+            const double f = fraction(v);
+            return f < 0.5 ? 2 * f : 2 * (1 - f);
+        }
+        case Waveform::sine: return (std::sin(2 * kPi * v) + 1) / 2;
+        case Waveform::scallop: return std::fabs(std::sin(kPi * v));
+        case Waveform::cubic: return v * v * (3 - 2 * v);
+        case Waveform::poly: return std::pow(v, exponent);
+    }
+    return v;
+}
+
+Colour blend(const Colour& a, const Colour& b, double t) {
+    return {a.red + t * (b.red - a.red), a.green + t * (b.green - a.green),
+            a.blue + t * (b.blue - a.blue), a.filter + t * (b.filter - a.filter),
+            a.transmit + t * (b.transmit - a.transmit)};
+}
+
+// POV-Ray's lookup: at or past the last entry its item, at or before the first the first's,
+// else the two entries around the value, blended linearly.
+template <class Item, class Blend>
+bool look_up(const BlendMap& map, double v, Item& out, Blend&& item_at) {
+    const auto& e = map.entries;
+    if (e.empty()) return false;
+    if (v >= e.back().value) return item_at(e.back(), out);
+    if (v <= e.front().value) return item_at(e.front(), out);
+    size_t i = 1;
+    while (i < e.size() && !(v < e[i].value)) ++i;
+    if (i >= e.size()) return item_at(e.back(), out);
+    Item low, high;
+    if (!item_at(e[i - 1], low) || !item_at(e[i], high)) return false;
+    const double span = e[i].value - e[i - 1].value;
+    const double t = span > 0 ? (v - e[i - 1].value) / span : 0;
+    out = blend(low, high, t);
+    return true;
+}
+
+bool colour_of_entry(const BlendMapEntry& entry, BlendMapKind kind, Vec3 point, Colour& colour) {
+    if (kind == BlendMapKind::colour) {
+        colour = entry.colour;
+        return true;
+    }
+    return entry.pigment && evaluate_pigment(*entry.pigment, point, colour);
+}
+
+// average: the entries' colours weighted by their values.
+bool average_colour(const BlendMap& map, Vec3 point, Colour& colour) {
+    double sum[5] = {0, 0, 0, 0, 0};
+    double total = 0;
+    for (const BlendMapEntry& entry : map.entries) {
+        Colour c;
+        if (!colour_of_entry(entry, map.kind, point, c)) return false;
+        const double terms[5] = {c.red, c.green, c.blue, c.filter, c.transmit};
+        for (int i = 0; i < 5; ++i) sum[i] += entry.value * terms[i];
+        total += entry.value;
+    }
+    if (total == 0) return false;
+    colour = {sum[0] / total, sum[1] / total, sum[2] / total, sum[3] / total, sum[4] / total};
+    return true;
+}
+
+}  // namespace
+
+bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value) {
+    if (!pattern_space_point(pattern, point) || !raw_value(pattern, point, value)) return false;
+    // Frequency and phase: v' = fmod(v f + phase, 1.00001), negatives lifted by 1. POV-Ray
+    // skips them for frequency 0, and for block patterns unless frequency is written.
+    const bool block = list_size(pattern.kind) > 0;
+    if (pattern.frequency != 0 && (!block || pattern.frequency_written)) {
+        value = std::fmod(value * pattern.frequency + pattern.phase, 1.00001);
+        if (value < 0) value += 1;
+    }
+    value = shaped(pattern.waveform, pattern.poly_exponent, value);
+    return true;
+}
+
+bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour) {
+    if (pigment.pattern.kind == PatternKind::plain) {
+        colour = pigment.colour;
+        return true;
+    }
+    const BlendMap& map = pigment.map ? *pigment.map : builtin_colour_map(pigment.pattern.kind);
+    if (map.kind != BlendMapKind::colour && map.kind != BlendMapKind::pigment) return false;
+    if (pigment.pattern.kind == PatternKind::average) return average_colour(map, point, colour);
+    double value = 0;
+    if (!evaluate_pattern(pigment.pattern, point, value)) return false;
+    return look_up(map, value, colour, [&](const BlendMapEntry& entry, Colour& c) {
+        return colour_of_entry(entry, map.kind, point, c);
+    });
+}
+
+}  // namespace rayset::tracer
