@@ -86,7 +86,7 @@ TEST(AppearancePigments, SolidColourAndDefaults) {
     EXPECT_EQ(t.kind, Texture::Kind::plain);
     EXPECT_EQ(t.pigment.pattern.kind, PatternKind::plain);
     expect_colour(t.pigment.colour, 1, 0.5, 0.25);
-    EXPECT_DOUBLE_EQ(t.pigment.colour.filter, 0.1);
+    EXPECT_FLOAT_EQ(t.pigment.colour.filter, 0.1);
     EXPECT_TRUE(t.pigment.quick_colour_given);
     EXPECT_DOUBLE_EQ(t.pigment.quick_colour.green, 1);
     EXPECT_EQ(t.pigment.location.line, 2);
@@ -118,9 +118,9 @@ TEST(AppearancePigments, PatternWithColourMapOldAndNewEntries) {
     EXPECT_DOUBLE_EQ(p.map->entries[0].colour.transmit, 0);  // rgb: three terms
     EXPECT_DOUBLE_EQ(p.map->entries[1].colour.red, 1);
     EXPECT_DOUBLE_EQ(p.map->entries[2].value, 0.5);
-    EXPECT_DOUBLE_EQ(p.map->entries[2].colour.red, 0.2);
-    EXPECT_DOUBLE_EQ(p.map->entries[3].value, 0.7);
-    EXPECT_DOUBLE_EQ(p.map->entries[3].colour.red, 0.4);
+    EXPECT_FLOAT_EQ(p.map->entries[2].colour.red, 0.2);
+    EXPECT_FLOAT_EQ(p.map->entries[3].value, 0.7);
+    EXPECT_FLOAT_EQ(p.map->entries[3].colour.red, 0.4);
     EXPECT_EQ(p.pattern.waveform, Waveform::ramp);
 }
 
@@ -455,7 +455,7 @@ TEST(AppearanceFinish, EveryKeyword) {
         "turbulence 0.2 } subsurface { translucency <1, 0.5, 0.25> } ior 1.4 } }",
         options);
     const Finish& f = s.objects.at(0).appearance.texture->finish;
-    EXPECT_DOUBLE_EQ(f.ambient.blue, 0.3);
+    EXPECT_FLOAT_EQ(f.ambient.blue, 0.3);
     EXPECT_DOUBLE_EQ(f.emission.green, 0.5);
     EXPECT_DOUBLE_EQ(f.diffuse, 0.7);
     EXPECT_TRUE(f.diffuse_albedo);
@@ -470,7 +470,7 @@ TEST(AppearanceFinish, EveryKeyword) {
     EXPECT_DOUBLE_EQ(f.roughness, 0.02);
     EXPECT_DOUBLE_EQ(f.metallic, 1);  // metallic without a value
     EXPECT_TRUE(f.conserve_energy);
-    EXPECT_DOUBLE_EQ(f.reflection_min.red, 0.03);
+    EXPECT_FLOAT_EQ(f.reflection_min.red, 0.03);
     EXPECT_DOUBLE_EQ(f.reflection_max.red, 1);
     EXPECT_TRUE(f.reflection_fresnel);
     EXPECT_DOUBLE_EQ(f.reflection_falloff, 2);
@@ -485,8 +485,8 @@ TEST(AppearanceFinish, EveryKeyword) {
     EXPECT_NE(warnings.find("'ior' belongs in interior { }"), std::string::npos);
     const Finish g =
         texture_of(appearance_of("finish { reflection 0.4 reflection_exponent 2 }")).finish;
-    EXPECT_DOUBLE_EQ(g.reflection_min.green, 0.4);
-    EXPECT_DOUBLE_EQ(g.reflection_max.green, 0.4);
+    EXPECT_FLOAT_EQ(g.reflection_min.green, 0.4);
+    EXPECT_FLOAT_EQ(g.reflection_max.green, 0.4);
     EXPECT_DOUBLE_EQ(g.reflection_exponent, 2);
     EXPECT_EQ(error_of("sphere { 0, 1 finish { fade_distance 2 } }"),
               "expected a finish keyword or '}' to close 'finish' opened at test.pov:1:22, found "
@@ -702,10 +702,10 @@ TEST(AppearanceInterior, MediaKeysDensitiesAndTheirTransforms) {
     EXPECT_DOUBLE_EQ(m.jitter, 0.5);
     EXPECT_EQ(m.aa_level, 5);
     EXPECT_DOUBLE_EQ(m.aa_threshold, 0.2);
-    EXPECT_DOUBLE_EQ(m.absorption.red, 0.1);
-    EXPECT_DOUBLE_EQ(m.emission.blue, 0.4);
+    EXPECT_FLOAT_EQ(m.absorption.red, 0.1);
+    EXPECT_FLOAT_EQ(m.emission.blue, 0.4);
     EXPECT_EQ(m.scattering_type, 5);
-    EXPECT_DOUBLE_EQ(m.scattering.green, 0.03);
+    EXPECT_FLOAT_EQ(m.scattering.green, 0.03);
     EXPECT_DOUBLE_EQ(m.eccentricity, 0.6);
     EXPECT_DOUBLE_EQ(m.extinction, 0.5);
     ASSERT_EQ(m.densities.size(), 2u);

@@ -426,7 +426,10 @@ TEST(SceneLanguageObjects, TexturesInheritThroughUnionsAndFlagsPropagate) {
     EXPECT_DOUBLE_EQ(s.objects[1].appearance.texture->finish.diffuse, 0.6);      // with POV-Ray's default finish
     EXPECT_TRUE(s.objects[0].no_shadow);
     EXPECT_TRUE(s.objects[1].no_shadow);
-    EXPECT_FALSE(s.objects[2].appearance.texture);
+    // No texture anywhere: POV-Ray's default texture (black) is attached when it is added.
+    ASSERT_TRUE(s.objects[2].appearance.texture);
+    EXPECT_EQ(s.objects[2].appearance.texture->pigment.colour.red, 0);
+    EXPECT_DOUBLE_EQ(s.objects[2].appearance.texture->finish.diffuse, 0.6);
     EXPECT_FALSE(s.objects[2].hollow);
     ASSERT_EQ(s.lights.size(), 1u);
     expect_vec(s.lights[0].position, {0, 1, 10});  // a light in a union moves with it

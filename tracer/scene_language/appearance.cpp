@@ -199,9 +199,23 @@ void transform_interior(Interior& interior, const Matrix4& transform) {
     }
 }
 
+namespace {
+
+// A texture whose look is the same everywhere (a plain one with a solid pigment and no
+// bumps): transforms do not change it, so it need not be copied.
+bool position_independent(const Texture& texture) {
+    return texture.kind == Texture::Kind::plain && texture.pigment.pattern.kind == PatternKind::plain &&
+           (!texture.normal || texture.normal->pattern.kind == PatternKind::plain);
+}
+
+bool is_identity(const Matrix4& m) { return m.m == Matrix4{}.m; }
+
+}  // namespace
+
 void transform_appearance(ObjectAppearance& appearance, const Matrix4& transform) {
+    if (is_identity(transform)) return;
     for (TextureRef* texture : {&appearance.texture, &appearance.interior_texture})
-        if (*texture) {
+        if (*texture && !position_independent(**texture)) {
             auto copy = std::make_shared<Texture>(**texture);
             transform_texture(*copy, transform);
             *texture = copy;

@@ -79,27 +79,6 @@ void parse_interior_items(Parser& p, Interior& interior, const Token& keyword, c
 void parse_finish_body(Parser& p, Finish& finish, const Token& keyword, const Token& open);
 
 // ---- helpers
-// When the next token is an identifier, or an array element `A[i]...`, holding a T: takes it
-// into `out` and returns true; false (nothing taken) otherwise.
-template <class T>
-bool take_declared(Parser& p, T& out) {
-    if (const T* value = p.peek_declared<T>()) {
-        out = *value;
-        p.next();
-        return true;
-    }
-    const ArrayRef* array = p.peek_declared<ArrayRef>();
-    if (!array || (*array)->element_type != Value(T{}).index()) return false;
-    const Token at = p.peek();
-    const Value element = p.parse_rvalue(at);
-    if (const T* value = std::get_if<T>(&element)) {
-        out = *value;
-        return true;
-    }
-    p.fail(at,
-           fmt::format("expected an element of '{}', found {}", p.word(at), type_name(element)));
-}
-
 // A float read where POV-Ray takes a whole number: truncated, as POV-Ray does, and kept within
 // int's range (a huge or undefined value cannot overflow the conversion).
 inline int truncated(double value) {

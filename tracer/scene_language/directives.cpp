@@ -96,10 +96,10 @@ void Parser::directive_declare(const Token& directive, bool local) {
     // anything else. The value is assigned before the ';' is looked for: the token after the
     // declaration may be a macro call that uses it.
     auto expect_semicolon = [&](bool numeric) {
-        if (numeric && version_ >= 3.5 && !peek_is(Symbol::semicolon))
+        if (numeric && version_ >= 3.5 && !peek_operator().is(Symbol::semicolon))
             fail_expected(fmt::format("';' after the value of #{} {} (POV-Ray requires it after floats, "
                                       "vectors and colours)", what, word(name)), peek());
-        accept(Symbol::semicolon);
+        if (peek_operator().is(Symbol::semicolon)) next();
     };
     if (raw_peek().is(Symbol::lbracket)) {
         const SymbolRef symbol = lookup(name.name);
@@ -118,9 +118,10 @@ void Parser::directive_declare(const Token& directive, bool local) {
         return;
     }
     expect(Symbol::equals, fmt::format("after #{} {}", what, word(name)));
+    const size_t scope = symbols_.depth();  // before a macro in the value opens its own
     Value value = parse_rvalue(name);
     const bool numeric = std::holds_alternative<Numeric>(value);
-    assign(name, name.name, std::move(value), local, deprecation, warn_once);
+    assign(name, name.name, std::move(value), local, deprecation, warn_once, scope);
     expect_semicolon(numeric);
 }
 
@@ -345,7 +346,7 @@ void Parser::directive_include(const Token& directive) {
     if (depth >= options_.max_include_depth)
         fail(directive, fmt::format("include depth limit: more than {} nested #include levels (recursive include "
                                     "of \"{}\"?) (ParseOptions::max_include_depth)", options_.max_include_depth, name));
-    const std::string path = resolve_file(name, directive, "include file");
+    const std::string path = resolve_file(name, directive, "include file", {".inc"});
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(directive, fmt::format("include file \"{}\" cannot be read ({})", name, path));
     std::ostringstream text;

@@ -367,12 +367,12 @@ Colour Parser::parse_colour() {
         const int terms = 3 + static_cast<int>(suffix.size());
         if (srgb && !scene_.global.assumed_gamma_set)
             fail(model, fmt::format("'{}' colours need global_settings {{ assumed_gamma ... }} first (as in POV-Ray)", w));
-        const Token value_start = peek();
+        // A value of more terms than the keyword names keeps them all (POV-Ray: `rgb C` of a
+        // five-term colour C keeps its filter and transmit).
         const Numeric e = parse_numeric();
-        if (e.terms > terms) fail(value_start, fmt::format("expected {} terms after '{}', found {}", terms, w, e.terms));
         const Numeric p = e.promoted(terms);
-        for (int i = 0; i < terms; ++i) c.v[i] = p.v[i];
-        if (suffix == "t") std::swap(c.v[3], c.v[4]);
+        for (int i = 0; i < p.terms; ++i) c.v[i] = p.v[i];
+        if (suffix == "t" && p.terms == 4) std::swap(c.v[3], c.v[4]);
         if (srgb)
             for (int i = 0; i < 3; ++i) c.v[i] = srgb_to_linear(c.v[i]);
         started = true;

@@ -61,14 +61,20 @@ std::string binary_word(Keyword type, int bytes, double value) {
 
 }  // namespace
 
-std::string Parser::resolve_file(const std::string& name, const Token& at, const std::string& what) const {
+std::string Parser::resolve_file(const std::string& name, const Token& at, const std::string& what,
+                                 std::initializer_list<const char*> extensions) const {
     std::vector<fs::path> candidates;
     const fs::path given(name);
+    auto add = [&](const fs::path& folder) {
+        candidates.push_back(folder / given);
+        if (given.extension().empty())
+            for (const char* extension : extensions) candidates.push_back(folder / (name + extension));
+    };
     if (given.is_absolute()) {
-        candidates.push_back(given);
+        add(fs::path());
     } else {
-        candidates.push_back(fs::path(files_[at.file].source->directory) / given);
-        for (const std::string& folder : search_paths_) candidates.push_back(fs::path(folder) / given);
+        add(fs::path(files_[at.file].source->directory));
+        for (const std::string& folder : search_paths_) add(fs::path(folder));
     }
     for (const fs::path& candidate : candidates) {
         std::error_code error;
@@ -76,12 +82,19 @@ std::string Parser::resolve_file(const std::string& name, const Token& at, const
         const fs::path real = fs::weakly_canonical(candidate, error);
         for (const std::string& root : allowed_roots_)
             if (within(real, fs::path(root))) return real.string();
+        // POV-Ray's own include folder, installed by the system, links its fonts to the
+        // system's font folder: its links are trusted (a scene's own folder's are not).
+        const fs::path found = fs::absolute(candidate, error).lexically_normal();
+        for (const std::string& folder : default_include_paths())
+            if (within(found, fs::path(folder))) return real.string();
         std::string roots;
         for (const std::string& root : allowed_roots_) roots += (roots.empty() ? "" : ", ") + root;
         fail(at, fmt::format("{} \"{}\" resolves to {}, outside the allowed roots ({})", what, name, real.string(), roots));
     }
     std::string searched;
-    for (const fs::path& candidate : candidates) searched += (searched.empty() ? "" : ", ") + candidate.parent_path().string();
+    for (const fs::path& candidate : candidates)
+        if (searched.find(candidate.parent_path().string()) == std::string::npos)
+            searched += (searched.empty() ? "" : ", ") + candidate.parent_path().string();
     fail(at, fmt::format("{} \"{}\" not found (searched {})", what, name, searched));
 }
 
@@ -132,7 +145,7 @@ void Parser::directive_fopen(const Token& directive) {
     // File handles are always global (POV-Ray's rule).
     auto entry = std::make_shared<SymbolEntry>();
     entry->value = FileRef(std::move(file));
-    symbols_.bind(handle.name, std::move(entry), true);
+    symbols_.bind(handle.name, std::move(entry), 0);
 }
 
 void Parser::directive_fclose(const Token& directive) {

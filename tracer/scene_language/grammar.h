@@ -59,6 +59,9 @@ SlopeMapRef parse_slope_map(Parser& parser, const Token& keyword);
 TextureMapRef parse_texture_map(Parser& parser, const Token& keyword);
 DensityMapRef parse_density_map(Parser& parser, const Token& keyword);
 void parse_default(Parser& parser, const Token& directive);  // after #default
+// An image file of POV-Ray type `type` (png, jpeg, ...), also tried with that type's extension.
+std::string resolve_image_file(Parser& parser, const std::string& name, const Token& at, const std::string& type,
+                               const std::string& what);
 // `function { pattern { PATTERN } }`: after `pattern`.
 std::shared_ptr<const Pattern> parse_function_pattern(Parser& parser, const Token& keyword);
 // A pattern's value or a pigment's colour at a point, for pattern and pigment functions;

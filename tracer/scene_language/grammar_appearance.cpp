@@ -71,11 +71,11 @@ bool is_texture_part(const Token& token) {
 bool parse_part_identifier(Parser& p, Texture& texture) {
     PigmentRef pigment;
     FinishRef finish;
-    if (take_declared(p, pigment))
+    if (p.take_declared(pigment))
         texture.pigment = *pigment;
-    else if (take_declared(p, texture.normal))
+    else if (p.take_declared(texture.normal))
         return true;
-    else if (take_declared(p, finish))
+    else if (p.take_declared(finish))
         texture.finish = *finish;
     else
         return false;
@@ -189,7 +189,7 @@ InteriorRef parse_interior_from(Parser& p, const Token& keyword, const InteriorR
     const Token open = p.expect_open(keyword);
     auto interior = std::make_shared<Interior>(start ? *start : Interior{});
     InteriorRef declared;
-    if (take_declared(p, declared)) *interior = *declared;
+    if (p.take_declared(declared)) *interior = *declared;
     interior->location = p.location_of(keyword);
     parse_interior_items(p, *interior, keyword, open);
     p.expect_close(keyword, open);
@@ -211,7 +211,7 @@ MaterialRef parse_material_block(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto material = std::make_shared<TextureAndInterior>();
     MaterialRef declared;
-    if (take_declared(p, declared)) *material = *declared;
+    if (p.take_declared(declared)) *material = *declared;
     for (;;) {
         const Token token = p.peek();
         if (token.is(Symbol::rbrace)) break;
@@ -249,7 +249,7 @@ TextureRef parse_texture_body(Parser& p, const Token& keyword, const Token& open
     texture->location = p.location_of(keyword);
     const bool uv_mapping = p.accept(Keyword::uv_mapping);  // texture { uv_mapping TEXTURE_BODY }
     TextureRef declared;
-    const bool from_identifier = take_declared(p, declared);
+    const bool from_identifier = p.take_declared(declared);
     if (from_identifier) *texture = *declared;
     const Token first = p.peek();
     if (!from_identifier && is_pattern_type(p, first, PatternRole::texture)) {
@@ -334,8 +334,9 @@ void inherit_appearance(ObjectAppearance& inner, const ObjectAppearance& outer) 
 }
 
 ObjectAppearance scene_default_appearance(Parser& p) {
+    static const TextureRef povray_default = std::make_shared<Texture>();
     ObjectAppearance appearance;
-    appearance.texture = std::make_shared<Texture>(default_texture(p));
+    appearance.texture = p.default_texture ? p.default_texture : povray_default;
     return appearance;
 }
 

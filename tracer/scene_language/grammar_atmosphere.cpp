@@ -91,9 +91,8 @@ void check_rainbow(Parser& p, const Token& keyword, const Rainbow& rainbow) {
 FogRef parse_fog(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto fog = std::make_shared<Fog>();
-    if (const FogRef* declared = p.peek_declared<FogRef>()) {
-        *fog = **declared;
-        p.next();
+    if (FogRef declared; p.take_declared(declared)) {
+        *fog = *declared;
     }
     fog->location = p.location_of(keyword);
     for (;;) {
@@ -118,9 +117,8 @@ FogRef parse_fog(Parser& p, const Token& keyword) {
 RainbowRef parse_rainbow(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto rainbow = std::make_shared<Rainbow>();
-    if (const RainbowRef* declared = p.peek_declared<RainbowRef>()) {
-        *rainbow = **declared;
-        p.next();
+    if (RainbowRef declared; p.take_declared(declared)) {
+        *rainbow = *declared;
     }
     rainbow->location = p.location_of(keyword);
     while (!p.peek_is(Symbol::rbrace)) {
@@ -139,9 +137,8 @@ RainbowRef parse_rainbow(Parser& p, const Token& keyword) {
 SkySphereRef parse_sky_sphere(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto sky = std::make_shared<SkySphere>();
-    if (const SkySphereRef* declared = p.peek_declared<SkySphereRef>()) {
-        *sky = **declared;
-        p.next();
+    if (SkySphereRef declared; p.take_declared(declared)) {
+        *sky = *declared;
     }
     sky->location = p.location_of(keyword);
     for (;;) {

@@ -112,7 +112,7 @@ void parse_entries(Parser& p, BlendMap& map, const Token& keyword, bool weights_
 // A map identifier (or array element) of the kind.
 bool take_declared_map(Parser& p, BlendMapKind kind, BlendMapPointer& result) {
     auto take = [&](auto tagged) {
-        if (!take_declared(p, tagged)) return false;
+        if (!p.take_declared(tagged)) return false;
         result = tagged.item;
         return true;
     };

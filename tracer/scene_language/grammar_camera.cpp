@@ -315,12 +315,11 @@ CameraRef parse_camera(Parser& p, const Token& keyword) {
     auto result = std::make_shared<Camera>();
     Camera& camera = *result;
     camera.statement = p.location_of(keyword);
-    if (const CameraRef* declared = p.peek_declared<CameraRef>()) {
+    if (CameraRef declared; p.take_declared(declared)) {
         // As in POV-Ray, a declared camera takes transforms only: its other items were resolved
         // when it was declared.
-        camera = **declared;
+        camera = *declared;
         camera.statement = p.location_of(keyword);
-        p.next();
         Matrix4 transform;
         while (!p.peek_is(Symbol::rbrace))
             if (!p.parse_transform_item(transform))

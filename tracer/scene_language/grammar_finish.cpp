@@ -173,7 +173,7 @@ bool parse_finish_item(Parser& p, Finish& finish) {
 
 void parse_finish_body(Parser& p, Finish& finish, const Token& keyword, const Token& open) {
     FinishRef declared;
-    if (take_declared(p, declared)) finish = *declared;
+    if (p.take_declared(declared)) finish = *declared;
     finish.location = p.location_of(keyword);
     for (;;) {
         if (p.peek_is(Symbol::rbrace)) break;

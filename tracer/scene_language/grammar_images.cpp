@@ -8,19 +8,14 @@
 namespace rayset::tracer {
 namespace {
 
-// POV-Ray's bitmap types; exr, hdr and bmp are reserved words our keyword table lacks.
+// POV-Ray's bitmap types.
 bool bitmap_type(Parser& p, const Token& token, std::string& type) {
     static constexpr Keyword kTypes[] = {Keyword::gif, Keyword::iff, Keyword::jpeg,
                                          Keyword::pgm, Keyword::png, Keyword::ppm,
-                                         Keyword::sys, Keyword::tga, Keyword::tiff};
+                                         Keyword::sys, Keyword::tga, Keyword::tiff, Keyword::exr, Keyword::hdr, Keyword::bmp};
     for (Keyword keyword : kTypes)
         if (token.is(keyword)) {
             type = p.word(token);
-            return true;
-        }
-    for (const char* word : {"exr", "hdr", "bmp"})
-        if (is_word(p, token, word)) {
-            type = word;
             return true;
         }
     return false;
@@ -43,7 +38,7 @@ void parse_image_source(Parser& p, ImageMap& image, const Token& keyword) {
         p.fail_identifier(
             name_token, fmt::format("a file name after the bitmap type in '{}'", p.word(keyword)));
     const std::string name = p.parse_string();
-    image.path = p.resolve_file(name, name_token, "image file");
+    image.path = resolve_image_file(p, name, name_token, image.file_type, "image file");
     // gamma and premultiplied belong right after the file name.
     for (;;) {
         if (p.accept(Keyword::gamma)) {
@@ -99,6 +94,16 @@ bool parse_bitmap_modifier(Parser& p, ImageMap& image, const Token& keyword) {
 }
 
 }  // namespace
+
+std::string resolve_image_file(Parser& p, const std::string& name, const Token& at, const std::string& type,
+                               const std::string& what) {
+    // POV-Ray also tries the name with its type's extension.
+    if (type == "jpeg") return p.resolve_file(name, at, what, {".jpg", ".jpeg"});
+    if (type == "tiff") return p.resolve_file(name, at, what, {".tif", ".tiff"});
+    if (type.empty() || type == "sys" || type == "function") return p.resolve_file(name, at, what);
+    const std::string extension = "." + type;
+    return p.resolve_file(name, at, what, {extension.c_str()});
+}
 
 std::shared_ptr<const ImageMap> parse_image(Parser& p, const Token& keyword,
                                             const std::function<bool()>& on_item) {

@@ -89,7 +89,7 @@ MediaRef parse_media(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto media = std::make_shared<Media>();
     MediaRef declared;
-    if (take_declared(p, declared)) *media = *declared;
+    if (p.take_declared(declared)) *media = *declared;
     media->location = p.location_of(keyword);
     for (;;) {
         if (p.peek_is(Symbol::rbrace)) break;

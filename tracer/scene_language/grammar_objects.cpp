@@ -51,7 +51,6 @@ const ObjectGrammar kObjectGrammar[] = {
     {Keyword::julia_fractal, parse_julia_fractal},
     {Keyword::mesh, parse_mesh},
     {Keyword::mesh2, parse_mesh2},
-    {Keyword::mesh_file, parse_mesh_file},
     {Keyword::union_, parse_csg},
     {Keyword::composite, parse_csg},  // POV-Ray's old name for union
     {Keyword::merge, parse_csg},
@@ -95,9 +94,7 @@ ObjectRef parse_csg(Parser& p, const Token& keyword) {
 ObjectRef parse_object_statement(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     ObjectRef base;
-    if (const ObjectRef* declared = p.peek_declared<ObjectRef>()) {
-        base = *declared;
-        p.next();
+    if (p.take_declared(base)) {
     } else if (starts_object(p, p.peek())) {
         base = parse_object(p);
     } else {
@@ -339,6 +336,7 @@ bool parse_node_transform(Parser& p, ObjectNode& node) {
 
 void transform_node(ObjectNode& node, const Matrix4& step, bool similarity) {
     node.transform = step * node.transform;
+    transform_appearance(node.appearance, step);  // textures written so far move with the object
     auto carry = [&](ObjectRef& attached) {
         auto moved = std::make_shared<ObjectNode>(*attached);
         transform_node(*moved, step, similarity);
@@ -432,13 +430,19 @@ Vec2 parse_vec2(Parser& p, const std::string& what) {
 
 // ---------------------------------------------------------------- entry points
 
+// Our mesh_file is a statement where no identifier of that name is declared.
+bool is_mesh_file(Parser& parser, const Token& token) {
+    return token.is(ContextWord::mesh_file) && !parser.lookup_value(token);
+}
+
 bool starts_object(Parser& parser, const Token& token) {
-    (void)parser;
-    return grammar_of(token) != nullptr;
+    return grammar_of(token) != nullptr || is_mesh_file(parser, token);
 }
 
 ObjectRef parse_object(Parser& p) {
+    const bool mesh_file = is_mesh_file(p, p.peek());
     const Token keyword = p.next();
+    if (mesh_file) return parse_mesh_file(p, keyword);
     const ObjectGrammar* grammar = grammar_of(keyword);
     if (!grammar) p.fail_identifier(keyword, "an object");
     return grammar->parse(p, keyword);
@@ -494,7 +498,8 @@ private:
     Inherited inherit(const ObjectNode& node, const Inherited& parent) const {
         Inherited here = parent;
         here.to_world = parent.to_world * node.transform;
-        here.appearance = node.appearance;
+        here.appearance = node.appearance;  // in the parent's coordinates: to the world's
+        transform_appearance(here.appearance, parent.to_world);
         inherit_appearance(here.appearance, parent.appearance);
         here.no_shadow = parent.no_shadow || node.no_shadow;
         here.no_image = parent.no_image || node.no_image;
@@ -602,7 +607,9 @@ private:
 }  // namespace
 
 void add_to_scene(Parser& parser, const ObjectRef& object) {
-    Flattener(parser.scene()).add(*object, Inherited{});
+    Inherited root;
+    root.appearance = scene_default_appearance(parser);  // the #default texture of this moment
+    Flattener(parser.scene()).add(*object, root);
 }
 
 }  // namespace rayset::tracer

@@ -52,9 +52,8 @@ void parse_light_photons(Parser& p, const Token& keyword, LightSource& light) {
 void parse_light_object(Parser& p, const Token& keyword, ObjectNode& node) {
     const Token open = p.expect_open(keyword);
     std::shared_ptr<ObjectNode> object;
-    if (const ObjectRef* declared = p.peek_declared<ObjectRef>()) {
-        object = std::make_shared<ObjectNode>(**declared);
-        p.next();
+    if (ObjectRef declared; p.take_declared(declared)) {
+        object = std::make_shared<ObjectNode>(*declared);
     } else if (starts_object(p, p.peek())) {
         object = std::make_shared<ObjectNode>(*parse_object(p));
     } else {
@@ -204,11 +203,11 @@ void correct_orient(Parser& p, const Token& keyword, LightSource& light) {
 // (a light without one is black).
 ObjectRef parse_light_source(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
-    if (const ObjectRef* declared = p.peek_declared<ObjectRef>()) {
-        if ((*declared)->kind != ObjectNode::Kind::light)
-            p.fail_identifier(p.peek(), "a light_source identifier");
-        auto node = std::make_shared<ObjectNode>(**declared);
-        p.next();
+    const Token first = p.peek();
+    if (ObjectRef declared; p.take_declared(declared)) {
+        if (declared->kind != ObjectNode::Kind::light)
+            p.fail(first, "wrong type: '" + p.word(first) + "' is an object, expected a light_source identifier");
+        auto node = std::make_shared<ObjectNode>(*declared);
         while (!p.peek_is(Symbol::rbrace))
             if (!parse_node_transform(p, *node))
                 p.fail_identifier(
@@ -249,9 +248,8 @@ ObjectRef parse_light_group(Parser& p, const Token& keyword) {
     for (;;) {
         if (starts_object(p, p.peek())) {
             node->children.push_back(parse_object(p));
-        } else if (const ObjectRef* declared = p.peek_declared<ObjectRef>()) {
-            node->children.push_back(*declared);
-            p.next();
+        } else if (ObjectRef declared; p.take_declared(declared)) {
+            node->children.push_back(declared);
         } else {
             break;
         }

@@ -108,7 +108,7 @@ void parse_slope(Parser& p, const Token& keyword, SlopeParameters& slope) {
 }
 
 void parse_object_pattern_object(Parser& p, Pattern& pattern) {
-    if (take_declared(p, pattern.object)) {
+    if (p.take_declared(pattern.object)) {
         return;
     } else if (starts_object(p, p.peek())) {
         pattern.object = parse_object(p);
@@ -478,15 +478,15 @@ bool parse_pattern_modifier(Parser& p, Pattern& pattern, PatternRole role) {
     const Token token = p.peek();
     if (parse_general_modifier(p, token, pattern)) return true;
     const KindModifier* modifier = nullptr;
-    if (is_kind_modifier(token, modifier) || is_word(p, token, "number_of_sides") ||
-        is_word(p, token, "number_of_tiles")) {
+    if (is_kind_modifier(token, modifier) || token.is(Keyword::number_of_sides) ||
+        token.is(Keyword::number_of_tiles)) {
         if (!modifier) {  // number_of_sides, number_of_tiles: pavement
             if (pattern.kind != PatternKind::pavement)
                 p.fail(token, fmt::format("'{}' can only be used with pavement, found with {}",
                                           p.word(token), pattern_name(pattern.kind)));
             p.next();
             const int value = truncated(p.parse_float(fmt::format("after '{}'", p.word(token))));
-            (is_word(p, token, "number_of_sides") ? pattern.pavement.sides
+            (token.is(Keyword::number_of_sides) ? pattern.pavement.sides
                                                   : pattern.pavement.tiles) = value;
             return true;
         }

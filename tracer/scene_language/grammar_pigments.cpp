@@ -133,9 +133,9 @@ void parse_pigment_body(Parser& p, Pigment& pigment, PatternRole role, const Tok
     const bool uv_mapping = p.accept(Keyword::uv_mapping);  // pigment { uv_mapping PIGMENT_BODY }
     PigmentRef declared_pigment;
     DensityRef declared_density;
-    if (role == PatternRole::pigment && take_declared(p, declared_pigment))
+    if (role == PatternRole::pigment && p.take_declared(declared_pigment))
         pigment = *declared_pigment;
-    else if (role == PatternRole::density && take_declared(p, declared_density))
+    else if (role == PatternRole::density && p.take_declared(declared_density))
         pigment = *declared_density.item;
     pigment.location = p.location_of(keyword);
     const Token type = p.peek();
@@ -164,7 +164,7 @@ void parse_normal_body(Parser& p, Normal& normal, const Token& keyword, const To
                        Symbol close) {
     const bool uv_mapping = p.accept(Keyword::uv_mapping);  // normal { uv_mapping NORMAL_BODY }
     NormalRef declared;
-    if (take_declared(p, declared)) normal = *declared;
+    if (p.take_declared(declared)) normal = *declared;
     normal.location = p.location_of(keyword);
     const Token type = p.peek();
     const bool type_written = is_pattern_type(p, type, PatternRole::normal);

@@ -43,9 +43,9 @@ bool parse_scene_statement(Parser& p, const Token& keyword) {
         parse_atmospheric_media(p, keyword);
     } else if (keyword.is(Keyword::default_)) {
         parse_default(p, keyword);  // `default { }` without '#': POV-Ray 3.7 reads it as #default
-    } else if (keyword.is(Keyword::ray_source)) {
+    } else if (keyword.is(ContextWord::ray_source) && !p.lookup_value(keyword)) {
         parse_ray_source(p, keyword);
-    } else if (keyword.is(Keyword::illuminance_receiver)) {
+    } else if (keyword.is(ContextWord::illuminance_receiver) && !p.lookup_value(keyword)) {
         parse_receiver(p, keyword);
     } else {
         return false;

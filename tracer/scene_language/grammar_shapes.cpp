@@ -223,8 +223,7 @@ ObjectRef parse_polynomial(Parser& p, const Token& keyword) {
     p.accept_comma();
     const std::vector<std::array<int, 3>> terms = polynomial_terms(poly.order);
     poly.coefficients.assign(terms.size(), 0.0);
-    // `xyz` is one of POV-Ray's reserved words that the keyword table lacks: read by its text.
-    while (p.peek().kind == TokenKind::word && p.word(p.peek()) == "xyz") {
+    while (p.peek().is(Keyword::xyz)) {
         const Token xyz = p.next();
         p.expect(Symbol::lparen, "after 'xyz'");
         std::array<int, 3> powers{};

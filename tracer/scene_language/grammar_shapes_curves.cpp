@@ -257,10 +257,7 @@ ObjectRef parse_text(Parser& p, const Token& keyword) {
     } else {
         p.expect(Keyword::ttf, "(the font type) in 'text'");
         const Token at = p.peek();
-        std::string name = p.parse_string();
-        if (std::filesystem::path(name).extension().empty())
-            name += ".ttf";  // as POV-Ray looks for it
-        text.font_path = p.resolve_file(name, at, "font file");
+        text.font_path = p.resolve_file(p.parse_string(), at, "font file", {".ttf"});
     }
     p.accept_comma();
     text.text = p.parse_string();

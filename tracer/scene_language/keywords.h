@@ -1,5 +1,6 @@
-// The reserved words of POV-Ray 3.7's scene language (its reference manual, "Keywords") plus
-// our extensions, as one list: the Keyword enum, the word table and the interner's first ids all
+// The reserved words of POV-Ray 3.7's scene language (its reference manual, "Keywords", and
+// bmp, exr, hdr, number_of_sides, number_of_tiles and xyz, which POV-Ray 3.7.0.10 reserves but
+// the manual does not list; the manual's atand is not reserved), as one list: the Keyword enum, the word table and the interner's first ids all
 // come from it. Words that C++ reserves carry a trailing underscore in the enum
 // (Keyword::union_ is "union").
 #pragma once
@@ -48,7 +49,6 @@ namespace rayset::tracer {
     X(assumed_gamma, "assumed_gamma") \
     X(atan, "atan") \
     X(atan2, "atan2") \
-    X(atand, "atand") \
     X(atanh, "atanh") \
     X(autostop, "autostop") \
     X(average, "average") \
@@ -63,6 +63,7 @@ namespace rayset::tracer {
     X(blob, "blob") \
     X(blue, "blue") \
     X(blur_samples, "blur_samples") \
+    X(bmp, "bmp") \
     X(bokeh, "bokeh") \
     X(bounded_by, "bounded_by") \
     X(box, "box") \
@@ -149,6 +150,7 @@ namespace rayset::tracer {
     X(error, "error") \
     X(error_bound, "error_bound") \
     X(evaluate, "evaluate") \
+    X(exr, "exr") \
     X(exp, "exp") \
     X(expand_thresholds, "expand_thresholds") \
     X(exponent, "exponent") \
@@ -196,6 +198,7 @@ namespace rayset::tracer {
     X(gray_threshold, "gray_threshold") \
     X(green, "green") \
     X(height_field, "height_field") \
+    X(hdr, "hdr") \
     X(hexagon, "hexagon") \
     X(hf_gray_16, "hf_gray_16") \
     X(hierarchy, "hierarchy") \
@@ -205,7 +208,6 @@ namespace rayset::tracer {
     X(ifdef, "ifdef") \
     X(iff, "iff") \
     X(ifndef, "ifndef") \
-    X(illuminance_receiver, "illuminance_receiver") \
     X(image_height, "image_height") \
     X(image_map, "image_map") \
     X(image_pattern, "image_pattern") \
@@ -273,7 +275,6 @@ namespace rayset::tracer {
     X(mesh, "mesh") \
     X(mesh2, "mesh2") \
     X(mesh_camera, "mesh_camera") \
-    X(mesh_file, "mesh_file") \
     X(metallic, "metallic") \
     X(method, "method") \
     X(metric, "metric") \
@@ -292,6 +293,8 @@ namespace rayset::tracer {
     X(no_reflection, "no_reflection") \
     X(no_shadow, "no_shadow") \
     X(noise_generator, "noise_generator") \
+    X(number_of_sides, "number_of_sides") \
+    X(number_of_tiles, "number_of_tiles") \
     X(normal, "normal") \
     X(normal_indices, "normal_indices") \
     X(normal_map, "normal_map") \
@@ -364,7 +367,6 @@ namespace rayset::tracer {
     X(rand, "rand") \
     X(range, "range") \
     X(ratio, "ratio") \
-    X(ray_source, "ray_source") \
     X(read, "read") \
     X(reciprocal, "reciprocal") \
     X(recursion_limit, "recursion_limit") \
@@ -513,14 +515,20 @@ namespace rayset::tracer {
     X(wrinkles, "wrinkles") \
     X(write, "write") \
     X(x, "x") \
+    X(xyz, "xyz") \
     X(y, "y") \
     X(yes, "yes") \
     X(z, "z")
 
-// Words that mean something only inside one block (our global_settings keys and the receiver's
-// items): interned up front so that blocks compare ids, but not reserved, so a scene may
-// still declare identifiers with these names.
+// Our extensions: words that mean something only inside one block (our global_settings keys
+// and the receiver's items) or as a statement where no identifier of that name is declared
+// (mesh_file, ray_source, illuminance_receiver). Interned up front so that the grammar compares
+// ids, but not reserved: POV-Ray scenes may declare identifiers with these names (its own
+// sample scenes declare `mesh_file`).
 #define RAYSET_CONTEXT_WORDS(X) \
+    X(mesh_file, "mesh_file") \
+    X(ray_source, "ray_source") \
+    X(illuminance_receiver, "illuminance_receiver") \
     X(length_unit, "length_unit") \
     X(integrator, "integrator") \
     X(spectral, "spectral") \

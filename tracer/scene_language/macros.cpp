@@ -44,7 +44,7 @@ void Parser::directive_macro(const Token& directive) {
     auto entry = std::make_shared<SymbolEntry>();
     entry->value = MacroRef(std::move(macro));
     symbols_.unbind_everywhere(name.name);
-    symbols_.bind(name.name, std::move(entry), true);
+    symbols_.bind(name.name, std::move(entry), 0);
 }
 
 void Parser::invoke_macro(const Token& name, const MacroRef& macro) {
@@ -90,7 +90,8 @@ void Parser::invoke_macro(const Token& name, const MacroRef& macro) {
     frame.blocks_at_start = blocks_.size();
     frames_.push_back(std::move(frame));
     symbols_.push_scope();
-    for (size_t i = 0; i < parameters.size(); ++i) symbols_.bind(macro->parameters[i], std::move(parameters[i]));
+    for (size_t i = 0; i < parameters.size(); ++i)
+        symbols_.bind(macro->parameters[i], std::move(parameters[i]), symbols_.depth());
     enter_block(Block::Kind::macro_body, name);
 }
 

@@ -78,7 +78,31 @@ public:
         const Value* value = peek_value();
         return value ? std::get_if<T>(value) : nullptr;
     }
+    // When the next token is an identifier, or an array element `A[i]...`, holding a T: takes it
+    // into `out` and returns true; false (nothing taken) otherwise.
+    template <typename T>
+    bool take_declared(T& out) {
+        if (const T* value = peek_declared<T>()) {
+            out = *value;
+            next();
+            return true;
+        }
+        const ArrayRef* array = peek_declared<ArrayRef>();
+        if (!array || (*array)->element_type != Value(T{}).index()) return false;
+        const Token at = peek();
+        const Value element = parse_rvalue(at);
+        if (const T* value = std::get_if<T>(&element)) {
+            out = *value;
+            return true;
+        }
+        fail(at, "expected an element of '" + word(at) + "', found " + type_name(element));
+    }
 
+    // The value of the identifier `token` names, or nullptr (it is a keyword or undeclared).
+    const Value* lookup_value(const Token& token) const {
+        const SymbolRef& symbol = token.kind == TokenKind::word ? symbols_.find(token.name) : SymbolTable::kNone;
+        return symbol ? &symbol->value : nullptr;
+    }
     const std::string& word(const Token& token) const { return names_.text(token.name); }
     const std::string& string_literal(const Token& token) const;
     std::string describe(const Token& token) const;  // "'sphere'", "number 3", "end of file" ...
@@ -121,7 +145,10 @@ public:
     void warn(const Token& at, const std::string& what);
     // Resolves a file name against the folder of the file naming it, then the include paths,
     // refusing what lands outside the allowed roots. `what` names the file in messages.
-    std::string resolve_file(const std::string& name, const Token& at, const std::string& what) const;
+    // A name without an extension is also tried with each of `extensions` (".png"), as POV-Ray
+    // tries its file types'.
+    std::string resolve_file(const std::string& name, const Token& at, const std::string& what,
+                             std::initializer_list<const char*> extensions = {}) const;
 
     // ---------------------------------------------------------------- scene state
     SceneDescription& scene() { return scene_; }
@@ -218,8 +245,9 @@ private:
     // ---------------------------------------------------------------- symbols
     SymbolRef lookup(NameId name) const;
     // #declare (local false) or #local (local true) of a value, as POV-Ray's scope rules say.
+    static constexpr size_t kInnermostScope = ~size_t{0};
     void assign(const Token& at, NameId name, Value value, bool local, const std::string& deprecation = "",
-                bool warn_once = false);
+                bool warn_once = false, size_t scope = kInnermostScope);
     void check_declarable(const Token& at, NameId name, const char* directive);
     // The array element `A[i][j]...` after the identifier A (the brackets are next).
     Value* array_element(const Token& at, Array& array, bool for_assignment);

@@ -58,7 +58,19 @@ Value Parser::parse_rvalue(const Token& purpose) {
             case Keyword::spline: return block([&](const Token& k) { return Value(parse_spline(k)); });
             case Keyword::transform:
                 return block([&](const Token& k) { return Value(TransformValue{parse_transform_block(k)}); });
-            case Keyword::texture: return block([&](const Token& k) { return Value(parse_texture(*this, k)); });
+            case Keyword::texture: {
+                // #declare T = texture { } texture { } ...: a layered texture.
+                TextureRef texture = std::get<TextureRef>(block([&](const Token& k) { return Value(parse_texture(*this, k)); }));
+                directive_frame_ = saved_directive_frame;
+                while (peek_operator().is(Keyword::texture)) {
+                    const Token keyword = next();
+                    directive_frame_ = 0;
+                    const TextureRef above = parse_texture(*this, keyword);
+                    directive_frame_ = saved_directive_frame;
+                    texture = layer_textures(*this, keyword, texture, above);
+                }
+                return texture;
+            }
             case Keyword::pigment: return block([&](const Token& k) { return Value(parse_pigment(*this, k)); });
             case Keyword::normal: return block([&](const Token& k) { return Value(parse_normal(*this, k)); });
             case Keyword::finish: return block([&](const Token& k) { return Value(parse_finish(*this, k)); });
@@ -90,7 +102,7 @@ Value Parser::parse_rvalue(const Token& purpose) {
         const Value held = *value;
         next();
         if (const ArrayRef* array = std::get_if<ArrayRef>(&held)) {
-            if (!peek_is(Symbol::lbracket)) return copy_array(**array);
+            if (!peek_operator().is(Symbol::lbracket)) return copy_array(**array);
             Value element = *array_element(token, **array, false);
             if (std::holds_alternative<Numeric>(element) || std::holds_alternative<FunctionRef>(element) ||
                 std::holds_alternative<SplineRef>(element))
@@ -98,7 +110,7 @@ Value Parser::parse_rvalue(const Token& purpose) {
             return element;
         }
         if (std::holds_alternative<FunctionRef>(held) || std::holds_alternative<SplineRef>(held)) {
-            if (!peek_is(Symbol::lparen)) return held;  // the function or spline itself
+            if (!peek_operator().is(Symbol::lparen)) return held;  // the function or spline itself
             return parse_additive_after(parse_term_after(parse_postfix(parse_numeric_identifier(token, held))));
         }
         return held;
@@ -126,7 +138,7 @@ void Array::assign(size_t index, Value value) {
 Value Parser::parse_array(const Token& keyword) {
     auto array = std::make_shared<Array>();
     long total = 1;
-    while (peek_is(Symbol::lbracket)) {
+    while (peek_operator().is(Symbol::lbracket)) {
         const Token open = next();
         const Token at = peek();
         const double size = parse_float("as the size of the array");
@@ -143,7 +155,7 @@ Value Parser::parse_array(const Token& keyword) {
     if (array->sizes.empty()) fail_expected("'[' with the size of the array after 'array'", peek());
     check_memory(keyword, static_cast<double>(total) * sizeof(Value));
     array->elements.resize(static_cast<size_t>(total));
-    if (peek_is(Symbol::lbrace)) {
+    if (peek_operator().is(Symbol::lbrace)) {
         size_t index = 0;
         parse_array_initialiser(*array, 0, index, keyword);
     }
@@ -154,8 +166,7 @@ void Parser::parse_array_initialiser(Array& array, size_t dimension, size_t& ind
     const Token open = expect_open(keyword);
     const int count = array.sizes[dimension];
     for (int i = 0; i < count; ++i) {
-        if (i > 0) expect(Symbol::comma, fmt::format("between the elements of the array initialiser opened at {} "
-                                                     "({} elements in this dimension)", location_of(open).str(), count));
+        if (i > 0) accept_comma();  // optional, as in POV-Ray (its sample scenes leave some out)
         if (peek_is(Symbol::rbrace))
             fail(peek(), fmt::format("the array initialiser opened at {} has {} element{}, the array {} in this "
                                      "dimension", location_of(open).str(), i, i == 1 ? "" : "s", count));

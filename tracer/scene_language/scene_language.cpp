@@ -119,12 +119,12 @@ SceneDescription Parser::parse(const std::string& text, const std::string& path)
             next();
             continue;
         }
-        if (token.kind == TokenKind::word && is_keyword(token.name)) {
+        if (token.kind == TokenKind::word && (is_keyword(token.name) || !lookup_value(token))) {
             next();
             if (parse_scene_statement(*this, token)) continue;
         }
-        fail_identifier(token, "an object, light_source, camera, global_settings, background, ray_source or "
-                               "illuminance_receiver");
+        fail_identifier(token, "an object, a light_source, camera, global_settings, background, fog, "
+                               "rainbow, sky_sphere, media, ray_source or illuminance_receiver");
     }
     return std::move(scene_);
 }

@@ -21,11 +21,11 @@ public:
 
     // The most local binding of `name`, or null.
     const SymbolRef& find(NameId name) const;
-    // `name`'s binding in the innermost scope, or null.
-    const SymbolRef& find_in_innermost(NameId name) const;
-    // Binds `name` in the innermost scope (hiding outer bindings), or globally (under any local
-    // ones), replacing a binding the same scope has.
-    void bind(NameId name, SymbolRef symbol, bool global = false);
+    // `name`'s binding in scope `scope` (0: global), or null.
+    const SymbolRef& find_in_scope(NameId name, size_t scope) const;
+    // Binds `name` in scope `scope` (0: global; depth(): the innermost), hiding the bindings of
+    // outer scopes and under those of inner ones, replacing a binding the same scope has.
+    void bind(NameId name, SymbolRef symbol, size_t scope);
     // Removes the most local binding (#undef); false when there is none.
     bool unbind_most_local(NameId name);
     // Removes every binding of `name` (a file handle closing, a macro redefined).
@@ -40,6 +40,8 @@ private:
 
     std::vector<std::vector<Binding>> by_name_;      // indexed by NameId
     std::vector<std::vector<NameId>> scope_names_;   // per scope, the names bound in it
+
+public:
     static const SymbolRef kNone;
 };
 

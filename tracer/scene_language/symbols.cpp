@@ -22,14 +22,16 @@ const SymbolRef& SymbolTable::find(NameId name) const {
     return by_name_[name].back().symbol;
 }
 
-const SymbolRef& SymbolTable::find_in_innermost(NameId name) const {
-    if (name >= by_name_.size() || by_name_[name].empty() || by_name_[name].back().scope != depth()) return kNone;
-    return by_name_[name].back().symbol;
+const SymbolRef& SymbolTable::find_in_scope(NameId name, size_t scope) const {
+    if (name >= by_name_.size()) return kNone;
+    for (const Binding& binding : by_name_[name])
+        if (binding.scope == scope) return binding.symbol;
+    return kNone;
 }
 
-void SymbolTable::bind(NameId name, SymbolRef symbol, bool global) {
+void SymbolTable::bind(NameId name, SymbolRef symbol, size_t scope_index) {
     std::vector<Binding>& bindings = *bindings_of(name);
-    const uint32_t scope = global ? 0 : static_cast<uint32_t>(depth());
+    const uint32_t scope = static_cast<uint32_t>(scope_index);
     // Bindings are ordered by scope: the new one goes above those of outer scopes.
     auto place = bindings.begin();
     while (place != bindings.end() && place->scope < scope) ++place;
@@ -67,8 +69,11 @@ void Parser::check_declarable(const Token& at, NameId name, const char* directiv
 }
 
 void Parser::assign(const Token& at, NameId name, Value value, bool local, const std::string& deprecation,
-                    bool warn_once) {
-    const SymbolRef& existing = local ? symbols_.find_in_innermost(name) : symbols_.find(name);
+                    bool warn_once, size_t scope) {
+    // #local binds in the scope of the directive (a macro called in its value has its own,
+    // gone by the time the value is assigned).
+    if (scope == kInnermostScope) scope = symbols_.depth();
+    const SymbolRef& existing = local ? symbols_.find_in_scope(name, scope) : symbols_.find(name);
     if (existing) {
         if (std::holds_alternative<FunctionRef>(existing->value) && std::holds_alternative<FunctionRef>(value))
             fail(at, fmt::format("'{}' is already a function: #undef it before declaring it again (as POV-Ray requires)",
@@ -81,7 +86,7 @@ void Parser::assign(const Token& at, NameId name, Value value, bool local, const
     entry->value = as_stored(std::move(value));
     entry->deprecation = deprecation;
     entry->warn_once = warn_once;
-    symbols_.bind(name, std::move(entry), !local);
+    symbols_.bind(name, std::move(entry), local ? scope : 0);
 }
 
 Value* Parser::array_element(const Token& at, Array& array, bool for_assignment) {

@@ -71,3 +71,8 @@ F("version-restored", version)
 F("clock", clock + clock_delta + clock_on + frame_number + initial_frame + final_frame)
 #macro Recurse(D) #if (D > 0) Recurse(D - 1) #else F("depth", 60) #end #end
 Recurse(60)
+// A #local whose value is a macro call ending where the value ends binds in the caller's
+// scope, not in the called macro's (gone at its #end).
+#macro Text() "abc" #end
+#macro Outer() #local X = Text() #local Y = 1; concat(X, "!") #end
+#debug concat("local-from-macro ", Outer(), "\n")
