@@ -798,6 +798,19 @@ TEST(ObjectsCsg, ObjectCopiesKeepTheirShapeAndTakeNewModifiers) {
                {5, 0, 0});
 }
 
+TEST(ObjectsMeshes, MeshOfADeclaredMeshIsThatMeshMoved) {
+    // POV-Ray accepts mesh { MESH_ID modifiers } (checked with povray 3.7); the mesh is shared.
+    const SceneDescription s = parse(R"(
+        #declare M = mesh { triangle { 0, x, y } }
+        mesh { M translate 2*x }
+        object { M })");
+    ASSERT_EQ(s.objects.size(), 2u);
+    expect_vec(s.objects[0].object_to_world.point({0, 0, 0}), {2, 0, 0});
+    EXPECT_EQ(std::get<MeshShape>(s.objects[0].shape).mesh, std::get<MeshShape>(s.objects[1].shape).mesh);
+    EXPECT_EQ(error_of("#declare B = box { 0, 1 }\nmesh { B }"),
+              "wrong type: 'B' is not a mesh, expected a mesh identifier or triangles at test.pov:2:8");
+}
+
 // ---------------------------------------------------------------- lights
 
 TEST(ObjectsLights, TypesAndTheirDefaults) {

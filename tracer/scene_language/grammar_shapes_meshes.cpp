@@ -322,6 +322,16 @@ private:
 // mesh { TRIANGLES... [inside_vector V] MODIFIERS }
 ObjectRef parse_mesh(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
+    // mesh { MESH_ID modifiers }: a declared mesh, as `object { MESH_ID }` takes it (POV-Ray
+    // accepts this form, and mesh_camera's examples use it).
+    const Token first = p.peek();
+    if (ObjectRef declared; p.take_declared(declared)) {
+        if (!std::holds_alternative<MeshShape>(declared->shape))
+            p.fail(first, "wrong type: '" + p.word(first) + "' is not a mesh, expected a mesh identifier or triangles");
+        auto copy = std::make_shared<ObjectNode>(*declared);
+        finish_shape(p, *copy, keyword, open);
+        return copy;
+    }
     auto node = new_node(p, keyword);
     MeshBuilder builder(p);
     while (p.peek_is(Keyword::triangle) || p.peek_is(Keyword::smooth_triangle))
