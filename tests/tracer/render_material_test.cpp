@@ -28,13 +28,13 @@ TEST(RenderMaterial, PovRayTextureMapping) {
     EXPECT_EQ(max_component(m.diffuse), 0);
     // A mirror keeps its weight; diffuse keeps what is left: 0.9 would make 1.2, so 1 - 0.3.
     m = material_of("sphere { 0, 1 pigment { rgb 1 } finish { diffuse 0.9 reflection 0.3 } }");
-    EXPECT_DOUBLE_EQ(m.mirror_max.red, 0.3);
-    EXPECT_DOUBLE_EQ(m.diffuse.red, 0.7);
+    EXPECT_FLOAT_EQ(m.mirror_max.red, 0.3);  // colours are single precision, as in POV-Ray
+    EXPECT_FLOAT_EQ(m.diffuse.red, 0.7);
     // Glass: rgbf with an interior -> a dielectric lobe tinted by the pigment.
     m = material_of("sphere { 0, 1 pigment { rgbf <1, 0.5, 0.5, 0.9> } interior { ior 1.5 } }");
     EXPECT_DOUBLE_EQ(m.ior, 1.5);
-    EXPECT_NEAR(m.transmission.green, 0.45, 1e-12);
-    EXPECT_NEAR(m.diffuse.red, 0.1 * 0.6, 1e-12);
+    EXPECT_FLOAT_EQ(m.transmission.green, 0.45);
+    EXPECT_FLOAT_EQ(m.diffuse.red, 0.1 * 0.6);
     // Blinn specular of roughness 0.05 -> Phong exponent 1/0.05/4 = 5; phong_size is taken as is.
     m = material_of("sphere { 0, 1 pigment { rgb 1 } finish { specular 0.2 roughness 0.05 } }");
     EXPECT_DOUBLE_EQ(m.glossy_exponent, 5);

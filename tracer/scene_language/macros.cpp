@@ -27,11 +27,10 @@ void Parser::directive_macro(const Token& directive) {
                 if (earlier == parameter.name)
                     fail(parameter, fmt::format("parameter '{}' appears twice in #macro {}", word(parameter), word(name)));
             macro->parameters.push_back(parameter.name);
-            const Token separator = raw_peek();
-            if (separator.is(Symbol::rparen)) break;
-            if (!separator.is(Symbol::comma))
-                fail_expected(fmt::format("',' or ')' in the parameters of #macro {}", word(name)), separator);
-            raw_next();
+            // The commas are optional and a trailing one is allowed, as POV-Ray reads them
+            // (shapes3.inc has both).
+            if (raw_peek().is(Symbol::comma)) raw_next();
+            if (raw_peek().is(Symbol::rparen)) break;
         }
     }
     raw_next();  // ')'
