@@ -25,9 +25,8 @@ trap 'rm -rf "$work"' EXIT
 # The reason a run stopped: "not supported: FEATURE" without its location, else the error.
 reason_of() {
   local text
-  text=$(grep -m1 -E "error|not supported|timeout" "$1" || true)
-  text=${text#raytrace: }
-  text=${text#error: }
+  text=$(grep -m1 -oE "raytrace: error: .*|timeout \(.*" "$1" || true)
+  text=${text#raytrace: error: }
   echo "$text" | sed -E 's/ at [^ ]+:[0-9]+:[0-9]+.*$//' | cut -c1-110
 }
 
@@ -36,11 +35,15 @@ while IFS= read -r scene; do
   case "$relative" in *"$filter"*) ;; *) continue ;; esac
   folder=$(dirname "$relative" | cut -d/ -f1)
   rm -rf "$work/run" && mkdir "$work/run"
+  # A scene with an .ini of its own (its frames, say) runs with it, as POV-Ray's users run it.
+  ini=()
+  [ -f "${scene%.pov}.ini" ] && ini=("${scene%.pov}.ini")
   parsed=0 rendered=0 reason=""
-  if (cd "$work/run" && timeout 120 "$raytrace" "$scene" --parse-only --allow-write . > "$work/out" 2>&1); then
+  if (cd "$work/run" && timeout 120 "$raytrace" "${ini[@]}" "$scene" --parse-only --allow-write . \
+        > "$work/out" 2>&1); then
     parsed=1
-    if (cd "$work/run" && timeout 300 "$raytrace" "$scene" +W32 +H24 --passes 1 -q --allow-write . \
-          -o "$work/run/image.exr" > "$work/out" 2>&1); then
+    if (cd "$work/run" && timeout 300 "$raytrace" "${ini[@]}" "$scene" +W32 +H24 --passes 1 -q \
+          --allow-write . -o "$work/run/image.exr" > "$work/out" 2>&1); then
       rendered=1
     else
       [ $? -eq 124 ] && echo "timeout (300 s rendering)" >> "$work/out"

@@ -89,6 +89,7 @@ int run(int argc, char** argv) {
     parse_options.include_paths = options.include_paths;
     parse_options.write_roots = options.write_roots;
     parse_options.max_memory_megabytes = options.max_parse_memory_mb;
+    parse_options.declarations = options.declarations;
     const AnimationFrames frames =
         animation_frames(options.animation, settings.width, settings.height);
     parse_options.animation = frames.first;

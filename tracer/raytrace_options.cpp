@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -145,6 +147,34 @@ const PovSetting kPovSettings[] = {
 };
 
 constexpr const char* kSupportedSwitches = "+W +H +O +I +L +K +KFI +KFF +KI +KF +SF +EF";
+
+// POV-Ray .ini options that tune its own sampling, display, console and file output: they have
+// nothing to act on in a progressive physical renderer, so a POV-Ray .ini file may keep them
+// (the sample scenes' .ini files carry them). They are read and have no effect.
+const char* const kIniKeysWithoutEffect[] = {
+    "antialias", "antialias_threshold", "antialias_depth", "antialias_gamma", "jitter",
+    "jitter_amount", "sampling_method", "pause_when_done", "output_file_type", "output_alpha",
+    "bits_per_color", "test_abort", "test_abort_count", "verbose", "display", "display_gamma",
+    "warning_console", "debug_console", "render_console", "statistic_console", "all_console",
+    "render_pattern", "render_block_size", "render_block_step", "draw_vistas", "user_abort_command",
+    "user_abort_return", "all_file", "debug_file", "fatal_file", "render_file", "statistic_file",
+    "warning_file", "create_ini"};
+
+bool is_true(const std::string& value) {
+    const std::string v = lower(value);
+    return v == "on" || v == "true" || v == "yes" || v == "1";
+}
+
+// Declare=NAME=VALUE: a float identifier the scene sees as declared (POV-Ray's option).
+void apply_declaration(const std::string& text, const std::string& where, RaytraceOptions& o) {
+    const auto equals = text.find('=');
+    char* end = nullptr;
+    const std::string value = equals == std::string::npos ? "" : text.substr(equals + 1);
+    const double number = std::strtod(value.c_str(), &end);
+    if (equals == std::string::npos || equals == 0 || value.empty() || *end != '\0')
+        throw Error(fmt::format("{}: expected Declare=NAME=NUMBER, found Declare={}", where, text));
+    o.declarations.emplace_back(text.substr(0, equals), number);
+}
 constexpr const char* kSupportedIniKeys =
     "Width, Height, Output_File_Name, Input_File_Name, Library_Path, Clock, Initial_Frame, "
     "Final_Frame, Initial_Clock, Final_Clock, Subset_Start_Frame, Subset_End_Frame";
@@ -164,9 +194,14 @@ std::string upper(std::string s) {
 
 void apply_pov_switch(const std::string& text, const std::string& where, RaytraceOptions& o) {
     const std::string name = upper(text);
-    if (name.rfind("+KC", 0) == 0)
-        throw Error(fmt::format("{}: POV-Ray switch '{}' is not supported (cyclic animation)",
-                                where, text));
+    if (name == "+KC") {
+        o.animation.cyclic = true;
+        return;
+    }
+    if (name == "-KC") {
+        o.animation.cyclic = false;
+        return;
+    }
     for (const PovSetting& setting : kPovSettings) {
         const size_t length = std::char_traits<char>::length(setting.switch_name);
         const bool named = text[0] == '+' && name.compare(1, length, setting.switch_name) == 0;
@@ -186,24 +221,43 @@ void apply_ini_file(const std::string& path, RaytraceOptions& o) {
         const std::string where = fmt::format("{}:{}", path, number);
         line = trim(line.substr(0, line.find(';')));
         if (line.empty()) continue;
-        if (line[0] == '+') {
-            apply_pov_switch(line, where, o);
+        if (line[0] == '+' || line[0] == '-') {
+            // Switches, several to a line, and Key=Value among them (POV-Ray reads these too).
+            std::istringstream words(line);
+            for (std::string word; words >> word;) {
+                if (word[0] == '+' || word[0] == '-') apply_pov_switch(word, where, o);
+                else apply_ini_setting(word, where, o);
+            }
             continue;
         }
         if (line[0] == '[') throw Error(fmt::format("{}: not supported: .ini sections ('{}')", where, line));
-        const auto equals = line.find('=');
-        if (equals == std::string::npos)
-            throw Error(fmt::format("{}: expected 'Key=Value' or a +switch, found '{}'", where, line));
-        const std::string key = lower(trim(line.substr(0, equals)));
-        std::string value = trim(line.substr(equals + 1));
-        if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
-        const auto setting = std::find_if(std::begin(kPovSettings), std::end(kPovSettings),
-                                          [&](const PovSetting& s) { return key == s.ini_key; });
-        if (setting == std::end(kPovSettings))
-            throw Error(fmt::format("{}: not supported: .ini option '{}' (supported: {})", where,
-                                    trim(line.substr(0, equals)), kSupportedIniKeys));
-        setting->apply(value, setting->what, where, o);
+        apply_ini_setting(line, where, o);
     }
+}
+
+void apply_ini_setting(const std::string& line, const std::string& where, RaytraceOptions& o) {
+    const auto equals = line.find('=');
+    if (equals == std::string::npos)
+        throw Error(fmt::format("{}: expected 'Key=Value' or a +switch, found '{}'", where, line));
+    const std::string key = lower(trim(line.substr(0, equals)));
+    std::string value = trim(line.substr(equals + 1));
+    if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
+    if (std::find(std::begin(kIniKeysWithoutEffect), std::end(kIniKeysWithoutEffect), key) !=
+        std::end(kIniKeysWithoutEffect))
+        return;
+    if (key == "cyclic_animation") {
+        o.animation.cyclic = is_true(value);
+        return;
+    }
+    if (key == "declare") return apply_declaration(value, where, o);
+    const auto setting = std::find_if(std::begin(kPovSettings), std::end(kPovSettings),
+                                      [&](const PovSetting& s) { return key == s.ini_key; });
+    if (setting == std::end(kPovSettings))
+        throw Error(fmt::format("{}: not supported: .ini option '{}' (supported: {}, Cyclic_Animation, "
+                                "Declare; POV-Ray's antialiasing, display, console and output-type "
+                                "options are read and have no effect)",
+                                where, trim(line.substr(0, equals)), kSupportedIniKeys));
+    setting->apply(value, setting->what, where, o);
 }
 
 AnimationFrames animation_frames(const AnimationOptions& options, int width, int height) {
@@ -217,16 +271,19 @@ AnimationFrames animation_frames(const AnimationOptions& options, int width, int
         first.clock_on = options.clock.has_value();
         return frames;
     }
-    const int final = *options.final_frame;
+    // A cyclic animation runs as if it had one frame more, which it does not render, so that its
+    // last frame stops one step short of the final clock (POV-Ray reports that final frame too).
+    const int rendered_final = *options.final_frame;
+    const int final = rendered_final + (options.cyclic ? 1 : 0);
     first.clock_on = true;
     first.initial_frame = initial;
     first.final_frame = final;
     first.initial_clock = options.initial_clock.value_or(0);
     first.final_clock = options.final_clock.value_or(1);
     first.clock_delta = (first.final_clock - first.initial_clock) / (final - initial);
-    const int count = final - initial + 1;
+    const int count = rendered_final - initial + 1;
     const int start = options.subset_start ? subset_frame(*options.subset_start, count) : initial;
-    const int end = options.subset_end ? subset_frame(*options.subset_end, count) : final;
+    const int end = options.subset_end ? subset_frame(*options.subset_end, count) : rendered_final;
     frames.first_frame = std::max(start, initial);  // never before the initial frame
     frames.last_frame = std::max(end, frames.first_frame);
     first.frame_number = frames.first_frame;
@@ -239,6 +296,7 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg.size() > 1 && arg[0] == '+') pov_switches.push_back(arg);
+        else if (lower(arg).rfind("declare=", 0) == 0) pov_switches.push_back(arg);
         else if (ends_with_ini(arg) && arg[0] != '-') ini_files.push_back(arg);
         else rest.push_back(arg);
     }
@@ -301,7 +359,10 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
         return false;
     }
     for (const std::string& ini : ini_files) apply_ini_file(ini, o);
-    for (const std::string& s : pov_switches) apply_pov_switch(s, "command line", o);
+    for (const std::string& s : pov_switches) {
+        if (s[0] == '+') apply_pov_switch(s, "command line", o);
+        else apply_ini_setting(s, "command line", o);
+    }
     if (!scene.empty()) o.scene = scene;
     if (!output.empty()) o.output = output;
     if (!png.empty()) o.png = png;

@@ -22,6 +22,7 @@ struct AnimationOptions {
     // +SF +EF, Subset_Start_Frame= Subset_End_Frame=: a frame number, or a value strictly between
     // 0 and 1 for a fraction of the frames.
     std::optional<double> subset_start, subset_end;
+    bool cyclic = false;  // +KC, Cyclic_Animation=on: the last frame stops one step short of the end
 };
 
 struct RaytraceOptions {
@@ -39,6 +40,7 @@ struct RaytraceOptions {
     bool bench = false;
     bool parse_only = false;                 // read the scene, report what it holds, render nothing
     std::vector<std::string> write_roots;    // folders the scene's #fopen may write to
+    std::vector<std::pair<std::string, double>> declarations;  // Declare=NAME=VALUE
     long max_parse_memory_mb = 0;            // 0: the parser's default (half the RAM)
     bool quiet = false;
     // Bidirectional integrator (global_settings { integrator "bidirectional" }).
@@ -75,6 +77,8 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& options, int
 
 // Applies one POV-Ray switch ("+W640", "+Oout.exr"); throws rayset::Error naming `where`.
 void apply_pov_switch(const std::string& text, const std::string& where, RaytraceOptions& options);
+// Applies one .ini setting ("Width=640", "Declare=Fp=0") read at `where`.
+void apply_ini_setting(const std::string& line, const std::string& where, RaytraceOptions& options);
 // Reads a POV-Ray .ini file into `options`.
 void apply_ini_file(const std::string& path, RaytraceOptions& options);
 

@@ -101,10 +101,11 @@ TEST(RaytraceTool, SceneErrorNamesTheLocationAndWritesNothing) {
 
 TEST(RaytraceTool, BadIniAndSwitchesAreReported) {
     test::ScratchDir dir;
-    test::write_file(dir.file("x.ini"), "Width=20\nAntialias=on\n");
+    // POV-Ray's antialiasing options are read and have no effect; an unknown option is refused.
+    test::write_file(dir.file("x.ini"), "Width=20\nAntialias=on\nQuality=9\n");
     auto r = raytrace("x.ini '" + kCornell + "'", dir.path().string());
     EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.output.find("x.ini:2: not supported: .ini option 'Antialias'"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("x.ini:3: not supported: .ini option 'Quality'"), std::string::npos) << r.output;
     r = raytrace("'" + kCornell + "' +Q9", dir.path().string());
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.output.find("'+Q9' is not supported"), std::string::npos) << r.output;
@@ -174,12 +175,19 @@ TEST(RaytraceTool, AnimationRendersTheFirstFrameOfTheSubsetAndSaysSo) {
     EXPECT_NE(r.output.find("clock 0.333333 delta 0.111111 on 1 frame 4"), std::string::npos)
         << r.output;
     EXPECT_TRUE(fs::exists(dir.file("anim.exr")));
-    r = raytrace("anim.pov +KC +KFF4", dir.path().string());
-    EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.output.find("command line: POV-Ray switch '+KC' is not supported (cyclic "
-                            "animation)"),
-              std::string::npos)
+    // Cyclic: frames 1 to 4 stop a step short of the final clock, and POV-Ray reports final
+    // frame 5 (povray 3.7.0.10 +KFI1 +KFF4 +KC +SF4 +EF4: clock 0.75, delta 0.25, final 5).
+    r = raytrace("anim.pov +W4 +H3 --passes 1 --no-png +KC +KFF4 +SF4", dir.path().string());
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("clock 0.750000 delta 0.250000 on 1 frame 4\nif 1 ff 5"), std::string::npos)
         << r.output;
+    // Declare=NAME=VALUE on the command line or in an .ini file, several switches to a line.
+    test::write_file(dir.file("declare.pov"), "#debug concat(\"fp \", str(Fp, 0, 2), \"\\n\")\n");
+    test::write_file(dir.file("declare.ini"), "+W4 +H3 Declare=Fp=2.5\n");
+    r = raytrace("declare.ini declare.pov --parse-only", dir.path().string());
+    EXPECT_NE(r.output.find("fp 2.50"), std::string::npos) << r.output;
+    r = raytrace("declare.pov --parse-only Declare=Fp=-1", dir.path().string());
+    EXPECT_NE(r.output.find("fp -1.00"), std::string::npos) << r.output;
     r = raytrace("anim.pov +KFI1.5", dir.path().string());
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.output.find("command line: Initial_Frame (+KFI) must be a whole frame number, got "

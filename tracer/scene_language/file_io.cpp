@@ -184,7 +184,9 @@ void Parser::directive_read(const Token& directive) {
     // The file closes, undefining its handle, when a read meets its end: after an item with no
     // comma after it, or where an item should be (POV-Ray's rule).
     bool ended = false;
-    while (accept(Symbol::comma)) {
+    // Commas between the items are optional, as POV-Ray reads them.
+    for (accept_comma(); !peek_is(Symbol::rparen); accept_comma()) {
+        if (have_lookahead_) give_back_lookahead();  // the identifier is read raw
         const Token variable = raw_next();
         if (!variable.is_identifier()) fail_expected("an identifier to read into", variable);
         if (at_end()) {
@@ -234,7 +236,8 @@ void Parser::directive_write(const Token& directive) {
     const FileRef file = std::get<FileRef>(symbol->value);
     if (!file->writing) fail(handle, fmt::format("#write to a file opened for reading ({})", file->path));
     std::string text;
-    while (accept(Symbol::comma)) {
+    // Commas between the items are optional, as POV-Ray reads them (#write (F Header)).
+    for (accept_comma(); !peek_is(Symbol::rparen); accept_comma()) {
         const Token& item = peek();
         if (const int bytes = binary_word_size(item); bytes != 0) {
             const Keyword type = static_cast<Keyword>(next().name);

@@ -107,6 +107,11 @@ SceneDescription Parser::parse(const std::string& text, const std::string& path)
     const fs::path directory = fs::absolute(fs::path(path), error).parent_path();
     allowed_roots_.insert(allowed_roots_.begin(), fs::weakly_canonical(directory, error).string());
     push_file(text, path, directory.string(), nullptr);
+    for (const auto& [name, value] : options_.declarations) {
+        const NameId id = names_.intern(name);
+        if (is_keyword(id)) throw Error(fmt::format("Declare={}: '{}' is a reserved word", name, name));
+        assign(Token{}, id, Numeric::scalar(value), false);
+    }
 
     for (;;) {
         const Token token = peek();

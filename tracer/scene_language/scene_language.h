@@ -35,6 +35,8 @@ struct ParseOptions {
     // Folders #fopen may write or append to; none by default (writing is refused).
     std::vector<std::string> write_roots;
     AnimationSettings animation;
+    // Float identifiers declared before the scene is read (POV-Ray's Declare=NAME=VALUE).
+    std::vector<std::pair<std::string, double>> declarations;
     // Where #debug and #warning text and the parser's warnings go; standard error when empty.
     std::function<void(MessageStream, const std::string&)> on_message;
 
