@@ -240,6 +240,9 @@ TEST(AppearancePatterns, ParametersOfEachKind) {
     EXPECT_DOUBLE_EQ(p.slope.high_slope, 0.5);
     EXPECT_TRUE(p.slope.altitude_given);
     EXPECT_DOUBLE_EQ(p.slope.low_altitude, -3);
+    p = pattern("slope -z");  // the older form without braces, which POV-Ray 3.7 reads
+    expect_vec(p.slope.direction, {0, 0, -1});
+    EXPECT_FALSE(p.slope.altitude_given);
     p = pattern("slope { point_at <1, 2, 3> }");
     EXPECT_TRUE(p.slope.point_at);
     EXPECT_DOUBLE_EQ(p.slope.high_slope, 1);

@@ -85,8 +85,13 @@ void parse_fractal(Parser& p, const Token& keyword, Pattern& pattern) {
 }
 
 void parse_slope(Parser& p, const Token& keyword, SlopeParameters& slope) {
-    const Token open = p.expect_open(keyword);
     slope = SlopeParameters{};
+    if (!p.peek_is(Symbol::lbrace)) {
+        // The older form `slope <Direction>`, which POV-Ray 3.7 still reads (balcony.pov).
+        slope.direction = p.parse_vector();
+        return;
+    }
+    const Token open = p.expect_open(keyword);
     slope.point_at = p.accept(Keyword::point_at);
     slope.direction = p.parse_vector();
     if (p.accept(Symbol::comma)) {
