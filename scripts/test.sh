@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds everything and runs every test, then builds the converters (the parsers of untrusted
-# files) with AddressSanitizer and UndefinedBehaviorSanitizer and runs their tests again.
+# Builds everything and runs every test, then builds the converters and the scene language (the
+# parsers of untrusted files) with AddressSanitizer and UndefinedBehaviorSanitizer and runs their
+# tests again.
 # Usage: scripts/test.sh        (installs missing Debian packages first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
