@@ -242,8 +242,8 @@ const Reference kReferences[] = {
 
 // The functions that need POV-Ray's noise generators, and those whose formula is not
 // established (f_comma, f_helical_torus, the unnamed internal(77)).
-const char* const kNotImplemented[] = {"f_comma",   "f_helical_torus", "f_hetero_mf",
-                                       "f_ridge",   "f_ridged_mf",     "f_noise3d",
+const char* const kNotImplemented[] = {"f_comma",          "f_helical_torus", "f_hetero_mf",
+                                       "f_ridge",          "f_ridged_mf",     "f_noise3d",
                                        "f_noise_generator"};
 
 constexpr int kLastInternal = 78;
@@ -322,8 +322,8 @@ struct Declared {
 int count_word(std::string word) {
     for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     static const std::map<std::string, int> kWords = {
-        {"no", 0},   {"one", 1},   {"two", 2},   {"three", 3}, {"tree", 3}, {"four", 4},
-        {"five", 5}, {"six", 6},   {"seven", 7}, {"eight", 8}, {"nine", 9}, {"ten", 10}};
+        {"no", 0},   {"one", 1}, {"two", 2},   {"three", 3}, {"tree", 3}, {"four", 4},
+        {"five", 5}, {"six", 6}, {"seven", 7}, {"eight", 8}, {"nine", 9}, {"ten", 10}};
     const auto it = kWords.find(word);
     return it == kWords.end() ? -1 : it->second;
 }
@@ -331,8 +331,7 @@ int count_word(std::string word) {
 std::vector<Declared> read_functions_inc(std::istream& in) {
     static const std::regex declaration(
         R"(#declare\s+(\w+)\s*=\s*function\s*\{\s*internal\s*\(\s*(\d+)\s*\)\s*\})");
-    static const std::regex count(R"((\w+)\s+(?:extra\s+)?para\w*\s+required)",
-                                  std::regex::icase);
+    static const std::regex count(R"((\w+)\s+(?:extra\s+)?para\w*\s+required)", std::regex::icase);
     std::vector<Declared> declared;
     bool counted = true;
     std::string line;

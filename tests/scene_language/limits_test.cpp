@@ -26,25 +26,30 @@ TEST(SceneLanguageLimits, RunawayRecursionStopsAtTheNestingLimitWithItsCallChain
     ParseOptions options;
     options.max_nesting = 100;
     const std::string e = error_of("#version 3.7;\n#macro R(N)\n  R(N + 1)\n#end\nR(0)\n", options);
-    EXPECT_NE(e.find("nesting limit: more than 100 macro calls, include files and blocks in progress (runaway "
+    EXPECT_NE(e.find("nesting limit: more than 100 macro calls, include files and blocks in "
+                     "progress (runaway "
                      "recursion in macro R?) (ParseOptions::max_nesting) at test.pov:3:3"),
               std::string::npos)
         << e;
     // The innermost calls and how many more, not a hundred lines of them.
-    EXPECT_NE(e.find("(in macro R called at test.pov:3:3) (in macro R called at test.pov:3:3)"), std::string::npos) << e;
+    EXPECT_NE(e.find("(in macro R called at test.pov:3:3) (in macro R called at test.pov:3:3)"),
+              std::string::npos)
+        << e;
     EXPECT_NE(e.find("more macro calls)"), std::string::npos) << e;
     EXPECT_LT(e.size(), 800u);
 }
 
 TEST(SceneLanguageLimits, DefaultNestingLimitHoldsOnTheParserStack) {
     // 100000 nested parentheses and 50000 nested unions: errors, not a stack overflow.
-    const std::string parens = "#declare X = " + std::string(100000, '(') + "1" + std::string(100000, ')') + ";";
+    const std::string parens =
+        "#declare X = " + std::string(100000, '(') + "1" + std::string(100000, ')') + ";";
     EXPECT_NE(error_of(parens).find("nesting limit: more than 1000"), std::string::npos);
     std::string unions;
     for (int i = 0; i < 50000; ++i) unions += "union { ";
     EXPECT_NE(error_of(unions).find("nesting limit: more than 1000"), std::string::npos);
     // Just under the limit is fine.
-    const std::string deep = "#declare X = " + std::string(900, '(') + "1" + std::string(900, ')') + ";";
+    const std::string deep =
+        "#declare X = " + std::string(900, '(') + "1" + std::string(900, ')') + ";";
     EXPECT_EQ(error_of(deep), "no error");
 }
 
@@ -52,26 +57,35 @@ TEST(SceneLanguageLimits, LoopsStopAtTheIterationLimit) {
     ParseOptions options;
     options.max_loop_iterations = 1000;
     EXPECT_EQ(error_of("#declare I = 0;\n#while (I < 10)\n  sphere { 0, 1 }\n#end\n", options),
-              "loop limit: more than 1000 #while and #for iterations in total (ParseOptions::max_loop_iterations) "
+              "loop limit: more than 1000 #while and #for iterations in total "
+              "(ParseOptions::max_loop_iterations) "
               "at test.pov:2:1");
     EXPECT_EQ(error_of("#for (I, 1, 1e9)\n#end\n", options),
-              "loop limit: more than 1000 #while and #for iterations in total (ParseOptions::max_loop_iterations) "
+              "loop limit: more than 1000 #while and #for iterations in total "
+              "(ParseOptions::max_loop_iterations) "
               "at test.pov:2:1");
     // The limit counts all loops together, nested ones included.
     EXPECT_EQ(error_of("#for (I, 1, 40) #for (J, 1, 24) #end #end", options), "no error");
-    EXPECT_NE(error_of("#for (I, 1, 40) #for (J, 1, 25) #end #end", options).find("loop limit"), std::string::npos);
+    EXPECT_NE(error_of("#for (I, 1, 40) #for (J, 1, 25) #end #end", options).find("loop limit"),
+              std::string::npos);
 }
 
 TEST(SceneLanguageLimits, ArraysAndStringsStopAtTheirSizeLimits) {
     EXPECT_EQ(error_of("#declare A = array[1e12];"),
-              "array limit: more than 100000000 elements (ParseOptions::max_array_elements) at test.pov:1:20");
+              "array limit: more than 100000000 elements (ParseOptions::max_array_elements) at "
+              "test.pov:1:20");
     EXPECT_EQ(error_of("#declare A = array[100000][100000];"),
-              "array limit: more than 100000000 elements (ParseOptions::max_array_elements) at test.pov:1:28");
-    EXPECT_EQ(error_of("#declare A = array[0];"), "an array dimension must be at least 1, found 0 at test.pov:1:20");
+              "array limit: more than 100000000 elements (ParseOptions::max_array_elements) at "
+              "test.pov:1:28");
+    EXPECT_EQ(error_of("#declare A = array[0];"),
+              "an array dimension must be at least 1, found 0 at test.pov:1:20");
     ParseOptions options;
     options.max_string_length = 1000;
-    EXPECT_EQ(error_of("#declare S = \"0123456789\";\n#while (1)\n  #declare S = concat(S, S);\n#end\n", options),
-              "string limit: a string of more than 1000 bytes (ParseOptions::max_string_length) at test.pov:3:16");
+    EXPECT_EQ(
+        error_of("#declare S = \"0123456789\";\n#while (1)\n  #declare S = concat(S, S);\n#end\n",
+                 options),
+        "string limit: a string of more than 1000 bytes (ParseOptions::max_string_length) at "
+        "test.pov:3:16");
 }
 
 TEST(SceneLanguageLimits, MemoryStopsAtItsLimitBeforeTheAllocationThatWouldPassIt) {
@@ -79,30 +93,39 @@ TEST(SceneLanguageLimits, MemoryStopsAtItsLimitBeforeTheAllocationThatWouldPassI
     options.max_memory_megabytes = 200;
     // Each array of 10^6 elements takes about 56 MB: the fourth would pass 200 MB.
     const auto start = std::chrono::steady_clock::now();
-    const std::string e = error_of("#declare L = array[100];\n#for (I, 0, 99)\n  #declare L[I] = array[1000000];\n#end\n",
-                                   options);
-    EXPECT_EQ(e, "memory limit: parsing the scene took more than 200 MB (ParseOptions::max_memory_megabytes, raytrace "
-                 "--max-parse-memory) at test.pov:3:19");
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+    const std::string e = error_of(
+        "#declare L = array[100];\n#for (I, 0, 99)\n  #declare L[I] = array[1000000];\n#end\n",
+        options);
+    EXPECT_EQ(e,
+              "memory limit: parsing the scene took more than 200 MB "
+              "(ParseOptions::max_memory_megabytes, raytrace "
+              "--max-parse-memory) at test.pov:3:19");
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+              10.0);
     // Growth by many small values is caught by the periodic check as well.
     options.max_memory_megabytes = 50;
     const std::string growth = error_of(
-        "#declare L = array[10000000];\n#for (I, 0, 9999999)\n  #declare L[I] = <I, I, I>;\n#end\n", options);
-    EXPECT_NE(growth.find("memory limit: parsing the scene took more than 50 MB"), std::string::npos) << growth;
+        "#declare L = array[10000000];\n#for (I, 0, 9999999)\n  #declare L[I] = <I, I, I>;\n#end\n",
+        options);
+    EXPECT_NE(growth.find("memory limit: parsing the scene took more than 50 MB"),
+              std::string::npos)
+        << growth;
 }
 
 TEST(SceneLanguageLimits, ErrorsNameTheIncludeAndMacroChain) {
     test::ScratchDir dir;
     test::write_file(dir.file("lib.inc"), "#macro Bad(X)\n  #declare Y = X / 0;\n#end\n");
-    test::write_file(dir.file("scene.pov"), "#include \"lib.inc\"\n#macro Outer() Bad(1) #end\nOuter()\n");
+    test::write_file(dir.file("scene.pov"),
+                     "#include \"lib.inc\"\n#macro Outer() Bad(1) #end\nOuter()\n");
     const std::string lib = std::filesystem::weakly_canonical(dir.file("lib.inc")).string();
     try {
         parse_scene_file(dir.file("scene.pov"));
         FAIL() << "no error";
     } catch (const SceneError& e) {
-        EXPECT_EQ(std::string(e.what()), "division by zero at " + lib + ":2:18 (included from " + dir.file("scene.pov") +
-                                             ":1:1) (in macro Bad called at " + dir.file("scene.pov") +
-                                             ":2:16) (in macro Outer called at " + dir.file("scene.pov") + ":3:1)");
+        EXPECT_EQ(std::string(e.what()),
+                  "division by zero at " + lib + ":2:18 (included from " + dir.file("scene.pov") +
+                      ":1:1) (in macro Bad called at " + dir.file("scene.pov") +
+                      ":2:16) (in macro Outer called at " + dir.file("scene.pov") + ":3:1)");
         EXPECT_EQ(e.where().line, 2);
         EXPECT_EQ(e.where().column, 18);  // the division sign
     }
@@ -120,7 +143,8 @@ TEST(SceneLanguageFiles, WritingNeedsAWriteRootAndStaysInsideIt) {
     std::filesystem::current_path(dir.path());
     const std::string scene = "#fopen F \"out.txt\" write\n#write (F, 1)\n#fclose F\n";
     EXPECT_EQ(error_of(scene),
-              "#fopen \"out.txt\" for write: writing files is not allowed unless a folder is given for it (raytrace "
+              "#fopen \"out.txt\" for write: writing files is not allowed unless a folder is given "
+              "for it (raytrace "
               "--allow-write DIR, or ParseOptions::write_roots) at test.pov:1:10");
     EXPECT_FALSE(std::filesystem::exists(dir.file("out.txt")));
     ParseOptions options;
@@ -128,7 +152,8 @@ TEST(SceneLanguageFiles, WritingNeedsAWriteRootAndStaysInsideIt) {
     EXPECT_EQ(error_of(scene, options), "no error");
     EXPECT_EQ(test::read_file(dir.file("out.txt")), "1");
     EXPECT_EQ(error_of("#fopen F \"../escape.txt\" append\n", options),
-              "#fopen \"../escape.txt\" for append: writing files is not allowed outside the folders given for it "
+              "#fopen \"../escape.txt\" for append: writing files is not allowed outside the "
+              "folders given for it "
               "(raytrace --allow-write DIR, or ParseOptions::write_roots) at test.pov:1:10");
     std::filesystem::current_path(previous);
 }

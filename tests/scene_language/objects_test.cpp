@@ -806,9 +806,11 @@ TEST(ObjectsMeshes, MeshOfADeclaredMeshIsThatMeshMoved) {
         object { M })");
     ASSERT_EQ(s.objects.size(), 2u);
     expect_vec(s.objects[0].object_to_world.point({0, 0, 0}), {2, 0, 0});
-    EXPECT_EQ(std::get<MeshShape>(s.objects[0].shape).mesh, std::get<MeshShape>(s.objects[1].shape).mesh);
-    EXPECT_EQ(error_of("#declare B = box { 0, 1 }\nmesh { B }"),
-              "wrong type: 'B' is not a mesh, expected a mesh identifier or triangles at test.pov:2:8");
+    EXPECT_EQ(std::get<MeshShape>(s.objects[0].shape).mesh,
+              std::get<MeshShape>(s.objects[1].shape).mesh);
+    EXPECT_EQ(
+        error_of("#declare B = box { 0, 1 }\nmesh { B }"),
+        "wrong type: 'B' is not a mesh, expected a mesh identifier or triangles at test.pov:2:8");
 }
 
 // ---------------------------------------------------------------- lights

@@ -40,7 +40,8 @@ std::string povray_output(const fs::path& scene) {
     const std::string command = "cd '" + dir.path().string() + "' && povray +I'" + scene.string() +
                                 "' +W1 +H1 -D -V +Oout.png +GDdebug.txt -GR -GS > povray.log 2>&1";
     if (std::system(command.c_str()) != 0)
-        ADD_FAILURE() << "povray failed on " << scene << ":\n" << read_text(dir.path() / "povray.log");
+        ADD_FAILURE() << "povray failed on " << scene << ":\n"
+                      << read_text(dir.path() / "povray.log");
     return read_text(dir.path() / "debug.txt");
 }
 
@@ -99,7 +100,8 @@ bool same_number(const std::string& ours, const std::string& theirs) {
     const size_t end = exponent == std::string::npos ? theirs.size() : exponent;
     const int decimals = dot == std::string::npos ? 0 : static_cast<int>(end - dot - 1);
     double unit = std::pow(10.0, -decimals);
-    if (exponent != std::string::npos) unit *= std::pow(10.0, std::stod(theirs.substr(exponent + 1)));
+    if (exponent != std::string::npos)
+        unit *= std::pow(10.0, std::stod(theirs.substr(exponent + 1)));
     return std::fabs(std::stod(ours) - std::stod(theirs)) <= 1.0001 * unit;
 }
 
@@ -114,29 +116,32 @@ void expect_same_output(const std::string& file) {
         // POV-Ray wraps debug lines at 80 columns: the snippets keep theirs shorter.
         ASSERT_LT(theirs[i].size(), 79u) << file << " line " << i + 1 << " is too long to compare";
         const Printed a = split_numbers(ours[i]), b = split_numbers(theirs[i]);
-        EXPECT_EQ(a.text, b.text) << file << " line " << i + 1 << "\n ours:    " << ours[i] << "\n POV-Ray: " << theirs[i];
+        EXPECT_EQ(a.text, b.text) << file << " line " << i + 1 << "\n ours:    " << ours[i]
+                                  << "\n POV-Ray: " << theirs[i];
         if (a.text != b.text || a.numbers.size() != b.numbers.size()) continue;
         for (size_t k = 0; k < a.numbers.size(); ++k, ++compared_numbers)
             EXPECT_TRUE(same_number(a.numbers[k], b.numbers[k]))
                 << file << " line " << i + 1 << " number " << k + 1 << "\n ours:    " << ours[i]
                 << "\n POV-Ray: " << theirs[i];
     }
-    std::printf("%s: %zu lines, %d numbers agree with POV-Ray\n", file.c_str(), theirs.size(), compared_numbers);
+    std::printf("%s: %zu lines, %d numbers agree with POV-Ray\n", file.c_str(), theirs.size(),
+                compared_numbers);
 }
 
 class PovRayDifferential : public ::testing::TestWithParam<const char*> {
 protected:
     void SetUp() override {
-        if (!povray_installed()) GTEST_SKIP() << "povray is not installed (scripts/install-deps.sh installs it)";
+        if (!povray_installed())
+            GTEST_SKIP() << "povray is not installed (scripts/install-deps.sh installs it)";
     }
 };
 
 TEST_P(PovRayDifferential, DebugOutputAgrees) { expect_same_output(GetParam()); }
 
 INSTANTIATE_TEST_SUITE_P(Snippets, PovRayDifferential,
-                         ::testing::Values("expressions.pov", "strings.pov", "random.pov", "directives.pov",
-                                           "arrays.pov", "splines.pov", "functions.pov", "includes.pov",
-                                           "fileio.pov"),
+                         ::testing::Values("expressions.pov", "strings.pov", "random.pov",
+                                           "directives.pov", "arrays.pov", "splines.pov",
+                                           "functions.pov", "includes.pov", "fileio.pov"),
                          [](const ::testing::TestParamInfo<const char*>& info) {
                              std::string name = info.param;
                              return name.substr(0, name.find('.'));

@@ -89,10 +89,12 @@ TEST(SceneItemsCamera, EveryProjectionKeyword) {
     EXPECT_EQ(camera_of("cylinder 1.7").cylinder_type, 1);  // truncated, as POV-Ray accepts it
     // A second type keyword before any other item replaces the first (POV-Ray accepts it).
     EXPECT_EQ(camera_of("orthographic fisheye").projection, CameraProjection::fisheye);
-    EXPECT_EQ(error_of("camera { cylinder 5 }"), "cylinder camera type 5 (expected 1, 2, 3 or 4) "
-                                                 "at test.pov:1:19");
-    EXPECT_EQ(error_of("camera { cylinder 0 }"), "cylinder camera type 0 (expected 1, 2, 3 or 4) "
-                                                 "at test.pov:1:19");
+    EXPECT_EQ(error_of("camera { cylinder 5 }"),
+              "cylinder camera type 5 (expected 1, 2, 3 or 4) "
+              "at test.pov:1:19");
+    EXPECT_EQ(error_of("camera { cylinder 0 }"),
+              "cylinder camera type 0 (expected 1, 2, 3 or 4) "
+              "at test.pov:1:19");
     // POV-Ray: "Expected 'perspective camera modifier', orthographic found instead".
     EXPECT_EQ(error_of("camera { location -z orthographic }"),
               "the camera type 'orthographic' must come first in the camera at test.pov:1:22");
@@ -110,12 +112,14 @@ TEST(SceneItemsCamera, PerspectiveAngle) {
     EXPECT_EQ(error_of("camera { angle 180 }"),
               "a perspective camera's angle must be smaller than 180 degrees, found 180 at "
               "test.pov:1:16");
-    EXPECT_EQ(error_of("camera { angle -10 }"), "the camera's angle must not be negative, found "
-                                                "-10 at test.pov:1:16");
+    EXPECT_EQ(error_of("camera { angle -10 }"),
+              "the camera's angle must not be negative, found "
+              "-10 at test.pov:1:16");
     EXPECT_EQ(error_of("camera { direction 0 angle 60 }"),
               "the camera direction is zero: 'angle' cannot set its length at test.pov:1:28");
-    EXPECT_EQ(error_of("camera { location 1 look_at 1 }"), "camera location and look_at must "
-                                                           "differ at test.pov:1:21");
+    EXPECT_EQ(error_of("camera { location 1 look_at 1 }"),
+              "camera location and look_at must "
+              "differ at test.pov:1:21");
 }
 
 TEST(SceneItemsCamera, OtherProjectionsKeepTheirAngle) {
@@ -137,8 +141,9 @@ TEST(SceneItemsCamera, OtherProjectionsKeepTheirAngle) {
     expect_vec(camera_of("ultra_wide_angle direction 2*z angle 120").direction, {0, 0, 2});
     EXPECT_EQ(error_of("camera { spherical angle 10, -20 }"),
               "the camera's vertical angle must not be negative, found -20 at test.pov:1:30");
-    EXPECT_EQ(error_of("camera { fisheye angle -1 }"), "the camera's angle must not be negative, "
-                                                       "found -1 at test.pov:1:24");
+    EXPECT_EQ(error_of("camera { fisheye angle -1 }"),
+              "the camera's angle must not be negative, "
+              "found -1 at test.pov:1:24");
 }
 
 TEST(SceneItemsCamera, OrthographicSizeAsPovRayRendersIt) {
@@ -174,8 +179,9 @@ TEST(SceneItemsCamera, OrthographicSizeAsPovRayRendersIt) {
 }
 
 TEST(SceneItemsCamera, FocalBlur) {
-    Camera c = camera_of("aperture 0.5 blur_samples 3, 10 focal_point <0,0,5> confidence 0.95 "
-                         "variance 1/1000");
+    Camera c = camera_of(
+        "aperture 0.5 blur_samples 3, 10 focal_point <0,0,5> confidence 0.95 "
+        "variance 1/1000");
     EXPECT_EQ(c.focal_blur.aperture, 0.5);
     EXPECT_EQ(c.focal_blur.min_samples, 3);
     EXPECT_EQ(c.focal_blur.max_samples, 10);
@@ -198,8 +204,9 @@ TEST(SceneItemsCamera, FocalBlur) {
     c = camera_of("aperture 1 blur_samples 5 bokeh { pigment { rgb <1, 0.5, 0> } }");
     ASSERT_TRUE(c.focal_blur.bokeh);
     EXPECT_FALSE(camera_of("bokeh { }").focal_blur.bokeh);
-    EXPECT_EQ(error_of("camera { blur_samples 0 }"), "expected an integer >= 1 after "
-                                                     "'blur_samples', found 0 at test.pov:1:23");
+    EXPECT_EQ(error_of("camera { blur_samples 0 }"),
+              "expected an integer >= 1 after "
+              "'blur_samples', found 0 at test.pov:1:23");
     EXPECT_EQ(error_of("camera { blur_samples 10, 5 }"),
               "blur_samples: the minimum 10 is larger than the maximum 5 at test.pov:1:23");
     EXPECT_EQ(error_of("camera { bokeh { rgb 1 } }"),
@@ -212,7 +219,8 @@ TEST(SceneItemsCamera, MeshCamera) {
     // and `mesh { DECLARED_MESH transforms }`).
     const std::string m = "mesh { triangle { 0, x, y } }";
     Camera c = parse("camera { mesh_camera { 2 1 100 mesh { triangle { 0, x, y } translate x } " +
-                     m + " } location -0.01*z }").camera;
+                     m + " } location -0.01*z }")
+                   .camera;
     EXPECT_EQ(c.projection, CameraProjection::mesh);
     EXPECT_EQ(c.mesh.rays_per_pixel, 2);
     EXPECT_EQ(c.mesh.distribution, 1);
@@ -302,7 +310,8 @@ TEST(SceneItemsGlobalSettings, EveryKey) {
 global_settings { adc_bailout 0.01 ambient_light rgb <0.5, 0.25, 1> assumed_gamma 2.2 charset utf8
   irid_wavelength rgb <0.7, 0.52, 0.48> max_intersections 128 max_trace_level 12.9 mm_per_unit 25.4
   number_of_waves 4 noise_generator 3 }
-global_settings { max_intersections 200 })").global;
+global_settings { max_intersections 200 })")
+                                 .global;
     EXPECT_EQ(g.adc_bailout, 0.01);
     EXPECT_EQ(g.ambient_light.green, 0.25);
     EXPECT_EQ(g.assumed_gamma, 2.2);
@@ -329,8 +338,9 @@ global_settings { max_intersections 200 })").global;
 TEST(SceneItemsGlobalSettings, Errors) {
     EXPECT_EQ(error_of("global_settings { noise_generator 4 }"),
               "global_settings noise_generator must be in [1, 3], found 4 at test.pov:1:35");
-    EXPECT_EQ(error_of("global_settings { assumed_gamma 0 }"), "assumed_gamma must be positive, "
-                                                               "found 0 at test.pov:1:33");
+    EXPECT_EQ(error_of("global_settings { assumed_gamma 0 }"),
+              "assumed_gamma must be positive, "
+              "found 0 at test.pov:1:33");
     EXPECT_EQ(error_of("global_settings { charset latin1 }"),
               "expected ascii, utf8 or sys after 'charset', found 'latin1' at test.pov:1:27");
     EXPECT_EQ(error_of("global_settings { max_trace_level 1e12 }"),
@@ -356,7 +366,8 @@ TEST(SceneItemsGlobalSettings, RadiosityEveryKey) {
   gray_threshold 0.3
   low_error_factor 0.4 max_sample 2 maximum_reuse 0.3 minimum_reuse 0.01 nearest_count 8 4 normal on
   media on subsurface off pretrace_start 0.1 pretrace_end 0.02 recursion_limit 3
-  save_file "a.rad" load_file "b.rad" } })").global;
+  save_file "a.rad" load_file "b.rad" } })")
+                                 .global;
     const RadiositySettings& r = *g.radiosity;
     EXPECT_EQ(r.adc_bailout, 0.005);
     EXPECT_TRUE(r.always_sample);
@@ -381,8 +392,10 @@ TEST(SceneItemsGlobalSettings, RadiosityEveryKey) {
     EXPECT_EQ(r.load_file, "b.rad");
     // A second block goes on from the first.
     const GlobalSettings twice =
-        parse("global_settings { radiosity { count 50 } } global_settings { radiosity { brightness "
-              "2 } }").global;
+        parse(
+            "global_settings { radiosity { count 50 } } global_settings { radiosity { brightness "
+            "2 } }")
+            .global;
     EXPECT_EQ(twice.radiosity->count, 50);
     EXPECT_EQ(twice.radiosity->brightness, 2);
     EXPECT_EQ(warnings_of("global_settings { radiosity { minimum_reuse 0.15 } }"),
@@ -395,10 +408,12 @@ TEST(SceneItemsGlobalSettings, RadiosityErrorsAsPovRay) {
     auto radiosity_error = [](const std::string& items) {
         return error_of("global_settings { radiosity { " + items + " } }");
     };
-    EXPECT_EQ(radiosity_error("count 0"), "expected an integer >= 1 after 'count', found 0 at "
-                                          "test.pov:1:37");
-    EXPECT_EQ(radiosity_error("count 10, 5"), "radiosity count 10 is larger than its direction "
-                                              "pool 5 at test.pov:1:41");
+    EXPECT_EQ(radiosity_error("count 0"),
+              "expected an integer >= 1 after 'count', found 0 at "
+              "test.pov:1:37");
+    EXPECT_EQ(radiosity_error("count 10, 5"),
+              "radiosity count 10 is larger than its direction "
+              "pool 5 at test.pov:1:41");
     EXPECT_EQ(radiosity_error("nearest_count 25"),
               "radiosity nearest_count must be in [1, 20], found 25 at test.pov:1:45");
     EXPECT_EQ(radiosity_error("nearest_count 5, 10"),
@@ -408,12 +423,15 @@ TEST(SceneItemsGlobalSettings, RadiosityErrorsAsPovRay) {
               "radiosity recursion_limit must be in [1, 20], found 30 at test.pov:1:47");
     EXPECT_EQ(radiosity_error("pretrace_start 2"),
               "radiosity pretrace_start must be in (0, 1], found 2 at test.pov:1:46");
-    EXPECT_EQ(radiosity_error("pretrace_end 0"), "radiosity pretrace_end must be in (0, 1], found "
-                                                 "0 at test.pov:1:44");
-    EXPECT_EQ(radiosity_error("error_bound 0"), "radiosity error_bound must be > 0, found 0 at "
-                                                "test.pov:1:43");
-    EXPECT_EQ(radiosity_error("brightness -1"), "radiosity brightness must be > 0, found -1 at "
-                                                "test.pov:1:42");
+    EXPECT_EQ(radiosity_error("pretrace_end 0"),
+              "radiosity pretrace_end must be in (0, 1], found "
+              "0 at test.pov:1:44");
+    EXPECT_EQ(radiosity_error("error_bound 0"),
+              "radiosity error_bound must be > 0, found 0 at "
+              "test.pov:1:43");
+    EXPECT_EQ(radiosity_error("brightness -1"),
+              "radiosity brightness must be > 0, found -1 at "
+              "test.pov:1:42");
     EXPECT_EQ(radiosity_error("gray_threshold 2"),
               "radiosity gray_threshold must be in [0, 1], found 2 at test.pov:1:46");
     // A boolean here needs its value (POV-Ray: "Expected 'numeric expression', } found instead").
@@ -441,7 +459,8 @@ TEST(SceneItemsGlobalSettings, PhotonsEveryKey) {
     EXPECT_FALSE(empty.photons->autostop);
     const PhotonSettings p = *parse(R"(global_settings { photons {
   spacing 0.02 count 20000 gather 10, 50 media 100, 2 jitter 0.3 max_trace_level 4 adc_bailout 0.1
-  save_file "p.ph" autostop 0.5 expand_thresholds 0.3, 30 radius 1, 2, 3, 4 } })").global.photons;
+  save_file "p.ph" autostop 0.5 expand_thresholds 0.3, 30 radius 1, 2, 3, 4 } })")
+                                  .global.photons;
     EXPECT_EQ(p.spacing, 0.02);
     EXPECT_EQ(p.count, 20000);
     EXPECT_EQ(p.gather_min, 10);
@@ -485,8 +504,10 @@ TEST(SceneItemsGlobalSettings, Subsurface) {
     EXPECT_EQ(empty.subsurface->diffuse_samples, 50);
     EXPECT_EQ(empty.subsurface->single_samples, 50);
     EXPECT_FALSE(empty.subsurface->radiosity);
-    const SubsurfaceSettings s = *parse("global_settings { subsurface { samples 10, 20 radiosity "
-                                        "on } }").global.subsurface;
+    const SubsurfaceSettings s = *parse(
+                                      "global_settings { subsurface { samples 10, 20 radiosity "
+                                      "on } }")
+                                      .global.subsurface;
     EXPECT_EQ(s.diffuse_samples, 10);
     EXPECT_EQ(s.single_samples, 20);
     EXPECT_TRUE(s.radiosity);
@@ -515,7 +536,8 @@ TEST(SceneItemsAtmosphere, FogKeysAndDefaults) {
     EXPECT_EQ(defaults.location.str(), "test.pov:1:1");
     const Fog f = parse(R"(fog { fog_type 2 distance 150 rgbf <0.5, 0.6, 0.7, 0.2> turbulence 0.5
   octaves 3
-  omega 0.3 lambda 3 turb_depth 0.2 fog_offset 25 fog_alt 1.5 })").atmosphere.fogs.at(0);
+  omega 0.3 lambda 3 turb_depth 0.2 fog_offset 25 fog_alt 1.5 })")
+                      .atmosphere.fogs.at(0);
     EXPECT_EQ(f.fog_type, 2);
     EXPECT_EQ(f.distance, 150);
     EXPECT_FLOAT_EQ(f.colour.green, 0.6);
@@ -550,8 +572,9 @@ TEST(SceneItemsAtmosphere, FogUpTurnsWithTheTransformsBeforeIt) {
 }
 
 TEST(SceneItemsAtmosphere, FogIdentifier) {
-    const SceneDescription s = parse("#declare F = fog { distance 10 rgb 1 up x }\nfog { F "
-                                     "fog_type 2 rotate 90*z }");
+    const SceneDescription s = parse(
+        "#declare F = fog { distance 10 rgb 1 up x }\nfog { F "
+        "fog_type 2 rotate 90*z }");
     const Fog& f = s.atmosphere.fogs.at(0);
     EXPECT_EQ(f.distance, 10);
     EXPECT_EQ(f.fog_type, 2);
@@ -565,7 +588,8 @@ TEST(SceneItemsAtmosphere, FogIdentifier) {
 TEST(SceneItemsAtmosphere, RainbowKeysAndChecks) {
     const Rainbow r = parse(R"(rainbow { direction <0, 0, 1> angle 42.5 width 5 distance 1000
   jitter 0.01
-  up <0, 1, 0> arc_angle 120 falloff_angle 30 })").atmosphere.rainbows.at(0);
+  up <0, 1, 0> arc_angle 120 falloff_angle 30 })")
+                          .atmosphere.rainbows.at(0);
     expect_vec(r.direction, {0, 0, 1});
     EXPECT_EQ(r.angle, 42.5);
     EXPECT_EQ(r.width, 5);
@@ -580,18 +604,21 @@ TEST(SceneItemsAtmosphere, RainbowKeysAndChecks) {
     EXPECT_EQ(defaults.jitter, 0);
     expect_vec(defaults.up, {0, 1, 0});
     // Identifiers take further keys; rainbows add up.
-    const SceneDescription s = parse("#declare R = rainbow { direction z angle 40 }\nrainbow { R "
-                                     "width 3 } rainbow { R }");
+    const SceneDescription s = parse(
+        "#declare R = rainbow { direction z angle 40 }\nrainbow { R "
+        "width 3 } rainbow { R }");
     ASSERT_EQ(s.atmosphere.rainbows.size(), 2u);
     EXPECT_EQ(s.atmosphere.rainbows[0].angle, 40);
     EXPECT_EQ(s.atmosphere.rainbows[0].width, 3);
     EXPECT_EQ(s.atmosphere.rainbows[1].location.str(), "test.pov:2:23");
     // POV-Ray's checks ("Rainbow's direction vector is zero.", "Rainbow's up and direction vector
     // are co-linear.", "Illegal arc angle in rainbow", "Arc angle is smaller than falloff angle").
-    EXPECT_EQ(error_of("rainbow { }"), "the rainbow's direction is zero (or not given) at "
-                                       "test.pov:1:1");
-    EXPECT_EQ(error_of("rainbow { direction z up 0 }"), "the rainbow's up vector is zero at "
-                                                        "test.pov:1:1");
+    EXPECT_EQ(error_of("rainbow { }"),
+              "the rainbow's direction is zero (or not given) at "
+              "test.pov:1:1");
+    EXPECT_EQ(error_of("rainbow { direction z up 0 }"),
+              "the rainbow's up vector is zero at "
+              "test.pov:1:1");
     EXPECT_EQ(error_of("rainbow { direction z up -2*z }"),
               "the rainbow's up and direction vectors are parallel at test.pov:1:1");
     EXPECT_EQ(error_of("rainbow { direction z arc_angle 400 }"),
@@ -639,9 +666,9 @@ sky_sphere { rotate 90*y pigment { rgb <0, 0, 1> } pigment { rgbt <0, 1, 0, 0.5>
     const SceneDescription bright = parse("sky_sphere { pigment { rgb 1 } emission 2 }");
     EXPECT_EQ(bright.atmosphere.sky_sphere->emission.green, 2);
     // A declared sky sphere takes more layers and transforms.
-    const SceneDescription layered =
-        parse("#declare S = sky_sphere { pigment { rgb 1 } scale 2 }\nsky_sphere { S pigment { "
-              "rgbt 0.5 } }");
+    const SceneDescription layered = parse(
+        "#declare S = sky_sphere { pigment { rgb 1 } scale 2 }\nsky_sphere { S pigment { "
+        "rgbt 0.5 } }");
     EXPECT_EQ(layered.atmosphere.sky_sphere->pigments.size(), 2u);
     expect_vec(layered.atmosphere.sky_sphere->transform.point({1, 1, 1}), {2, 2, 2});
     // POV-Ray: "Empty sky_sphere statement."

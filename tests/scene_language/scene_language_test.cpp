@@ -50,7 +50,9 @@ Vec3 eval(const std::string& expression, const std::string& declarations = "") {
     return parse(declarations + "\ncamera { location (" + expression + ") }").camera.location;
 }
 
-std::string scenes_dir() { return (fs::path(__FILE__).parent_path().parent_path() / "tracer" / "scenes").string(); }
+std::string scenes_dir() {
+    return (fs::path(__FILE__).parent_path().parent_path() / "tracer" / "scenes").string();
+}
 
 // ---------------------------------------------------------------- cornell.pov
 
@@ -69,7 +71,8 @@ TEST(SceneLanguageCornell, ParsesWithTheValuesItsTextGives) {
     expect_vec(s.camera.right, {-1, 0, 0});
     expect_vec(s.camera.up, {0, 1, 0});
 
-    // 3 x 3 sub-patches of the declared area light, translated by <i*DX-(13-DX)/2, 0, j*DZ-(10.5-DZ)/2>.
+    // 3 x 3 sub-patches of the declared area light, translated by <i*DX-(13-DX)/2, 0,
+    // j*DZ-(10.5-DZ)/2>.
     ASSERT_EQ(s.lights.size(), 9u);
     const double dx = 13.0 / 3, dz = 10.5 / 3;
     for (int i = 0; i < 3; ++i)
@@ -109,7 +112,8 @@ TEST(SceneLanguageCornell, ParsesWithTheValuesItsTextGives) {
     EXPECT_DOUBLE_EQ(patch.appearance.texture->finish.diffuse, 0);
     EXPECT_DOUBLE_EQ(patch.appearance.texture->pigment.colour.green, 1);
 
-    // Red wall (objects 9, 10): texture Red = pigment <0.57,0.025,0.025>, finish diffuse 0.75 ambient 0.
+    // Red wall (objects 9, 10): texture Red = pigment <0.57,0.025,0.025>, finish diffuse 0.75
+    // ambient 0.
     const ObjectInstance& red = s.objects[9];
     EXPECT_FLOAT_EQ(red.appearance.texture->pigment.colour.red, 0.57);
     EXPECT_FLOAT_EQ(red.appearance.texture->pigment.colour.green, 0.025);
@@ -163,7 +167,8 @@ TEST(SceneLanguageTransforms, StatementsComposeInWritingOrder) {
     // scale then rotate: (0,1,0) -> (0,2,0) -> rotate 90 about z -> (-2,0,0).
     expect_vec(s.objects[4].object_to_world.point({0, 1, 0}), {-2, 0, 0}, 1e-15);
     const double expected[16] = {0, -2, 0, 0, 1, 0, 0, 0, 0, 0, 3, 0, 0, 0, 0, 1};
-    for (int i = 0; i < 16; ++i) EXPECT_NEAR(s.objects[4].object_to_world.m[i], expected[i], 1e-15) << i;
+    for (int i = 0; i < 16; ++i)
+        EXPECT_NEAR(s.objects[4].object_to_world.m[i], expected[i], 1e-15) << i;
 }
 
 TEST(SceneLanguageTransforms, UnionsAndObjectCopiesStackTransforms) {
@@ -192,8 +197,8 @@ TEST(SceneLanguageExpressions, PrecedenceAndUnaryMinus) {
     expect_vec(eval("(1 + 2) * 3"), {9, 9, 9});
     expect_vec(eval("-2 * -3 - 1"), {5, 5, 5});
     expect_vec(eval("10 / 4 / 5"), {0.5, 0.5, 0.5});
-    expect_vec(eval("1 + 2 < 4"), {1, 1, 1});             // comparison below + -
-    expect_vec(eval("1 < 2 & 3 > 4 | 1"), {1, 1, 1});     // (((1<2) & (3>4)) | 1)
+    expect_vec(eval("1 + 2 < 4"), {1, 1, 1});          // comparison below + -
+    expect_vec(eval("1 < 2 & 3 > 4 | 1"), {1, 1, 1});  // (((1<2) & (3>4)) | 1)
     expect_vec(eval("2 = 2"), {1, 1, 1});
     expect_vec(eval("2 != 2"), {0, 0, 0});
     expect_vec(eval("3 >= 3"), {1, 1, 1});
@@ -204,11 +209,11 @@ TEST(SceneLanguageExpressions, PrecedenceAndUnaryMinus) {
 
 TEST(SceneLanguageExpressions, VectorsAndPromotion) {
     expect_vec(eval("<1,2,3> * 2"), {2, 4, 6});
-    expect_vec(eval("<1,2,3> + 1"), {2, 3, 4});   // a float promotes to <1,1,1>
+    expect_vec(eval("<1,2,3> + 1"), {2, 3, 4});  // a float promotes to <1,1,1>
     expect_vec(eval("<1,2,3> * <2,3,4>"), {2, 6, 12});
     expect_vec(eval("x + 2*y - z"), {1, 2, -1});
-    expect_vec(eval("<1,2>"), {1, 2, 0});         // a 2-vector pads with 0
-    expect_vec(eval("<1 -2 3>"), {-1, 3, 0});     // as in POV-Ray: 1-2, then 3
+    expect_vec(eval("<1,2>"), {1, 2, 0});      // a 2-vector pads with 0
+    expect_vec(eval("<1 -2 3>"), {-1, 3, 0});  // as in POV-Ray: 1-2, then 3
     expect_vec(eval("<5,6,7>.y"), {6, 6, 6});
     expect_vec(eval("V.z + V.x", "#declare V = <1,2,3>;"), {4, 4, 4});
     expect_vec(eval("<(1 < 2), 0, 0>"), {1, 0, 0});
@@ -239,13 +244,18 @@ TEST(SceneLanguageExpressions, Functions) {
 }
 
 TEST(SceneLanguageExpressions, Colours) {
-    auto background = [](const std::string& colour) { return parse("background { " + colour + " }").background; };
+    auto background = [](const std::string& colour) {
+        return parse("background { " + colour + " }").background;
+    };
     Colour c = background("rgb <1, 0.5, 0.25>");
-    EXPECT_EQ((std::array<double, 5>{c.red, c.green, c.blue, c.filter, c.transmit}), (std::array<double, 5>{1, 0.5, 0.25, 0, 0}));
+    EXPECT_EQ((std::array<double, 5>{c.red, c.green, c.blue, c.filter, c.transmit}),
+              (std::array<double, 5>{1, 0.5, 0.25, 0, 0}));
     c = background("rgb 0.5");  // rgb promotes to three terms only
-    EXPECT_EQ((std::array<double, 5>{c.red, c.green, c.blue, c.filter, c.transmit}), (std::array<double, 5>{0.5, 0.5, 0.5, 0, 0}));
+    EXPECT_EQ((std::array<double, 5>{c.red, c.green, c.blue, c.filter, c.transmit}),
+              (std::array<double, 5>{0.5, 0.5, 0.5, 0, 0}));
     c = background("color 0.5");  // a bare float fills all five terms, as POV-Ray does
-    EXPECT_EQ((std::array<double, 5>{c.red, c.green, c.blue, c.filter, c.transmit}), (std::array<double, 5>{0.5, 0.5, 0.5, 0.5, 0.5}));
+    EXPECT_EQ((std::array<double, 5>{c.red, c.green, c.blue, c.filter, c.transmit}),
+              (std::array<double, 5>{0.5, 0.5, 0.5, 0.5, 0.5}));
     c = background("rgbt <1, 0, 0, 0.3>");
     EXPECT_FLOAT_EQ(c.transmit, 0.3);
     EXPECT_DOUBLE_EQ(c.filter, 0);
@@ -255,7 +265,8 @@ TEST(SceneLanguageExpressions, Colours) {
     EXPECT_FLOAT_EQ(c.filter, 0.1);
     EXPECT_FLOAT_EQ(c.transmit, 0.2);
     c = background("colour red 1 green 0.5 blue 0.25 transmit 0.5");
-    EXPECT_EQ((std::array<double, 5>{c.red, c.green, c.blue, c.filter, c.transmit}), (std::array<double, 5>{1, 0.5, 0.25, 0, 0.5}));
+    EXPECT_EQ((std::array<double, 5>{c.red, c.green, c.blue, c.filter, c.transmit}),
+              (std::array<double, 5>{1, 0.5, 0.25, 0, 0.5}));
     c = parse("#declare C = rgb <0.2, 0.4, 0.6>;\nbackground { C * 2 green 0 }").background;
     EXPECT_FLOAT_EQ(c.red, 0.4);
     EXPECT_FLOAT_EQ(c.green, 0);
@@ -300,8 +311,9 @@ TEST(SceneLanguageDirectives, ConditionalsAndLoops) {
 
 TEST(SceneLanguageDirectives, DeclaresEveryKindOfValue) {
     const SceneDescription s = parse(R"(
-        #declare F = finish { diffuse 0.5 specular 0.25 roughness 0.01 phong 0.5 phong_size 20 brilliance 2
-                              reflection { 0.1, 0.9 fresnel on metallic 0.5 } emission 0.2 ambient rgb <0,0.1,0> }
+        #declare F = finish { diffuse 0.5 specular 0.25 roughness 0.01 phong 0.5 phong_size 20
+                              brilliance 2 reflection { 0.1, 0.9 fresnel on metallic 0.5 }
+                              emission 0.2 ambient rgb <0,0.1,0> }
         #declare P = pigment { rgb <1, 0, 0> filter 0.5 }
         #declare T = texture { pigment { P } finish { F } }
         #declare I = interior { ior 1.5 }
@@ -343,9 +355,11 @@ TEST(SceneLanguageDirectives, IncludesResolveRelativeThenSearchPathWithLocalScop
     test::ScratchDir dir;
     fs::create_directories(dir.path() / "scene" / "parts");
     fs::create_directories(dir.path() / "library");
-    test::write_file(dir.file("scene/main.pov"), "#include \"parts/a.inc\"\n#include \"lib.inc\"\nsphere { 0, R + Q }\n"
-                                                 "#ifdef (Hidden) sphere { 0, 100 } #end\n");
-    test::write_file(dir.file("scene/parts/a.inc"), "#include \"b.inc\"\n#local Hidden = 1;\n#declare Q = Hidden + 1;\n");
+    test::write_file(dir.file("scene/main.pov"),
+                     "#include \"parts/a.inc\"\n#include \"lib.inc\"\nsphere { 0, R + Q }\n"
+                     "#ifdef (Hidden) sphere { 0, 100 } #end\n");
+    test::write_file(dir.file("scene/parts/a.inc"),
+                     "#include \"b.inc\"\n#local Hidden = 1;\n#declare Q = Hidden + 1;\n");
     test::write_file(dir.file("scene/parts/b.inc"), "#declare R = 10;\n");
     test::write_file(dir.file("library/lib.inc"), "box { 0, 1 }\n");
     ParseOptions options;
@@ -376,7 +390,8 @@ TEST(SceneLanguageObjects, ShapesMeshesAndSharedInstances) {
     test::write_file(dir.file("part.obj"), "v 0 0 0\n");
     const std::string text = R"(
         plane { <0, 2, 0>, 3 }
-        #declare M = mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } triangle { <0,0,0> <0,1,0> <0,0,1> } }
+        #declare M = mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> }
+                            triangle { <0,0,0> <0,1,0> <0,0,1> } }
         object { M }
         object { M translate x }
         mesh2 {
@@ -422,8 +437,10 @@ TEST(SceneLanguageObjects, TexturesInheritThroughUnionsAndFlagsPropagate) {
     ASSERT_EQ(s.objects.size(), 3u);
     EXPECT_DOUBLE_EQ(s.objects[0].appearance.texture->pigment.colour.red, 1);
     EXPECT_DOUBLE_EQ(s.objects[0].appearance.texture->finish.diffuse, 0.9);
-    EXPECT_DOUBLE_EQ(s.objects[1].appearance.texture->pigment.colour.green, 1);  // its own texture wins
-    EXPECT_DOUBLE_EQ(s.objects[1].appearance.texture->finish.diffuse, 0.6);      // with POV-Ray's default finish
+    EXPECT_DOUBLE_EQ(s.objects[1].appearance.texture->pigment.colour.green,
+                     1);  // its own texture wins
+    EXPECT_DOUBLE_EQ(s.objects[1].appearance.texture->finish.diffuse,
+                     0.6);  // with POV-Ray's default finish
     EXPECT_TRUE(s.objects[0].no_shadow);
     EXPECT_TRUE(s.objects[1].no_shadow);
     // No texture anywhere: POV-Ray's default texture (black) is attached when it is added.
@@ -467,7 +484,8 @@ TEST(SceneLanguageExtensions, GlobalSettingsRaySourceAndReceiver) {
         global_settings { assumed_gamma 2.2 ambient_light 0 max_trace_level 7 length_unit "m"
                           integrator "bidirectional" passes 16 time_limit 60 }
         ray_source { "led.tm25ray" rotate 90*x translate <0, 1, 0> }
-        illuminance_receiver { <0, 0, 0>, <2, 0, 0>, <0, 0, 1> resolution <20, 10> name "floor" translate y }
+        illuminance_receiver { <0, 0, 0>, <2, 0, 0>, <0, 0, 1> resolution <20, 10> name "floor"
+                               translate y }
         illuminance_receiver { <0, 0, 0>, x, z resolution <1, 1> }
     )";
     const SceneDescription s = parse_scene_text(text, dir.file("scene.pov"));
@@ -481,7 +499,8 @@ TEST(SceneLanguageExtensions, GlobalSettingsRaySourceAndReceiver) {
     EXPECT_DOUBLE_EQ(s.global.time_limit, 60);
     ASSERT_EQ(s.ray_sources.size(), 1u);
     EXPECT_EQ(s.ray_sources[0].path, fs::weakly_canonical(dir.file("led.tm25ray")).string());
-    // rotate 90*x takes +z to -y (y' = y cos - z sin), then translate <0,1,0> brings it to the origin.
+    // rotate 90*x takes +z to -y (y' = y cos - z sin), then translate <0,1,0> brings it to the
+    // origin.
     expect_vec(s.ray_sources[0].source_to_world.point({0, 0, 1}), {0, 0, 0}, 1e-15);
     ASSERT_EQ(s.receivers.size(), 2u);
     EXPECT_EQ(s.receivers[0].name, "floor");
@@ -498,59 +517,80 @@ TEST(SceneLanguageErrors, UnknownIdentifierWrongTypeAndNotSupported) {
     EXPECT_EQ(error_of("sphere { 0, Radius }"),
               "unknown identifier 'Radius' (expected a numeric expression) at test.pov:1:13");
     EXPECT_EQ(error_of("#declare T = texture { pigment { rgb 1 } }\nsphere { 0, 1 pigment { T } }"),
-              "wrong type: 'T' is a texture, expected a colour, a pattern or a pigment modifier or '}' to close "
+              "wrong type: 'T' is a texture, expected a colour, a pattern or a pigment modifier or "
+              "'}' to close "
               "'pigment' opened at test.pov:2:23 at test.pov:2:25");
     EXPECT_EQ(error_of("#declare V = <1,2,3>;\nsphere { 0, V }"),
               "expected a float as the sphere radius, found a vector at test.pov:2:13");
     EXPECT_EQ(error_of("sphere { 0, 1 normal { bumps } foo }"),
-              "unknown identifier 'foo' (expected an object modifier or '}' to close 'sphere' opened at test.pov:1:8) "
+              "unknown identifier 'foo' (expected an object modifier or '}' to close 'sphere' "
+              "opened at test.pov:1:8) "
               "at test.pov:1:32");
     EXPECT_EQ(error_of("camera { location 0 orthographic }"),
               "the camera type 'orthographic' must come first in the camera at test.pov:1:21");
-    EXPECT_EQ(error_of("#declare sphere = 1;"), "cannot #declare 'sphere': it is a reserved word at test.pov:1:10");
+    EXPECT_EQ(error_of("#declare sphere = 1;"),
+              "cannot #declare 'sphere': it is a reserved word at test.pov:1:10");
 }
 
 TEST(SceneLanguageErrors, UnclosedBlocksAndExpectedTokens) {
     EXPECT_EQ(error_of("union {\n  sphere { 0, 1 }\n"),
-              "expected an object, an object modifier or '}' to close 'union' opened at test.pov:1:7, found end of file "
+              "expected an object, an object modifier or '}' to close 'union' opened at "
+              "test.pov:1:7, found end of file "
               "at test.pov:3:1");
     EXPECT_EQ(error_of("box { 0, 1 \n"),
-              "expected an object modifier or '}' to close 'box' opened at test.pov:1:5, found end of file at test.pov:2:1");
-    EXPECT_EQ(error_of("sphere 0, 1 }"), "expected '{' after 'sphere', found number 0 at test.pov:1:8");
+              "expected an object modifier or '}' to close 'box' opened at test.pov:1:5, found end "
+              "of file at test.pov:2:1");
+    EXPECT_EQ(error_of("sphere 0, 1 }"),
+              "expected '{' after 'sphere', found number 0 at test.pov:1:8");
     EXPECT_EQ(error_of("sphere { <1, 2 0, 1 }"),
-              "expected a vector component or '>' to close the vector opened at test.pov:1:10, found '}' at test.pov:1:21");
-    EXPECT_EQ(error_of("/* never closed"), "unclosed comment: expected '*/' before end of file for the comment opened at test.pov:1:1");
-    EXPECT_EQ(error_of("#declare S = \"abc\n"), "unterminated string: expected '\"' before end of file at test.pov:1:14");
+              "expected a vector component or '>' to close the vector opened at test.pov:1:10, "
+              "found '}' at test.pov:1:21");
+    EXPECT_EQ(error_of("/* never closed"),
+              "unclosed comment: expected '*/' before end of file for the comment opened at "
+              "test.pov:1:1");
+    EXPECT_EQ(error_of("#declare S = \"abc\n"),
+              "unterminated string: expected '\"' before end of file at test.pov:1:14");
     EXPECT_EQ(error_of("sphere { 0, 1/0 }"), "division by zero at test.pov:1:14");
-    EXPECT_EQ(error_of("sphere { 0, sqrt(-1) }"),
-              "'sqrt': negative argument (POV-Ray would compute a meaningless number) at test.pov:1:13");
+    EXPECT_EQ(
+        error_of("sphere { 0, sqrt(-1) }"),
+        "'sqrt': negative argument (POV-Ray would compute a meaningless number) at test.pov:1:13");
     EXPECT_EQ(error_of("mesh2 { vertex_vectors { 2, 0, x } face_indices { 1, <0, 1, 2> } }"),
               "vertex index 2 out of range: there are 2 vertex_vectors at test.pov:1:54");
     EXPECT_EQ(error_of("mesh2 { vertex_vectors { 3, 0, x } face_indices { 1, <0, 1, 2> } }"),
               "'vertex_vectors' declares 3 entries, found '}' after 2 at test.pov:1:34");
-    EXPECT_EQ(error_of("global_settings { length_unit \"furlong\" }"),
-              "unknown length_unit \"furlong\" (expected um, mm, cm, m, in or ft) at test.pov:1:31");
+    EXPECT_EQ(
+        error_of("global_settings { length_unit \"furlong\" }"),
+        "unknown length_unit \"furlong\" (expected um, mm, cm, m, in or ft) at test.pov:1:31");
 }
 
 TEST(SceneLanguageErrors, DirectiveStructure) {
-    EXPECT_EQ(error_of("#if (1)\nsphere { 0, 1 }\n"), "unclosed #if opened at test.pov:1:1: expected #end before end of file at test.pov:3:1");
-    EXPECT_EQ(error_of("#if (0)\nsphere { 0, 1 }\n"), "unclosed #if opened at test.pov:1:1: expected #end before end of file at test.pov:3:1");
-    EXPECT_EQ(error_of("#while (1)\n"), "unclosed #while opened at test.pov:1:1: expected #end before end of file at test.pov:2:1");
-    // A block must close in the file that opens it: an include that ends inside one is reported there.
+    EXPECT_EQ(
+        error_of("#if (1)\nsphere { 0, 1 }\n"),
+        "unclosed #if opened at test.pov:1:1: expected #end before end of file at test.pov:3:1");
+    EXPECT_EQ(
+        error_of("#if (0)\nsphere { 0, 1 }\n"),
+        "unclosed #if opened at test.pov:1:1: expected #end before end of file at test.pov:3:1");
+    EXPECT_EQ(
+        error_of("#while (1)\n"),
+        "unclosed #while opened at test.pov:1:1: expected #end before end of file at test.pov:2:1");
+    // A block must close in the file that opens it: an include that ends inside one is reported
+    // there.
     test::ScratchDir dir;
     test::write_file(dir.file("cut.inc"), "#while (1)");
     test::write_file(dir.file("main.pov"), "#include \"cut.inc\"\nsphere { 0, 1 }\n");
     const std::string cut = fs::weakly_canonical(dir.file("cut.inc")).string();
     EXPECT_EQ(error_of_file(dir.file("main.pov")),
-              "unclosed #while opened at " + cut + ":1:1: expected #end before end of file at " + cut +
-                  ":1:11 (included from " + dir.file("main.pov") + ":1:1)");
+              "unclosed #while opened at " + cut + ":1:1: expected #end before end of file at " +
+                  cut + ":1:11 (included from " + dir.file("main.pov") + ":1:1)");
     EXPECT_EQ(error_of("sphere { 0, 1 }\n#end"),
-              "#end without an open #if, #ifdef, #ifndef, #switch, #while, #for or #macro here at test.pov:2:1");
+              "#end without an open #if, #ifdef, #ifndef, #switch, #while, #for or #macro here at "
+              "test.pov:2:1");
     EXPECT_EQ(error_of("#else"), "#else without a matching #if, #ifdef or #ifndef at test.pov:1:1");
     ParseOptions options;
     options.max_loop_iterations = 100;
     EXPECT_EQ(error_of("#while (1) #end", options),
-              "loop limit: more than 100 #while and #for iterations in total (ParseOptions::max_loop_iterations) at "
+              "loop limit: more than 100 #while and #for iterations in total "
+              "(ParseOptions::max_loop_iterations) at "
               "test.pov:1:1");
 }
 
@@ -564,14 +604,15 @@ TEST(SceneLanguageErrors, IncludeNotFoundOutsideRootsAndRecursion) {
     std::string povray_folders;  // POV-Ray's include folder, searched and allowed when installed
     for (const std::string& folder : default_include_paths()) povray_folders += ", " + folder;
     EXPECT_EQ(error_of_file(dir.file("scene/missing.pov")),
-              "include file \"nothere.inc\" not found (searched " + dir.file("scene") + povray_folders + ") at " +
-                  dir.file("scene/missing.pov") + ":2:3");
+              "include file \"nothere.inc\" not found (searched " + dir.file("scene") +
+                  povray_folders + ") at " + dir.file("scene/missing.pov") + ":2:3");
 
     test::write_file(dir.file("scene/escape.pov"), "#include \"../elsewhere/secret.inc\"\n");
     const std::string secret = fs::weakly_canonical(dir.file("elsewhere/secret.inc")).string();
     EXPECT_EQ(error_of_file(dir.file("scene/escape.pov")),
-              "include file \"../elsewhere/secret.inc\" resolves to " + secret + ", outside the allowed roots (" +
-                  scene_dir + povray_folders + ") at " + dir.file("scene/escape.pov") + ":1:1");
+              "include file \"../elsewhere/secret.inc\" resolves to " + secret +
+                  ", outside the allowed roots (" + scene_dir + povray_folders + ") at " +
+                  dir.file("scene/escape.pov") + ":1:1");
     ParseOptions allowed;
     allowed.allowed_roots = {dir.file("elsewhere")};
     EXPECT_NO_THROW(parse_scene_file(dir.file("scene/escape.pov"), allowed));
@@ -582,18 +623,19 @@ TEST(SceneLanguageErrors, IncludeNotFoundOutsideRootsAndRecursion) {
     shallow.max_include_depth = 4;
     const std::string self = fs::weakly_canonical(dir.file("scene/self.inc")).string();
     EXPECT_EQ(error_of_file(dir.file("scene/loop.pov"), shallow),
-              "include depth limit: more than 4 nested #include levels (recursive include of \"self.inc\"?) "
-              "(ParseOptions::max_include_depth) at " + self +
-                  ":1:1 (included from " + self + ":1:1) (included from " + self + ":1:1) (included from " +
-                  dir.file("scene/loop.pov") + ":1:1)");
+              "include depth limit: more than 4 nested #include levels (recursive include of "
+              "\"self.inc\"?) "
+              "(ParseOptions::max_include_depth) at " +
+                  self + ":1:1 (included from " + self + ":1:1) (included from " + self +
+                  ":1:1) (included from " + dir.file("scene/loop.pov") + ":1:1)");
 
     // An error inside an included file names the file and the include chain.
     test::write_file(dir.file("scene/bad.inc"), "sphere { 0, Nope }\n");
     test::write_file(dir.file("scene/main.pov"), "// first line\n#include \"bad.inc\"\n");
     EXPECT_EQ(error_of_file(dir.file("scene/main.pov")),
               "unknown identifier 'Nope' (expected a numeric expression) at " +
-                  fs::weakly_canonical(dir.file("scene/bad.inc")).string() + ":1:13 (included from " +
-                  dir.file("scene/main.pov") + ":2:1)");
+                  fs::weakly_canonical(dir.file("scene/bad.inc")).string() +
+                  ":1:13 (included from " + dir.file("scene/main.pov") + ":2:1)");
 }
 
 }  // namespace
@@ -615,13 +657,15 @@ struct Messages {
 
 TEST(SceneLanguageMessages, DebugWarningErrorAndDeprecatedIdentifiers) {
     Messages m;
-    parse_scene_text("#debug \"one\\n\"\n#warning concat(\"two \", str(2, 0, 0))\n#render \"three\\n\"\n"
-                     "#declare deprecated once \"use New\" Old = 1;\n#declare A = Old + Old;\n"
-                     "#declare deprecated Older = 2;\n#declare B = Older;\n",
-                     "test.pov", m.options());
+    parse_scene_text(
+        "#debug \"one\\n\"\n#warning concat(\"two \", str(2, 0, 0))\n#render \"three\\n\"\n"
+        "#declare deprecated once \"use New\" Old = 1;\n#declare A = Old + Old;\n"
+        "#declare deprecated Older = 2;\n#declare B = Older;\n",
+        "test.pov", m.options());
     EXPECT_EQ(m.debug, "one\nthree\n");
-    EXPECT_EQ(m.warnings, "test.pov:2:1: warning: two 2\ntest.pov:5:14: warning: use New\n"
-                          "test.pov:7:14: warning: identifier Older was declared deprecated\n");
+    EXPECT_EQ(m.warnings,
+              "test.pov:2:1: warning: two 2\ntest.pov:5:14: warning: use New\n"
+              "test.pov:7:14: warning: identifier Older was declared deprecated\n");
     EXPECT_EQ(error_of("#error concat(\"stop \", \"here\")"), "#error: stop here at test.pov:1:1");
 }
 
@@ -636,10 +680,12 @@ TEST(SceneLanguageBuiltins, AnimationImageAndFileVariables) {
     options.animation.final_clock = 1;
     options.animation.image_width = 640;
     options.animation.image_height = 480;
-    const Vec3 v = parse_scene_text("camera { location <clock + clock_delta, frame_number * 10 + initial_frame + "
-                                    "final_frame * 100, image_width / image_height + clock_on + final_clock> }",
-                                    "test.pov", options)
-                       .camera.location;
+    const Vec3 v =
+        parse_scene_text(
+            "camera { location <clock + clock_delta, frame_number * 10 + initial_frame + "
+            "final_frame * 100, image_width / image_height + clock_on + final_clock> }",
+            "test.pov", options)
+            .camera.location;
     expect_vec(v, {0.75, 531, 640.0 / 480 + 2});
     EXPECT_DOUBLE_EQ(eval("version").x, 3.7);
     EXPECT_DOUBLE_EQ(eval("version", "#version 3.5;").x, 3.5);

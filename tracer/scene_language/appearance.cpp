@@ -204,7 +204,8 @@ namespace {
 // A texture whose look is the same everywhere (a plain one with a solid pigment and no
 // bumps): transforms do not change it, so it need not be copied.
 bool position_independent(const Texture& texture) {
-    return texture.kind == Texture::Kind::plain && texture.pigment.pattern.kind == PatternKind::plain &&
+    return texture.kind == Texture::Kind::plain &&
+           texture.pigment.pattern.kind == PatternKind::plain &&
            (!texture.normal || texture.normal->pattern.kind == PatternKind::plain);
 }
 

@@ -33,11 +33,50 @@ struct Colour {
 // Every pattern of POV-Ray 3.7 (reference 3.4.7), and the bitmaps that act as patterns.
 // `plain` is no pattern: a solid colour, a normal that perturbs nothing, a plain texture.
 enum class PatternKind {
-    plain, agate, aoi, average, boxed, bozo, brick, bumps, cells, checker, crackle, cubic,
-    cylindrical, density_file, dents, facets, function, gradient, granite, hexagon, image_pattern,
-    julia, leopard, mandel, marble, object, onion, pavement, pigment_pattern, planar, quilted,
-    radial, ripples, slope, spherical, spiral1, spiral2, spotted, square, tiling, triangular,
-    waves, wood, wrinkles,
+    plain,
+    agate,
+    aoi,
+    average,
+    boxed,
+    bozo,
+    brick,
+    bumps,
+    cells,
+    checker,
+    crackle,
+    cubic,
+    cylindrical,
+    density_file,
+    dents,
+    facets,
+    function,
+    gradient,
+    granite,
+    hexagon,
+    image_pattern,
+    julia,
+    leopard,
+    mandel,
+    marble,
+    object,
+    onion,
+    pavement,
+    pigment_pattern,
+    planar,
+    quilted,
+    radial,
+    ripples,
+    slope,
+    spherical,
+    spiral1,
+    spiral2,
+    spotted,
+    square,
+    tiling,
+    triangular,
+    waves,
+    wood,
+    wrinkles,
     image_map,     // pigment { image_map { ... } }: the image's colours
     bump_map,      // normal { bump_map { ... } }: the image's brightness as height
     material_map,  // texture { material_map { ... } }: the image's index picks a texture
@@ -64,7 +103,15 @@ struct Turbulence {
 // A warp { ... } or a transform, in the order written (reference 3.4.7.5.5).
 struct Warp {
     enum class Kind {
-        transform, turbulence, black_hole, repeat, cylindrical, spherical, toroidal, planar, cubic
+        transform,
+        turbulence,
+        black_hole,
+        repeat,
+        cylindrical,
+        spherical,
+        toroidal,
+        planar,
+        cubic
     };
     Kind kind = Kind::transform;
     SourceLocation location;  // the warp keyword (transforms: none)
@@ -103,13 +150,13 @@ struct ImageMap {
     FunctionRef function;   // function image: a float, pattern or pigment function over [0,1]^2
     int function_width = 0, function_height = 0;
     bool gamma_given = false;
-    bool gamma_srgb = false;   // gamma srgb
-    double gamma = 1.0;        // gamma GAMMA (when given and not srgb)
+    bool gamma_srgb = false;  // gamma srgb
+    double gamma = 1.0;       // gamma GAMMA (when given and not srgb)
     bool premultiplied_given = false;
     bool premultiplied = false;
-    int map_type = 0;          // 0 planar, 1 spherical, 2 cylindrical, 5 torus
-    bool once = false;         // no tiling outside the unit square
-    int interpolate = 0;       // 0 none, 2 bilinear, 3 bicubic, 4 normalised distance
+    int map_type = 0;     // 0 planar, 1 spherical, 2 cylindrical, 5 torus
+    bool once = false;    // no tiling outside the unit square
+    int interpolate = 0;  // 0 none, 2 bilinear, 3 bicubic, 4 normalised distance
     // image_map: filter/transmit of palette entries, or of all (index -1) when `all`.
     struct PaletteAmount {
         int index = -1;  // -1: all
@@ -125,15 +172,15 @@ struct CrackleParameters {
     Vec3 form{-1, 1, 0};  // weights of the distances to the 1st, 2nd and 3rd nearest points
     double metric = 2;    // Minkowski exponent of the distance
     double offset = 0;
-    bool solid = false;   // one value per cell
+    bool solid = false;  // one value per cell
 };
 
 // mandel, julia, and magnet 1/2 of either (reference 3.4.7.1.11).
 struct FractalParameters {
-    int magnet = 0;          // 0: not a magnet fractal; 1 or 2
+    int magnet = 0;                              // 0: not a magnet fractal; 1 or 2
     double julia_real = 0, julia_imaginary = 0;  // julia's complex parameter
     int iterations = 0;
-    int exponent = 2;        // mandel and julia: 2..33
+    int exponent = 2;  // mandel and julia: 2..33
     int exterior_type = 1;
     double exterior_factor = 1;
     int interior_type = 0;
@@ -141,18 +188,18 @@ struct FractalParameters {
 };
 
 struct SlopeParameters {
-    Vec3 direction;          // slope { <direction> }: value 1 where the normal points along it
-    bool point_at = false;   // slope { point_at <point> }: `direction` is the point
+    Vec3 direction;         // slope { <direction> }: value 1 where the normal points along it
+    bool point_at = false;  // slope { point_at <point> }: `direction` is the point
     double low_slope = 0, high_slope = 1;  // the slope range mapped to [0, 1]
     bool altitude_given = false;
-    Vec3 altitude;           // weighted with the slope by the two vectors' lengths
+    Vec3 altitude;  // weighted with the slope by the two vectors' lengths
     double low_altitude = 0, high_altitude = 1;
 };
 
 struct PavementParameters {
-    int sides = 3;     // number_of_sides: 3 triangles, 4 squares, 6 hexagons
-    int tiles = 1;     // number_of_tiles
-    int pattern = 1;   // which of the tilings of that many tiles
+    int sides = 3;    // number_of_sides: 3 triangles, 4 squares, 6 hexagons
+    int tiles = 1;    // number_of_tiles
+    int pattern = 1;  // which of the tilings of that many tiles
     int exterior = 0, interior = 0, form = 0;  // how corners are drawn (0, 1, 2; form 3 squares)
 };
 
@@ -161,24 +208,24 @@ struct Pattern {
     PatternKind kind = PatternKind::plain;
     SourceLocation location;  // the pattern's keyword (plain: none)
 
-    Vec3 gradient{1, 0, 0};            // gradient <orientation>
-    double agate_turbulence = 1.0;     // agate_turb
-    Vec3 brick_size{8, 3, 4.5};        // brick_size
-    double mortar = 0.5;               // mortar
-    CrackleParameters crackle;         // crackle (metric also facets')
-    double facets_coords = 0;          // facets coords SCALE (0: not given)
-    double facets_size = 0.1;          // facets size FACTOR
-    FractalParameters fractal;         // julia, mandel
+    Vec3 gradient{1, 0, 0};         // gradient <orientation>
+    double agate_turbulence = 1.0;  // agate_turb
+    Vec3 brick_size{8, 3, 4.5};     // brick_size
+    double mortar = 0.5;            // mortar
+    CrackleParameters crackle;      // crackle (metric also facets')
+    double facets_coords = 0;       // facets coords SCALE (0: not given)
+    double facets_size = 0.1;       // facets size FACTOR
+    FractalParameters fractal;      // julia, mandel
     double quilted_control0 = 1, quilted_control1 = 1;
-    SlopeParameters slope;             // slope { ... }
-    int spiral_arms = 0;               // spiral1 N, spiral2 N
-    int tiling = 1;                    // tiling N (1..27)
+    SlopeParameters slope;  // slope { ... }
+    int spiral_arms = 0;    // spiral1 N, spiral2 N
+    int tiling = 1;         // tiling N (1..27)
     PavementParameters pavement;
-    std::string density_file;          // density_file df3 "FILE": resolved path
-    int interpolate = 0;               // density_file: 0 none, 1 trilinear, 2 tricubic
-    FunctionRef function;              // function { ... }: a float function of x, y, z
-    ObjectRef object;                  // object { OBJECT }: inside (1) or outside (0)
-    PigmentRef pigment;                // pigment_pattern { ... }: the pigment's grey value
+    std::string density_file;               // density_file df3 "FILE": resolved path
+    int interpolate = 0;                    // density_file: 0 none, 1 trilinear, 2 tricubic
+    FunctionRef function;                   // function { ... }: a float function of x, y, z
+    ObjectRef object;                       // object { OBJECT }: inside (1) or outside (0)
+    PigmentRef pigment;                     // pigment_pattern { ... }: the pigment's grey value
     std::shared_ptr<const ImageMap> image;  // image_map, bump_map, material_map, image_pattern
 
     Waveform waveform = Waveform::ramp;  // marble, wood, spiral1 and spiral2 set triangle
@@ -194,8 +241,8 @@ struct Pattern {
     // Warps and transforms in the order written. A point is taken through them from the last
     // to the first (each undone), then through the classic turbulence, then the pattern.
     std::vector<Warp> warps;
-    int noise_generator = 0;             // 1, 2 or 3; 0: global_settings' (POV-Ray's default 2)
-    bool uv_mapping = false;             // evaluated at the surface's <u, v, 0>
+    int noise_generator = 0;  // 1, 2 or 3; 0: global_settings' (POV-Ray's default 2)
+    bool uv_mapping = false;  // evaluated at the surface's <u, v, 0>
 };
 
 // ---------------------------------------------------------------- maps and lists
@@ -205,11 +252,11 @@ enum class BlendMapKind { colour, pigment, normal, slope, texture, density };
 // One entry of a map, or one item of a block pattern's list. Only the field of the map's
 // kind is used.
 struct BlendMapEntry {
-    double value = 0;     // the pattern value it stands at (a list's index; average: weight)
-    Colour colour;        // colour_map; a colour in a pigment or density list
-    PigmentRef pigment;   // pigment_map; density_map (densities are pigment-like)
-    NormalRef normal;     // normal_map
-    TextureRef texture;   // texture_map (may be layered)
+    double value = 0;    // the pattern value it stands at (a list's index; average: weight)
+    Colour colour;       // colour_map; a colour in a pigment or density list
+    PigmentRef pigment;  // pigment_map; density_map (densities are pigment-like)
+    NormalRef normal;    // normal_map
+    TextureRef texture;  // texture_map (may be layered)
     double height = 0, slope = 0;  // slope_map <height, slope>
 };
 
@@ -231,20 +278,20 @@ const BlendMap& builtin_colour_map(PatternKind kind);
 // A pigment, and a media density (DensityRef): a solid colour, or a pattern with a map.
 struct Pigment {
     Pattern pattern;
-    Colour colour;           // plain: the colour (POV-Ray's default pigment is black)
-    BlendMapPointer map;     // colour_map, pigment_map or list (density: density_map or list);
-                             // null: builtin_colour_map(pattern.kind)
+    Colour colour;        // plain: the colour (POV-Ray's default pigment is black)
+    BlendMapPointer map;  // colour_map, pigment_map or list (density: density_map or list);
+                          // null: builtin_colour_map(pattern.kind)
     bool quick_colour_given = false;
-    Colour quick_colour;     // quick_color: for POV-Ray's low-quality previews
-    SourceLocation location; // the pigment (density, map entry) where it was last written
+    Colour quick_colour;      // quick_color: for POV-Ray's low-quality previews
+    SourceLocation location;  // the pigment (density, map entry) where it was last written
 };
 
 // Reference 3.4.6.2.
 struct Normal {
-    Pattern pattern;         // plain: no perturbation
-    double amount = 0.5;     // the float after the pattern, or bump_size
-    BlendMapPointer map;     // normal_map or normal list, or slope_map
-    double accuracy = 0.02;  // step of the slope estimate of non-bump patterns
+    Pattern pattern;             // plain: no perturbation
+    double amount = 0.5;         // the float after the pattern, or bump_size
+    BlendMapPointer map;         // normal_map or normal list, or slope_map
+    double accuracy = 0.02;      // step of the slope estimate of non-bump patterns
     bool no_bump_scale = false;  // scaling does not change the bump depth
     SourceLocation location;
 };
@@ -256,18 +303,18 @@ struct Finish {
     Rgb ambient{0.1, 0.1, 0.1};
     Rgb emission{0, 0, 0};
     double diffuse = 0.6;
-    bool diffuse_albedo = false;   // diffuse albedo A: A is total rather than peak reflectance
-    double diffuse_back = 0;       // diffuse A, B: illumination from the back side
+    bool diffuse_albedo = false;  // diffuse albedo A: A is total rather than peak reflectance
+    double diffuse_back = 0;      // diffuse A, B: illumination from the back side
     double brilliance = 1.0;
-    double crand = 0;              // random darkening of diffuse light
+    double crand = 0;  // random darkening of diffuse light
     double specular = 0;
     bool specular_albedo = false;
     double roughness = 0.05;
     double phong = 0;
     bool phong_albedo = false;
     double phong_size = 40;
-    double metallic = 0;           // highlights take the pigment's colour
-    Rgb reflection_min{0, 0, 0};   // `reflection X` sets both; `reflection { min, max }` each
+    double metallic = 0;          // highlights take the pigment's colour
+    Rgb reflection_min{0, 0, 0};  // `reflection X` sets both; `reflection { min, max }` each
     Rgb reflection_max{0, 0, 0};
     bool reflection_fresnel = false;
     double reflection_falloff = 1;
@@ -278,14 +325,14 @@ struct Finish {
     double irid_amount = 0;
     double irid_thickness = 0;
     double irid_turbulence = 0;
-    bool subsurface = false;       // subsurface { translucency COLOUR }
+    bool subsurface = false;  // subsurface { translucency COLOUR }
     Rgb translucency{0, 0, 0};
     // Interior items POV-Ray still takes in a finish (with a warning) and gives to the
     // object's interior: 0 when not written.
     double legacy_ior = 0;
     double legacy_refraction = 0;
     double legacy_caustics = 0;
-    SourceLocation location;       // the finish block where it was last written
+    SourceLocation location;  // the finish block where it was last written
 };
 
 // ---------------------------------------------------------------- textures
@@ -298,11 +345,11 @@ struct Texture {
     Kind kind = Kind::plain;
     // plain
     Pigment pigment;
-    NormalRef normal;         // null: none
+    NormalRef normal;  // null: none
     Finish finish;
     // patterned
     Pattern pattern;
-    BlendMapPointer map;      // texture_map or texture list
+    BlendMapPointer map;  // texture_map or texture list
     // layered: bottom first; each layer plain (POV-Ray allows no patterned layer)
     std::vector<TextureRef> layers;
     SourceLocation location;  // the texture keyword
@@ -311,7 +358,7 @@ struct Texture {
 // ---------------------------------------------------------------- interior and media
 
 struct Media {
-    int method = 3;             // sampling method 1, 2 or 3
+    int method = 3;  // sampling method 1, 2 or 3
     int intervals = 1;
     int samples_min = 1, samples_max = 1;
     double confidence = 0.9;
@@ -322,10 +369,10 @@ struct Media {
     double aa_threshold = 0.1;
     Rgb absorption{0, 0, 0};
     Rgb emission{0, 0, 0};
-    int scattering_type = 0;    // 0: no scattering; 1 isotropic, 2 Mie haze, 3 Mie murky,
-                                // 4 Rayleigh, 5 Henyey-Greenstein
+    int scattering_type = 0;  // 0: no scattering; 1 isotropic, 2 Mie haze, 3 Mie murky,
+                              // 4 Rayleigh, 5 Henyey-Greenstein
     Rgb scattering{0, 0, 0};
-    double eccentricity = 0;    // Henyey-Greenstein
+    double eccentricity = 0;  // Henyey-Greenstein
     double extinction = 1;
     std::vector<DensityRef> densities;  // multiplied together; none: density 1 everywhere
     SourceLocation location;
@@ -334,9 +381,9 @@ struct Media {
 struct Interior {
     double ior = 1.0;
     double caustics = 0;
-    double dispersion = 1.0;     // ratio of the ior for violet to red
+    double dispersion = 1.0;  // ratio of the ior for violet to red
     int dispersion_samples = 7;
-    double fade_distance = 0;    // 0: no attenuation
+    double fade_distance = 0;  // 0: no attenuation
     double fade_power = 0;
     Rgb fade_colour{0, 0, 0};
     std::vector<MediaRef> media;  // added together

@@ -23,7 +23,9 @@ namespace {
 
 constexpr double kEpsilon = 1e-10;
 
-Keyword keyword_of(NameId name) { return is_keyword(name) ? static_cast<Keyword>(name) : Keyword::size_; }
+Keyword keyword_of(NameId name) {
+    return is_keyword(name) ? static_cast<Keyword>(name) : Keyword::size_;
+}
 
 // POV-Ray converts a seed to a 32-bit int as C does on x86: values outside the range become
 // INT_MIN.
@@ -48,84 +50,167 @@ std::string format_float(double value, int width, int precision) {
     return fmt::sprintf(zeros ? "%0*.*f" : "%*.*f", w, std::min(precision, 100), value);
 }
 
+// The keywords that start a numeric expression: constants, built-in variables and functions.
+constexpr Keyword kNumericBuiltins[] = {Keyword::pi,
+                                        Keyword::true_,
+                                        Keyword::false_,
+                                        Keyword::yes,
+                                        Keyword::no,
+                                        Keyword::on,
+                                        Keyword::off,
+                                        Keyword::x,
+                                        Keyword::y,
+                                        Keyword::z,
+                                        Keyword::t,
+                                        Keyword::u,
+                                        Keyword::v,
+                                        Keyword::clock,
+                                        Keyword::clock_delta,
+                                        Keyword::clock_on,
+                                        Keyword::frame_number,
+                                        Keyword::initial_frame,
+                                        Keyword::final_frame,
+                                        Keyword::initial_clock,
+                                        Keyword::final_clock,
+                                        Keyword::image_width,
+                                        Keyword::image_height,
+                                        Keyword::version,
+                                        Keyword::now,
+                                        Keyword::abs,
+                                        Keyword::acos,
+                                        Keyword::acosh,
+                                        Keyword::asc,
+                                        Keyword::asin,
+                                        Keyword::asinh,
+                                        Keyword::atan,
+                                        Keyword::atan2,
+                                        Keyword::atanh,
+                                        Keyword::bitwise_and,
+                                        Keyword::bitwise_or,
+                                        Keyword::bitwise_xor,
+                                        Keyword::ceil,
+                                        Keyword::cos,
+                                        Keyword::cosh,
+                                        Keyword::defined,
+                                        Keyword::degrees,
+                                        Keyword::dimensions,
+                                        Keyword::dimension_size,
+                                        Keyword::div,
+                                        Keyword::exp,
+                                        Keyword::file_exists,
+                                        Keyword::floor,
+                                        Keyword::inside,
+                                        Keyword::int_,
+                                        Keyword::ln,
+                                        Keyword::log,
+                                        Keyword::max,
+                                        Keyword::min,
+                                        Keyword::mod,
+                                        Keyword::pow,
+                                        Keyword::radians,
+                                        Keyword::rand,
+                                        Keyword::seed,
+                                        Keyword::select,
+                                        Keyword::sin,
+                                        Keyword::sinh,
+                                        Keyword::sqrt,
+                                        Keyword::strcmp,
+                                        Keyword::strlen,
+                                        Keyword::tan,
+                                        Keyword::tanh,
+                                        Keyword::val,
+                                        Keyword::vdot,
+                                        Keyword::vlength,
+                                        Keyword::min_extent,
+                                        Keyword::max_extent,
+                                        Keyword::trace,
+                                        Keyword::vaxis_rotate,
+                                        Keyword::vcross,
+                                        Keyword::vrotate,
+                                        Keyword::vnormalize,
+                                        Keyword::vturbulence};
+
+// The keywords that start a string expression.
+constexpr Keyword kStringBuiltins[] = {Keyword::chr,    Keyword::concat, Keyword::datetime,
+                                       Keyword::str,    Keyword::strlwr, Keyword::strupr,
+                                       Keyword::substr, Keyword::vstr,   Keyword::input_file_name};
+
+template <size_t N>
+bool one_of(Keyword keyword, const Keyword (&set)[N]) {
+    return std::find(std::begin(set), std::end(set), keyword) != std::end(set);
+}
+
 }  // namespace
 
 bool Parser::is_numeric_builtin(NameId name) const {
-    switch (keyword_of(name)) {
-        case Keyword::pi: case Keyword::true_: case Keyword::false_: case Keyword::yes: case Keyword::no:
-        case Keyword::on: case Keyword::off: case Keyword::x: case Keyword::y: case Keyword::z: case Keyword::t:
-        case Keyword::u: case Keyword::v: case Keyword::clock: case Keyword::clock_delta: case Keyword::clock_on:
-        case Keyword::frame_number: case Keyword::initial_frame: case Keyword::final_frame:
-        case Keyword::initial_clock: case Keyword::final_clock: case Keyword::image_width:
-        case Keyword::image_height: case Keyword::version: case Keyword::now:
-        case Keyword::abs: case Keyword::acos: case Keyword::acosh: case Keyword::asc: case Keyword::asin:
-        case Keyword::asinh: case Keyword::atan: case Keyword::atan2: case Keyword::atanh:
-        case Keyword::bitwise_and: case Keyword::bitwise_or: case Keyword::bitwise_xor: case Keyword::ceil:
-        case Keyword::cos: case Keyword::cosh: case Keyword::defined: case Keyword::degrees:
-        case Keyword::dimensions: case Keyword::dimension_size: case Keyword::div: case Keyword::exp:
-        case Keyword::file_exists: case Keyword::floor: case Keyword::inside: case Keyword::int_:
-        case Keyword::ln: case Keyword::log: case Keyword::max: case Keyword::min: case Keyword::mod:
-        case Keyword::pow: case Keyword::radians: case Keyword::rand: case Keyword::seed: case Keyword::select:
-        case Keyword::sin: case Keyword::sinh: case Keyword::sqrt: case Keyword::strcmp: case Keyword::strlen:
-        case Keyword::tan: case Keyword::tanh: case Keyword::val: case Keyword::vdot: case Keyword::vlength:
-        case Keyword::min_extent: case Keyword::max_extent: case Keyword::trace: case Keyword::vaxis_rotate:
-        case Keyword::vcross: case Keyword::vrotate: case Keyword::vnormalize: case Keyword::vturbulence:
-            return true;
-        default: return false;
-    }
+    return one_of(keyword_of(name), kNumericBuiltins);
 }
 
-bool Parser::builtin_constant(const Token& name, Numeric& value) const {
+std::optional<Numeric> Parser::builtin_constant(const Token& name) const {
     const AnimationSettings& animation = options_.animation;
     switch (keyword_of(name.name)) {
-        case Keyword::pi: value = Numeric::scalar(3.1415926535897932384626); return true;
-        case Keyword::true_: case Keyword::yes: case Keyword::on: value = Numeric::scalar(1); return true;
-        case Keyword::false_: case Keyword::no: case Keyword::off: value = Numeric::scalar(0); return true;
-        case Keyword::x: value = Numeric::vector3({1, 0, 0}); return true;
-        case Keyword::y: value = Numeric::vector3({0, 1, 0}); return true;
-        case Keyword::z: value = Numeric::vector3({0, 0, 1}); return true;
-        case Keyword::t: value = Numeric{{0, 0, 0, 1, 0}, 4}; return true;
-        case Keyword::u: value = Numeric{{1, 0, 0, 0, 0}, 2}; return true;
-        case Keyword::v: value = Numeric{{0, 1, 0, 0, 0}, 2}; return true;
-        case Keyword::clock: value = Numeric::scalar(animation.clock); return true;
-        case Keyword::clock_delta: value = Numeric::scalar(animation.clock_delta); return true;
-        case Keyword::clock_on: value = Numeric::scalar(animation.clock_on ? 1 : 0); return true;
-        case Keyword::frame_number: value = Numeric::scalar(animation.frame_number); return true;
-        case Keyword::initial_frame: value = Numeric::scalar(animation.initial_frame); return true;
-        case Keyword::final_frame: value = Numeric::scalar(animation.final_frame); return true;
-        case Keyword::initial_clock: value = Numeric::scalar(animation.initial_clock); return true;
-        case Keyword::final_clock: value = Numeric::scalar(animation.final_clock); return true;
-        case Keyword::image_width: value = Numeric::scalar(animation.image_width); return true;
-        case Keyword::image_height: value = Numeric::scalar(animation.image_height); return true;
-        case Keyword::version: value = Numeric::scalar(version_); return true;
-        case Keyword::now: value = Numeric::scalar(days_since_2000(start_time_)); return true;
-        default: return false;
+        case Keyword::pi: return Numeric::scalar(3.1415926535897932384626);
+        case Keyword::true_:
+        case Keyword::yes:
+        case Keyword::on: return Numeric::scalar(1);
+        case Keyword::false_:
+        case Keyword::no:
+        case Keyword::off: return Numeric::scalar(0);
+        case Keyword::x: return Numeric::vector3({1, 0, 0});
+        case Keyword::y: return Numeric::vector3({0, 1, 0});
+        case Keyword::z: return Numeric::vector3({0, 0, 1});
+        case Keyword::t: return Numeric{{0, 0, 0, 1, 0}, 4};
+        case Keyword::u: return Numeric{{1, 0, 0, 0, 0}, 2};
+        case Keyword::v: return Numeric{{0, 1, 0, 0, 0}, 2};
+        case Keyword::clock: return Numeric::scalar(animation.clock);
+        case Keyword::clock_delta: return Numeric::scalar(animation.clock_delta);
+        case Keyword::clock_on: return Numeric::scalar(animation.clock_on ? 1 : 0);
+        case Keyword::frame_number: return Numeric::scalar(animation.frame_number);
+        case Keyword::initial_frame: return Numeric::scalar(animation.initial_frame);
+        case Keyword::final_frame: return Numeric::scalar(animation.final_frame);
+        case Keyword::initial_clock: return Numeric::scalar(animation.initial_clock);
+        case Keyword::final_clock: return Numeric::scalar(animation.final_clock);
+        case Keyword::image_width: return Numeric::scalar(animation.image_width);
+        case Keyword::image_height: return Numeric::scalar(animation.image_height);
+        case Keyword::version: return Numeric::scalar(version_);
+        case Keyword::now: return Numeric::scalar(days_since_2000(start_time_));
+        default: return std::nullopt;
     }
 }
 
 Numeric Parser::parse_builtin_numeric(const Token& name) {
     const Keyword k = keyword_of(name.name);
-    if (Numeric constant; builtin_constant(name, constant)) return constant;
+    if (const std::optional<Numeric> constant = builtin_constant(name)) return *constant;
 
-    const Token open = expect(Symbol::lparen, [&] { return fmt::format("after '{}'", word(name)); });
+    const Token open =
+        expect(Symbol::lparen, [&] { return fmt::format("after '{}'", word(name)); });
     auto close = [&] {
-        expect(Symbol::rparen, [&] { return fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str()); });
+        expect(Symbol::rparen, [&] {
+            return fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str());
+        });
     };
-    auto comma = [&] { expect(Symbol::comma, [&] { return fmt::format("between the arguments of '{}'", word(name)); }); };
+    auto comma = [&] {
+        expect(Symbol::comma,
+               [&] { return fmt::format("between the arguments of '{}'", word(name)); });
+    };
     auto float_arg = [&]() {
         const Token at = peek();
         const Numeric n = parse_expression();
-        if (n.terms != 1) fail(at, fmt::format("'{}' takes a float here, found a vector", word(name)));
+        if (n.terms != 1)
+            fail(at, fmt::format("'{}' takes a float here, found a vector", word(name)));
         return n.v[0];
     };
     auto vector_arg = [&]() {
         const Token at = peek();
         const Numeric n = parse_expression();
-        if (n.terms > 3) fail(at, fmt::format("'{}' takes a vector here, found a colour", word(name)));
+        if (n.terms > 3)
+            fail(at, fmt::format("'{}' takes a vector here, found a colour", word(name)));
         return n.promoted(3).vec3();
     };
     auto domain = [&](bool ok, const char* what) {
-        if (!ok) fail(name, fmt::format("'{}': {} (POV-Ray would compute a meaningless number)", word(name), what));
+        if (!ok)
+            fail(name, fmt::format("'{}': {} (POV-Ray would compute a meaningless number)",
+                                   word(name), what));
     };
     auto object_arg = [&]() -> ObjectRef {
         const Token at = peek();
@@ -156,8 +241,10 @@ Numeric Parser::parse_builtin_numeric(const Token& name) {
         case Keyword::atan: return one_float([](double a) { return std::atan(a); });
         case Keyword::asinh: return one_float([](double a) { return std::asinh(a); });
         case Keyword::exp: return one_float([](double a) { return std::exp(a); });
-        case Keyword::degrees: return one_float([](double a) { return a * 180.0 / 3.1415926535897932384626; });
-        case Keyword::radians: return one_float([](double a) { return a * 3.1415926535897932384626 / 180.0; });
+        case Keyword::degrees:
+            return one_float([](double a) { return a * 180.0 / 3.1415926535897932384626; });
+        case Keyword::radians:
+            return one_float([](double a) { return a * 3.1415926535897932384626 / 180.0; });
         case Keyword::asin:
         case Keyword::acos: {
             const double a = float_arg();
@@ -215,16 +302,21 @@ Numeric Parser::parse_builtin_numeric(const Token& name) {
             std::vector<double> args{float_arg()};
             while (accept(Symbol::comma)) args.push_back(float_arg());
             close();
-            if (args.size() < 2) fail(name, fmt::format("'{}' takes at least 2 arguments, found 1", word(name)));
-            if (k == Keyword::min) return Numeric::scalar(*std::min_element(args.begin(), args.end()));
-            if (k == Keyword::max) return Numeric::scalar(*std::max_element(args.begin(), args.end()));
+            if (args.size() < 2)
+                fail(name, fmt::format("'{}' takes at least 2 arguments, found 1", word(name)));
+            if (k == Keyword::min)
+                return Numeric::scalar(*std::min_element(args.begin(), args.end()));
+            if (k == Keyword::max)
+                return Numeric::scalar(*std::max_element(args.begin(), args.end()));
             auto as_int = [](double a) {
                 return static_cast<long long>(std::clamp(std::trunc(a), -9.2e18, 9.2e18));
             };
             long long r = as_int(args[0]);
             for (size_t i = 1; i < args.size(); ++i) {
                 const long long b = as_int(args[i]);
-                r = k == Keyword::bitwise_and ? (r & b) : k == Keyword::bitwise_or ? (r | b) : (r ^ b);
+                r = k == Keyword::bitwise_and  ? (r & b)
+                    : k == Keyword::bitwise_or ? (r | b)
+                                               : (r ^ b);
             }
             return Numeric::scalar(static_cast<double>(static_cast<int>(r)));
         }
@@ -265,7 +357,8 @@ Numeric Parser::parse_builtin_numeric(const Token& name) {
         case Keyword::file_exists: {
             const std::string s = parse_string();
             close();
-            if (k == Keyword::asc) return Numeric::scalar(s.empty() ? 0 : static_cast<unsigned char>(s[0]));
+            if (k == Keyword::asc)
+                return Numeric::scalar(s.empty() ? 0 : static_cast<unsigned char>(s[0]));
             if (k == Keyword::strlen) return Numeric::scalar(static_cast<double>(s.size()));
             if (k == Keyword::val) return Numeric::scalar(std::strtod(s.c_str(), nullptr));
             try {
@@ -299,7 +392,8 @@ Numeric Parser::parse_builtin_numeric(const Token& name) {
             while (peek_is(Symbol::lbracket)) {
                 const Value element = *array_element(at, *held, false);
                 if (!std::holds_alternative<ArrayRef>(element))
-                    fail(at, fmt::format("'{}': the element is {}, not an array", word(name), type_name(element)));
+                    fail(at, fmt::format("'{}': the element is {}, not an array", word(name),
+                                         type_name(element)));
                 held = std::get<ArrayRef>(element);
             }
             if (k == Keyword::dimensions) {
@@ -311,8 +405,10 @@ Numeric Parser::parse_builtin_numeric(const Token& name) {
             const int dimension = static_cast<int>(float_arg());
             close();
             if (dimension < 1 || dimension > static_cast<int>(held->sizes.size()))
-                fail(dimension_at, fmt::format("dimension_size: the array has {} dimension{}, asked for dimension {}",
-                                               held->sizes.size(), held->sizes.size() == 1 ? "" : "s", dimension));
+                fail(dimension_at,
+                     fmt::format(
+                         "dimension_size: the array has {} dimension{}, asked for dimension {}",
+                         held->sizes.size(), held->sizes.size() == 1 ? "" : "s", dimension));
             return Numeric::scalar(held->sizes[static_cast<size_t>(dimension - 1)]);
         }
         case Keyword::vdot:
@@ -381,7 +477,8 @@ Numeric Parser::parse_builtin_numeric(const Token& name) {
             bool found = false;
             if (!object_trace(*object, origin, direction, hit, normal, found))
                 fail_not_supported(name, "'trace' of this kind of object");
-            if (normal_symbol) normal_symbol->value = Numeric::vector3(found ? normal : Vec3{0, 0, 0});
+            if (normal_symbol)
+                normal_symbol->value = Numeric::vector3(found ? normal : Vec3{0, 0, 0});
             return Numeric::vector3(found ? hit : Vec3{0, 0, 0});
         }
         case Keyword::vturbulence:
@@ -394,13 +491,9 @@ Numeric Parser::parse_builtin_numeric(const Token& name) {
 bool Parser::starts_string(const Token& token) {
     if (token.kind == TokenKind::string) return true;
     if (token.kind != TokenKind::word) return false;
-    switch (keyword_of(token.name)) {
-        case Keyword::chr: case Keyword::concat: case Keyword::datetime: case Keyword::str: case Keyword::strlwr:
-        case Keyword::strupr: case Keyword::substr: case Keyword::vstr: case Keyword::input_file_name:
-            return true;
-        case Keyword::size_: break;
-        default: return false;
-    }
+    const Keyword keyword = keyword_of(token.name);
+    if (one_of(keyword, kStringBuiltins)) return true;
+    if (keyword != Keyword::size_) return false;  // any other keyword
     const SymbolRef symbol = lookup(token.name);
     if (!symbol) return false;
     if (const ArrayRef* array = std::get_if<ArrayRef>(&symbol->value))
@@ -418,7 +511,8 @@ std::string Parser::parse_string() {
         next();
         std::string text = parse_builtin_string(token);
         if (static_cast<long>(text.size()) > options_.max_string_length)
-            fail(token, fmt::format("string limit: a string of more than {} bytes (ParseOptions::max_string_length)",
+            fail(token, fmt::format("string limit: a string of more than {} bytes "
+                                    "(ParseOptions::max_string_length)",
                                     options_.max_string_length));
         return text;
     }
@@ -434,8 +528,9 @@ std::string Parser::parse_string() {
                 next();
                 const Value element = *array_element(token, *held, false);
                 if (const std::string* s = std::get_if<std::string>(&element)) return *s;
-                fail(token, fmt::format("wrong type: the elements of '{}' are {}, expected a string", word(token),
-                                        type_name(element)));
+                fail(token,
+                     fmt::format("wrong type: the elements of '{}' are {}, expected a string",
+                                 word(token), type_name(element)));
             }
         }
     }
@@ -444,15 +539,22 @@ std::string Parser::parse_string() {
 
 std::string Parser::parse_builtin_string(const Token& name) {
     const Keyword k = keyword_of(name.name);
-    if (k == Keyword::input_file_name) return fs::path(files_.front().source->path).filename().string();
+    if (k == Keyword::input_file_name)
+        return fs::path(files_.front().source->path).filename().string();
     if (k != Keyword::chr && k != Keyword::concat && k != Keyword::datetime && k != Keyword::str &&
         k != Keyword::strlwr && k != Keyword::strupr && k != Keyword::substr && k != Keyword::vstr)
         fail_identifier(name, "a string");
-    const Token open = expect(Symbol::lparen, [&] { return fmt::format("after '{}'", word(name)); });
+    const Token open =
+        expect(Symbol::lparen, [&] { return fmt::format("after '{}'", word(name)); });
     auto close = [&] {
-        expect(Symbol::rparen, [&] { return fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str()); });
+        expect(Symbol::rparen, [&] {
+            return fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str());
+        });
     };
-    auto comma = [&] { expect(Symbol::comma, [&] { return fmt::format("between the arguments of '{}'", word(name)); }); };
+    auto comma = [&] {
+        expect(Symbol::comma,
+               [&] { return fmt::format("between the arguments of '{}'", word(name)); });
+    };
     auto int_arg = [&](const char* what) {
         const double value = parse_float(fmt::format("as the {} of '{}'", what, word(name)));
         return static_cast<int>(std::clamp(std::trunc(value), -2147483648.0, 2147483647.0));
@@ -462,7 +564,8 @@ std::string Parser::parse_builtin_string(const Token& name) {
             const Token at = peek();
             const int code = int_arg("character code");
             close();
-            if (code < 0 || code > 0x10FFFF) fail(at, fmt::format("chr({}): not a character code", code));
+            if (code < 0 || code > 0x10FFFF)
+                fail(at, fmt::format("chr({}): not a character code", code));
             std::string out;
             const auto c = static_cast<unsigned>(code);
             if (c < 0x80) {
@@ -488,7 +591,8 @@ std::string Parser::parse_builtin_string(const Token& name) {
                 out += parse_string();
                 if (static_cast<long>(out.size()) > options_.max_string_length)
                     fail(name, fmt::format("string limit: a string of more than {} bytes "
-                                           "(ParseOptions::max_string_length)", options_.max_string_length));
+                                           "(ParseOptions::max_string_length)",
+                                           options_.max_string_length));
             }
             close();
             return out;
@@ -516,10 +620,12 @@ std::string Parser::parse_builtin_string(const Token& name) {
             close();
             const int terms = std::clamp(requested, 2, 5);
             if (vector.terms > terms)
-                fail(at, fmt::format("vstr: the vector has {} terms, more than the {} asked for", vector.terms, terms));
+                fail(at, fmt::format("vstr: the vector has {} terms, more than the {} asked for",
+                                     vector.terms, terms));
             std::string out;
             for (int i = 0; i < terms; ++i) {
-                // Missing terms are zeros, even for a float (POV-Ray's behaviour, not its manual's).
+                // Missing terms are zeros, even for a float (POV-Ray's behaviour, not its
+                // manual's).
                 const double term = i < vector.terms ? vector.v[i] : 0.0;
                 out += (i ? separator : "") + format_float(term, width, precision);
             }
@@ -534,16 +640,18 @@ std::string Parser::parse_builtin_string(const Token& name) {
             const int count = int_arg("length");
             close();
             if (position < 1 || count < 0 || static_cast<size_t>(position - 1 + count) > s.size())
-                fail(at, fmt::format("substr: characters {} to {} of a string of {}", position, position + count - 1,
-                                     s.size()));
+                fail(at, fmt::format("substr: characters {} to {} of a string of {}", position,
+                                     position + count - 1, s.size()));
             return s.substr(static_cast<size_t>(position - 1), static_cast<size_t>(count));
         }
         case Keyword::strupr:
         case Keyword::strlwr: {
             std::string s = parse_string();
             close();
-            for (char& c : s) c = static_cast<char>(k == Keyword::strupr ? std::toupper(static_cast<unsigned char>(c))
-                                                                         : std::tolower(static_cast<unsigned char>(c)));
+            for (char& c : s)
+                c = static_cast<char>(k == Keyword::strupr
+                                          ? std::toupper(static_cast<unsigned char>(c))
+                                          : std::tolower(static_cast<unsigned char>(c)));
             return s;
         }
         case Keyword::datetime: {
@@ -551,7 +659,8 @@ std::string Parser::parse_builtin_string(const Token& name) {
             std::string format = "%Y-%m-%d %H:%M:%SZ";
             if (accept(Symbol::comma)) format = parse_string();
             close();
-            const std::time_t seconds = static_cast<std::time_t>(std::floor(946684800.0 + days * 86400.0));
+            const std::time_t seconds =
+                static_cast<std::time_t>(std::floor(946684800.0 + days * 86400.0));
             std::tm utc{};
             gmtime_r(&seconds, &utc);
             char buffer[512];

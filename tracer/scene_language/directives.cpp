@@ -42,7 +42,8 @@ private:
 void Parser::run_directive(const Token& directive) {
     if (word(directive).empty()) return;  // a lone '#'
     DirectiveFrame scope(directive_frame_, frames_.size());
-    switch (static_cast<Keyword>(is_keyword(directive.name) ? directive.name : id_of(Keyword::size_))) {
+    switch (
+        static_cast<Keyword>(is_keyword(directive.name) ? directive.name : id_of(Keyword::size_))) {
         case Keyword::declare: return directive_declare(directive, false);
         case Keyword::local: return directive_declare(directive, true);
         case Keyword::if_: return directive_if(directive);
@@ -88,7 +89,8 @@ void Parser::directive_declare(const Token& directive, bool local) {
         if (name.is(Keyword::once)) warn_once = true, name = raw_next();
         if (name.kind == TokenKind::string) deprecation = string_literal(name), name = raw_next();
     }
-    if (name.kind != TokenKind::word) fail_expected(fmt::format("an identifier after #{}", what), name);
+    if (name.kind != TokenKind::word)
+        fail_expected(fmt::format("an identifier after #{}", what), name);
     check_declarable(name, name.name, what);
     if (deprecated && deprecation.empty())
         deprecation = fmt::format("identifier {} was declared deprecated", word(name));
@@ -97,21 +99,26 @@ void Parser::directive_declare(const Token& directive, bool local) {
     // declaration may be a macro call that uses it.
     auto expect_semicolon = [&](bool numeric) {
         if (numeric && version_ >= 3.5 && !peek_operator().is(Symbol::semicolon))
-            fail_expected(fmt::format("';' after the value of #{} {} (POV-Ray requires it after floats, "
-                                      "vectors and colours)", what, word(name)), peek());
+            fail_expected(
+                fmt::format("';' after the value of #{} {} (POV-Ray requires it after floats, "
+                            "vectors and colours)",
+                            what, word(name)),
+                peek());
         if (peek_operator().is(Symbol::semicolon)) next();
     };
     if (raw_peek().is(Symbol::lbracket)) {
         const SymbolRef symbol = lookup(name.name);
         if (!symbol || !std::holds_alternative<ArrayRef>(symbol->value))
-            fail(name, fmt::format("'{}' is not an array: declare it with '= array[N]' first", word(name)));
+            fail(name, fmt::format("'{}' is not an array: declare it with '= array[N]' first",
+                                   word(name)));
         const ArrayRef array = std::get<ArrayRef>(symbol->value);
         Value* slot = array_element(name, *array, true);
         expect(Symbol::equals, fmt::format("after #{} {}[...]", what, word(name)));
         const Token start = peek();
         Value value = parse_rvalue(name);
         if (const std::string why = array->mismatch(value); !why.empty())
-            fail(start, fmt::format("the elements of '{}' are {} (an array holds one type)", word(name), why));
+            fail(start, fmt::format("the elements of '{}' are {} (an array holds one type)",
+                                    word(name), why));
         const bool numeric = std::holds_alternative<Numeric>(value);
         array->assign(static_cast<size_t>(slot - array->elements.data()), std::move(value));
         expect_semicolon(numeric);
@@ -126,11 +133,15 @@ void Parser::directive_declare(const Token& directive, bool local) {
 }
 
 double Parser::parse_condition(const Token& directive) {
-    const Token open = expect(Symbol::lparen, fmt::format("after #{} (its condition is in parentheses)", word(directive)));
+    const Token open =
+        expect(Symbol::lparen,
+               fmt::format("after #{} (its condition is in parentheses)", word(directive)));
     const Numeric value = parse_expression();
-    if (value.terms != 1) fail(open, fmt::format("the condition of #{} must be a float, found a vector", word(directive)));
-    expect(Symbol::rparen, fmt::format("to close the condition of #{} opened at {}", word(directive),
-                                       location_of(open).str()));
+    if (value.terms != 1)
+        fail(open,
+             fmt::format("the condition of #{} must be a float, found a vector", word(directive)));
+    expect(Symbol::rparen, fmt::format("to close the condition of #{} opened at {}",
+                                       word(directive), location_of(open).str()));
     return value.v[0];
 }
 
@@ -148,8 +159,8 @@ Token Parser::skip_to(const Token& opened, std::initializer_list<Keyword> stops,
     for (;;) {
         const Token& token = frame.source->tokens[frame.pos];
         if (token.kind == TokenKind::end)
-            fail(token, fmt::format("unclosed #{} opened at {}: expected #end before end of file", word(opened),
-                                    location_of(opened).str()));
+            fail(token, fmt::format("unclosed #{} opened at {}: expected #end before end of file",
+                                    word(opened), location_of(opened).str()));
         ++frame.pos;
         if (token.kind != TokenKind::directive) continue;
         if (opens_block(token.name)) {
@@ -170,12 +181,14 @@ void Parser::take_branch_after(const Token& opened, bool allow_elseif) {
         if (stop.is_directive(Keyword::end)) return;
         if (stop.is_directive(Keyword::else_)) return enter_block(Block::Kind::else_branch, opened);
         if (!allow_elseif) fail_not_supported(stop, "#elseif here");
-        if (std::fabs(parse_condition(stop)) > kEpsilon) return enter_block(Block::Kind::if_branch, opened);
+        if (std::fabs(parse_condition(stop)) > kEpsilon)
+            return enter_block(Block::Kind::if_branch, opened);
     }
 }
 
 void Parser::directive_if(const Token& directive) {
-    if (std::fabs(parse_condition(directive)) > kEpsilon) return enter_block(Block::Kind::if_branch, directive);
+    if (std::fabs(parse_condition(directive)) > kEpsilon)
+        return enter_block(Block::Kind::if_branch, directive);
     take_branch_after(directive, true);
 }
 
@@ -183,7 +196,8 @@ bool Parser::is_defined(const Token& at) {
     const NameId name = next_raw_identifier(fmt::format("in {}", describe(at)));
     const SymbolRef symbol = resolve(name);
     if (!symbol) return false;
-    if (const ArrayRef* array = std::get_if<ArrayRef>(&symbol->value); array && raw_peek().is(Symbol::lbracket))
+    if (const ArrayRef* array = std::get_if<ArrayRef>(&symbol->value);
+        array && raw_peek().is(Symbol::lbracket))
         return !std::holds_alternative<std::monostate>(*array_element(at, **array, true));
     return true;
 }
@@ -191,17 +205,20 @@ bool Parser::is_defined(const Token& at) {
 void Parser::directive_ifdef(const Token& directive, bool want_defined) {
     const Token open = expect(Symbol::lparen, fmt::format("after #{}", word(directive)));
     const bool defined = is_defined(directive);
-    expect(Symbol::rparen, fmt::format("to close #{}( opened at {}", word(directive), location_of(open).str()));
+    expect(Symbol::rparen,
+           fmt::format("to close #{}( opened at {}", word(directive), location_of(open).str()));
     if (defined == want_defined) return enter_block(Block::Kind::if_branch, directive);
     take_branch_after(directive, true);
 }
 
 void Parser::directive_else(const Token& directive) {
     const bool in_block = blocks_.size() > frames_.back().blocks_at_start;
-    if (in_block && blocks_.back().kind == Block::Kind::switch_clause && directive.is_directive(Keyword::else_))
+    if (in_block && blocks_.back().kind == Block::Kind::switch_clause &&
+        directive.is_directive(Keyword::else_))
         return;  // falling through into a switch's #else, as C does
     if (!in_block || blocks_.back().kind != Block::Kind::if_branch)
-        fail(directive, fmt::format("#{} without a matching #if, #ifdef or #ifndef", word(directive)));
+        fail(directive,
+             fmt::format("#{} without a matching #if, #ifdef or #ifndef", word(directive)));
     // The taken branch ends here: skip the remaining branches to the #end.
     const Token opened = blocks_.back().opened;
     blocks_.pop_back();
@@ -211,7 +228,8 @@ void Parser::directive_else(const Token& directive) {
 void Parser::directive_switch(const Token& directive) {
     const double value = parse_condition(directive);
     for (;;) {
-        const Token clause = skip_to(directive, {Keyword::case_, Keyword::range, Keyword::else_, Keyword::end});
+        const Token clause =
+            skip_to(directive, {Keyword::case_, Keyword::range, Keyword::else_, Keyword::end});
         if (clause.is_directive(Keyword::end)) return;
         bool taken = clause.is_directive(Keyword::else_);
         if (clause.is_directive(Keyword::case_)) {
@@ -221,7 +239,8 @@ void Parser::directive_switch(const Token& directive) {
             const double low = parse_float("as the low end of #range");
             expect(Symbol::comma, "between the two ends of #range");
             const double high = parse_float("as the high end of #range");
-            expect(Symbol::rparen, fmt::format("to close #range( opened at {}", location_of(open).str()));
+            expect(Symbol::rparen,
+                   fmt::format("to close #range( opened at {}", location_of(open).str()));
             taken = low <= value && value <= high;
         }
         if (taken) return enter_block(Block::Kind::switch_clause, directive);
@@ -229,7 +248,8 @@ void Parser::directive_switch(const Token& directive) {
 }
 
 void Parser::directive_case(const Token& directive) {
-    if (blocks_.size() <= frames_.back().blocks_at_start || blocks_.back().kind != Block::Kind::switch_clause)
+    if (blocks_.size() <= frames_.back().blocks_at_start ||
+        blocks_.back().kind != Block::Kind::switch_clause)
         fail(directive, fmt::format("#{} outside #switch", word(directive)));
     // A taken clause falls through into the next one, as C's switch does (POV-Ray's behaviour):
     // its condition is read and ignored.
@@ -240,7 +260,8 @@ void Parser::directive_case(const Token& directive) {
         parse_float();
         expect(Symbol::comma, "between the two ends of #range");
         parse_float();
-        expect(Symbol::rparen, fmt::format("to close #range( opened at {}", location_of(open).str()));
+        expect(Symbol::rparen,
+               fmt::format("to close #range( opened at {}", location_of(open).str()));
     }
 }
 
@@ -249,8 +270,8 @@ void Parser::directive_break(const Token& directive) {
     size_t target = blocks_.size();
     for (size_t i = blocks_.size(); i-- > frames_.back().blocks_at_start;) {
         const Block::Kind kind = blocks_[i].kind;
-        if (kind == Block::Kind::while_loop || kind == Block::Kind::for_loop || kind == Block::Kind::switch_clause ||
-            kind == Block::Kind::macro_body) {
+        if (kind == Block::Kind::while_loop || kind == Block::Kind::for_loop ||
+            kind == Block::Kind::switch_clause || kind == Block::Kind::macro_body) {
             target = i;
             break;
         }
@@ -270,7 +291,8 @@ void Parser::directive_break(const Token& directive) {
 void Parser::count_iteration(const Token& at) {
     if (++loop_iterations_ > options_.max_loop_iterations)
         fail(at, fmt::format("loop limit: more than {} #while and #for iterations in total "
-                             "(ParseOptions::max_loop_iterations)", options_.max_loop_iterations));
+                             "(ParseOptions::max_loop_iterations)",
+                             options_.max_loop_iterations));
 }
 
 void Parser::directive_while(const Token& directive) {
@@ -287,7 +309,8 @@ void Parser::directive_while(const Token& directive) {
 void Parser::directive_for(const Token& directive) {
     const Token open = expect(Symbol::lparen, "after #for");
     const Token variable = raw_next();
-    if (!variable.is_identifier()) fail_expected("the loop variable (an identifier) after #for(", variable);
+    if (!variable.is_identifier())
+        fail_expected("the loop variable (an identifier) after #for(", variable);
     expect(Symbol::comma, "after the loop variable of #for");
     const double first = parse_float("as the start of #for");
     expect(Symbol::comma, "after the start of #for");
@@ -312,7 +335,8 @@ void Parser::directive_for(const Token& directive) {
 
 void Parser::directive_end(const Token& directive) {
     if (blocks_.size() <= frames_.back().blocks_at_start)
-        fail(directive, "#end without an open #if, #ifdef, #ifndef, #switch, #while, #for or #macro here");
+        fail(directive,
+             "#end without an open #if, #ifdef, #ifndef, #switch, #while, #for or #macro here");
     Block& block = blocks_.back();
     switch (block.kind) {
         case Block::Kind::while_loop:
@@ -323,7 +347,8 @@ void Parser::directive_end(const Token& directive) {
             const SymbolRef symbol = lookup(block.variable);
             const Numeric* counter = symbol ? std::get_if<Numeric>(&symbol->value) : nullptr;
             if (!counter || counter->terms != 1)
-                fail(directive, fmt::format("the #for variable '{}' is no longer a float", names_.text(block.variable)));
+                fail(directive, fmt::format("the #for variable '{}' is no longer a float",
+                                            names_.text(block.variable)));
             const double value = counter->v[0] + block.step;
             symbol->value = Numeric::scalar(value);
             if (block.step > 0 ? value > block.last : value < block.last) {
@@ -344,8 +369,11 @@ void Parser::directive_include(const Token& directive) {
     int depth = 0;
     for (const Frame& frame : frames_) depth += frame.kind == FrameKind::file;
     if (depth >= options_.max_include_depth)
-        fail(directive, fmt::format("include depth limit: more than {} nested #include levels (recursive include "
-                                    "of \"{}\"?) (ParseOptions::max_include_depth)", options_.max_include_depth, name));
+        fail(directive,
+             fmt::format(
+                 "include depth limit: more than {} nested #include levels (recursive include "
+                 "of \"{}\"?) (ParseOptions::max_include_depth)",
+                 options_.max_include_depth, name));
     const std::string path = resolve_file(name, directive, "include file", {".inc"});
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(directive, fmt::format("include file \"{}\" cannot be read ({})", name, path));
@@ -359,7 +387,8 @@ void Parser::directive_version(const Token& directive) {
     const double version = parse_float("after #version");
     accept(Symbol::semicolon);
     if (version < 1 || version > 3.7 + kEpsilon)
-        warn(directive, fmt::format("#version {} outside 1.0 to 3.7: read as POV-Ray 3.7 reads it", version));
+        warn(directive,
+             fmt::format("#version {} outside 1.0 to 3.7: read as POV-Ray 3.7 reads it", version));
     version_ = version;
     version_seen_ = true;
     scene_.version = version;
@@ -369,8 +398,10 @@ void Parser::directive_message(const Token& directive) {
     const std::string text = parse_string();
     if (directive.is_directive(Keyword::error)) fail(directive, fmt::format("#error: {}", text));
     if (directive.is_directive(Keyword::warning)) return warn(directive, text);
-    if (options_.on_message) options_.on_message(MessageStream::debug, text);
-    else std::fputs(text.c_str(), stderr);
+    if (options_.on_message)
+        options_.on_message(MessageStream::debug, text);
+    else
+        std::fputs(text.c_str(), stderr);
 }
 
 void Parser::directive_undef(const Token& directive) {

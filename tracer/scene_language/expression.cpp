@@ -23,8 +23,10 @@ constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON for truth and equality
 bool truth(double value) { return std::fabs(value) > kEpsilon; }
 
 Numeric combine(Numeric a, Numeric b, double (*op)(double, double)) {
-    if (a.terms < b.terms) a = a.promoted(b.terms);
-    else b = b.promoted(a.terms);
+    if (a.terms < b.terms)
+        a = a.promoted(b.terms);
+    else
+        b = b.promoted(a.terms);
     for (int i = 0; i < a.terms; ++i) a.v[i] = op(a.v[i], b.v[i]);
     return a;
 }
@@ -51,10 +53,11 @@ bool is_colour_keyword(const Token& token) {
     }
 }
 
-double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+double srgb_to_linear(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
 
 }  // namespace
-
 
 Numeric Numeric::promoted(int to_terms) const {
     if (terms >= to_terms) return *this;
@@ -79,7 +82,8 @@ bool Parser::starts_expression(const Token& token) {
                 return (*array)->element_type == Value(Numeric{}).index() ||
                        (*array)->element_type == Value(FunctionRef{}).index() ||
                        (*array)->element_type == Value(SplineRef{}).index();
-            return std::holds_alternative<Numeric>(*value) || std::holds_alternative<FunctionRef>(*value) ||
+            return std::holds_alternative<Numeric>(*value) ||
+                   std::holds_alternative<FunctionRef>(*value) ||
                    std::holds_alternative<SplineRef>(*value);
         }
         default: return false;
@@ -105,9 +109,11 @@ Numeric Parser::parse_conditional() {
     Numeric condition = parse_logical();
     if (!peek_operator().is(Symbol::question)) return condition;
     const Token question = next();
-    if (condition.terms != 1) fail(question, "the condition before '?' must be a float, found a vector");
+    if (condition.terms != 1)
+        fail(question, "the condition before '?' must be a float, found a vector");
     Numeric if_true = parse_conditional();
-    expect(Symbol::colon, fmt::format("in 'condition ? a : b' (the '?' is at {})", location_of(question).str()));
+    expect(Symbol::colon,
+           fmt::format("in 'condition ? a : b' (the '?' is at {})", location_of(question).str()));
     Numeric if_false = parse_conditional();
     return truth(condition.v[0]) ? if_true : if_false;
 }
@@ -118,10 +124,12 @@ Numeric Parser::parse_logical() {
         const Token& op = peek_operator();
         if (op.is(Symbol::ampersand)) {
             next();
-            result = combine(result, parse_relational(), [](double a, double b) { return double(truth(a) && truth(b)); });
+            result = combine(result, parse_relational(),
+                             [](double a, double b) { return double(truth(a) && truth(b)); });
         } else if (op.is(Symbol::bar)) {
             next();
-            result = combine(result, parse_relational(), [](double a, double b) { return double(truth(a) || truth(b)); });
+            result = combine(result, parse_relational(),
+                             [](double a, double b) { return double(truth(a) || truth(b)); });
         } else {
             return result;
         }
@@ -132,10 +140,13 @@ Numeric Parser::parse_relational() {
     using Compare = double (*)(double, double);
     auto comparison = [](const Token& op) -> Compare {
         if (op.is(Symbol::less)) return [](double a, double b) { return double(a < b); };
-        if (op.is(Symbol::less_equal)) return [](double a, double b) { return double(a <= b || !truth(a - b)); };
+        if (op.is(Symbol::less_equal))
+            return [](double a, double b) { return double(a <= b || !truth(a - b)); };
         if (op.is(Symbol::equals)) return [](double a, double b) { return double(!truth(a - b)); };
-        if (op.is(Symbol::not_equal)) return [](double a, double b) { return double(truth(a - b)); };
-        if (op.is(Symbol::greater_equal)) return [](double a, double b) { return double(a >= b || !truth(a - b)); };
+        if (op.is(Symbol::not_equal))
+            return [](double a, double b) { return double(truth(a - b)); };
+        if (op.is(Symbol::greater_equal))
+            return [](double a, double b) { return double(a >= b || !truth(a - b)); };
         if (op.is(Symbol::greater)) return [](double a, double b) { return double(a > b); };
         return nullptr;
     };
@@ -158,15 +169,16 @@ Numeric Parser::parse_relational() {
     }
 }
 
-
 Numeric Parser::parse_additive_after(Numeric result) {
     for (;;) {
         const Token& op = peek_operator();
         if (!op.is(Symbol::plus) && !op.is(Symbol::minus)) return result;
         const bool add = op.is(Symbol::plus);
         next();
-        result = combine(result, parse_term(), add ? [](double a, double b) { return a + b; }
-                                                   : [](double a, double b) { return a - b; });
+        result = combine(
+            result, parse_term(),
+            add ? [](double a, double b) { return a + b; }
+                : [](double a, double b) { return a - b; });
     }
 }
 
@@ -181,8 +193,10 @@ Numeric Parser::parse_term_after(Numeric result) {
         } else if (op.is(Symbol::slash)) {
             const Token slash = next();
             Numeric divisor = parse_unary();
-            if (result.terms < divisor.terms) result = result.promoted(divisor.terms);
-            else divisor = divisor.promoted(result.terms);
+            if (result.terms < divisor.terms)
+                result = result.promoted(divisor.terms);
+            else
+                divisor = divisor.promoted(result.terms);
             for (int i = 0; i < result.terms; ++i) {
                 if (divisor.v[i] == 0.0) fail(slash, "division by zero");
                 result.v[i] /= divisor.v[i];
@@ -228,8 +242,11 @@ Numeric Parser::parse_primary() {
     if (token.kind == TokenKind::word && is_keyword(token.name)) {
         if (!is_numeric_builtin(token.name)) {
             if (is_colour_keyword(token))
-                fail(token, fmt::format("a colour keyword ('{}') cannot be an operand: write the colour first "
-                                        "(rgb <...> * 0.5) or use a vector", word(token)));
+                fail(token,
+                     fmt::format(
+                         "a colour keyword ('{}') cannot be an operand: write the colour first "
+                         "(rgb <...> * 0.5) or use a vector",
+                         word(token)));
             fail_identifier(token, "a numeric expression");
         }
         next();
@@ -252,13 +269,17 @@ Numeric Parser::parse_numeric_identifier(const Token& token, const Value& value)
     if (const ArrayRef* array = std::get_if<ArrayRef>(&value)) {
         const ArrayRef keep = *array;
         const Value element = *array_element(token, *keep, false);
-        if (!std::holds_alternative<Numeric>(element) && !std::holds_alternative<FunctionRef>(element) &&
+        if (!std::holds_alternative<Numeric>(element) &&
+            !std::holds_alternative<FunctionRef>(element) &&
             !std::holds_alternative<SplineRef>(element))
-            fail(token, fmt::format("wrong type: the elements of '{}' are {}, expected a numeric expression",
-                                    word(token), type_name(element)));
+            fail(token,
+                 fmt::format(
+                     "wrong type: the elements of '{}' are {}, expected a numeric expression",
+                     word(token), type_name(element)));
         return parse_numeric_identifier(token, element);
     }
-    fail(token, fmt::format("wrong type: '{}' is {}, expected a numeric expression", word(token), type_name(value)));
+    fail(token, fmt::format("wrong type: '{}' is {}, expected a numeric expression", word(token),
+                            type_name(value)));
 }
 
 Numeric Parser::parse_postfix(Numeric value) {
@@ -267,19 +288,27 @@ Numeric Parser::parse_postfix(Numeric value) {
     const Token component = next();
     auto is = [&](Keyword k) { return component.is(k); };
     int index = -1;
-    if (is(Keyword::x) || is(Keyword::u) || is(Keyword::red)) index = 0;
-    else if (is(Keyword::y) || is(Keyword::v) || is(Keyword::green)) index = 1;
-    else if (is(Keyword::z) || is(Keyword::blue)) index = 2;
-    else if (is(Keyword::t) || is(Keyword::filter)) index = 3;
-    else if (is(Keyword::transmit)) index = 4;
+    if (is(Keyword::x) || is(Keyword::u) || is(Keyword::red))
+        index = 0;
+    else if (is(Keyword::y) || is(Keyword::v) || is(Keyword::green))
+        index = 1;
+    else if (is(Keyword::z) || is(Keyword::blue))
+        index = 2;
+    else if (is(Keyword::t) || is(Keyword::filter))
+        index = 3;
+    else if (is(Keyword::transmit))
+        index = 4;
     else if (is(Keyword::gray)) {
         // POV-Ray's greyscale weights.
         const Numeric c = value.promoted(3);
         return Numeric::scalar(0.297 * c.v[0] + 0.589 * c.v[1] + 0.114 * c.v[2]);
     }
-    if (index < 0) fail_expected("x, y, z, t, u, v, red, green, blue, filter, transmit or gray after '.'", component);
+    if (index < 0)
+        fail_expected("x, y, z, t, u, v, red, green, blue, filter, transmit or gray after '.'",
+                      component);
     if (index >= value.terms)
-        fail(dot, fmt::format("'.{}' needs at least {} terms, the value has {}", word(component), index + 1, value.terms));
+        fail(dot, fmt::format("'.{}' needs at least {} terms, the value has {}", word(component),
+                              index + 1, value.terms));
     return Numeric::scalar(value.v[index]);
 }
 
@@ -290,17 +319,20 @@ Numeric Parser::parse_vector_literal(const Token& open) {
         const Token start = peek();
         const Numeric component = parse_numeric();
         if (component.terms != 1)
-            fail(start, fmt::format("expected a float as component {} of the vector, found {}", result.terms + 1,
-                                    component.terms <= 3 ? "a vector" : "a colour"));
+            fail(start,
+                 fmt::format("expected a float as component {} of the vector, found {}",
+                             result.terms + 1, component.terms <= 3 ? "a vector" : "a colour"));
         result.v[result.terms++] = component.v[0];
         accept_comma();
         if (peek_is(Symbol::greater)) break;
         if (result.terms == 5)
-            fail_expected(fmt::format("'>' to close the vector opened at {} (5 terms at most)", location_of(open).str()),
+            fail_expected(fmt::format("'>' to close the vector opened at {} (5 terms at most)",
+                                      location_of(open).str()),
                           peek());
         if (!starts_expression(peek()))
             fail_expected(fmt::format("a vector component or '>' to close the vector opened at {}",
-                                      location_of(open).str()), peek());
+                                      location_of(open).str()),
+                          peek());
     }
     const Token close = next();
     if (result.terms < 2) fail(close, "a vector needs at least 2 components");
@@ -325,7 +357,8 @@ int Parser::parse_int(Purpose purpose, int minimum) {
         fail(start, fmt::format("expected an integer {}, found {}", purpose.str(), value));
     const int truncated = static_cast<int>(std::trunc(value));  // POV-Ray rounds toward zero too
     if (truncated < minimum)
-        fail(start, fmt::format("expected an integer >= {} {}, found {}", minimum, purpose.str(), value));
+        fail(start,
+             fmt::format("expected an integer >= {} {}, found {}", minimum, purpose.str(), value));
     return truncated;
 }
 
@@ -335,8 +368,10 @@ Numeric Parser::parse_vector_terms(int terms) {
     const Token start = peek();
     const Numeric n = parse_numeric();
     if (n.terms > terms)
-        fail(start, fmt::format("expected {} terms, found {}", terms == 3 ? "a vector (3" : fmt::format("{}", terms),
-                                n.terms == 5 ? "a colour (5 terms)" : fmt::format("{} terms", n.terms)));
+        fail(start,
+             fmt::format("expected {} terms, found {}",
+                         terms == 3 ? "a vector (3" : fmt::format("{}", terms),
+                         n.terms == 5 ? "a colour (5 terms)" : fmt::format("{} terms", n.terms)));
     return n.promoted(terms);
 }
 
@@ -345,7 +380,9 @@ bool Parser::parse_optional_bool() {
     return truth(parse_float());
 }
 
-bool Parser::starts_colour(const Token& token) { return is_colour_keyword(token) || starts_expression(token); }
+bool Parser::starts_colour(const Token& token) {
+    return is_colour_keyword(token) || starts_expression(token);
+}
 
 // [color|colour] then one of: rgb/rgbf/rgbt/rgbft/srgb... with an expression; an expression
 // (a colour identifier, or a float that fills all five terms); then any of red, green, blue,
@@ -356,8 +393,8 @@ Colour Parser::parse_colour() {
     Numeric c{{0, 0, 0, 0, 0}, 5};
     bool started = false;
     const Token& first = peek();
-    const bool srgb = first.is(Keyword::srgb) || first.is(Keyword::srgbf) || first.is(Keyword::srgbt) ||
-                      first.is(Keyword::srgbft);
+    const bool srgb = first.is(Keyword::srgb) || first.is(Keyword::srgbf) ||
+                      first.is(Keyword::srgbt) || first.is(Keyword::srgbft);
     const bool rgb = first.is(Keyword::rgb) || first.is(Keyword::rgbf) || first.is(Keyword::rgbt) ||
                      first.is(Keyword::rgbft);
     if (rgb || srgb) {
@@ -366,7 +403,9 @@ Colour Parser::parse_colour() {
         const std::string suffix = w.substr(srgb ? 4 : 3);  // "", "f", "t" or "ft"
         const int terms = 3 + static_cast<int>(suffix.size());
         if (srgb && !scene_.global.assumed_gamma_set)
-            fail(model, fmt::format("'{}' colours need global_settings {{ assumed_gamma ... }} first (as in POV-Ray)", w));
+            fail(model, fmt::format("'{}' colours need global_settings {{ assumed_gamma ... }} "
+                                    "first (as in POV-Ray)",
+                                    w));
         // A value of more terms than the keyword names keeps them all (POV-Ray: `rgb C` of a
         // five-term colour C keeps its filter and transmit).
         const Numeric e = parse_numeric();
@@ -384,11 +423,16 @@ Colour Parser::parse_colour() {
     for (;;) {
         const Token token = peek();
         int index = -1;
-        if (token.is(Keyword::red)) index = 0;
-        else if (token.is(Keyword::green)) index = 1;
-        else if (token.is(Keyword::blue)) index = 2;
-        else if (token.is(Keyword::filter)) index = 3;
-        else if (token.is(Keyword::transmit)) index = 4;
+        if (token.is(Keyword::red))
+            index = 0;
+        else if (token.is(Keyword::green))
+            index = 1;
+        else if (token.is(Keyword::blue))
+            index = 2;
+        else if (token.is(Keyword::filter))
+            index = 3;
+        else if (token.is(Keyword::transmit))
+            index = 4;
         if (index < 0) break;
         next();
         c.v[index] = parse_float(fmt::format("after '{}'", word(token)));

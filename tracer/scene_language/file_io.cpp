@@ -45,9 +45,11 @@ int binary_word_size(const Token& token) {
 
 // The value rounded to the nearest integer of the word's range, in its byte order.
 std::string binary_word(Keyword type, int bytes, double value) {
-    const bool is_signed = type == Keyword::sint8 || type == Keyword::sint16be || type == Keyword::sint16le ||
-                           type == Keyword::sint32be || type == Keyword::sint32le;
-    const bool big_endian = type == Keyword::uint16be || type == Keyword::sint16be || type == Keyword::sint32be;
+    const bool is_signed = type == Keyword::sint8 || type == Keyword::sint16be ||
+                           type == Keyword::sint16le || type == Keyword::sint32be ||
+                           type == Keyword::sint32le;
+    const bool big_endian =
+        type == Keyword::uint16be || type == Keyword::sint16be || type == Keyword::sint32be;
     const double range = std::ldexp(1.0, 8 * bytes);
     const double low = is_signed ? -range / 2 : 0, high = is_signed ? range / 2 - 1 : range - 1;
     const auto word = static_cast<int64_t>(std::clamp(std::round(value), low, high));
@@ -68,7 +70,8 @@ std::string Parser::resolve_file(const std::string& name, const Token& at, const
     auto add = [&](const fs::path& folder) {
         candidates.push_back(folder / given);
         if (given.extension().empty())
-            for (const char* extension : extensions) candidates.push_back(folder / (name + extension));
+            for (const char* extension : extensions)
+                candidates.push_back(folder / (name + extension));
     };
     if (given.is_absolute()) {
         add(fs::path());
@@ -89,7 +92,8 @@ std::string Parser::resolve_file(const std::string& name, const Token& at, const
             if (within(found, fs::path(folder))) return real.string();
         std::string roots;
         for (const std::string& root : allowed_roots_) roots += (roots.empty() ? "" : ", ") + root;
-        fail(at, fmt::format("{} \"{}\" resolves to {}, outside the allowed roots ({})", what, name, real.string(), roots));
+        fail(at, fmt::format("{} \"{}\" resolves to {}, outside the allowed roots ({})", what, name,
+                             real.string(), roots));
     }
     std::string searched;
     for (const fs::path& candidate : candidates)
@@ -109,12 +113,15 @@ void Parser::directive_fopen(const Token& directive) {
         // A file the scene wrote itself is read back from where it was written.
         const fs::path written = fs::weakly_canonical(fs::current_path() / name);
         bool in_write_root = false;
-        for (const std::string& root : write_roots_) in_write_root = in_write_root || within(written, fs::path(root));
+        for (const std::string& root : write_roots_)
+            in_write_root = in_write_root || within(written, fs::path(root));
         std::error_code error;
-        file->path = in_write_root && fs::is_regular_file(written, error) ? written.string()
-                                                                          : resolve_file(name, name_token, "#fopen file");
+        file->path = in_write_root && fs::is_regular_file(written, error)
+                         ? written.string()
+                         : resolve_file(name, name_token, "#fopen file");
         std::ifstream in(file->path, std::ios::binary);
-        if (!in) fail(name_token, fmt::format("#fopen: \"{}\" cannot be read ({})", name, file->path));
+        if (!in)
+            fail(name_token, fmt::format("#fopen: \"{}\" cannot be read ({})", name, file->path));
         std::ostringstream text;
         text << in.rdbuf();
         file->read_tokens = std::make_shared<SourceFile>();
@@ -126,19 +133,26 @@ void Parser::directive_fopen(const Token& directive) {
     } else if (mode.is(Keyword::write) || mode.is(Keyword::append)) {
         const fs::path given(name);
         // Relative to the working directory, as POV-Ray writes.
-        const fs::path target = fs::weakly_canonical(given.is_absolute() ? given : fs::current_path() / given);
+        const fs::path target =
+            fs::weakly_canonical(given.is_absolute() ? given : fs::current_path() / given);
         bool allowed = false;
-        for (const std::string& root : write_roots_) allowed = allowed || within(target, fs::path(root));
+        for (const std::string& root : write_roots_)
+            allowed = allowed || within(target, fs::path(root));
         if (!allowed)
-            fail(name_token, fmt::format("#fopen \"{}\" for {}: writing files is not allowed {} (raytrace --allow-write "
-                                         "DIR, or ParseOptions::write_roots)", name, word(mode),
-                                         write_roots_.empty() ? "unless a folder is given for it" :
-                                                                "outside the folders given for it"));
+            fail(
+                name_token,
+                fmt::format(
+                    "#fopen \"{}\" for {}: writing files is not allowed {} (raytrace --allow-write "
+                    "DIR, or ParseOptions::write_roots)",
+                    name, word(mode),
+                    write_roots_.empty() ? "unless a folder is given for it"
+                                         : "outside the folders given for it"));
         file->path = target.string();
         file->writing = true;
         file->stream = std::fopen(file->path.c_str(), mode.is(Keyword::write) ? "wb" : "ab");
         if (!file->stream)
-            fail(name_token, fmt::format("#fopen: \"{}\" cannot be opened for writing ({})", name, file->path));
+            fail(name_token,
+                 fmt::format("#fopen: \"{}\" cannot be opened for writing ({})", name, file->path));
     } else {
         fail_expected("read, write or append after the file name of #fopen", mode);
     }
@@ -165,7 +179,8 @@ void Parser::directive_read(const Token& directive) {
     if (!symbol || !std::holds_alternative<FileRef>(symbol->value))
         fail_expected("a file handle opened by #fopen ... read", handle);
     const FileRef file = std::get<FileRef>(symbol->value);
-    if (file->writing) fail(handle, fmt::format("#read from a file opened for writing ({})", file->path));
+    if (file->writing)
+        fail(handle, fmt::format("#read from a file opened for writing ({})", file->path));
     const std::vector<Token>& data = file->read_tokens->tokens;
     auto take = [&]() -> const Token& { return data[file->read_position++]; };
     auto at_end = [&] { return data[file->read_position].kind == TokenKind::end; };
@@ -178,7 +193,8 @@ void Parser::directive_read(const Token& directive) {
             token = take();
         }
         if (token.kind != TokenKind::number)
-            fail(token, fmt::format("#read: expected a number in {}, found {}", file->path, describe(token)));
+            fail(token, fmt::format("#read: expected a number in {}, found {}", file->path,
+                                    describe(token)));
         return sign * token.number;
     };
     // The file closes, undefining its handle, when a read meets its end: after an item with no
@@ -201,20 +217,26 @@ void Parser::directive_read(const Token& directive) {
             Numeric vector;
             vector.terms = 0;
             for (;;) {
-                if (vector.terms == 5) fail(first, fmt::format("#read: a vector of more than 5 terms in {}", file->path));
+                if (vector.terms == 5)
+                    fail(first,
+                         fmt::format("#read: a vector of more than 5 terms in {}", file->path));
                 vector.v[vector.terms++] = read_number(take());
                 const Token separator = take();
                 if (separator.is(Symbol::greater)) break;
                 if (!separator.is(Symbol::comma))
-                    fail(separator, fmt::format("#read: expected ',' or '>' in a vector in {}", file->path));
+                    fail(separator,
+                         fmt::format("#read: expected ',' or '>' in a vector in {}", file->path));
             }
-            if (vector.terms < 2) fail(first, fmt::format("#read: a vector needs 2 terms or more in {}", file->path));
+            if (vector.terms < 2)
+                fail(first, fmt::format("#read: a vector needs 2 terms or more in {}", file->path));
             value = vector;
         } else {
             value = Numeric::scalar(read_number(first));
         }
-        if (data[file->read_position].is(Symbol::comma)) ++file->read_position;
-        else ended = at_end();
+        if (data[file->read_position].is(Symbol::comma))
+            ++file->read_position;
+        else
+            ended = at_end();
         const SymbolRef existing = lookup(variable.name);
         if (existing && existing->value.index() != value.index())
             fail(variable, fmt::format("#read: '{}' is {}, the file gives {}", word(variable),
@@ -222,8 +244,7 @@ void Parser::directive_read(const Token& directive) {
         assign(variable, variable.name, std::move(value), false);
     }
     expect(Symbol::rparen, "to close #read(");
-    if (ended)
-        symbols_.unbind_everywhere(handle.name);
+    if (ended) symbols_.unbind_everywhere(handle.name);
     (void)directive;
 }
 
@@ -234,7 +255,8 @@ void Parser::directive_write(const Token& directive) {
     if (!symbol || !std::holds_alternative<FileRef>(symbol->value))
         fail_expected("a file handle opened by #fopen ... write", handle);
     const FileRef file = std::get<FileRef>(symbol->value);
-    if (!file->writing) fail(handle, fmt::format("#write to a file opened for reading ({})", file->path));
+    if (!file->writing)
+        fail(handle, fmt::format("#write to a file opened for reading ({})", file->path));
     std::string text;
     // Commas between the items are optional, as POV-Ray reads them (#write (F Header)).
     for (accept_comma(); !peek_is(Symbol::rparen); accept_comma()) {
@@ -253,7 +275,8 @@ void Parser::directive_write(const Token& directive) {
             text += fmt::format("{}", fmt::sprintf("%g", value.v[0]));
         } else {
             text += "<";
-            for (int i = 0; i < value.terms; ++i) text += (i ? "," : "") + fmt::sprintf("%g", value.v[i]);
+            for (int i = 0; i < value.terms; ++i)
+                text += (i ? "," : "") + fmt::sprintf("%g", value.v[i]);
             text += "> ";
         }
     }

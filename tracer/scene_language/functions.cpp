@@ -33,10 +33,11 @@ struct Builtin {
 };
 // The float functions a function body may call (reference manual 3.3.1.8).
 constexpr std::array<Builtin, 27> kBuiltins{{
-    {"abs", 1}, {"acos", 1}, {"acosh", 1}, {"asin", 1}, {"asinh", 1}, {"atan", 1}, {"atan2", 2},
-    {"atanh", 1}, {"ceil", 1}, {"cos", 1}, {"cosh", 1}, {"degrees", 1}, {"exp", 1}, {"floor", 1},
-    {"int", 1}, {"ln", 1}, {"log", 1}, {"max", -2}, {"min", -2}, {"mod", 2}, {"pow", 2},
-    {"radians", 1}, {"sin", 1}, {"sinh", 1}, {"sqrt", 1}, {"tan", 1}, {"tanh", 1},
+    {"abs", 1},   {"acos", 1},  {"acosh", 1}, {"asin", 1},    {"asinh", 1}, {"atan", 1},
+    {"atan2", 2}, {"atanh", 1}, {"ceil", 1},  {"cos", 1},     {"cosh", 1},  {"degrees", 1},
+    {"exp", 1},   {"floor", 1}, {"int", 1},   {"ln", 1},      {"log", 1},   {"max", -2},
+    {"min", -2},  {"mod", 2},   {"pow", 2},   {"radians", 1}, {"sin", 1},   {"sinh", 1},
+    {"sqrt", 1},  {"tan", 1},   {"tanh", 1},
 }};
 
 double call_builtin(int index, const double* a, int count) {
@@ -106,8 +107,12 @@ double UserFunction::run(const Instruction* begin, const Instruction* end, const
             case Op::not_equal: --top, stack[top - 1] = truth(stack[top - 1] - stack[top]); break;
             case Op::greater_equal: --top, stack[top - 1] = stack[top - 1] >= stack[top]; break;
             case Op::greater: --top, stack[top - 1] = stack[top - 1] > stack[top]; break;
-            case Op::logical_and: --top, stack[top - 1] = truth(stack[top - 1]) && truth(stack[top]); break;
-            case Op::logical_or: --top, stack[top - 1] = truth(stack[top - 1]) || truth(stack[top]); break;
+            case Op::logical_and:
+                --top, stack[top - 1] = truth(stack[top - 1]) && truth(stack[top]);
+                break;
+            case Op::logical_or:
+                --top, stack[top - 1] = truth(stack[top - 1]) || truth(stack[top]);
+                break;
             case Op::call_builtin:
                 top -= in->argument_count;
                 stack[top] = call_builtin(in->index, &stack[top], in->argument_count);
@@ -120,8 +125,9 @@ double UserFunction::run(const Instruction* begin, const Instruction* end, const
                     stack[top] = callee.evaluate_float(&stack[top]);
                 } else {
                     const Numeric r = callee.evaluate(&stack[top]);
-                    stack[top] = in->component == -2 ? 0.297 * r.v[0] + 0.589 * r.v[1] + 0.114 * r.v[2]
-                                                     : r.v[in->component];
+                    stack[top] = in->component == -2
+                                     ? 0.297 * r.v[0] + 0.589 * r.v[1] + 0.114 * r.v[2]
+                                     : r.v[in->component];
                 }
                 ++top;
                 break;
@@ -132,7 +138,9 @@ double UserFunction::run(const Instruction* begin, const Instruction* end, const
                 break;
             case Op::select4:
                 top -= 3;
-                stack[top - 1] = stack[top - 1] < 0 ? stack[top] : stack[top - 1] == 0 ? stack[top + 1] : stack[top + 2];
+                stack[top - 1] = stack[top - 1] < 0    ? stack[top]
+                                 : stack[top - 1] == 0 ? stack[top + 1]
+                                                       : stack[top + 2];
                 break;
             case Op::sum:
             case Op::product: {
@@ -168,7 +176,8 @@ Numeric UserFunction::evaluate(const double* arguments) const {
         case Kind::internal: {
             double result = 0;
             if (!evaluate_internal_function(internal_number_, arguments, result))
-                throw FunctionNotSupported(fmt::format("internal function {} ({})", internal_number_,
+                throw FunctionNotSupported(fmt::format("internal function {} ({})",
+                                                       internal_number_,
                                                        internal_function_name(internal_number_)));
             return Numeric::scalar(result);
         }
@@ -201,7 +210,8 @@ public:
 
     void compile() {
         expression();
-        if (max_depth_ > kMaxStack) p_.fail(p_.peek(), "function too deep to evaluate (simplify the expression)");
+        if (max_depth_ > kMaxStack)
+            p_.fail(p_.peek(), "function too deep to evaluate (simplify the expression)");
     }
 
 private:
@@ -214,12 +224,16 @@ private:
         f_.code_.push_back(in);
         // Stack depth bookkeeping for the depth check.
         switch (op) {
-            case Op::constant: case Op::parameter: case Op::local: ++depth_; break;
+            case Op::constant:
+            case Op::parameter:
+            case Op::local: ++depth_; break;
             case Op::negate: break;
-            case Op::call_builtin: case Op::call_function: depth_ -= argument_count - 1; break;
+            case Op::call_builtin:
+            case Op::call_function: depth_ -= argument_count - 1; break;
             case Op::select3: depth_ -= 2; break;
             case Op::select4: depth_ -= 3; break;
-            case Op::sum: case Op::product: depth_ -= 1; break;
+            case Op::sum:
+            case Op::product: depth_ -= 1; break;
             default: --depth_; break;
         }
         max_depth_ = std::max(max_depth_, depth_);
@@ -243,13 +257,20 @@ private:
         for (;;) {
             const Token& op = p_.peek();
             Op code;
-            if (op.is(Symbol::less)) code = Op::less;
-            else if (op.is(Symbol::less_equal)) code = Op::less_equal;
-            else if (op.is(Symbol::equals)) code = Op::equal;
-            else if (op.is(Symbol::not_equal)) code = Op::not_equal;
-            else if (op.is(Symbol::greater_equal)) code = Op::greater_equal;
-            else if (op.is(Symbol::greater)) code = Op::greater;
-            else return;
+            if (op.is(Symbol::less))
+                code = Op::less;
+            else if (op.is(Symbol::less_equal))
+                code = Op::less_equal;
+            else if (op.is(Symbol::equals))
+                code = Op::equal;
+            else if (op.is(Symbol::not_equal))
+                code = Op::not_equal;
+            else if (op.is(Symbol::greater_equal))
+                code = Op::greater_equal;
+            else if (op.is(Symbol::greater))
+                code = Op::greater;
+            else
+                return;
             p_.next();
             additive();
             emit(code);
@@ -258,17 +279,23 @@ private:
     void additive() {
         term();
         for (;;) {
-            if (p_.accept(Symbol::plus)) term(), emit(Op::add);
-            else if (p_.accept(Symbol::minus)) term(), emit(Op::subtract);
-            else return;
+            if (p_.accept(Symbol::plus))
+                term(), emit(Op::add);
+            else if (p_.accept(Symbol::minus))
+                term(), emit(Op::subtract);
+            else
+                return;
         }
     }
     void term() {
         unary();
         for (;;) {
-            if (p_.accept(Symbol::star)) unary(), emit(Op::multiply);
-            else if (p_.accept(Symbol::slash)) unary(), emit(Op::divide);
-            else return;
+            if (p_.accept(Symbol::star))
+                unary(), emit(Op::multiply);
+            else if (p_.accept(Symbol::slash))
+                unary(), emit(Op::divide);
+            else
+                return;
         }
     }
     void unary() {
@@ -308,23 +335,34 @@ private:
                 ++count;
             } while (p_.accept(Symbol::comma));
         }
-        p_.expect(Symbol::rparen, fmt::format("to close '{}(' opened at {}", p_.word(name), p_.location_of(open).str()));
+        p_.expect(Symbol::rparen, fmt::format("to close '{}(' opened at {}", p_.word(name),
+                                              p_.location_of(open).str()));
         return count;
     }
 
     // .x .y .z .t .u .v .red .green .blue .filter .transmit .gray after a vector result.
     int component(int terms) {
-        const Token dot = p_.expect(Symbol::dot, "and a component (.x, .red, .gray ...) after a vector-valued function");
+        const Token dot = p_.expect(
+            Symbol::dot, "and a component (.x, .red, .gray ...) after a vector-valued function");
         const Token c = p_.next();
         int index = -1;
-        if (c.is(Keyword::x) || c.is(Keyword::u) || c.is(Keyword::red)) index = 0;
-        else if (c.is(Keyword::y) || c.is(Keyword::v) || c.is(Keyword::green)) index = 1;
-        else if (c.is(Keyword::z) || c.is(Keyword::blue)) index = 2;
-        else if (c.is(Keyword::t) || c.is(Keyword::filter)) index = 3;
-        else if (c.is(Keyword::transmit)) index = 4;
-        else if (c.is(Keyword::gray)) return -2;
-        if (index < 0) p_.fail_expected("x, y, z, t, u, v, red, green, blue, filter, transmit or gray after '.'", c);
-        if (index >= terms) p_.fail(dot, fmt::format("'.{}' of a {}-term result", p_.word(c), terms));
+        if (c.is(Keyword::x) || c.is(Keyword::u) || c.is(Keyword::red))
+            index = 0;
+        else if (c.is(Keyword::y) || c.is(Keyword::v) || c.is(Keyword::green))
+            index = 1;
+        else if (c.is(Keyword::z) || c.is(Keyword::blue))
+            index = 2;
+        else if (c.is(Keyword::t) || c.is(Keyword::filter))
+            index = 3;
+        else if (c.is(Keyword::transmit))
+            index = 4;
+        else if (c.is(Keyword::gray))
+            return -2;
+        if (index < 0)
+            p_.fail_expected(
+                "x, y, z, t, u, v, red, green, blue, filter, transmit or gray after '.'", c);
+        if (index >= terms)
+            p_.fail(dot, fmt::format("'.{}' of a {}-term result", p_.word(c), terms));
         return index;
     }
 
@@ -332,7 +370,8 @@ private:
         const int count = arguments(name);
         if (count != callee->parameter_count())
             p_.fail(name, fmt::format("function '{}' takes {} argument{}, found {}", p_.word(name),
-                                      callee->parameter_count(), callee->parameter_count() == 1 ? "" : "s", count));
+                                      callee->parameter_count(),
+                                      callee->parameter_count() == 1 ? "" : "s", count));
         f_.callees_.push_back(callee);
         const int index = static_cast<int>(f_.callees_.size() - 1);
         const int terms = callee->result_terms();
@@ -343,13 +382,15 @@ private:
     void loop(const Token& name) {
         const Token open = p_.expect(Symbol::lparen, fmt::format("after '{}'", p_.word(name)));
         const Token variable = p_.next();
-        if (variable.kind != TokenKind::word) p_.fail_expected(fmt::format("the variable of '{}'", p_.word(name)), variable);
+        if (variable.kind != TokenKind::word)
+            p_.fail_expected(fmt::format("the variable of '{}'", p_.word(name)), variable);
         p_.expect(Symbol::comma, fmt::format("after the variable of '{}'", p_.word(name)));
         expression();
         p_.expect(Symbol::comma, fmt::format("after the first value of '{}'", p_.word(name)));
         expression();
         p_.expect(Symbol::comma, fmt::format("after the last value of '{}'", p_.word(name)));
-        if (locals_.size() >= 56) p_.fail(name, "more than 56 nested sum/prod loops (POV-Ray's limit)");
+        if (locals_.size() >= 56)
+            p_.fail(name, "more than 56 nested sum/prod loops (POV-Ray's limit)");
         locals_.push_back(variable.name);
         const int slot = static_cast<int>(locals_.size() - 1);
         f_.local_count_ = std::max(f_.local_count_, slot + 1);
@@ -361,7 +402,8 @@ private:
         depth_ = saved_depth;
         f_.code_[loop_at].length = static_cast<int32_t>(f_.code_.size() - loop_at - 1);
         locals_.pop_back();
-        p_.expect(Symbol::rparen, fmt::format("to close '{}(' opened at {}", p_.word(name), p_.location_of(open).str()));
+        p_.expect(Symbol::rparen, fmt::format("to close '{}(' opened at {}", p_.word(name),
+                                              p_.location_of(open).str()));
     }
 
     void primary() {
@@ -374,10 +416,12 @@ private:
         if (token.is(Symbol::lparen)) {
             p_.next();
             expression();
-            p_.expect(Symbol::rparen, fmt::format("to close '(' opened at {}", p_.location_of(token).str()));
+            p_.expect(Symbol::rparen,
+                      fmt::format("to close '(' opened at {}", p_.location_of(token).str()));
             return;
         }
-        if (token.kind != TokenKind::word) p_.fail_expected("a number, a parameter or a function call", token);
+        if (token.kind != TokenKind::word)
+            p_.fail_expected("a number, a parameter or a function call", token);
         if (const int local = local_index(token.name); local >= 0) {
             p_.next();
             return emit(Op::local, local);
@@ -389,17 +433,22 @@ private:
         if (is_keyword(token.name)) return keyword(token);
         const Value* value = p_.peek_value();
         if (!value)
-            p_.fail(token, fmt::format("unknown identifier '{}' in a function (not a parameter, and not declared; "
-                                       "internal functions need #include \"functions.inc\")", p_.word(token)));
+            p_.fail(token,
+                    fmt::format(
+                        "unknown identifier '{}' in a function (not a parameter, and not declared; "
+                        "internal functions need #include \"functions.inc\")",
+                        p_.word(token)));
         const Value held = *value;
         p_.next();
-        if (const FunctionRef* callee = std::get_if<FunctionRef>(&held)) return call(token, *callee);
+        if (const FunctionRef* callee = std::get_if<FunctionRef>(&held))
+            return call(token, *callee);
         if (const Numeric* n = std::get_if<Numeric>(&held)) {
             if (n->terms == 1) return constant(n->v[0]);
             return constant(n->v[component(n->terms)]);
         }
-        p_.fail(token, fmt::format("wrong type: '{}' is {}; a function may use floats and functions",
-                                   p_.word(token), type_name(held)));
+        p_.fail(token,
+                fmt::format("wrong type: '{}' is {}; a function may use floats and functions",
+                            p_.word(token), type_name(held)));
     }
 
     void keyword(const Token& token) {
@@ -411,7 +460,8 @@ private:
         if (token.is(Keyword::select)) {
             p_.next();
             const int count = arguments(token);
-            if (count != 3 && count != 4) p_.fail(token, fmt::format("'select' takes 3 or 4 arguments, found {}", count));
+            if (count != 3 && count != 4)
+                p_.fail(token, fmt::format("'select' takes 3 or 4 arguments, found {}", count));
             return emit(count == 3 ? Op::select3 : Op::select4);
         }
         if (const int builtin = function_builtin_index(name); builtin >= 0) {
@@ -420,16 +470,21 @@ private:
             const int arity = kBuiltins[static_cast<size_t>(builtin)].arity;
             if ((arity > 0 && count != arity) || (arity == -2 && count < 2))
                 p_.fail(token, fmt::format("'{}' takes {} argument{}, found {}", name,
-                                           arity == -2 ? "2 or more" : std::to_string(arity), arity == 1 ? "" : "s", count));
+                                           arity == -2 ? "2 or more" : std::to_string(arity),
+                                           arity == 1 ? "" : "s", count));
             return emit(Op::call_builtin, builtin, count);
         }
         // Constants and built-in variables (pi, true, clock, image_width ...) as their value now.
-        if (Numeric n; p_.builtin_constant(token, n) && n.terms == 1) {
+        if (const std::optional<Numeric> n = p_.builtin_constant(token); n && n->terms == 1) {
             p_.next();
-            return constant(n.v[0]);
+            return constant(n->v[0]);
         }
-        p_.fail(token, fmt::format("'{}' cannot be used in a function (not a parameter of this function, nor one of "
-                                   "the functions a function may call)", name));
+        p_.fail(
+            token,
+            fmt::format(
+                "'{}' cannot be used in a function (not a parameter of this function, nor one of "
+                "the functions a function may call)",
+                name));
     }
 
     Parser& p_;
@@ -452,14 +507,18 @@ FunctionRef Parser::parse_function(const Token& keyword) {
             const Token name = next();
             const bool axis = name.is(Keyword::x) || name.is(Keyword::y) || name.is(Keyword::z) ||
                               name.is(Keyword::u) || name.is(Keyword::v);
-            if (!name.is_identifier() && !axis) fail_expected("a parameter name (an identifier, or x, y, z, u, v)", name);
+            if (!name.is_identifier() && !axis)
+                fail_expected("a parameter name (an identifier, or x, y, z, u, v)", name);
             for (NameId earlier : parameters)
-                if (earlier == name.name) fail(name, fmt::format("parameter '{}' appears twice", word(name)));
+                if (earlier == name.name)
+                    fail(name, fmt::format("parameter '{}' appears twice", word(name)));
             parameters.push_back(name.name);
         } while (accept(Symbol::comma));
-        expect(Symbol::rparen, fmt::format("to close the parameters opened at {}", location_of(open).str()));
+        expect(Symbol::rparen,
+               fmt::format("to close the parameters opened at {}", location_of(open).str()));
         if (parameters.size() > static_cast<size_t>(kMaxParameters))
-            fail(open, fmt::format("a function takes at most {} parameters (POV-Ray's limit)", kMaxParameters));
+            fail(open, fmt::format("a function takes at most {} parameters (POV-Ray's limit)",
+                                   kMaxParameters));
     }
     const Token open = expect_open(keyword);
     const Token first = peek();
@@ -500,7 +559,8 @@ FunctionRef Parser::parse_function(const Token& keyword) {
         FunctionCompiler(*this, *function, parameters).compile();
         if (function->code_.empty()) fail_expected("the function's expression", first);
     }
-    if (explicit_parameters && function->kind_ != Kind::expression && function->kind_ != Kind::internal)
+    if (explicit_parameters && function->kind_ != Kind::expression &&
+        function->kind_ != Kind::internal)
         fail(open, "a pattern, pigment, transform or spline function takes no parameter list");
     expect_close(keyword, open);
     return function;
@@ -511,12 +571,15 @@ Numeric Parser::call_function(const Token& name, const UserFunction& function) {
     std::vector<double> arguments;
     if (!peek_is(Symbol::rparen)) {
         do {
-            arguments.push_back(parse_float(fmt::format("as an argument of function '{}'", word(name))));
+            arguments.push_back(
+                parse_float(fmt::format("as an argument of function '{}'", word(name))));
         } while (accept(Symbol::comma));
     }
-    expect(Symbol::rparen, fmt::format("to close the call of '{}' opened at {}", word(name), location_of(open).str()));
+    expect(Symbol::rparen, fmt::format("to close the call of '{}' opened at {}", word(name),
+                                       location_of(open).str()));
     if (static_cast<int>(arguments.size()) != function.parameter_count())
-        fail(name, fmt::format("function '{}' takes {} argument{}, found {}", word(name), function.parameter_count(),
+        fail(name, fmt::format("function '{}' takes {} argument{}, found {}", word(name),
+                               function.parameter_count(),
                                function.parameter_count() == 1 ? "" : "s", arguments.size()));
     try {
         return function.evaluate(arguments.data());

@@ -39,22 +39,42 @@ public:
 
     // The stack machine's instructions (public for the compiler in functions.cpp).
     enum class Op : uint8_t {
-        constant, parameter, local, negate, add, subtract, multiply, divide, less, less_equal,
-        equal, not_equal, greater_equal, greater, logical_and, logical_or, call_builtin, call_function,
-        select3, select4, sum, product
+        constant,
+        parameter,
+        local,
+        negate,
+        add,
+        subtract,
+        multiply,
+        divide,
+        less,
+        less_equal,
+        equal,
+        not_equal,
+        greater_equal,
+        greater,
+        logical_and,
+        logical_or,
+        call_builtin,
+        call_function,
+        select3,
+        select4,
+        sum,
+        product
     };
     struct Instruction {
         Op op;
         uint8_t argument_count = 0;  // calls
-        int16_t component = -1;      // call_function: the term taken from a vector result (-2: gray)
-        int32_t index = 0;           // constant, parameter, local, builtin, function, loop variable
-        int32_t length = 0;          // sum / product: instructions in the loop body that follows
+        int16_t component = -1;  // call_function: the term taken from a vector result (-2: gray)
+        int32_t index = 0;       // constant, parameter, local, builtin, function, loop variable
+        int32_t length = 0;      // sum / product: instructions in the loop body that follows
     };
 
 private:
     friend class FunctionCompiler;
     friend class Parser;
-    double run(const Instruction* begin, const Instruction* end, const double* parameters, double* locals) const;
+    double run(const Instruction* begin, const Instruction* end, const double* parameters,
+               double* locals) const;
 
     Kind kind_ = Kind::expression;
     int parameter_count_ = 3;

@@ -26,7 +26,8 @@ void add_to_scene(Parser& parser, const ObjectRef& object);
 // answer for this kind of object; the caller reports that as not supported.
 bool object_bounding_box(const ObjectNode& object, Vec3& minimum, Vec3& maximum);
 bool object_inside(const ObjectNode& object, Vec3 point, bool& inside);
-bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& hit, Vec3& normal, bool& found);
+bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& hit, Vec3& normal,
+                  bool& found);
 
 // ---- appearance
 // An object modifier about appearance (texture, pigment, normal, finish, interior,
@@ -42,7 +43,8 @@ void inherit_appearance(ObjectAppearance& inner, const ObjectAppearance& outer);
 ObjectAppearance scene_default_appearance(Parser& parser);
 // `above` layered over `below` (#declare T = texture { } texture { }), with POV-Ray's rules:
 // patterned textures cannot be layers.
-TextureRef layer_textures(Parser& parser, const Token& at, const TextureRef& below, const TextureRef& above);
+TextureRef layer_textures(Parser& parser, const Token& at, const TextureRef& below,
+                          const TextureRef& above);
 TextureRef parse_texture(Parser& parser, const Token& keyword);
 PigmentRef parse_pigment(Parser& parser, const Token& keyword);
 NormalRef parse_normal(Parser& parser, const Token& keyword);
@@ -60,8 +62,8 @@ TextureMapRef parse_texture_map(Parser& parser, const Token& keyword);
 DensityMapRef parse_density_map(Parser& parser, const Token& keyword);
 void parse_default(Parser& parser, const Token& directive);  // after #default
 // An image file of POV-Ray type `type` (png, jpeg, ...), also tried with that type's extension.
-std::string resolve_image_file(Parser& parser, const std::string& name, const Token& at, const std::string& type,
-                               const std::string& what);
+std::string resolve_image_file(Parser& parser, const std::string& name, const Token& at,
+                               const std::string& type, const std::string& what);
 // `function { pattern { PATTERN } }`: after `pattern`.
 std::shared_ptr<const Pattern> parse_function_pattern(Parser& parser, const Token& keyword);
 // A pattern's value or a pigment's colour at a point, for pattern and pigment functions;

@@ -54,17 +54,26 @@ bool parse_fog_key(Parser& p, const Token& token, Fog& fog) {
 // Rainbow keys (`token` just taken); false for anything else.
 bool parse_rainbow_key(Parser& p, const Token& token, Rainbow& rainbow) {
     const std::string after = fmt::format("after '{}'", p.word(token));
-    if (token.is(Keyword::direction)) rainbow.direction = p.parse_vector();
-    else if (token.is(Keyword::angle)) rainbow.angle = p.parse_float(after);
-    else if (token.is(Keyword::width)) rainbow.width = p.parse_float(after);
-    else if (token.is(Keyword::distance)) rainbow.distance = p.parse_float(after);
-    else if (token.is(Keyword::jitter)) rainbow.jitter = p.parse_float(after);
-    else if (token.is(Keyword::up)) rainbow.up = p.parse_vector();
-    else if (token.is(Keyword::arc_angle)) rainbow.arc_angle = p.parse_float(after);
-    else if (token.is(Keyword::falloff_angle)) rainbow.falloff_angle = p.parse_float(after);
+    if (token.is(Keyword::direction))
+        rainbow.direction = p.parse_vector();
+    else if (token.is(Keyword::angle))
+        rainbow.angle = p.parse_float(after);
+    else if (token.is(Keyword::width))
+        rainbow.width = p.parse_float(after);
+    else if (token.is(Keyword::distance))
+        rainbow.distance = p.parse_float(after);
+    else if (token.is(Keyword::jitter))
+        rainbow.jitter = p.parse_float(after);
+    else if (token.is(Keyword::up))
+        rainbow.up = p.parse_vector();
+    else if (token.is(Keyword::arc_angle))
+        rainbow.arc_angle = p.parse_float(after);
+    else if (token.is(Keyword::falloff_angle))
+        rainbow.falloff_angle = p.parse_float(after);
     else if (token.is(Keyword::color_map) || token.is(Keyword::colour_map))
         rainbow.colour_map = parse_colour_map(p, token);
-    else return false;
+    else
+        return false;
     return true;
 }
 
@@ -80,10 +89,12 @@ void check_rainbow(Parser& p, const Token& keyword, const Rainbow& rainbow) {
                                     rainbow.arc_angle));
     if (!(rainbow.falloff_angle >= 0 && rainbow.falloff_angle <= 360))
         p.fail(keyword, fmt::format("the rainbow's falloff_angle must be in [0, 360] degrees, "
-                                    "found {}", rainbow.falloff_angle));
+                                    "found {}",
+                                    rainbow.falloff_angle));
     if (rainbow.falloff_angle > rainbow.arc_angle)
         p.fail(keyword, fmt::format("the rainbow's falloff_angle {} is larger than its arc_angle "
-                                    "{}", rainbow.falloff_angle, rainbow.arc_angle));
+                                    "{}",
+                                    rainbow.falloff_angle, rainbow.arc_angle));
 }
 
 }  // namespace
@@ -106,7 +117,8 @@ FogRef parse_fog(Parser& p, const Token& keyword) {
         p.next();
         if (!parse_fog_key(p, token, *fog))
             p.fail_identifier(token, fmt::format("a fog keyword, a colour or '}}' to close 'fog' "
-                                                 "opened at {}", p.location_of(open).str()));
+                                                 "opened at {}",
+                                                 p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     // POV-Ray measures heights along the unit up vector (`up 2*y` renders as `up y`).
@@ -125,7 +137,8 @@ RainbowRef parse_rainbow(Parser& p, const Token& keyword) {
         const Token token = p.next();
         if (!parse_rainbow_key(p, token, *rainbow))
             p.fail_identifier(token, fmt::format("a rainbow keyword or '}}' to close 'rainbow' "
-                                                 "opened at {}", p.location_of(open).str()));
+                                                 "opened at {}",
+                                                 p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     check_rainbow(p, keyword, *rainbow);
@@ -146,8 +159,10 @@ SkySphereRef parse_sky_sphere(Parser& p, const Token& keyword) {
         if (token.is(Symbol::rbrace)) break;
         if (p.parse_transform_item(sky->transform)) continue;
         p.next();
-        if (token.is(Keyword::pigment)) sky->pigments.push_back(parse_pigment(p, token));
-        else if (token.is(Keyword::emission)) sky->emission = p.parse_colour().rgb();
+        if (token.is(Keyword::pigment))
+            sky->pigments.push_back(parse_pigment(p, token));
+        else if (token.is(Keyword::emission))
+            sky->emission = p.parse_colour().rgb();
         else
             p.fail_identifier(token, fmt::format("pigment, emission, a transform or '}}' to close "
                                                  "'sky_sphere' opened at {}",

@@ -37,8 +37,8 @@ const ProjectionKeyword* projection_of(const Token& token) {
 struct CameraItems {
     std::optional<Vec3> look_at;
     Token look_at_token;
-    bool angle_given = false;         // the angle keyword, with or without a value
-    std::optional<double> angle;      // its value
+    bool angle_given = false;     // the angle keyword, with or without a value
+    std::optional<double> angle;  // its value
     std::optional<double> vertical_angle;
     Token angle_token;
     bool up_or_right_given = false;
@@ -65,7 +65,8 @@ void parse_mesh_camera(Parser& p, const Token& keyword, MeshCamera& mesh) {
     mesh.distribution = p.parse_int("as the mesh_camera's distribution", 0);
     if (mesh.distribution > 3)
         p.fail(distribution_token, fmt::format("unknown mesh_camera distribution {} (expected 0, "
-                                               "1, 2 or 3)", mesh.distribution));
+                                               "1, 2 or 3)",
+                                               mesh.distribution));
     if (p.starts_expression(p.peek()))
         mesh.max_distance = p.parse_float("as the mesh_camera's max distance");
     Token smooth_token;
@@ -94,9 +95,8 @@ void parse_mesh_camera(Parser& p, const Token& keyword, MeshCamera& mesh) {
                                        "found {}",
                                        mesh.distribution, mesh.rays_per_pixel));
     if (mesh.smooth && mesh.distribution != 3)
-        p.fail(smooth_token,
-               fmt::format("'smooth' needs mesh_camera distribution 3, found {}",
-                           mesh.distribution));
+        p.fail(smooth_token, fmt::format("'smooth' needs mesh_camera distribution 3, found {}",
+                                         mesh.distribution));
 }
 
 // The projection keyword(s) that may open the block; a later one replaces an earlier one.
@@ -214,8 +214,10 @@ bool parse_camera_item(Parser& p, Camera& camera, CameraItems& items) {
     const struct {
         Keyword keyword;
         Vec3* vector;
-    } vectors[] = {{Keyword::location, &camera.location}, {Keyword::direction, &camera.direction},
-                   {Keyword::up, &camera.up},             {Keyword::right, &camera.right},
+    } vectors[] = {{Keyword::location, &camera.location},
+                   {Keyword::direction, &camera.direction},
+                   {Keyword::up, &camera.up},
+                   {Keyword::right, &camera.right},
                    {Keyword::sky, &camera.sky}};
     for (const auto& entry : vectors)
         if (token.is(entry.keyword)) {
@@ -336,7 +338,8 @@ CameraRef parse_camera(Parser& p, const Token& keyword) {
     while (!p.peek_is(Symbol::rbrace))
         if (!parse_camera_item(p, camera, items))
             p.fail_identifier(p.peek(), fmt::format("a camera keyword or '}}' to close 'camera' "
-                                                    "opened at {}", p.location_of(open).str()));
+                                                    "opened at {}",
+                                                    p.location_of(open).str()));
     p.expect_close(keyword, open);
     resolve_camera(p, camera, items);
     return result;

@@ -53,8 +53,10 @@ void parse_number_key(Parser& p, const Token& token, const NumberKey<Settings>& 
     if (key.whole && !(std::abs(value) < 2147483648.0))
         p.fail(at, fmt::format("{} {} must be a whole number of at most 10 digits, found {}", block,
                                name, value));
-    if (key.whole) settings.*key.whole = static_cast<int>(value);
-    else settings.*key.real = value;
+    if (key.whole)
+        settings.*key.whole = static_cast<int>(value);
+    else
+        settings.*key.real = value;
 }
 
 // True when `token` is one of the keys of `numbers` (and its value was read).
@@ -135,7 +137,8 @@ void parse_radiosity_nearest_count(Parser& p, Radiosity& r) {
     const double adaptive = std::trunc(p.parse_float("as the adaptive value of 'nearest_count'"));
     if (!(adaptive >= 0 && adaptive < r.nearest_count))
         p.fail(adaptive_at, fmt::format("radiosity nearest_count's adaptive pretrace value must be "
-                                        "in [0, {}), found {}", r.nearest_count, adaptive));
+                                        "in [0, {}), found {}",
+                                        r.nearest_count, adaptive));
     r.adaptive_nearest_count = static_cast<int>(adaptive);
 }
 
@@ -150,19 +153,25 @@ void parse_radiosity(Parser& p, const Token& keyword, GlobalSettings& g) {
             parse_bool_table_key(p, token, kRadiosityBools, r))
             continue;
         p.next();
-        if (token.is(Keyword::count)) parse_radiosity_count(p, r);
-        else if (token.is(Keyword::nearest_count)) parse_radiosity_nearest_count(p, r);
-        else if (token.is(Keyword::save_file)) r.save_file = p.parse_string();
-        else if (token.is(Keyword::load_file)) r.load_file = p.parse_string();
+        if (token.is(Keyword::count))
+            parse_radiosity_count(p, r);
+        else if (token.is(Keyword::nearest_count))
+            parse_radiosity_nearest_count(p, r);
+        else if (token.is(Keyword::save_file))
+            r.save_file = p.parse_string();
+        else if (token.is(Keyword::load_file))
+            r.load_file = p.parse_string();
         else
             p.fail_identifier(token, fmt::format("a radiosity setting or '}}' to close 'radiosity' "
-                                                 "opened at {}", p.location_of(open).str()));
+                                                 "opened at {}",
+                                                 p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     // POV-Ray checks the pair once the block is read, whatever the order of the two keys.
     if (r.minimum_reuse >= r.maximum_reuse)
         p.fail(keyword, fmt::format("radiosity maximum_reuse {} must be larger than minimum_reuse "
-                                    "{}", r.maximum_reuse, r.minimum_reuse));
+                                    "{}",
+                                    r.maximum_reuse, r.minimum_reuse));
     if (r.minimum_reuse > r.maximum_reuse / 2)
         p.warn(keyword, "radiosity maximum_reuse should be at least twice minimum_reuse");
 }
@@ -235,12 +244,14 @@ void parse_photons(Parser& p, const Token& keyword, GlobalSettings& g) {
         const Token token = p.next();
         if (!parse_photon_key(p, token, photons))
             p.fail_identifier(token, fmt::format("a photons setting or '}}' to close 'photons' "
-                                                 "opened at {}", p.location_of(open).str()));
+                                                 "opened at {}",
+                                                 p.location_of(open).str()));
     }
     p.expect_close(keyword, open);
     if (!photons.save_file.empty() && !photons.load_file.empty()) {
-        p.warn(keyword, "photons: both save_file and load_file given; the map is loaded (as "
-                        "POV-Ray does)");
+        p.warn(keyword,
+               "photons: both save_file and load_file given; the map is loaded (as "
+               "POV-Ray does)");
         photons.save_file.clear();
     }
 }
@@ -260,7 +271,8 @@ void parse_subsurface(Parser& p, const Token& keyword, GlobalSettings& g) {
             subsurface.radiosity = p.parse_float("after 'radiosity' (on or off)") != 0;
         } else {
             p.fail_identifier(token, fmt::format("samples, radiosity or '}}' to close 'subsurface' "
-                                                 "opened at {}", p.location_of(open).str()));
+                                                 "opened at {}",
+                                                 p.location_of(open).str()));
         }
     }
     p.expect_close(keyword, open);
@@ -290,10 +302,14 @@ void parse_assumed_gamma(Parser& p, const Token& keyword, GlobalSettings& g) {
 // charset ascii | utf8 | sys
 void parse_charset(Parser& p, GlobalSettings& g) {
     const Token name = p.next();
-    if (name.is(Keyword::ascii)) g.charset = Charset::ascii;
-    else if (name.is(Keyword::utf8)) g.charset = Charset::utf8;
-    else if (name.is(Keyword::sys)) g.charset = Charset::sys;
-    else p.fail_expected("ascii, utf8 or sys after 'charset'", name);
+    if (name.is(Keyword::ascii))
+        g.charset = Charset::ascii;
+    else if (name.is(Keyword::utf8))
+        g.charset = Charset::utf8;
+    else if (name.is(Keyword::sys))
+        g.charset = Charset::sys;
+    else
+        p.fail_expected("ascii, utf8 or sys after 'charset'", name);
 }
 
 // POV-Ray's keys that are not plain numbers (`token` just taken); false for anything else.
@@ -345,7 +361,8 @@ bool parse_own_key(Parser& p, const Token& token, GlobalSettings& g) {
         const std::string name = p.parse_string();
         if (name != "path" && name != "bidirectional")
             p.fail(at, fmt::format("unknown integrator \"{}\" (expected \"path\" or "
-                                   "\"bidirectional\")", name));
+                                   "\"bidirectional\")",
+                                   name));
         g.integrator = name;
     } else if (token.is(ContextWord::spectral)) {
         g.spectral = p.parse_float("after 'spectral' (on or off)") != 0;

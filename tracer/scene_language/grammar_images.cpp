@@ -10,9 +10,9 @@ namespace {
 
 // POV-Ray's bitmap types.
 bool bitmap_type(Parser& p, const Token& token, std::string& type) {
-    static constexpr Keyword kTypes[] = {Keyword::gif, Keyword::iff, Keyword::jpeg,
-                                         Keyword::pgm, Keyword::png, Keyword::ppm,
-                                         Keyword::sys, Keyword::tga, Keyword::tiff, Keyword::exr, Keyword::hdr, Keyword::bmp};
+    static constexpr Keyword kTypes[] = {Keyword::gif,  Keyword::iff, Keyword::jpeg, Keyword::pgm,
+                                         Keyword::png,  Keyword::ppm, Keyword::sys,  Keyword::tga,
+                                         Keyword::tiff, Keyword::exr, Keyword::hdr,  Keyword::bmp};
     for (Keyword keyword : kTypes)
         if (token.is(keyword)) {
             type = p.word(token);
@@ -95,8 +95,8 @@ bool parse_bitmap_modifier(Parser& p, ImageMap& image, const Token& keyword) {
 
 }  // namespace
 
-std::string resolve_image_file(Parser& p, const std::string& name, const Token& at, const std::string& type,
-                               const std::string& what) {
+std::string resolve_image_file(Parser& p, const std::string& name, const Token& at,
+                               const std::string& type, const std::string& what) {
     // POV-Ray also tries the name with its type's extension.
     if (type == "jpeg") return p.resolve_file(name, at, what, {".jpg", ".jpeg"});
     if (type == "tiff") return p.resolve_file(name, at, what, {".tif", ".tiff"});

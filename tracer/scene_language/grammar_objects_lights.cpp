@@ -206,7 +206,8 @@ ObjectRef parse_light_source(Parser& p, const Token& keyword) {
     const Token first = p.peek();
     if (ObjectRef declared; p.take_declared(declared)) {
         if (declared->kind != ObjectNode::Kind::light)
-            p.fail(first, "wrong type: '" + p.word(first) + "' is an object, expected a light_source identifier");
+            p.fail(first, "wrong type: '" + p.word(first) +
+                              "' is an object, expected a light_source identifier");
         auto node = std::make_shared<ObjectNode>(*declared);
         while (!p.peek_is(Symbol::rbrace))
             if (!parse_node_transform(p, *node))

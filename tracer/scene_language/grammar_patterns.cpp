@@ -179,7 +179,8 @@ void parse_repeat_warp(Parser& p, const Token& at, Warp& warp) {
         vector_field(Keyword::offset, &Warp::offset),
         vector_field(Keyword::flip, &Warp::flip),
     };
-    while (parse_keyword_field(p, warp, fields)) {}
+    while (parse_keyword_field(p, warp, fields)) {
+    }
 }
 
 void parse_black_hole_warp(Parser& p, Warp& warp) {
@@ -195,7 +196,8 @@ void parse_black_hole_warp(Parser& p, Warp& warp) {
         vector_field(Keyword::repeat, &Warp::black_hole_repeat),
         vector_field(Keyword::turbulence, &Warp::black_hole_turbulence),
     };
-    while (parse_keyword_field(p, warp, fields)) {}
+    while (parse_keyword_field(p, warp, fields)) {
+    }
 }
 
 // cylindrical, spherical, toroidal: orientation, dist_exp; toroidal also major_radius.
@@ -210,7 +212,8 @@ void parse_mapping_warp(Parser& p, Warp& warp) {
         number_field(Keyword::major_radius, &Warp::major_radius),
     };
     while (parse_keyword_field(p, warp,
-                               warp.kind == Warp::Kind::toroidal ? toroidal_fields : fields)) {}
+                               warp.kind == Warp::Kind::toroidal ? toroidal_fields : fields)) {
+    }
 }
 
 Warp parse_warp(Parser& p, const Token& keyword) {
@@ -225,7 +228,8 @@ Warp parse_warp(Parser& p, const Token& keyword) {
     } else if (item.is(Keyword::turbulence)) {
         warp.kind = Warp::Kind::turbulence;
         warp.turbulence.amount = p.parse_vector();
-        while (parse_keyword_field(p, warp.turbulence, turbulence_fields())) {}
+        while (parse_keyword_field(p, warp.turbulence, turbulence_fields())) {
+        }
     } else if (item.is(Keyword::cylindrical) || item.is(Keyword::spherical) ||
                item.is(Keyword::toroidal)) {
         warp.kind = item.is(Keyword::cylindrical) ? Warp::Kind::cylindrical
@@ -491,8 +495,8 @@ bool parse_pattern_modifier(Parser& p, Pattern& pattern, PatternRole role) {
                                           p.word(token), pattern_name(pattern.kind)));
             p.next();
             const int value = truncated(p.parse_float(fmt::format("after '{}'", p.word(token))));
-            (token.is(Keyword::number_of_sides) ? pattern.pavement.sides
-                                                  : pattern.pavement.tiles) = value;
+            (token.is(Keyword::number_of_sides) ? pattern.pavement.sides : pattern.pavement.tiles) =
+                value;
             return true;
         }
         bool allowed = false;

@@ -63,8 +63,9 @@ void parse_ray_source(Parser& p, const Token& keyword) {
     source.path = p.resolve_file(p.parse_string(), name_token, "ray file");
     while (!p.peek_is(Symbol::rbrace))
         if (!p.parse_transform_item(source.source_to_world))
-            p.fail_identifier(p.peek(), fmt::format("a transform or '}}' to close 'ray_source' opened at {}",
-                                                    p.location_of(open).str()));
+            p.fail_identifier(p.peek(),
+                              fmt::format("a transform or '}}' to close 'ray_source' opened at {}",
+                                          p.location_of(open).str()));
     p.expect_close(keyword, open);
     p.scene().ray_sources.push_back(source);
 }
@@ -81,7 +82,8 @@ void parse_receiver(Parser& p, const Token& keyword) {
     p.accept_comma();
     receiver.edge2 = p.parse_vector();
     if (length(cross(receiver.edge1, receiver.edge2)) < 1e-12)
-        p.fail(keyword, "illuminance_receiver edges are parallel or zero: the rectangle has no area");
+        p.fail(keyword,
+               "illuminance_receiver edges are parallel or zero: the rectangle has no area");
     bool have_resolution = false;
     Matrix4 transform;
     for (;;) {
@@ -91,7 +93,8 @@ void parse_receiver(Parser& p, const Token& keyword) {
             p.next();
             const Token at = p.peek();
             const Numeric n = p.parse_numeric();
-            if (n.terms != 2 || n.v[0] < 1 || n.v[1] < 1 || n.v[0] != std::floor(n.v[0]) || n.v[1] != std::floor(n.v[1]))
+            if (n.terms != 2 || n.v[0] < 1 || n.v[1] < 1 || n.v[0] != std::floor(n.v[0]) ||
+                n.v[1] != std::floor(n.v[1]))
                 p.fail(at, "expected 'resolution <nx, ny>' with two positive integers");
             receiver.nx = static_cast<int>(n.v[0]);
             receiver.ny = static_cast<int>(n.v[1]);
@@ -100,16 +103,20 @@ void parse_receiver(Parser& p, const Token& keyword) {
             p.next();
             receiver.name = p.parse_string();
         } else if (!p.parse_transform_item(transform)) {
-            p.fail_identifier(token, fmt::format("resolution, name, a transform or '}}' to close 'illuminance_receiver' "
-                                                 "opened at {}", p.location_of(open).str()));
+            p.fail_identifier(
+                token,
+                fmt::format("resolution, name, a transform or '}}' to close 'illuminance_receiver' "
+                            "opened at {}",
+                            p.location_of(open).str()));
         }
     }
-    if (!have_resolution) p.fail_expected("'resolution <nx, ny>' in illuminance_receiver", p.peek());
+    if (!have_resolution)
+        p.fail_expected("'resolution <nx, ny>' in illuminance_receiver", p.peek());
     p.expect_close(keyword, open);
     for (const IlluminanceReceiver& other : scene.receivers)
         if (other.name == receiver.name)
-            p.fail(keyword, fmt::format("duplicate illuminance_receiver name \"{}\" (first at {})", receiver.name,
-                                        other.location.str()));
+            p.fail(keyword, fmt::format("duplicate illuminance_receiver name \"{}\" (first at {})",
+                                        receiver.name, other.location.str()));
     receiver.corner = transform.point(receiver.corner);
     receiver.edge1 = transform.vector(receiver.edge1);
     receiver.edge2 = transform.vector(receiver.edge2);

@@ -74,7 +74,8 @@ void parse_height_field_image(Parser& p, HeightFieldShape& field) {
             "file "
             "name or 'function' in 'height_field'",
             at);
-    field.image_path = resolve_image_file(p, p.parse_string(), at, field.image_type, "height_field image");
+    field.image_path =
+        resolve_image_file(p, p.parse_string(), at, field.image_type, "height_field image");
     for (;;) {
         if (p.accept(Keyword::gamma)) {
             if (p.accept(Keyword::srgb))

@@ -327,7 +327,8 @@ ObjectRef parse_mesh(Parser& p, const Token& keyword) {
     const Token first = p.peek();
     if (ObjectRef declared; p.take_declared(declared)) {
         if (!std::holds_alternative<MeshShape>(declared->shape))
-            p.fail(first, "wrong type: '" + p.word(first) + "' is not a mesh, expected a mesh identifier or triangles");
+            p.fail(first, "wrong type: '" + p.word(first) +
+                              "' is not a mesh, expected a mesh identifier or triangles");
         auto copy = std::make_shared<ObjectNode>(*declared);
         finish_shape(p, *copy, keyword, open);
         return copy;

@@ -129,22 +129,19 @@ double boy_surface(double x, double y, double z, const Args& a) {
     const double s2 = std::sqrt(2.0), r2 = x * x + y * y, w = 1 - z;
     const double value =
         64 * cube(w) * cube(z) - 48 * sqr(w) * z * z * (3 * r2 + 2 * z * z) +
-        12 * w * z * (27 * r2 * r2 - 24 * z * z * r2 + 36 * s2 * y * z * (y * y - 3 * x * x) +
-                      4 * sqr(z * z)) +
-        (9 * r2 - 2 * z * z) *
-            (-81 * r2 * r2 - 72 * z * z * r2 + 108 * s2 * x * z * (x * x - 3 * y * y) +
-             4 * sqr(z * z));
+        12 * w * z *
+            (27 * r2 * r2 - 24 * z * z * r2 + 36 * s2 * y * z * (y * y - 3 * x * x) +
+             4 * sqr(z * z)) +
+        (9 * r2 - 2 * z * z) * (-81 * r2 * r2 - 72 * z * z * r2 +
+                                108 * s2 * x * z * (x * x - 3 * y * y) + 4 * sqr(z * z));
     return a.p(1) * value;
 }
 double crossed_trough(double x, double y, double z, const Args&) { return x * x * z * z - y; }
-double cubic_saddle(double x, double y, double z, const Args&) {
-    return z + cube(y) - cube(x);
-}
+double cubic_saddle(double x, double y, double z, const Args&) { return z + cube(y) - cube(x); }
 // f_cushion and f_odd evaluate the same polynomial.
 double cushion(double x, double y, double z, const Args&) {
     return z * z * x * x - sqr(z * z) - 2 * z * x * x + 2 * cube(z) + x * x - z * z -
-           sqr(x * x - z) - sqr(y * y) - 2 * x * x * y * y - y * y * z * z + 2 * y * y * z +
-           y * y;
+           sqr(x * x - z) - sqr(y * y) - 2 * x * x * y * y - y * y * z * z + 2 * y * y * z + y * y;
 }
 double devils_curve(double x, double y, double z, const Args&) {
     return 0.36 * x * x - 0.25 * y * y + sqr(y * y) - sqr(x * x + z * z);
@@ -425,8 +422,8 @@ double mesh1(const double* a) {
 
 double polynomial4(const Args& a, int first) {
     const double y = a.y();
-    return a.p(first) + y * (a.p(first + 1) + y * (a.p(first + 2) + y * (a.p(first + 3) +
-                                                                         y * a.p(first + 4))));
+    return a.p(first) +
+           y * (a.p(first + 1) + y * (a.p(first + 2) + y * (a.p(first + 3) + y * a.p(first + 4))));
 }
 // Revolves x = P0 + P1 y + ... + P4 y^4 about y; POV-Ray floors the polynomial at -5.
 double poly4(const double* a) {
@@ -496,9 +493,8 @@ double rounded_box(const double* a) {
 double superellipsoid(const double* a) {
     const Args args{a};
     const double e = args.p(0), n = args.p(1);
-    const double xy = std::pow(std::pow(std::fabs(args.x()), 2 / e) +
-                                   std::pow(std::fabs(args.y()), 2 / e),
-                               e / n);
+    const double xy = std::pow(
+        std::pow(std::fabs(args.x()), 2 / e) + std::pow(std::fabs(args.y()), 2 / e), e / n);
     return 1 - std::pow(xy + std::pow(std::fabs(args.z()), 2 / n), n / 2);
 }
 // The density of a d orbital about y, r^4 (3 cos^2 - 1)^2 e^(-4r/3), below 1.2. POV-Ray's decay
@@ -523,7 +519,7 @@ using Evaluator = double (*)(const double*);
 struct InternalFunction {
     int number;
     const char* name;
-    int arity;  // x, y, z and the extra parameters
+    int arity;           // x, y, z and the extra parameters
     Evaluator evaluate;  // nullptr: not implemented
 };
 

@@ -1,8 +1,8 @@
 // The reserved words of POV-Ray 3.7's scene language (its reference manual, "Keywords", and
 // bmp, exr, hdr, number_of_sides, number_of_tiles and xyz, which POV-Ray 3.7.0.10 reserves but
-// the manual does not list; the manual's atand is not reserved), as one list: the Keyword enum, the word table and the interner's first ids all
-// come from it. Words that C++ reserves carry a trailing underscore in the enum
-// (Keyword::union_ is "union").
+// the manual does not list; the manual's atand is not reserved), as one list: the Keyword enum, the
+// word table and the interner's first ids all come from it. Words that C++ reserves carry a
+// trailing underscore in the enum (Keyword::union_ is "union").
 #pragma once
 
 #include <cstdint>

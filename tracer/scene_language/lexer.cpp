@@ -61,7 +61,9 @@ public:
 
 private:
     bool at_end() const { return pos_ >= text_.size(); }
-    char peek(size_t ahead = 0) const { return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0'; }
+    char peek(size_t ahead = 0) const {
+        return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
+    }
     char advance() {
         const char c = text_[pos_++];
         if (c == '\n') {
@@ -88,7 +90,8 @@ private:
                 Token opened;
                 opened.line = line;
                 opened.column = column;
-                fail(opened, "unclosed comment: expected '*/' before end of file for the comment opened");
+                fail(opened,
+                     "unclosed comment: expected '*/' before end of file for the comment opened");
             }
             const char c = advance();
             if (c == '*' && peek() == '/') {
@@ -109,7 +112,8 @@ private:
         for (;;) {
             if (at_end()) return;
             const char c = peek();
-            if (std::isspace(static_cast<unsigned char>(c)) || c == '\x1a') {  // ^Z: DOS end of file
+            if (std::isspace(static_cast<unsigned char>(c)) ||
+                c == '\x1a') {  // ^Z: DOS end of file
                 advance();
             } else if (c == '/' && peek(1) == '/') {
                 skip_line();
@@ -193,16 +197,20 @@ private:
                     for (int i = 0; i < 4; ++i) {
                         const char h = peek();
                         if (!std::isxdigit(static_cast<unsigned char>(h)))
-                            fail(escape, "illegal escape in string: '\\u' needs four hexadecimal digits");
+                            fail(escape,
+                                 "illegal escape in string: '\\u' needs four hexadecimal digits");
                         advance();
-                        code = code * 16 + static_cast<unsigned>(is_digit(h) ? h - '0' : std::tolower(h) - 'a' + 10);
+                        code = code * 16 + static_cast<unsigned>(
+                                               is_digit(h) ? h - '0' : std::tolower(h) - 'a' + 10);
                     }
                     append_utf8(value, code);
                     break;
                 }
                 default:
-                    fail(escape, fmt::format("illegal escape '\\{}' in string (write '\\\\' for a backslash)",
-                                             e == '\0' ? std::string("end of file") : std::string(1, e)));
+                    fail(escape,
+                         fmt::format(
+                             "illegal escape '\\{}' in string (write '\\\\' for a backslash)",
+                             e == '\0' ? std::string("end of file") : std::string(1, e)));
             }
         }
     }

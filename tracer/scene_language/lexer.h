@@ -15,9 +15,31 @@ namespace rayset::tracer {
 enum class TokenKind : uint8_t { word, number, string, symbol, directive, end };
 
 enum class Symbol : uint8_t {
-    none, lbrace, rbrace, lparen, rparen, lbracket, rbracket, less, greater, less_equal,
-    greater_equal, equals, not_equal, comma, semicolon, dot, plus, minus, star, slash, question,
-    colon, ampersand, bar, bang
+    none,
+    lbrace,
+    rbrace,
+    lparen,
+    rparen,
+    lbracket,
+    rbracket,
+    less,
+    greater,
+    less_equal,
+    greater_equal,
+    equals,
+    not_equal,
+    comma,
+    semicolon,
+    dot,
+    plus,
+    minus,
+    star,
+    slash,
+    question,
+    colon,
+    ampersand,
+    bar,
+    bang
 };
 
 // Small and trivially copyable: words and directive names are interned ids, string literals an
@@ -25,10 +47,10 @@ enum class Symbol : uint8_t {
 struct Token {
     TokenKind kind = TokenKind::end;
     Symbol symbol = Symbol::none;
-    NameId name = 0;       // word, or a directive's name without '#'
-    uint32_t string = 0;   // string literal: index into SourceFile::strings
+    NameId name = 0;      // word, or a directive's name without '#'
+    uint32_t string = 0;  // string literal: index into SourceFile::strings
     double number = 0;
-    int file = 0;          // index into the parser's file table
+    int file = 0;  // index into the parser's file table
     int line = 0, column = 0;
 
     bool is(Symbol s) const { return kind == TokenKind::symbol && symbol == s; }
@@ -41,8 +63,8 @@ struct Token {
 // One file's tokens, shared by the frames that read it (the file itself, its loops, and the
 // macros defined in it, which outlive the file's own reading).
 struct SourceFile {
-    std::string path;       // as shown in messages
-    std::string directory;  // where relative names start
+    std::string path;           // as shown in messages
+    std::string directory;      // where relative names start
     std::vector<Token> tokens;  // ends with one TokenKind::end
     std::vector<std::string> strings;
 };

@@ -16,7 +16,9 @@ void Parser::directive_macro(const Token& directive) {
     macro->name = name.name;
     macro->defined_at = name;
     const Token open = raw_next();
-    if (!open.is(Symbol::lparen)) fail_expected(fmt::format("'(' after #macro {} (even with no parameters)", word(name)), open);
+    if (!open.is(Symbol::lparen))
+        fail_expected(fmt::format("'(' after #macro {} (even with no parameters)", word(name)),
+                      open);
     if (!raw_peek().is(Symbol::rparen)) {
         for (;;) {
             const Token parameter = raw_next();
@@ -25,7 +27,8 @@ void Parser::directive_macro(const Token& directive) {
             check_declarable(parameter, parameter.name, "macro parameter");
             for (NameId earlier : macro->parameters)
                 if (earlier == parameter.name)
-                    fail(parameter, fmt::format("parameter '{}' appears twice in #macro {}", word(parameter), word(name)));
+                    fail(parameter, fmt::format("parameter '{}' appears twice in #macro {}",
+                                                word(parameter), word(name)));
             macro->parameters.push_back(parameter.name);
             // The commas are optional and a trailing one is allowed, as POV-Ray reads them
             // (shapes3.inc has both).
@@ -47,18 +50,21 @@ void Parser::directive_macro(const Token& directive) {
 }
 
 void Parser::invoke_macro(const Token& name, const MacroRef& macro) {
-    const Token open =
-        expect(Symbol::lparen, [&] { return fmt::format("after macro {} (its call needs parentheses)", word(name)); });
+    const Token open = expect(Symbol::lparen, [&] {
+        return fmt::format("after macro {} (its call needs parentheses)", word(name));
+    });
     std::vector<SymbolRef> parameters(macro->parameters.size());
     for (size_t i = 0; i < macro->parameters.size(); ++i) {
         if (i > 0)
             expect(Symbol::comma, [&] {
-                return fmt::format("between the arguments of {} ({} declared at {} takes {})", word(name), word(name),
-                                   location_of(macro->defined_at).str(), macro->parameters.size());
+                return fmt::format("between the arguments of {} ({} declared at {} takes {})",
+                                   word(name), word(name), location_of(macro->defined_at).str(),
+                                   macro->parameters.size());
             });
         if (peek_is(Symbol::rparen))
-            fail(peek(), fmt::format("macro {} takes {} arguments, found {} (declared at {})", word(name),
-                                     macro->parameters.size(), i, location_of(macro->defined_at).str()));
+            fail(peek(),
+                 fmt::format("macro {} takes {} arguments, found {} (declared at {})", word(name),
+                             macro->parameters.size(), i, location_of(macro->defined_at).str()));
         // A lone declared identifier is passed by reference: the raw token after it tells.
         if (peek().is_identifier() && lookahead_symbol_) {
             const Token& after = raw_peek();
@@ -73,15 +79,17 @@ void Parser::invoke_macro(const Token& name, const MacroRef& macro) {
         parameters[i] = std::move(entry);
     }
     if (!peek_is(Symbol::rparen))
-        fail_expected(fmt::format("')' to close the call of macro {} opened at {} ({} argument{})", word(name),
-                                  location_of(open).str(), macro->parameters.size(),
+        fail_expected(fmt::format("')' to close the call of macro {} opened at {} ({} argument{})",
+                                  word(name), location_of(open).str(), macro->parameters.size(),
                                   macro->parameters.size() == 1 ? "" : "s"),
                       peek());
     have_lookahead_ = false;  // the ')': the body's first token follows it
     if (static_cast<int>(frames_.size()) + nesting_ >= options_.max_nesting)
-        fail(name, fmt::format("nesting limit: more than {} macro calls, include files and blocks in progress "
-                               "(runaway recursion in macro {}?) (ParseOptions::max_nesting)",
-                               options_.max_nesting, word(name)));
+        fail(name,
+             fmt::format(
+                 "nesting limit: more than {} macro calls, include files and blocks in progress "
+                 "(runaway recursion in macro {}?) (ParseOptions::max_nesting)",
+                 options_.max_nesting, word(name)));
     Frame frame;
     frame.source = macro->file;
     frame.pos = macro->body_start;

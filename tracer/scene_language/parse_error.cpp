@@ -7,7 +7,9 @@ namespace rayset::tracer {
 
 std::string SourceLocation::str() const { return fmt::format("{}:{}:{}", file, line, column); }
 
-SceneError::SceneError(const std::string& what, SourceLocation where, const std::string& include_chain)
-    : Error(fmt::format("{} at {}{}", what, where.str(), include_chain)), where_(std::move(where)) {}
+SceneError::SceneError(const std::string& what, SourceLocation where,
+                       const std::string& include_chain)
+    : Error(fmt::format("{} at {}{}", what, where.str(), include_chain)),
+      where_(std::move(where)) {}
 
 }  // namespace rayset::tracer

@@ -20,9 +20,10 @@
 #pragma once
 
 #include <chrono>
-#include <type_traits>
 #include <memory>
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -39,9 +40,11 @@ class Purpose {
 public:
     Purpose(const char* text = "") : text_(text) {}
     Purpose(const std::string& text) : text_(text.c_str()) {}
-    template <typename Make, typename = std::enable_if_t<std::is_invocable_r_v<std::string, const Make&>>>
+    template <typename Make,
+              typename = std::enable_if_t<std::is_invocable_r_v<std::string, const Make&>>>
     Purpose(const Make& make)
-        : object_(&make), make_([](const void* object) { return (*static_cast<const Make*>(object))(); }) {}
+        : object_(&make),
+          make_([](const void* object) { return (*static_cast<const Make*>(object))(); }) {}
     std::string str() const { return make_ ? make_(object_) : std::string(text_); }
 
 private:
@@ -100,7 +103,8 @@ public:
 
     // The value of the identifier `token` names, or nullptr (it is a keyword or undeclared).
     const Value* lookup_value(const Token& token) const {
-        const SymbolRef& symbol = token.kind == TokenKind::word ? symbols_.find(token.name) : SymbolTable::kNone;
+        const SymbolRef& symbol =
+            token.kind == TokenKind::word ? symbols_.find(token.name) : SymbolTable::kNone;
         return symbol ? &symbol->value : nullptr;
     }
     const std::string& word(const Token& token) const { return names_.text(token.name); }
@@ -118,12 +122,12 @@ public:
     Numeric parse_numeric();
     double parse_float(Purpose purpose = {});
     int parse_int(Purpose purpose, int minimum);
-    Vec3 parse_vector();                  // three terms: a float promotes, a 2-vector pads
+    Vec3 parse_vector();                    // three terms: a float promotes, a 2-vector pads
     Numeric parse_vector_terms(int terms);  // exactly `terms` terms, promoted the same way
     // `keyword [BOOL]`: true when no value follows.
     bool parse_optional_bool();
     bool starts_colour(const Token& token);
-    Colour parse_colour();                // [color] COLOR_BODY, all five terms
+    Colour parse_colour();  // [color] COLOR_BODY, all five terms
     bool starts_string(const Token& token);
     std::string parse_string();
     // Anything that may follow '=' in #declare, or be passed to a macro.
@@ -187,18 +191,25 @@ private:
     };
     // A conditional, loop, switch or macro body in progress.
     struct Block {
-        enum class Kind { if_branch, else_branch, while_loop, for_loop, switch_clause, macro_body } kind;
-        Token opened;        // the directive (or macro name) that opened it
-        size_t frame = 0;    // frames_ index it belongs to
-        size_t restart = 0;  // while: index of its #while; for: its first body token
-        NameId variable = 0; // for: the loop variable
+        enum class Kind {
+            if_branch,
+            else_branch,
+            while_loop,
+            for_loop,
+            switch_clause,
+            macro_body
+        } kind;
+        Token opened;         // the directive (or macro name) that opened it
+        size_t frame = 0;     // frames_ index it belongs to
+        size_t restart = 0;   // while: index of its #while; for: its first body token
+        NameId variable = 0;  // for: the loop variable
         double last = 0, step = 1;
     };
-    void push_file(const std::string& text, const std::string& shown_path, const std::string& directory,
-                   const Token* included_at);
+    void push_file(const std::string& text, const std::string& shown_path,
+                   const std::string& directory, const Token* included_at);
     void leave_finished_files();  // pops the frames of included files that have ended
-    Token raw_next();           // next token of the innermost frame, leaving finished files
-    const Token& raw_peek();    // the same without taking it (no directives, no macros)
+    Token raw_next();             // next token of the innermost frame, leaving finished files
+    const Token& raw_peek();      // the same without taking it (no directives, no macros)
     NameId next_raw_identifier(const std::string& purpose);
     void fill_lookahead();
     // peek() where an operator may come next: there a directive may end a directive's expression.
@@ -237,7 +248,8 @@ private:
     Token skip_to(const Token& opened, std::initializer_list<Keyword> stops, int depth = 0);
     void enter_block(Block::Kind kind, const Token& opened);
     void leave_macro();
-    bool is_defined(const Token& at);  // the identifier or array element after '(' of #ifdef/defined
+    bool is_defined(
+        const Token& at);  // the identifier or array element after '(' of #ifdef/defined
 
     // ---------------------------------------------------------------- macros
     void invoke_macro(const Token& name, const MacroRef& macro);
@@ -246,8 +258,9 @@ private:
     SymbolRef lookup(NameId name) const;
     // #declare (local false) or #local (local true) of a value, as POV-Ray's scope rules say.
     static constexpr size_t kInnermostScope = ~size_t{0};
-    void assign(const Token& at, NameId name, Value value, bool local, const std::string& deprecation = "",
-                bool warn_once = false, size_t scope = kInnermostScope);
+    void assign(const Token& at, NameId name, Value value, bool local,
+                const std::string& deprecation = "", bool warn_once = false,
+                size_t scope = kInnermostScope);
     void check_declarable(const Token& at, NameId name, const char* directive);
     // The array element `A[i][j]...` after the identifier A (the brackets are next).
     Value* array_element(const Token& at, Array& array, bool for_assignment);
@@ -257,7 +270,7 @@ private:
     Numeric parse_logical();
     Numeric parse_relational();
     Numeric parse_term();
-    Numeric parse_term_after(Numeric first);      // * / with `first` already read
+    Numeric parse_term_after(Numeric first);  // * / with `first` already read
     Numeric parse_unary();
     Numeric parse_primary();
     Numeric parse_postfix(Numeric value);
@@ -265,15 +278,16 @@ private:
     Numeric parse_vector_literal(const Token& open);
     Numeric parse_numeric_identifier(const Token& token, const Value& value);
     Numeric parse_builtin_numeric(const Token& name);
-    // Constants and built-in variables (pi, x, clock, version ...): false for anything else.
-    bool builtin_constant(const Token& name, Numeric& value) const;
+    // Constants and built-in variables (pi, x, clock, version ...): nothing for anything else.
+    std::optional<Numeric> builtin_constant(const Token& name) const;
     bool is_numeric_builtin(NameId name) const;
     Numeric call_function(const Token& name, const UserFunction& function);
     Numeric call_spline(const Token& name, const Spline& spline);
     std::string parse_builtin_string(const Token& name);
     Colour parse_colour_body(const Token& start, bool keyword_given);
     Value parse_array(const Token& keyword);
-    void parse_array_initialiser(Array& array, size_t dimension, size_t& index, const Token& keyword);
+    void parse_array_initialiser(Array& array, size_t dimension, size_t& index,
+                                 const Token& keyword);
 
     // ---------------------------------------------------------------- limits
     // Fails when the process has grown (or would grow by `more_bytes`) past the memory limit.

@@ -41,9 +41,20 @@ Value Parser::parse_rvalue(const Token& purpose) {
             return parse_object(*this);
         }
         switch (static_cast<Keyword>(token.name)) {
-            case Keyword::color: case Keyword::colour: case Keyword::rgb: case Keyword::rgbf: case Keyword::rgbt:
-            case Keyword::rgbft: case Keyword::srgb: case Keyword::srgbf: case Keyword::srgbt: case Keyword::srgbft:
-            case Keyword::red: case Keyword::green: case Keyword::blue: case Keyword::filter:
+            case Keyword::color:
+            case Keyword::colour:
+            case Keyword::rgb:
+            case Keyword::rgbf:
+            case Keyword::rgbt:
+            case Keyword::rgbft:
+            case Keyword::srgb:
+            case Keyword::srgbf:
+            case Keyword::srgbt:
+            case Keyword::srgbft:
+            case Keyword::red:
+            case Keyword::green:
+            case Keyword::blue:
+            case Keyword::filter:
             case Keyword::transmit: {
                 const Colour c = parse_colour();
                 return Numeric{{c.red, c.green, c.blue, c.filter, c.transmit}, 5};
@@ -54,13 +65,18 @@ Value Parser::parse_rvalue(const Token& purpose) {
                 // followed by directives that use A).
                 next();
                 return parse_array(token);
-            case Keyword::function: return block([&](const Token& k) { return Value(parse_function(k)); });
-            case Keyword::spline: return block([&](const Token& k) { return Value(parse_spline(k)); });
+            case Keyword::function:
+                return block([&](const Token& k) { return Value(parse_function(k)); });
+            case Keyword::spline:
+                return block([&](const Token& k) { return Value(parse_spline(k)); });
             case Keyword::transform:
-                return block([&](const Token& k) { return Value(TransformValue{parse_transform_block(k)}); });
+                return block([&](const Token& k) {
+                    return Value(TransformValue{parse_transform_block(k)});
+                });
             case Keyword::texture: {
                 // #declare T = texture { } texture { } ...: a layered texture.
-                TextureRef texture = std::get<TextureRef>(block([&](const Token& k) { return Value(parse_texture(*this, k)); }));
+                TextureRef texture = std::get<TextureRef>(
+                    block([&](const Token& k) { return Value(parse_texture(*this, k)); }));
                 directive_frame_ = saved_directive_frame;
                 while (peek_operator().is(Keyword::texture)) {
                     const Token keyword = next();
@@ -71,24 +87,41 @@ Value Parser::parse_rvalue(const Token& purpose) {
                 }
                 return texture;
             }
-            case Keyword::pigment: return block([&](const Token& k) { return Value(parse_pigment(*this, k)); });
-            case Keyword::normal: return block([&](const Token& k) { return Value(parse_normal(*this, k)); });
-            case Keyword::finish: return block([&](const Token& k) { return Value(parse_finish(*this, k)); });
-            case Keyword::interior: return block([&](const Token& k) { return Value(parse_interior(*this, k)); });
-            case Keyword::media: return block([&](const Token& k) { return Value(parse_media(*this, k)); });
-            case Keyword::density: return block([&](const Token& k) { return Value(parse_density(*this, k)); });
-            case Keyword::material: return block([&](const Token& k) { return Value(parse_material(*this, k)); });
+            case Keyword::pigment:
+                return block([&](const Token& k) { return Value(parse_pigment(*this, k)); });
+            case Keyword::normal:
+                return block([&](const Token& k) { return Value(parse_normal(*this, k)); });
+            case Keyword::finish:
+                return block([&](const Token& k) { return Value(parse_finish(*this, k)); });
+            case Keyword::interior:
+                return block([&](const Token& k) { return Value(parse_interior(*this, k)); });
+            case Keyword::media:
+                return block([&](const Token& k) { return Value(parse_media(*this, k)); });
+            case Keyword::density:
+                return block([&](const Token& k) { return Value(parse_density(*this, k)); });
+            case Keyword::material:
+                return block([&](const Token& k) { return Value(parse_material(*this, k)); });
             case Keyword::color_map:
-            case Keyword::colour_map: return block([&](const Token& k) { return Value(parse_colour_map(*this, k)); });
-            case Keyword::pigment_map: return block([&](const Token& k) { return Value(parse_pigment_map(*this, k)); });
-            case Keyword::normal_map: return block([&](const Token& k) { return Value(parse_normal_map(*this, k)); });
-            case Keyword::slope_map: return block([&](const Token& k) { return Value(parse_slope_map(*this, k)); });
-            case Keyword::texture_map: return block([&](const Token& k) { return Value(parse_texture_map(*this, k)); });
-            case Keyword::density_map: return block([&](const Token& k) { return Value(parse_density_map(*this, k)); });
-            case Keyword::camera: return block([&](const Token& k) { return Value(parse_camera(*this, k)); });
-            case Keyword::fog: return block([&](const Token& k) { return Value(parse_fog(*this, k)); });
-            case Keyword::rainbow: return block([&](const Token& k) { return Value(parse_rainbow(*this, k)); });
-            case Keyword::sky_sphere: return block([&](const Token& k) { return Value(parse_sky_sphere(*this, k)); });
+            case Keyword::colour_map:
+                return block([&](const Token& k) { return Value(parse_colour_map(*this, k)); });
+            case Keyword::pigment_map:
+                return block([&](const Token& k) { return Value(parse_pigment_map(*this, k)); });
+            case Keyword::normal_map:
+                return block([&](const Token& k) { return Value(parse_normal_map(*this, k)); });
+            case Keyword::slope_map:
+                return block([&](const Token& k) { return Value(parse_slope_map(*this, k)); });
+            case Keyword::texture_map:
+                return block([&](const Token& k) { return Value(parse_texture_map(*this, k)); });
+            case Keyword::density_map:
+                return block([&](const Token& k) { return Value(parse_density_map(*this, k)); });
+            case Keyword::camera:
+                return block([&](const Token& k) { return Value(parse_camera(*this, k)); });
+            case Keyword::fog:
+                return block([&](const Token& k) { return Value(parse_fog(*this, k)); });
+            case Keyword::rainbow:
+                return block([&](const Token& k) { return Value(parse_rainbow(*this, k)); });
+            case Keyword::sky_sphere:
+                return block([&](const Token& k) { return Value(parse_sky_sphere(*this, k)); });
             default: break;
         }
         if (is_numeric_builtin(token.name)) return parse_numeric();
@@ -104,14 +137,17 @@ Value Parser::parse_rvalue(const Token& purpose) {
         if (const ArrayRef* array = std::get_if<ArrayRef>(&held)) {
             if (!peek_operator().is(Symbol::lbracket)) return copy_array(**array);
             Value element = *array_element(token, **array, false);
-            if (std::holds_alternative<Numeric>(element) || std::holds_alternative<FunctionRef>(element) ||
+            if (std::holds_alternative<Numeric>(element) ||
+                std::holds_alternative<FunctionRef>(element) ||
                 std::holds_alternative<SplineRef>(element))
-                return parse_additive_after(parse_term_after(parse_postfix(parse_numeric_identifier(token, element))));
+                return parse_additive_after(
+                    parse_term_after(parse_postfix(parse_numeric_identifier(token, element))));
             return element;
         }
         if (std::holds_alternative<FunctionRef>(held) || std::holds_alternative<SplineRef>(held)) {
             if (!peek_operator().is(Symbol::lparen)) return held;  // the function or spline itself
-            return parse_additive_after(parse_term_after(parse_postfix(parse_numeric_identifier(token, held))));
+            return parse_additive_after(
+                parse_term_after(parse_postfix(parse_numeric_identifier(token, held))));
         }
         return held;
     }
@@ -143,12 +179,14 @@ Value Parser::parse_array(const Token& keyword) {
         const Token at = peek();
         const double size = parse_float("as the size of the array");
         expect(Symbol::rbracket, fmt::format("to close '[' opened at {}", location_of(open).str()));
-        if (!(size >= 1)) fail(at, fmt::format("an array dimension must be at least 1, found {}", size));
+        if (!(size >= 1))
+            fail(at, fmt::format("an array dimension must be at least 1, found {}", size));
         if (array->sizes.size() == 5) fail(open, "an array has at most 5 dimensions");
         if (size > static_cast<double>(options_.max_array_elements) ||
             total * static_cast<long>(size) > options_.max_array_elements)
-            fail(at, fmt::format("array limit: more than {} elements (ParseOptions::max_array_elements)",
-                                 options_.max_array_elements));
+            fail(at, fmt::format(
+                         "array limit: more than {} elements (ParseOptions::max_array_elements)",
+                         options_.max_array_elements));
         array->sizes.push_back(static_cast<int>(size));
         total *= static_cast<long>(size);
     }
@@ -162,14 +200,18 @@ Value Parser::parse_array(const Token& keyword) {
     return array;
 }
 
-void Parser::parse_array_initialiser(Array& array, size_t dimension, size_t& index, const Token& keyword) {
+void Parser::parse_array_initialiser(Array& array, size_t dimension, size_t& index,
+                                     const Token& keyword) {
     const Token open = expect_open(keyword);
     const int count = array.sizes[dimension];
     for (int i = 0; i < count; ++i) {
         if (i > 0) accept_comma();  // optional, as in POV-Ray (its sample scenes leave some out)
         if (peek_is(Symbol::rbrace))
-            fail(peek(), fmt::format("the array initialiser opened at {} has {} element{}, the array {} in this "
-                                     "dimension", location_of(open).str(), i, i == 1 ? "" : "s", count));
+            fail(peek(),
+                 fmt::format(
+                     "the array initialiser opened at {} has {} element{}, the array {} in this "
+                     "dimension",
+                     location_of(open).str(), i, i == 1 ? "" : "s", count));
         if (dimension + 1 < array.sizes.size()) {
             parse_array_initialiser(array, dimension + 1, index, keyword);
             continue;
@@ -177,19 +219,23 @@ void Parser::parse_array_initialiser(Array& array, size_t dimension, size_t& ind
         const Token at = peek();
         Value value = parse_rvalue(keyword);
         if (const std::string why = array.mismatch(value); !why.empty())
-            fail(at, fmt::format("the elements of this array are {} (an array holds one type)", why));
+            fail(at,
+                 fmt::format("the elements of this array are {} (an array holds one type)", why));
         array.assign(index++, std::move(value));
     }
     accept_comma();
     if (!peek_is(Symbol::rbrace))
-        fail_expected(fmt::format("'}}' after the {} elements of the initialiser opened at {}", count,
-                                  location_of(open).str()), peek());
+        fail_expected(fmt::format("'}}' after the {} elements of the initialiser opened at {}",
+                                  count, location_of(open).str()),
+                      peek());
     expect_close(keyword, open);
 }
 
 std::string type_name(const Value& value) {
     struct Namer {
-        std::string operator()(const std::monostate&) const { return "nothing (an unassigned array element)"; }
+        std::string operator()(const std::monostate&) const {
+            return "nothing (an unassigned array element)";
+        }
         std::string operator()(const Numeric& n) const {
             if (n.terms == 1) return "a float";
             if (n.terms <= 3) return "a vector";

@@ -25,8 +25,8 @@ struct SceneDescription {
     std::vector<IlluminanceReceiver> receivers;
     std::vector<RaySource> ray_sources;
     GlobalSettings global;
-    Colour background;  // black unless `background { ... }`
-    Atmosphere atmosphere;  // fogs, rainbows, sky sphere, atmospheric media
+    Colour background;               // black unless `background { ... }`
+    Atmosphere atmosphere;           // fogs, rainbows, sky sphere, atmospheric media
     std::vector<std::string> files;  // every file read, main file first
 };
 

@@ -30,22 +30,23 @@ struct LightSource {
     double radius = 30, falloff = 45, tightness = 0;
     bool parallel = false;  // rays parallel to position -> point_at
     bool area_light = false;
-    Vec3 axis1, axis2;          // full edge vectors of the area light
-    int size1 = 1, size2 = 1;   // lights along each axis
+    Vec3 axis1, axis2;         // full edge vectors of the area light
+    int size1 = 1, size2 = 1;  // lights along each axis
     int adaptive = 0;
     bool jitter = false, circular = false, orient = false;
     bool area_illumination = false;  // area lights also light surfaces as areas, not as points
     double fade_distance = 0, fade_power = 0;  // 0: no fading
     bool shadowless = false;
-    bool media_interaction = true;    // scattering media see it
-    bool media_attenuation = false;   // fog and media dim its light
+    bool media_interaction = true;   // scattering media see it
+    bool media_attenuation = false;  // fog and media dim its light
     // photons { }: whether it shoots photons that reflect, refract; per area-light point.
     bool photons_reflection = true, photons_refraction = true, photons_area_light = false;
     // projected_through { OBJECT }: only its light that passes through these reaches the scene
     // (world coordinates, textures stripped). Its looks_like object is in the scene's objects
     // (ObjectInstance::looks_like_of).
     std::vector<ObjectInstance> projected_through;
-    std::shared_ptr<const LightGroup> light_group;  // null: a scene light; else lights its group only
+    std::shared_ptr<const LightGroup>
+        light_group;  // null: a scene light; else lights its group only
     SourceLocation location;
 };
 
@@ -63,11 +64,11 @@ enum class CameraProjection {
 
 // POV-Ray's focal blur: on when the aperture is not 0.
 struct FocalBlur {
-    double aperture = 0;      // size of the lens; 0: no focal blur
-    int min_samples = 0;      // blur_samples MIN, MAX; POV-Ray's minimum when not given:
-    int max_samples = 0;      // 4 if MAX < 7, else 7
+    double aperture = 0;        // size of the lens; 0: no focal blur
+    int min_samples = 0;        // blur_samples MIN, MAX; POV-Ray's minimum when not given:
+    int max_samples = 0;        // 4 if MAX < 7, else 7
     Vec3 focal_point{0, 0, 0};  // a point of the plane in focus (world coordinates)
-    double confidence = 0.9;  // adaptive sampling: probability that the estimate is close enough
+    double confidence = 0.9;    // adaptive sampling: probability that the estimate is close enough
     double variance = 1.0 / 128;  // adaptive sampling: tolerated variance of the samples
     PigmentRef bokeh;  // bokeh { pigment }: the lens shape over <0,0,0>..<1,1,0>; null: round
 };
@@ -76,10 +77,10 @@ struct FocalBlur {
 // rays start on mesh faces (see POV-Ray's manual, "Mesh projection").
 struct MeshCamera {
     int rays_per_pixel = 1;
-    int distribution = 0;     // 0..3: how pixels map to faces
-    double max_distance = 0;  // longest ray; 0: unlimited
+    int distribution = 0;           // 0..3: how pixels map to faces
+    double max_distance = 0;        // longest ray; 0: unlimited
     std::vector<ObjectRef> meshes;  // mesh or mesh2 objects, with their transforms
-    bool smooth = false;      // distribution 3: interpolate vertex normals
+    bool smooth = false;            // distribution 3: interpolate vertex normals
 };
 
 // The camera, resolved as POV-Ray 3.5+ does (type first; then angle, look_at, transforms).
@@ -105,10 +106,10 @@ struct Camera {
     double angle = 0;
     double vertical_angle = 0;  // spherical: degrees, half the horizontal angle unless given
     FocalBlur focal_blur;
-    NormalRef normal;     // normal { }: perturbs every camera ray; null: none
-    Matrix4 transform;    // the camera's transforms, already applied to the vectors above
-    MeshCamera mesh;      // projection == mesh
-    SourceLocation statement;   // the camera keyword (of the declaration, for a declared camera)
+    NormalRef normal;          // normal { }: perturbs every camera ray; null: none
+    Matrix4 transform;         // the camera's transforms, already applied to the vectors above
+    MeshCamera mesh;           // projection == mesh
+    SourceLocation statement;  // the camera keyword (of the declaration, for a declared camera)
     SourceLocation projection_location;  // the projection keyword; empty for the default
     SourceLocation focal_blur_location;  // the aperture keyword
     SourceLocation normal_location;      // the normal keyword
@@ -116,7 +117,7 @@ struct Camera {
 
 // Extension: an illuminance map on a parallelogram.
 struct IlluminanceReceiver {
-    std::string name;  // from `name "..."`, else "receiver<N>"
+    std::string name;           // from `name "..."`, else "receiver<N>"
     Vec3 corner, edge1, edge2;  // world coordinates; cells run along edge1 (nx) and edge2 (ny)
     int nx = 1, ny = 1;
     SourceLocation location;
@@ -131,45 +132,45 @@ struct RaySource {
 
 // global_settings { radiosity { } }: POV-Ray's radiosity, on when the block is present.
 struct RadiositySettings {
-    double adc_bailout = 0.01;    // radiosity rays' adaptive depth control
-    bool always_sample = false;   // gather new samples in the final pass too
-    double brightness = 1.0;      // factor on the gathered light
-    int count = 35;               // rays per new sample
-    int direction_pool = 0;       // count's second value: directions drawn from; 0: count
-    double error_bound = 1.8;     // tolerated error before a new sample
-    double gray_threshold = 0.0;  // 0..1: how far gathered light is greyed
+    double adc_bailout = 0.01;      // radiosity rays' adaptive depth control
+    bool always_sample = false;     // gather new samples in the final pass too
+    double brightness = 1.0;        // factor on the gathered light
+    int count = 35;                 // rays per new sample
+    int direction_pool = 0;         // count's second value: directions drawn from; 0: count
+    double error_bound = 1.8;       // tolerated error before a new sample
+    double gray_threshold = 0.0;    // 0..1: how far gathered light is greyed
     double low_error_factor = 0.5;  // error_bound's factor in the pretrace
-    double max_sample = -1;       // brightest sample kept; non-positive: no limit
-    double maximum_reuse = 0.2;   // fractions of the distance from the eye bounding sample reuse
+    double max_sample = -1;         // brightest sample kept; non-positive: no limit
+    double maximum_reuse = 0.2;     // fractions of the distance from the eye bounding sample reuse
     double minimum_reuse = 0.015;
-    int nearest_count = 5;        // 1..20: samples blended into one value
-    int adaptive_nearest_count = 0;  // nearest_count's second value (adaptive pretrace); 0: none
-    bool normal = false;          // honour normal perturbation
-    bool media = false;           // honour media
-    bool subsurface = false;      // honour subsurface light transport
-    double pretrace_start = 0.08;  // (0, 1]: mosaic block sizes of the pretrace, fractions of
-    double pretrace_end = 0.04;    // the image
-    int recursion_limit = 2;      // 1..20: diffuse bounces
+    int nearest_count = 5;             // 1..20: samples blended into one value
+    int adaptive_nearest_count = 0;    // nearest_count's second value (adaptive pretrace); 0: none
+    bool normal = false;               // honour normal perturbation
+    bool media = false;                // honour media
+    bool subsurface = false;           // honour subsurface light transport
+    double pretrace_start = 0.08;      // (0, 1]: mosaic block sizes of the pretrace, fractions of
+    double pretrace_end = 0.04;        // the image
+    int recursion_limit = 2;           // 1..20: diffuse bounces
     std::string save_file, load_file;  // radiosity data files as written; empty: none
 };
 
 // global_settings { photons { } }: POV-Ray's photon mapping, on when the block is present.
 struct PhotonSettings {
-    double spacing = 0;           // average distance between surface photons; 0: not given
-    int count = 0;                // photons to shoot; 0: not given (spacing decides)
+    double spacing = 0;  // average distance between surface photons; 0: not given
+    int count = 0;       // photons to shoot; 0: not given (spacing decides)
     int gather_min = 20, gather_max = 100;  // photons gathered at each point
-    int media_max_steps = 0;      // media photons deposited per ray interval; 0: none
-    double media_factor = 1;      // media photon spacing relative to surface spacing
-    double jitter = 0.4;          // jitter of the photon directions
-    std::optional<int> max_trace_level;  // unset: the global max_trace_level
-    std::optional<double> adc_bailout;   // unset: the global adc_bailout
-    std::string save_file, load_file;    // photon map files as written; empty: none
+    int media_max_steps = 0;                // media photons deposited per ray interval; 0: none
+    double media_factor = 1;                // media photon spacing relative to surface spacing
+    double jitter = 0.4;                    // jitter of the photon directions
+    std::optional<int> max_trace_level;     // unset: the global max_trace_level
+    std::optional<double> adc_bailout;      // unset: the global adc_bailout
+    std::string save_file, load_file;       // photon map files as written; empty: none
     std::optional<double> autostop;  // 0..1 of the target's bounding box; unset: POV-Ray's own
-    double expand_increase = 0.2;  // expand_thresholds: density increase that discards an
-    int expand_min = 40;           // expanded search, unless it found fewer photons than this
-    double radius = 0;             // gather radius for surface photons; 0: POV-Ray's estimate
+    double expand_increase = 0.2;    // expand_thresholds: density increase that discards an
+    int expand_min = 40;             // expanded search, unless it found fewer photons than this
+    double radius = 0;               // gather radius for surface photons; 0: POV-Ray's estimate
     double radius_multiplier = 1;
-    double media_radius = 0;       // the same for media photons
+    double media_radius = 0;  // the same for media photons
     double media_radius_multiplier = 1;
 };
 
@@ -177,25 +178,25 @@ struct PhotonSettings {
 struct SubsurfaceSettings {
     int diffuse_samples = 50;  // samples { diffuse, single }
     int single_samples = 50;
-    bool radiosity = false;    // apply to radiosity's diffuse light too
+    bool radiosity = false;  // apply to radiosity's diffuse light too
 };
 
 enum class Charset { ascii, utf8, sys };
 
 struct GlobalSettings {
-    double adc_bailout = 1.0 / 255;  // adaptive depth control: smallest ray contribution traced
-    Rgb ambient_light{1, 1, 1};      // factor on every finish's ambient
-    double assumed_gamma = 1.0;      // the gamma colour literals are encoded with
+    double adc_bailout = 1.0 / 255;   // adaptive depth control: smallest ray contribution traced
+    Rgb ambient_light{1, 1, 1};       // factor on every finish's ambient
+    double assumed_gamma = 1.0;       // the gamma colour literals are encoded with
     bool assumed_gamma_srgb = false;  // `assumed_gamma srgb`: the sRGB curve instead
     bool assumed_gamma_set = false;
     SourceLocation assumed_gamma_location;  // the last assumed_gamma keyword
-    Charset charset = Charset::ascii;  // of strings (text objects)
+    Charset charset = Charset::ascii;       // of strings (text objects)
     Rgb irid_wavelength{0.25, 0.18, 0.14};  // iridescence: relative wavelengths of r, g, b
-    int max_intersections = 64;     // POV-Ray's intersection stack size
-    int max_trace_level = 5;        // recursion limit of reflected and refracted rays
-    double mm_per_unit = 10;        // subsurface light transport's scale (POV-Ray's; not ours)
-    int number_of_waves = 10;       // waves and ripples patterns
-    int noise_generator = 2;        // 1..3: the noise function of patterns
+    int max_intersections = 64;             // POV-Ray's intersection stack size
+    int max_trace_level = 5;                // recursion limit of reflected and refracted rays
+    double mm_per_unit = 10;   // subsurface light transport's scale (POV-Ray's; not ours)
+    int number_of_waves = 10;  // waves and ripples patterns
+    int noise_generator = 2;   // 1..3: the noise function of patterns
     std::optional<RadiositySettings> radiosity;
     std::optional<PhotonSettings> photons;
     std::optional<SubsurfaceSettings> subsurface;
@@ -210,9 +211,9 @@ struct GlobalSettings {
 
 // fog { }: a colour blended in with the distance a ray travels.
 struct Fog {
-    int fog_type = 1;         // 1: constant density; 2: ground fog, thinning above fog_offset
-    double distance = 0;      // distance at which 63% of the fog colour is reached; <= 0: no fog
-    Colour colour;            // filter and transmit: how much light always passes
+    int fog_type = 1;          // 1: constant density; 2: ground fog, thinning above fog_offset
+    double distance = 0;       // distance at which 63% of the fog colour is reached; <= 0: no fog
+    Colour colour;             // filter and transmit: how much light always passes
     Vec3 turbulence{0, 0, 0};  // turbulence and its parameters (as a pattern's)
     int octaves = 6;
     double omega = 0.5;
@@ -227,16 +228,16 @@ struct Fog {
 
 // rainbow { }: a fog-like arc at an angle around a direction.
 struct Rainbow {
-    Vec3 direction{0, 0, 0};  // toward the (virtual) light; required
-    double angle = 0;         // degrees: centre of the bow around -direction
-    double width = 0;         // degrees
-    double distance = 0;      // fog distance of the bow; 0: not given (POV-Ray's large default)
-    double jitter = 0;        // noise on the colour map index
-    Vec3 up{0, 1, 0};         // where the arc's zero angle is
-    double arc_angle = 180;   // degrees, 0..360: size of the arc
+    Vec3 direction{0, 0, 0};     // toward the (virtual) light; required
+    double angle = 0;            // degrees: centre of the bow around -direction
+    double width = 0;            // degrees
+    double distance = 0;         // fog distance of the bow; 0: not given (POV-Ray's large default)
+    double jitter = 0;           // noise on the colour map index
+    Vec3 up{0, 1, 0};            // where the arc's zero angle is
+    double arc_angle = 180;      // degrees, 0..360: size of the arc
     double falloff_angle = 180;  // degrees, 0..arc_angle: where the arc starts to fade
-    ColourMapRef colour_map;  // index 0 at the inner edge, 1 at the outer; null when not given
-    SourceLocation location;  // the rainbow keyword
+    ColourMapRef colour_map;     // index 0 at the inner edge, 1 at the outer; null when not given
+    SourceLocation location;     // the rainbow keyword
 };
 
 // sky_sphere { }: pigments evaluated on the direction of rays that leave the scene.

@@ -73,11 +73,13 @@ std::vector<std::string> default_include_paths() {
     return {};
 }
 
-Parser::Parser(const ParseOptions& options) : options_(options), start_time_(std::chrono::system_clock::now()) {
+Parser::Parser(const ParseOptions& options)
+    : options_(options), start_time_(std::chrono::system_clock::now()) {
     std::error_code error;
     search_paths_ = options.include_paths;
     for (const std::string& folder : default_include_paths()) search_paths_.push_back(folder);
-    for (const std::string& folder : search_paths_) allowed_roots_.push_back(fs::weakly_canonical(folder, error).string());
+    for (const std::string& folder : search_paths_)
+        allowed_roots_.push_back(fs::weakly_canonical(folder, error).string());
     for (const std::string& folder : options.allowed_roots)
         allowed_roots_.push_back(fs::weakly_canonical(folder, error).string());
     for (const std::string& folder : options.write_roots)
@@ -96,10 +98,13 @@ static long memory_limit_megabytes(const ParseOptions& options) {
 void Parser::check_memory(const Token& at, double more_bytes) {
     tokens_since_memory_check_ = 0;
     const long limit = memory_limit_megabytes(options_);
-    const double grown_mb = static_cast<double>(resident_kilobytes() - baseline_rss_kb_) / 1024 + more_bytes / 1048576;
+    const double grown_mb =
+        static_cast<double>(resident_kilobytes() - baseline_rss_kb_) / 1024 + more_bytes / 1048576;
     if (grown_mb > static_cast<double>(limit))
-        fail(at, fmt::format("memory limit: parsing the scene took more than {} MB (ParseOptions::max_memory_megabytes, "
-                             "raytrace --max-parse-memory)", limit));
+        fail(at, fmt::format("memory limit: parsing the scene took more than {} MB "
+                             "(ParseOptions::max_memory_megabytes, "
+                             "raytrace --max-parse-memory)",
+                             limit));
 }
 
 SceneDescription Parser::parse(const std::string& text, const std::string& path) {
@@ -109,7 +114,8 @@ SceneDescription Parser::parse(const std::string& text, const std::string& path)
     push_file(text, path, directory.string(), nullptr);
     for (const auto& [name, value] : options_.declarations) {
         const NameId id = names_.intern(name);
-        if (is_keyword(id)) throw Error(fmt::format("Declare={}: '{}' is a reserved word", name, name));
+        if (is_keyword(id))
+            throw Error(fmt::format("Declare={}: '{}' is a reserved word", name, name));
         assign(Token{}, id, Numeric::scalar(value), false);
     }
 
@@ -128,13 +134,15 @@ SceneDescription Parser::parse(const std::string& text, const std::string& path)
             next();
             if (parse_scene_statement(*this, token)) continue;
         }
-        fail_identifier(token, "an object, a light_source, camera, global_settings, background, fog, "
-                               "rainbow, sky_sphere, media, ray_source or illuminance_receiver");
+        fail_identifier(token,
+                        "an object, a light_source, camera, global_settings, background, fog, "
+                        "rainbow, sky_sphere, media, ray_source or illuminance_receiver");
     }
     return std::move(scene_);
 }
 
-SceneDescription parse_scene_text(const std::string& text, const std::string& virtual_path, const ParseOptions& options) {
+SceneDescription parse_scene_text(const std::string& text, const std::string& virtual_path,
+                                  const ParseOptions& options) {
     SceneDescription scene;
     run_with_stack(kParserStackBytes, [&] { scene = Parser(options).parse(text, virtual_path); });
     return scene;

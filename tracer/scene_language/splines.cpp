@@ -19,7 +19,8 @@
 namespace rayset::tracer {
 namespace {
 
-Numeric weighted(const std::vector<Numeric>& points, int terms, std::initializer_list<std::pair<int, double>> parts) {
+Numeric weighted(const std::vector<Numeric>& points, int terms,
+                 std::initializer_list<std::pair<int, double>> parts) {
     Numeric r;
     r.terms = terms;
     for (const auto& [index, weight] : parts)
@@ -35,7 +36,8 @@ int segment_of(const std::vector<double>& t, double x, int first, int last) {
 
 // Second derivatives of the natural cubic spline through the points, term by term (the
 // tridiagonal system solved by elimination).
-std::vector<Numeric> natural_second_derivatives(const std::vector<double>& t, const std::vector<Numeric>& p, int terms) {
+std::vector<Numeric> natural_second_derivatives(const std::vector<double>& t,
+                                                const std::vector<Numeric>& p, int terms) {
     const size_t n = t.size();
     std::vector<Numeric> m(n), rhs(n);
     std::vector<double> diagonal(n, 1.0), upper(n, 0.0);
@@ -46,7 +48,8 @@ std::vector<Numeric> natural_second_derivatives(const std::vector<double>& t, co
         diagonal[i] = 2 * (h0 + h1) - lower * upper[i - 1];
         upper[i] = h1 / diagonal[i];
         for (int k = 0; k < terms; ++k) {
-            const double r = 6 * ((p[i + 1].v[k] - p[i].v[k]) / h1 - (p[i].v[k] - p[i - 1].v[k]) / h0);
+            const double r =
+                6 * ((p[i + 1].v[k] - p[i].v[k]) / h1 - (p[i].v[k] - p[i - 1].v[k]) / h0);
             rhs[i].v[k] = (r - lower * rhs[i - 1].v[k]) / diagonal[i];
         }
     }
@@ -77,14 +80,17 @@ Numeric Spline::evaluate(double x, Type as) const {
     if (as == Type::quadratic) {
         const int i = segment_of(t, x, 0, n - 1);
         const int a = std::max(i - 1, 0), b = a + 1, c = a + 2;
-        auto lagrange = [&](int j, int k, int l) { return (x - t[k]) * (x - t[l]) / ((t[j] - t[k]) * (t[j] - t[l])); };
-        return weighted(points, terms, {{a, lagrange(a, b, c)}, {b, lagrange(b, a, c)}, {c, lagrange(c, a, b)}});
+        auto lagrange = [&](int j, int k, int l) {
+            return (x - t[k]) * (x - t[l]) / ((t[j] - t[k]) * (t[j] - t[l]));
+        };
+        return weighted(points, terms,
+                        {{a, lagrange(a, b, c)}, {b, lagrange(b, a, c)}, {c, lagrange(c, a, b)}});
     }
     if (as == Type::cubic) {
         const int i = segment_of(t, x, 1, n - 2);
         const double h = t[i + 1] - t[i], s = (x - t[i]) / h;
-        const double h00 = (2 * s - 3) * s * s + 1, h10 = ((s - 2) * s + 1) * s, h01 = (3 - 2 * s) * s * s,
-                     h11 = (s - 1) * s * s;
+        const double h00 = (2 * s - 3) * s * s + 1, h10 = ((s - 2) * s + 1) * s,
+                     h01 = (3 - 2 * s) * s * s, h11 = (s - 1) * s * s;
         // Tangents in the segment's parameter: h times the mean of the neighbouring chord slopes.
         const double a0 = t[i] - t[i - 1], a1 = h, a2 = t[i + 2] - t[i + 1];
         const double w = 0.5 * h;
@@ -115,11 +121,16 @@ SplineRef Parser::parse_spline(const Token& keyword) {
     }
     for (;;) {
         const Token& token = peek();
-        if (token.is(Keyword::linear_spline)) spline->type = Spline::Type::linear;
-        else if (token.is(Keyword::quadratic_spline)) spline->type = Spline::Type::quadratic;
-        else if (token.is(Keyword::cubic_spline)) spline->type = Spline::Type::cubic;
-        else if (token.is(Keyword::natural_spline)) spline->type = Spline::Type::natural;
-        else break;
+        if (token.is(Keyword::linear_spline))
+            spline->type = Spline::Type::linear;
+        else if (token.is(Keyword::quadratic_spline))
+            spline->type = Spline::Type::quadratic;
+        else if (token.is(Keyword::cubic_spline))
+            spline->type = Spline::Type::cubic;
+        else if (token.is(Keyword::natural_spline))
+            spline->type = Spline::Type::natural;
+        else
+            break;
         next();
     }
     while (!peek_is(Symbol::rbrace)) {
@@ -131,7 +142,8 @@ SplineRef Parser::parse_spline(const Token& keyword) {
         if (point.terms == 1) point = point.promoted(2);
         accept_comma();
         spline->terms = std::max(spline->terms, point.terms);
-        const auto where = std::lower_bound(spline->parameters.begin(), spline->parameters.end(), parameter);
+        const auto where =
+            std::lower_bound(spline->parameters.begin(), spline->parameters.end(), parameter);
         const size_t index = static_cast<size_t>(where - spline->parameters.begin());
         if (where != spline->parameters.end() && *where == parameter) {
             spline->points[index] = point;
@@ -153,13 +165,19 @@ Numeric Parser::call_spline(const Token& name, const Spline& spline) {
     Spline::Type type = spline.type;
     if (accept(Symbol::comma)) {
         const Token kind = next();
-        if (kind.is(Keyword::linear_spline)) type = Spline::Type::linear;
-        else if (kind.is(Keyword::quadratic_spline)) type = Spline::Type::quadratic;
-        else if (kind.is(Keyword::cubic_spline)) type = Spline::Type::cubic;
-        else if (kind.is(Keyword::natural_spline)) type = Spline::Type::natural;
-        else fail_expected("linear_spline, quadratic_spline, cubic_spline or natural_spline", kind);
+        if (kind.is(Keyword::linear_spline))
+            type = Spline::Type::linear;
+        else if (kind.is(Keyword::quadratic_spline))
+            type = Spline::Type::quadratic;
+        else if (kind.is(Keyword::cubic_spline))
+            type = Spline::Type::cubic;
+        else if (kind.is(Keyword::natural_spline))
+            type = Spline::Type::natural;
+        else
+            fail_expected("linear_spline, quadratic_spline, cubic_spline or natural_spline", kind);
     }
-    expect(Symbol::rparen, fmt::format("to close the call of '{}' opened at {}", word(name), location_of(open).str()));
+    expect(Symbol::rparen, fmt::format("to close the call of '{}' opened at {}", word(name),
+                                       location_of(open).str()));
     return spline.evaluate(t, type);
 }
 

@@ -38,8 +38,8 @@ private:
     };
     std::vector<Binding>* bindings_of(NameId name);
 
-    std::vector<std::vector<Binding>> by_name_;      // indexed by NameId
-    std::vector<std::vector<NameId>> scope_names_;   // per scope, the names bound in it
+    std::vector<std::vector<Binding>> by_name_;     // indexed by NameId
+    std::vector<std::vector<NameId>> scope_names_;  // per scope, the names bound in it
 
 public:
     static const SymbolRef kNone;

@@ -47,7 +47,8 @@ void SymbolTable::pop_scope() {
     const uint32_t scope = static_cast<uint32_t>(depth());
     for (NameId name : scope_names_.back()) {
         std::vector<Binding>& bindings = by_name_[name];
-        if (!bindings.empty() && bindings.back().scope == scope) bindings.pop_back();  // else #undef took it
+        if (!bindings.empty() && bindings.back().scope == scope)
+            bindings.pop_back();  // else #undef took it
     }
     scope_names_.pop_back();
 }
@@ -65,21 +66,25 @@ SymbolRef Parser::lookup(NameId name) const { return symbols_.find(name); }
 
 void Parser::check_declarable(const Token& at, NameId name, const char* directive) {
     if (is_keyword(name))
-        fail(at, fmt::format("cannot #{} '{}': it is a reserved word", directive, names_.text(name)));
+        fail(at,
+             fmt::format("cannot #{} '{}': it is a reserved word", directive, names_.text(name)));
 }
 
-void Parser::assign(const Token& at, NameId name, Value value, bool local, const std::string& deprecation,
-                    bool warn_once, size_t scope) {
+void Parser::assign(const Token& at, NameId name, Value value, bool local,
+                    const std::string& deprecation, bool warn_once, size_t scope) {
     // #local binds in the scope of the directive (a macro called in its value has its own,
     // gone by the time the value is assigned).
     if (scope == kInnermostScope) scope = symbols_.depth();
     const SymbolRef& existing = local ? symbols_.find_in_scope(name, scope) : symbols_.find(name);
     if (existing) {
-        if (std::holds_alternative<FunctionRef>(existing->value) && std::holds_alternative<FunctionRef>(value))
-            fail(at, fmt::format("'{}' is already a function: #undef it before declaring it again (as POV-Ray requires)",
+        if (std::holds_alternative<FunctionRef>(existing->value) &&
+            std::holds_alternative<FunctionRef>(value))
+            fail(at, fmt::format("'{}' is already a function: #undef it before declaring it again "
+                                 "(as POV-Ray requires)",
                                  names_.text(name)));
         existing->value = as_stored(std::move(value));
-        if (!deprecation.empty()) existing->deprecation = deprecation, existing->warn_once = warn_once;
+        if (!deprecation.empty())
+            existing->deprecation = deprecation, existing->warn_once = warn_once;
         return;
     }
     auto entry = std::make_shared<SymbolEntry>();
@@ -92,15 +97,17 @@ void Parser::assign(const Token& at, NameId name, Value value, bool local, const
 Value* Parser::array_element(const Token& at, Array& array, bool for_assignment) {
     size_t index = 0;
     for (size_t d = 0; d < array.sizes.size(); ++d) {
-        const Token open = expect(Symbol::lbracket, fmt::format("for index {} of the {}-dimensional array",
-                                                                 d + 1, array.sizes.size()));
+        const Token open = expect(
+            Symbol::lbracket,
+            fmt::format("for index {} of the {}-dimensional array", d + 1, array.sizes.size()));
         const Token at_index = peek();
         const double raw = parse_expression().v[0];
         expect(Symbol::rbracket, fmt::format("to close '[' opened at {}", location_of(open).str()));
         const long i = static_cast<long>(raw);  // POV-Ray truncates
         if (raw < 0 || i >= array.sizes[d])
-            fail(at_index, fmt::format("array index {} out of range: dimension {} has {} elements (0 to {})", raw,
-                                       d + 1, array.sizes[d], array.sizes[d] - 1));
+            fail(at_index,
+                 fmt::format("array index {} out of range: dimension {} has {} elements (0 to {})",
+                             raw, d + 1, array.sizes[d], array.sizes[d] - 1));
         index = index * array.sizes[d] + static_cast<size_t>(i);
     }
     Value& element = array.elements[index];

@@ -9,8 +9,8 @@
 
 namespace rayset::tracer {
 
-void Parser::push_file(const std::string& text, const std::string& shown_path, const std::string& directory,
-                       const Token* included_at) {
+void Parser::push_file(const std::string& text, const std::string& shown_path,
+                       const std::string& directory, const Token* included_at) {
     auto source = std::make_shared<SourceFile>();
     source->path = shown_path;
     source->directory = directory;
@@ -37,8 +37,8 @@ void Parser::leave_finished_files() {
         if (token.kind != TokenKind::end) return;
         if (blocks_.size() > frame.blocks_at_start) {
             const Token& opened = blocks_.back().opened;
-            fail(token, fmt::format("unclosed #{} opened at {}: expected #end before end of file", word(opened),
-                                    location_of(opened).str()));
+            fail(token, fmt::format("unclosed #{} opened at {}: expected #end before end of file",
+                                    word(opened), location_of(opened).str()));
         }
         if (frames_.size() == 1) return;
         frames_.pop_back();  // a file frame: macro bodies end at their #end
@@ -65,7 +65,8 @@ const Token& Parser::raw_peek() {
 NameId Parser::next_raw_identifier(const std::string& purpose) {
     if (have_lookahead_) give_back_lookahead();
     const Token token = raw_next();
-    if (token.kind != TokenKind::word) fail_expected(fmt::format("an identifier {}", purpose), token);
+    if (token.kind != TokenKind::word)
+        fail_expected(fmt::format("an identifier {}", purpose), token);
     return token.name;
 }
 
@@ -163,34 +164,43 @@ bool Parser::accept(Keyword keyword) {
 }
 
 Token Parser::expect(Symbol symbol, Purpose purpose) {
-    if (!peek_is(symbol)) fail_expected(fmt::format("'{}' {}", symbol_text(symbol), purpose.str()), peek());
+    if (!peek_is(symbol))
+        fail_expected(fmt::format("'{}' {}", symbol_text(symbol), purpose.str()), peek());
     return next();
 }
 
 Token Parser::expect(Keyword keyword, Purpose purpose) {
-    if (!peek_is(keyword)) fail_expected(fmt::format("'{}' {}", names_.text(id_of(keyword)), purpose.str()), peek());
+    if (!peek_is(keyword))
+        fail_expected(fmt::format("'{}' {}", names_.text(id_of(keyword)), purpose.str()), peek());
     return next();
 }
 
 Token Parser::expect_open(const Token& keyword) {
-    const Token open = expect(Symbol::lbrace, [&] { return fmt::format("after '{}'", word(keyword)); });
+    const Token open =
+        expect(Symbol::lbrace, [&] { return fmt::format("after '{}'", word(keyword)); });
     if (++nesting_ > options_.max_nesting)
-        fail(open, fmt::format("nesting limit: more than {} blocks, calls and parentheses in progress "
-                               "(ParseOptions::max_nesting)", options_.max_nesting));
+        fail(open,
+             fmt::format("nesting limit: more than {} blocks, calls and parentheses in progress "
+                         "(ParseOptions::max_nesting)",
+                         options_.max_nesting));
     return open;
 }
 
 void Parser::expect_close(const Token& keyword, const Token& open) {
     if (!peek_is(Symbol::rbrace))
-        fail_expected(fmt::format("'}}' to close '{}' opened at {}", word(keyword), location_of(open).str()), peek());
+        fail_expected(
+            fmt::format("'}}' to close '{}' opened at {}", word(keyword), location_of(open).str()),
+            peek());
     next();
     --nesting_;
 }
 
 Parser::Nesting::Nesting(Parser& parser, const Token& at) : parser_(parser) {
     if (++parser_.nesting_ > parser_.options_.max_nesting)
-        parser_.fail(at, fmt::format("nesting limit: more than {} blocks, calls and parentheses in progress "
-                                     "(ParseOptions::max_nesting)", parser_.options_.max_nesting));
+        parser_.fail(
+            at, fmt::format("nesting limit: more than {} blocks, calls and parentheses in progress "
+                            "(ParseOptions::max_nesting)",
+                            parser_.options_.max_nesting));
 }
 
 const std::string& Parser::string_literal(const Token& token) const {
@@ -224,9 +234,11 @@ void Parser::fail(const Token& at, const std::string& what) const {
     for (auto block = blocks_.rbegin(); block != blocks_.rend(); ++block) {
         if (block->kind != Block::Kind::macro_body) continue;
         if (++calls <= kCallsShown)
-            chain += fmt::format(" (in macro {} called at {})", word(block->opened), location_of(block->opened).str());
+            chain += fmt::format(" (in macro {} called at {})", word(block->opened),
+                                 location_of(block->opened).str());
     }
-    if (calls > kCallsShown) chain += fmt::format(" (and {} more macro calls)", calls - kCallsShown);
+    if (calls > kCallsShown)
+        chain += fmt::format(" (and {} more macro calls)", calls - kCallsShown);
     throw SceneError(what, location_of(at), chain);
 }
 
@@ -241,7 +253,8 @@ void Parser::fail_not_supported(const Token& at, const std::string& feature) con
 void Parser::fail_identifier(const Token& at, const std::string& expected) {
     if (at.kind == TokenKind::word && !is_keyword(at.name)) {
         if (const SymbolRef symbol = lookup(at.name))
-            fail(at, fmt::format("wrong type: '{}' is {}, expected {}", word(at), type_name(symbol->value), expected));
+            fail(at, fmt::format("wrong type: '{}' is {}, expected {}", word(at),
+                                 type_name(symbol->value), expected));
         fail(at, fmt::format("unknown identifier '{}' (expected {})", word(at), expected));
     }
     fail_expected(expected, at);
@@ -249,8 +262,10 @@ void Parser::fail_identifier(const Token& at, const std::string& expected) {
 
 void Parser::warn(const Token& at, const std::string& what) {
     const std::string text = fmt::format("{}: warning: {}\n", location_of(at).str(), what);
-    if (options_.on_message) options_.on_message(MessageStream::warning, text);
-    else std::fputs(text.c_str(), stderr);
+    if (options_.on_message)
+        options_.on_message(MessageStream::warning, text);
+    else
+        std::fputs(text.c_str(), stderr);
 }
 
 }  // namespace rayset::tracer

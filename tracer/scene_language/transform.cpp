@@ -16,13 +16,15 @@ Vec3 Matrix4::point(Vec3 p) const {
 
 Vec3 Matrix4::vector(Vec3 v) const {
     const Matrix4& a = *this;
-    return {a(0, 0) * v.x + a(0, 1) * v.y + a(0, 2) * v.z, a(1, 0) * v.x + a(1, 1) * v.y + a(1, 2) * v.z,
+    return {a(0, 0) * v.x + a(0, 1) * v.y + a(0, 2) * v.z,
+            a(1, 0) * v.x + a(1, 1) * v.y + a(1, 2) * v.z,
             a(2, 0) * v.x + a(2, 1) * v.y + a(2, 2) * v.z};
 }
 
 Vec3 Matrix4::normal(Vec3 n) const {
     const Matrix4 inv = inverse();
-    return {inv(0, 0) * n.x + inv(1, 0) * n.y + inv(2, 0) * n.z, inv(0, 1) * n.x + inv(1, 1) * n.y + inv(2, 1) * n.z,
+    return {inv(0, 0) * n.x + inv(1, 0) * n.y + inv(2, 0) * n.z,
+            inv(0, 1) * n.x + inv(1, 1) * n.y + inv(2, 1) * n.z,
             inv(0, 2) * n.x + inv(1, 2) * n.y + inv(2, 2) * n.z};
 }
 
@@ -80,11 +82,15 @@ Matrix4 scaling(Vec3 factors) {
 
 Matrix4 pov_rotation(Vec3 degrees) {
     const double to_radians = analytic::kPi / 180.0;
-    const double ax = degrees.x * to_radians, ay = degrees.y * to_radians, az = degrees.z * to_radians;
+    const double ax = degrees.x * to_radians, ay = degrees.y * to_radians,
+                 az = degrees.z * to_radians;
     Matrix4 rx, ry, rz;
-    rx(1, 1) = std::cos(ax), rx(1, 2) = -std::sin(ax), rx(2, 1) = std::sin(ax), rx(2, 2) = std::cos(ax);
-    ry(0, 0) = std::cos(ay), ry(0, 2) = std::sin(ay), ry(2, 0) = -std::sin(ay), ry(2, 2) = std::cos(ay);
-    rz(0, 0) = std::cos(az), rz(0, 1) = -std::sin(az), rz(1, 0) = std::sin(az), rz(1, 1) = std::cos(az);
+    rx(1, 1) = std::cos(ax), rx(1, 2) = -std::sin(ax), rx(2, 1) = std::sin(ax),
+          rx(2, 2) = std::cos(ax);
+    ry(0, 0) = std::cos(ay), ry(0, 2) = std::sin(ay), ry(2, 0) = -std::sin(ay),
+          ry(2, 2) = std::cos(ay);
+    rz(0, 0) = std::cos(az), rz(0, 1) = -std::sin(az), rz(1, 0) = std::sin(az),
+          rz(1, 1) = std::cos(az);
     return rz * ry * rx;
 }
 
@@ -95,7 +101,8 @@ Matrix4 axis_rotation(Vec3 axis, double degrees) {
     const double cross[3][3] = {{0, -k.z, k.y}, {k.z, 0, -k.x}, {-k.y, k.x, 0}};
     Matrix4 r;
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) r(i, j) = (i == j ? c : 0.0) + s * cross[i][j] + (1 - c) * kk[i] * kk[j];
+        for (int j = 0; j < 3; ++j)
+            r(i, j) = (i == j ? c : 0.0) + s * cross[i][j] + (1 - c) * kk[i] * kk[j];
     return r;
 }
 

@@ -32,11 +32,13 @@ bool Parser::parse_transform_item(Matrix4& transform) {
         std::array<double, 12> values{};
         for (int i = 0; i < 12; ++i) {
             if (i > 0) accept_comma();
-            if (peek_is(Symbol::greater)) fail(peek(), fmt::format("'matrix' needs 12 values, found {}", i));
+            if (peek_is(Symbol::greater))
+                fail(peek(), fmt::format("'matrix' needs 12 values, found {}", i));
             values[static_cast<size_t>(i)] = parse_float("in 'matrix'");
         }
         accept_comma();
-        expect(Symbol::greater, fmt::format("to close the 12 values of 'matrix' opened at {}", location_of(open).str()));
+        expect(Symbol::greater, fmt::format("to close the 12 values of 'matrix' opened at {}",
+                                            location_of(open).str()));
         transform = pov_matrix(values) * transform;
     } else if (keyword.is(Keyword::transform)) {
         next();
@@ -64,8 +66,11 @@ Matrix4 Parser::parse_transform_block(const Token& keyword) {
             result = value->matrix * result;
             next();
         } else if (!parse_transform_item(result)) {
-            fail_identifier(peek(), fmt::format("translate, rotate, scale, matrix, transform, inverse or '}}' to "
-                                                "close 'transform' opened at {}", location_of(open).str()));
+            fail_identifier(
+                peek(),
+                fmt::format("translate, rotate, scale, matrix, transform, inverse or '}}' to "
+                            "close 'transform' opened at {}",
+                            location_of(open).str()));
         }
     }
     expect_close(keyword, open);

@@ -92,11 +92,11 @@ struct TransformValue {
 };
 
 // std::monostate: an array element not yet assigned.
-using Value = std::variant<std::monostate, Numeric, std::string, ArrayRef, MacroRef, FunctionRef, SplineRef,
-                           FileRef, TransformValue, ObjectRef, TextureRef, PigmentRef, NormalRef, FinishRef,
-                           InteriorRef, MediaRef, MaterialRef, CameraRef, FogRef, RainbowRef, SkySphereRef,
-                           DensityRef, ColourMapRef, PigmentMapRef, NormalMapRef, SlopeMapRef, TextureMapRef,
-                           DensityMapRef>;
+using Value = std::variant<std::monostate, Numeric, std::string, ArrayRef, MacroRef, FunctionRef,
+                           SplineRef, FileRef, TransformValue, ObjectRef, TextureRef, PigmentRef,
+                           NormalRef, FinishRef, InteriorRef, MediaRef, MaterialRef, CameraRef,
+                           FogRef, RainbowRef, SkySphereRef, DensityRef, ColourMapRef,
+                           PigmentMapRef, NormalMapRef, SlopeMapRef, TextureMapRef, DensityMapRef>;
 
 // An identifier's value as stored (as_stored for numbers).
 Value as_stored(Value value);
