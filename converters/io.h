@@ -139,6 +139,8 @@ bool parse_double(std::string_view token, double& out);
 bool parse_float(std::string_view token, float& out);
 // Splits on spaces, tabs and (if commas) commas; empty fields between commas are kept.
 std::vector<std::string_view> split_fields(std::string_view line, bool commas = false);
+// Appends a code point (at most 0x10FFFF) to UTF-8 text.
+void append_utf8(char32_t code, std::string& out);
 // Shortest decimal text that reads back to the same float (round trips are bit-exact).
 std::string format_float(float value);
 std::string format_double(double value);

@@ -8,26 +8,15 @@
 
 #include <gtest/gtest.h>
 
+#include "scene_language/scene_test_support.h"
 #include "support/test_support.h"
 #include "tracer/scene_language/grammar.h"
-#include "tracer/scene_language/parse_error.h"
 #include "tracer/scene_language/scene_language.h"
 
 namespace rayset::tracer {
 namespace {
 
-SceneDescription parse(const std::string& text, const ParseOptions& options = {}) {
-    return parse_scene_text(text, "test.pov", options);
-}
-
-std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "no error";
-}
+using namespace scene_test;
 
 // The appearance of `sphere { 0, 1 MODIFIERS }` after `declarations`.
 ObjectAppearance appearance_of(const std::string& modifiers, const std::string& declarations = "") {
@@ -70,12 +59,6 @@ void expect_colour(const Colour& c, double r, double g, double b, double toleran
     EXPECT_NEAR(c.red, r, tolerance);
     EXPECT_NEAR(c.green, g, tolerance);
     EXPECT_NEAR(c.blue, b, tolerance);
-}
-
-void expect_vec(Vec3 actual, Vec3 expected, double tolerance = 1e-12) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
 // ---------------------------------------------------------------- pigments

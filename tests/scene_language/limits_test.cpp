@@ -6,21 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include "scene_language/scene_test_support.h"
 #include "support/test_support.h"
-#include "tracer/scene_language/parse_error.h"
 #include "tracer/scene_language/scene_language.h"
 
 namespace rayset::tracer {
 namespace {
 
-std::string error_of(const std::string& text, const ParseOptions& options = {}) {
-    try {
-        parse_scene_text(text, "test.pov", options);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "no error";
-}
+using namespace scene_test;
 
 TEST(SceneLanguageLimits, RunawayRecursionStopsAtTheNestingLimitWithItsCallChain) {
     ParseOptions options;

@@ -9,45 +9,17 @@
 
 #include <gtest/gtest.h>
 
+#include "scene_language/scene_test_support.h"
 #include "support/test_support.h"
 #include "tracer/scene_language/functions.h"
-#include "tracer/scene_language/parse_error.h"
 #include "tracer/scene_language/scene_language.h"
 
 namespace rayset::tracer {
 namespace {
 
+using namespace scene_test;
+
 namespace fs = std::filesystem;
-
-SceneDescription parse(const std::string& text, const ParseOptions& options = {}) {
-    return parse_scene_text(text, "test.pov", options);
-}
-
-std::string error_of(const std::string& text, const ParseOptions& options = {}) {
-    try {
-        parse(text, options);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "no error";
-}
-
-// The warnings a scene gives.
-std::vector<std::string> warnings_of(const std::string& text) {
-    std::vector<std::string> warnings;
-    ParseOptions options;
-    options.on_message = [&](MessageStream stream, const std::string& text) {
-        if (stream == MessageStream::warning) warnings.push_back(text);
-    };
-    parse(text, options);
-    return warnings;
-}
-
-void expect_vec(Vec3 actual, Vec3 expected, double tolerance = 1e-12) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
 
 template <typename T>
 T only_shape(const SceneDescription& s) {
@@ -303,7 +275,7 @@ TEST(ObjectsCurves, HugeCountsFailBeforeAnythingIsStored) {
 
 TEST(ObjectsCurves, BicubicPatchAndText) {
     const SceneDescription s = parse(R"(
-        bicubic_patch { type 1 flatness 0.1 u_steps 3 v_steps 4,
+        bicubic_patch { type 1 flatness 0.1 u_steps 3 v_steps 4, uv_vectors <0,0> <2,0>, <2,3> <0,3>
           <0,0,2>, <1,0,0>, <2,0,0>, <3,0,-2>, <0,1,0>, <1,1,0>, <2,1,0>, <3,1,0>,
           <0,2,0>, <1,2,0>, <2,2,0>, <3,2,0>, <0,3,2>, <1,3,0>, <2,3,0>, <3,3,-2> })");
     const auto& patch = only_shape<BicubicPatchShape>(s);
@@ -313,6 +285,8 @@ TEST(ObjectsCurves, BicubicPatchAndText) {
     EXPECT_EQ(patch.v_steps, 4);
     expect_vec(patch.points[0], {0, 0, 2});
     expect_vec(patch.points[15], {3, 3, -2});
+    EXPECT_DOUBLE_EQ(patch.corner_uvs[1].x, 2);
+    EXPECT_DOUBLE_EQ(patch.corner_uvs[2].y, 3);
     const auto& defaults =
         only_shape<BicubicPatchShape>(parse("bicubic_patch { type 0 " + std::string(16 * 4, ' ') +
                                             "<0,0,0> <1,0,0> <2,0,0> <3,0,0> <0,1,0> <1,1,0> "
@@ -320,6 +294,8 @@ TEST(ObjectsCurves, BicubicPatchAndText) {
                                             "<0,3,0> <1,3,0> <2,3,0> <3,3,0> }"));
     EXPECT_DOUBLE_EQ(defaults.flatness, 0);
     EXPECT_EQ(defaults.u_steps, 0);
+    EXPECT_DOUBLE_EQ(defaults.corner_uvs[2].x, 1);  // the unit square's corners
+    EXPECT_DOUBLE_EQ(defaults.corner_uvs[3].y, 1);
     // povray: "Undefined bicubic patch type".
     EXPECT_EQ(error_of("bicubic_patch { <0,0,0> }"),
               "bicubic_patch needs 'type' (0 or 1) before its points at test.pov:1:17");
@@ -537,7 +513,8 @@ TEST(ObjectsMeshes, MeshTrianglesSmoothUvAndTextures) {
     EXPECT_TRUE(mesh.has_inside_vector);
     expect_vec(mesh.inside_vector, {0, 0, 1});
 
-    const TriangleMesh& plain = *only_shape<MeshShape>(parse("mesh { triangle { 0, x, y } }")).mesh;
+    const SceneDescription plain_scene = parse("mesh { triangle { 0, x, y } }");
+    const TriangleMesh& plain = *only_shape<MeshShape>(plain_scene).mesh;
     EXPECT_TRUE(plain.normal_faces.empty());
     EXPECT_TRUE(plain.uv_faces.empty());
     EXPECT_TRUE(plain.face_textures.empty());

@@ -9,43 +9,15 @@
 
 #include <gtest/gtest.h>
 
-#include "tracer/scene_language/parse_error.h"
+#include "scene_language/scene_test_support.h"
 #include "tracer/scene_language/scene_language.h"
 
 namespace rayset::tracer {
 namespace {
 
-SceneDescription parse(const std::string& text, const ParseOptions& options = {}) {
-    return parse_scene_text(text, "test.pov", options);
-}
-
-std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "no error";
-}
-
-// The warnings a parse gives.
-std::vector<std::string> warnings_of(const std::string& text) {
-    std::vector<std::string> warnings;
-    ParseOptions options;
-    options.on_message = [&](MessageStream stream, const std::string& message) {
-        if (stream == MessageStream::warning) warnings.push_back(message);
-    };
-    parse(text, options);
-    return warnings;
-}
+using namespace scene_test;
 
 Camera camera_of(const std::string& body) { return parse("camera { " + body + " }").camera; }
-
-void expect_vec(Vec3 actual, Vec3 expected, double tolerance = 1e-12) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
 
 constexpr double kPi = 3.14159265358979323846;
 

@@ -8,42 +8,16 @@
 
 #include <gtest/gtest.h>
 
+#include "scene_language/scene_test_support.h"
 #include "support/test_support.h"
-#include "tracer/scene_language/parse_error.h"
 #include "tracer/scene_language/scene_language.h"
 
 namespace rayset::tracer {
 namespace {
 
+using namespace scene_test;
+
 namespace fs = std::filesystem;
-
-SceneDescription parse(const std::string& text, const ParseOptions& options = {}) {
-    return parse_scene_text(text, "test.pov", options);
-}
-
-std::string error_of(const std::string& text, const ParseOptions& options = {}) {
-    try {
-        parse(text, options);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "no error";
-}
-
-std::string error_of_file(const std::string& path, const ParseOptions& options = {}) {
-    try {
-        parse_scene_file(path, options);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "no error";
-}
-
-void expect_vec(Vec3 actual, Vec3 expected, double tolerance = 1e-12) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
 
 // Evaluates an expression through the camera location (a vector parameter; floats promote).
 Vec3 eval(const std::string& expression, const std::string& declarations = "") {

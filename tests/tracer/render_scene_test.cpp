@@ -145,50 +145,44 @@ TEST(RenderCamera, PovRayFrameAndMirroredRight) {
     expect_vec(PerspectiveCamera(c, 100, 50).ray(0, 25).direction, analytic::normalized({0.5, 0, 1}), 1e-12);
 }
 
+// The message of the error a scene gives the renderer, or "no error".
+std::string render_error(const std::string& text) {
+    try {
+        RenderScene scene(parse_scene_text(text, "test.pov"));
+    } catch (const rayset::Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
 TEST(RenderLights, UnsupportedFadeAndShadowlessAreErrors) {
-    auto error = [](const std::string& text) {
-        try {
-            RenderScene scene(parse_scene_text(text, "test.pov"));
-        } catch (const rayset::Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
-    EXPECT_EQ(error("light_source { <0,0,0> color 1 fade_distance 2 fade_power 1 }"),
+    EXPECT_EQ(render_error("light_source { <0,0,0> color 1 fade_distance 2 fade_power 1 }"),
               "not supported: fade_power 1 (only 2, read as the inverse-square law) at test.pov:1:1");
-    EXPECT_NE(error("light_source { <0,0,0> color 1 shadowless }").find("shadowless"), std::string::npos);
+    EXPECT_NE(render_error("light_source { <0,0,0> color 1 shadowless }").find("shadowless"), std::string::npos);
 }
 
 // What the renderer does not render is refused with its place in the file; POV-Ray's hints
 // (radiosity, photons, max_trace_level ...) and ambient_light are accepted (README.md).
 TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
-    auto error = [](const std::string& text) {
-        try {
-            RenderScene scene(parse_scene_text(text, "test.pov"));
-        } catch (const rayset::Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
-    EXPECT_EQ(error("camera { orthographic location -5*z }"),
+    EXPECT_EQ(render_error("camera { orthographic location -5*z }"),
               "not supported: orthographic camera (only perspective) at test.pov:1:10");
-    EXPECT_EQ(error("#declare C = camera { cylinder 2 }\ncamera { C translate x }"),
+    EXPECT_EQ(render_error("#declare C = camera { cylinder 2 }\ncamera { C translate x }"),
               "not supported: cylinder camera (only perspective) at test.pov:1:23");
-    EXPECT_EQ(error("camera { location -5*z aperture 0.4 blur_samples 9 }"),
+    EXPECT_EQ(render_error("camera { location -5*z aperture 0.4 blur_samples 9 }"),
               "not supported: focal blur (camera aperture 0.4) at test.pov:1:24");
-    EXPECT_EQ(error("sphere { 0, 1 }\nfog { distance 10 rgb 1 }"),
+    EXPECT_EQ(render_error("sphere { 0, 1 }\nfog { distance 10 rgb 1 }"),
               "not supported: fog at test.pov:2:1");
-    EXPECT_EQ(error("rainbow { direction z angle 42 width 5 }"),
+    EXPECT_EQ(render_error("rainbow { direction z angle 42 width 5 }"),
               "not supported: rainbow at test.pov:1:1");
-    EXPECT_EQ(error("sky_sphere { pigment { rgb 1 } }"),
+    EXPECT_EQ(render_error("sky_sphere { pigment { rgb 1 } }"),
               "not supported: sky_sphere at test.pov:1:1");
-    EXPECT_EQ(error("global_settings { assumed_gamma 2.2 }"),
+    EXPECT_EQ(render_error("global_settings { assumed_gamma 2.2 }"),
               "not supported: assumed_gamma 2.2 (colours are read as linear: only 1.0) at "
               "test.pov:1:19");
-    EXPECT_EQ(error("global_settings { assumed_gamma srgb }"),
+    EXPECT_EQ(render_error("global_settings { assumed_gamma srgb }"),
               "not supported: assumed_gamma srgb (colours are read as linear: only 1.0) at "
               "test.pov:1:19");
-    EXPECT_EQ(error("global_settings { assumed_gamma 1 ambient_light 0.3 adc_bailout 0.1\n"
+    EXPECT_EQ(render_error("global_settings { assumed_gamma 1 ambient_light 0.3 adc_bailout 0.1\n"
                     "  max_trace_level 3 max_intersections 10 number_of_waves 3 noise_generator 1\n"
                     "  charset utf8 irid_wavelength 0.5 mm_per_unit 1 radiosity { count 50 }\n"
                     "  photons { count 1000 } subsurface { } }\n"
@@ -197,46 +191,38 @@ TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
 }
 
 TEST(RenderScene, RefusesWhatItDoesNotRender) {
-    auto error = [](const std::string& text) {
-        try {
-            RenderScene scene(parse_scene_text(text, "test.pov"));
-        } catch (const rayset::Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
     auto refused = [](const std::string& feature, const std::string& at) {
         return "not supported: " + feature + " at test.pov:" + at;
     };
-    EXPECT_EQ(error("sphere { 0, 1 }\n  cylinder { 0, y, 1 }"), refused("cylinder", "2:3"));
-    EXPECT_EQ(error("difference { box { -1, 1 } sphere { 0, 2 } }"), refused("difference", "1:1"));
-    EXPECT_EQ(error("union { sphere { 0, 1 } sphere { x, 1 } inverse }"), refused("union", "1:1"));
-    EXPECT_EQ(error("sphere { 0, 1 clipped_by { plane { y, 0 } } }"), refused("clipped_by", "1:1"));
-    EXPECT_EQ(error("sphere { 0, 1 bounded_by { box { -1, 1 } } }"), refused("bounded_by", "1:1"));
-    EXPECT_EQ(error("sphere { 0, 1 inverse }"), refused("inverse", "1:1"));
-    EXPECT_EQ(error("sphere { 0, 1 double_illuminate }"), refused("double_illuminate", "1:1"));
-    EXPECT_EQ(error("sphere { 0, 1 no_radiosity }"), refused("no_radiosity", "1:1"));
-    EXPECT_EQ(error("sphere { 0, 1 uv_mapping }"), refused("uv_mapping", "1:1"));
-    EXPECT_EQ(error("sphere { 0, 0 }"), refused("sphere of radius 0 (only positive radii)", "1:1"));
-    EXPECT_EQ(error("light_group { box { 0, 1 } }"),
+    EXPECT_EQ(render_error("sphere { 0, 1 }\n  cylinder { 0, y, 1 }"), refused("cylinder", "2:3"));
+    EXPECT_EQ(render_error("difference { box { -1, 1 } sphere { 0, 2 } }"), refused("difference", "1:1"));
+    EXPECT_EQ(render_error("union { sphere { 0, 1 } sphere { x, 1 } inverse }"), refused("union", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 1 clipped_by { plane { y, 0 } } }"), refused("clipped_by", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 1 bounded_by { box { -1, 1 } } }"), refused("bounded_by", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 1 inverse }"), refused("inverse", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 1 double_illuminate }"), refused("double_illuminate", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 1 no_radiosity }"), refused("no_radiosity", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 1 uv_mapping }"), refused("uv_mapping", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 0 }"), refused("sphere of radius 0 (only positive radii)", "1:1"));
+    EXPECT_EQ(render_error("light_group { box { 0, 1 } }"),
               refused("light_group (at test.pov:1:1)", "1:15"));
-    EXPECT_EQ(error("#declare T = texture { pigment { rgb 1 } }\n"
+    EXPECT_EQ(render_error("#declare T = texture { pigment { rgb 1 } }\n"
                     "mesh { triangle { 0, x, y texture { T } } }"),
               refused("mesh triangle textures", "2:1"));
-    EXPECT_EQ(error("mesh { smooth_triangle { 0, y, x, y, z, y } triangle { 0, x, -z } }"),
+    EXPECT_EQ(render_error("mesh { smooth_triangle { 0, y, x, y, z, y } triangle { 0, x, -z } }"),
               refused("mesh mixing smooth and flat triangles", "1:1"));
-    EXPECT_EQ(error("light_source { 0, 1 cylinder }"), refused("cylinder light_source", "1:1"));
-    EXPECT_EQ(error("light_source { 0, 1 parallel point_at -y }"),
+    EXPECT_EQ(render_error("light_source { 0, 1 cylinder }"), refused("cylinder light_source", "1:1"));
+    EXPECT_EQ(render_error("light_source { 0, 1 parallel point_at -y }"),
               refused("parallel light_source", "1:1"));
-    EXPECT_EQ(error("light_source { 0, 1 projected_through { sphere { 0, 1 } } }"),
+    EXPECT_EQ(render_error("light_source { 0, 1 projected_through { sphere { 0, 1 } } }"),
               refused("projected_through", "1:1"));
-    EXPECT_EQ(error("light_group { light_source { 0, 1 } }"),
+    EXPECT_EQ(render_error("light_group { light_source { 0, 1 } }"),
               refused("light_group (at test.pov:1:1)", "1:15"));
     // Photon and radiosity hints change nothing a path tracer computes; a looks_like object is
     // an object without shadow.
-    EXPECT_EQ(error("sphere { 0, 1 photons { target } radiosity { importance 0.5 } hollow }"),
+    EXPECT_EQ(render_error("sphere { 0, 1 photons { target } radiosity { importance 0.5 } hollow }"),
               "no error");
-    EXPECT_EQ(error("light_source { 0, 1 looks_like { sphere { 0, 0.1 } } }"), "no error");
+    EXPECT_EQ(render_error("light_source { 0, 1 looks_like { sphere { 0, 0.1 } } }"), "no error");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <fmt/printf.h>
 
+#include "converters/io.h"
 #include "tracer/scene_language/grammar.h"
 #include "tracer/scene_language/object_tree.h"
 #include "tracer/scene_language/parse_error.h"
@@ -182,17 +183,9 @@ Numeric Parser::parse_builtin_numeric(const Token& name) {
     const Keyword k = keyword_of(name.name);
     if (const std::optional<Numeric> constant = builtin_constant(name)) return *constant;
 
-    const Token open =
-        expect(Symbol::lparen, [&] { return fmt::format("after '{}'", word(name)); });
-    auto close = [&] {
-        expect(Symbol::rparen, [&] {
-            return fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str());
-        });
-    };
-    auto comma = [&] {
-        expect(Symbol::comma,
-               [&] { return fmt::format("between the arguments of '{}'", word(name)); });
-    };
+    const Token open = open_call(name);
+    auto close = [&] { close_call(name, open); };
+    auto comma = [&] { call_comma(name); };
     auto float_arg = [&]() {
         const Token at = peek();
         const Numeric n = parse_expression();
@@ -544,17 +537,9 @@ std::string Parser::parse_builtin_string(const Token& name) {
     if (k != Keyword::chr && k != Keyword::concat && k != Keyword::datetime && k != Keyword::str &&
         k != Keyword::strlwr && k != Keyword::strupr && k != Keyword::substr && k != Keyword::vstr)
         fail_identifier(name, "a string");
-    const Token open =
-        expect(Symbol::lparen, [&] { return fmt::format("after '{}'", word(name)); });
-    auto close = [&] {
-        expect(Symbol::rparen, [&] {
-            return fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str());
-        });
-    };
-    auto comma = [&] {
-        expect(Symbol::comma,
-               [&] { return fmt::format("between the arguments of '{}'", word(name)); });
-    };
+    const Token open = open_call(name);
+    auto close = [&] { close_call(name, open); };
+    auto comma = [&] { call_comma(name); };
     auto int_arg = [&](const char* what) {
         const double value = parse_float(fmt::format("as the {} of '{}'", what, word(name)));
         return static_cast<int>(std::clamp(std::trunc(value), -2147483648.0, 2147483647.0));
@@ -567,22 +552,7 @@ std::string Parser::parse_builtin_string(const Token& name) {
             if (code < 0 || code > 0x10FFFF)
                 fail(at, fmt::format("chr({}): not a character code", code));
             std::string out;
-            const auto c = static_cast<unsigned>(code);
-            if (c < 0x80) {
-                out += static_cast<char>(c);
-            } else if (c < 0x800) {
-                out += static_cast<char>(0xC0 | (c >> 6));
-                out += static_cast<char>(0x80 | (c & 0x3F));
-            } else if (c < 0x10000) {
-                out += static_cast<char>(0xE0 | (c >> 12));
-                out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-                out += static_cast<char>(0x80 | (c & 0x3F));
-            } else {
-                out += static_cast<char>(0xF0 | (c >> 18));
-                out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-                out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-                out += static_cast<char>(0x80 | (c & 0x3F));
-            }
+            append_utf8(static_cast<char32_t>(code), out);
             return out;
         }
         case Keyword::concat: {

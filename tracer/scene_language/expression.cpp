@@ -7,6 +7,7 @@
 // rather than a comparison; parentheses bring the full grammar back. Operators work term by
 // term on vectors and colours; the shorter operand is promoted (a float repeats into every
 // term, a vector pads with zeros).
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -31,33 +32,22 @@ Numeric combine(Numeric a, Numeric b, double (*op)(double, double)) {
     return a;
 }
 
-bool is_colour_keyword(const Token& token) {
-    if (token.kind != TokenKind::word) return false;
-    switch (static_cast<Keyword>(is_keyword(token.name) ? token.name : id_of(Keyword::size_))) {
-        case Keyword::color:
-        case Keyword::colour:
-        case Keyword::rgb:
-        case Keyword::rgbf:
-        case Keyword::rgbt:
-        case Keyword::rgbft:
-        case Keyword::srgb:
-        case Keyword::srgbf:
-        case Keyword::srgbt:
-        case Keyword::srgbft:
-        case Keyword::red:
-        case Keyword::green:
-        case Keyword::blue:
-        case Keyword::filter:
-        case Keyword::transmit: return true;
-        default: return false;
-    }
-}
-
 double srgb_to_linear(double c) {
     return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
 }  // namespace
+
+bool is_colour_keyword(const Token& token) {
+    constexpr Keyword kColourKeywords[] = {
+        Keyword::color,  Keyword::colour, Keyword::rgb,   Keyword::rgbf,  Keyword::rgbt,
+        Keyword::rgbft,  Keyword::srgb,   Keyword::srgbf, Keyword::srgbt, Keyword::srgbft,
+        Keyword::red,    Keyword::green,  Keyword::blue,  Keyword::filter, Keyword::transmit};
+    if (token.kind != TokenKind::word || !is_keyword(token.name)) return false;
+    const auto keyword = static_cast<Keyword>(token.name);
+    return std::find(std::begin(kColourKeywords), std::end(kColourKeywords), keyword) !=
+           std::end(kColourKeywords);
+}
 
 Numeric Numeric::promoted(int to_terms) const {
     if (terms >= to_terms) return *this;

@@ -327,7 +327,7 @@ private:
 
     // The arguments of a call, each a full function expression.
     int arguments(const Token& name) {
-        const Token open = p_.expect(Symbol::lparen, fmt::format("after '{}'", p_.word(name)));
+        const Token open = p_.open_call(name);
         int count = 0;
         if (!p_.peek_is(Symbol::rparen)) {
             do {
@@ -335,8 +335,7 @@ private:
                 ++count;
             } while (p_.accept(Symbol::comma));
         }
-        p_.expect(Symbol::rparen, fmt::format("to close '{}(' opened at {}", p_.word(name),
-                                              p_.location_of(open).str()));
+        p_.close_call(name, open);
         return count;
     }
 
@@ -380,7 +379,7 @@ private:
 
     // sum(i, first, last, body) and prod(...): the body runs once per value of i.
     void loop(const Token& name) {
-        const Token open = p_.expect(Symbol::lparen, fmt::format("after '{}'", p_.word(name)));
+        const Token open = p_.open_call(name);
         const Token variable = p_.next();
         if (variable.kind != TokenKind::word)
             p_.fail_expected(fmt::format("the variable of '{}'", p_.word(name)), variable);
@@ -402,8 +401,7 @@ private:
         depth_ = saved_depth;
         f_.code_[loop_at].length = static_cast<int32_t>(f_.code_.size() - loop_at - 1);
         locals_.pop_back();
-        p_.expect(Symbol::rparen, fmt::format("to close '{}(' opened at {}", p_.word(name),
-                                              p_.location_of(open).str()));
+        p_.close_call(name, open);
     }
 
     void primary() {

@@ -208,9 +208,9 @@ ObjectRef parse_polygon(Parser& p, const Token& keyword) {
     return node;
 }
 
-// bicubic_patch { type T [flatness F] [u_steps U] [v_steps V] 16 points }: the items in any
-// order, `type` required; the points start with '<' or a vector identifier (POV-Ray reads a
-// number there as its old syntax without keywords).
+// bicubic_patch { type T [flatness F] [u_steps U] [v_steps V] [uv_vectors 4 corners] 16 points }:
+// the items before the points in any order, `type` required; the points start with '<' or a vector
+// identifier (POV-Ray reads a number there as its old syntax without keywords).
 ObjectRef parse_bicubic_patch(Parser& p, const Token& keyword) {
     const Token open = p.expect_open(keyword);
     auto node = new_node(p, keyword);
@@ -225,6 +225,11 @@ ObjectRef parse_bicubic_patch(Parser& p, const Token& keyword) {
             patch.u_steps = p.parse_int("after 'u_steps'", 0);
         else if (p.accept(Keyword::v_steps))
             patch.v_steps = p.parse_int("after 'v_steps'", 0);
+        else if (p.accept(Keyword::uv_vectors))
+            for (size_t i = 0; i < patch.corner_uvs.size(); ++i) {
+                if (i > 0) p.accept_comma();
+                patch.corner_uvs[i] = parse_vec2(p, "as a corner's uv vector of the bicubic_patch");
+            }
         else
             break;
         p.accept_comma();

@@ -73,6 +73,11 @@ public:
     // '{' after `keyword`, counted against the nesting limit until its expect_close.
     Token expect_open(const Token& keyword);
     void expect_close(const Token& keyword, const Token& open);
+    // The parentheses and commas of a call name(a, b): the errors name the function, and the
+    // closing one where its '(' opened.
+    Token open_call(const Token& name);
+    void call_comma(const Token& name);
+    void close_call(const Token& name, const Token& open);
     // The value of the declared identifier that is the lookahead token, or nullptr. Valid until
     // the next token is taken.
     const Value* peek_value();
@@ -324,5 +329,8 @@ private:
     std::vector<RandomStream> random_streams_;
     std::chrono::system_clock::time_point start_time_;
 };
+
+// The keywords that start a colour: colour, rgb ... srgbft, red, green, blue, filter, transmit.
+bool is_colour_keyword(const Token& token);
 
 }  // namespace rayset::tracer

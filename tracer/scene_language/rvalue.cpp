@@ -40,25 +40,11 @@ Value Parser::parse_rvalue(const Token& purpose) {
             directive_frame_ = 0;
             return parse_object(*this);
         }
+        if (is_colour_keyword(token)) {
+            const Colour c = parse_colour();
+            return Numeric{{c.red, c.green, c.blue, c.filter, c.transmit}, 5};
+        }
         switch (static_cast<Keyword>(token.name)) {
-            case Keyword::color:
-            case Keyword::colour:
-            case Keyword::rgb:
-            case Keyword::rgbf:
-            case Keyword::rgbt:
-            case Keyword::rgbft:
-            case Keyword::srgb:
-            case Keyword::srgbf:
-            case Keyword::srgbt:
-            case Keyword::srgbft:
-            case Keyword::red:
-            case Keyword::green:
-            case Keyword::blue:
-            case Keyword::filter:
-            case Keyword::transmit: {
-                const Colour c = parse_colour();
-                return Numeric{{c.red, c.green, c.blue, c.filter, c.transmit}, 5};
-            }
             case Keyword::array:
                 // Not a block: what follows its sizes is looked at, and a directive there must
                 // wait until the array is declared (arrays.inc writes `#local A = array[N]`

@@ -194,6 +194,8 @@ struct BicubicPatchShape {
     double flatness = 0;
     int u_steps = 0, v_steps = 0;
     std::array<Vec3, 16> points{};
+    // The uv coordinates of the corners points[0], [3], [15], [12] (uv_vectors).
+    std::array<Vec2, 4> corner_uvs{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
 };
 // Points p with dot(normal, p - centre) = 0 and hole_radius <= |p - centre| <= radius.
 struct DiscShape {

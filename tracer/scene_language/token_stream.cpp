@@ -195,6 +195,20 @@ void Parser::expect_close(const Token& keyword, const Token& open) {
     --nesting_;
 }
 
+Token Parser::open_call(const Token& name) {
+    return expect(Symbol::lparen, [&] { return fmt::format("after '{}'", word(name)); });
+}
+
+void Parser::call_comma(const Token& name) {
+    expect(Symbol::comma, [&] { return fmt::format("between the arguments of '{}'", word(name)); });
+}
+
+void Parser::close_call(const Token& name, const Token& open) {
+    expect(Symbol::rparen, [&] {
+        return fmt::format("to close '{}(' opened at {}", word(name), location_of(open).str());
+    });
+}
+
 Parser::Nesting::Nesting(Parser& parser, const Token& at) : parser_(parser) {
     if (++parser_.nesting_ > parser_.options_.max_nesting)
         parser_.fail(
