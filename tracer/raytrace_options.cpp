@@ -148,21 +148,50 @@ const PovSetting kPovSettings[] = {
 
 constexpr const char* kSupportedSwitches = "+W +H +O +I +L +K +KFI +KFF +KI +KF +SF +EF";
 
-// POV-Ray .ini options that tune its own sampling, display, console and file output: they have
-// nothing to act on in a progressive physical renderer, so a POV-Ray .ini file may keep them
-// (the sample scenes' .ini files carry them). They are read and have no effect.
+// POV-Ray .ini options that tune its own sampling, bounding, quality, display, console and file
+// output: they have nothing to act on in a progressive physical renderer, which always writes its
+// image, so a POV-Ray .ini file may keep them (the sample scenes' .ini files carry them). They are
+// read and have no effect.
 const char* const kIniKeysWithoutEffect[] = {
     "antialias", "antialias_threshold", "antialias_depth", "antialias_gamma", "jitter",
     "jitter_amount", "sampling_method", "pause_when_done", "output_file_type", "output_alpha",
-    "bits_per_color", "test_abort", "test_abort_count", "verbose", "display", "display_gamma",
-    "warning_console", "debug_console", "render_console", "statistic_console", "all_console",
-    "render_pattern", "render_block_size", "render_block_step", "draw_vistas", "user_abort_command",
-    "user_abort_return", "all_file", "debug_file", "fatal_file", "render_file", "statistic_file",
-    "warning_file", "create_ini"};
+    "output_to_file", "bits_per_color", "test_abort", "test_abort_count", "verbose", "display",
+    "display_gamma", "dither", "dither_method", "palette", "preview_start_size", "preview_end_size",
+    "warning_console", "debug_console", "fatal_console", "render_console", "statistic_console",
+    "all_console", "render_pattern", "render_block_size", "render_block_step", "draw_vistas",
+    "all_file", "debug_file", "fatal_file", "render_file", "statistic_file", "warning_file",
+    "create_ini", "quality", "bounding", "bounding_method", "bounding_threshold", "light_buffer",
+    "vista_buffer", "remove_bounds", "split_unions", "high_reproducibility", "radiosity_vain_pretrace",
+    "pre_scene_return", "pre_frame_return", "post_frame_return", "post_scene_return",
+    "user_abort_return", "fatal_error_return"};
 
-bool is_true(const std::string& value) {
+// Options that change what POV-Ray renders or does when they are on (interlaced fields, grey
+// output, a continued or real-time render, radiosity data files): read when off, refused when on.
+const char* const kIniKeysOnlyOff[] = {
+    "field_render", "odd_field", "grayscale_output", "continue_trace", "clockless_animation",
+    "real_time_raytracing", "radiosity_from_file", "radiosity_to_file"};
+
+// Shell commands POV-Ray runs around a render and a header it includes before the scene: read
+// when empty, refused otherwise (raytrace runs no commands and reads only the scene).
+const char* const kIniKeysOnlyEmpty[] = {
+    "pre_scene_command", "pre_frame_command", "post_frame_command", "post_scene_command",
+    "user_abort_command", "fatal_error_command", "include_header"};
+
+// The region to render, as a fraction (0 to 1) or a pixel number: only the whole image is read.
+const char* const kIniRegionKeys[] = {"start_column", "end_column", "start_row", "end_row"};
+
+template <size_t N>
+bool one_of(const std::string& key, const char* const (&keys)[N]) {
+    return std::find(std::begin(keys), std::end(keys), key) != std::end(keys);
+}
+
+// A boolean option's value as POV-Ray reads it: on/off, true/false, yes/no, 1/0.
+bool ini_bool(const std::string& value, const std::string& name, const std::string& where) {
     const std::string v = lower(value);
-    return v == "on" || v == "true" || v == "yes" || v == "1";
+    if (v == "on" || v == "true" || v == "yes" || v == "1") return true;
+    if (v == "off" || v == "false" || v == "no" || v == "0") return false;
+    throw Error(fmt::format("{}: {} must be on or off (or true/false, yes/no, 1/0), got '{}'",
+                            where, name, value));
 }
 
 // Declare=NAME=VALUE: a float identifier the scene sees as declared (POV-Ray's option).
@@ -242,11 +271,33 @@ void apply_ini_setting(const std::string& line, const std::string& where, Raytra
     const std::string key = lower(trim(line.substr(0, equals)));
     std::string value = trim(line.substr(equals + 1));
     if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
-    if (std::find(std::begin(kIniKeysWithoutEffect), std::end(kIniKeysWithoutEffect), key) !=
-        std::end(kIniKeysWithoutEffect))
-        return;
+    const std::string name = trim(line.substr(0, equals));
+    if (one_of(key, kIniKeysWithoutEffect)) return;
+    if (one_of(key, kIniKeysOnlyOff)) {
+        if (value.empty() || !ini_bool(value, name, where)) return;
+        throw Error(fmt::format("{}: not supported: {}={} (only off)", where, name, value));
+    }
+    if (one_of(key, kIniKeysOnlyEmpty)) {
+        if (value.empty()) return;
+        throw Error(fmt::format("{}: not supported: {}={} (raytrace runs no commands and reads no "
+                                "header: remove the option)",
+                                where, name, value));
+    }
+    if (one_of(key, kIniRegionKeys)) {
+        const bool start = key.rfind("start_", 0) == 0;
+        char* end = nullptr;
+        const double v = std::strtod(value.c_str(), &end);
+        if (*end == '\0' && !value.empty() && (start ? v >= 0 && v <= 1 : v == 1)) return;
+        throw Error(fmt::format("{}: not supported: {}={} (only the whole image: render it and crop)",
+                                where, name, value));
+    }
+    if (key == "version") {
+        if (value == "3.7" || value == "3.70") return;
+        throw Error(fmt::format("{}: not supported: Version={} (the language of POV-Ray 3.7 only)",
+                                where, value));
+    }
     if (key == "cyclic_animation") {
-        o.animation.cyclic = is_true(value);
+        o.animation.cyclic = ini_bool(value, name, where);
         return;
     }
     if (key == "declare") return apply_declaration(value, where, o);
@@ -254,9 +305,9 @@ void apply_ini_setting(const std::string& line, const std::string& where, Raytra
                                       [&](const PovSetting& s) { return key == s.ini_key; });
     if (setting == std::end(kPovSettings))
         throw Error(fmt::format("{}: not supported: .ini option '{}' (supported: {}, Cyclic_Animation, "
-                                "Declare; POV-Ray's antialiasing, display, console and output-type "
-                                "options are read and have no effect)",
-                                where, trim(line.substr(0, equals)), kSupportedIniKeys));
+                                "Declare; POV-Ray's antialiasing, bounding, quality, display, console and "
+                                "output options are read and have no effect)",
+                                where, name, kSupportedIniKeys));
     setting->apply(value, setting->what, where, o);
 }
 

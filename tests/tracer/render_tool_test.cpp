@@ -101,11 +101,29 @@ TEST(RaytraceTool, SceneErrorNamesTheLocationAndWritesNothing) {
 
 TEST(RaytraceTool, BadIniAndSwitchesAreReported) {
     test::ScratchDir dir;
-    // POV-Ray's antialiasing options are read and have no effect; an unknown option is refused.
-    test::write_file(dir.file("x.ini"), "Width=20\nAntialias=on\nQuality=9\n");
+    // POV-Ray's antialiasing, quality and bounding options are read and have no effect (as
+    // benchmark.ini writes them); an unknown option is refused.
+    test::write_file(dir.file("x.ini"),
+                     "Width=20\nAntialias=on\nQuality=9\nBounding_Threshold=3\nField_Render=Off\n"
+                     "Pre_Scene_Command=\nStart_Column=0\nEnd_Column=1\nVersion=3.7\nFrobnicate=2\n");
     auto r = raytrace("x.ini '" + kCornell + "'", dir.path().string());
     EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.output.find("x.ini:3: not supported: .ini option 'Quality'"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("x.ini:10: not supported: .ini option 'Frobnicate'"),
+              std::string::npos)
+        << r.output;
+    // What would change the render is refused when asked for.
+    const std::pair<const char*, const char*> refused[] = {
+        {"Field_Render=On", "not supported: Field_Render=On (only off)"},
+        {"Odd_Field=maybe", "Odd_Field must be on or off (or true/false, yes/no, 1/0), got 'maybe'"},
+        {"Post_Scene_Command=rm x", "not supported: Post_Scene_Command=rm x (raytrace runs no"},
+        {"End_Row=0.5", "not supported: End_Row=0.5 (only the whole image: render it and crop)"},
+        {"Version=3.5", "not supported: Version=3.5 (the language of POV-Ray 3.7 only)"}};
+    for (const auto& [line, message] : refused) {
+        test::write_file(dir.file("y.ini"), std::string("Width=20\n") + line + "\n");
+        r = raytrace("y.ini '" + kCornell + "' --parse-only", dir.path().string());
+        EXPECT_NE(r.status, 0) << line;
+        EXPECT_NE(r.output.find(std::string("y.ini:2: ") + message), std::string::npos) << r.output;
+    }
     r = raytrace("'" + kCornell + "' +Q9", dir.path().string());
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.output.find("'+Q9' is not supported"), std::string::npos) << r.output;
