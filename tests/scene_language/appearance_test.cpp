@@ -63,11 +63,25 @@ void expect_colour(const Colour& c, double r, double g, double b, double toleran
 
 // ---------------------------------------------------------------- pigments
 
+TEST(CopyOnWrite, CopiesShareTheirValueUntilOneIsEdited) {
+    const CopyOnWrite<Finish> a;
+    CopyOnWrite<Finish> b = a;
+    EXPECT_EQ(&*a, &*b);                      // one default value for both
+    EXPECT_EQ(&*a, &*CopyOnWrite<Finish>());  // and for every other default
+    b.edit().diffuse = 0.9;
+    EXPECT_NE(&*a, &*b);
+    EXPECT_DOUBLE_EQ(a->diffuse, 0.6);  // POV-Ray's default, unchanged
+    EXPECT_DOUBLE_EQ(b->diffuse, 0.9);
+    const Finish* own = &*b;
+    b.edit().phong = 1;
+    EXPECT_EQ(&*b, own);  // once its own, edited in place
+}
+
 TEST(AppearancePigments, SolidColourAndDefaults) {
     const Texture t =
         texture_of(appearance_of("pigment { rgbf <1, 0.5, 0.25, 0.1> quick_color rgb 1 }"));
     EXPECT_EQ(t.kind, Texture::Kind::plain);
-    EXPECT_EQ(t.pigment.pattern.kind, PatternKind::plain);
+    EXPECT_EQ(t.pigment.pattern->kind, PatternKind::plain);
     expect_colour(t.pigment.colour, 1, 0.5, 0.25);
     EXPECT_FLOAT_EQ(t.pigment.colour.filter, 0.1);
     EXPECT_TRUE(t.pigment.quick_colour_given);
@@ -75,10 +89,10 @@ TEST(AppearancePigments, SolidColourAndDefaults) {
     EXPECT_EQ(t.pigment.location.line, 2);
     EXPECT_FALSE(t.normal);
     // POV-Ray's default finish.
-    EXPECT_DOUBLE_EQ(t.finish.ambient.red, 0.1);
-    EXPECT_DOUBLE_EQ(t.finish.diffuse, 0.6);
-    EXPECT_DOUBLE_EQ(t.finish.phong_size, 40);
-    EXPECT_DOUBLE_EQ(t.finish.roughness, 0.05);
+    EXPECT_DOUBLE_EQ(t.finish->ambient.red, 0.1);
+    EXPECT_DOUBLE_EQ(t.finish->diffuse, 0.6);
+    EXPECT_DOUBLE_EQ(t.finish->phong_size, 40);
+    EXPECT_DOUBLE_EQ(t.finish->roughness, 0.05);
     // An empty pigment is POV-Ray's default: black.
     expect_colour(texture_of(appearance_of("pigment { }")).pigment.colour, 0, 0, 0);
 }
@@ -89,10 +103,10 @@ TEST(AppearancePigments, PatternWithColourMapOldAndNewEntries) {
             appearance_of("pigment { gradient <0, 2, 0> color_map { [0.1 rgb 1] [0.3, color red 1]"
                           " [0.5 0.7 color rgb 0.2 color rgb 0.4] } }"))
             .pigment;
-    EXPECT_EQ(p.pattern.kind, PatternKind::gradient);
-    expect_vec(p.pattern.gradient, {0, 2, 0});
-    EXPECT_EQ(p.pattern.location.line, 2);
-    EXPECT_EQ(p.pattern.location.column, 25);
+    EXPECT_EQ(p.pattern->kind, PatternKind::gradient);
+    expect_vec(p.pattern->gradient, {0, 2, 0});
+    EXPECT_EQ(p.pattern->location.line, 2);
+    EXPECT_EQ(p.pattern->location.column, 25);
     ASSERT_TRUE(p.map);
     EXPECT_EQ(p.map->kind, BlendMapKind::colour);
     ASSERT_EQ(p.map->entries.size(), 4u);  // the old two-value entry is two entries
@@ -104,7 +118,7 @@ TEST(AppearancePigments, PatternWithColourMapOldAndNewEntries) {
     EXPECT_FLOAT_EQ(p.map->entries[2].colour.red, 0.2);
     EXPECT_FLOAT_EQ(p.map->entries[3].value, 0.7);
     EXPECT_FLOAT_EQ(p.map->entries[3].colour.red, 0.4);
-    EXPECT_EQ(p.pattern.waveform, Waveform::ramp);
+    EXPECT_EQ(p.pattern->waveform, Waveform::ramp);
 }
 
 TEST(AppearancePigments, BlockPatternListsTakeBuiltInItemsForMissingOnes) {
@@ -121,7 +135,7 @@ TEST(AppearancePigments, BlockPatternListsTakeBuiltInItemsForMissingOnes) {
             .pigment;
     ASSERT_EQ(q.map->entries.size(), 3u);
     EXPECT_EQ(q.map->kind, BlendMapKind::pigment);
-    EXPECT_EQ(q.map->entries[1].pigment->pattern.kind, PatternKind::gradient);
+    EXPECT_EQ(q.map->entries[1].pigment->pattern->kind, PatternKind::gradient);
     EXPECT_DOUBLE_EQ(q.map->entries[2].pigment->colour.red, 1);  // hexagon's built-in third: red
     EXPECT_FALSE(texture_of(appearance_of("pigment { brick }")).pigment.map);
     EXPECT_DOUBLE_EQ(builtin_colour_map(PatternKind::brick).entries[1].colour.green, 0.15);
@@ -133,8 +147,8 @@ TEST(AppearancePigments, BlockPatternListsTakeBuiltInItemsForMissingOnes) {
     const Pigment o = texture_of(appearance_of("pigment { object { S rgb 1, rgb <0, 1, 0> } }",
                                                "#declare S = sphere { 0, 1 }"))
                           .pigment;
-    EXPECT_EQ(o.pattern.kind, PatternKind::object);
-    ASSERT_TRUE(o.pattern.object);
+    EXPECT_EQ(o.pattern->kind, PatternKind::object);
+    ASSERT_TRUE(o.pattern->object);
     EXPECT_DOUBLE_EQ(o.map->entries[1].colour.green, 1);
 }
 
@@ -148,15 +162,15 @@ TEST(AppearancePigments, PigmentMapEntriesAndTheirTransforms) {
             .pigment;
     ASSERT_EQ(p.map->entries.size(), 3u);
     EXPECT_EQ(p.map->kind, BlendMapKind::pigment);
-    EXPECT_EQ(p.map->entries[0].pigment->pattern.kind, PatternKind::wood);
-    EXPECT_EQ(p.map->entries[0].pigment->pattern.waveform, Waveform::triangle);  // wood's own
+    EXPECT_EQ(p.map->entries[0].pigment->pattern->kind, PatternKind::wood);
+    EXPECT_EQ(p.map->entries[0].pigment->pattern->waveform, Waveform::triangle);  // wood's own
     // The translate written before the map moves every entry too (checked with POV-Ray 3.7).
-    const std::vector<Warp>& warps = p.map->entries[1].pigment->pattern.warps;
+    const std::vector<Warp>& warps = p.map->entries[1].pigment->pattern->warps;
     ASSERT_EQ(warps.size(), 1u);  // scale 2 then the translate: one transform
     expect_vec(warps[0].transform.point({1, 1, 1}), {3, 2, 2});
-    ASSERT_EQ(p.map->entries[2].pigment->pattern.warps.size(), 1u);
-    ASSERT_EQ(p.pattern.warps.size(), 1u);
-    expect_vec(p.pattern.warps[0].transform.point({0, 0, 0}), {1, 0, 0});
+    ASSERT_EQ(p.map->entries[2].pigment->pattern->warps.size(), 1u);
+    ASSERT_EQ(p.pattern->warps.size(), 1u);
+    expect_vec(p.pattern->warps[0].transform.point({0, 0, 0}), {1, 0, 0});
 }
 
 TEST(AppearancePigments, ImageMapAndItsModifiers) {
@@ -168,8 +182,8 @@ TEST(AppearancePigments, ImageMapAndItsModifiers) {
     test::write_file(dir.file("s.pov"), text);
     const SceneDescription s = parse_scene_file(dir.file("s.pov"));
     const Pigment& p = s.objects.at(0).appearance.texture->pigment;
-    EXPECT_EQ(p.pattern.kind, PatternKind::image_map);
-    const ImageMap& image = *p.pattern.image;
+    EXPECT_EQ(p.pattern->kind, PatternKind::image_map);
+    const ImageMap& image = *p.pattern->image;
     EXPECT_EQ(image.file_type, "png");
     EXPECT_EQ(image.path, std::filesystem::canonical(dir.file("a.png")).string());
     EXPECT_TRUE(image.gamma_given && image.gamma_srgb);
@@ -182,7 +196,7 @@ TEST(AppearancePigments, ImageMapAndItsModifiers) {
     EXPECT_DOUBLE_EQ(image.filter[0].amount, 0.5);
     ASSERT_EQ(image.transmit.size(), 1u);
     EXPECT_EQ(image.transmit[0].index, -1);  // all
-    EXPECT_EQ(p.pattern.warps.size(), 1u);
+    EXPECT_EQ(p.pattern->warps.size(), 1u);
     EXPECT_NE(error_of("sphere { 0, 1 pigment { image_map { png \"missing.png\" } } }")
                   .find("image file \"missing.png\" "
                         "not found"),
@@ -193,7 +207,7 @@ TEST(AppearancePigments, ImageMapAndItsModifiers) {
 
 TEST(AppearancePatterns, ParametersOfEachKind) {
     auto pattern = [](const std::string& body, const std::string& declarations = "") {
-        return texture_of(appearance_of("pigment { " + body + " }", declarations)).pigment.pattern;
+        return *texture_of(appearance_of("pigment { " + body + " }", declarations)).pigment.pattern;
     };
     Pattern p = pattern("brick brick_size <2, 1, 3> mortar 0.2");
     expect_vec(p.brick_size, {2, 1, 3});
@@ -248,21 +262,21 @@ TEST(AppearancePatterns, ParametersOfEachKind) {
     EXPECT_TRUE(pattern("function { x + y }").function);
     p = pattern("pigment_pattern { checker rgb 1, rgb 0 scale 2 }");
     ASSERT_TRUE(p.pigment);
-    EXPECT_EQ(p.pigment->pattern.kind, PatternKind::checker);
+    EXPECT_EQ(p.pigment->pattern->kind, PatternKind::checker);
     EXPECT_EQ(pattern("uv_mapping spiral2 8").uv_mapping, true);
 }
 
 TEST(AppearancePatterns, ModifiersWarpsAndTheirOrder) {
     const Pattern p =
-        texture_of(
-            appearance_of(
-                "pigment { wood turbulence <0.5, 0.2, 0.1> octaves 3 omega 0.3 lambda 1.5 "
-                "translate x scale 2 warp { repeat 2*x offset z flip <1, 1, 0> } rotate 90*y "
-                "warp { black_hole <1, 1, 1>, 0.5 strength 2 falloff 3 inverse type 1 "
-                "repeat <2, 2, 2> turbulence 0.1 } warp { turbulence 0.4 octaves 2 } "
-                "warp { toroidal orientation y dist_exp 1 major_radius 2 } warp { planar y, 2 } "
-                "warp { cubic } frequency 2 phase 0.25 poly_wave 3 noise_generator 3 }"))
-            .pigment.pattern;
+        *texture_of(
+             appearance_of(
+                 "pigment { wood turbulence <0.5, 0.2, 0.1> octaves 3 omega 0.3 lambda 1.5 "
+                 "translate x scale 2 warp { repeat 2*x offset z flip <1, 1, 0> } rotate 90*y "
+                 "warp { black_hole <1, 1, 1>, 0.5 strength 2 falloff 3 inverse type 1 "
+                 "repeat <2, 2, 2> turbulence 0.1 } warp { turbulence 0.4 octaves 2 } "
+                 "warp { toroidal orientation y dist_exp 1 major_radius 2 } warp { planar y, 2 } "
+                 "warp { cubic } frequency 2 phase 0.25 poly_wave 3 noise_generator 3 }"))
+             .pigment.pattern;
     expect_vec(p.turbulence.amount, {0.5, 0.2, 0.1});
     EXPECT_EQ(p.turbulence.octaves, 3);
     EXPECT_DOUBLE_EQ(p.turbulence.omega, 0.3);
@@ -304,7 +318,7 @@ TEST(AppearancePatterns, ModifiersWarpsAndTheirOrder) {
     EXPECT_EQ(p.noise_generator, 3);
     // A cylindrical warp keeps its defaults.
     const Warp w = texture_of(appearance_of("pigment { checker warp { cylindrical } }"))
-                       .pigment.pattern.warps.at(0);
+                       .pigment.pattern->warps.at(0);
     expect_vec(w.orientation, {0, 0, 1});
     EXPECT_DOUBLE_EQ(w.distance_exponent, 0);
 }
@@ -363,7 +377,7 @@ TEST(AppearanceMaps, DeclaredMapsLimitsAndEntries) {
     EXPECT_DOUBLE_EQ(a.texture->map->entries[0].texture->pigment.colour.red, 1);
     const Media& m = *a.interior->media.at(0);
     EXPECT_EQ(m.densities.at(0).item->map->kind, BlendMapKind::density);
-    EXPECT_EQ(m.densities.at(0).item->map->entries[1].pigment->pattern.kind,
+    EXPECT_EQ(m.densities.at(0).item->map->entries[1].pigment->pattern->kind,
               PatternKind::spherical);
     EXPECT_EQ(m.densities.at(1).item->map->kind, BlendMapKind::colour);
     EXPECT_EQ(error_of("#declare M = color_map { }"),
@@ -408,17 +422,17 @@ TEST(AppearanceNormals, AmountMapsAndModifiers) {
     EXPECT_DOUBLE_EQ(n.accuracy, 0.01);
     EXPECT_TRUE(n.no_bump_scale);
     n = normal("spiral1 3, 0.7 bump_size 2");
-    EXPECT_EQ(n.pattern.spiral_arms, 3);
+    EXPECT_EQ(n.pattern->spiral_arms, 3);
     EXPECT_DOUBLE_EQ(n.amount, 2);
     n = normal("checker 0.4 normal { gradient x scale 0.2 }, normal { bumps }");
     EXPECT_DOUBLE_EQ(n.amount, 0.4);
     ASSERT_EQ(n.map->kind, BlendMapKind::normal);
-    EXPECT_EQ(n.map->entries[1].normal->pattern.kind, PatternKind::bumps);
+    EXPECT_EQ(n.map->entries[1].normal->pattern->kind, PatternKind::bumps);
     n = normal("gradient y normal_map { [0.3 bumps scale 2] [0.9 marble turbulence 1] }");
     ASSERT_EQ(n.map->entries.size(), 2u);
-    EXPECT_DOUBLE_EQ(n.map->entries[1].normal->pattern.turbulence.amount.x, 1);
+    EXPECT_DOUBLE_EQ(n.map->entries[1].normal->pattern->turbulence.amount.x, 1);
     n = normal("facets coords 0.5");
-    EXPECT_DOUBLE_EQ(n.pattern.facets_coords, 0.5);
+    EXPECT_DOUBLE_EQ(n.pattern->facets_coords, 0.5);
     EXPECT_EQ(error_of("sphere { 0, 1 normal { checker slope_map { [0 <0, 1>] } } }"),
               "'slope_map' cannot be used with the checker pattern (POV-Ray's rule: it takes a "
               "list or its image) at "
@@ -440,7 +454,7 @@ TEST(AppearanceFinish, EveryKeyword) {
         "thickness 0.5 "
         "turbulence 0.2 } subsurface { translucency <1, 0.5, 0.25> } ior 1.4 } }",
         options);
-    const Finish& f = s.objects.at(0).appearance.texture->finish;
+    const Finish& f = *s.objects.at(0).appearance.texture->finish;
     EXPECT_FLOAT_EQ(f.ambient.blue, 0.3);
     EXPECT_DOUBLE_EQ(f.emission.green, 0.5);
     EXPECT_DOUBLE_EQ(f.diffuse, 0.7);
@@ -470,7 +484,7 @@ TEST(AppearanceFinish, EveryKeyword) {
     EXPECT_DOUBLE_EQ(f.legacy_ior, 1.4);  // POV-Ray reads it with a warning
     EXPECT_NE(warnings.find("'ior' belongs in interior { }"), std::string::npos);
     const Finish g =
-        texture_of(appearance_of("finish { reflection 0.4 reflection_exponent 2 }")).finish;
+        *texture_of(appearance_of("finish { reflection 0.4 reflection_exponent 2 }")).finish;
     EXPECT_FLOAT_EQ(g.reflection_min.green, 0.4);
     EXPECT_FLOAT_EQ(g.reflection_max.green, 0.4);
     EXPECT_DOUBLE_EQ(g.reflection_exponent, 2);
@@ -486,11 +500,11 @@ TEST(AppearanceTextures, TransformsMoveOnlyThePartsWrittenBefore) {
     const Texture t = texture_of(
         appearance_of("texture { pigment { checker } scale 2 normal { bumps } translate x "
                       "finish { phong 1 } }"));
-    ASSERT_EQ(t.pigment.pattern.warps.size(), 1u);
-    expect_vec(t.pigment.pattern.warps[0].transform.point({1, 1, 1}), {3, 2, 2});
-    ASSERT_EQ(t.normal->pattern.warps.size(), 1u);
-    expect_vec(t.normal->pattern.warps[0].transform.point({1, 1, 1}), {2, 1, 1});
-    EXPECT_DOUBLE_EQ(t.finish.phong, 1);
+    ASSERT_EQ(t.pigment.pattern->warps.size(), 1u);
+    expect_vec(t.pigment.pattern->warps[0].transform.point({1, 1, 1}), {3, 2, 2});
+    ASSERT_EQ(t.normal->pattern->warps.size(), 1u);
+    expect_vec(t.normal->pattern->warps[0].transform.point({1, 1, 1}), {2, 1, 1});
+    EXPECT_DOUBLE_EQ(t.finish->phong, 1);
 }
 
 TEST(AppearanceTextures, IdentifiersAndPartIdentifiers) {
@@ -501,9 +515,9 @@ TEST(AppearanceTextures, IdentifiersAndPartIdentifiers) {
         texture_of(appearance_of("texture { T P F finish { ambient 0 } }", declarations));
     EXPECT_DOUBLE_EQ(t.pigment.colour.green, 1);
     EXPECT_DOUBLE_EQ(t.pigment.colour.red, 0);
-    EXPECT_DOUBLE_EQ(t.finish.diffuse, 0.9);  // F replaces the finish, then ambient modifies it
-    EXPECT_DOUBLE_EQ(t.finish.phong, 0);
-    EXPECT_DOUBLE_EQ(t.finish.ambient.red, 0);
+    EXPECT_DOUBLE_EQ(t.finish->diffuse, 0.9);  // F replaces the finish, then ambient modifies it
+    EXPECT_DOUBLE_EQ(t.finish->phong, 0);
+    EXPECT_DOUBLE_EQ(t.finish->ambient.red, 0);
     // A pigment block in a texture modifies the texture's pigment: a pattern keeps its map;
     // a colour is a new colour, from black (checked with POV-Ray 3.7: `pigment { P filter 0.5 }`
     // is rgbf <0, 0, 0, 0.5>).
@@ -517,7 +531,7 @@ TEST(AppearanceTextures, IdentifiersAndPartIdentifiers) {
                                  "#declare A = array[2] { texture { pigment { rgb 1 } }, texture { "
                                  "finish { phong 0.25 } } }\n"
                                  "#declare Q = array[1] { pigment { rgb <0, 0, 1> } }"));
-    EXPECT_DOUBLE_EQ(w.finish.phong, 0.25);
+    EXPECT_DOUBLE_EQ(w.finish->phong, 0.25);
     EXPECT_DOUBLE_EQ(w.pigment.colour.blue, 1);
     EXPECT_EQ(error_of("#declare A = array[1] { texture { } }\nsphere { 0, 1 pigment { A[0] } }"),
               "wrong type: 'A' is an array, expected a colour, a pattern or a pigment modifier or "
@@ -527,7 +541,7 @@ TEST(AppearanceTextures, IdentifiersAndPartIdentifiers) {
         appearance_of("texture { G pigment { marble } }",
                       "#declare C = color_map { [0 rgb 1] [1 rgb 0] }\n"
                       "#declare G = texture { pigment { gradient x color_map { C } } }"));
-    EXPECT_EQ(v.pigment.pattern.kind, PatternKind::marble);
+    EXPECT_EQ(v.pigment.pattern->kind, PatternKind::marble);
     EXPECT_TRUE(v.pigment.map);
 }
 
@@ -537,11 +551,11 @@ TEST(AppearanceTextures, PatternedTexturesTilesAndMaterialMaps) {
                                  "scale 20 }",
                                  "#declare T = texture { pigment { rgb 0 } }"));
     EXPECT_EQ(t.kind, Texture::Kind::patterned);
-    EXPECT_EQ(t.pattern.kind, PatternKind::checker);
+    EXPECT_EQ(t.pattern->kind, PatternKind::checker);
     ASSERT_EQ(t.map->entries.size(), 2u);
     EXPECT_EQ(t.map->kind, BlendMapKind::texture);
     // The scale moves the pattern and the textures in the list.
-    ASSERT_EQ(t.map->entries[0].texture->pigment.pattern.warps.size(), 1u);
+    ASSERT_EQ(t.map->entries[0].texture->pigment.pattern->warps.size(), 1u);
     const Texture m = texture_of(
         appearance_of("texture { gradient x texture_map { [0 pigment { rgb 1 }] [1 T] } }",
                       "#declare T = texture { pigment { rgb 0 } }"));
@@ -552,7 +566,7 @@ TEST(AppearanceTextures, PatternedTexturesTilesAndMaterialMaps) {
         texture_of(appearance_of("texture { tiles { texture { pigment { rgb 1 } } texture { "
                                  "pigment { rgbt 0.5 } } tile2 texture { pigment { rgb 0 } } } "
                                  "rotate y }"));
-    EXPECT_EQ(tiles.pattern.kind, PatternKind::checker);
+    EXPECT_EQ(tiles.pattern->kind, PatternKind::checker);
     EXPECT_EQ(tiles.map->entries[0].texture->kind, Texture::Kind::layered);
     EXPECT_EQ(tiles.map->entries[1].texture->kind, Texture::Kind::plain);
     // material_map: the textures are the list.
@@ -564,8 +578,8 @@ TEST(AppearanceTextures, PatternedTexturesTilesAndMaterialMaps) {
         "pigment { rgb 1 } } texture { pigment { rgb 0 } } texture { finish { phong 1 } } "
         "} scale 30 } }");
     const Texture mm = *parse_scene_file(dir.file("s.pov")).objects.at(0).appearance.texture;
-    EXPECT_EQ(mm.pattern.kind, PatternKind::material_map);
-    EXPECT_EQ(mm.pattern.image->map_type, 2);
+    EXPECT_EQ(mm.pattern->kind, PatternKind::material_map);
+    EXPECT_EQ(mm.pattern->image->map_type, 2);
     ASSERT_EQ(mm.map->entries.size(), 3u);
     EXPECT_DOUBLE_EQ(mm.map->entries[2].value, 2);
     EXPECT_EQ(
@@ -638,9 +652,9 @@ TEST(AppearanceTextures, TransformsReachEveryLayer) {
     layered.kind = Texture::Kind::layered;
     layered.layers = {below, above};
     transform_texture(layered, scaling({2, 2, 2}));
-    EXPECT_EQ(layered.layers[0]->pigment.pattern.warps.size(), 1u);
-    EXPECT_EQ(layered.layers[1]->pigment.pattern.warps.size(), 1u);
-    EXPECT_TRUE(below->pigment.pattern.warps.empty());  // shared items are copied, not changed
+    EXPECT_EQ(layered.layers[0]->pigment.pattern->warps.size(), 1u);
+    EXPECT_EQ(layered.layers[1]->pigment.pattern->warps.size(), 1u);
+    EXPECT_TRUE(below->pigment.pattern->warps.empty());  // shared items are copied, not changed
 }
 
 // ---------------------------------------------------------------- interior, media, material
@@ -696,8 +710,8 @@ TEST(AppearanceInterior, MediaKeysDensitiesAndTheirTransforms) {
     EXPECT_DOUBLE_EQ(m.extinction, 0.5);
     ASSERT_EQ(m.densities.size(), 2u);
     // The scale moves the density written before it only (reference 3.4.8).
-    EXPECT_EQ(m.densities[0].item->pattern.warps.size(), 1u);
-    EXPECT_TRUE(m.densities[1].item->pattern.warps.empty());
+    EXPECT_EQ(m.densities[0].item->pattern->warps.size(), 1u);
+    EXPECT_TRUE(m.densities[1].item->pattern->warps.empty());
     EXPECT_EQ(m.densities[1].item->map->kind, BlendMapKind::density);
     // A density starts black, not as the default pigment (checked with POV-Ray 3.7).
     const ObjectAppearance b = appearance_of("hollow interior { media { density { } } }",
@@ -717,8 +731,8 @@ TEST(AppearanceMaterial, TextureLayersOverInteriorReplacesTransformsWhatItHolds)
                       "ior 1.5 } translate x }");
     ASSERT_EQ(a.texture->kind, Texture::Kind::layered);
     const Texture& top = *a.texture->layers.at(1);
-    ASSERT_EQ(top.pigment.pattern.warps.size(), 1u);  // scale 4 then translate x
-    expect_vec(top.pigment.pattern.warps[0].transform.point({1, 1, 1}), {5, 4, 4});
+    ASSERT_EQ(top.pigment.pattern->warps.size(), 1u);  // scale 4 then translate x
+    expect_vec(top.pigment.pattern->warps[0].transform.point({1, 1, 1}), {5, 4, 4});
     EXPECT_DOUBLE_EQ(a.interior->ior, 1.5);
 }
 
@@ -737,14 +751,14 @@ TEST(AppearanceDefault, OneDefaultTextureAsPovRayKeepsIt) {
     )");
     const Texture& first = *s.objects.at(0).appearance.texture;
     EXPECT_DOUBLE_EQ(first.pigment.colour.red, 1);
-    EXPECT_DOUBLE_EQ(first.finish.ambient.red, 1);
+    EXPECT_DOUBLE_EQ(first.finish->ambient.red, 1);
     const Texture& second = *s.objects.at(1).appearance.texture;
-    EXPECT_DOUBLE_EQ(second.finish.diffuse, 0);
-    EXPECT_DOUBLE_EQ(second.finish.phong, 1);
+    EXPECT_DOUBLE_EQ(second.finish->diffuse, 0);
+    EXPECT_DOUBLE_EQ(second.finish->phong, 1);
     const Texture& third = *s.objects.at(2).appearance.texture;
-    EXPECT_EQ(third.pigment.pattern.kind, PatternKind::checker);
-    EXPECT_DOUBLE_EQ(third.finish.ambient.red, 0.5);
-    EXPECT_DOUBLE_EQ(third.finish.diffuse, 0);  // from the texture the default was made from
+    EXPECT_EQ(third.pigment.pattern->kind, PatternKind::checker);
+    EXPECT_DOUBLE_EQ(third.finish->ambient.red, 0.5);
+    EXPECT_DOUBLE_EQ(third.finish->diffuse, 0);  // from the texture the default was made from
     EXPECT_EQ(error_of("#default { texture { checker texture { } texture { } } }"),
               "the default texture cannot be patterned, tiles or a material_map (POV-Ray's rule) "
               "at test.pov:1:12");
@@ -758,7 +772,7 @@ TEST(AppearanceDefault, SceneDefaultAppearanceIsTheDefaultOfTheMoment) {
     Parser parser{ParseOptions{}};
     ObjectAppearance a = scene_default_appearance(parser);
     ASSERT_TRUE(a.texture);
-    EXPECT_DOUBLE_EQ(a.texture->finish.diffuse, 0.6);  // POV-Ray's own default texture
+    EXPECT_DOUBLE_EQ(a.texture->finish->diffuse, 0.6);  // POV-Ray's own default texture
     EXPECT_FALSE(a.interior);
     auto texture = std::make_shared<Texture>();
     texture->pigment.colour.red = 1;
@@ -776,11 +790,11 @@ TEST(AppearanceTransforms, ObjectTransformsMoveTexturesAndMedia) {
         "{ spherical } } }");
     const TextureRef before = a.texture;
     transform_appearance(a, translation({1, 0, 0}));
-    expect_vec(a.texture->pigment.pattern.warps.at(0).transform.point({0, 0, 0}), {1, 0, 0});
-    expect_vec(a.texture->normal->pattern.warps.at(0).transform.point({0, 0, 0}), {1, 0, 0});
-    EXPECT_EQ(a.interior_texture->pigment.pattern.warps.size(), 1u);
-    EXPECT_EQ(a.interior->media.at(0)->densities.at(0).item->pattern.warps.size(), 1u);
-    EXPECT_TRUE(before->pigment.pattern.warps.empty());  // copies: the parsed texture is unchanged
+    expect_vec(a.texture->pigment.pattern->warps.at(0).transform.point({0, 0, 0}), {1, 0, 0});
+    expect_vec(a.texture->normal->pattern->warps.at(0).transform.point({0, 0, 0}), {1, 0, 0});
+    EXPECT_EQ(a.interior_texture->pigment.pattern->warps.size(), 1u);
+    EXPECT_EQ(a.interior->media.at(0)->densities.at(0).item->pattern->warps.size(), 1u);
+    EXPECT_TRUE(before->pigment.pattern->warps.empty());  // copies: the parsed texture is unchanged
     // inherit_appearance fills only what the inner object lacks.
     ObjectAppearance inner;
     inner.interior = a.interior;

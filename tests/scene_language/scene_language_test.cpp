@@ -82,8 +82,8 @@ TEST(SceneLanguageCornell, ParsesWithTheValuesItsTextGives) {
     expect_vec(box.maximum, {34.3, 54.88, 33.2});
     EXPECT_TRUE(patch.no_shadow);
     ASSERT_TRUE(patch.appearance.texture);
-    EXPECT_FLOAT_EQ(patch.appearance.texture->finish.ambient.red, 0.78);
-    EXPECT_DOUBLE_EQ(patch.appearance.texture->finish.diffuse, 0);
+    EXPECT_FLOAT_EQ(patch.appearance.texture->finish->ambient.red, 0.78);
+    EXPECT_DOUBLE_EQ(patch.appearance.texture->finish->diffuse, 0);
     EXPECT_DOUBLE_EQ(patch.appearance.texture->pigment.colour.green, 1);
 
     // Red wall (objects 9, 10): texture Red = pigment <0.57,0.025,0.025>, finish diffuse 0.75
@@ -91,8 +91,8 @@ TEST(SceneLanguageCornell, ParsesWithTheValuesItsTextGives) {
     const ObjectInstance& red = s.objects[9];
     EXPECT_FLOAT_EQ(red.appearance.texture->pigment.colour.red, 0.57);
     EXPECT_FLOAT_EQ(red.appearance.texture->pigment.colour.green, 0.025);
-    EXPECT_DOUBLE_EQ(red.appearance.texture->finish.diffuse, 0.75);
-    EXPECT_DOUBLE_EQ(red.appearance.texture->finish.ambient.red, 0);
+    EXPECT_DOUBLE_EQ(red.appearance.texture->finish->diffuse, 0.75);
+    EXPECT_DOUBLE_EQ(red.appearance.texture->finish->ambient.red, 0);
     EXPECT_FALSE(red.no_shadow);
 
     // The tall block's second triangle writes "<47.20 33.00 40.60>" without commas.
@@ -303,7 +303,7 @@ TEST(SceneLanguageDirectives, DeclaresEveryKindOfValue) {
     const ObjectInstance& o = s.objects[0];
     EXPECT_DOUBLE_EQ(o.appearance.texture->pigment.colour.red, 1);
     EXPECT_DOUBLE_EQ(o.appearance.texture->pigment.colour.filter, 0.5);
-    const Finish& f = o.appearance.texture->finish;
+    const Finish& f = *o.appearance.texture->finish;
     EXPECT_DOUBLE_EQ(f.diffuse, 0.5);
     EXPECT_DOUBLE_EQ(f.specular, 0.25);
     EXPECT_DOUBLE_EQ(f.roughness, 0.01);
@@ -410,17 +410,17 @@ TEST(SceneLanguageObjects, TexturesInheritThroughUnionsAndFlagsPropagate) {
     )");
     ASSERT_EQ(s.objects.size(), 3u);
     EXPECT_DOUBLE_EQ(s.objects[0].appearance.texture->pigment.colour.red, 1);
-    EXPECT_DOUBLE_EQ(s.objects[0].appearance.texture->finish.diffuse, 0.9);
+    EXPECT_DOUBLE_EQ(s.objects[0].appearance.texture->finish->diffuse, 0.9);
     EXPECT_DOUBLE_EQ(s.objects[1].appearance.texture->pigment.colour.green,
                      1);  // its own texture wins
-    EXPECT_DOUBLE_EQ(s.objects[1].appearance.texture->finish.diffuse,
+    EXPECT_DOUBLE_EQ(s.objects[1].appearance.texture->finish->diffuse,
                      0.6);  // with POV-Ray's default finish
     EXPECT_TRUE(s.objects[0].no_shadow);
     EXPECT_TRUE(s.objects[1].no_shadow);
     // No texture anywhere: POV-Ray's default texture (black) is attached when it is added.
     ASSERT_TRUE(s.objects[2].appearance.texture);
     EXPECT_EQ(s.objects[2].appearance.texture->pigment.colour.red, 0);
-    EXPECT_DOUBLE_EQ(s.objects[2].appearance.texture->finish.diffuse, 0.6);
+    EXPECT_DOUBLE_EQ(s.objects[2].appearance.texture->finish->diffuse, 0.6);
     EXPECT_FALSE(s.objects[2].hollow);
     ASSERT_EQ(s.lights.size(), 1u);
     expect_vec(s.lights[0].position, {0, 1, 10});  // a light in a union moves with it

@@ -52,17 +52,17 @@ public:
     void check_texture(const Texture& texture) const {
         if (texture.kind == Texture::Kind::layered) fail("layered textures", texture.location);
         if (texture.kind == Texture::Kind::patterned)
-            fail(fmt::format("patterned textures ({})", pattern_name(texture.pattern.kind)),
-                 texture.pattern.location);
+            fail(fmt::format("patterned textures ({})", pattern_name(texture.pattern->kind)),
+                 texture.pattern->location);
         const Pigment& pigment = texture.pigment;
-        if (pigment.pattern.kind != PatternKind::plain)
-            fail(fmt::format("pigment pattern '{}'", pattern_name(pigment.pattern.kind)),
-                 pigment.pattern.location);
+        if (pigment.pattern->kind != PatternKind::plain)
+            fail(fmt::format("pigment pattern '{}'", pattern_name(pigment.pattern->kind)),
+                 pigment.pattern->location);
         // A normal without a pattern perturbs nothing.
-        if (texture.normal && texture.normal->pattern.kind != PatternKind::plain)
-            fail(fmt::format("normal '{}'", pattern_name(texture.normal->pattern.kind)),
-                 texture.normal->pattern.location);
-        check_finish(texture.finish);
+        if (texture.normal && texture.normal->pattern->kind != PatternKind::plain)
+            fail(fmt::format("normal '{}'", pattern_name(texture.normal->pattern->kind)),
+                 texture.normal->pattern->location);
+        check_finish(*texture.finish);
     }
     void check_finish(const Finish& f) const {
         struct Unrendered {
@@ -106,7 +106,7 @@ Material material_from_pov(const ObjectInstance& object, double emission_scale) 
     if (object.appearance.interior) refusal.check_interior(*object.appearance.interior);
     if (!object.appearance.texture) return m;  // POV-Ray renders an untextured object black
     const Colour& c = object.appearance.texture->pigment.colour;
-    const Finish& f = object.appearance.texture->finish;
+    const Finish& f = *object.appearance.texture->finish;
     const Rgb pigment = clamp01(c.rgb());
     const double opacity = std::max(0.0, 1 - c.filter - c.transmit);
     m.diffuse = (opacity * f.diffuse) * pigment;

@@ -150,12 +150,12 @@ void transform_pattern(Pattern& pattern, const Matrix4& transform) {
 }
 
 void transform_pigment(Pigment& pigment, const Matrix4& transform) {
-    transform_pattern(pigment.pattern, transform);
+    transform_pattern(pigment.pattern.edit(), transform);
     pigment.map = transformed_map(pigment.map, transform);
 }
 
 void transform_normal(Normal& normal, const Matrix4& transform) {
-    transform_pattern(normal.pattern, transform);
+    transform_pattern(normal.pattern.edit(), transform);
     normal.map = transformed_map(normal.map, transform);
 }
 
@@ -170,7 +170,7 @@ void transform_texture(Texture& texture, const Matrix4& transform) {
             }
             break;
         case Texture::Kind::patterned:
-            transform_pattern(texture.pattern, transform);
+            transform_pattern(texture.pattern.edit(), transform);
             texture.map = transformed_map(texture.map, transform);
             break;
         case Texture::Kind::layered:
@@ -205,8 +205,8 @@ namespace {
 // bumps): transforms do not change it, so it need not be copied.
 bool position_independent(const Texture& texture) {
     return texture.kind == Texture::Kind::plain &&
-           texture.pigment.pattern.kind == PatternKind::plain &&
-           (!texture.normal || texture.normal->pattern.kind == PatternKind::plain);
+           texture.pigment.pattern->kind == PatternKind::plain &&
+           (!texture.normal || texture.normal->pattern->kind == PatternKind::plain);
 }
 
 bool is_identity(const Matrix4& m) { return m.m == Matrix4{}.m; }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "tracer/scene_language/copy_on_write.h"
 #include "tracer/scene_language/source_location.h"
 #include "tracer/scene_language/transform.h"
 #include "tracer/scene_language/values.h"
@@ -277,7 +278,7 @@ const BlendMap& builtin_colour_map(PatternKind kind);
 
 // A pigment, and a media density (DensityRef): a solid colour, or a pattern with a map.
 struct Pigment {
-    Pattern pattern;
+    CopyOnWrite<Pattern> pattern;
     Colour colour;        // plain: the colour (POV-Ray's default pigment is black)
     BlendMapPointer map;  // colour_map, pigment_map or list (density: density_map or list);
                           // null: builtin_colour_map(pattern.kind)
@@ -288,11 +289,11 @@ struct Pigment {
 
 // Reference 3.4.6.2.
 struct Normal {
-    Pattern pattern;             // plain: no perturbation
-    double amount = 0.5;         // the float after the pattern, or bump_size
-    BlendMapPointer map;         // normal_map or normal list, or slope_map
-    double accuracy = 0.02;      // step of the slope estimate of non-bump patterns
-    bool no_bump_scale = false;  // scaling does not change the bump depth
+    CopyOnWrite<Pattern> pattern;  // plain: no perturbation
+    double amount = 0.5;           // the float after the pattern, or bump_size
+    BlendMapPointer map;           // normal_map or normal list, or slope_map
+    double accuracy = 0.02;        // step of the slope estimate of non-bump patterns
+    bool no_bump_scale = false;    // scaling does not change the bump depth
     SourceLocation location;
 };
 
@@ -346,9 +347,9 @@ struct Texture {
     // plain
     Pigment pigment;
     NormalRef normal;  // null: none
-    Finish finish;
+    CopyOnWrite<Finish> finish;
     // patterned
-    Pattern pattern;
+    CopyOnWrite<Pattern> pattern;
     BlendMapPointer map;  // texture_map or texture list
     // layered: bottom first; each layer plain (POV-Ray allows no patterned layer)
     std::vector<TextureRef> layers;

@@ -113,7 +113,7 @@ void Parser::directive_declare(const Token& directive, bool local) {
                                    word(name)));
         const ArrayRef array = std::get<ArrayRef>(symbol->value);
         Value* slot = array_element(name, *array, true);
-        expect(Symbol::equals, fmt::format("after #{} {}[...]", what, word(name)));
+        expect(Symbol::equals, [&] { return fmt::format("after #{} {}[...]", what, word(name)); });
         const Token start = peek();
         Value value = parse_rvalue(name);
         if (const std::string why = array->mismatch(value); !why.empty())
@@ -124,7 +124,7 @@ void Parser::directive_declare(const Token& directive, bool local) {
         expect_semicolon(numeric);
         return;
     }
-    expect(Symbol::equals, fmt::format("after #{} {}", what, word(name)));
+    expect(Symbol::equals, [&] { return fmt::format("after #{} {}", what, word(name)); });
     const size_t scope = symbols_.depth();  // before a macro in the value opens its own
     Value value = parse_rvalue(name);
     const bool numeric = std::holds_alternative<Numeric>(value);
@@ -133,15 +133,17 @@ void Parser::directive_declare(const Token& directive, bool local) {
 }
 
 double Parser::parse_condition(const Token& directive) {
-    const Token open =
-        expect(Symbol::lparen,
-               fmt::format("after #{} (its condition is in parentheses)", word(directive)));
+    const Token open = expect(Symbol::lparen, [&] {
+        return fmt::format("after #{} (its condition is in parentheses)", word(directive));
+    });
     const Numeric value = parse_expression();
     if (value.terms != 1)
         fail(open,
              fmt::format("the condition of #{} must be a float, found a vector", word(directive)));
-    expect(Symbol::rparen, fmt::format("to close the condition of #{} opened at {}",
-                                       word(directive), location_of(open).str()));
+    expect(Symbol::rparen, [&] {
+        return fmt::format("to close the condition of #{} opened at {}", word(directive),
+                           location_of(open).str());
+    });
     return value.v[0];
 }
 
@@ -203,10 +205,12 @@ bool Parser::is_defined(const Token& at) {
 }
 
 void Parser::directive_ifdef(const Token& directive, bool want_defined) {
-    const Token open = expect(Symbol::lparen, fmt::format("after #{}", word(directive)));
+    const Token open =
+        expect(Symbol::lparen, [&] { return fmt::format("after #{}", word(directive)); });
     const bool defined = is_defined(directive);
-    expect(Symbol::rparen,
-           fmt::format("to close #{}( opened at {}", word(directive), location_of(open).str()));
+    expect(Symbol::rparen, [&] {
+        return fmt::format("to close #{}( opened at {}", word(directive), location_of(open).str());
+    });
     if (defined == want_defined) return enter_block(Block::Kind::if_branch, directive);
     take_branch_after(directive, true);
 }
@@ -239,8 +243,9 @@ void Parser::directive_switch(const Token& directive) {
             const double low = parse_float("as the low end of #range");
             expect(Symbol::comma, "between the two ends of #range");
             const double high = parse_float("as the high end of #range");
-            expect(Symbol::rparen,
-                   fmt::format("to close #range( opened at {}", location_of(open).str()));
+            expect(Symbol::rparen, [&] {
+                return fmt::format("to close #range( opened at {}", location_of(open).str());
+            });
             taken = low <= value && value <= high;
         }
         if (taken) return enter_block(Block::Kind::switch_clause, directive);
@@ -260,8 +265,9 @@ void Parser::directive_case(const Token& directive) {
         parse_float();
         expect(Symbol::comma, "between the two ends of #range");
         parse_float();
-        expect(Symbol::rparen,
-               fmt::format("to close #range( opened at {}", location_of(open).str()));
+        expect(Symbol::rparen, [&] {
+            return fmt::format("to close #range( opened at {}", location_of(open).str());
+        });
     }
 }
 
@@ -317,7 +323,8 @@ void Parser::directive_for(const Token& directive) {
     const double last = parse_float("as the end of #for");
     double step = 1;
     if (accept(Symbol::comma)) step = parse_float("as the step of #for");
-    expect(Symbol::rparen, fmt::format("to close #for( opened at {}", location_of(open).str()));
+    expect(Symbol::rparen,
+           [&] { return fmt::format("to close #for( opened at {}", location_of(open).str()); });
     if (step == 0) fail(directive, "#for with a step of 0 would never end");
     assign(variable, variable.name, Numeric::scalar(first), true);
     if (step > 0 ? first > last : first < last) {

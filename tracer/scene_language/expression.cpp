@@ -40,9 +40,9 @@ double srgb_to_linear(double c) {
 
 bool is_colour_keyword(const Token& token) {
     constexpr Keyword kColourKeywords[] = {
-        Keyword::color,  Keyword::colour, Keyword::rgb,   Keyword::rgbf,  Keyword::rgbt,
-        Keyword::rgbft,  Keyword::srgb,   Keyword::srgbf, Keyword::srgbt, Keyword::srgbft,
-        Keyword::red,    Keyword::green,  Keyword::blue,  Keyword::filter, Keyword::transmit};
+        Keyword::color, Keyword::colour, Keyword::rgb,   Keyword::rgbf,   Keyword::rgbt,
+        Keyword::rgbft, Keyword::srgb,   Keyword::srgbf, Keyword::srgbt,  Keyword::srgbft,
+        Keyword::red,   Keyword::green,  Keyword::blue,  Keyword::filter, Keyword::transmit};
     if (token.kind != TokenKind::word || !is_keyword(token.name)) return false;
     const auto keyword = static_cast<Keyword>(token.name);
     return std::find(std::begin(kColourKeywords), std::end(kColourKeywords), keyword) !=
@@ -102,8 +102,10 @@ Numeric Parser::parse_conditional() {
     if (condition.terms != 1)
         fail(question, "the condition before '?' must be a float, found a vector");
     Numeric if_true = parse_conditional();
-    expect(Symbol::colon,
-           fmt::format("in 'condition ? a : b' (the '?' is at {})", location_of(question).str()));
+    expect(Symbol::colon, [&] {
+        return fmt::format("in 'condition ? a : b' (the '?' is at {})",
+                           location_of(question).str());
+    });
     Numeric if_false = parse_conditional();
     return truth(condition.v[0]) ? if_true : if_false;
 }
@@ -222,7 +224,8 @@ Numeric Parser::parse_primary() {
     if (token.is(Symbol::lparen)) {
         next();
         const Numeric inner = parse_conditional();
-        expect(Symbol::rparen, fmt::format("to close '(' opened at {}", location_of(token).str()));
+        expect(Symbol::rparen,
+               [&] { return fmt::format("to close '(' opened at {}", location_of(token).str()); });
         return parse_postfix(inner);
     }
     if (token.is(Symbol::less)) {

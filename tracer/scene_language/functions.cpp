@@ -383,11 +383,14 @@ private:
         const Token variable = p_.next();
         if (variable.kind != TokenKind::word)
             p_.fail_expected(fmt::format("the variable of '{}'", p_.word(name)), variable);
-        p_.expect(Symbol::comma, fmt::format("after the variable of '{}'", p_.word(name)));
+        p_.expect(Symbol::comma,
+                  [&] { return fmt::format("after the variable of '{}'", p_.word(name)); });
         expression();
-        p_.expect(Symbol::comma, fmt::format("after the first value of '{}'", p_.word(name)));
+        p_.expect(Symbol::comma,
+                  [&] { return fmt::format("after the first value of '{}'", p_.word(name)); });
         expression();
-        p_.expect(Symbol::comma, fmt::format("after the last value of '{}'", p_.word(name)));
+        p_.expect(Symbol::comma,
+                  [&] { return fmt::format("after the last value of '{}'", p_.word(name)); });
         if (locals_.size() >= 56)
             p_.fail(name, "more than 56 nested sum/prod loops (POV-Ray's limit)");
         locals_.push_back(variable.name);
@@ -414,8 +417,9 @@ private:
         if (token.is(Symbol::lparen)) {
             p_.next();
             expression();
-            p_.expect(Symbol::rparen,
-                      fmt::format("to close '(' opened at {}", p_.location_of(token).str()));
+            p_.expect(Symbol::rparen, [&] {
+                return fmt::format("to close '(' opened at {}", p_.location_of(token).str());
+            });
             return;
         }
         if (token.kind != TokenKind::word)
@@ -512,8 +516,9 @@ FunctionRef Parser::parse_function(const Token& keyword) {
                     fail(name, fmt::format("parameter '{}' appears twice", word(name)));
             parameters.push_back(name.name);
         } while (accept(Symbol::comma));
-        expect(Symbol::rparen,
-               fmt::format("to close the parameters opened at {}", location_of(open).str()));
+        expect(Symbol::rparen, [&] {
+            return fmt::format("to close the parameters opened at {}", location_of(open).str());
+        });
         if (parameters.size() > static_cast<size_t>(kMaxParameters))
             fail(open, fmt::format("a function takes at most {} parameters (POV-Ray's limit)",
                                    kMaxParameters));
@@ -565,7 +570,8 @@ FunctionRef Parser::parse_function(const Token& keyword) {
 }
 
 Numeric Parser::call_function(const Token& name, const UserFunction& function) {
-    const Token open = expect(Symbol::lparen, fmt::format("after function '{}'", word(name)));
+    const Token open =
+        expect(Symbol::lparen, [&] { return fmt::format("after function '{}'", word(name)); });
     std::vector<double> arguments;
     if (!peek_is(Symbol::rparen)) {
         do {
@@ -573,8 +579,10 @@ Numeric Parser::call_function(const Token& name, const UserFunction& function) {
                 parse_float(fmt::format("as an argument of function '{}'", word(name))));
         } while (accept(Symbol::comma));
     }
-    expect(Symbol::rparen, fmt::format("to close the call of '{}' opened at {}", word(name),
-                                       location_of(open).str()));
+    expect(Symbol::rparen, [&] {
+        return fmt::format("to close the call of '{}' opened at {}", word(name),
+                           location_of(open).str());
+    });
     if (static_cast<int>(arguments.size()) != function.parameter_count())
         fail(name, fmt::format("function '{}' takes {} argument{}, found {}", word(name),
                                function.parameter_count(),

@@ -58,7 +58,7 @@ void parse_texture_part(Parser& p, const Token& keyword, Texture& texture) {
         parse_normal_body(p, *normal, keyword, open, Symbol::rbrace);
         texture.normal = normal;
     } else {
-        parse_finish_body(p, texture.finish, keyword, open);
+        parse_finish_body(p, texture.finish.edit(), keyword, open);
     }
     p.expect_close(keyword, open);
 }
@@ -85,11 +85,11 @@ bool parse_part_identifier(Parser& p, Texture& texture) {
 // uv_mapping in a texture: its pattern, pigment and normal (every layer's) are looked up at
 // the surface's <u, v, 0>.
 void set_uv_mapping(Texture& texture) {
-    texture.pattern.uv_mapping = true;
-    texture.pigment.pattern.uv_mapping = true;
+    texture.pattern.edit().uv_mapping = true;
+    texture.pigment.pattern.edit().uv_mapping = true;
     if (texture.normal) {
         auto normal = std::make_shared<Normal>(*texture.normal);
-        normal->pattern.uv_mapping = true;
+        normal->pattern.edit().uv_mapping = true;
         texture.normal = normal;
     }
     for (TextureRef& layer : texture.layers) {
@@ -134,13 +134,13 @@ void parse_patterned_texture_items(Parser& p, Texture& texture, const Token& key
         if (token.is(close)) break;
         Matrix4 transform;
         if (p.parse_transform_item(transform)) {
-            transform_pattern(texture.pattern, transform);
+            transform_pattern(texture.pattern.edit(), transform);
             entries_transform = transform * entries_transform;
         } else if (!from_identifier && token.is(Keyword::texture_map)) {
             p.next();
-            texture.map = parse_map_modifier(p, token, BlendMapKind::texture, texture.pattern);
+            texture.map = parse_map_modifier(p, token, BlendMapKind::texture, *texture.pattern);
         } else if (from_identifier ||
-                   !parse_pattern_modifier(p, texture.pattern, PatternRole::texture)) {
+                   !parse_pattern_modifier(p, texture.pattern.edit(), PatternRole::texture)) {
             if (is_texture_part(token))
                 p.fail(token,
                        fmt::format(
@@ -180,8 +180,8 @@ void parse_tiles(Parser& p, Texture& texture, const Token& tiles) {
     p.expect_close(tiles, open);
     texture.kind = Texture::Kind::patterned;
     texture.pattern = Pattern{};
-    texture.pattern.kind = PatternKind::checker;
-    texture.pattern.location = p.location_of(tiles);
+    texture.pattern.edit().kind = PatternKind::checker;
+    texture.pattern.edit().location = p.location_of(tiles);
     texture.map = textures;
 }
 
@@ -257,7 +257,7 @@ TextureRef parse_texture_body(Parser& p, const Token& keyword, const Token& open
         texture->kind = Texture::Kind::patterned;
         texture->pattern = Pattern{};
         const BlendMapPointer list =
-            parse_pattern_type(p, first, texture->pattern, PatternRole::texture, nullptr);
+            parse_pattern_type(p, first, texture->pattern.edit(), PatternRole::texture, nullptr);
         texture->map = list;
     } else if (!from_identifier && first.is(Keyword::tiles)) {
         p.next();

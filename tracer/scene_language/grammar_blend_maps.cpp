@@ -104,8 +104,10 @@ void parse_entries(Parser& p, BlendMap& map, const Token& keyword, bool weights_
             parse_entry_item(p, map, entry, open);
             map.entries.push_back(entry);
         }
-        p.expect(Symbol::rbracket, fmt::format("to close the '{}' entry opened at {}",
-                                               p.word(keyword), p.location_of(open).str()));
+        p.expect(Symbol::rbracket, [&] {
+            return fmt::format("to close the '{}' entry opened at {}", p.word(keyword),
+                               p.location_of(open).str());
+        });
     }
 }
 

@@ -45,16 +45,18 @@ bool parse_pigment_type(Parser& p, Pigment& pigment, PatternRole role) {
     const Token token = p.peek();
     if (p.starts_colour(token)) {
         pigment.colour = p.parse_colour();
-        pigment.pattern.kind = PatternKind::plain;
+        if (pigment.pattern->kind != PatternKind::plain)
+            pigment.pattern.edit().kind = PatternKind::plain;
         pigment.map = nullptr;
         return true;
     }
     if (is_pattern_type(p, token, role)) {
         p.next();
-        const BlendMapPointer list = parse_pattern_type(p, token, pigment.pattern, role, nullptr);
+        const BlendMapPointer list =
+            parse_pattern_type(p, token, pigment.pattern.edit(), role, nullptr);
         // A block pattern keyword always sets its list: the one written, else its built-in
         // one (checked with POV-Ray 3.7: an identifier's list does not survive a new type).
-        if (list_size(pigment.pattern.kind) > 0) pigment.map = list;
+        if (list_size(pigment.pattern->kind) > 0) pigment.map = list;
     }
     return false;
 }
@@ -66,15 +68,15 @@ bool parse_pigment_only_modifier(Parser& p, Pigment& pigment, PatternRole role,
     if (token.is(Keyword::color_map) || token.is(Keyword::colour_map)) {
         p.next();
         check_map_allowed(p, token, colour_written);
-        pigment.map = parse_map_modifier(p, token, BlendMapKind::colour, pigment.pattern);
+        pigment.map = parse_map_modifier(p, token, BlendMapKind::colour, *pigment.pattern);
     } else if (role == PatternRole::pigment && token.is(Keyword::pigment_map)) {
         p.next();
         check_map_allowed(p, token, colour_written);
-        pigment.map = parse_map_modifier(p, token, BlendMapKind::pigment, pigment.pattern);
+        pigment.map = parse_map_modifier(p, token, BlendMapKind::pigment, *pigment.pattern);
     } else if (role == PatternRole::density && token.is(Keyword::density_map)) {
         p.next();
         check_map_allowed(p, token, colour_written);
-        pigment.map = parse_map_modifier(p, token, BlendMapKind::density, pigment.pattern);
+        pigment.map = parse_map_modifier(p, token, BlendMapKind::density, *pigment.pattern);
     } else if (role == PatternRole::pigment &&
                (token.is(Keyword::quick_color) || token.is(Keyword::quick_colour))) {
         p.next();
@@ -93,10 +95,10 @@ bool parse_normal_only_modifier(Parser& p, Normal& normal) {
     if (token.is(Keyword::normal_map) || token.is(Keyword::slope_map)) {
         p.next();
         const bool slope = token.is(Keyword::slope_map);
-        if (!slope && normal.pattern.kind == PatternKind::facets)
+        if (!slope && normal.pattern->kind == PatternKind::facets)
             p.fail(token, "'normal_map' cannot be used with facets (POV-Ray's rule)");
         normal.map = parse_map_modifier(
-            p, token, slope ? BlendMapKind::slope : BlendMapKind::normal, normal.pattern);
+            p, token, slope ? BlendMapKind::slope : BlendMapKind::normal, *normal.pattern);
     } else if (token.is(Keyword::bump_size)) {
         p.next();
         normal.amount = p.parse_float(after());
@@ -126,7 +128,7 @@ Normal default_normal(Parser& p) {
     return texture.normal ? *texture.normal : Normal{};
 }
 
-Finish default_finish(Parser& p) { return default_texture(p).finish; }
+Finish default_finish(Parser& p) { return *default_texture(p).finish; }
 
 void parse_pigment_body(Parser& p, Pigment& pigment, PatternRole role, const Token& keyword,
                         const Token& open, Symbol close) {
@@ -141,7 +143,7 @@ void parse_pigment_body(Parser& p, Pigment& pigment, PatternRole role, const Tok
     const Token type = p.peek();
     const bool colour_written = parse_pigment_type(p, pigment, role);
     const bool type_written = colour_written || !same_place(p.peek(), type);
-    if (uv_mapping) pigment.pattern.uv_mapping = true;
+    if (uv_mapping) pigment.pattern.edit().uv_mapping = true;
     // Transforms move the pattern at once (their order with warps matters) and every map entry
     // at the end, wherever the map is written (checked with POV-Ray 3.7).
     Matrix4 entries_transform;
@@ -149,9 +151,9 @@ void parse_pigment_body(Parser& p, Pigment& pigment, PatternRole role, const Tok
         if (p.peek_is(close)) break;
         Matrix4 transform;
         if (p.parse_transform_item(transform)) {
-            transform_pattern(pigment.pattern, transform);
+            transform_pattern(pigment.pattern.edit(), transform);
             entries_transform = transform * entries_transform;
-        } else if (!parse_pattern_modifier(p, pigment.pattern, role) &&
+        } else if (!parse_pattern_modifier(p, pigment.pattern.edit(), role) &&
                    !parse_pigment_only_modifier(p, pigment, role, colour_written)) {
             fail_modifier(p, role, keyword, open, close,
                           !type_written && same_place(p.peek(), type));
@@ -171,18 +173,18 @@ void parse_normal_body(Parser& p, Normal& normal, const Token& keyword, const To
     if (type_written) {
         p.next();
         const BlendMapPointer list =
-            parse_pattern_type(p, type, normal.pattern, PatternRole::normal, &normal.amount);
-        if (list_size(normal.pattern.kind) > 0) normal.map = list;
+            parse_pattern_type(p, type, normal.pattern.edit(), PatternRole::normal, &normal.amount);
+        if (list_size(normal.pattern->kind) > 0) normal.map = list;
     }
-    if (uv_mapping) normal.pattern.uv_mapping = true;
+    if (uv_mapping) normal.pattern.edit().uv_mapping = true;
     Matrix4 entries_transform;
     for (;;) {
         if (p.peek_is(close)) break;
         Matrix4 transform;
         if (p.parse_transform_item(transform)) {
-            transform_pattern(normal.pattern, transform);
+            transform_pattern(normal.pattern.edit(), transform);
             entries_transform = transform * entries_transform;
-        } else if (!parse_pattern_modifier(p, normal.pattern, PatternRole::normal) &&
+        } else if (!parse_pattern_modifier(p, normal.pattern.edit(), PatternRole::normal) &&
                    !parse_normal_only_modifier(p, normal)) {
             fail_modifier(p, PatternRole::normal, keyword, open, close,
                           !type_written && same_place(p.peek(), type));

@@ -31,8 +31,9 @@ int parse_polynomial_order(Parser& p, const Token& keyword) {
 
 // `<A1, A2, ..., An>` with exactly `count` terms (more than a vector holds).
 std::vector<double> parse_coefficients(Parser& p, const Token& keyword, size_t count) {
-    const Token open =
-        p.expect(Symbol::less, fmt::format("before the coefficients of '{}'", p.word(keyword)));
+    const Token open = p.expect(Symbol::less, [&] {
+        return fmt::format("before the coefficients of '{}'", p.word(keyword));
+    });
     std::vector<double> coefficients;
     for (;;) {
         if (p.peek_is(Symbol::greater)) break;
@@ -46,8 +47,9 @@ std::vector<double> parse_coefficients(Parser& p, const Token& keyword, size_t c
     if (coefficients.size() != count)
         p.fail(p.peek(), fmt::format("'{}' takes {} coefficients here, found {}", p.word(keyword),
                                      count, coefficients.size()));
-    p.expect(Symbol::greater,
-             fmt::format("to close the coefficients opened at {}", p.location_of(open).str()));
+    p.expect(Symbol::greater, [&] {
+        return fmt::format("to close the coefficients opened at {}", p.location_of(open).str());
+    });
     return coefficients;
 }
 

@@ -247,15 +247,15 @@ bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value) {
 }
 
 bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour) {
-    if (pigment.pattern.kind == PatternKind::plain) {
+    if (pigment.pattern->kind == PatternKind::plain) {
         colour = pigment.colour;
         return true;
     }
-    const BlendMap& map = pigment.map ? *pigment.map : builtin_colour_map(pigment.pattern.kind);
+    const BlendMap& map = pigment.map ? *pigment.map : builtin_colour_map(pigment.pattern->kind);
     if (map.kind != BlendMapKind::colour && map.kind != BlendMapKind::pigment) return false;
-    if (pigment.pattern.kind == PatternKind::average) return average_colour(map, point, colour);
+    if (pigment.pattern->kind == PatternKind::average) return average_colour(map, point, colour);
     double value = 0;
-    if (!evaluate_pattern(pigment.pattern, point, value)) return false;
+    if (!evaluate_pattern(*pigment.pattern, point, value)) return false;
     return look_up(map, value, colour, [&](const BlendMapEntry& entry, Colour& c) {
         return colour_of_entry(entry, map.kind, point, c);
     });

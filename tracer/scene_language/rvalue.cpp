@@ -164,7 +164,8 @@ Value Parser::parse_array(const Token& keyword) {
         const Token open = next();
         const Token at = peek();
         const double size = parse_float("as the size of the array");
-        expect(Symbol::rbracket, fmt::format("to close '[' opened at {}", location_of(open).str()));
+        expect(Symbol::rbracket,
+               [&] { return fmt::format("to close '[' opened at {}", location_of(open).str()); });
         if (!(size >= 1))
             fail(at, fmt::format("an array dimension must be at least 1, found {}", size));
         if (array->sizes.size() == 5) fail(open, "an array has at most 5 dimensions");

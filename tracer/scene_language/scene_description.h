@@ -7,6 +7,7 @@
 // numbers as written (linear; assumed_gamma is recorded, not applied).
 #pragma once
 
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,7 @@ struct SceneDescription {
     double version = 3.7;  // from #version, last seen
     bool has_camera = false;
     Camera camera;
-    std::vector<ObjectInstance> objects;
+    std::deque<ObjectInstance> objects;  // a deque: millions are added without moving them
     std::vector<LightSource> lights;
     std::vector<IlluminanceReceiver> receivers;
     std::vector<RaySource> ray_sources;

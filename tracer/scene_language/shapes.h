@@ -193,7 +193,7 @@ struct BicubicPatchShape {
     int type = 0;  // 0: control points kept; 1: pre-subdivided
     double flatness = 0;
     int u_steps = 0, v_steps = 0;
-    std::array<Vec3, 16> points{};
+    std::vector<Vec3> points = std::vector<Vec3>(16);  // 4 x 4, on the heap: patches are rare
     // The uv coordinates of the corners points[0], [3], [15], [12] (uv_vectors).
     std::array<Vec2, 4> corner_uvs{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
 };

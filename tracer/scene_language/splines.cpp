@@ -160,7 +160,8 @@ SplineRef Parser::parse_spline(const Token& keyword) {
 }
 
 Numeric Parser::call_spline(const Token& name, const Spline& spline) {
-    const Token open = expect(Symbol::lparen, fmt::format("after spline '{}'", word(name)));
+    const Token open =
+        expect(Symbol::lparen, [&] { return fmt::format("after spline '{}'", word(name)); });
     const double t = parse_float(fmt::format("as the parameter of spline '{}'", word(name)));
     Spline::Type type = spline.type;
     if (accept(Symbol::comma)) {
@@ -176,8 +177,10 @@ Numeric Parser::call_spline(const Token& name, const Spline& spline) {
         else
             fail_expected("linear_spline, quadratic_spline, cubic_spline or natural_spline", kind);
     }
-    expect(Symbol::rparen, fmt::format("to close the call of '{}' opened at {}", word(name),
-                                       location_of(open).str()));
+    expect(Symbol::rparen, [&] {
+        return fmt::format("to close the call of '{}' opened at {}", word(name),
+                           location_of(open).str());
+    });
     return spline.evaluate(t, type);
 }
 

@@ -102,7 +102,8 @@ Value* Parser::array_element(const Token& at, Array& array, bool for_assignment)
             fmt::format("for index {} of the {}-dimensional array", d + 1, array.sizes.size()));
         const Token at_index = peek();
         const double raw = parse_expression().v[0];
-        expect(Symbol::rbracket, fmt::format("to close '[' opened at {}", location_of(open).str()));
+        expect(Symbol::rbracket,
+               [&] { return fmt::format("to close '[' opened at {}", location_of(open).str()); });
         const long i = static_cast<long>(raw);  // POV-Ray truncates
         if (raw < 0 || i >= array.sizes[d])
             fail(at_index,

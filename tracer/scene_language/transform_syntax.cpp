@@ -37,8 +37,10 @@ bool Parser::parse_transform_item(Matrix4& transform) {
             values[static_cast<size_t>(i)] = parse_float("in 'matrix'");
         }
         accept_comma();
-        expect(Symbol::greater, fmt::format("to close the 12 values of 'matrix' opened at {}",
-                                            location_of(open).str()));
+        expect(Symbol::greater, [&] {
+            return fmt::format("to close the 12 values of 'matrix' opened at {}",
+                               location_of(open).str());
+        });
         transform = pov_matrix(values) * transform;
     } else if (keyword.is(Keyword::transform)) {
         next();
