@@ -96,43 +96,60 @@ std::string Source::spectrum_parameters() const {
 
 // ---------------------------------------------------------------------------------------------
 
-LambertianDisk::LambertianDisk(double radius, double radiance, Spectrum spectrum)
-    : Source(std::move(spectrum)), radius_(radius), radiance_(radiance) {
+LambertianDisk::LambertianDisk(double radius, double radiance, Spectrum spectrum, double tilt_deg)
+    : Source(std::move(spectrum)), radius_(radius), radiance_(radiance), tilt_deg_(tilt_deg) {
     require_positive("disk", "radius", "mm", radius);
     require_positive("disk", "radiance", "W/(mm^2 sr)", radiance);
+    if (!(std::abs(tilt_deg) <= 90)) throw Error("disk: tilt must be a number of degrees from -90 to 90, not " + format_double(tilt_deg));
     check_spectrum("disk", spectrum_);
+    normal_ = from_disk({0, 0, 1});
 }
 
-LambertianDisk LambertianDisk::with_flux(double radius, double flux, Spectrum spectrum) {
+LambertianDisk LambertianDisk::with_flux(double radius, double flux, Spectrum spectrum, double tilt_deg) {
     require_positive("disk", "radius", "mm", radius);
     require_positive("disk", "flux", "W", flux);
-    return LambertianDisk(radius, flux / (kPi * kPi * radius * radius), std::move(spectrum));
+    return LambertianDisk(radius, flux / (kPi * kPi * radius * radius), std::move(spectrum), tilt_deg);
+}
+
+// A rotation about y; none at all without a tilt, so untilted disks give the rays they always gave.
+Vec3 LambertianDisk::from_disk(Vec3 v) const {
+    if (tilt_deg_ == 0) return v;
+    const double c = std::cos(tilt_deg_ * kPi / 180), s = std::sin(tilt_deg_ * kPi / 180);
+    return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
+}
+
+Vec3 LambertianDisk::to_disk(Vec3 v) const {
+    if (tilt_deg_ == 0) return v;
+    const double c = std::cos(tilt_deg_ * kPi / 180), s = std::sin(tilt_deg_ * kPi / 180);
+    return {c * v.x - s * v.z, v.y, s * v.x + c * v.z};
 }
 
 std::string LambertianDisk::parameters() const {
-    return "radius=" + format_double(radius_) + " radiance=" + format_double(radiance_) + " " + spectrum_parameters();
+    return "radius=" + format_double(radius_) + (tilt_deg_ != 0 ? " tilt=" + format_double(tilt_deg_) : "") +
+           " radiance=" + format_double(radiance_) + " " + spectrum_parameters();
 }
 
 double LambertianDisk::total_flux() const { return kPi * radiance_ * kPi * radius_ * radius_; }
 
 double LambertianDisk::intensity(Vec3 direction) const {
-    return radiance_ * kPi * radius_ * radius_ * std::max(0.0, cos_z(direction));
+    return radiance_ * kPi * radius_ * radius_ * std::max(0.0, cos_z(to_disk(direction)));
 }
 
 double LambertianDisk::radiance(Vec3 point, Vec3 direction) const {
     const double tolerance = 1e-6 * radius_;
-    const bool on = within(point.z, tolerance) && std::hypot(point.x, point.y) <= radius_ + tolerance;
-    return on && direction.z > 0 ? radiance_ : 0;
+    const Vec3 p = to_disk(point);
+    const bool on = within(p.z, tolerance) && std::hypot(p.x, p.y) <= radius_ + tolerance;
+    return on && to_disk(direction).z > 0 ? radiance_ : 0;
 }
 
 double LambertianDisk::irradiance(Vec3 point, Vec3 normal) const {
-    return disk_irradiance(radiance_, {0, 0, 0}, {0, 0, 1}, radius_, point, normal);
+    return disk_irradiance(radiance_, {0, 0, 0}, normal_, radius_, point, normal);
 }
 
 Ray LambertianDisk::sample_ray(Pcg32& rng) const {
     double x, y;
     unit_disk(rng, x, y);
-    return make_ray({radius_ * x, radius_ * y, 0}, cosine_direction(rng));
+    return make_ray(from_disk({radius_ * x, radius_ * y, 0}), from_disk(cosine_direction(rng)));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -61,11 +61,13 @@ protected:
     Spectrum spectrum_;
 };
 
-// Uniform Lambertian disk of `radius` centred at the origin, emitting toward +z.
+// Uniform Lambertian disk of `radius` centred at the origin, emitting toward +z, or with its
+// normal turned by `tilt_deg` (-90..90) from +z toward +x: (sin tilt, 0, cos tilt). Tilted, its
+// far field has no symmetry about the z axis: I = L pi r^2 max(0, dot(normal, direction)).
 class LambertianDisk : public Source {
 public:
-    LambertianDisk(double radius, double radiance, Spectrum spectrum = {});
-    static LambertianDisk with_flux(double radius, double flux, Spectrum spectrum = {});
+    LambertianDisk(double radius, double radiance, Spectrum spectrum = {}, double tilt_deg = 0);
+    static LambertianDisk with_flux(double radius, double flux, Spectrum spectrum = {}, double tilt_deg = 0);
     std::string name() const override { return "disk"; }
     std::string parameters() const override;
     double total_flux() const override;
@@ -75,9 +77,15 @@ public:
     Ray sample_ray(Pcg32& rng) const override;
     double radius() const { return radius_; }
     double radiance() const { return radiance_; }
+    Vec3 normal() const { return normal_; }
 
 private:
-    double radius_, radiance_;
+    // A vector of the disk's own frame (normal +z) in the source's, and back.
+    Vec3 from_disk(Vec3 v) const;
+    Vec3 to_disk(Vec3 v) const;
+
+    double radius_, radiance_, tilt_deg_;
+    Vec3 normal_;
 };
 
 // Uniform Lambertian rectangle size_x by size_y centred at the origin, emitting toward +z.

@@ -27,8 +27,9 @@ struct SourceHelp {
 
 const std::vector<SourceHelp>& catalogue() {
     static const std::vector<SourceHelp> sources = {
-        {"disk", "one-sided Lambertian disk in z = 0 emitting toward +z",
-         {{"radius", "mm (1)"}, {"flux", "W (1); or radiance"}, {"radiance", "W/(mm^2 sr)"},
+        {"disk", "one-sided Lambertian disk at the origin emitting toward +z, or tilted",
+         {{"radius", "mm (1)"}, {"tilt", "deg (0): its normal turned from +z toward +x"},
+          {"flux", "W (1); or radiance"}, {"radiance", "W/(mm^2 sr)"},
           {"wavelength", "nm (555); or spectrum"}, {"spectrum", "file of nm, relative power"}}},
         {"rectangle", "one-sided Lambertian rectangle in z = 0 emitting toward +z",
          {{"size_x", "mm (1)"}, {"size_y", "mm (1)"}, {"flux", "W (1); or radiance"}, {"radiance", "W/(mm^2 sr)"},
@@ -168,9 +169,9 @@ std::unique_ptr<analytic::Source> make_source(const std::string& name, const Sou
     const bool by_radiance = p.has("radiance");
     const double radiance = p.number("radiance", 0), flux = p.number("flux", 1);
     if (name == "disk") {
-        const double radius = p.number("radius", 1);
-        if (by_radiance) return std::make_unique<LambertianDisk>(radius, radiance, p.spectrum());
-        return std::make_unique<LambertianDisk>(LambertianDisk::with_flux(radius, flux, p.spectrum()));
+        const double radius = p.number("radius", 1), tilt = p.number("tilt", 0);
+        if (by_radiance) return std::make_unique<LambertianDisk>(radius, radiance, p.spectrum(), tilt);
+        return std::make_unique<LambertianDisk>(LambertianDisk::with_flux(radius, flux, p.spectrum(), tilt));
     }
     if (name == "rectangle") {
         const double sx = p.number("size_x", 1), sy = p.number("size_y", 1);

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rayset::analytic {
@@ -18,9 +19,11 @@ constexpr double kQuadratureTolerance = 1e-13;
 // Brute force: E = integral over the visible emitter area of L cos_e cos_r / r^2, with the emitter
 // area clipped to the receiver's front half-space through the integration bounds (so the inner
 // integrand is smooth), for a one-sided emitter in z = 0 facing +z. The x extent of each
-// emitter is given by x(u) and the y extent at x by [y_low(x), y_high(x)].
+// emitter is given by x(u) and the y extent at x by [y_low(x), y_high(x)]; u_of(x) inverts x(u),
+// for a receiver plane parallel to y, whose cut is a jump in x that the outer integral is split at.
 double brute_planar(double radiance, Vec3 p, Vec3 n, double u0, double u1, const std::function<double(double)>& x_of,
-                    const std::function<double(double)>& dx_du, const std::function<double(double)>& half_y) {
+                    const std::function<double(double)>& dx_du, const std::function<double(double)>& half_y,
+                    const std::function<double(double)>& u_of) {
     if (!(p.z > 0)) return 0;
     const double c = dot(n, p);  // receiver front: nx x + ny y - nz p.z... written as n . X > n . P
     auto outer = [&](double u) {
@@ -39,6 +42,12 @@ double brute_planar(double radiance, Vec3 p, Vec3 n, double u0, double u1, const
         };
         return integrate(inner, lo, hi, kQuadratureTolerance) * dx_du(u);
     };
+    if (n.y == 0 && n.x != 0) {
+        const double cut = u_of(c / n.x);
+        if (cut > u0 && cut < u1)
+            return test::integrate_pieces(outer, u0, cut, 64, kQuadratureTolerance) +
+                   test::integrate_pieces(outer, cut, u1, 64, kQuadratureTolerance);
+    }
     return test::integrate_pieces(outer, u0, u1, 64, kQuadratureTolerance);
 }
 
@@ -46,13 +55,14 @@ double brute_disk(double radiance, double a, Vec3 p, Vec3 n) {
     // x = a sin(u) removes the square-root endpoints of the circle.
     return brute_planar(
         radiance, p, n, -kPi / 2, kPi / 2, [&](double u) { return a * std::sin(u); },
-        [&](double u) { return a * std::cos(u); }, [&](double x) { return std::sqrt(std::max(0.0, a * a - x * x)); });
+        [&](double u) { return a * std::cos(u); }, [&](double x) { return std::sqrt(std::max(0.0, a * a - x * x)); },
+        [&](double x) { return std::asin(std::clamp(x / a, -1.0, 1.0)); });
 }
 
 double brute_rectangle(double radiance, double sx, double sy, Vec3 p, Vec3 n) {
     return brute_planar(
         radiance, p, n, -sx / 2, sx / 2, [](double u) { return u; }, [](double) { return 1.0; },
-        [&](double) { return sy / 2; });
+        [&](double) { return sy / 2; }, [](double x) { return x; });
 }
 
 // Over the sphere's cap visible from P, in polar coordinates (theta, phi) about the axis toward
@@ -122,6 +132,26 @@ TEST(AnalyticIrradiance, DiskClosedFormMatchesBruteForceQuadrature) {
     }
 }
 
+TEST(AnalyticIrradiance, TiltedDiskIsTheDiskInItsOwnFrame) {
+    // The quadrature of the untilted disk, at the point and normal turned back by the tilt
+    // (-35 degrees about y, written out here), and the disk's normal itself.
+    const double tilt = 35 * kPi / 180;
+    const LambertianDisk disk(1.5, 2.0, {}, 35);
+    auto untilt = [&](Vec3 v) {
+        return Vec3{std::cos(tilt) * v.x - std::sin(tilt) * v.z, v.y, std::sin(tilt) * v.x + std::cos(tilt) * v.z};
+    };
+    EXPECT_NEAR(disk.normal().x, std::sin(tilt), 1e-15);
+    EXPECT_NEAR(disk.normal().z, std::cos(tilt), 1e-15);
+    for (const Case& c : cases()) {
+        const Vec3 p = 1.5 * c.point;
+        expect_close(disk.irradiance(p, c.normal), brute_disk(2.0, 1.5, untilt(p), untilt(c.normal)), 2.0, describe(c));
+    }
+    EXPECT_EQ(disk.radiance(disk.normal(), disk.normal()), 0.0);               // off the disk
+    EXPECT_EQ(disk.radiance({0, 0, 0}, disk.normal()), 2.0);                     // its centre, in front
+    EXPECT_EQ(disk.radiance({0, 0, 0}, -1 * disk.normal()), 0.0);                // behind
+    EXPECT_EQ(disk.radiance({std::cos(tilt), 0.5, -std::sin(tilt)}, {0, 0, 1}), 2.0);  // in its plane
+}
+
 TEST(AnalyticIrradiance, RectangleContourSumMatchesBruteForceQuadrature) {
     const LambertianRectangle rect(2.0, 1.2, 0.7);
     for (const Case& c : cases())
@@ -187,6 +217,7 @@ TEST(AnalyticIrradiance, FarFieldLimitIsIntensityTimesCosine) {
     const std::vector<std::unique_ptr<Source>> sources = [] {
         std::vector<std::unique_ptr<Source>> s;
         s.push_back(std::make_unique<LambertianDisk>(1.0, 1.0));
+        s.push_back(std::make_unique<LambertianDisk>(1.0, 1.0, Spectrum{}, -50));
         s.push_back(std::make_unique<LambertianRectangle>(2.0, 0.5, 1.0));
         s.push_back(std::make_unique<LambertianSphere>(1.0, 1.0));
         s.push_back(std::make_unique<CosineLobe>(3.0, 1.0));
@@ -201,10 +232,11 @@ TEST(AnalyticIrradiance, FarFieldLimitIsIntensityTimesCosine) {
 }
 
 TEST(AnalyticSources, IntensityIntegratesToTotalFlux) {
-    // Deterministic quadrature over the sphere (in cos(gamma) and C, kinks only at the equator,
-    // which is a split point).
+    // Deterministic quadrature over the sphere (in cos(gamma) and C, split at the equator where
+    // the untilted emitters' kinks are; the tilted disk's horizon is left to the adaptive rule).
     std::vector<std::unique_ptr<Source>> sources;
     sources.push_back(std::make_unique<LambertianDisk>(LambertianDisk::with_flux(0.7, 2.5)));
+    sources.push_back(std::make_unique<LambertianDisk>(LambertianDisk::with_flux(0.7, 2.5, {}, 30)));
     sources.push_back(std::make_unique<LambertianRectangle>(LambertianRectangle::with_flux(2.0, 0.5, 1.25)));
     sources.push_back(std::make_unique<LambertianSphere>(LambertianSphere::with_flux(3.0, 4.0)));
     sources.push_back(std::make_unique<CosineLobe>(CosineLobe::with_flux(2.5, 0.8)));
@@ -212,19 +244,27 @@ TEST(AnalyticSources, IntensityIntegratesToTotalFlux) {
     const std::vector<double> fluxes = {0.2, 0.1, 0.3};
     sources.push_back(std::make_unique<ChipCluster>(ChipCluster::Layout{}, fluxes, std::vector<double>{630, 530}));
     const double cluster_total = 13 * (0.2 + 0.1 + 0.3);
-    const std::vector<double> expected = {2.5, 1.25, 4.0, 0.8, 0.8, cluster_total};
+    const std::vector<double> expected = {2.5, 2.5, 1.25, 4.0, 0.8, 0.8, cluster_total};
     for (size_t k = 0; k < sources.size(); ++k) {
         const Source& s = *sources[k];
         EXPECT_NEAR(s.total_flux(), expected[k], 1e-14 * expected[k]) << s.name();
+        // A disk's horizon: dot(normal, d) = 0, with the normal in the x-z plane. Split at it in C
+        // (cos C = -nz mu / (nx r)) and in mu where it touches the C range (mu = +-nx).
+        const auto* disk = dynamic_cast<const LambertianDisk*>(&s);
+        const Vec3 normal = disk ? disk->normal() : Vec3{0, 0, 1};
         auto over_c = [&](double mu) {
-            return integrate(
-                [&](double c) {
-                    const double r = std::sqrt(std::max(0.0, 1 - mu * mu));
-                    return s.intensity({r * std::cos(c), r * std::sin(c), mu});
-                },
-                0, 2 * kPi, 1e-12);
+            const double r = std::sqrt(std::max(0.0, 1 - mu * mu));
+            auto at = [&](double c) { return s.intensity({r * std::cos(c), r * std::sin(c), mu}); };
+            const double q = normal.x != 0 && r > 0 ? -normal.z * mu / (normal.x * r) : 2;
+            if (!(std::abs(q) < 1)) return integrate(at, 0, 2 * kPi, 1e-12);
+            const double c1 = std::acos(q), c2 = 2 * kPi - c1;
+            return integrate(at, 0, c1, 1e-12) + integrate(at, c1, c2, 1e-12) + integrate(at, c2, 2 * kPi, 1e-12);
         };
-        const double flux = integrate(over_c, -1, 0, 1e-12) + integrate(over_c, 0, 1, 1e-12);
+        std::vector<double> splits = {-1, 0, 1};
+        if (normal.x != 0) splits.insert(splits.end(), {-std::abs(normal.x), std::abs(normal.x)});
+        std::sort(splits.begin(), splits.end());
+        double flux = 0;
+        for (size_t i = 0; i + 1 < splits.size(); ++i) flux += integrate(over_c, splits[i], splits[i + 1], 1e-12);
         EXPECT_NEAR(flux, expected[k], 1e-9 * expected[k]) << s.name();
     }
 }

@@ -64,10 +64,12 @@ std::string error_of(const std::function<void()>& f) {
 }
 
 TEST(SynthSources, BuildFromNameAndParameters) {
-    auto disk = make_source("disk", parse_source_parameters({"radius=2", "flux=3", "wavelength=450"}));
+    auto disk = make_source("disk", parse_source_parameters({"radius=2", "tilt=60", "flux=3", "wavelength=450"}));
     EXPECT_EQ(disk->name(), "disk");
     EXPECT_DOUBLE_EQ(disk->total_flux(), 3.0);
-    EXPECT_DOUBLE_EQ(disk->intensity({0, 0, 1}), 3.0 / analytic::kPi);  // I0 = flux / pi for Lambert
+    // I0 = flux / pi for Lambert, along the normal (sin 60, 0, cos 60); half of it along z.
+    EXPECT_DOUBLE_EQ(disk->intensity({std::sqrt(0.75), 0, 0.5}), 3.0 / analytic::kPi);
+    EXPECT_NEAR(disk->intensity({0, 0, 1}), 1.5 / analytic::kPi, 1e-15);
     // parameters() reads back to the same source.
     std::vector<std::string> words;
     const std::string text = disk->parameters();
@@ -106,7 +108,9 @@ TEST(SynthSources, BadNamesKeysAndValuesAreClearErrors) {
     EXPECT_EQ(error_of([] { make_source("cone", {}); }),
               "synth: unknown source 'cone' (known: disk, rectangle, sphere, lobe, cluster)");
     EXPECT_EQ(error_of([] { make_source("disk", {{"radus", "1"}}); }),
-              "synth disk: unknown parameter 'radus' (known: radius, flux, radiance, wavelength, spectrum)");
+              "synth disk: unknown parameter 'radus' (known: radius, tilt, flux, radiance, wavelength, spectrum)");
+    EXPECT_EQ(error_of([] { make_source("disk", {{"tilt", "95"}}); }),
+              "disk: tilt must be a number of degrees from -90 to 90, not 95");
     EXPECT_EQ(error_of([] { make_source("disk", {{"radius", "2mm"}}); }),
               "synth disk: parameter 'radius' must be a finite number, not '2mm'");
     EXPECT_EQ(error_of([] { make_source("disk", {{"radius", "nan"}}); }),
