@@ -1,11 +1,17 @@
 #include "converters/farfield.h"
 
 #include "converters/error.h"
+#include "converters/farfield_smoothing.h"
 #include "converters/io.h"
 #include "converters/spectrum.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
+#include <thread>
 
 namespace rayset {
 
@@ -53,10 +59,36 @@ void FarFieldGrid::locate(double x, double y, double z, PolarAxis axis, size_t& 
     i = size_t(std::floor(c / c_step_ + 0.5)) % c_count_;
 }
 
-FarField far_field(RayReader& reader, const FarFieldOptions& options) {
-    const FarFieldGrid grid(options);
-    const RayHeader& header = reader.header();
-    const PhotometricWeights weights(header);
+void parse_smoothing(const std::string& text, FarFieldOptions& options) {
+    if (text == "auto") {
+        options.smoothing = FarFieldSmoothing::automatic;
+        return;
+    }
+    if (text == "none") {
+        options.smoothing = FarFieldSmoothing::none;
+        return;
+    }
+    char* end = nullptr;
+    const double degrees = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !(degrees >= DirectionHistogram::kMinSigmaDeg / 2 && degrees <= 45))
+        throw Error("far field: smoothing '" + text + "': expected auto, none or a bandwidth in degrees from " +
+                    format_double(DirectionHistogram::kMinSigmaDeg / 2) + " to 45");
+    options.smoothing = FarFieldSmoothing::fixed;
+    options.smoothing_deg = degrees;
+}
+
+namespace {
+
+// The rays of `reader` binned into the grid's cells (flux and squared flux, C-major) and, for
+// smoothing, into a direction histogram.
+struct BinnedRays {
+    std::vector<double> flux, square;
+    DirectionHistogram directions;
+    uint64_t rays = 0;
+};
+
+void bin_rays(RayReader& reader, const FarFieldGrid& grid, const FarFieldOptions& options, BinnedRays& out) {
+    const PhotometricWeights weights(reader.header());
     const bool photometric = options.quantity == FarFieldQuantity::photometric;
     if (photometric && !weights.luminous_known())
         fail(reader.path(), "the rays carry neither luminous flux nor radiant flux with a spectrum, so their "
@@ -64,11 +96,12 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
     if (!photometric && !weights.radiant_known())
         fail(reader.path(), "the rays carry neither radiant flux nor luminous flux with a spectrum, so their "
                             "radiant intensity is unknown; ask for a photometric far field instead");
-
-    const size_t nc = grid.c_count(), ng = grid.gamma_count();
-    std::vector<double> flux(nc * ng, 0), square(nc * ng, 0);
+    const size_t ng = grid.gamma_count();
+    out.flux.assign(grid.c_count() * ng, 0);
+    out.square.assign(grid.c_count() * ng, 0);
+    const bool smoothing = options.smoothing != FarFieldSmoothing::none;
+    const double polar_sign = options.axis == PolarAxis::plus_z ? 1 : -1;
     RayChunk chunk;
-    uint64_t rays = 0;
     while (reader.read(chunk)) {
         for (size_t k = 0; k < chunk.rays.size(); ++k) {
             const Ray& ray = chunk.rays[k];
@@ -79,15 +112,148 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
                                         " flux is unknown (no flux column for it and an unknown wavelength)");
             size_t i, j;
             grid.locate(ray.direction.x, ray.direction.y, ray.direction.z, options.axis, i, j);
-            flux[i * ng + j] += f;
-            square[i * ng + j] += f * f;
+            out.flux[i * ng + j] += f;
+            out.square[i * ng + j] += f * f;
+            if (smoothing) out.directions.add(ray.direction.x, ray.direction.y, polar_sign * ray.direction.z, f);
         }
-        rays += chunk.rays.size();
-        if (options.progress) options.progress(reader.progress());
+        out.rays += chunk.rays.size();
+        if (options.progress) options.progress(reader.progress() * (smoothing ? 0.5 : 1.0));
+    }
+}
+
+// Intensity and variance of each cell of the histogram, the polar caps pooled over C.
+void histogram_values(const FarFieldGrid& grid, const BinnedRays& binned, std::vector<double>& intensity,
+                      std::vector<double>& variance) {
+    const size_t nc = grid.c_count(), ng = grid.gamma_count();
+    intensity.assign(nc * ng, 0);
+    variance.assign(nc * ng, 0);
+    for (size_t j = 0; j < ng; ++j) {
+        const bool cap = j == 0 || j + 1 == ng;
+        double cap_flux = 0, cap_square = 0;
+        if (cap)
+            for (size_t i = 0; i < nc; ++i) cap_flux += binned.flux[i * ng + j], cap_square += binned.square[i * ng + j];
+        const double omega = grid.solid_angle(j), cap_omega = omega * double(nc);
+        for (size_t i = 0; i < nc; ++i) {
+            const size_t at = i * ng + j;
+            intensity[at] = cap ? cap_flux / cap_omega : binned.flux[at] / omega;
+            variance[at] = cap ? cap_square / (cap_omega * cap_omega) : binned.square[at] / (omega * omega);
+        }
+    }
+}
+
+// Kernel estimates at the grid angles (C-major), on all cores; the poles evaluated once.
+void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directions, const FarFieldOptions& options,
+                     std::vector<double>& intensity, std::vector<double>& variance, std::vector<double>& sigma) {
+    const size_t nc = grid.c_count(), ng = grid.gamma_count();
+    intensity.assign(nc * ng, 0);
+    variance.assign(nc * ng, 0);
+    sigma.assign(nc * ng, 0);
+    auto at_node = [&](size_t i, size_t j) {
+        const double gamma = double(j) * grid.gamma_step_deg() * kRadian, c = double(i) * grid.c_step_deg() * kRadian;
+        const double x = std::sin(gamma) * std::cos(c), y = std::sin(gamma) * std::sin(c), polar = std::cos(gamma);
+        return options.smoothing == FarFieldSmoothing::fixed ? directions.at(x, y, polar, options.smoothing_deg)
+                                                             : directions.adaptive(x, y, polar);
+    };
+    // The cell's mean of the estimate with the bandwidth chosen at its grid angle: Gauss-Legendre
+    // in C and cos(gamma) (2 x 2 points; the polar caps 4 in C x 2), so that the values times the
+    // cells' solid angles sum to the estimate's integral, as the histogram's sum to the rays' flux.
+    auto estimate = [&](size_t i, size_t j) {
+        DirectionHistogram::Estimate e = at_node(i, j);
+        const double g0 = grid.gamma_low(j) * kRadian, g1 = grid.gamma_high(j) * kRadian;
+        const bool cap = j == 0 || j + 1 == ng;
+        const double c_mid = cap ? kPi : double(i) * grid.c_step_deg() * kRadian;
+        const double c_half = cap ? kPi : grid.c_step_deg() * kRadian / 2;
+        const double mu0 = std::cos(g1), mu1 = std::cos(g0);
+        const double node = 1 / std::sqrt(3.0);
+        const int c_points = cap ? 4 : 2;
+        double sum = 0;
+        for (int a = 0; a < c_points; ++a) {
+            // Cap: 4 equal C steps (the rule in C needs only to be exact for its few harmonics).
+            const double c = cap ? (a + 0.5) * (2 * kPi / c_points) : c_mid + (a == 0 ? -node : node) * c_half;
+            for (int b = 0; b < 2; ++b) {
+                const double mu = (mu0 + mu1) / 2 + (b == 0 ? -node : node) * (mu1 - mu0) / 2;
+                const double r = std::sqrt(std::max(0.0, 1 - mu * mu));
+                sum += directions.at(r * std::cos(c), r * std::sin(c), mu, e.sigma_deg).intensity;
+            }
+        }
+        e.intensity = sum / (2 * c_points);
+        return e;
+    };
+    auto store = [&](size_t at, const DirectionHistogram::Estimate& e) {
+        intensity[at] = std::max(0.0, e.intensity);  // the twiced kernel dips below 0 in the dark
+        variance[at] = e.standard_error * e.standard_error;
+        sigma[at] = e.sigma_deg;
+    };
+    const DirectionHistogram::Estimate north = estimate(0, 0), south = estimate(0, ng - 1);
+    for (size_t i = 0; i < nc; ++i) store(i * ng, north), store(i * ng + ng - 1, south);
+
+    std::atomic<size_t> next_plane{0}, planes_done{0};
+    auto work = [&] {
+        for (size_t i; (i = next_plane++) < nc;) {
+            for (size_t j = 1; j + 1 < ng; ++j) store(i * ng + j, estimate(i, j));
+            const size_t done = ++planes_done;
+            (void)done;
+        }
+    };
+    const size_t threads = std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::thread> pool;
+    for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+    // The calling thread works too and alone reports progress.
+    for (size_t i; (i = next_plane++) < nc;) {
+        for (size_t j = 1; j + 1 < ng; ++j) store(i * ng + j, estimate(i, j));
+        ++planes_done;
+        if (options.progress) options.progress(0.5 + 0.5 * double(planes_done) / double(nc));
+    }
+    for (std::thread& t : pool) t.join();
+}
+
+std::string smoothing_description(const FarFieldOptions& options, const std::vector<double>& sigma) {
+    switch (options.smoothing) {
+        case FarFieldSmoothing::none:
+            return "none: each cell's flux over its solid angle, the polar caps pooled over C";
+        case FarFieldSmoothing::fixed:
+            return "kernel density, twiced von Mises-Fisher kernel, sigma " + format_double(options.smoothing_deg) +
+                   " deg";
+        case FarFieldSmoothing::automatic: break;
+    }
+    std::vector<double> sorted = sigma;
+    std::sort(sorted.begin(), sorted.end());
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "kernel density, twiced von Mises-Fisher kernel, sigma per direction by "
+                  "Goldenshluger-Lepski: %.3g to %.3g deg, median %.3g",
+                  sorted.front(), sorted.back(), sorted[sorted.size() / 2]);
+    return text;
+}
+
+}  // namespace
+
+FarField far_field(RayReader& reader, const FarFieldOptions& options) {
+    const FarFieldGrid grid(options);
+    if (options.smoothing == FarFieldSmoothing::fixed) {
+        FarFieldOptions check;
+        parse_smoothing(format_double(options.smoothing_deg), check);
+    }
+    BinnedRays binned;
+    bin_rays(reader, grid, options, binned);
+    const size_t nc = grid.c_count(), ng = grid.gamma_count();
+    std::vector<double> intensity, variance, sigma;
+    if (options.smoothing == FarFieldSmoothing::none) {
+        histogram_values(grid, binned, intensity, variance);
+    } else {
+        binned.directions.prepare();
+        smoothed_values(grid, binned.directions, options, intensity, variance, sigma);
     }
 
     FarField out;
-    out.rays = rays;
+    out.rays = binned.rays;
+    out.method = smoothing_description(options, sigma);
+    double rays_flux = 0, estimate_flux = 0;
+    for (size_t i = 0; i < nc; ++i)
+        for (size_t j = 0; j < ng; ++j)
+            rays_flux += binned.flux[i * ng + j], estimate_flux += intensity[i * ng + j] * grid.solid_angle(j);
+    out.flux_scale = estimate_flux > 0 ? rays_flux / estimate_flux : 1;
+
     Photometry& p = out.photometry;
     p.type = PhotometricType::C;
     for (size_t j = 0; j < ng; ++j) p.vertical_deg.push_back(double(j) * grid.gamma_step_deg());
@@ -98,15 +264,24 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
     out.flux.resize(cells);
     out.solid_angle.resize(cells);
     out.variance.resize(cells);
+    if (!sigma.empty()) out.sigma_deg.resize(cells);
+    const double scale = out.flux_scale;
+    const bool histogram = options.smoothing == FarFieldSmoothing::none;
     for (size_t i = 0; i <= nc; ++i) {
         const size_t source = i % nc;  // the 360 plane repeats the 0 plane
         for (size_t j = 0; j < ng; ++j) {
             const double omega = grid.solid_angle(j);
-            const size_t at = p.index(i, j);
-            out.flux[at] = flux[source * ng + j];
+            const size_t at = p.index(i, j), from = source * ng + j;
+            p.candela[at] = intensity[from] * scale;
             out.solid_angle[at] = omega;
-            p.candela[at] = out.flux[at] / omega;
-            out.variance[at] = square[source * ng + j] / (omega * omega);
+            // The histogram's cells keep the rays' own sums (a cap's shared evenly by its cells).
+            const bool cap = j == 0 || j + 1 == ng;
+            double cap_flux = 0;
+            if (histogram && cap)
+                for (size_t k = 0; k < nc; ++k) cap_flux += binned.flux[k * ng + j];
+            out.flux[at] = !histogram ? p.candela[at] * omega : cap ? cap_flux / double(nc) : binned.flux[from];
+            out.variance[at] = variance[from] * scale * scale;
+            if (!sigma.empty()) out.sigma_deg[at] = sigma[from];
             if (i < nc) out.total_flux += out.flux[at];
             if (p.candela[at] > out.max_intensity) {
                 out.max_intensity = p.candela[at];
@@ -116,14 +291,17 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
         }
     }
 
+    const RayHeader& header = reader.header();
     p.keywords["TEST"] = "far field of " + reader.path();
     if (!header.text[1].empty()) p.keywords["MANUFAC"] = header.text[1];
     if (!header.text[0].empty()) p.keywords["LUMINAIRE"] = header.text[0];
-    p.keywords["_RAYS"] = std::to_string(rays);
+    p.keywords["_RAYS"] = std::to_string(out.rays);
+    p.keywords["_SMOOTHING"] = out.method;
     p.keywords["_POLAR_AXIS"] = options.axis == PolarAxis::plus_z
                                     ? "gamma 0 is +z of the ray file; C0 is +x, C90 is +y"
                                     : "gamma 0 is -z of the ray file; C0 is +x, C90 is +y";
-    if (!photometric) p.keywords["_RADIOMETRIC"] = "candela values are radiant intensities in W/sr";
+    if (options.quantity == FarFieldQuantity::radiometric)
+        p.keywords["_RADIOMETRIC"] = "candela values are radiant intensities in W/sr";
     return out;
 }
 

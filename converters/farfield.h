@@ -1,5 +1,6 @@
-// Far-field photometry of a ray file: the rays' flux binned by direction into type C cells and
-// divided by each cell's exact solid angle.
+// Far-field photometry of a ray file: type C intensities on a grid of C planes and gamma
+// angles, estimated from the rays by kernel density estimation (farfield_smoothing.h) or, without
+// smoothing, as each cell's flux over its exact solid angle.
 //
 // Frame: gamma is the angle from the polar axis (+z of the ray file by default; -z for a
 // luminaire whose nadir is -z, the IES convention), C = atan2(y, x) counter-clockwise from +x
@@ -9,7 +10,13 @@
 // (i, j) holds the directions with gamma in [gamma_j - dgamma/2, gamma_j + dgamma/2) clipped to
 // [0, 180] (the last one includes 180) and C in [C_i - dC/2, C_i + dC/2) modulo 360. Its solid
 // angle is dC (cos(lower gamma) - cos(upper gamma)) exactly, the cells tile the sphere, and
-// so sum(I * solid angle) over the cells is the rays' total flux to rounding.
+// so sum(I * solid angle) over the cells is the rays' total flux to rounding. The polar cells
+// (gamma 0 and 180) are caps: one direction, one value in every C plane.
+//
+// Smoothed values are the cells' means of the kernel estimate (with the bandwidth chosen at the
+// cell's grid angle), scaled by one factor so that sum(I * solid angle) is again the rays' total
+// flux: a bandwidth that changes from direction to direction does not keep the flux by itself
+// (the factor differs from 1 by 0.5% or less at 10^6 rays, FarField::flux_scale).
 #pragma once
 
 #include "converters/photometry.h"
@@ -17,6 +24,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace rayset {
@@ -26,13 +34,25 @@ enum class PolarAxis { plus_z, minus_z };
 // candela table and flagged by the keyword _RADIOMETRIC.
 enum class FarFieldQuantity { photometric, radiometric };
 
+enum class FarFieldSmoothing {
+    automatic,  // the bandwidth chosen per direction from the rays
+    fixed,      // one bandwidth, FarFieldOptions::smoothing_deg
+    none        // the histogram: each cell's flux over its solid angle
+};
+
 struct FarFieldOptions {
     double c_step_deg = 5;       // must divide 360
     double gamma_step_deg = 2.5; // must divide 180
     PolarAxis axis = PolarAxis::plus_z;
     FarFieldQuantity quantity = FarFieldQuantity::photometric;
+    FarFieldSmoothing smoothing = FarFieldSmoothing::none;
+    double smoothing_deg = 0;  // fixed: the kernel's sigma, degrees
     std::function<void(double)> progress;
 };
+
+// "auto", "none" or a bandwidth in degrees, as `rayconv farfield --smoothing` takes it; throws
+// Error for anything else.
+void parse_smoothing(const std::string& text, FarFieldOptions& options);
 
 // The C and gamma cells of a grid (see the top of this file).
 class FarFieldGrid {
@@ -61,8 +81,12 @@ struct FarField {
     // Per cell, indexed like photometry.candela (the 360 plane repeats the 0 plane):
     std::vector<double> flux;         // lm or W
     std::vector<double> solid_angle;  // sr
-    // Estimated variance of the intensity: sum of squared ray fluxes / solid angle^2.
+    // Estimated variance of the intensity (the square of its standard error): for the
+    // histogram, the sum of squared ray fluxes / solid angle^2.
     std::vector<double> variance;
+    std::vector<double> sigma_deg;  // smoothed: the kernel bandwidth of each value
+    std::string method;             // how the values were made, as the keyword _SMOOTHING says
+    double flux_scale = 1;          // smoothed: the factor that keeps the flux (see above)
     uint64_t rays = 0;
     double total_flux = 0;      // sum of the cells = sum of the rays
     double max_intensity = 0;   // cd or W/sr

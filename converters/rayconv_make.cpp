@@ -104,12 +104,16 @@ void register_emit(CLI::App& app) {
 void register_farfield(CLI::App& app) {
     auto* cmd = app.add_subcommand(
         "farfield",
-        "Far-field intensity of a ray file as an IES or LDT file (type C, no symmetry assumed): each ray's flux "
-        "is binned by direction into cells around the grid angles and divided by the cell's exact solid angle, "
-        "so the file's total flux equals the rays'. Gamma is measured from +z (the emission axis of LED ray "
-        "files; --axis -z for nadir down), C0 is +x, C90 is +y.");
+        "Far-field intensity of a ray file as an IES or LDT file (type C, no symmetry assumed). Each value is "
+        "the mean intensity over the cell around its grid angles; the polar caps (gamma 0 and 180) are one "
+        "cell each, one value in every C plane. By default the intensity is a kernel density estimate whose "
+        "bandwidth is chosen per direction from the rays (--smoothing auto), far less noisy than binning at "
+        "10^4-10^7 rays; --smoothing none bins the rays (each cell's flux over its exact solid angle), "
+        "--smoothing DEG uses one bandwidth. The file's total flux equals the rays' and the keyword _SMOOTHING "
+        "records the method. Gamma is measured from +z (the emission axis of LED ray files; --axis -z for "
+        "nadir down), C0 is +x, C90 is +y.");
     struct Args {
-        std::string in, out, axis = "+z";
+        std::string in, out, axis = "+z", smoothing = "auto";
         double c_step = 5, gamma_step = 2.5;
         bool radiometric = false;
         ReadFlags read;
@@ -121,6 +125,9 @@ void register_farfield(CLI::App& app) {
     cmd->add_option("--gamma-step", args->gamma_step, "Gamma step, degrees (divides 180)");
     cmd->add_option("--axis", args->axis, "Polar axis: +z or -z")->check(CLI::IsMember({"+z", "-z"}));
     cmd->add_flag("--radiometric", args->radiometric, "W/sr instead of candela (keyword _RADIOMETRIC marks it)");
+    cmd->add_option("--smoothing", args->smoothing,
+                    "auto (kernel density, bandwidth from the rays; default), none (binning) or a kernel bandwidth "
+                    "in degrees");
     add_read_flags(*cmd, args->read);
     cmd->callback([args] {
         PhotometryFormat format = photometry_output(args->out);
@@ -129,15 +136,17 @@ void register_farfield(CLI::App& app) {
         o.c_step_deg = args->c_step, o.gamma_step_deg = args->gamma_step;
         o.axis = polar_axis(args->axis);
         o.quantity = args->radiometric ? FarFieldQuantity::radiometric : FarFieldQuantity::photometric;
-        ProgressBar bar("binning");
+        parse_smoothing(args->smoothing, o);
+        ProgressBar bar(o.smoothing == FarFieldSmoothing::none ? "binning" : "estimating");
         o.progress = [&](double f) { bar.update(f); };
         FarField ff = far_field(*reader, o);
         bar.done();
         write_photometry(args->out, ff.photometry, format);
         print_warnings(*reader);
         const char* unit = args->radiometric ? "W" : "lm";
-        fmt::print("{} rays, total {:.7g} {}, maximum {:.7g} {} at C {:g}, gamma {:g} deg\n", ff.rays, ff.total_flux, unit,
-                   ff.max_intensity, args->radiometric ? "W/sr" : "cd", ff.max_c_deg, ff.max_gamma_deg);
+        fmt::print("{} rays, total {:.7g} {}, maximum {:.7g} {} at C {:g}, gamma {:g} deg\nsmoothing: {}\n", ff.rays,
+                   ff.total_flux, unit, ff.max_intensity, args->radiometric ? "W/sr" : "cd", ff.max_c_deg,
+                   ff.max_gamma_deg, ff.method);
     });
 }
 

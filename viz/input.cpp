@@ -79,7 +79,11 @@ const lightmodel::LightModel& Input::model() {
 
 const IntensityTable& Input::intensity() {
     if (!intensity_) {
-        if (kind_ == InputKind::rays) intensity_ = intensity_of_rays(path_);
+        if (kind_ == InputKind::rays) {
+            FarFieldOptions smoothed;  // as rayconv farfield makes them by default
+            smoothed.smoothing = FarFieldSmoothing::automatic;
+            intensity_ = intensity_of_rays(path_, smoothed);
+        }
         else if (kind_ == InputKind::photometry) intensity_ = intensity_of_photometry(path_);
         else throw Error(path_ + ": has no far field (open a ray file or an IES / EULUMDAT file)");
     }

@@ -99,24 +99,35 @@ inline CountCheck check_counts(const std::vector<double>& p, const std::vector<d
     return r;
 }
 
+// A far field's polar caps (gamma 0 and 180) are one cell each, shared by the C planes: the
+// values of per-cell vectors (cell k = h * vertical + v) of a cap row summed into its C 0 cell,
+// the others zero.
+inline void pool_caps(std::vector<double>& per_cell, size_t nc, size_t nv) {
+    for (size_t v : {size_t(0), nv - 1}) {
+        for (size_t h = 1; h < nc; ++h) per_cell[v] += per_cell[h * nv + v], per_cell[h * nv + v] = 0;
+    }
+}
+
 // Rays per far-field cell (without the repeated 360 plane), cell k = h * vertical + v, from the
-// flux of equal-flux rays; `fractional` counts cells whose flux is not a whole number of rays.
+// flux of equal-flux rays, the polar caps pooled (pool_caps); `fractional` counts cells whose
+// flux is not a whole number of rays.
 inline std::vector<double> cell_counts(const FarField& far, const std::vector<double>& cell_flux, double ray_flux,
                                        size_t& fractional) {
     const Photometry& p = far.photometry;
     const size_t nc = p.horizontal_deg.size() - 1, nv = p.vertical_deg.size();
     std::vector<double> count(nc * nv);
-    fractional = 0;
     for (size_t h = 0; h < nc; ++h)
-        for (size_t v = 0; v < nv; ++v) {
-            const double c = cell_flux[p.index(h, v)] / ray_flux;
-            count[h * nv + v] = std::round(c);
-            fractional += std::abs(c - std::round(c)) > 1e-6;
-        }
+        for (size_t v = 0; v < nv; ++v) count[h * nv + v] = cell_flux[p.index(h, v)] / ray_flux;
+    pool_caps(count, nc, nv);
+    fractional = 0;
+    for (double& c : count) {
+        fractional += std::abs(c - std::round(c)) > 1e-6;
+        c = std::round(c);
+    }
     return count;
 }
 
-// Flux of `source` in every cell of `far`'s grid (cell k = h * vertical + v) by quadrature of
+// Flux of `source` in every cell of `far`'s grid (cell k = h * vertical + v, the polar caps pooled) by quadrature of
 // Photometry::intensity() over the cell, split at the source's grid angles and their mirror
 // images so that the integrand is smooth on every piece.
 inline std::vector<double> expected_cell_flux(const Photometry& source, const FarField& far) {
@@ -153,6 +164,7 @@ inline std::vector<double> expected_cell_flux(const Photometry& source, const Fa
                 }
             flux[h * nv + v] = sum;
         }
+    pool_caps(flux, nc, nv);
     return flux;
 }
 

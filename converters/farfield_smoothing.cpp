@@ -1,0 +1,181 @@
+#include "converters/farfield_smoothing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace rayset {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRadian = kPi / 180;
+constexpr double kFinestStepDeg = 0.25;
+// Kernels are cut where the wider of the two vMF densities has fallen to exp(-9) of its peak:
+// what lies beyond holds about 1e-4 of its weight.
+constexpr double kCutoffSigmas = 6;
+// How many standard errors of noise the bandwidth rule allows for (2: best of 1, 1.5, 2, 2.5
+// and 3 on the analytic sources of tests/bench/farfield_accuracy).
+constexpr double kMargin = 2;
+
+// The normalised von Mises-Fisher density on the unit sphere at cos(angle) t is
+// kappa / (2 pi (1 - exp(-2 kappa))) exp(kappa (t - 1)).
+// The twicing kernel 2 vMF(kappa) - vMF(kappa / 2), with one exponential.
+double twiced(double kappa, double t) {
+    const double half = std::exp(kappa / 2 * (t - 1));
+    return 2 * kappa / (2 * kPi * -std::expm1(-2 * kappa)) * half * half -
+           kappa / 2 / (2 * kPi * -std::expm1(-kappa)) * half;
+}
+
+}  // namespace
+
+DirectionHistogram::DirectionHistogram() {
+    for (int l = 0; l < kLevels; ++l) {
+        Level& level = levels_[size_t(l)];
+        level.step_deg = kFinestStepDeg * double(1 << l);
+        level.rows = size_t(std::lround(180 / level.step_deg));
+        level.columns = size_t(std::lround(360 / level.step_deg));
+        level.bins.resize(level.rows * level.columns);
+    }
+}
+
+void DirectionHistogram::add(double x, double y, double polar, double flux) {
+    const double gamma = std::atan2(std::hypot(x, y), polar) / kRadian;
+    double c = std::atan2(y, x) / kRadian;
+    if (c < 0) c += 360;
+    for (Level& level : levels_) {
+        const size_t row = std::min(size_t(gamma / level.step_deg), level.rows - 1);
+        const size_t column = std::min(size_t(c / level.step_deg), level.columns - 1);
+        Bin& bin = level.bins[row * level.columns + column];
+        bin.flux += flux;
+        bin.square += flux * flux;
+        bin.direction[0] += flux * x;
+        bin.direction[1] += flux * y;
+        bin.direction[2] += flux * polar;
+    }
+    total_flux_ += flux;
+    total_square_ += flux * flux;
+    rays_ += 1;
+}
+
+void DirectionHistogram::prepare() {
+    for (Level& level : levels_) {
+        level.mean.assign(level.bins.size(), {0, 0, 0});
+        for (size_t b = 0; b < level.bins.size(); ++b) {
+            const auto& d = level.bins[b].direction;
+            const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            if (norm > 0) level.mean[b] = {d[0] / norm, d[1] / norm, d[2] / norm};
+        }
+    }
+}
+
+const DirectionHistogram::Level& DirectionHistogram::level_for(double sigma_deg) const {
+    // Bins at most sigma / 2 wide: their spread (step / sqrt(12)) then widens the kernel by
+    // under 2% of its variance, and the mean directions keep their centres right.
+    int l = 0;
+    while (l + 1 < kLevels && levels_[size_t(l + 1)].step_deg <= sigma_deg / 8) ++l;
+    return levels_[size_t(l)];
+}
+
+DirectionHistogram::Estimate DirectionHistogram::at(double x, double y, double polar,
+                                                    double sigma_deg) const {
+    const Level& level = level_for(sigma_deg);
+    const double sigma = sigma_deg * kRadian;
+    const double kappa = 1 / (sigma * sigma);
+    const double radius = std::min(kCutoffSigmas * sigma, kPi);
+    const double cos_radius = std::cos(radius);
+    const double gamma_u = std::atan2(std::hypot(x, y), polar);
+    const double cos_u = std::cos(gamma_u), sin_u = std::sin(gamma_u);
+    double c_u = std::atan2(y, x);
+    if (c_u < 0) c_u += 2 * kPi;
+    const double step = level.step_deg * kRadian;
+    const bool whole_circles = gamma_u - radius <= 0 || gamma_u + radius >= kPi;
+
+    // The widest C half-angle of the cap at polar angle g: points (g, c) within `radius` of u
+    // have cos(c - c_u) >= (cos R - cos g cos g_u) / (sin g sin g_u). Returns pi for all of C.
+    auto half_angle = [&](double g) {
+        const double ratio = (cos_radius - std::cos(g) * cos_u) / (std::sin(g) * sin_u);
+        if (!(ratio > -1)) return kPi;
+        return ratio >= 1 ? 0.0 : std::acos(ratio);
+    };
+
+    double sum = 0, square = 0;
+    const size_t first_row = size_t(std::max(0.0, std::floor((gamma_u - radius) / step)));
+    const size_t last_row =
+        std::min(level.rows - 1, size_t(std::max(0.0, std::floor((gamma_u + radius) / step))));
+    for (size_t row = first_row; row <= last_row; ++row) {
+        size_t first_column = 0, count = level.columns;
+        if (!whole_circles) {
+            const double low = double(row) * step, high = low + step;
+            const double nearest = std::clamp(gamma_u, low, high);
+            const double width =
+                std::max({half_angle(std::max(low, 1e-9)), half_angle(std::min(high, kPi - 1e-9)),
+                          half_angle(std::clamp(nearest, 1e-9, kPi - 1e-9))});
+            const double span = (width + step) * 2 / step + 1;  // columns, one of margin a side
+            if (span < double(level.columns)) {
+                const double start = std::floor((c_u - width) / step) - 1;
+                first_column = size_t(std::fmod(start + double(level.columns) * 2, double(level.columns)));
+                count = size_t(span) + 1;
+            }
+        }
+        for (size_t k = 0; k < count; ++k) {
+            const size_t column = (first_column + k) % level.columns;
+            const size_t b = row * level.columns + column;
+            const Bin& bin = level.bins[b];
+            if (bin.flux == 0) continue;
+            const auto& m = level.mean[b];
+            const double t = x * m[0] + y * m[1] + polar * m[2];
+            if (t < cos_radius) continue;
+            const double kernel = twiced(kappa, t);
+            sum += bin.flux * kernel;
+            square += bin.square * kernel * kernel;
+        }
+    }
+    const double mean_flux = rays_ > 0 ? total_flux_ / rays_ : 0;
+    const double peak = twiced(kappa, 1) * mean_flux;
+    return {sum, std::sqrt(square + peak * peak), sigma_deg};
+}
+
+namespace {
+
+// The overlap integral of two twiced kernels of bandwidths a and b, in the plane (locally, the
+// sphere): with I(a, b) = 1 / (2 pi (a^2 + b^2)) for two Gaussians, K = 2 G(s) - G(sqrt2 s).
+double twiced_overlap(double a, double b) {
+    auto gauss = [](double u, double v) { return 1 / (2 * kPi * (u * u + v * v)); };
+    const double r = std::sqrt(2.0);
+    return 4 * gauss(a, b) - 2 * gauss(a, r * b) - 2 * gauss(r * a, b) + gauss(r * a, r * b);
+}
+
+// The standard error of the difference of two estimates made from the same rays, whose
+// correlation is that of their kernels over a locally uniform density.
+double difference_error(const DirectionHistogram::Estimate& s, const DirectionHistogram::Estimate& r) {
+    const double rho = twiced_overlap(s.sigma_deg, r.sigma_deg) /
+                       std::sqrt(twiced_overlap(s.sigma_deg, s.sigma_deg) * twiced_overlap(r.sigma_deg, r.sigma_deg));
+    const double v = s.standard_error * s.standard_error + r.standard_error * r.standard_error -
+                     2 * rho * s.standard_error * r.standard_error;
+    return std::sqrt(std::max(0.0, v));
+}
+
+}  // namespace
+
+DirectionHistogram::Estimate DirectionHistogram::adaptive(double x, double y, double polar) const {
+    std::vector<Estimate> ladder;
+    for (double sigma = kMinSigmaDeg; sigma <= kMaxSigmaDeg * 1.0001; sigma *= std::sqrt(2.0))
+        ladder.push_back(at(x, y, polar, sigma));
+    // The bias of bandwidth s bounded by how far its estimate lies from those of the smaller
+    // bandwidths beyond the noise of their difference; the bandwidth with the least bound plus
+    // noise.
+    size_t best = 0;
+    double best_score = HUGE_VAL;
+    for (size_t s = 0; s < ladder.size(); ++s) {
+        double bias = 0;
+        for (size_t r = 0; r < s; ++r)
+            bias = std::max(bias, std::abs(ladder[s].intensity - ladder[r].intensity) -
+                                      kMargin * difference_error(ladder[s], ladder[r]));
+        const double score = bias + kMargin * ladder[s].standard_error;
+        if (score < best_score) best_score = score, best = s;
+    }
+    return ladder[best];
+}
+
+}  // namespace rayset

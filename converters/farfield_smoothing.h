@@ -1,0 +1,84 @@
+// Far-field intensity from a limited set of rays: kernel density estimation on the sphere.
+//
+// A histogram of 10^5 rays on a 5 x 2.5 degree grid holds a handful of rays per cell: its
+// values scatter by 20-30% from cell to cell and its maximum is a cell that caught a few rays
+// too many. The estimate here replaces each ray by a kernel on the sphere, the difference of two
+// von Mises-Fisher densities K = 2 vMF(kappa) - vMF(kappa / 2) (Stephanou's "twicing"): it
+// integrates to one, so the flux stays the rays', and it reproduces spherical harmonics of
+// degree 0 and 1 exactly (2 coth k - coth(k/2) = tanh(k/2)), so a Lambertian far field is not
+// flattened the way a single vMF kernel flattens it (by sigma^2 relative).
+//
+// Bandwidth: sigma = 1/sqrt(kappa) is chosen per direction from a ladder growing by sqrt(2)
+// from kMinSigmaDeg to kMaxSigmaDeg by Goldenshluger and Lepski's rule (Ann. Statist. 39, 2011):
+// the bias of a bandwidth is bounded by how far its estimate lies from those of the smaller ones
+// beyond the noise of their difference (estimates from the same rays are correlated: the noise of
+// a difference is far below either's), and the bandwidth with the least bound plus noise wins.
+// Where the intensity is flat the kernel grows and the noise falls; where it curves (a narrow
+// lobe, the horizon of a flat emitter) the estimates of larger kernels move away and it stops.
+//
+// Standard error: the rays as a Poisson sample, sqrt(sum of (flux K)^2), with one ray of the
+// mean flux at the kernel's peak added, so that a direction without rays does not claim to be
+// known exactly. It states the noise; the smoothing bias comes on top, held near the noise by the
+// bandwidth rule (2-standard-error intervals hold the truth for 70-85% of the values of the
+// analytic sources at 10^5 to 10^7 rays, against 95% for unbiased values).
+//
+// Cost: the rays are binned once into 0.25-degree cells that keep their flux, squared flux and
+// flux-weighted mean direction, merged 2 x 2 into coarser levels; a kernel of width sigma sums
+// the bins of the level whose bins are at most sigma / 6 wide.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace rayset {
+
+class DirectionHistogram {
+public:
+    DirectionHistogram();
+
+    // A ray's flux toward the unit direction (x, y, polar): polar is the component along the
+    // far field's polar axis, C = atan2(y, x).
+    void add(double x, double y, double polar, double flux);
+
+    // Ends the adding: every estimate needs it first.
+    void prepare();
+
+    double total_flux() const { return total_flux_; }
+    double total_square() const { return total_square_; }
+    double ray_count() const { return rays_; }
+
+    struct Estimate {
+        double intensity = 0;       // flux per steradian
+        double standard_error = 0;  // of the intensity
+        double sigma_deg = 0;       // the bandwidth it was made with
+    };
+    // Kernel estimate toward the unit direction (x, y, polar) with bandwidth sigma_deg.
+    Estimate at(double x, double y, double polar, double sigma_deg) const;
+    // The same with the bandwidth chosen from the rays (see the top of this file).
+    Estimate adaptive(double x, double y, double polar) const;
+
+    static constexpr double kMinSigmaDeg = 1;
+    static constexpr double kMaxSigmaDeg = 16;
+
+private:
+    struct Bin {
+        double flux = 0, square = 0;
+        std::array<double, 3> direction{};  // flux-weighted sum of directions
+    };
+    struct Level {
+        double step_deg = 0;
+        size_t rows = 0, columns = 0;  // gamma rows from the polar axis, C columns from C 0
+        std::vector<Bin> bins;         // row-major
+        // Unit mean directions of the bins (zero for an empty bin), made by prepare().
+        std::vector<std::array<double, 3>> mean;
+    };
+    static constexpr int kLevels = 5;  // 0.25, 0.5, 1, 2 and 4 degrees
+
+    const Level& level_for(double sigma_deg) const;
+
+    std::array<Level, kLevels> levels_;
+    double total_flux_ = 0, total_square_ = 0, rays_ = 0;
+};
+
+}  // namespace rayset
