@@ -27,8 +27,6 @@ using namespace rayset;
 
 namespace {
 
-constexpr double kRadian = analytic::kPi / 180;
-
 struct Score {
     double rms = 0;       // relative, over the 99% region, weighted by solid angle
     double flux_rms = 0;  // the same weighted by the flux (closed-form intensity x solid angle)
@@ -36,29 +34,6 @@ struct Score {
     double seconds = 0;
     double flux_error = 0;
 };
-
-// The closed form's mean over cell (h, v) of the grid (farfield.h): Gauss-Legendre, 8 x 8 points
-// in C and cos(gamma); the polar caps over the whole circle.
-double cell_mean(const analytic::Source& source, const Photometry& p, size_t h, size_t v) {
-    static const double x[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
-                                0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
-    static const double w[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
-                                0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-    const size_t nv = p.vertical_deg.size();
-    const double dg = p.vertical_deg[1] - p.vertical_deg[0], dc = p.horizontal_deg[1] - p.horizontal_deg[0];
-    const bool cap = v == 0 || v + 1 == nv;
-    const double g0 = v == 0 ? 0 : p.vertical_deg[v] - dg / 2, g1 = v + 1 == nv ? 180 : p.vertical_deg[v] + dg / 2;
-    const double mu0 = std::cos(g1 * kRadian), mu1 = std::cos(g0 * kRadian);
-    const double c_mid = cap ? 180 : p.horizontal_deg[h], c_half = cap ? 180 : dc / 2;
-    double sum = 0;
-    for (int a = 0; a < 8; ++a)
-        for (int b = 0; b < 8; ++b) {
-            const double c = (c_mid + x[a] * c_half) * kRadian;
-            const double mu = (mu0 + mu1) / 2 + x[b] * (mu1 - mu0) / 2, r = std::sqrt(std::max(0.0, 1 - mu * mu));
-            sum += w[a] * w[b] * source.intensity({r * std::cos(c), r * std::sin(c), mu});
-        }
-    return sum / 4;
-}
 
 Score score(const analytic::Source& source, const FarField& f) {
     const Photometry& p = f.photometry;
@@ -70,7 +45,7 @@ Score score(const analytic::Source& source, const FarField& f) {
     for (size_t h = 0; h + 1 < p.horizontal_deg.size(); ++h)
         for (size_t v = 0; v < p.vertical_deg.size(); ++v) {
             const size_t at = p.index(h, v);
-            nodes.push_back({cell_mean(source, p, h, v), p.candela[at], std::sqrt(f.variance[at]), f.solid_angle[at]});
+            nodes.push_back({test::closed_form_cell_mean(source, p, h, v), p.candela[at], std::sqrt(f.variance[at]), f.solid_angle[at]});
             total += nodes.back().truth * nodes.back().omega;
         }
     std::sort(nodes.begin(), nodes.end(), [](const Node& a, const Node& b) { return a.truth > b.truth; });

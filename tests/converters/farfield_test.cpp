@@ -132,27 +132,6 @@ TEST(FarField, VarianceAndAxisConventions) {
     EXPECT_GT(down.max_gamma_deg, 150.0);
 }
 
-// The closed form's mean over cell (h, v) of a far field's grid: Gauss-Legendre, 4 x 4 points in
-// C and cos(gamma); the polar caps over the whole circle.
-double closed_form_cell_mean(const analytic::Source& source, const Photometry& p, size_t h, size_t v) {
-    const double x[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
-    const double w[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
-    const size_t nv = p.vertical_deg.size();
-    const double dg = p.vertical_deg[1] - p.vertical_deg[0], dc = p.horizontal_deg[1] - p.horizontal_deg[0];
-    const bool cap = v == 0 || v + 1 == nv;
-    const double g0 = v == 0 ? 0 : p.vertical_deg[v] - dg / 2, g1 = v + 1 == nv ? 180 : p.vertical_deg[v] + dg / 2;
-    const double mu0 = std::cos(g1 * kDeg), mu1 = std::cos(g0 * kDeg);
-    const double c_mid = cap ? 180 : p.horizontal_deg[h], c_half = cap ? 180 : dc / 2;
-    double sum = 0;
-    for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) {
-            const double c = (c_mid + x[a] * c_half) * kDeg;
-            const double mu = (mu0 + mu1) / 2 + x[b] * (mu1 - mu0) / 2, r = std::sqrt(std::max(0.0, 1 - mu * mu));
-            sum += w[a] * w[b] * source.intensity({r * std::cos(c), r * std::sin(c), mu});
-        }
-    return sum / 4;
-}
-
 // Root of the flux-weighted mean squared relative error against the closed form's cell means,
 // over the brightest cells that carry 99% of the flux.
 double flux_weighted_error(const analytic::Source& source, const FarField& f) {
@@ -162,7 +141,7 @@ double flux_weighted_error(const analytic::Source& source, const FarField& f) {
     for (size_t h = 0; h + 1 < p.horizontal_deg.size(); ++h)
         for (size_t v = 0; v < p.vertical_deg.size(); ++v) {
             const size_t at = p.index(h, v);
-            cells.push_back({closed_form_cell_mean(source, p, h, v), p.candela[at], f.solid_angle[at]});
+            cells.push_back({test::closed_form_cell_mean(source, p, h, v), p.candela[at], f.solid_angle[at]});
             total += cells.back()[0] * cells.back()[2];
         }
     std::sort(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a[0] > b[0]; });

@@ -2,6 +2,7 @@
 // closed forms are checked against), statistical bounds, and rays held in memory.
 #pragma once
 
+#include "converters/analytic_sources.h"
 #include "converters/farfield.h"
 #include "converters/photometry.h"
 #include "converters/ray_stream.h"
@@ -166,6 +167,31 @@ inline std::vector<double> expected_cell_flux(const Photometry& source, const Fa
         }
     pool_caps(flux, nc, nv);
     return flux;
+}
+
+// The mean of `source`'s closed-form intensity over cell (h, v) of a far field's grid
+// (farfield.h; the polar caps over the whole circle): Gauss-Legendre, 8 x 8 points in C and
+// cos(gamma).
+inline double closed_form_cell_mean(const analytic::Source& source, const Photometry& p, size_t h, size_t v) {
+    static const double x[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                                0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+    static const double w[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+                                0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+    constexpr double deg = 3.14159265358979323846 / 180;
+    const size_t nv = p.vertical_deg.size();
+    const double dg = p.vertical_deg[1] - p.vertical_deg[0], dc = p.horizontal_deg[1] - p.horizontal_deg[0];
+    const bool cap = v == 0 || v + 1 == nv;
+    const double g0 = v == 0 ? 0 : p.vertical_deg[v] - dg / 2, g1 = v + 1 == nv ? 180 : p.vertical_deg[v] + dg / 2;
+    const double mu0 = std::cos(g1 * deg), mu1 = std::cos(g0 * deg);
+    const double c_mid = cap ? 180 : p.horizontal_deg[h], c_half = cap ? 180 : dc / 2;
+    double sum = 0;
+    for (int a = 0; a < 8; ++a)
+        for (int b = 0; b < 8; ++b) {
+            const double c = (c_mid + x[a] * c_half) * deg;
+            const double mu = (mu0 + mu1) / 2 + x[b] * (mu1 - mu0) / 2, r = std::sqrt(std::max(0.0, 1 - mu * mu));
+            sum += w[a] * w[b] * source.intensity({r * std::cos(c), r * std::sin(c), mu});
+        }
+    return sum / 4;
 }
 
 // A decoder over rays held in memory, so far_field() can read what a test built.
