@@ -305,4 +305,31 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
     return out;
 }
 
+void round_to_uncertainty(FarField& far) {
+    Photometry& p = far.photometry;
+    for (size_t k = 0; k < p.candela.size(); ++k) {
+        const double error = std::sqrt(far.variance[k]);
+        if (!(error > 0) || !std::isfinite(error)) continue;
+        // Through decimal text, so that the value is the double nearest the rounded decimal and
+        // is written with those digits only.
+        const int exponent = int(std::floor(std::log10(error))) - 1;
+        if (exponent >= 0) {
+            const double step = std::pow(10.0, exponent);
+            p.candela[k] = std::round(p.candela[k] / step) * step;
+        } else {
+            char text[64];
+            std::snprintf(text, sizeof text, "%.*f", -exponent, p.candela[k]);
+            p.candela[k] = std::strtod(text, nullptr);
+        }
+    }
+}
+
+double written_flux(const FarField& far) {
+    const Photometry& p = far.photometry;
+    double sum = 0;
+    for (size_t h = 0; h + 1 < p.horizontal_deg.size(); ++h)
+        for (size_t v = 0; v < p.vertical_deg.size(); ++v) sum += p.candela[p.index(h, v)] * far.solid_angle[p.index(h, v)];
+    return sum;
+}
+
 }  // namespace rayset

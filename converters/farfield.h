@@ -98,4 +98,11 @@ struct FarField {
 // information. Throws Error naming the file when the rays cannot give the quantity.
 FarField far_field(RayReader& reader, const FarFieldOptions& options = {});
 
+// The intensities rounded to the digits their standard errors support: to the second significant
+// digit of the error (18.38155 +- 0.135 -> 18.38; 123.456 +- 12.3 -> 123); values without an
+// error (no rays, or a zero variance) are kept. The cells' flux and the total are left as they
+// were: rounding moves the file's flux by about 1e-4 of it, which written_flux() tells.
+void round_to_uncertainty(FarField& far);
+double written_flux(const FarField& far);  // sum of intensity x solid angle over the cells
+
 }  // namespace rayset

@@ -109,8 +109,9 @@ void register_farfield(CLI::App& app) {
         "cell each, one value in every C plane. By default the intensity is a kernel density estimate whose "
         "bandwidth is chosen per direction from the rays (--smoothing auto), far less noisy than binning at "
         "10^4-10^7 rays; --smoothing none bins the rays (each cell's flux over its exact solid angle), "
-        "--smoothing DEG uses one bandwidth. The file's total flux equals the rays' and the keyword _SMOOTHING "
-        "records the method. Gamma is measured from +z (the emission axis of LED ray files; --axis -z for "
+        "--smoothing DEG uses one bandwidth. The values' total flux equals the rays'; they are written with the "
+        "digits their standard errors support (to the error's second significant digit), and the keyword "
+        "_SMOOTHING records the method. Gamma is measured from +z (the emission axis of LED ray files; --axis -z for "
         "nadir down), C0 is +x, C90 is +y.");
     struct Args {
         std::string in, out, axis = "+z", smoothing = "auto";
@@ -141,12 +142,14 @@ void register_farfield(CLI::App& app) {
         o.progress = [&](double f) { bar.update(f); };
         FarField ff = far_field(*reader, o);
         bar.done();
+        round_to_uncertainty(ff);
         write_photometry(args->out, ff.photometry, format);
         print_warnings(*reader);
         const char* unit = args->radiometric ? "W" : "lm";
-        fmt::print("{} rays, total {:.7g} {}, maximum {:.7g} {} at C {:g}, gamma {:g} deg\nsmoothing: {}\n", ff.rays,
-                   ff.total_flux, unit, ff.max_intensity, args->radiometric ? "W/sr" : "cd", ff.max_c_deg,
-                   ff.max_gamma_deg, ff.method);
+        fmt::print("{} rays, total {:.7g} {}, maximum {:.7g} {} at C {:g}, gamma {:g} deg\nsmoothing: {}\n"
+                   "values rounded to the second digit of their standard errors: the file's flux is {:.7g} {}\n",
+                   ff.rays, ff.total_flux, unit, ff.max_intensity, args->radiometric ? "W/sr" : "cd", ff.max_c_deg,
+                   ff.max_gamma_deg, ff.method, written_flux(ff), unit);
     });
 }
 

@@ -3,6 +3,7 @@
 // within the statistics of its ray count.
 #include "converters/farfield.h"
 
+#include "converters/io.h"
 #include "converters/spectrum.h"
 #include "converters/synth.h"
 #include "support/test_support.h"
@@ -186,6 +187,20 @@ TEST(FarFieldSmoothing, BeatsBinningKeepsTheFluxAndGivesOneValueAtEachPole) {
     }
     EXPECT_EQ(smoothed.photometry.keywords.at("_SMOOTHING").rfind("kernel density", 0), 0u);
     EXPECT_EQ(binned.photometry.keywords.at("_SMOOTHING").rfind("none", 0), 0u);
+}
+
+TEST(FarFieldDigits, ValuesKeepTheDigitsTheirErrorsSupport) {
+    FarField f;
+    f.photometry.vertical_deg = {0, 90, 180};
+    f.photometry.horizontal_deg = {0, 180, 360};
+    f.photometry.candela = {18.38155, 123.456, 0.0123456, 7.0, 5.55, 0};
+    f.variance = {0.135 * 0.135, 12.3 * 12.3, 0.00021 * 0.00021, 0, 0.05 * 0.05, 0};
+    f.solid_angle.assign(6, 1.0);
+    round_to_uncertainty(f);
+    const std::vector<double> expected = {18.38, 123, 0.01235, 7.0, 5.55, 0};
+    for (size_t k = 0; k < expected.size(); ++k) EXPECT_EQ(f.photometry.candela[k], expected[k]) << k;
+    EXPECT_EQ(format_double(f.photometry.candela[2]), "0.01235");  // no binary tail in the file
+    EXPECT_DOUBLE_EQ(written_flux(f), 18.38 + 123 + 0.01235 + 7.0 + 5.55);  // the C 0 and 180 planes
 }
 
 TEST(FarFieldSmoothing, TheOptionIsAutoNoneOrABandwidth) {

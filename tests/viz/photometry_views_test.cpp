@@ -64,15 +64,17 @@ TEST(PhotometryViews, OsramBluePolarMaximumIsRayconvInfoMaximum) {
     reader->Update();
     vtkPolyData* polar = reader->GetOutput();
     EXPECT_EQ(viz::field_string(polar, "unit"), "cd");
-    // The IES file stores candela with 7 significant digits (ies_write.cpp); the curves hold doubles.
+    // The IES file holds the digits the values' standard errors support (to the error's second
+    // digit: 0.01 cd at the 18 cd maximum of this file, so within 3e-4 of it); the curves hold
+    // doubles.
     RecordProperty("polar_max_cd", fmt::format("{:.10g}", max_of(polar, "intensity")));
     RecordProperty("rayconv_info_max_cd", fmt::format("{:.10g}", reported));
-    EXPECT_NEAR(max_of(polar, "intensity"), reported, 1e-6 * reported);
+    EXPECT_NEAR(max_of(polar, "intensity"), reported, 3e-4 * reported);
     EXPECT_GE(polar->GetNumberOfCells(), 2);
 
     reader->SetFileName(dir.file("export/farfield.vtp").c_str());
     reader->Update();
-    EXPECT_NEAR(max_of(reader->GetOutput(), "intensity"), reported, 1e-6 * reported);
+    EXPECT_NEAR(max_of(reader->GetOutput(), "intensity"), reported, 3e-4 * reported);
 
     expect_rendered(input, nullptr, viz::View::farfield, dir.file("solid.png"));
     expect_rendered(input, nullptr, viz::View::polar, dir.file("polar.png"));
