@@ -59,6 +59,13 @@ void FarFieldGrid::locate(double x, double y, double z, PolarAxis axis, size_t& 
     i = size_t(std::floor(c / c_step_ + 0.5)) % c_count_;
 }
 
+namespace {
+
+constexpr double kMinBandwidthDeg = DirectionHistogram::kMinSigmaDeg / 2, kMaxBandwidthDeg = 45;
+bool bandwidth_allowed(double degrees) { return degrees >= kMinBandwidthDeg && degrees <= kMaxBandwidthDeg; }
+
+}  // namespace
+
 void parse_smoothing(const std::string& text, FarFieldOptions& options) {
     if (text == "auto") {
         options.smoothing = FarFieldSmoothing::automatic;
@@ -70,9 +77,9 @@ void parse_smoothing(const std::string& text, FarFieldOptions& options) {
     }
     char* end = nullptr;
     const double degrees = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !(degrees >= DirectionHistogram::kMinSigmaDeg / 2 && degrees <= 45))
+    if (text.empty() || *end != '\0' || !bandwidth_allowed(degrees))
         throw Error("far field: smoothing '" + text + "': expected auto, none or a bandwidth in degrees from " +
-                    format_double(DirectionHistogram::kMinSigmaDeg / 2) + " to 45");
+                    format_double(kMinBandwidthDeg) + " to " + format_double(kMaxBandwidthDeg));
     options.smoothing = FarFieldSmoothing::fixed;
     options.smoothing_deg = degrees;
 }
@@ -188,22 +195,18 @@ void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directi
     for (size_t i = 0; i < nc; ++i) store(i * ng, north), store(i * ng + ng - 1, south);
 
     std::atomic<size_t> next_plane{0}, planes_done{0};
-    auto work = [&] {
+    // Planes taken in turn by every thread; the calling thread alone reports progress.
+    auto work = [&](bool report) {
         for (size_t i; (i = next_plane++) < nc;) {
             for (size_t j = 1; j + 1 < ng; ++j) store(i * ng + j, estimate(i, j));
             const size_t done = ++planes_done;
-            (void)done;
+            if (report && options.progress) options.progress(0.5 + 0.5 * double(done) / double(nc));
         }
     };
     const size_t threads = std::max(1u, std::thread::hardware_concurrency());
     std::vector<std::thread> pool;
-    for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-    // The calling thread works too and alone reports progress.
-    for (size_t i; (i = next_plane++) < nc;) {
-        for (size_t j = 1; j + 1 < ng; ++j) store(i * ng + j, estimate(i, j));
-        ++planes_done;
-        if (options.progress) options.progress(0.5 + 0.5 * double(planes_done) / double(nc));
-    }
+    for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, false);
+    work(true);
     for (std::thread& t : pool) t.join();
 }
 
@@ -230,10 +233,9 @@ std::string smoothing_description(const FarFieldOptions& options, const std::vec
 
 FarField far_field(RayReader& reader, const FarFieldOptions& options) {
     const FarFieldGrid grid(options);
-    if (options.smoothing == FarFieldSmoothing::fixed) {
-        FarFieldOptions check;
-        parse_smoothing(format_double(options.smoothing_deg), check);
-    }
+    if (options.smoothing == FarFieldSmoothing::fixed && !bandwidth_allowed(options.smoothing_deg))
+        throw Error("far field: smoothing bandwidth " + format_double(options.smoothing_deg) + " degrees (expected " +
+                    format_double(kMinBandwidthDeg) + " to " + format_double(kMaxBandwidthDeg) + ")");
     BinnedRays binned;
     bin_rays(reader, grid, options, binned);
     const size_t nc = grid.c_count(), ng = grid.gamma_count();
@@ -267,6 +269,8 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
     if (!sigma.empty()) out.sigma_deg.resize(cells);
     const double scale = out.flux_scale;
     const bool histogram = options.smoothing == FarFieldSmoothing::none;
+    double north_flux = 0, south_flux = 0;
+    for (size_t k = 0; k < nc; ++k) north_flux += binned.flux[k * ng], south_flux += binned.flux[k * ng + ng - 1];
     for (size_t i = 0; i <= nc; ++i) {
         const size_t source = i % nc;  // the 360 plane repeats the 0 plane
         for (size_t j = 0; j < ng; ++j) {
@@ -276,10 +280,9 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
             out.solid_angle[at] = omega;
             // The histogram's cells keep the rays' own sums (a cap's shared evenly by its cells).
             const bool cap = j == 0 || j + 1 == ng;
-            double cap_flux = 0;
-            if (histogram && cap)
-                for (size_t k = 0; k < nc; ++k) cap_flux += binned.flux[k * ng + j];
-            out.flux[at] = !histogram ? p.candela[at] * omega : cap ? cap_flux / double(nc) : binned.flux[from];
+            out.flux[at] = !histogram ? p.candela[at] * omega
+                           : cap      ? (j == 0 ? north_flux : south_flux) / double(nc)
+                                      : binned.flux[from];
             out.variance[at] = variance[from] * scale * scale;
             if (!sigma.empty()) out.sigma_deg[at] = sigma[from];
             if (i < nc) out.total_flux += out.flux[at];
