@@ -61,7 +61,7 @@ void FarFieldGrid::locate(double x, double y, double z, PolarAxis axis, size_t& 
 
 namespace {
 
-constexpr double kMinBandwidthDeg = DirectionHistogram::kMinSigmaDeg / 2, kMaxBandwidthDeg = 45;
+constexpr double kMinBandwidthDeg = kFarFieldResolution.min_sigma_deg / 2, kMaxBandwidthDeg = 45;
 bool bandwidth_allowed(double degrees) { return degrees >= kMinBandwidthDeg && degrees <= kMaxBandwidthDeg; }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace rayset {
@@ -10,7 +12,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadian = kPi / 180;
-constexpr double kFinestStepDeg = 0.25;
 // Kernels are cut where the wider of the two vMF densities has fallen to exp(-9) of its peak:
 // what lies beyond holds about 1e-4 of its weight.
 constexpr double kCutoffSigmas = 6;
@@ -29,36 +30,54 @@ double twiced(double kappa, double t) {
 
 }  // namespace
 
-DirectionHistogram::DirectionHistogram() {
-    for (int l = 0; l < kLevels; ++l) {
+DirectionHistogram::DirectionHistogram(const DirectionResolution& resolution)
+    : resolution_(resolution), levels_(size_t(resolution.levels)) {
+    for (int l = 0; l < resolution.levels; ++l) {
         Level& level = levels_[size_t(l)];
-        level.step_deg = kFinestStepDeg * double(1 << l);
+        level.step_deg = resolution.finest_step_deg * double(1 << l);
+        // Whole bins on the sphere, so that 2 x 2 of them make one of the next level.
+        if (std::fmod(180, level.step_deg) != 0)
+            throw std::invalid_argument("direction histogram: bins of " +
+                                        std::to_string(level.step_deg) +
+                                        " degrees do not divide 180");
         level.rows = size_t(std::lround(180 / level.step_deg));
         level.columns = size_t(std::lround(360 / level.step_deg));
-        level.bins.resize(level.rows * level.columns);
     }
+    levels_[0].bins.resize(levels_[0].rows * levels_[0].columns);
 }
 
 void DirectionHistogram::add(double x, double y, double polar, double flux) {
     const double gamma = std::atan2(std::hypot(x, y), polar) / kRadian;
     double c = std::atan2(y, x) / kRadian;
     if (c < 0) c += 360;
-    for (Level& level : levels_) {
-        const size_t row = std::min(size_t(gamma / level.step_deg), level.rows - 1);
-        const size_t column = std::min(size_t(c / level.step_deg), level.columns - 1);
-        Bin& bin = level.bins[row * level.columns + column];
-        bin.flux += flux;
-        bin.square += flux * flux;
-        bin.direction[0] += flux * x;
-        bin.direction[1] += flux * y;
-        bin.direction[2] += flux * polar;
-    }
+    Level& level = levels_[0];
+    const size_t row = std::min(size_t(gamma / level.step_deg), level.rows - 1);
+    const size_t column = std::min(size_t(c / level.step_deg), level.columns - 1);
+    Bin& bin = level.bins[row * level.columns + column];
+    bin.flux += flux;
+    bin.square += flux * flux;
+    bin.direction[0] += flux * x;
+    bin.direction[1] += flux * y;
+    bin.direction[2] += flux * polar;
     total_flux_ += flux;
     total_square_ += flux * flux;
     rays_ += 1;
 }
 
 void DirectionHistogram::prepare() {
+    for (size_t l = 1; l < levels_.size(); ++l) {
+        const Level& finer = levels_[l - 1];
+        Level& level = levels_[l];
+        level.bins.assign(level.rows * level.columns, Bin{});
+        for (size_t row = 0; row < finer.rows; ++row)
+            for (size_t column = 0; column < finer.columns; ++column) {
+                const Bin& from = finer.bins[row * finer.columns + column];
+                Bin& to = level.bins[row / 2 * level.columns + column / 2];
+                to.flux += from.flux;
+                to.square += from.square;
+                for (int k = 0; k < 3; ++k) to.direction[size_t(k)] += from.direction[size_t(k)];
+            }
+    }
     for (Level& level : levels_) {
         level.mean.assign(level.bins.size(), {0, 0, 0});
         for (size_t b = 0; b < level.bins.size(); ++b) {
@@ -70,11 +89,11 @@ void DirectionHistogram::prepare() {
 }
 
 const DirectionHistogram::Level& DirectionHistogram::level_for(double sigma_deg) const {
-    // Bins at most sigma / 2 wide: their spread (step / sqrt(12)) then widens the kernel by
-    // under 2% of its variance, and the mean directions keep their centres right.
-    int l = 0;
-    while (l + 1 < kLevels && levels_[size_t(l + 1)].step_deg <= sigma_deg / 8) ++l;
-    return levels_[size_t(l)];
+    size_t l = 0;
+    while (l + 1 < levels_.size() &&
+           levels_[l + 1].step_deg <= sigma_deg / resolution_.bins_per_sigma)
+        ++l;
+    return levels_[l];
 }
 
 DirectionHistogram::Estimate DirectionHistogram::at(double x, double y, double polar,
@@ -114,7 +133,8 @@ DirectionHistogram::Estimate DirectionHistogram::at(double x, double y, double p
             const double span = (width + step) * 2 / step + 1;  // columns, one of margin a side
             if (span < double(level.columns)) {
                 const double start = std::floor((c_u - width) / step) - 1;
-                first_column = size_t(std::fmod(start + double(level.columns) * 2, double(level.columns)));
+                first_column =
+                    size_t(std::fmod(start + double(level.columns) * 2, double(level.columns)));
                 count = size_t(span) + 1;
             }
         }
@@ -148,9 +168,11 @@ double twiced_overlap(double a, double b) {
 
 // The standard error of the difference of two estimates made from the same rays, whose
 // correlation is that of their kernels over a locally uniform density.
-double difference_error(const DirectionHistogram::Estimate& s, const DirectionHistogram::Estimate& r) {
+double difference_error(const DirectionHistogram::Estimate& s,
+                        const DirectionHistogram::Estimate& r) {
     const double rho = twiced_overlap(s.sigma_deg, r.sigma_deg) /
-                       std::sqrt(twiced_overlap(s.sigma_deg, s.sigma_deg) * twiced_overlap(r.sigma_deg, r.sigma_deg));
+                       std::sqrt(twiced_overlap(s.sigma_deg, s.sigma_deg) *
+                                 twiced_overlap(r.sigma_deg, r.sigma_deg));
     const double v = s.standard_error * s.standard_error + r.standard_error * r.standard_error -
                      2 * rho * s.standard_error * r.standard_error;
     return std::sqrt(std::max(0.0, v));
@@ -160,7 +182,8 @@ double difference_error(const DirectionHistogram::Estimate& s, const DirectionHi
 
 DirectionHistogram::Estimate DirectionHistogram::adaptive(double x, double y, double polar) const {
     std::vector<Estimate> ladder;
-    for (double sigma = kMinSigmaDeg; sigma <= kMaxSigmaDeg * 1.0001; sigma *= std::sqrt(2.0))
+    for (double sigma = resolution_.min_sigma_deg; sigma <= resolution_.max_sigma_deg * 1.0001;
+         sigma *= std::sqrt(2.0))
         ladder.push_back(at(x, y, polar, sigma));
     // The bias of bandwidth s bounded by how far its estimate lies from those of the smaller
     // bandwidths beyond the noise of their difference; the bandwidth with the least bound plus

@@ -8,13 +8,14 @@
 // degree 0 and 1 exactly (2 coth k - coth(k/2) = tanh(k/2)), so a Lambertian far field is not
 // flattened the way a single vMF kernel flattens it (by sigma^2 relative).
 //
-// Bandwidth: sigma = 1/sqrt(kappa) is chosen per direction from a ladder growing by sqrt(2)
-// from kMinSigmaDeg to kMaxSigmaDeg by Goldenshluger and Lepski's rule (Ann. Statist. 39, 2011):
-// the bias of a bandwidth is bounded by how far its estimate lies from those of the smaller ones
-// beyond the noise of their difference (estimates from the same rays are correlated: the noise of
-// a difference is far below either's), and the bandwidth with the least bound plus noise wins.
-// Where the intensity is flat the kernel grows and the noise falls; where it curves (a narrow
-// lobe, the horizon of a flat emitter) the estimates of larger kernels move away and it stops.
+// Bandwidth: sigma = 1/sqrt(kappa) is chosen per direction from a ladder growing by sqrt(2) from
+// Resolution::min_sigma_deg to max_sigma_deg by Goldenshluger and Lepski's rule (Ann. Statist.
+// 39, 2011): the bias of a bandwidth is bounded by how far its estimate lies from those of the
+// smaller ones beyond the noise of their difference (estimates from the same rays are correlated:
+// the noise of a difference is far below either's), and the bandwidth with the least bound plus
+// noise wins. Where the intensity is flat the kernel grows and the noise falls; where it curves (a
+// narrow lobe, the horizon of a flat emitter) the estimates of larger kernels move away and it
+// stops.
 //
 // Standard error: the rays as a Poisson sample, sqrt(sum of (flux K)^2), with one ray of the
 // mean flux at the kernel's peak added, so that a direction without rays does not claim to be
@@ -22,9 +23,10 @@
 // bandwidth rule (2-standard-error intervals hold the truth for 70-85% of the values of the
 // analytic sources at 10^5 to 10^7 rays, against 95% for unbiased values).
 //
-// Cost: the rays are binned once into 0.25-degree cells that keep their flux, squared flux and
-// flux-weighted mean direction, merged 2 x 2 into coarser levels; a kernel of width sigma sums
-// the bins of the level whose bins are at most sigma / 6 wide.
+// Cost: the rays are binned once into the finest cells (0.25 degrees for a far field) that keep
+// their flux, squared flux and flux-weighted mean direction, merged 2 x 2 into coarser levels by
+// prepare(); a kernel of width sigma sums the bins of the coarsest level whose bins are at most
+// sigma / 8 wide (far fields; DirectionResolution::bins_per_sigma).
 #pragma once
 
 #include <array>
@@ -33,9 +35,23 @@
 
 namespace rayset {
 
+// The finest bins of a direction histogram and its bandwidth ladder.
+struct DirectionResolution {
+    double finest_step_deg;
+    int levels;  // bins of finest_step_deg x 2^l, l < levels, each dividing 180
+    double min_sigma_deg, max_sigma_deg;
+    // A kernel of width sigma sums the coarsest bins at most sigma / bins_per_sigma wide: their
+    // spread (step / sqrt(12)) widens it by 1 / (12 bins_per_sigma^2) of its variance.
+    double bins_per_sigma;
+};
+// Far fields: 0.25 to 4 degree bins, bandwidths from 1 to 16 degrees.
+inline constexpr DirectionResolution kFarFieldResolution{0.25, 5, 1, 16, 8};
+
 class DirectionHistogram {
 public:
-    DirectionHistogram();
+    // Throws std::invalid_argument when a level's bins do not divide 180 degrees.
+    explicit DirectionHistogram(const DirectionResolution& resolution = kFarFieldResolution);
+    const DirectionResolution& resolution() const { return resolution_; }
 
     // A ray's flux toward the unit direction (x, y, polar): polar is the component along the
     // far field's polar axis, C = atan2(y, x).
@@ -58,9 +74,6 @@ public:
     // The same with the bandwidth chosen from the rays (see the top of this file).
     Estimate adaptive(double x, double y, double polar) const;
 
-    static constexpr double kMinSigmaDeg = 1;
-    static constexpr double kMaxSigmaDeg = 16;
-
 private:
     struct Bin {
         double flux = 0, square = 0;
@@ -73,11 +86,10 @@ private:
         // Unit mean directions of the bins (zero for an empty bin), made by prepare().
         std::vector<std::array<double, 3>> mean;
     };
-    static constexpr int kLevels = 5;  // 0.25, 0.5, 1, 2 and 4 degrees
-
     const Level& level_for(double sigma_deg) const;
 
-    std::array<Level, kLevels> levels_;
+    DirectionResolution resolution_;
+    std::vector<Level> levels_;  // levels_[0] is filled by add(), the others by prepare()
     double total_flux_ = 0, total_square_ = 0, rays_ = 0;
 };
 

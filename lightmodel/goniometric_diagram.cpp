@@ -257,17 +257,31 @@ GoniometricDiagram GoniometricDiagram::deserialize(const std::vector<float>& dat
                                     " grid, got " + std::to_string(data.size()));
     if (!(data[2] >= 0) || !std::isfinite(data[2]))
         throw std::invalid_argument("goniometric diagram data: total weight must be finite and >= 0");
+    return from_densities(bands, sectors, data[2], std::vector<double>(data.begin() + 3, data.end()));
+}
+
+GoniometricDiagram GoniometricDiagram::from_densities(int bands, int sectors, double total_weight,
+                                                      const std::vector<double>& centres) {
     GoniometricDiagram diagram(bands, sectors);
-    diagram.histogram_.clear();
-    diagram.total_weight_ = data[2];
-    const std::vector<double> centres(data.begin() + 3, data.end());
+    if (centres.size() != diagram.histogram_.size())
+        throw std::invalid_argument("goniometric diagram: expected " + std::to_string(diagram.histogram_.size()) +
+                                    " cell densities, got " + std::to_string(centres.size()));
     for (double value : centres)
         if (!(value >= 0) || !std::isfinite(value))
             throw std::invalid_argument("goniometric diagram data: densities must be finite and >= 0");
+    diagram.histogram_.clear();
+    diagram.total_weight_ = total_weight;
     diagram.build_nodes(centres);
     diagram.normalise_nodes();
     diagram.finalized_ = true;
     return diagram;
+}
+
+Vec3 GoniometricDiagram::cell_centre(int cell) const {
+    const int band = cell / sectors_, sector = cell % sectors_;
+    const double z = row_u(centre_row(band)), phi = (sector + 0.5) * 2 * kPi / sectors_;
+    const double s = std::sqrt(std::max(0.0, (1 - z) * (1 + z)));
+    return {s * std::cos(phi), s * std::sin(phi), z};
 }
 
 }  // namespace rayset::lightmodel

@@ -83,6 +83,15 @@ public:
     std::vector<float> serialize() const;
     static GoniometricDiagram deserialize(const std::vector<float>& data);
 
+    // A final diagram from densities (sr^-1, >= 0, index as cell_of) at the cells' centres, as
+    // a smoothed estimate gives them; nodes and normalisation as for a histogram's. Like a
+    // deserialised one it answers queries but cannot accumulate. Throws std::invalid_argument
+    // for a bad grid or density.
+    static GoniometricDiagram from_densities(int bands, int sectors, double total_weight,
+                                             const std::vector<double>& centres);
+    // The unit direction at the centre of cell `cell`.
+    Vec3 cell_centre(int cell) const;
+
 private:
     // Rows of nodes in increasing u: south pole, centres of the southern bands, horizon seen
     // from below, horizon seen from above, centres of the northern bands, north pole.

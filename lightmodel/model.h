@@ -27,8 +27,13 @@ struct ModelOptions {
     int intensity_resolution = 5;      // the paper's 5^3
     int max_spheres_per_cell = 16;     // the paper's 16
     int samples_per_cell = 64;         // origins kept per boundary cell for the sphere fit
-    int diagram_bands = 40;            // goniometric diagrams: bands of cos(theta) ...
-    int diagram_sectors = 12;          // ... and sectors of phi (goniometric_diagram.h)
+    // Goniometric diagrams: each cell's histogram, or smoothed (diagram_estimate.h: better where
+    // the histogram's cells are few or coarse, as for a tilted emitter, but biased in the tails
+    // of narrow lobes); bands of cos(theta) and sectors of phi (goniometric_diagram.h), 0 for
+    // the histogram's 40 x 12 or the grid the estimate chooses from the rays.
+    bool smooth_diagrams = false;
+    int diagram_bands = 0;
+    int diagram_sectors = 0;
     double spectral_bin_nm = 10;       // width of the per-cell spectrum bins, 380..780 nm
     int coverage_lines = 512;          // lines per flux cell measuring its visible fraction
     int threads = 0;                   // 0: all cores

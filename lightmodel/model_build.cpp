@@ -5,6 +5,7 @@
 #include "converters/spectrum.h"
 #include "lightmodel/coverage.h"
 #include "lightmodel/density_lattice.h"
+#include "lightmodel/diagram_estimate.h"
 #include "lightmodel/sphere_fit.h"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -47,8 +48,46 @@ std::vector<std::vector<double>> table_bins(const RayHeader& header, const Spect
 // What every thread accumulates in pass 2, merged at the end.
 struct Accumulator {
     std::vector<double> flux, luminous, spectrum;  // per flux cell (spectrum: x bins)
-    std::vector<GoniometricDiagram> diagrams;      // per intensity cell
     std::vector<Vec3> points;                      // scratch: a chunk's origins in mm
+};
+
+// The rays' directions per intensity cell, for its diagram: the smoothed estimate's or each
+// cell's histogram.
+class DiagramRays {
+public:
+    DiagramRays(const ModelOptions& options, size_t cells) : options_(options) {
+        if (options.smooth_diagrams)
+            estimate_.emplace(cells);
+        else
+            histograms_.resize(cells);
+    }
+
+    void add(size_t cell, Vec3 w, double flux) {
+        if (estimate_) return estimate_->add(cell, w, flux);
+        if (!histograms_[cell]) histograms_[cell] = std::make_unique<GoniometricDiagram>(bands(), sectors());
+        histograms_[cell]->accumulate(w, flux);
+    }
+
+    // The diagrams of the cells `wanted`, in that order.
+    std::vector<GoniometricDiagram> diagrams(const std::vector<size_t>& wanted) {
+        if (estimate_) return estimate_->diagrams(wanted, options_.diagram_bands, options_.diagram_sectors);
+        std::vector<GoniometricDiagram> out;
+        for (size_t cell : wanted) {
+            GoniometricDiagram& d = histograms_[cell] ? *histograms_[cell] : out.emplace_back(bands(), sectors());
+            d.finalize();
+            if (histograms_[cell]) out.push_back(std::move(d));
+        }
+        return out;
+    }
+
+private:
+    int bands() const { return options_.diagram_bands > 0 ? options_.diagram_bands : GoniometricDiagram::kDefaultBands; }
+    int sectors() const {
+        return options_.diagram_sectors > 0 ? options_.diagram_sectors : GoniometricDiagram::kDefaultSectors;
+    }
+    const ModelOptions& options_;
+    std::optional<DiagramEstimate> estimate_;
+    std::vector<std::unique_ptr<GoniometricDiagram>> histograms_;
 };
 
 }  // namespace
@@ -118,11 +157,11 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
         a.flux.assign(flux_cells, 0);
         a.luminous.assign(flux_cells, 0);
         a.spectrum.assign(flux_cells * size_t(bin_count), 0);
-        a.diagrams.assign(intensity_cells, GoniometricDiagram(options.diagram_bands, options.diagram_sectors));
         return a;
     });
     std::vector<int32_t> voxel_of_ray;
     std::vector<Vec3> origins;
+    DiagramRays diagram_rays(options, intensity_cells);
     bool luminous_known = false, spectral = false;
     {
         auto reader = open_rays(ray_file);
@@ -163,10 +202,15 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
                             spectrum[b] += phi;
                         }
                     }
-                    acc.diagrams[size_t(voxel_intensity_cell[size_t(v)])].accumulate(
-                        {r.direction.x, r.direction.y, r.direction.z}, phi);
+                    voxel_of_ray[i] = int32_t(v);
                 }
             });
+            // Directions one thread at a time: a histogram per cell and thread would not fit.
+            for (size_t i = 0; i < n; ++i) {
+                const Ray& r = chunk.rays[i];
+                diagram_rays.add(size_t(voxel_intensity_cell[size_t(voxel_of_ray[i])]),
+                                 {r.direction.x, r.direction.y, r.direction.z}, flux_of(r));
+            }
             density.add(origins);
             report(2, reader->progress());
         }
@@ -177,14 +221,12 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
     total.flux.assign(flux_cells, 0);
     total.luminous.assign(flux_cells, 0);
     total.spectrum.assign(flux_cells * size_t(bin_count), 0);
-    total.diagrams.assign(intensity_cells, GoniometricDiagram(options.diagram_bands, options.diagram_sectors));
     for (const Accumulator& a : accumulators) {
         for (size_t c = 0; c < flux_cells; ++c) {
             total.flux[c] += a.flux[c];
             total.luminous[c] += a.luminous[c];
         }
         for (size_t i = 0; i < total.spectrum.size(); ++i) total.spectrum[i] += a.spectrum[i];
-        for (size_t k = 0; k < intensity_cells; ++k) total.diagrams[k].merge(a.diagrams[k]);
     }
 
     // Luminous flux of the rays: their luminous column, or their radiant flux weighted by V(lambda).
@@ -206,6 +248,7 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
         counts_of_cell[fc].push_back(*it);
     }
     std::vector<int32_t> diagram_index(intensity_cells, -1);
+    std::vector<size_t> diagram_of;  // intensity cell of each diagram
     for (size_t fc = 0; fc < flux_cells; ++fc) {
         if (!(total.flux[fc] > 0) || voxels_of_cell[fc].empty()) continue;
         FluxCell cell;
@@ -216,9 +259,8 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
         cell.luminous = luminous_known ? total.luminous[fc] : std::nan("");
         const size_t k = size_t(voxel_intensity_cell[size_t(dframe.linear(voxels_of_cell[fc][0]))]);
         if (diagram_index[k] < 0) {
-            diagram_index[k] = int32_t(model.diagrams.size());
-            total.diagrams[k].finalize();
-            model.diagrams.push_back(total.diagrams[k]);
+            diagram_index[k] = int32_t(diagram_of.size());
+            diagram_of.push_back(k);
             model.diagram_cells.push_back({int32_t(k % model.intensity_frame.dims()[0]),
                                            int32_t(k / model.intensity_frame.dims()[0] % model.intensity_frame.dims()[1]),
                                            int32_t(k / (size_t(model.intensity_frame.dims()[0]) * model.intensity_frame.dims()[1]))});
@@ -237,6 +279,7 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
         model.flux_cells.push_back(cell);
     }
     if (model.flux_cells.empty()) throw Error(ray_file + ": the rays carry no flux to build a model from");
+    model.diagrams = diagram_rays.diagrams(diagram_of);
 
     // Pass 3: a reservoir sample of the origins in each boundary voxel, then the sphere fits.
     model.boundary_voxels = density.boundary_cells();

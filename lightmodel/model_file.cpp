@@ -201,6 +201,7 @@ void write_model(const LightModel& model, const std::string& path) {
                         " coverage_lines=" + std::to_string(o.coverage_lines) +
                         " diagram_bands=" + std::to_string(o.diagram_bands) +
                         " diagram_sectors=" + std::to_string(o.diagram_sectors) +
+                        " smooth_diagrams=" + std::to_string(int(o.smooth_diagrams)) +
                         " seed=" + std::to_string(o.seed)));
 
     // Written beside the target and renamed into place: no half-written model on failure.
@@ -268,6 +269,7 @@ LightModel read_model(const std::string& path) {
         else if (key == "coverage_lines") o.coverage_lines = int(value);
         else if (key == "diagram_bands") o.diagram_bands = int(value);
         else if (key == "diagram_sectors") o.diagram_sectors = int(value);
+        else if (key == "smooth_diagrams") o.smooth_diagrams = value != 0;
         else if (key == "seed") o.seed = uint64_t(value);
     }
 

@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
 
     ModelOptions options;
-    std::string input, output;
+    std::string input, output, diagram_smoothing = "none";
     bool json = false;
     auto* build = app.add_subcommand("build", "Build a model from a ray file of any supported format");
     build->add_option("rayfile", input, "Ray file (TM-25, LightTools, Zemax, SPEOS, CSV)")->required()->check(CLI::ExistingFile);
@@ -102,9 +102,17 @@ int main(int argc, char** argv) {
     build->add_option("--max-spheres", options.max_spheres_per_cell, "Most spheres in one boundary cell")->capture_default_str();
     build->add_option("--samples-per-cell", options.samples_per_cell, "Origins kept per boundary cell for the sphere fit")
         ->capture_default_str();
-    build->add_option("--diagram-bands", options.diagram_bands, "Bands of cos(theta) of each goniometric diagram (even)")
+    build->add_option("--diagram-smoothing", diagram_smoothing,
+                      "Goniometric diagrams: 'none' keeps each cell's histogram (40 x 12 cells unless set below); "
+                      "'auto' estimates its density of directions with kernels whose width and grid follow the rays: "
+                      "closer near fields of asymmetric sources from few rays, but biased in the tails of narrow lobes")
+        ->check(CLI::IsMember({"auto", "none"}))
         ->capture_default_str();
-    build->add_option("--diagram-sectors", options.diagram_sectors, "Sectors of phi of each goniometric diagram")
+    build->add_option("--diagram-bands", options.diagram_bands,
+                      "Bands of cos(theta) of each goniometric diagram (even); 0: chosen from the rays")
+        ->capture_default_str();
+    build->add_option("--diagram-sectors", options.diagram_sectors,
+                      "Sectors of phi of each goniometric diagram; 0: chosen from the rays")
         ->capture_default_str();
     build->add_option("--threads", options.threads, "Worker threads; 0 = all cores")->capture_default_str();
     build->add_option("--seed", options.seed, "Seed of the reservoir sampling of origins")->capture_default_str();
@@ -117,6 +125,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
         if (*build) {
+            options.smooth_diagrams = diagram_smoothing == "auto";
             const auto start = std::chrono::steady_clock::now();
             std::unique_ptr<rayset::ProgressBar> bar;
             int current = 0;

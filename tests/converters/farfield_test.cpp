@@ -2,6 +2,7 @@
 // acceptance test that a synthetic Lambertian disk's far-field IES file follows the cosine law
 // within the statistics of its ray count.
 #include "converters/farfield.h"
+#include "converters/farfield_smoothing.h"
 
 #include "converters/io.h"
 #include "converters/spectrum.h"
@@ -201,6 +202,14 @@ TEST(FarFieldDigits, ValuesKeepTheDigitsTheirErrorsSupport) {
     for (size_t k = 0; k < expected.size(); ++k) EXPECT_EQ(f.photometry.candela[k], expected[k]) << k;
     EXPECT_EQ(format_double(f.photometry.candela[2]), "0.01235");  // no binary tail in the file
     EXPECT_DOUBLE_EQ(written_flux(f), 18.38 + 123 + 0.01235 + 7.0 + 5.55);  // the C 0 and 180 planes
+}
+
+// Coarser levels merge 2 x 2 bins, so every level's bins must tile the sphere: 2 x 2^3 = 16
+// degrees does not divide 180.
+TEST(FarFieldSmoothing, HistogramLevelsMustDivideTheSphere) {
+    EXPECT_NO_THROW(DirectionHistogram(DirectionResolution{2.5, 3, 4, 16, 4}));
+    EXPECT_THROW(DirectionHistogram(DirectionResolution{2, 4, 4, 16, 4}), std::invalid_argument);
+    EXPECT_THROW(DirectionHistogram(DirectionResolution{7, 1, 14, 28, 4}), std::invalid_argument);
 }
 
 TEST(FarFieldSmoothing, TheOptionIsAutoNoneOrABandwidth) {
