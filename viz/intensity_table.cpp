@@ -2,6 +2,7 @@
 
 #include "converters/spectrum.h"
 
+#include <cmath>
 #include <filesystem>
 
 namespace rayset::viz {
@@ -32,6 +33,8 @@ IntensityTable intensity_of_rays(const std::string& path, FarFieldOptions option
     options.axis = PolarAxis::plus_z;
     FarField field = far_field(*reader, options);
     IntensityTable t;
+    t.standard_error = field.photometry;
+    for (size_t k = 0; k < field.variance.size(); ++k) t.standard_error->candela[k] = std::sqrt(field.variance[k]);
     t.photometry = std::move(field.photometry);
     t.unit = luminous ? "cd" : "W/sr";
     t.label = file_label(path);

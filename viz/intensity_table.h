@@ -7,6 +7,7 @@
 #include "converters/farfield.h"
 #include "converters/photometry.h"
 
+#include <optional>
 #include <string>
 
 namespace rayset::viz {
@@ -19,7 +20,13 @@ struct IntensityTable {
     // -1 for IES / LDT (nadir along -z, the luminaire convention).
     int axis = 1;
     double max_intensity = 0, max_c_deg = 0, max_gamma_deg = 0;  // on the table's grid
+    // The standard error of every value, as a table on the same grid (interpolated alike);
+    // empty for files that state none (IES, EULUMDAT).
+    std::optional<Photometry> standard_error;
 };
+
+// Views draw the intensity within kBandErrors standard errors as its uncertainty band.
+inline constexpr double kBandErrors = 2;
 
 // Far field of a ray file on `options`' grid (default 5 deg x 2.5 deg, as rayconv farfield):
 // luminous intensity (cd) when the rays' luminous flux is known, else radiant (W/sr).

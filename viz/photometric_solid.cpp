@@ -19,6 +19,7 @@ vtkSmartPointer<vtkPolyData> photometric_solid(const IntensityTable& table, doub
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetDataTypeToDouble();  // exported values keep the table's precision
     auto intensity = named_doubles("intensity");
+    auto error = named_doubles("standard_error");
     // Row j = gamma j * step (0 and 180 included: the poles repeat once per C, which keeps the
     // grid regular; the repeated points coincide).
     for (int i = 0; i < nc; ++i) {
@@ -30,6 +31,7 @@ vtkSmartPointer<vtkPolyData> photometric_solid(const IntensityTable& table, doub
             points->InsertNextPoint(value * s * std::cos(c * deg), value * s * std::sin(c * deg),
                                     table.axis * value * std::cos(g * deg));
             intensity->InsertNextValue(value);
+            if (table.standard_error) error->InsertNextValue(table.standard_error->intensity(c, g));
         }
     }
     auto quads = vtkSmartPointer<vtkCellArray>::New();
@@ -44,6 +46,7 @@ vtkSmartPointer<vtkPolyData> photometric_solid(const IntensityTable& table, doub
     solid->SetPoints(points);
     solid->SetPolys(quads);
     solid->GetPointData()->SetScalars(intensity);
+    if (table.standard_error) solid->GetPointData()->AddArray(error);
     set_field_string(solid, "unit", table.unit);
     set_field_string(solid, "source", table.label);
 

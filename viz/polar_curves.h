@@ -19,8 +19,14 @@ std::vector<double> polar_planes(const IntensityTable& table);
 // One polyline per plane in z = 0 of the chart: C side to the right (x = I sin gamma), C + 180
 // to the left, y = -I cos gamma. Intensities at the table's own vertical angles (exact values
 // for far fields of rays). Point data "intensity" and "gamma_deg" (signed: negative on the
-// C + 180 side); cell data "plane_c_deg"; field data "unit", "source".
+// C + 180 side), and "standard_error" when the table states errors; cell data "plane_c_deg";
+// field data "unit", "source".
 vtkSmartPointer<vtkPolyData> polar_curves(const IntensityTable& table);
+
+// The uncertainty band of each curve of polar_curves(): one triangle strip per plane between
+// I - kBandErrors se and I + kBandErrors se (clamped at 0) along the same angles; cell data
+// "plane_c_deg". No cells when the table states no errors.
+vtkSmartPointer<vtkPolyData> polar_bands(const IntensityTable& table);
 
 // The chart's grid: circles at `ring_step` intervals up to `outer` and radial lines every 30
 // degrees; `ring_step` is a 1-2-5 step giving 4 or 5 rings.

@@ -1,5 +1,6 @@
 // Polar chart: C-plane curves of one or more far fields over a ring grid labelled in intensity,
-// gamma 0 at the bottom, a legend naming each plane (and file when several are overlaid).
+// gamma 0 at the bottom, a legend naming each plane (and file when several are overlaid), and
+// each curve's uncertainty band when its far field states standard errors.
 #include "viz/polar_curves.h"
 #include "viz/view_style.h"
 #include "viz/views.h"
@@ -47,6 +48,18 @@ vtkSmartPointer<vtkActor> line_actor(vtkPolyData* data, const double colour[3], 
     return actor;
 }
 
+// The band of one plane (cell `c` of polar_bands()), translucent in the plane's colour.
+vtkSmartPointer<vtkActor> band_actor(vtkPolyData* bands, vtkIdType c, const double colour[3]) {
+    auto one = vtkSmartPointer<vtkPolyData>::New();
+    one->SetPoints(bands->GetPoints());
+    auto strips = vtkSmartPointer<vtkCellArray>::New();
+    strips->InsertNextCell(bands->GetCell(c));
+    one->SetStrips(strips);
+    auto actor = line_actor(one, colour, 1);
+    actor->GetProperty()->SetOpacity(0.25);
+    return actor;
+}
+
 }  // namespace
 
 ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const IntensityTable*>& tables) {
@@ -69,8 +82,10 @@ ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const Intens
     int colour = 0;
     for (const auto* t : tables) {
         auto curves = polar_curves(*t);
+        auto bands = polar_bands(*t);
         const auto planes = polar_planes(*t);
         for (vtkIdType c = 0; c < curves->GetNumberOfCells(); ++c) {
+            if (c < bands->GetNumberOfCells()) renderer->AddActor(band_actor(bands, c, kPlaneColours[colour % 6]));
             // One polyline per plane, drawn in its own colour.
             auto one = vtkSmartPointer<vtkPolyData>::New();
             one->SetPoints(curves->GetPoints());
@@ -112,9 +127,17 @@ ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const Intens
     renderer->AddViewProp(legend);
 
     std::string title = tables.size() == 1 ? tables.front()->label + ": polar curves" : "polar curves";
-    for (const auto* t : tables)
+    bool banded = false;
+    for (const auto* t : tables) {
         title += fmt::format("\n{}maximum {:.4g} {} at C{:g} gamma {:g}", tables.size() > 1 ? t->label + ": " : "",
                              t->max_intensity, t->unit, t->max_c_deg, t->max_gamma_deg);
+        if (t->standard_error) {
+            const Photometry& se = *t->standard_error;
+            title += fmt::format(" \xC2\xB1 {:.2g}", se.intensity(t->max_c_deg, t->max_gamma_deg));
+            banded = true;
+        }
+    }
+    if (banded) title += fmt::format("\nbands: \xC2\xB1{:g} standard errors", kBandErrors);
     add_title(renderer, title);
     ViewHandles h;
     h.flat = true;

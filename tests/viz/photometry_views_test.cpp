@@ -119,6 +119,32 @@ TEST(PhotometryViews, PolarCurvesFollowTheTable) {
     }
     EXPECT_TRUE(found);
     EXPECT_EQ(viz::polar_ring_step(120), 50);
+    EXPECT_EQ(viz::polar_bands(t)->GetNumberOfCells(), 0);  // no errors stated, no bands
+
+    // With standard errors se = 1 + I / 20: the curves carry them, and each plane's band is a
+    // strip whose points alternate between max(0, I - 2 se) and I + 2 se at the curve's angles.
+    t.standard_error = p;
+    for (double& value : t.standard_error->candela) value = 1 + value / 20;
+    curves = viz::polar_curves(t);
+    auto bands = viz::polar_bands(t);
+    ASSERT_EQ(bands->GetNumberOfCells(), curves->GetNumberOfCells());
+    vtkDataArray* error = curves->GetPointData()->GetArray("standard_error");
+    ASSERT_NE(error, nullptr);
+    intensity = curves->GetPointData()->GetArray("intensity");
+    for (vtkIdType c = 0; c < curves->GetNumberOfCells(); ++c) {
+        const vtkIdType n = curves->GetCell(c)->GetNumberOfPoints();
+        ASSERT_EQ(bands->GetCell(c)->GetNumberOfPoints(), 2 * n);
+        for (vtkIdType i = 0; i < n; ++i) {
+            const vtkIdType id = curves->GetCell(c)->GetPointId(i);
+            const double value = intensity->GetComponent(id, 0), se = error->GetComponent(id, 0);
+            EXPECT_NEAR(se, 1 + value / 20, 1e-9);
+            double lower[3], upper[3];
+            bands->GetPoint(bands->GetCell(c)->GetPointId(2 * i), lower);
+            bands->GetPoint(bands->GetCell(c)->GetPointId(2 * i + 1), upper);
+            EXPECT_NEAR(std::hypot(lower[0], lower[1]), std::max(0.0, value - 2 * se), 1e-9);
+            EXPECT_NEAR(std::hypot(upper[0], upper[1]), value + 2 * se, 1e-9);
+        }
+    }
 }
 
 TEST(PhotometryViews, IesAndLdtRenderAndCompare) {
