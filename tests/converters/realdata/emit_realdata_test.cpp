@@ -3,12 +3,15 @@
 // measured LED ray file points along +z, as LED ray files do.
 #include "converters/emit.h"
 #include "converters/farfield.h"
+#include "support/statistics.h"
 #include "support/test_support.h"
 #include "converters/synth_test_support.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace rayset {
 namespace {
@@ -142,6 +145,105 @@ TEST(FarFieldRealData, OsramLedEmitsAlongPlusZ) {
     EXPECT_LE(f.max_gamma_deg, 30.0);
     std::printf("[ figures  ] OSRAM LERTDUW: %.5f of the flux at gamma < 88.75 deg from +z, peak %.4g W/sr at C %g gamma %g\n",
                 fraction, f.max_intensity, f.max_c_deg, f.max_gamma_deg);
+}
+
+const char* kOsramBlue = "rayfiles/rayfile_LERTDUW_S2WP_blue_100k_20161013_IES_TM25.TM25RAY";
+
+FarField smoothed_far_field(const std::string& path) {
+    auto reader = open_rays(path);
+    FarFieldOptions options;
+    options.smoothing = FarFieldSmoothing::automatic;
+    return far_field(*reader, options);
+}
+
+// The smoothed far field of OSRAM's 1e5 rays: gamma 0 is one value in every C plane, and the
+// maximum is not a cell that caught a few rays too many: each of its 8 grid neighbours lies
+// within 2 joint standard errors of it (the binned maximum, 36 cd, is twice its neighbours).
+TEST(FarFieldRealData, OsramBlueSmoothedPoleAndMaximum) {
+    RAYSET_REQUIRE_SHARED_DATA();
+    const FarField f = smoothed_far_field(test::shared_data(kOsramBlue));
+    const Photometry& p = f.photometry;
+    for (size_t h = 1; h < p.horizontal_deg.size(); ++h) EXPECT_EQ(p.candela[p.index(h, 0)], p.candela[p.index(0, 0)]);
+    const int nc = int(p.horizontal_deg.size()) - 1;
+    const int hm = int(std::lround(f.max_c_deg / 5)) % nc, vm = int(std::lround(f.max_gamma_deg / 2.5));
+    ASSERT_GE(vm, 1);  // the neighbours below are those of a cell off the pole
+    const double peak = p.candela[p.index(size_t(hm), size_t(vm))];
+    const double peak_variance = f.variance[p.index(size_t(hm), size_t(vm))];
+    double farthest = 0;
+    for (int dh = -1; dh <= 1; ++dh)
+        for (int dv = -1; dv <= 1; ++dv) {
+            const size_t at = p.index(size_t((hm + dh + nc) % nc), size_t(vm + dv));
+            const double z = std::abs(p.candela[at] - peak) / std::sqrt(peak_variance + f.variance[at]);
+            farthest = std::max(farthest, z);
+            EXPECT_LE(z, 2) << "neighbour " << dh << "," << dv;
+        }
+    std::printf("[ figures  ] OSRAM blue smoothed: maximum %.4f +- %.4f cd at C %g gamma %g; gamma 0 %.4f cd in every "
+                "plane; neighbours within %.2f joint standard errors\n",
+                peak, std::sqrt(peak_variance), f.max_c_deg, f.max_gamma_deg, p.candela[p.index(0, 0)], farthest);
+}
+
+// The two halves of the file (rays 1-50000 and 50001-100000) measure one LED: their smoothed far
+// fields must agree within their stated standard errors. Estimates at nearby directions share
+// rays through their kernels, so the test uses directions at least 4 bandwidths apart (the
+// kernels' correlation there is below 0.15), in the hemisphere that carries 99.5% of the flux:
+// the sum of their squared z-scores must stay below the chi-square 99.9% quantile.
+TEST(FarFieldRealData, OsramBlueHalvesAgreeWithinTheirErrors) {
+    RAYSET_REQUIRE_SHARED_DATA();
+    test::ScratchDir dir;
+    const std::string halves[2] = {dir.file("first.tm25ray"), dir.file("second.tm25ray")};
+    {
+        auto reader = open_rays(test::shared_data(kOsramBlue));
+        std::vector<Ray> rays;
+        RayChunk chunk;
+        while (reader->read(chunk)) rays.insert(rays.end(), chunk.rays.begin(), chunk.rays.end());
+        ASSERT_EQ(rays.size(), 100000u);
+        for (int half = 0; half < 2; ++half) {
+            RayChunk part;
+            part.rays.assign(rays.begin() + half * 50000, rays.begin() + (half + 1) * 50000);
+            RayHeader header = reader->header();
+            header.ray_count = part.rays.size();
+            header.stated_radiant = header.stated_luminous = std::nan("");
+            auto out = create_rays(halves[half], RayFormat::tm25, header);
+            out->write(part);
+            out->finish();
+        }
+    }
+    const FarField a = smoothed_far_field(halves[0]), b = smoothed_far_field(halves[1]);
+    const Photometry& p = a.photometry;
+    const double deg = M_PI / 180;
+    auto direction = [&](size_t h, size_t v) {
+        const double c = p.horizontal_deg[h] * deg, g = p.vertical_deg[v] * deg;
+        return std::array<double, 3>{std::sin(g) * std::cos(c), std::sin(g) * std::sin(c), std::cos(g)};
+    };
+    struct Chosen {
+        std::array<double, 3> w;
+        double sigma;
+    };
+    std::vector<Chosen> chosen;
+    double chi2 = 0, all_z2 = 0;
+    size_t all = 0;
+    for (size_t v = 0; p.vertical_deg[v] <= 85; ++v)
+        for (size_t h = 0; h + 1 < p.horizontal_deg.size(); ++h) {
+            const size_t at = p.index(h, v);
+            const double z2 = std::pow(a.photometry.candela[at] - b.photometry.candela[at], 2) /
+                              (a.variance[at] + b.variance[at]);
+            all_z2 += z2, ++all;
+            const auto w = direction(h, v);
+            const double sigma = std::max(a.sigma_deg[at], b.sigma_deg[at]) * deg;
+            const bool apart = std::all_of(chosen.begin(), chosen.end(), [&](const Chosen& c) {
+                const double cosine = w[0] * c.w[0] + w[1] * c.w[1] + w[2] * c.w[2];
+                return std::acos(std::clamp(cosine, -1.0, 1.0)) >= 4 * std::max(sigma, c.sigma);
+            });
+            if (!apart) continue;
+            chosen.push_back({w, sigma});
+            chi2 += z2;
+        }
+    const double critical = test::chi_square_critical(double(chosen.size()), 3.0902);
+    std::printf("[ figures  ] OSRAM blue halves: chi-square %.1f over %zu directions 4 bandwidths apart (99.9%% "
+                "critical %.1f); mean squared z over all %zu cells up to gamma 85: %.2f\n",
+                chi2, chosen.size(), critical, all, all_z2 / double(all));
+    ASSERT_GE(chosen.size(), 5u);
+    EXPECT_LT(chi2, critical);
 }
 
 }  // namespace
