@@ -150,11 +150,13 @@ void histogram_values(const FarFieldGrid& grid, const BinnedRays& binned, std::v
 
 // Kernel estimates at the grid angles (C-major), on all cores; the poles evaluated once.
 void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directions, const FarFieldOptions& options,
-                     std::vector<double>& intensity, std::vector<double>& variance, std::vector<double>& sigma) {
+                     std::vector<double>& intensity, std::vector<double>& variance, std::vector<double>& sigma,
+                     std::vector<char>& local) {
     const size_t nc = grid.c_count(), ng = grid.gamma_count();
     intensity.assign(nc * ng, 0);
     variance.assign(nc * ng, 0);
     sigma.assign(nc * ng, 0);
+    local.assign(nc * ng, 0);
     auto at_node = [&](size_t i, size_t j) {
         const double gamma = double(j) * grid.gamma_step_deg() * kRadian, c = double(i) * grid.c_step_deg() * kRadian;
         const double x = std::sin(gamma) * std::cos(c), y = std::sin(gamma) * std::sin(c), polar = std::cos(gamma);
@@ -180,7 +182,7 @@ void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directi
             for (int b = 0; b < 2; ++b) {
                 const double mu = (mu0 + mu1) / 2 + (b == 0 ? -node : node) * (mu1 - mu0) / 2;
                 const double r = std::sqrt(std::max(0.0, 1 - mu * mu));
-                sum += directions.at(r * std::cos(c), r * std::sin(c), mu, e.sigma_deg).intensity;
+                sum += directions.at_kernel_of(r * std::cos(c), r * std::sin(c), mu, e).intensity;
             }
         }
         e.intensity = sum / (2 * c_points);
@@ -190,6 +192,7 @@ void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directi
         intensity[at] = std::max(0.0, e.intensity);  // the twiced kernel dips below 0 in the dark
         variance[at] = e.standard_error * e.standard_error;
         sigma[at] = e.sigma_deg;
+        local[at] = e.local;
     };
     const DirectionHistogram::Estimate north = estimate(0, 0), south = estimate(0, ng - 1);
     for (size_t i = 0; i < nc; ++i) store(i * ng, north), store(i * ng + ng - 1, south);
@@ -210,7 +213,8 @@ void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directi
     for (std::thread& t : pool) t.join();
 }
 
-std::string smoothing_description(const FarFieldOptions& options, const std::vector<double>& sigma) {
+std::string smoothing_description(const FarFieldOptions& options, const std::vector<double>& sigma,
+                                  const std::vector<char>& local) {
     switch (options.smoothing) {
         case FarFieldSmoothing::none:
             return "none: each cell's flux over its solid angle, the polar caps pooled over C";
@@ -221,11 +225,13 @@ std::string smoothing_description(const FarFieldOptions& options, const std::vec
     }
     std::vector<double> sorted = sigma;
     std::sort(sorted.begin(), sorted.end());
-    char text[160];
+    const double local_share = double(std::count(local.begin(), local.end(), 1)) / double(local.size());
+    char text[256];
     std::snprintf(text, sizeof text,
-                  "kernel density, twiced von Mises-Fisher kernel, sigma per direction by "
-                  "Goldenshluger-Lepski: %.3g to %.3g deg, median %.3g",
-                  sorted.front(), sorted.back(), sorted[sorted.size() / 2]);
+                  "kernel density (twiced von Mises-Fisher kernel) or local log-quadratic fit, chosen per "
+                  "direction with sigma by Goldenshluger-Lepski: sigma %.3g to %.3g deg, median %.3g; local "
+                  "fits at %.0f%% of the directions",
+                  sorted.front(), sorted.back(), sorted[sorted.size() / 2], 100 * local_share);
     return text;
 }
 
@@ -240,16 +246,17 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
     bin_rays(reader, grid, options, binned);
     const size_t nc = grid.c_count(), ng = grid.gamma_count();
     std::vector<double> intensity, variance, sigma;
+    std::vector<char> local;
     if (options.smoothing == FarFieldSmoothing::none) {
         histogram_values(grid, binned, intensity, variance);
     } else {
         binned.directions.prepare();
-        smoothed_values(grid, binned.directions, options, intensity, variance, sigma);
+        smoothed_values(grid, binned.directions, options, intensity, variance, sigma, local);
     }
 
     FarField out;
     out.rays = binned.rays;
-    out.method = smoothing_description(options, sigma);
+    out.method = smoothing_description(options, sigma, local);
     double rays_flux = 0, estimate_flux = 0;
     for (size_t i = 0; i < nc; ++i)
         for (size_t j = 0; j < ng; ++j)

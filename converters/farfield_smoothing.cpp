@@ -15,6 +15,11 @@ constexpr double kRadian = kPi / 180;
 // Kernels are cut where the wider of the two vMF densities has fallen to exp(-9) of its peak:
 // what lies beyond holds about 1e-4 of its weight.
 constexpr double kCutoffSigmas = 6;
+// The local fit's Gaussian weight is cut at 5 sigma (exp(-12.5) of its peak).
+constexpr double kLocalCutoffSigmas = 5;
+// A moment covariance below 1e-6 sigma^4 in determinant: the rays near u lie on a line or a
+// point, and no quadratic can be fitted to them.
+constexpr double kMinCovarianceRatio = 1e-6;
 // How many standard errors of noise the bandwidth rule allows for (2: best of 1, 1.5, 2, 2.5
 // and 3 on the analytic sources of tests/bench/farfield_accuracy).
 constexpr double kMargin = 2;
@@ -96,12 +101,9 @@ const DirectionHistogram::Level& DirectionHistogram::level_for(double sigma_deg)
     return levels_[l];
 }
 
-DirectionHistogram::Estimate DirectionHistogram::at(double x, double y, double polar,
-                                                    double sigma_deg) const {
-    const Level& level = level_for(sigma_deg);
-    const double sigma = sigma_deg * kRadian;
-    const double kappa = 1 / (sigma * sigma);
-    const double radius = std::min(kCutoffSigmas * sigma, kPi);
+template <class Visit>
+void DirectionHistogram::visit_bins(const Level& level, double x, double y, double polar, double radius,
+                                    Visit&& visit) const {
     const double cos_radius = std::cos(radius);
     const double gamma_u = std::atan2(std::hypot(x, y), polar);
     const double cos_u = std::cos(gamma_u), sin_u = std::sin(gamma_u);
@@ -118,7 +120,6 @@ DirectionHistogram::Estimate DirectionHistogram::at(double x, double y, double p
         return ratio >= 1 ? 0.0 : std::acos(ratio);
     };
 
-    double sum = 0, square = 0;
     const size_t first_row = size_t(std::max(0.0, std::floor((gamma_u - radius) / step)));
     const size_t last_row =
         std::min(level.rows - 1, size_t(std::max(0.0, std::floor((gamma_u + radius) / step))));
@@ -139,21 +140,84 @@ DirectionHistogram::Estimate DirectionHistogram::at(double x, double y, double p
             }
         }
         for (size_t k = 0; k < count; ++k) {
-            const size_t column = (first_column + k) % level.columns;
-            const size_t b = row * level.columns + column;
+            const size_t b = row * level.columns + (first_column + k) % level.columns;
             const Bin& bin = level.bins[b];
             if (bin.flux == 0) continue;
             const auto& m = level.mean[b];
             const double t = x * m[0] + y * m[1] + polar * m[2];
-            if (t < cos_radius) continue;
-            const double kernel = twiced(kappa, t);
-            sum += bin.flux * kernel;
-            square += bin.square * kernel * kernel;
+            if (t >= cos_radius) visit(bin, m, t);
         }
     }
+}
+
+DirectionHistogram::Estimate DirectionHistogram::at(double x, double y, double polar,
+                                                    double sigma_deg) const {
+    const double sigma = sigma_deg * kRadian;
+    const double kappa = 1 / (sigma * sigma);
+    double sum = 0, square = 0;
+    visit_bins(level_for(sigma_deg), x, y, polar, std::min(kCutoffSigmas * sigma, kPi),
+               [&](const Bin& bin, const std::array<double, 3>&, double t) {
+                   const double kernel = twiced(kappa, t);
+                   sum += bin.flux * kernel;
+                   square += bin.square * kernel * kernel;
+               });
     const double mean_flux = rays_ > 0 ? total_flux_ / rays_ : 0;
     const double peak = twiced(kappa, 1) * mean_flux;
     return {sum, std::sqrt(square + peak * peak), sigma_deg};
+}
+
+DirectionHistogram::Estimate DirectionHistogram::local_fit(double x, double y, double polar,
+                                                           double sigma_deg) const {
+    const double sigma = sigma_deg * kRadian, s2 = sigma * sigma;
+    // Coordinates of the tangent plane at u: the azimuthal equidistant map (angle from u along
+    // the great circle), on an orthonormal basis e1, e2 of the plane.
+    std::array<double, 3> e1 = std::abs(polar) < 0.9 ? std::array<double, 3>{-y, x, 0}
+                                                     : std::array<double, 3>{0, -polar, y};
+    const double length = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    for (double& v : e1) v /= length;
+    const std::array<double, 3> e2{y * e1[2] - polar * e1[1], polar * e1[0] - x * e1[2],
+                                   x * e1[1] - y * e1[0]};
+    // Gaussian-weighted flux, first and second moments of the coordinates; the noise through
+    // the fit's equivalent kernel at a flat intensity, G (2 - r^2 / (2 sigma^2)).
+    double s0 = 0, s1[2] = {0, 0}, s2m[3] = {0, 0, 0}, square = 0;
+    visit_bins(level_for(sigma_deg), x, y, polar, std::min(kLocalCutoffSigmas * sigma, kPi),
+               [&](const Bin& bin, const std::array<double, 3>& m, double t) {
+                   const double theta = std::acos(std::min(1.0, t)), r2 = theta * theta;
+                   const double p1 = m[0] * e1[0] + m[1] * e1[1] + m[2] * e1[2];
+                   const double p2 = m[0] * e2[0] + m[1] * e2[1] + m[2] * e2[2];
+                   const double norm = std::hypot(p1, p2);
+                   const double a = norm > 0 ? theta * p1 / norm : 0;
+                   const double b = norm > 0 ? theta * p2 / norm : 0;
+                   const double w = bin.flux * std::exp(-r2 / (2 * s2));
+                   s0 += w;
+                   s1[0] += w * a, s1[1] += w * b;
+                   s2m[0] += w * a * a, s2m[1] += w * a * b, s2m[2] += w * b * b;
+                   const double equivalent = (w / bin.flux) * (2 - r2 / (2 * s2)) / (2 * kPi * s2);
+                   square += bin.square * equivalent * equivalent;
+               });
+    const double mean_flux = rays_ > 0 ? total_flux_ / rays_ : 0;
+    const double peak = 2 / (2 * kPi * s2) * mean_flux;
+    Estimate e{0, std::sqrt(square + peak * peak), sigma_deg, true};
+    if (!(s0 > 0)) return e;
+    // The intensity exp(a + g.t - t.H.t / 2) times the weight is a Gaussian of the moments'
+    // mean m and covariance V: I(u) = exp(a) = s0 / (2 pi sqrt(det V)) exp(-m.V^-1.m / 2).
+    const double m1 = s1[0] / s0, m2 = s1[1] / s0;
+    const double v11 = s2m[0] / s0 - m1 * m1, v12 = s2m[1] / s0 - m1 * m2;
+    const double v22 = s2m[2] / s0 - m2 * m2;
+    const double det = v11 * v22 - v12 * v12;
+    if (!(det > kMinCovarianceRatio * s2 * s2)) {
+        e.intensity = s0 / (2 * kPi * s2);  // too few bins to fit a shape: the Gaussian kernel's
+        return e;
+    }
+    const double q = (v22 * m1 * m1 - 2 * v12 * m1 * m2 + v11 * m2 * m2) / det;
+    e.intensity = s0 / (2 * kPi * std::sqrt(det)) * std::exp(-0.5 * q);
+    return e;
+}
+
+DirectionHistogram::Estimate DirectionHistogram::at_kernel_of(double x, double y, double polar,
+                                                              const Estimate& chosen) const {
+    return chosen.local ? local_fit(x, y, polar, chosen.sigma_deg)
+                        : at(x, y, polar, chosen.sigma_deg);
 }
 
 namespace {
@@ -166,13 +230,30 @@ double twiced_overlap(double a, double b) {
     return 4 * gauss(a, b) - 2 * gauss(a, r * b) - 2 * gauss(r * a, b) + gauss(r * a, r * b);
 }
 
+// The local fit's equivalent kernel L_a = G_a - (a / 2) dG_a / da against a Gaussian G_b, and
+// against another L_b.
+double local_gauss_overlap(double a, double b) {
+    const double s = a * a + b * b;
+    return (1 / s + a * a / (s * s)) / (2 * kPi);
+}
+double local_overlap(double a, double b) {
+    const double s = a * a + b * b;
+    return (2 / s + 2 * a * a * b * b / (s * s * s)) / (2 * kPi);
+}
+
+double overlap(const DirectionHistogram::Estimate& s, const DirectionHistogram::Estimate& r) {
+    const double a = s.sigma_deg, b = r.sigma_deg, root2 = std::sqrt(2.0);
+    if (s.local && r.local) return local_overlap(a, b);
+    if (s.local) return 2 * local_gauss_overlap(a, b) - local_gauss_overlap(a, root2 * b);
+    if (r.local) return 2 * local_gauss_overlap(b, a) - local_gauss_overlap(b, root2 * a);
+    return twiced_overlap(a, b);
+}
+
 // The standard error of the difference of two estimates made from the same rays, whose
 // correlation is that of their kernels over a locally uniform density.
 double difference_error(const DirectionHistogram::Estimate& s,
                         const DirectionHistogram::Estimate& r) {
-    const double rho = twiced_overlap(s.sigma_deg, r.sigma_deg) /
-                       std::sqrt(twiced_overlap(s.sigma_deg, s.sigma_deg) *
-                                 twiced_overlap(r.sigma_deg, r.sigma_deg));
+    const double rho = overlap(s, r) / std::sqrt(overlap(s, s) * overlap(r, r));
     const double v = s.standard_error * s.standard_error + r.standard_error * r.standard_error -
                      2 * rho * s.standard_error * r.standard_error;
     return std::sqrt(std::max(0.0, v));
@@ -183,16 +264,19 @@ double difference_error(const DirectionHistogram::Estimate& s,
 DirectionHistogram::Estimate DirectionHistogram::adaptive(double x, double y, double polar) const {
     std::vector<Estimate> ladder;
     for (double sigma = resolution_.min_sigma_deg; sigma <= resolution_.max_sigma_deg * 1.0001;
-         sigma *= std::sqrt(2.0))
+         sigma *= std::sqrt(2.0)) {
         ladder.push_back(at(x, y, polar, sigma));
-    // The bias of bandwidth s bounded by how far its estimate lies from those of the smaller
-    // bandwidths beyond the noise of their difference; the bandwidth with the least bound plus
+        if (resolution_.local_fits) ladder.push_back(local_fit(x, y, polar, sigma));
+    }
+    // The bias of an estimate bounded by how far it lies from those of the same or smaller
+    // bandwidths beyond the noise of their difference; the estimate with the least bound plus
     // noise.
     size_t best = 0;
     double best_score = HUGE_VAL;
     for (size_t s = 0; s < ladder.size(); ++s) {
         double bias = 0;
-        for (size_t r = 0; r < s; ++r)
+        for (size_t r = 0; r < ladder.size(); ++r)
+            if (r != s && ladder[r].sigma_deg <= ladder[s].sigma_deg)
             bias = std::max(bias, std::abs(ladder[s].intensity - ladder[r].intensity) -
                                       kMargin * difference_error(ladder[s], ladder[r]));
         const double score = bias + kMargin * ladder[s].standard_error;

@@ -31,7 +31,7 @@ namespace rayset::lightmodel {
 
 class DiagramEstimate {
 public:
-    static constexpr DirectionResolution kResolution{2.5, 3, 4, 16, 4};
+    static constexpr DirectionResolution kResolution{2.5, 3, 4, 16, 4, false};
 
     explicit DiagramEstimate(size_t cells);
 

@@ -33,6 +33,7 @@ struct Score {
     double covered = 0;   // fraction within 2 standard errors
     double seconds = 0;
     double flux_error = 0;
+    double flux_scale = 1;  // the factor that kept the flux (FarField::flux_scale)
 };
 
 Score score(const analytic::Source& source, const FarField& f) {
@@ -64,6 +65,7 @@ Score score(const analytic::Source& source, const FarField& f) {
     s.flux_rms = std::sqrt(flux_square / flux);
     s.covered = covered / weight;
     s.flux_error = f.total_flux / source.total_flux() - 1;
+    s.flux_scale = f.flux_scale;
     return s;
 }
 
@@ -90,7 +92,7 @@ int main(int argc, char** argv) {
     const std::vector<std::pair<std::string, SourceParameters>> sources = {
         {"disk", {{"tilt", "30"}}}, {"lobe", {{"n", "20"}}}, {"disk", {}}};
     std::printf("%-14s %10s | %-30s | %-40s\n", "source", "rays", "histogram: rms  flux-rms in 2se",
-                "smoothed: rms  flux-rms in 2se  seconds  flux");
+                "smoothed: rms  flux-rms in 2se  seconds  flux  scale-1");
     for (const auto& [name, parameters] : sources) {
         const auto source = make_source(name, parameters);
         std::string label = name;
@@ -98,10 +100,11 @@ int main(int argc, char** argv) {
         for (uint64_t n : counts) {
             const Score plain = run(*source, n, FarFieldSmoothing::none);
             const Score smooth = run(*source, n, FarFieldSmoothing::automatic);
-            std::printf("%-14s %10llu | %7.3f%% %7.3f%% %5.1f%% | %7.3f%% %7.3f%% %5.1f%%  %6.2f  %8.1e\n",
+            std::printf("%-14s %10llu | %7.3f%% %7.3f%% %5.1f%% | %7.3f%% %7.3f%% %5.1f%%  %6.2f  %8.1e  %+8.1e\n",
                         label.c_str(), (unsigned long long)n, 100 * plain.rms, 100 * plain.flux_rms,
                         100 * plain.covered, 100 * smooth.rms, 100 * smooth.flux_rms, 100 * smooth.covered,
-                        smooth.seconds, smooth.flux_error);
+                        smooth.seconds, smooth.flux_error, smooth.flux_scale - 1);
+            std::fflush(stdout);
         }
     }
 }
