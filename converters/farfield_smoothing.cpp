@@ -102,8 +102,8 @@ const DirectionHistogram::Level& DirectionHistogram::level_for(double sigma_deg)
 }
 
 template <class Visit>
-void DirectionHistogram::visit_bins(const Level& level, double x, double y, double polar, double radius,
-                                    Visit&& visit) const {
+void DirectionHistogram::visit_bins(const Level& level, double x, double y, double polar,
+                                    double radius, Visit&& visit) const {
     const double cos_radius = std::cos(radius);
     const double gamma_u = std::atan2(std::hypot(x, y), polar);
     const double cos_u = std::cos(gamma_u), sin_u = std::sin(gamma_u);
@@ -277,8 +277,8 @@ DirectionHistogram::Estimate DirectionHistogram::adaptive(double x, double y, do
         double bias = 0;
         for (size_t r = 0; r < ladder.size(); ++r)
             if (r != s && ladder[r].sigma_deg <= ladder[s].sigma_deg)
-            bias = std::max(bias, std::abs(ladder[s].intensity - ladder[r].intensity) -
-                                      kMargin * difference_error(ladder[s], ladder[r]));
+                bias = std::max(bias, std::abs(ladder[s].intensity - ladder[r].intensity) -
+                                          kMargin * difference_error(ladder[s], ladder[r]));
         const double score = bias + kMargin * ladder[s].standard_error;
         if (score < best_score) best_score = score, best = s;
     }

@@ -13,6 +13,9 @@ namespace {
 using analytic::kPi;
 
 constexpr int kProbeBands = 20, kProbeSectors = 24;
+// A local fit's estimate over the kernel's, applied to every cell, at most this: beyond it the
+// kernel's estimate is too near zero for the ratio to mean anything.
+constexpr double kMaxCorrection = 4;
 constexpr int kMinBands = GoniometricDiagram::kDefaultBands, kMaxBands = 256;
 constexpr int kMinSectors = GoniometricDiagram::kDefaultSectors, kMaxSectors = 512;
 
@@ -38,7 +41,7 @@ double grid_bandwidth(const DirectionHistogram& rays) {
 
 }  // namespace
 
-DiagramEstimate::DiagramEstimate(size_t cells) : all_(kResolution), cells_(cells) {}
+DiagramEstimate::DiagramEstimate(size_t cells) : all_(kAllRays), cells_(cells) {}
 
 void DiagramEstimate::add(size_t cell, Vec3 w, double flux) {
     if (!cells_[cell]) cells_[cell] = std::make_unique<DirectionHistogram>(kResolution);
@@ -56,10 +59,16 @@ std::vector<GoniometricDiagram> DiagramEstimate::diagrams(const std::vector<size
     }
     const GoniometricDiagram grid(bands, sectors);
     std::vector<Vec3> centre(size_t(grid.cell_count()));
-    std::vector<double> sigma(centre.size());
+    std::vector<double> sigma(centre.size()), correction(centre.size(), 1.0);
     tbb::parallel_for(size_t(0), centre.size(), [&](size_t c) {
-        centre[c] = grid.cell_centre(int(c));
-        sigma[c] = all_.adaptive(centre[c].x, centre[c].y, centre[c].z).sigma_deg;
+        const Vec3 w = centre[c] = grid.cell_centre(int(c));
+        const DirectionHistogram::Estimate chosen = all_.adaptive(w.x, w.y, w.z);
+        sigma[c] = chosen.sigma_deg;
+        if (chosen.local) {
+            const double kernel = all_.at(w.x, w.y, w.z, chosen.sigma_deg).intensity;
+            if (kernel > 0)
+                correction[c] = std::clamp(chosen.intensity / kernel, 0.0, kMaxCorrection);
+        }
     });
 
     std::vector<GoniometricDiagram> out(wanted.size());
@@ -72,8 +81,8 @@ std::vector<GoniometricDiagram> DiagramEstimate::diagrams(const std::vector<size
             for (size_t c = 0; total > 0 && c < centre.size(); ++c)
                 density[c] =
                     std::max(0.0,
-                             rays->at(centre[c].x, centre[c].y, centre[c].z, sigma[c]).intensity) /
-                    total;
+                             rays->at(centre[c].x, centre[c].y, centre[c].z, sigma[c]).intensity) *
+                    correction[c] / total;
             rays.reset();
         }
         out[k] = GoniometricDiagram::from_densities(bands, sectors, total, density);

@@ -8,7 +8,9 @@
 // diagrams are alike (every cell of a flat emitter has the same horizon), so their smoothing
 // biases add up across cells while their noise does not: the rule is applied where the two
 // meet, in the sum, which is the model's far field. With one bandwidth per direction that sum
-// is exactly the kernel estimate of all the rays.
+// is exactly the kernel estimate of all the rays. Where the rule prefers a local fit for all the
+// rays (the flanks of a narrow lobe), every cell's kernel estimate is multiplied by the fit's
+// ratio to the kernel estimate of all the rays there, so that the sum is that fit.
 //
 // Grid: the diagrams' resolution follows the bandwidths: the step at the horizon is a third of
 // the flux-weighted lower quartile of the bandwidths chosen at probe directions (a 20 x 24
@@ -31,7 +33,9 @@ namespace rayset::lightmodel {
 
 class DiagramEstimate {
 public:
+    // Each cell's rays: kernels only. All rays: kernels and local fits.
     static constexpr DirectionResolution kResolution{2.5, 3, 4, 16, 4, false};
+    static constexpr DirectionResolution kAllRays{2.5, 3, 4, 16, 4, true};
 
     explicit DiagramEstimate(size_t cells);
 

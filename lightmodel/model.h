@@ -27,11 +27,10 @@ struct ModelOptions {
     int intensity_resolution = 5;      // the paper's 5^3
     int max_spheres_per_cell = 16;     // the paper's 16
     int samples_per_cell = 64;         // origins kept per boundary cell for the sphere fit
-    // Goniometric diagrams: each cell's histogram, or smoothed (diagram_estimate.h: better where
-    // the histogram's cells are few or coarse, as for a tilted emitter, but biased in the tails
-    // of narrow lobes); bands of cos(theta) and sectors of phi (goniometric_diagram.h), 0 for
-    // the histogram's 40 x 12 or the grid the estimate chooses from the rays.
-    bool smooth_diagrams = false;
+    // Goniometric diagrams: smoothed (diagram_estimate.h) or each cell's histogram; bands of
+    // cos(theta) and sectors of phi (goniometric_diagram.h), 0 for the grid the estimate chooses
+    // from the rays or the histogram's 40 x 12.
+    bool smooth_diagrams = true;
     int diagram_bands = 0;
     int diagram_sectors = 0;
     double spectral_bin_nm = 10;       // width of the per-cell spectrum bins, 380..780 nm

@@ -255,6 +255,7 @@ LightModel read_model(const std::string& path) {
         model.bins.count = int(m->value().z());
     }
     std::istringstream options(text("build_options"));
+    model.options.smooth_diagrams = false;  // files that do not say so were built with histograms
     for (std::string kv; options >> kv;) {
         const auto eq = kv.find('=');
         const std::string key = kv.substr(0, eq);

@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
 
     ModelOptions options;
-    std::string input, output, diagram_smoothing = "none";
+    std::string input, output, diagram_smoothing = "auto";
     bool json = false;
     auto* build = app.add_subcommand("build", "Build a model from a ray file of any supported format");
     build->add_option("rayfile", input, "Ray file (TM-25, LightTools, Zemax, SPEOS, CSV)")->required()->check(CLI::ExistingFile);
@@ -103,9 +103,9 @@ int main(int argc, char** argv) {
     build->add_option("--samples-per-cell", options.samples_per_cell, "Origins kept per boundary cell for the sphere fit")
         ->capture_default_str();
     build->add_option("--diagram-smoothing", diagram_smoothing,
-                      "Goniometric diagrams: 'none' keeps each cell's histogram (40 x 12 cells unless set below); "
-                      "'auto' estimates its density of directions with kernels whose width and grid follow the rays: "
-                      "closer near fields of asymmetric sources from few rays, but biased in the tails of narrow lobes")
+                      "Goniometric diagrams: 'auto' estimates each intensity cell's density of directions with kernels "
+                      "whose width (per direction, from all rays) and grid follow the rays; 'none' keeps each cell's "
+                      "histogram (40 x 12 cells unless set below)")
         ->check(CLI::IsMember({"auto", "none"}))
         ->capture_default_str();
     build->add_option("--diagram-bands", options.diagram_bands,

@@ -5,6 +5,7 @@
 // chi-square goodness of fit), storage, and its far-field accuracy on analytic sources.
 #include "converters/analytic_sources.h"
 #include "converters/random.h"
+#include "lightmodel/diagram_estimate.h"
 #include "lightmodel/direction_map.h"
 #include "lightmodel/goniometric_diagram.h"
 
@@ -647,6 +648,49 @@ TEST(DiagramFarField, BiasIsSecondOrderInTheBandWidth) {
         }
         previous = bias;
     }
+}
+
+// Smoothed diagrams of two cells, each Lambertian about its own normal (+z and +x), 2e5 rays
+// each: every diagram integrates to 1, keeps its cell's flux as its weight, and follows
+// cos(theta) / pi within 1.5% RMS up to 60 degrees from its normal (the noise of kernels 8 to 16
+// degrees wide over 2e5 such rays is 0.6% to 1.2%, their bias at a Lambertian 0); the kernels
+// spill light behind each emitter's plane, but none 30 degrees or more (two of the widest
+// bandwidths).
+TEST(DiagramEstimate, LambertianCellsAboutTheirOwnNormals) {
+    DiagramEstimate estimate(2);
+    Pcg32 rng(31);
+    const Vec3 normals[2] = {{0, 0, 1}, {1, 0, 0}};
+    for (int k = 0; k < 400000; ++k) {
+        const int cell = k % 2;
+        const double r = std::sqrt(rng.uniform()), phi = 2 * kPi * rng.uniform();
+        const double a = r * std::cos(phi), b = r * std::sin(phi), c = std::sqrt(std::max(0.0, 1 - r * r));
+        const Vec3 w = cell == 0 ? Vec3{a, b, c} : Vec3{c, a, b};
+        estimate.add(size_t(cell), w, 0.5);
+    }
+    const std::vector<GoniometricDiagram> diagrams = estimate.diagrams({1, 0});
+    ASSERT_EQ(diagrams.size(), 2u);
+    for (int k = 0; k < 2; ++k) {
+        const GoniometricDiagram& d = diagrams[size_t(k)];
+        const Vec3 n = normals[1 - k];
+        EXPECT_NEAR(d.total_weight(), 100000, 1e-6);
+        EXPECT_NEAR(integral_in_u_phi(d, 4 * d.bands(), 4 * d.sectors()), 1.0, 1e-9);
+        double square = 0, behind = 0;
+        int front = 0;
+        for (int j = 0; j < 20000; ++j) {
+            const Vec3 w = uniform_direction(rng);
+            const double cosine = dot(w, n);
+            if (cosine >= 0.5) square += std::pow(d.pdf(w) / (cosine / kPi) - 1, 2), ++front;
+            if (cosine <= -0.5) behind = std::max(behind, d.pdf(w));
+        }
+        const double rms = std::sqrt(square / front);
+        std::printf("[ figures  ] smoothed Lambertian cell about %s: %d x %d grid, RMS error within 60 deg "
+                    "%.4f, largest density 30 deg or more behind %.2g\n",
+                    k == 0 ? "+x" : "+z", d.bands(), d.sectors(), rms, behind);
+        EXPECT_LT(rms, 0.015);
+        EXPECT_EQ(behind, 0);
+    }
+    EXPECT_THROW(GoniometricDiagram::from_densities(2, 1, 1, {0.5}), std::invalid_argument);
+    EXPECT_THROW(GoniometricDiagram::from_densities(2, 1, 1, {0.5, -0.5}), std::invalid_argument);
 }
 
 }  // namespace
