@@ -129,13 +129,13 @@ ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const Intens
     std::string title = tables.size() == 1 ? tables.front()->label + ": polar curves" : "polar curves";
     bool banded = false;
     for (const auto* t : tables) {
-        title += fmt::format("\n{}maximum {:.4g} {} at C{:g} gamma {:g}", tables.size() > 1 ? t->label + ": " : "",
-                             t->max_intensity, t->unit, t->max_c_deg, t->max_gamma_deg);
+        std::string error;
         if (t->standard_error) {
-            const Photometry& se = *t->standard_error;
-            title += fmt::format(" \xC2\xB1 {:.2g}", se.intensity(t->max_c_deg, t->max_gamma_deg));
+            error = fmt::format(" \xC2\xB1 {:.2g}", t->standard_error->intensity(t->max_c_deg, t->max_gamma_deg));
             banded = true;
         }
+        title += fmt::format("\n{}maximum {:.4g}{} {} at C{:g} gamma {:g}", tables.size() > 1 ? t->label + ": " : "",
+                             t->max_intensity, error, t->unit, t->max_c_deg, t->max_gamma_deg);
     }
     if (banded) title += fmt::format("\nbands: \xC2\xB1{:g} standard errors", kBandErrors);
     add_title(renderer, title);
