@@ -1,5 +1,7 @@
 #include "converters/farfield_smoothing.h"
 
+#include "converters/analytic_geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -67,6 +69,21 @@ void DirectionHistogram::add(double x, double y, double polar, double flux) {
     total_flux_ += flux;
     total_square_ += flux * flux;
     rays_ += 1;
+}
+
+void DirectionHistogram::merge(const DirectionHistogram& other) {
+    const Level& from = other.levels_[0];
+    Level& to = levels_[0];
+    if (from.step_deg != to.step_deg)
+        throw std::invalid_argument("direction histogram: merging bins of different sizes");
+    for (size_t b = 0; b < to.bins.size(); ++b) {
+        to.bins[b].flux += from.bins[b].flux;
+        to.bins[b].square += from.bins[b].square;
+        for (size_t k = 0; k < 3; ++k) to.bins[b].direction[k] += from.bins[b].direction[k];
+    }
+    total_flux_ += other.total_flux_;
+    total_square_ += other.total_square_;
+    rays_ += other.rays_;
 }
 
 void DirectionHistogram::prepare() {
@@ -171,28 +188,24 @@ DirectionHistogram::Estimate DirectionHistogram::local_fit(double x, double y, d
     const double sigma = sigma_deg * kRadian, s2 = sigma * sigma;
     // Coordinates of the tangent plane at u: the azimuthal equidistant map (angle from u along
     // the great circle), on an orthonormal basis e1, e2 of the plane.
-    std::array<double, 3> e1 = std::abs(polar) < 0.9 ? std::array<double, 3>{-y, x, 0}
-                                                     : std::array<double, 3>{0, -polar, y};
-    const double length = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
-    for (double& v : e1) v /= length;
-    const std::array<double, 3> e2{y * e1[2] - polar * e1[1], polar * e1[0] - x * e1[2],
-                                   x * e1[1] - y * e1[0]};
+    analytic::Vec3 e1, e2;
+    analytic::orthonormal_basis({x, y, polar}, e1, e2);
     // Gaussian-weighted flux, first and second moments of the coordinates; the noise through
     // the fit's equivalent kernel at a flat intensity, G (2 - r^2 / (2 sigma^2)).
     double s0 = 0, s1[2] = {0, 0}, s2m[3] = {0, 0, 0}, square = 0;
     visit_bins(level_for(sigma_deg), x, y, polar, std::min(kLocalCutoffSigmas * sigma, kPi),
                [&](const Bin& bin, const std::array<double, 3>& m, double t) {
                    const double theta = std::acos(std::min(1.0, t)), r2 = theta * theta;
-                   const double p1 = m[0] * e1[0] + m[1] * e1[1] + m[2] * e1[2];
-                   const double p2 = m[0] * e2[0] + m[1] * e2[1] + m[2] * e2[2];
+                   const analytic::Vec3 mean{m[0], m[1], m[2]};
+                   const double p1 = analytic::dot(mean, e1), p2 = analytic::dot(mean, e2);
                    const double norm = std::hypot(p1, p2);
                    const double a = norm > 0 ? theta * p1 / norm : 0;
                    const double b = norm > 0 ? theta * p2 / norm : 0;
-                   const double w = bin.flux * std::exp(-r2 / (2 * s2));
+                   const double weight = std::exp(-r2 / (2 * s2)), w = bin.flux * weight;
                    s0 += w;
                    s1[0] += w * a, s1[1] += w * b;
                    s2m[0] += w * a * a, s2m[1] += w * a * b, s2m[2] += w * b * b;
-                   const double equivalent = (w / bin.flux) * (2 - r2 / (2 * s2)) / (2 * kPi * s2);
+                   const double equivalent = weight * (2 - r2 / (2 * s2)) / (2 * kPi * s2);
                    square += bin.square * equivalent * equivalent;
                });
     const double mean_flux = rays_ > 0 ? total_flux_ / rays_ : 0;

@@ -65,11 +65,14 @@ class DirectionHistogram {
 public:
     // Throws std::invalid_argument when a level's bins do not divide 180 degrees.
     explicit DirectionHistogram(const DirectionResolution& resolution = kFarFieldResolution);
-    const DirectionResolution& resolution() const { return resolution_; }
 
     // A ray's flux toward the unit direction (x, y, polar): polar is the component along the
     // far field's polar axis, C = atan2(y, x).
     void add(double x, double y, double polar, double flux);
+
+    // Adds the rays of `other`, whose finest bins must be the same (std::invalid_argument
+    // otherwise), before either is prepared.
+    void merge(const DirectionHistogram& other);
 
     // Ends the adding: every estimate needs it first.
     void prepare();

@@ -41,19 +41,21 @@ double grid_bandwidth(const DirectionHistogram& rays) {
 
 }  // namespace
 
-DiagramEstimate::DiagramEstimate(size_t cells) : all_(kAllRays), cells_(cells) {}
+DiagramEstimate::DiagramEstimate(size_t cells) : cells_(cells) {}
 
 void DiagramEstimate::add(size_t cell, Vec3 w, double flux) {
     if (!cells_[cell]) cells_[cell] = std::make_unique<DirectionHistogram>(kResolution);
     cells_[cell]->add(w.x, w.y, w.z, flux);
-    all_.add(w.x, w.y, w.z, flux);
 }
 
 std::vector<GoniometricDiagram> DiagramEstimate::diagrams(const std::vector<size_t>& wanted,
                                                           int bands, int sectors) {
-    all_.prepare();
+    DirectionHistogram all(kAllRays);
+    for (const std::unique_ptr<DirectionHistogram>& rays : cells_)
+        if (rays) all.merge(*rays);
+    all.prepare();
     if (bands <= 0 || sectors <= 0) {
-        const double step = grid_bandwidth(all_) / 3 * kPi / 180;  // radians at the horizon
+        const double step = grid_bandwidth(all) / 3 * kPi / 180;  // radians at the horizon
         bands = std::clamp(2 * int(std::ceil(1 / step)), kMinBands, kMaxBands);
         sectors = std::clamp(int(std::ceil(2 * kPi / step)), kMinSectors, kMaxSectors);
     }
@@ -62,10 +64,10 @@ std::vector<GoniometricDiagram> DiagramEstimate::diagrams(const std::vector<size
     std::vector<double> sigma(centre.size()), correction(centre.size(), 1.0);
     tbb::parallel_for(size_t(0), centre.size(), [&](size_t c) {
         const Vec3 w = centre[c] = grid.cell_centre(int(c));
-        const DirectionHistogram::Estimate chosen = all_.adaptive(w.x, w.y, w.z);
+        const DirectionHistogram::Estimate chosen = all.adaptive(w.x, w.y, w.z);
         sigma[c] = chosen.sigma_deg;
         if (chosen.local) {
-            const double kernel = all_.at(w.x, w.y, w.z, chosen.sigma_deg).intensity;
+            const double kernel = all.at(w.x, w.y, w.z, chosen.sigma_deg).intensity;
             if (kernel > 0)
                 correction[c] = std::clamp(chosen.intensity / kernel, 0.0, kMaxCorrection);
         }

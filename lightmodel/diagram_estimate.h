@@ -19,8 +19,8 @@
 // cell-centre densities are the estimates there (the twiced kernel's negative values in the dark
 // are 0), normalised to integrate to 1, so each cell's flux, counted from its rays, is kept.
 //
-// Memory: one histogram of 10368 bins (0.7 MB with its coarser levels) per cell that holds rays,
-// and one for all of them.
+// Memory: one histogram of 10368 bins (0.7 MB with its coarser levels) per cell that holds rays;
+// the one of all the rays is their sum, made when the diagrams are.
 #pragma once
 
 #include "converters/farfield_smoothing.h"
@@ -48,7 +48,6 @@ public:
                                              int sectors = 0);
 
 private:
-    DirectionHistogram all_;
     std::vector<std::unique_ptr<DirectionHistogram>> cells_;  // made when the first ray comes
 };
 

@@ -73,9 +73,9 @@ public:
         if (estimate_) return estimate_->diagrams(wanted, options_.diagram_bands, options_.diagram_sectors);
         std::vector<GoniometricDiagram> out;
         for (size_t cell : wanted) {
-            GoniometricDiagram& d = histograms_[cell] ? *histograms_[cell] : out.emplace_back(bands(), sectors());
-            d.finalize();
-            if (histograms_[cell]) out.push_back(std::move(d));
+            if (!histograms_[cell]) histograms_[cell] = std::make_unique<GoniometricDiagram>(bands(), sectors());
+            histograms_[cell]->finalize();
+            out.push_back(std::move(*histograms_[cell]));
         }
         return out;
     }

@@ -48,14 +48,22 @@ vtkSmartPointer<vtkActor> line_actor(vtkPolyData* data, const double colour[3], 
     return actor;
 }
 
+// Cell `c` of `data` alone, over the same points: one plane's curve (a line) or band (a strip).
+vtkSmartPointer<vtkPolyData> one_cell(vtkPolyData* data, vtkIdType c) {
+    auto one = vtkSmartPointer<vtkPolyData>::New();
+    one->SetPoints(data->GetPoints());
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    cells->InsertNextCell(data->GetCell(c));
+    if (data->GetNumberOfStrips() > 0)
+        one->SetStrips(cells);
+    else
+        one->SetLines(cells);
+    return one;
+}
+
 // The band of one plane (cell `c` of polar_bands()), translucent in the plane's colour.
 vtkSmartPointer<vtkActor> band_actor(vtkPolyData* bands, vtkIdType c, const double colour[3]) {
-    auto one = vtkSmartPointer<vtkPolyData>::New();
-    one->SetPoints(bands->GetPoints());
-    auto strips = vtkSmartPointer<vtkCellArray>::New();
-    strips->InsertNextCell(bands->GetCell(c));
-    one->SetStrips(strips);
-    auto actor = line_actor(one, colour, 1);
+    auto actor = line_actor(one_cell(bands, c), colour, 1);
     actor->GetProperty()->SetOpacity(0.25);
     return actor;
 }
@@ -87,11 +95,7 @@ ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const Intens
         for (vtkIdType c = 0; c < curves->GetNumberOfCells(); ++c) {
             if (c < bands->GetNumberOfCells()) renderer->AddActor(band_actor(bands, c, kPlaneColours[colour % 6]));
             // One polyline per plane, drawn in its own colour.
-            auto one = vtkSmartPointer<vtkPolyData>::New();
-            one->SetPoints(curves->GetPoints());
-            auto lines = vtkSmartPointer<vtkCellArray>::New();
-            lines->InsertNextCell(curves->GetCell(c));
-            one->SetLines(lines);
+            auto one = one_cell(curves, c);
             const double* rgb = kPlaneColours[colour % 6];
             renderer->AddActor(line_actor(one, rgb, 2.5));
             std::string name = fmt::format("C{:g}-C{:g}", planes[c], planes[c] + 180);
