@@ -151,12 +151,12 @@ void histogram_values(const FarFieldGrid& grid, const BinnedRays& binned, std::v
 // Kernel estimates at the grid angles (C-major), on all cores; the poles evaluated once.
 void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directions, const FarFieldOptions& options,
                      std::vector<double>& intensity, std::vector<double>& variance, std::vector<double>& sigma,
-                     std::vector<char>& local) {
+                     std::vector<char>& kind) {
     const size_t nc = grid.c_count(), ng = grid.gamma_count();
     intensity.assign(nc * ng, 0);
     variance.assign(nc * ng, 0);
     sigma.assign(nc * ng, 0);
-    local.assign(nc * ng, 0);
+    kind.assign(nc * ng, 0);
     auto at_node = [&](size_t i, size_t j) {
         const double gamma = double(j) * grid.gamma_step_deg() * kRadian, c = double(i) * grid.c_step_deg() * kRadian;
         const double x = std::sin(gamma) * std::cos(c), y = std::sin(gamma) * std::sin(c), polar = std::cos(gamma);
@@ -192,7 +192,7 @@ void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directi
         intensity[at] = std::max(0.0, e.intensity);  // the twiced kernel dips below 0 in the dark
         variance[at] = e.standard_error * e.standard_error;
         sigma[at] = e.sigma_deg;
-        local[at] = e.local;
+        kind[at] = char(e.kind);
     };
     const DirectionHistogram::Estimate north = estimate(0, 0), south = estimate(0, ng - 1);
     for (size_t i = 0; i < nc; ++i) store(i * ng, north), store(i * ng + ng - 1, south);
@@ -214,7 +214,7 @@ void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directi
 }
 
 std::string smoothing_description(const FarFieldOptions& options, const std::vector<double>& sigma,
-                                  const std::vector<char>& local) {
+                                  const std::vector<char>& kind) {
     switch (options.smoothing) {
         case FarFieldSmoothing::none:
             return "none: each cell's flux over its solid angle, the polar caps pooled over C";
@@ -225,13 +225,16 @@ std::string smoothing_description(const FarFieldOptions& options, const std::vec
     }
     std::vector<double> sorted = sigma;
     std::sort(sorted.begin(), sorted.end());
-    const double local_share = double(std::count(local.begin(), local.end(), 1)) / double(local.size());
-    char text[256];
+    auto share = [&](DirectionHistogram::Kind k) {
+        return 100 * double(std::count(kind.begin(), kind.end(), char(k))) / double(kind.size());
+    };
+    char text[320];
     std::snprintf(text, sizeof text,
-                  "kernel density (twiced von Mises-Fisher kernel) or local log-quadratic fit, chosen per "
-                  "direction with sigma by Goldenshluger-Lepski: sigma %.3g to %.3g deg, median %.3g; local "
-                  "fits at %.0f%% of the directions",
-                  sorted.front(), sorted.back(), sorted[sorted.size() / 2], 100 * local_share);
+                  "kernel density (twiced von Mises-Fisher kernel), local log-quadratic fit or edge fit, chosen "
+                  "per direction with sigma by Goldenshluger-Lepski: sigma %.3g to %.3g deg, median %.3g; "
+                  "log-quadratic fits at %.0f%% and edge fits at %.0f%% of the directions",
+                  sorted.front(), sorted.back(), sorted[sorted.size() / 2],
+                  share(DirectionHistogram::Kind::log_quadratic), share(DirectionHistogram::Kind::edge));
     return text;
 }
 
@@ -246,17 +249,17 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
     bin_rays(reader, grid, options, binned);
     const size_t nc = grid.c_count(), ng = grid.gamma_count();
     std::vector<double> intensity, variance, sigma;
-    std::vector<char> local;
+    std::vector<char> kind;
     if (options.smoothing == FarFieldSmoothing::none) {
         histogram_values(grid, binned, intensity, variance);
     } else {
         binned.directions.prepare();
-        smoothed_values(grid, binned.directions, options, intensity, variance, sigma, local);
+        smoothed_values(grid, binned.directions, options, intensity, variance, sigma, kind);
     }
 
     FarField out;
     out.rays = binned.rays;
-    out.method = smoothing_description(options, sigma, local);
+    out.method = smoothing_description(options, sigma, kind);
     double rays_flux = 0, estimate_flux = 0;
     for (size_t i = 0; i < nc; ++i)
         for (size_t j = 0; j < ng; ++j)

@@ -210,7 +210,7 @@ DirectionHistogram::Estimate DirectionHistogram::local_fit(double x, double y, d
                });
     const double mean_flux = rays_ > 0 ? total_flux_ / rays_ : 0;
     const double peak = 2 / (2 * kPi * s2) * mean_flux;
-    Estimate e{0, std::sqrt(square + peak * peak), sigma_deg, true};
+    Estimate e{0, std::sqrt(square + peak * peak), sigma_deg, Kind::log_quadratic};
     if (!(s0 > 0)) return e;
     // The intensity exp(a + g.t - t.H.t / 2) times the weight is a Gaussian of the moments'
     // mean m and covariance V: I(u) = exp(a) = s0 / (2 pi sqrt(det V)) exp(-m.V^-1.m / 2).
@@ -227,39 +227,143 @@ DirectionHistogram::Estimate DirectionHistogram::local_fit(double x, double y, d
     return e;
 }
 
+namespace {
+
+// The edge fit's model along its gradient: (a + b s)_+ under Gaussian weights of width sigma.
+// With z = a / (b sigma), its weighted flux is M0 = b sigma (z Phi(z) + phi(z)) and its first
+// moment M1 = b sigma^2 Phi(z), so that M1 / (sigma M0) = F(z) = Phi / (z Phi + phi) falls from
+// infinity (the edge far on the near side: no intensity here) to 0 (no edge within reach), and
+// the intensity here is a = M0 G(z) with G = z / (z Phi + phi).
+struct EdgeSolution {
+    double z, ratio, slope, gain, gain_slope;  // z, F(z), F'(z), G(z), G'(z)
+    double spread;  // M2 / (sigma^2 M0) = (z Phi + 2 phi) / (z Phi + phi)
+};
+double normal_density(double z) { return std::exp(-z * z / 2) / std::sqrt(2 * kPi); }
+double normal_probability(double z) { return std::erfc(-z / std::sqrt(2.0)) / 2; }
+EdgeSolution edge_at(double z) {
+    const double phi = normal_density(z), cdf = normal_probability(z), d = z * cdf + phi;
+    return {z, cdf / d, (phi * d - cdf * cdf) / (d * d), z / d, phi / (d * d), (d + phi) / d};
+}
+// Beyond these, the edge lies farther than the weights reach (kEdgeFar sigmas on the far side:
+// a linear fit), or the direction lies kEdgeNear sigmas outside it (no intensity).
+constexpr double kEdgeFar = 30, kEdgeNear = -6;
+// How many standard errors the second moments may lie from the edge model's (1: best of 1 and 2
+// on the analytic sources of tests/bench/farfield_accuracy).
+constexpr double kEdgeSpreadTolerance = 1;
+// F(z) = ratio by bisection (F falls monotonically), for F(kEdgeFar) < ratio < F(kEdgeNear).
+EdgeSolution solve_edge(double ratio) {
+    double low = kEdgeNear, high = kEdgeFar;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = (low + high) / 2;
+        (edge_at(mid).ratio > ratio ? low : high) = mid;
+    }
+    return edge_at((low + high) / 2);
+}
+
+}  // namespace
+
+DirectionHistogram::Estimate DirectionHistogram::edge_fit(double x, double y, double polar,
+                                                          double sigma_deg) const {
+    bool edge_like;
+    return edge_fit(x, y, polar, sigma_deg, edge_like);
+}
+
+DirectionHistogram::Estimate DirectionHistogram::edge_fit(double x, double y, double polar,
+                                                          double sigma_deg, bool& edge_like) const {
+    // The intensity of a flat Lambertian emitter is I(v) = max(0, c.v). In the gnomonic
+    // projection about u, p = v / (u.v) - u, it is (u.v) (a + b.p)_+ with a = c.u the intensity
+    // here, and the solid angle is dOmega = (u.v)^3 dp: so the rays weighted by w(p) / (u.v)^4
+    // measure the moments of the plane function (a + b.p)_+ under the Gaussian weight w, exactly.
+    const double sigma = sigma_deg * kRadian, s2 = sigma * sigma;
+    analytic::Vec3 e1, e2;
+    analytic::orthonormal_basis({x, y, polar}, e1, e2);
+    // Weighted flux m0, first and second moments m1, m2 of p; for the noise, the same moments of
+    // the squared fluxes with the squared weights.
+    double m0 = 0, m1[2] = {0, 0}, m2[3] = {0, 0, 0}, q0 = 0, q1[2] = {0, 0}, q2[3] = {0, 0, 0};
+    visit_bins(level_for(sigma_deg), x, y, polar, std::atan(kLocalCutoffSigmas * sigma),
+               [&](const Bin& bin, const std::array<double, 3>& m, double t) {
+                   const analytic::Vec3 mean{m[0], m[1], m[2]};
+                   const double p1 = analytic::dot(mean, e1) / t, p2 = analytic::dot(mean, e2) / t;
+                   const double k = std::exp(-(p1 * p1 + p2 * p2) / (2 * s2)) / (t * t * t * t);
+                   const double f = bin.flux * k, g = bin.square * k * k;
+                   m0 += f, m1[0] += f * p1, m1[1] += f * p2;
+                   m2[0] += f * p1 * p1, m2[1] += f * p1 * p2, m2[2] += f * p2 * p2;
+                   q0 += g, q1[0] += g * p1, q1[1] += g * p2;
+                   q2[0] += g * p1 * p1, q2[1] += g * p1 * p2, q2[2] += g * p2 * p2;
+               });
+    const double norm = 1 / (2 * kPi * s2);
+    const double mean_flux = rays_ > 0 ? total_flux_ / rays_ : 0;
+    Estimate e{0, norm * mean_flux, sigma_deg, Kind::edge};
+    edge_like = false;
+    if (!(m0 > 0)) return e;
+    const double gradient = std::hypot(m1[0], m1[1]), ratio = gradient / (sigma * m0);
+    if (ratio >= edge_at(kEdgeNear).ratio) return e;  // beyond the edge: no intensity
+    const double u1 = gradient > 0 ? m1[0] / gradient : 1, u2 = gradient > 0 ? m1[1] / gradient : 0;
+    // a = M0 G(z); each ray of weight k at p adds flux k (A + B s) to it, s = p along the
+    // gradient: the fit's equivalent kernel, which carries the rays' noise.
+    double a = m0, A = 1, B = 0, spread = 1;
+    if (ratio > edge_at(kEdgeFar).ratio) {
+        const EdgeSolution edge = solve_edge(ratio);
+        a = m0 * edge.gain;
+        A = edge.gain - edge.gain_slope * edge.ratio / edge.slope;
+        B = edge.gain_slope / (sigma * edge.slope);
+        spread = edge.spread;
+    }
+    // The model holds where the rays spread along the gradient as an edge does and across it
+    // as a flat intensity does, within the noise of second moments (relative sqrt(2 / n) for
+    // n effective rays): elsewhere (a curved lobe) the fit is biased as a Gaussian kernel is.
+    const double along = (m2[0] * u1 * u1 + 2 * m2[1] * u1 * u2 + m2[2] * u2 * u2) / (m0 * s2);
+    const double across = (m2[0] + m2[2]) / (m0 * s2) - along;
+    const double tolerance = kEdgeSpreadTolerance * std::sqrt(2 * q0 / (m0 * m0));
+    edge_like = std::abs(along - spread) <= tolerance * along && std::abs(across - 1) <= tolerance;
+    const double q1u = q1[0] * u1 + q1[1] * u2;
+    const double q2u = q2[0] * u1 * u1 + 2 * q2[1] * u1 * u2 + q2[2] * u2 * u2;
+    const double variance = A * A * (q0 + mean_flux * mean_flux) + 2 * A * B * q1u + B * B * q2u;
+    e.intensity = norm * std::max(0.0, a);
+    e.standard_error = norm * std::sqrt(std::max(0.0, variance));
+    return e;
+}
+
 DirectionHistogram::Estimate DirectionHistogram::at_kernel_of(double x, double y, double polar,
                                                               const Estimate& chosen) const {
-    return chosen.local ? local_fit(x, y, polar, chosen.sigma_deg)
-                        : at(x, y, polar, chosen.sigma_deg);
+    switch (chosen.kind) {
+        case Kind::log_quadratic: return local_fit(x, y, polar, chosen.sigma_deg);
+        case Kind::edge: return edge_fit(x, y, polar, chosen.sigma_deg);
+        case Kind::kernel: break;
+    }
+    return at(x, y, polar, chosen.sigma_deg);
 }
 
 namespace {
 
-// The overlap integral of two twiced kernels of bandwidths a and b, in the plane (locally, the
-// sphere): with I(a, b) = 1 / (2 pi (a^2 + b^2)) for two Gaussians, K = 2 G(s) - G(sqrt2 s).
-double twiced_overlap(double a, double b) {
-    auto gauss = [](double u, double v) { return 1 / (2 * kPi * (u * u + v * v)); };
-    const double r = std::sqrt(2.0);
-    return 4 * gauss(a, b) - 2 * gauss(a, r * b) - 2 * gauss(r * a, b) + gauss(r * a, r * b);
+// The overlaps of the estimates' equivalent kernels, in the plane (locally, the sphere), as sums
+// of Gaussians G_s and local-fit kernels L_s = G_s - (s / 2) dG_s / ds: the twiced kernel is
+// 2 G_s - G_(sqrt2 s), the log-quadratic fit L_s, the edge fit away from its edge G_s.
+struct KernelPart {
+    double weight, sigma;
+    bool local;
+};
+double part_overlap(const KernelPart& p, const KernelPart& q) {
+    const double a = p.sigma, b = q.sigma, s = a * a + b * b;
+    if (!p.local && !q.local) return 1 / (2 * kPi * s);
+    if (p.local && q.local) return (2 / s + 2 * a * a * b * b / (s * s * s)) / (2 * kPi);
+    const double l = p.local ? a : b;  // the local-fit kernel's width against the Gaussian
+    return (1 / s + l * l / (s * s)) / (2 * kPi);
 }
-
-// The local fit's equivalent kernel L_a = G_a - (a / 2) dG_a / da against a Gaussian G_b, and
-// against another L_b.
-double local_gauss_overlap(double a, double b) {
-    const double s = a * a + b * b;
-    return (1 / s + a * a / (s * s)) / (2 * kPi);
+std::vector<KernelPart> kernel_parts(const DirectionHistogram::Estimate& e) {
+    using Kind = DirectionHistogram::Kind;
+    switch (e.kind) {
+        case Kind::log_quadratic: return {{1, e.sigma_deg, true}};
+        case Kind::edge: return {{1, e.sigma_deg, false}};
+        case Kind::kernel: break;
+    }
+    return {{2, e.sigma_deg, false}, {-1, std::sqrt(2.0) * e.sigma_deg, false}};
 }
-double local_overlap(double a, double b) {
-    const double s = a * a + b * b;
-    return (2 / s + 2 * a * a * b * b / (s * s * s)) / (2 * kPi);
-}
-
 double overlap(const DirectionHistogram::Estimate& s, const DirectionHistogram::Estimate& r) {
-    const double a = s.sigma_deg, b = r.sigma_deg, root2 = std::sqrt(2.0);
-    if (s.local && r.local) return local_overlap(a, b);
-    if (s.local) return 2 * local_gauss_overlap(a, b) - local_gauss_overlap(a, root2 * b);
-    if (r.local) return 2 * local_gauss_overlap(b, a) - local_gauss_overlap(b, root2 * a);
-    return twiced_overlap(a, b);
+    double sum = 0;
+    for (const KernelPart& p : kernel_parts(s))
+        for (const KernelPart& q : kernel_parts(r)) sum += p.weight * q.weight * part_overlap(p, q);
+    return sum;
 }
 
 // The standard error of the difference of two estimates made from the same rays, whose
@@ -279,7 +383,12 @@ DirectionHistogram::Estimate DirectionHistogram::adaptive(double x, double y, do
     for (double sigma = resolution_.min_sigma_deg; sigma <= resolution_.max_sigma_deg * 1.0001;
          sigma *= std::sqrt(2.0)) {
         ladder.push_back(at(x, y, polar, sigma));
-        if (resolution_.local_fits) ladder.push_back(local_fit(x, y, polar, sigma));
+        if (resolution_.local_fits) {
+            ladder.push_back(local_fit(x, y, polar, sigma));
+            bool edge_like;
+            const Estimate edge = edge_fit(x, y, polar, sigma, edge_like);
+            if (edge_like) ladder.push_back(edge);
+        }
     }
     // The bias of an estimate bounded by how far it lies from those of the same or smaller
     // bandwidths beyond the noise of their difference; the estimate with the least bound plus

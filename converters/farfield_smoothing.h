@@ -19,9 +19,19 @@
 // Gaussian lobes exactly and a flat intensity as the Gaussian kernel does; its noise is that of
 // the equivalent kernel G (2 - r^2 / (2 sigma^2)), 1.36 times the twiced kernel's variance.
 //
-// Choice: sigma = 1/sqrt(kappa) and the kind of estimate are chosen per direction among both
-// kinds on a ladder of bandwidths growing by sqrt(2) from DirectionResolution::min_sigma_deg to
-// max_sigma_deg by Goldenshluger and Lepski's rule (Ann. Statist. 39, 2011): the bias of an
+// Edge fits: at the horizon of a flat emitter the intensity falls linearly to zero and stays
+// there, a kink that biases every kernel and every smooth fit reaching across it, so that the
+// flanks of a flat LED were estimated with narrow kernels and much noise. A flat Lambertian
+// emitter's intensity is max(0, c.v), linear in the direction v and cut at zero; in the gnomonic
+// projection about u (p = v / (u.v) - u) the rays weighted by a Gaussian w(p) / (u.v)^4 see the
+// plane function (a + b.p)_+ exactly, whose weighted flux and first moment give a = I(u) in
+// closed form up to one monotone equation in the edge's distance (solved by bisection). It is
+// offered only where the rays' second moments are those of such an edge (within their noise):
+// elsewhere it is a Gaussian kernel, biased by curvature.
+//
+// Choice: sigma = 1/sqrt(kappa) and the kind of estimate are chosen per direction among the
+// three kinds on a ladder of bandwidths growing by sqrt(2) from DirectionResolution::min_sigma_deg
+// to max_sigma_deg by Goldenshluger and Lepski's rule (Ann. Statist. 39, 2011): the bias of an
 // estimate is bounded by how far it lies from those of the same or smaller bandwidths beyond the
 // noise of their difference (estimates from the same rays are correlated, as their kernels
 // overlap: the noise of a difference is far below either's), and the estimate with the least
@@ -81,16 +91,25 @@ public:
     double total_square() const { return total_square_; }
     double ray_count() const { return rays_; }
 
+    enum class Kind {
+        kernel,         // at(): the twiced kernel
+        log_quadratic,  // local_fit()
+        edge,           // edge_fit()
+    };
     struct Estimate {
         double intensity = 0;       // flux per steradian
         double standard_error = 0;  // of the intensity
         double sigma_deg = 0;       // the bandwidth it was made with
-        bool local = false;         // made by local_fit, not by the twiced kernel
+        Kind kind = Kind::kernel;
+        bool local() const { return kind != Kind::kernel; }
     };
     // Kernel estimate toward the unit direction (x, y, polar) with bandwidth sigma_deg.
     Estimate at(double x, double y, double polar, double sigma_deg) const;
     // Local log-quadratic fit toward (x, y, polar) with Gaussian weights of bandwidth sigma_deg.
     Estimate local_fit(double x, double y, double polar, double sigma_deg) const;
+    // Local fit of max(0, c.v), a linear function of the direction v cut at zero, toward
+    // (x, y, polar) with Gaussian weights of bandwidth sigma_deg in the gnomonic projection.
+    Estimate edge_fit(double x, double y, double polar, double sigma_deg) const;
     // The estimate of the kind (kernel or local fit) and bandwidth of `chosen` at (x, y, polar).
     Estimate at_kernel_of(double x, double y, double polar, const Estimate& chosen) const;
     // The same with the bandwidth chosen from the rays (see the top of this file).
@@ -109,6 +128,8 @@ private:
         std::vector<std::array<double, 3>> mean;
     };
     const Level& level_for(double sigma_deg) const;
+    // edge_fit(), and whether the rays' spread along the gradient is that of an edge.
+    Estimate edge_fit(double x, double y, double polar, double sigma_deg, bool& edge_like) const;
     // Calls visit(bin, mean direction, cosine to u) for each bin with flux within `radius` of u.
     template <class Visit>
     void visit_bins(const Level& level, double x, double y, double polar, double radius,

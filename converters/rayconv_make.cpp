@@ -106,9 +106,9 @@ void register_farfield(CLI::App& app) {
         "farfield",
         "Far-field intensity of a ray file as an IES or LDT file (type C, no symmetry assumed). Each value is "
         "the mean intensity over the cell around its grid angles; the polar caps (gamma 0 and 180) are one "
-        "cell each, one value in every C plane. By default the intensity is a kernel density estimate or a "
-        "local log-quadratic fit, the kind and the bandwidth chosen per direction from the rays (--smoothing "
-        "auto), far less noisy than binning at 10^4-10^7 rays; --smoothing none bins the rays (each cell's flux "
+        "cell each, one value in every C plane. By default the intensity is a kernel density estimate, a local "
+        "log-quadratic fit (lobes) or an edge fit (the horizon of a flat emitter), the kind and the bandwidth "
+        "chosen per direction from the rays (--smoothing auto), far less noisy than binning at 10^4-10^7 rays; --smoothing none bins the rays (each cell's flux "
         "over its exact solid angle), --smoothing DEG uses one kernel bandwidth. The values' total flux equals "
         "the rays'; they are written with the "
         "digits their standard errors support (to the error's second significant digit), and the keyword "

@@ -66,7 +66,7 @@ std::vector<GoniometricDiagram> DiagramEstimate::diagrams(const std::vector<size
         const Vec3 w = centre[c] = grid.cell_centre(int(c));
         const DirectionHistogram::Estimate chosen = all.adaptive(w.x, w.y, w.z);
         sigma[c] = chosen.sigma_deg;
-        if (chosen.local) {
+        if (chosen.local()) {
             const double kernel = all.at(w.x, w.y, w.z, chosen.sigma_deg).intensity;
             if (kernel > 0)
                 correction[c] = std::clamp(chosen.intensity / kernel, 0.0, kMaxCorrection);

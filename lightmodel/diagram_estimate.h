@@ -9,8 +9,9 @@
 // biases add up across cells while their noise does not: the rule is applied where the two
 // meet, in the sum, which is the model's far field. With one bandwidth per direction that sum
 // is exactly the kernel estimate of all the rays. Where the rule prefers a local fit for all the
-// rays (the flanks of a narrow lobe), every cell's kernel estimate is multiplied by the fit's
-// ratio to the kernel estimate of all the rays there, so that the sum is that fit.
+// rays (a log-quadratic fit on the flanks of a narrow lobe, an edge fit toward the horizon of a
+// flat emitter), every cell's kernel estimate is multiplied by the fit's ratio to the kernel
+// estimate of all the rays there, so that the sum is that fit.
 //
 // Grid: the diagrams' resolution follows the bandwidths: the step at the horizon is a third of
 // the flux-weighted lower quartile of the bandwidths chosen at probe directions (a 20 x 24

@@ -212,6 +212,70 @@ TEST(FarFieldSmoothing, HistogramLevelsMustDivideTheSphere) {
     EXPECT_THROW(DirectionHistogram(DirectionResolution{7, 1, 14, 28, 4}), std::invalid_argument);
 }
 
+// The rays a source emits on average: each 0.25 degree bin of the histogram gets its expected
+// flux (the closed form integrated on 3 x 3 points) as rays of total / n each, at its centre.
+DirectionHistogram expected_rays(const analytic::Source& source, double n) {
+    DirectionHistogram h;
+    const double step = 0.25 * kDeg, ray = source.total_flux() / n;
+    for (int row = 0; row < 720; ++row)
+        for (int column = 0; column < 1440; ++column) {
+            double flux = 0;
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b) {
+                    const double g = (row + (a + 0.5) / 3) * step, c = (column + (b + 0.5) / 3) * step;
+                    const analytic::Vec3 v{std::sin(g) * std::cos(c), std::sin(g) * std::sin(c), std::cos(g)};
+                    flux += source.intensity(v) * std::sin(g) * step * step / 9;
+                }
+            const double g = (row + 0.5) * step, c = (column + 0.5) * step;
+            const double x = std::sin(g) * std::cos(c), y = std::sin(g) * std::sin(c), z = std::cos(g);
+            for (; flux >= ray; flux -= ray) h.add(x, y, z, ray);
+            if (flux > 0) h.add(x, y, z, flux);
+        }
+    h.prepare();
+    return h;
+}
+
+analytic::Vec3 direction_deg(double gamma, double c) {
+    const double g = gamma * kDeg, a = c * kDeg;
+    return {std::sin(g) * std::cos(a), std::sin(g) * std::sin(a), std::cos(g)};
+}
+
+// A flat Lambertian emitter's intensity falls linearly to zero at its horizon: every kernel
+// reaching across is biased there, the edge fit is exact (to the binning, 0.25 degrees).
+TEST(FarFieldSmoothing, EdgeFitIsExactAtTheHorizonOfAFlatEmitter) {
+    const auto disk = make_source("disk", {});
+    const DirectionHistogram h = expected_rays(*disk, 1e7);
+    for (double gamma : {30.0, 75.0, 80.0, 85.0})
+        for (double sigma : {4.0, 8.0}) {
+            const analytic::Vec3 u = direction_deg(gamma, 7);
+            const double truth = disk->intensity(u);
+            const double edge = h.edge_fit(u.x, u.y, u.z, sigma).intensity / truth - 1;
+            EXPECT_NEAR(edge, 0, 1e-3) << gamma << " deg, sigma " << sigma;
+            if (gamma == 80 && sigma == 8) {
+                std::printf("[ figures  ] disk at 80 deg, sigma 8 deg: edge fit %+.4f%%, kernel %+.2f%%\n",
+                            100 * edge, 100 * (h.at(u.x, u.y, u.z, sigma).intensity / truth - 1));
+                EXPECT_GT(std::abs(h.at(u.x, u.y, u.z, sigma).intensity / truth - 1), 0.01);
+                EXPECT_GT(std::abs(h.local_fit(u.x, u.y, u.z, sigma).intensity / truth - 1), 0.01);
+            }
+        }
+}
+
+// The rule offers edge fits only where the rays spread as at an edge: on a disk's flanks they are
+// chosen, on a cos^20 lobe (which a Gaussian-weighted fit flattens) never.
+TEST(FarFieldSmoothing, EdgeFitsAreChosenAtEdgesNotOnLobes) {
+    const auto disk = make_source("disk", {});
+    const auto lobe = make_source("lobe", {{"n", "20"}});
+    const DirectionHistogram flat = expected_rays(*disk, 1e6), peaked = expected_rays(*lobe, 1e6);
+    for (double gamma = 60; gamma <= 85; gamma += 5) {
+        const analytic::Vec3 u = direction_deg(gamma, 7);
+        EXPECT_EQ(flat.adaptive(u.x, u.y, u.z).kind, DirectionHistogram::Kind::edge) << gamma;
+    }
+    for (double gamma = 0; gamma <= 40; gamma += 2.5) {
+        const analytic::Vec3 u = direction_deg(gamma, 7);
+        EXPECT_NE(peaked.adaptive(u.x, u.y, u.z).kind, DirectionHistogram::Kind::edge) << gamma;
+    }
+}
+
 TEST(FarFieldSmoothing, TheOptionIsAutoNoneOrABandwidth) {
     FarFieldOptions o;
     parse_smoothing("3.5", o);
