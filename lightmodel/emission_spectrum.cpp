@@ -21,14 +21,6 @@ double bin_start(int k) { return kSpectrumFirstNm + k * kSpectrumBinNm; }
 
 }  // namespace
 
-double photopic(double nm) {
-    if (!(nm >= kCiePhotopicFirst && nm <= kCiePhotopicLast)) return 0;
-    const double x = nm - kCiePhotopicFirst;
-    const int i = std::min(int(x), kCiePhotopicCount - 2);
-    const double t = x - i;
-    return (1 - t) * kCiePhotopic[i] + t * kCiePhotopic[i + 1];
-}
-
 double photopic_bin_mean(int bin) {
     // Trapezoids over the 1 nm entries: the mean of the linear interpolation.
     const int first = int(bin_start(bin)) - kCiePhotopicFirst, steps = int(kSpectrumBinNm);

@@ -18,10 +18,8 @@ inline constexpr double kSpectrumFirstNm = 360, kSpectrumLastNm = 830;
 inline constexpr double kSpectrumBinNm = 10;
 inline constexpr int kSpectrumBins = 47;
 
-// CIE 1924 photopic V(lambda) from the 1 nm table (converters/cie_tables.h), linear between
-// entries, 0 outside 360-830 nm.
-double photopic(double wavelength_nm);
-// Mean of photopic() over spectrum bin k (exact for the linear interpolation).
+// Mean of V(lambda) (photopic_efficiency, converters/spectrum.h) over spectrum bin k (exact for
+// its linear interpolation).
 double photopic_bin_mean(int bin);
 // CIE illuminant D65 (CIE 15, 10 nm table), relative, 100 at 560 nm; linear between entries.
 double illuminant_d65(double wavelength_nm);

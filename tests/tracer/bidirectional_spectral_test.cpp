@@ -14,6 +14,7 @@
 
 #include "converters/analytic_sources.h"
 #include "converters/ray_stream.h"
+#include "converters/spectrum.h"
 #include "converters/synth.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/emission_spectrum.h"
@@ -138,7 +139,7 @@ BoxResult render_box(const test::ScratchDir& scratch, const std::string& text, b
 double series_over_bin(const ReflectanceSpectrum& a, double first) {
     double num = 0, den = 0;
     for (int i = 0; i < 1000; ++i) {
-        const double nm = first + (i + 0.5) * 0.01, v = lightmodel::photopic(nm);
+        const double nm = first + (i + 0.5) * 0.01, v = photopic_efficiency(nm);
         num += v * a(nm) / (1 - a(nm)), den += v;
     }
     return num / den;
@@ -168,7 +169,7 @@ TEST(SpectralSource, RadianceSpectrumHasTheLuminanceOfTheColour) {
                 for (int i = 0; i < 4; ++i) q.nm[i] = first + i + 0.5;
                 source.L_spectral(origin, dir, {}, q);
                 for (int i = 0; i < 4; ++i)
-                    if (q.nm[i] < kLambdaMax) spectral_luminance += lightmodel::photopic(q.nm[i]) * q.value[i];
+                    if (q.nm[i] < kLambdaMax) spectral_luminance += photopic_efficiency(q.nm[i]) * q.value[i];
             }
             ASSERT_GT(rgb_luminance, 0);
             EXPECT_NEAR(spectral_luminance, rgb_luminance, 1e-6 * rgb_luminance);

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "converters/analytic_geometry.h"
+#include "converters/spectrum.h"
 #include "lightmodel/emission_spectrum.h"
 #include "tracer/render/renderer.h"
 #include "tracer/render/rgb_upsampling.h"
@@ -37,7 +38,7 @@ std::string with_mode(const std::string& scene, bool spectral) {
 template <class F>
 double luminance_integral(F f) {
     double sum = 0;
-    for (double nm = kLambdaMin + 0.005; nm < kLambdaMax; nm += 0.01) sum += lightmodel::photopic(nm) * f(nm) * 0.01;
+    for (double nm = kLambdaMin + 0.005; nm < kLambdaMax; nm += 0.01) sum += photopic_efficiency(nm) * f(nm) * 0.01;
     return sum;
 }
 

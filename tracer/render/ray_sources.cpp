@@ -9,6 +9,7 @@
 
 #include "converters/error.h"
 #include "converters/ray_stream.h"
+#include "converters/spectrum.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
@@ -134,7 +135,7 @@ SourcePhotonOf<SampledSpectrum> PlacedRaySource::sample_Le(const double u[7], do
     } else if (!s.spectrum) {
         // One wavelength: its flux is what makes the photon's luminance (zero where V is).
         out.wavelengths = SampledWavelengths::single(s.wavelength_nm);
-        const double v = lightmodel::photopic(s.wavelength_nm);
+        const double v = photopic_efficiency(s.wavelength_nm);
         out.flux.v[0] = v > 0 ? luminance / v : 0;
     }
     return out;

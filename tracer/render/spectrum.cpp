@@ -1,6 +1,7 @@
 // Sampled wavelengths and the film's spectral -> RGB conversion (see spectrum.h).
 #include "tracer/render/spectrum.h"
 
+#include "converters/spectrum.h"
 #include "lightmodel/colour.h"
 
 namespace rayset::tracer {
@@ -49,7 +50,7 @@ lightmodel::BinnedSpectrum film_wavelength_density(const std::array<double, ligh
 CieXyz cie_xyz(double nm) {
     const lightmodel::Xyz c = lightmodel::colour_matching(nm);
     const bool inside = nm >= kLambdaMin && nm <= kLambdaMax;
-    return {inside ? std::max(0.0, c.x) : 0, lightmodel::photopic(nm), inside ? std::max(0.0, c.z) : 0};
+    return {inside ? std::max(0.0, c.x) : 0, photopic_efficiency(nm), inside ? std::max(0.0, c.z) : 0};
 }
 
 Rgb xyz_to_rgb(const CieXyz& c) {
