@@ -237,12 +237,19 @@ void RayReader::finish() {
 
 namespace {
 
-// One comparison chain per value: false for NaN and infinities as well as out-of-range values.
+// The validity rule, one predicate per value, each one comparison chain (false for NaN and
+// infinities as well as out-of-range values); the fast test below and check_ray(), which says
+// what is wrong, both use them. Bitwise & and | rather than && and ||: no branch per value.
 inline bool finite_float(float v) { return std::abs(v) <= std::numeric_limits<float>::max(); }
 inline bool flux_ok(float v) { return (v >= 0) & (v <= std::numeric_limits<float>::max()); }
+// NaN means "unknown wavelength" in real files; anything else must be a positive wavelength.
+inline bool wavelength_ok(float v) {
+    return std::isnan(v) | ((v > 0) & (v <= std::numeric_limits<float>::max()));
+}
+inline bool spectrum_ok(int32_t index, int32_t tables) { return (index >= 0) & (index < tables); }
 
 // The fast test every ray must pass; check_ray() says what is wrong with one that does not.
-// Bitwise & rather than &&: no branch per value, and every ray of a valid file evaluates all.
+// Every ray of a valid file evaluates all of it.
 struct RayTest {
     float min_length2, max_length2;  // |d| within [1 - tol, 1 + tol] as a test on |d|^2: no root
     // Which columns hold the file's values: a decoder fills the others with the unknown value
@@ -250,12 +257,16 @@ struct RayTest {
     bool radiant, luminous, wavelength, per_ray_table;
     int32_t tables;
 
-    bool passes(float ox, float oy, float oz, float dx, float dy, float dz, float radiant_flux, float luminous_flux,
-                float wavelength, int32_t spectrum) const {
+    bool direction_ok(float dx, float dy, float dz) const {
         const float length2 = dx * dx + dy * dy + dz * dz;
-        return finite_float(ox) & finite_float(oy) & finite_float(oz) & (length2 >= min_length2) &
-               (length2 <= max_length2) & ((!radiant) | flux_ok(radiant_flux)) & ((!luminous) | flux_ok(luminous_flux)) &
-               ((!this->wavelength) | std::isnan(wavelength) | flux_ok(wavelength)) & ((!per_ray_table) | ((spectrum >= 0) & (spectrum < tables)));
+        return (length2 >= min_length2) & (length2 <= max_length2);
+    }
+    bool passes(const Ray& r) const {
+        return finite_float(r.origin.x) & finite_float(r.origin.y) & finite_float(r.origin.z) &
+               direction_ok(r.direction.x, r.direction.y, r.direction.z) &
+               ((!radiant) | flux_ok(r.radiant)) & ((!luminous) | flux_ok(r.luminous)) &
+               ((!wavelength) | wavelength_ok(r.wavelength)) &
+               ((!per_ray_table) | spectrum_ok(r.spectrum, tables));
     }
 };
 
@@ -266,11 +277,8 @@ RAYSET_ALWAYS_INLINE bool all_pass_loops(const RayColumns& c, const RayTest& tes
     const float *ox = c.ox.data(), *oy = c.oy.data(), *oz = c.oz.data();
     const float *dx = c.dx.data(), *dy = c.dy.data(), *dz = c.dz.data();
     int pass = 1;
-    for (size_t i = 0; i < n; ++i) {
-        const float length2 = dx[i] * dx[i] + dy[i] * dy[i] + dz[i] * dz[i];
-        pass &= finite_float(ox[i]) & finite_float(oy[i]) & finite_float(oz[i]) & (length2 >= test.min_length2) &
-                (length2 <= test.max_length2);
-    }
+    for (size_t i = 0; i < n; ++i)
+        pass &= finite_float(ox[i]) & finite_float(oy[i]) & finite_float(oz[i]) & test.direction_ok(dx[i], dy[i], dz[i]);
     auto all_flux_ok = [n, &pass](const float* flux) {
         for (size_t i = 0; i < n; ++i) pass &= flux_ok(flux[i]);
     };
@@ -278,11 +286,11 @@ RAYSET_ALWAYS_INLINE bool all_pass_loops(const RayColumns& c, const RayTest& tes
     if (test.luminous) all_flux_ok(c.luminous.data());
     if (test.wavelength) {
         const float* wavelength = c.wavelength.data();
-        for (size_t i = 0; i < n; ++i) pass &= std::isnan(wavelength[i]) | flux_ok(wavelength[i]);
+        for (size_t i = 0; i < n; ++i) pass &= wavelength_ok(wavelength[i]);
     }
     if (test.per_ray_table) {
         const int32_t* spectrum = c.spectrum.data();
-        for (size_t i = 0; i < n; ++i) pass &= (spectrum[i] >= 0) & (spectrum[i] < test.tables);
+        for (size_t i = 0; i < n; ++i) pass &= spectrum_ok(spectrum[i], test.tables);
     }
     return pass;
 }
@@ -358,12 +366,8 @@ RayTotals RayReader::validate(RayColumns& chunk) const {
     // Nearly every chunk is valid: one pass finds out, without stopping at the first bad ray;
     // only a chunk that fails is walked again to report (or, if allowed, fix) its first bad ray.
     if (!all_pass(chunk, test))
-        for (size_t i = 0; i < n; ++i) {
-            const Ray r = chunk.ray(i);
-            if (!test.passes(r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z, r.radiant,
-                             r.luminous, r.wavelength, r.spectrum))
-                check_ray(chunk, i);  // throws, or normalises an accepted direction
-        }
+        for (size_t i = 0; i < n; ++i)
+            if (!test.passes(chunk.ray(i))) check_ray(chunk, i);  // throws, or normalises an accepted direction
 
     const FluxColumns flux{{chunk.radiant.data(), chunk.luminous.data()},
                            {header_.has_radiant, header_.has_luminous},
@@ -386,12 +390,10 @@ void RayReader::check_ray(RayColumns& chunk, size_t i) const {
         bad(fmt::format("direction ({}, {}, {}) is not a finite number", d.x, d.y, d.z));
     if (header_.has_radiant && !flux_ok(r.radiant)) bad(fmt::format("radiant flux {} is not a non-negative number", r.radiant));
     if (header_.has_luminous && !flux_ok(r.luminous)) bad(fmt::format("luminous flux {} is not a non-negative number", r.luminous));
-    // NaN means "unknown wavelength" in real files; anything else must be a wavelength.
-    if (header_.spectral == SpectralKind::per_ray_wavelength && !std::isnan(r.wavelength) &&
-        !(r.wavelength > 0 && finite_float(r.wavelength)))
+    if (header_.spectral == SpectralKind::per_ray_wavelength && !wavelength_ok(r.wavelength))
         bad(fmt::format("wavelength {} nm is not a positive number (NaN would mean unknown)", r.wavelength));
     const size_t tables = header_.spectral_tables.size();
-    if (header_.spectral == SpectralKind::per_ray_table && (r.spectrum < 0 || size_t(r.spectrum) >= tables))
+    if (header_.spectral == SpectralKind::per_ray_table && !spectrum_ok(r.spectrum, int32_t(tables)))
         bad(fmt::format("spectrum index {} is outside the file's {} spectral tables", r.spectrum + 1, tables));
     const double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
     if (std::abs(length - 1) > options_.direction_tolerance) {

@@ -114,6 +114,33 @@ TEST(RayReader, AnErrorComesAfterTheRaysBeforeIt) {
     EXPECT_THROW(reader->read(chunk), Error);
 }
 
+// The validity rule is one for the whole-chunk test and the ray-by-ray report: a wavelength of
+// 0 is refused (NaN means unknown), also inside a chunk whose other rays are all valid.
+TEST(RayReader, AWavelengthOfZeroIsRefused) {
+    test::ScratchDir dir;
+    RayHeader h;
+    h.has_radiant = true;
+    h.spectral = SpectralKind::per_ray_wavelength;
+    const std::string path = dir.file("zero.tm25ray");
+    auto encoder = create_tm25(path, h);
+    RayChunk chunk;
+    for (size_t i = 0; i < 3000; ++i) {
+        Ray r;
+        r.origin = {float(i), 0, 0};
+        r.direction = {0, 0, 1};
+        r.radiant = flux_of(i);
+        r.wavelength = i == 1500 ? 0.0f : i == 10 ? std::nanf("") : 450.0f;
+        chunk.rays.push_back(r);
+    }
+    encoder->write(chunk);
+    encoder->finish();
+    auto reader = open_rays(path, chunks_of(1000));
+    const ReadToError read = read_to_error(*reader);
+    EXPECT_EQ(read.handed_out, 1000u);
+    EXPECT_NE(read.message.find(": ray 1501: wavelength 0 nm is not a positive number"), std::string::npos)
+        << read.message;
+}
+
 // Files of fixed-size records that span enough chunks are decoded ahead on several threads
 // (as many as parts(), up to the cores), each taking every T-th chunk: what read() hands out
 // must still be every ray once, in file order, with the same totals. (With one core there is
