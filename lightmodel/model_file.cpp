@@ -19,6 +19,15 @@ namespace rayset::lightmodel {
 
 namespace {
 
+// The grids' names.
+namespace grid {
+constexpr char density[] = "density", boundary[] = "boundary", flux[] = "flux",
+               luminous[] = "luminous", visible_fraction[] = "visible_fraction",
+               spectra[] = "spectra", intensity_cell[] = "intensity_cell", diagrams[] = "diagrams",
+               spheres[] = "spheres";
+constexpr char sphere_radius[] = "radius";  // the spheres' attribute
+}  // namespace grid
+
 void initialise_openvdb() {
     static std::once_flag once;
     std::call_once(once, [] { openvdb::initialize(); });
@@ -35,19 +44,22 @@ openvdb::math::Transform::Ptr frame_transform(const LatticeFrame& frame) {
 
 std::string frame_text(const LatticeFrame& f) {
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %d %d %d", f.resolution(), f.origin().x, f.origin().y,
-                  f.origin().z, f.cell_size(), f.dims()[0], f.dims()[1], f.dims()[2]);
+    std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %d %d %d", f.resolution(),
+                  f.origin().x, f.origin().y, f.origin().z, f.cell_size(), f.dims()[0], f.dims()[1],
+                  f.dims()[2]);
     return buf;
 }
 
-LatticeFrame parse_frame(const std::string& text, const std::string& path, const std::string& name) {
+LatticeFrame parse_frame(const std::string& text, const std::string& path,
+                         const std::string& name) {
     std::istringstream in(text);
     int resolution = 0;
     Vec3 origin;
     double cell = 0;
     std::array<int32_t, 3> dims{};
-    if (!(in >> resolution >> origin.x >> origin.y >> origin.z >> cell >> dims[0] >> dims[1] >> dims[2]) || cell <= 0 ||
-        dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0)
+    if (!(in >> resolution >> origin.x >> origin.y >> origin.z >> cell >> dims[0] >> dims[1] >>
+          dims[2]) ||
+        cell <= 0 || dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0)
         throw Error(path + ": metadata '" + name + "' is not a lattice frame: '" + text + "'");
     return LatticeFrame::from_parts(resolution, origin, cell, dims);
 }
@@ -55,14 +67,17 @@ LatticeFrame parse_frame(const std::string& text, const std::string& path, const
 openvdb::Coord vdb(const Coord& c) { return openvdb::Coord(c[0], c[1], c[2]); }
 
 template <class GridT>
-typename GridT::Ptr find_grid(const openvdb::GridPtrVecPtr& grids, const std::string& name, const std::string& path) {
+typename GridT::Ptr find_grid(const openvdb::GridPtrVecPtr& grids, const std::string& name,
+                              const std::string& path) {
     for (const auto& g : *grids)
         if (g->getName() == name)
             if (auto typed = openvdb::gridPtrCast<GridT>(g)) return typed;
-    throw Error(path + ": not a rayset model: grid '" + name + "' is missing (is this a model written by raymodel?)");
+    throw Error(path + ": not a rayset model: grid '" + name +
+                "' is missing (is this a model written by raymodel?)");
 }
 
-openvdb::points::PointDataGrid::Ptr sphere_grid(const std::vector<Sphere>& spheres, double voxel_size) {
+openvdb::points::PointDataGrid::Ptr sphere_grid(const std::vector<Sphere>& spheres,
+                                                double voxel_size) {
     using namespace openvdb::points;
     std::vector<openvdb::Vec3R> positions;
     std::vector<float> radii;
@@ -73,29 +88,151 @@ openvdb::points::PointDataGrid::Ptr sphere_grid(const std::vector<Sphere>& spher
     }
     const PointAttributeVector<openvdb::Vec3R> position_wrapper(positions);
     auto transform = openvdb::math::Transform::createLinearTransform(voxel_size);
-    auto index = openvdb::tools::createPointIndexGrid<openvdb::tools::PointIndexGrid>(position_wrapper, *transform);
-    auto grid = createPointDataGrid<NullCodec, PointDataGrid>(*index, position_wrapper, *transform);
-    appendAttribute<float>(grid->tree(), "radius");
+    auto index = openvdb::tools::createPointIndexGrid<openvdb::tools::PointIndexGrid>(
+        position_wrapper, *transform);
+    auto points =
+        createPointDataGrid<NullCodec, PointDataGrid>(*index, position_wrapper, *transform);
+    appendAttribute<float>(points->tree(), grid::sphere_radius);
     const PointAttributeVector<float> radius_wrapper(radii);
     populateAttribute<PointDataTree, openvdb::tools::PointIndexTree, PointAttributeVector<float>>(
-        grid->tree(), index->tree(), "radius", radius_wrapper);
-    grid->setName("spheres");
-    return grid;
+        points->tree(), index->tree(), grid::sphere_radius, radius_wrapper);
+    points->setName(grid::spheres);
+    return points;
 }
 
-std::vector<Sphere> read_spheres(const openvdb::points::PointDataGrid& grid) {
+std::vector<Sphere> read_spheres(const openvdb::points::PointDataGrid& points) {
     using namespace openvdb::points;
     std::vector<Sphere> spheres;
-    for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) {
+    for (auto leaf = points.tree().cbeginLeaf(); leaf; ++leaf) {
         const AttributeHandle<openvdb::Vec3f> position(leaf->constAttributeArray("P"));
-        const AttributeHandle<float> radius(leaf->constAttributeArray("radius"));
+        const AttributeHandle<float> radius(leaf->constAttributeArray(grid::sphere_radius));
         for (auto i = leaf->beginIndexOn(); i; ++i) {
-            const openvdb::Vec3d world = grid.transform().indexToWorld(position.get(*i) + i.getCoord().asVec3d());
-            spheres.push_back({float(world.x()), float(world.y()), float(world.z()), radius.get(*i)});
+            const openvdb::Vec3d world =
+                points.transform().indexToWorld(position.get(*i) + i.getCoord().asVec3d());
+            spheres.push_back(
+                {float(world.x()), float(world.y()), float(world.z()), radius.get(*i)});
         }
     }
     return spheres;
 }
+
+// The file's metadata, described once for writing and reading: `io` is a MetadataWriter (with a
+// const LightModel) or a MetadataReader (with a LightModel). The build options are one text of
+// key=value pairs.
+constexpr char kVersionKey[] = "rayset_model_version";
+
+template <class Io, class Options>
+void describe_options(Io& io, Options& o) {
+    io.option("density_resolution", o.density_resolution);
+    io.option("max_density_resolution", o.max_density_resolution);
+    io.option("flux_resolution", o.flux_resolution);
+    io.option("intensity_resolution", o.intensity_resolution);
+    io.option("max_spheres_per_cell", o.max_spheres_per_cell);
+    io.option("samples_per_cell", o.samples_per_cell);
+    io.option("coverage_lines", o.coverage_lines);
+    io.option("diagram_bands", o.diagram_bands);
+    io.option("diagram_sectors", o.diagram_sectors);
+    io.option("smooth_diagrams", o.smooth_diagrams);
+    io.option("seed", o.seed);
+}
+
+template <class Io, class Model>
+void describe_metadata(Io& io, Model& model) {
+    io.text("source_path", model.source.path);
+    io.text("source_format", model.source.format);
+    io.text("source_unit", model.source.unit);
+    io.number("source_rays", model.source.rays);
+    io.number("source_radiant_W", model.source.radiant);
+    io.number("source_luminous_lm", model.source.luminous);
+    io.text("flux_unit", model.flux_unit);
+    io.frame("density_frame", model.density_frame);
+    io.frame("flux_frame", model.flux_frame);
+    io.frame("intensity_frame", model.intensity_frame);
+    io.bins("spectral_bins_nm", model.bins);
+    io.options("build_options", model.options);
+}
+
+struct MetadataWriter {
+    openvdb::MetaMap& meta;
+    std::string options_text;
+
+    void text(const char* key, const std::string& value) {
+        meta.insertMeta(key, openvdb::StringMetadata(value));
+    }
+    void number(const char* key, uint64_t value) {
+        meta.insertMeta(key, openvdb::Int64Metadata(int64_t(value)));
+    }
+    void number(const char* key, double value) {
+        meta.insertMeta(key, openvdb::DoubleMetadata(value));
+    }
+    void frame(const char* key, const LatticeFrame& value) { text(key, frame_text(value)); }
+    void bins(const char* key, const SpectralBins& b) {
+        meta.insertMeta(key,
+                        openvdb::Vec3DMetadata(openvdb::Vec3d(b.first_nm, b.width_nm, b.count)));
+    }
+    template <class T>
+    void option(const char* key, T value) {
+        options_text +=
+            (options_text.empty() ? "" : " ") + std::string(key) + "=" + std::to_string(value);
+    }
+    void option(const char* key, bool value) { option(key, int(value)); }
+    void options(const char* key, const ModelOptions& o) {
+        options_text.clear();
+        describe_options(*this, o);
+        text(key, options_text);
+    }
+};
+
+// Texts, frames and the options are required; the numbers and bins keep their defaults when
+// missing (files written before them).
+struct MetadataReader {
+    const openvdb::MetaMap& meta;
+    const std::string& path;
+    std::map<std::string, long long> option_values;
+
+    void text(const char* key, std::string& value) {
+        auto m = meta.getMetadata<openvdb::StringMetadata>(key);
+        if (!m) throw Error(path + ": not a rayset model: metadata '" + key + "' is missing");
+        value = m->value();
+    }
+    void number(const char* key, uint64_t& value) {
+        if (auto m = meta.getMetadata<openvdb::Int64Metadata>(key)) value = uint64_t(m->value());
+    }
+    void number(const char* key, double& value) {
+        if (auto m = meta.getMetadata<openvdb::DoubleMetadata>(key)) value = m->value();
+    }
+    void frame(const char* key, LatticeFrame& value) {
+        std::string t;
+        text(key, t);
+        value = parse_frame(t, path, key);
+    }
+    void bins(const char* key, SpectralBins& b) {
+        if (auto m = meta.getMetadata<openvdb::Vec3DMetadata>(key)) {
+            b.first_nm = m->value().x();
+            b.width_nm = m->value().y();
+            b.count = int(m->value().z());
+        }
+    }
+    template <class T>
+    void option(const char* key, T& value) {
+        if (auto found = option_values.find(key); found != option_values.end())
+            value = T(found->second);
+    }
+    void option(const char* key, bool& value) {
+        if (auto found = option_values.find(key); found != option_values.end())
+            value = found->second != 0;
+    }
+    void options(const char* key, ModelOptions& o) {
+        std::string t;
+        text(key, t);
+        std::istringstream in(t);
+        for (std::string kv; in >> kv;) {
+            const auto eq = kv.find('=');
+            option_values[kv.substr(0, eq)] = std::stoll(kv.substr(eq + 1));
+        }
+        describe_options(*this, o);
+    }
+};
 
 }  // namespace
 
@@ -104,17 +241,18 @@ void write_model(const LightModel& model, const std::string& path) {
     openvdb::GridPtrVec grids;
 
     auto density = openvdb::FloatGrid::create(0.f);
-    density->setName("density");
+    density->setName(grid::density);
     density->setTransform(frame_transform(model.density_frame));
     density->setGridClass(openvdb::GRID_FOG_VOLUME);
     {
         auto acc = density->getAccessor();
-        for (size_t v = 0; v < model.voxels.size(); ++v) acc.setValue(vdb(model.voxels[v]), model.voxel_density[v]);
+        for (size_t v = 0; v < model.voxels.size(); ++v)
+            acc.setValue(vdb(model.voxels[v]), model.voxel_density[v]);
     }
     grids.push_back(density);
 
     auto boundary = openvdb::BoolGrid::create(false);
-    boundary->setName("boundary");
+    boundary->setName(grid::boundary);
     boundary->setTransform(frame_transform(model.density_frame));
     {
         auto acc = boundary->getAccessor();
@@ -123,13 +261,13 @@ void write_model(const LightModel& model, const std::string& path) {
     grids.push_back(boundary);
 
     auto flux = openvdb::DoubleGrid::create(0.0);
-    flux->setName("flux");
+    flux->setName(grid::flux);
     flux->setTransform(frame_transform(model.flux_frame));
     auto luminous = openvdb::DoubleGrid::create(0.0);
-    luminous->setName("luminous");
+    luminous->setName(grid::luminous);
     luminous->setTransform(frame_transform(model.flux_frame));
     auto visible = openvdb::FloatGrid::create(1.f);
-    visible->setName("visible_fraction");
+    visible->setName(grid::visible_fraction);
     visible->setTransform(frame_transform(model.flux_frame));
     {
         auto fa = flux->getAccessor();
@@ -147,27 +285,29 @@ void write_model(const LightModel& model, const std::string& path) {
 
     // Index-space tables: voxel (cell, bin, 0) of the spectra, (a, b, diagram) of the diagrams.
     auto spectra = openvdb::FloatGrid::create(0.f);
-    spectra->setName("spectra");
+    spectra->setName(grid::spectra);
     {
         auto acc = spectra->getAccessor();
         for (size_t c = 0; c < model.flux_cells.size(); ++c)
             for (int b = 0; b < model.bins.count; ++b)
-                acc.setValue(openvdb::Coord(int(c), b, 0), model.spectra[c * size_t(model.bins.count) + size_t(b)]);
+                acc.setValue(openvdb::Coord(int(c), b, 0),
+                             model.spectra[c * size_t(model.bins.count) + size_t(b)]);
     }
     grids.push_back(spectra);
 
     auto intensity_cell = openvdb::Int32Grid::create(-1);
-    intensity_cell->setName("intensity_cell");
+    intensity_cell->setName(grid::intensity_cell);
     intensity_cell->setTransform(frame_transform(model.intensity_frame));
     auto diagrams = openvdb::FloatGrid::create(0.f);
-    diagrams->setName("diagrams");
+    diagrams->setName(grid::diagrams);
     {
         auto ia = intensity_cell->getAccessor();
         auto da = diagrams->getAccessor();
         for (size_t k = 0; k < model.diagrams.size(); ++k) {
             ia.setValue(vdb(model.diagram_cells[k]), int32_t(k));
             const std::vector<float> data = model.diagrams[k].serialize();
-            for (size_t i = 0; i < data.size(); ++i) da.setValue(openvdb::Coord(int(i), int(k), 0), data[i]);
+            for (size_t i = 0; i < data.size(); ++i)
+                da.setValue(openvdb::Coord(int(i), int(k), 0), data[i]);
         }
     }
     grids.push_back(intensity_cell);
@@ -176,33 +316,9 @@ void write_model(const LightModel& model, const std::string& path) {
     grids.push_back(sphere_grid(model.spheres, model.density_frame.cell_size()));
 
     openvdb::MetaMap meta;
-    meta.insertMeta("rayset_model_version", openvdb::Int32Metadata(kModelVersion));
-    meta.insertMeta("source_path", openvdb::StringMetadata(model.source.path));
-    meta.insertMeta("source_format", openvdb::StringMetadata(model.source.format));
-    meta.insertMeta("source_unit", openvdb::StringMetadata(model.source.unit));
-    meta.insertMeta("source_rays", openvdb::Int64Metadata(int64_t(model.source.rays)));
-    meta.insertMeta("source_radiant_W", openvdb::DoubleMetadata(model.source.radiant));
-    meta.insertMeta("source_luminous_lm", openvdb::DoubleMetadata(model.source.luminous));
-    meta.insertMeta("flux_unit", openvdb::StringMetadata(model.flux_unit));
-    meta.insertMeta("density_frame", openvdb::StringMetadata(frame_text(model.density_frame)));
-    meta.insertMeta("flux_frame", openvdb::StringMetadata(frame_text(model.flux_frame)));
-    meta.insertMeta("intensity_frame", openvdb::StringMetadata(frame_text(model.intensity_frame)));
-    meta.insertMeta("spectral_bins_nm", openvdb::Vec3DMetadata(
-                                            openvdb::Vec3d(model.bins.first_nm, model.bins.width_nm, model.bins.count)));
-    const ModelOptions& o = model.options;
-    meta.insertMeta("build_options",
-                    openvdb::StringMetadata(
-                        "density_resolution=" + std::to_string(o.density_resolution) +
-                        " max_density_resolution=" + std::to_string(o.max_density_resolution) +
-                        " flux_resolution=" + std::to_string(o.flux_resolution) +
-                        " intensity_resolution=" + std::to_string(o.intensity_resolution) +
-                        " max_spheres_per_cell=" + std::to_string(o.max_spheres_per_cell) +
-                        " samples_per_cell=" + std::to_string(o.samples_per_cell) +
-                        " coverage_lines=" + std::to_string(o.coverage_lines) +
-                        " diagram_bands=" + std::to_string(o.diagram_bands) +
-                        " diagram_sectors=" + std::to_string(o.diagram_sectors) +
-                        " smooth_diagrams=" + std::to_string(int(o.smooth_diagrams)) +
-                        " seed=" + std::to_string(o.seed)));
+    meta.insertMeta(kVersionKey, openvdb::Int32Metadata(kModelVersion));
+    MetadataWriter writer{meta};
+    describe_metadata(writer, model);
 
     // Written beside the target and renamed into place: no half-written model on failure.
     write_atomically(path, [&](const std::string& temporary) {
@@ -227,56 +343,21 @@ LightModel read_model(const std::string& path) {
     } catch (const std::exception& e) {
         throw Error(path + ": cannot read as an OpenVDB model file: " + e.what());
     }
-    auto text = [&](const std::string& name) {
-        auto m = meta->getMetadata<openvdb::StringMetadata>(name);
-        if (!m) throw Error(path + ": not a rayset model: metadata '" + name + "' is missing");
-        return m->value();
-    };
-    auto version = meta->getMetadata<openvdb::Int32Metadata>("rayset_model_version");
-    if (!version) throw Error(path + ": not a rayset model (no rayset_model_version metadata)");
+    auto version = meta->getMetadata<openvdb::Int32Metadata>(kVersionKey);
+    if (!version) throw Error(path + ": not a rayset model (no " + kVersionKey + " metadata)");
     if (version->value() != kModelVersion)
-        throw Error(path + ": model version " + std::to_string(version->value()) + ", this raymodel reads version " +
-                    std::to_string(kModelVersion) + ": rebuild the model with raymodel build");
+        throw Error(path + ": model version " + std::to_string(version->value()) +
+                    ", this raymodel reads version " + std::to_string(kModelVersion) +
+                    ": rebuild the model with raymodel build");
 
     LightModel model;
-    model.source.path = text("source_path");
-    model.source.format = text("source_format");
-    model.source.unit = text("source_unit");
-    model.flux_unit = text("flux_unit");
-    if (auto m = meta->getMetadata<openvdb::Int64Metadata>("source_rays")) model.source.rays = uint64_t(m->value());
-    if (auto m = meta->getMetadata<openvdb::DoubleMetadata>("source_radiant_W")) model.source.radiant = m->value();
-    if (auto m = meta->getMetadata<openvdb::DoubleMetadata>("source_luminous_lm")) model.source.luminous = m->value();
-    model.density_frame = parse_frame(text("density_frame"), path, "density_frame");
-    model.flux_frame = parse_frame(text("flux_frame"), path, "flux_frame");
-    model.intensity_frame = parse_frame(text("intensity_frame"), path, "intensity_frame");
-    if (auto m = meta->getMetadata<openvdb::Vec3DMetadata>("spectral_bins_nm")) {
-        model.bins.first_nm = m->value().x();
-        model.bins.width_nm = m->value().y();
-        model.bins.count = int(m->value().z());
-    }
-    std::istringstream options(text("build_options"));
     model.options.smooth_diagrams = false;  // files that do not say so were built with histograms
-    for (std::string kv; options >> kv;) {
-        const auto eq = kv.find('=');
-        const std::string key = kv.substr(0, eq);
-        const long long value = std::stoll(kv.substr(eq + 1));
-        ModelOptions& o = model.options;
-        if (key == "density_resolution") o.density_resolution = int(value);
-        else if (key == "max_density_resolution") o.max_density_resolution = int(value);
-        else if (key == "flux_resolution") o.flux_resolution = int(value);
-        else if (key == "intensity_resolution") o.intensity_resolution = int(value);
-        else if (key == "max_spheres_per_cell") o.max_spheres_per_cell = int(value);
-        else if (key == "samples_per_cell") o.samples_per_cell = int(value);
-        else if (key == "coverage_lines") o.coverage_lines = int(value);
-        else if (key == "diagram_bands") o.diagram_bands = int(value);
-        else if (key == "diagram_sectors") o.diagram_sectors = int(value);
-        else if (key == "smooth_diagrams") o.smooth_diagrams = value != 0;
-        else if (key == "seed") o.seed = uint64_t(value);
-    }
+    MetadataReader reader{*meta, path};
+    describe_metadata(reader, model);
 
     // Diagrams, in index order.
-    auto intensity_cell = find_grid<openvdb::Int32Grid>(grids, "intensity_cell", path);
-    auto diagram_grid = find_grid<openvdb::FloatGrid>(grids, "diagrams", path);
+    auto intensity_cell = find_grid<openvdb::Int32Grid>(grids, grid::intensity_cell, path);
+    auto diagram_grid = find_grid<openvdb::FloatGrid>(grids, grid::diagrams, path);
     std::vector<std::vector<float>> diagram_data;
     for (auto it = diagram_grid->cbeginValueOn(); it; ++it) {
         const size_t k = size_t(it.getCoord().y()), i = size_t(it.getCoord().x());
@@ -286,8 +367,10 @@ LightModel read_model(const std::string& path) {
     }
     model.diagram_cells.resize(diagram_data.size());
     for (auto it = intensity_cell->cbeginValueOn(); it; ++it) {
-        if (*it < 0 || size_t(*it) >= diagram_data.size()) throw Error(path + ": intensity_cell names a missing diagram");
-        model.diagram_cells[size_t(*it)] = {it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
+        if (*it < 0 || size_t(*it) >= diagram_data.size())
+            throw Error(path + ": intensity_cell names a missing diagram");
+        model.diagram_cells[size_t(*it)] = {it.getCoord().x(), it.getCoord().y(),
+                                            it.getCoord().z()};
     }
     for (const auto& data : diagram_data) {
         try {
@@ -298,9 +381,9 @@ LightModel read_model(const std::string& path) {
     }
 
     // Flux cells in the order of their linear index, as the build made them.
-    auto flux = find_grid<openvdb::DoubleGrid>(grids, "flux", path);
-    auto luminous = find_grid<openvdb::DoubleGrid>(grids, "luminous", path);
-    auto visible = find_grid<openvdb::FloatGrid>(grids, "visible_fraction", path);
+    auto flux = find_grid<openvdb::DoubleGrid>(grids, grid::flux, path);
+    auto luminous = find_grid<openvdb::DoubleGrid>(grids, grid::luminous, path);
+    auto visible = find_grid<openvdb::FloatGrid>(grids, grid::visible_fraction, path);
     std::vector<std::pair<int64_t, FluxCell>> cells;
     {
         auto la = luminous->getConstAccessor();
@@ -314,7 +397,8 @@ LightModel read_model(const std::string& path) {
             cells.emplace_back(model.flux_frame.linear(c.coord), c);
         }
     }
-    std::sort(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::sort(cells.begin(), cells.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
     std::map<int64_t, size_t> cell_index;
     for (const auto& [linear, cell] : cells) {
         cell_index[linear] = model.flux_cells.size();
@@ -322,25 +406,29 @@ LightModel read_model(const std::string& path) {
     }
 
     // Voxels grouped by flux cell, in the density grid's order (as the build grouped them).
-    auto density = find_grid<openvdb::FloatGrid>(grids, "density", path);
+    auto density = find_grid<openvdb::FloatGrid>(grids, grid::density, path);
     std::vector<std::vector<std::pair<Coord, float>>> grouped(model.flux_cells.size());
     {
         auto ia = intensity_cell->getConstAccessor();
         for (auto it = density->cbeginValueOn(); it; ++it) {
             const Coord v{it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
             const Vec3 centre = model.density_frame.cell_centre(v);
-            const auto found = cell_index.find(model.flux_frame.linear(model.flux_frame.cell_of(centre)));
+            const auto found =
+                cell_index.find(model.flux_frame.linear(model.flux_frame.cell_of(centre)));
             if (found == cell_index.end()) continue;  // a voxel whose rays carried no flux
             grouped[found->second].emplace_back(v, *it);
             FluxCell& cell = model.flux_cells[found->second];
             if (cell.intensity_cell < 0)
-                cell.intensity_cell = ia.getValue(vdb(model.intensity_frame.cell_of(model.flux_frame.cell_centre(cell.coord))));
+                cell.intensity_cell = ia.getValue(
+                    vdb(model.intensity_frame.cell_of(model.flux_frame.cell_centre(cell.coord))));
         }
     }
     for (size_t c = 0; c < grouped.size(); ++c) {
         FluxCell& cell = model.flux_cells[c];
-        if (grouped[c].empty() || cell.intensity_cell < 0 || size_t(cell.intensity_cell) >= model.diagrams.size())
-            throw Error(path + ": flux cell " + std::to_string(c) + " has no voxels or no diagram: the file is inconsistent");
+        if (grouped[c].empty() || cell.intensity_cell < 0 ||
+            size_t(cell.intensity_cell) >= model.diagrams.size())
+            throw Error(path + ": flux cell " + std::to_string(c) +
+                        " has no voxels or no diagram: the file is inconsistent");
         cell.first_voxel = uint32_t(model.voxels.size());
         cell.voxel_count = uint32_t(grouped[c].size());
         for (const auto& [v, count] : grouped[c]) {
@@ -349,18 +437,20 @@ LightModel read_model(const std::string& path) {
         }
     }
 
-    auto boundary = find_grid<openvdb::BoolGrid>(grids, "boundary", path);
+    auto boundary = find_grid<openvdb::BoolGrid>(grids, grid::boundary, path);
     for (auto it = boundary->cbeginValueOn(); it; ++it)
         model.boundary_voxels.push_back({it.getCoord().x(), it.getCoord().y(), it.getCoord().z()});
 
-    auto spectra = find_grid<openvdb::FloatGrid>(grids, "spectra", path);
+    auto spectra = find_grid<openvdb::FloatGrid>(grids, grid::spectra, path);
     model.spectra.assign(model.flux_cells.size() * size_t(model.bins.count), 0.f);
     for (auto it = spectra->cbeginValueOn(); it; ++it) {
         const size_t c = size_t(it.getCoord().x()), b = size_t(it.getCoord().y());
-        if (c < model.flux_cells.size() && b < size_t(model.bins.count)) model.spectra[c * size_t(model.bins.count) + b] = *it;
+        if (c < model.flux_cells.size() && b < size_t(model.bins.count))
+            model.spectra[c * size_t(model.bins.count) + b] = *it;
     }
 
-    model.spheres = read_spheres(*find_grid<openvdb::points::PointDataGrid>(grids, "spheres", path));
+    model.spheres =
+        read_spheres(*find_grid<openvdb::points::PointDataGrid>(grids, grid::spheres, path));
     return model;
 }
 

@@ -51,10 +51,49 @@ TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
             EXPECT_EQ(back.flux_cells[c].flux, b.model->flux_cells[c].flux);
             EXPECT_EQ(back.flux_cells[c].voxel_count, b.model->flux_cells[c].voxel_count);
         }
+        // The metadata: what the model was built from and how.
+        const lightmodel::LightModel& m = *b.model;
+        EXPECT_EQ(back.source.path, m.source.path);
+        EXPECT_EQ(back.source.format, m.source.format);
+        EXPECT_EQ(back.source.unit, m.source.unit);
+        EXPECT_EQ(back.source.rays, m.source.rays);
+        EXPECT_EQ(back.source.radiant, m.source.radiant);
+        EXPECT_TRUE(back.source.luminous == m.source.luminous ||
+                    (std::isnan(back.source.luminous) && std::isnan(m.source.luminous)));
+        EXPECT_EQ(back.flux_unit, m.flux_unit);
+        for (auto frame : {&lightmodel::LightModel::density_frame, &lightmodel::LightModel::flux_frame,
+                           &lightmodel::LightModel::intensity_frame}) {
+            EXPECT_EQ((back.*frame).resolution(), (m.*frame).resolution());
+            EXPECT_EQ((back.*frame).cell_size(), (m.*frame).cell_size());
+            EXPECT_EQ((back.*frame).dims(), (m.*frame).dims());
+        }
+        EXPECT_EQ(back.bins.first_nm, m.bins.first_nm);
+        EXPECT_EQ(back.bins.count, m.bins.count);
+        EXPECT_EQ(back.options.smooth_diagrams, m.options.smooth_diagrams);
         std::printf("[ figures  ] %s: %zu flux cells, %zu voxels, %zu boundary voxels, %zu spheres, %zu diagrams\n", name,
                     b.model->flux_cells.size(), b.model->voxels.size(), b.model->boundary_voxels.size(),
                     b.model->spheres.size(), b.model->diagrams.size());
     }
+    // Every build option, each away from its default, survives the file.
+    lightmodel::LightModel changed = *built_source("disk").model;
+    lightmodel::ModelOptions& p = changed.options;
+    p.density_resolution = 77, p.max_density_resolution = 96, p.flux_resolution = 24;
+    p.intensity_resolution = 3, p.max_spheres_per_cell = 9, p.samples_per_cell = 33;
+    p.coverage_lines = 100, p.diagram_bands = 44, p.diagram_sectors = 28;
+    p.smooth_diagrams = !p.smooth_diagrams, p.seed = 1234567890123;
+    write_model(changed, dir.file("options.vdb"));
+    const lightmodel::ModelOptions o = lightmodel::read_model(dir.file("options.vdb")).options;
+    EXPECT_EQ(o.density_resolution, p.density_resolution);
+    EXPECT_EQ(o.max_density_resolution, p.max_density_resolution);
+    EXPECT_EQ(o.flux_resolution, p.flux_resolution);
+    EXPECT_EQ(o.intensity_resolution, p.intensity_resolution);
+    EXPECT_EQ(o.max_spheres_per_cell, p.max_spheres_per_cell);
+    EXPECT_EQ(o.samples_per_cell, p.samples_per_cell);
+    EXPECT_EQ(o.coverage_lines, p.coverage_lines);
+    EXPECT_EQ(o.diagram_bands, p.diagram_bands);
+    EXPECT_EQ(o.diagram_sectors, p.diagram_sectors);
+    EXPECT_EQ(o.smooth_diagrams, p.smooth_diagrams);
+    EXPECT_EQ(o.seed, p.seed);
 }
 
 // Phi = integral over the volume and the sphere of eps(x, w) = Phi pdf_position(x) pdf_direction(w),
