@@ -10,14 +10,6 @@ namespace rayset::analytic {
 // solid angle of the surface seen from P, so it is exact for any receiver orientation once
 // the surface is clipped to the receiver's front half-space (where n . R > 0).
 
-void orthonormal_basis(Vec3 axis, Vec3& u, Vec3& v) {
-    const double sign = std::copysign(1.0, axis.z);
-    const double a = -1 / (sign + axis.z);
-    const double b = axis.x * axis.y * a;
-    u = {1 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
-    v = {b, sign + axis.y * axis.y * a, -axis.y};
-}
-
 namespace {
 
 // The contour integral along the straight edge from a to b: the angle the edge subtends at P

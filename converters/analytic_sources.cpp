@@ -1,8 +1,8 @@
 #include "converters/analytic_sources.h"
 
-#include "converters/error.h"
 #include "converters/io.h"
 #include "converters/spectrum.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,8 +8,8 @@
 #pragma once
 
 #include "converters/analytic_geometry.h"
-#include "converters/random.h"
 #include "converters/ray.h"
+#include "core/random.h"
 
 #include <memory>
 #include <string>

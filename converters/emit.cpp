@@ -1,7 +1,7 @@
 #include "converters/emit.h"
 
-#include "converters/error.h"
 #include "converters/io.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,8 @@
 #include "converters/emit_distribution.h"
 
-#include "converters/error.h"
 #include "converters/io.h"
+#include "core/error.h"
+#include "core/geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@ namespace rayset {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadian = kPi / 180;
 
 double wrap_360(double a) {

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "converters/photometry.h"
-#include "converters/random.h"
+#include "core/random.h"
 
 #include <string>
 #include <vector>

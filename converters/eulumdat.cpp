@@ -1,8 +1,8 @@
 // EULUMDAT reader and writer: one field per line, in the fixed order of Stockmar's layout.
 #include "converters/eulumdat.h"
 
-#include "converters/error.h"
 #include "converters/io.h"
+#include "core/error.h"
 
 #include <cmath>
 #include <limits>

@@ -1,8 +1,8 @@
 // EULUMDAT <-> Photometry: cd/klm <-> cd, stored symmetry planes <-> horizontal angles, and the
 // "_LDT_..." keywords that carry what Photometry has no field for.
-#include "converters/error.h"
 #include "converters/eulumdat.h"
 #include "converters/io.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,10 @@
 #include "converters/farfield.h"
 
-#include "converters/error.h"
 #include "converters/farfield_smoothing.h"
 #include "converters/io.h"
 #include "converters/spectrum.h"
+#include "core/error.h"
+#include "core/geometry.h"
 
 #include <algorithm>
 #include <atomic>
@@ -17,7 +18,6 @@ namespace rayset {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadian = kPi / 180;
 
 // A step divides `range` when the quotient is a whole number to rounding (2.5 into 180).

@@ -1,6 +1,7 @@
 #include "converters/farfield_smoothing.h"
 
 #include "converters/analytic_geometry.h"
+#include "core/geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,6 @@ namespace rayset {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadian = kPi / 180;
 // Kernels are cut where the wider of the two vMF densities has fallen to exp(-9) of its peak:
 // what lies beyond holds about 1e-4 of its weight.
@@ -188,16 +188,16 @@ DirectionHistogram::Estimate DirectionHistogram::local_fit(double x, double y, d
     const double sigma = sigma_deg * kRadian, s2 = sigma * sigma;
     // Coordinates of the tangent plane at u: the azimuthal equidistant map (angle from u along
     // the great circle), on an orthonormal basis e1, e2 of the plane.
-    analytic::Vec3 e1, e2;
-    analytic::orthonormal_basis({x, y, polar}, e1, e2);
+    Vec3 e1, e2;
+    orthonormal_basis({x, y, polar}, e1, e2);
     // Gaussian-weighted flux, first and second moments of the coordinates; the noise through
     // the fit's equivalent kernel at a flat intensity, G (2 - r^2 / (2 sigma^2)).
     double s0 = 0, s1[2] = {0, 0}, s2m[3] = {0, 0, 0}, square = 0;
     visit_bins(level_for(sigma_deg), x, y, polar, std::min(kLocalCutoffSigmas * sigma, kPi),
                [&](const Bin& bin, const std::array<double, 3>& m, double t) {
                    const double theta = std::acos(std::min(1.0, t)), r2 = theta * theta;
-                   const analytic::Vec3 mean{m[0], m[1], m[2]};
-                   const double p1 = analytic::dot(mean, e1), p2 = analytic::dot(mean, e2);
+                   const Vec3 mean{m[0], m[1], m[2]};
+                   const double p1 = dot(mean, e1), p2 = dot(mean, e2);
                    const double norm = std::hypot(p1, p2);
                    const double a = norm > 0 ? theta * p1 / norm : 0;
                    const double b = norm > 0 ? theta * p2 / norm : 0;
@@ -275,15 +275,15 @@ DirectionHistogram::Estimate DirectionHistogram::edge_fit(double x, double y, do
     // here, and the solid angle is dOmega = (u.v)^3 dp: so the rays weighted by w(p) / (u.v)^4
     // measure the moments of the plane function (a + b.p)_+ under the Gaussian weight w, exactly.
     const double sigma = sigma_deg * kRadian, s2 = sigma * sigma;
-    analytic::Vec3 e1, e2;
-    analytic::orthonormal_basis({x, y, polar}, e1, e2);
+    Vec3 e1, e2;
+    orthonormal_basis({x, y, polar}, e1, e2);
     // Weighted flux m0, first and second moments m1, m2 of p; for the noise, the same moments of
     // the squared fluxes with the squared weights.
     double m0 = 0, m1[2] = {0, 0}, m2[3] = {0, 0, 0}, q0 = 0, q1[2] = {0, 0}, q2[3] = {0, 0, 0};
     visit_bins(level_for(sigma_deg), x, y, polar, std::atan(kLocalCutoffSigmas * sigma),
                [&](const Bin& bin, const std::array<double, 3>& m, double t) {
-                   const analytic::Vec3 mean{m[0], m[1], m[2]};
-                   const double p1 = analytic::dot(mean, e1) / t, p2 = analytic::dot(mean, e2) / t;
+                   const Vec3 mean{m[0], m[1], m[2]};
+                   const double p1 = dot(mean, e1) / t, p2 = dot(mean, e2) / t;
                    const double k = std::exp(-(p1 * p1 + p2 * p2) / (2 * s2)) / (t * t * t * t);
                    const double f = bin.flux * k, g = bin.square * k * k;
                    m0 += f, m1[0] += f * p1, m1[1] += f * p2;

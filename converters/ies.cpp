@@ -2,8 +2,8 @@
 // lines anywhere; every number is checked and every error names file:line.
 #include "converters/ies.h"
 
-#include "converters/error.h"
 #include "converters/io.h"
+#include "core/error.h"
 
 #include <cmath>
 #include <filesystem>

@@ -1,7 +1,7 @@
 // IES LM-63 writer, and the IesFile a Photometry maps to.
-#include "converters/error.h"
 #include "converters/ies.h"
 #include "converters/io.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

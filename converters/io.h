@@ -2,7 +2,7 @@
 // input that knows its line number, and an output that appears only when it is complete.
 #pragma once
 
-#include "error.h"
+#include "core/error.h"
 
 #include <cstdint>
 #include <cstdio>

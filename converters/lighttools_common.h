@@ -3,8 +3,8 @@
 // LightTools record has. Private to lighttools_binary.cpp and lighttools_text.cpp.
 #pragma once
 
-#include "converters/error.h"
 #include "converters/ray.h"
+#include "core/error.h"
 
 #include <cmath>
 #include <fmt/format.h>

@@ -2,10 +2,10 @@
 // format-neutral read/detect/write entry points (IES in ies.cpp, EULUMDAT in eulumdat.cpp).
 #include "converters/photometry.h"
 
-#include "converters/error.h"
 #include "converters/eulumdat.h"
 #include "converters/ies.h"
 #include "converters/io.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,8 @@
 #include "converters/ray_ops.h"
 
-#include "converters/random.h"
 #include "converters/ray_ops_detail.h"
+#include "core/geometry.h"
+#include "core/random.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,6 @@ namespace rayset {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Knuth's Algorithm S: ray i is kept with probability (k - kept) / (n - i), which keeps
 // exactly k rays and makes every k-subset equally likely. One draw per ray until k are kept,

@@ -3,7 +3,7 @@
 // format. Memory stays constant in the number of rays.
 #pragma once
 
-#include "error.h"
+#include "core/error.h"
 #include "ray.h"
 
 #include <atomic>

@@ -2,6 +2,7 @@
 
 #include "converters/simd.h"
 #include "converters/spectrum.h"
+#include "core/geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,6 @@ namespace rayset {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // The azimuth is partitioned by the "diamond angle", a monotone stand-in for it in [0, 4) that
 // costs one division instead of an atan2 per ray: in quadrant q (counted anticlockwise from

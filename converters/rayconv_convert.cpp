@@ -1,7 +1,7 @@
 // rayconv convert: any ray format to any other, IES <-> EULUMDAT.
 #include "converters/photometry.h"
-#include "converters/progress.h"
 #include "converters/rayconv.h"
+#include "core/progress.h"
 
 #include <cstdio>
 

@@ -1,8 +1,8 @@
 // rayconv info: what a ray file or photometric file holds.
 #include "converters/photometry.h"
-#include "converters/progress.h"
 #include "converters/ray_summary.h"
 #include "converters/rayconv.h"
+#include "core/progress.h"
 
 #include <cmath>
 #include <fmt/format.h>

@@ -2,9 +2,9 @@
 // photometry from rays.
 #include "converters/emit.h"
 #include "converters/farfield.h"
-#include "converters/progress.h"
 #include "converters/rayconv.h"
 #include "converters/synth.h"
+#include "core/progress.h"
 
 #include <cctype>
 #include <fmt/format.h>

@@ -1,8 +1,8 @@
 // rayconv subsample, merge and transform.
-#include "converters/progress.h"
 #include "converters/io.h"
 #include "converters/ray_ops.h"
 #include "converters/rayconv.h"
+#include "core/progress.h"
 
 #include <cmath>
 #include <fmt/format.h>

@@ -1,6 +1,6 @@
 #include "converters/text_row_count.h"
 
-#include "converters/error.h"
+#include "core/error.h"
 
 #include <cerrno>
 #include <cstdio>

@@ -4,8 +4,8 @@
 // zemax_text.cpp.
 #pragma once
 
-#include "converters/error.h"
 #include "converters/ray.h"
+#include "core/error.h"
 
 #include <cmath>
 #include <cstdint>

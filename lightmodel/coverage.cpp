@@ -1,6 +1,6 @@
 #include "lightmodel/coverage.h"
 
-#include "converters/random.h"
+#include "core/random.h"
 #include "lightmodel/emission_volume.h"
 #include "lightmodel/sphere_body.h"
 

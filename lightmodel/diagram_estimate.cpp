@@ -10,7 +10,6 @@ namespace rayset::lightmodel {
 
 namespace {
 
-using analytic::kPi;
 
 constexpr int kProbeBands = 20, kProbeSectors = 24;
 // A local fit's estimate over the kernel's, applied to every cell, at most this: beyond it the

@@ -6,7 +6,6 @@
 
 namespace rayset::lightmodel {
 
-using analytic::kPi;
 
 Vec2 direction_to_square(Vec3 w) {
     const double ax = std::abs(w.x), ay = std::abs(w.y), az = std::abs(w.z);

@@ -12,13 +12,12 @@
 
 namespace rayset::lightmodel {
 
-using analytic::Vec3;
 
 struct Vec2 {
     double x = 0, y = 0;
 };
 
-inline constexpr double kSquareToSolidAngle = 4 * analytic::kPi;  // dOmega / dA
+inline constexpr double kSquareToSolidAngle = 4 * kPi;  // dOmega / dA
 
 // `w` must be a unit vector. The result lies in [0,1]^2. A direction of the lower hemisphere in
 // the plane x = 0 or y = 0 lies on a folded edge and maps to one of its two edge points (-z to

@@ -10,7 +10,6 @@ namespace rayset::lightmodel {
 
 namespace {
 
-using analytic::kPi;
 
 constexpr double kOneMinusEpsilon = 0x1.fffffffffffffp-1;
 constexpr int kMaxGridSize = 4096;  // bands and sectors; bounds what deserialize() accepts

@@ -13,7 +13,6 @@
 
 namespace rayset::lightmodel {
 
-using analytic::Vec3;
 
 struct Box {
     Vec3 lower{1e300, 1e300, 1e300}, upper{-1e300, -1e300, -1e300};

@@ -1,8 +1,8 @@
 #include "lightmodel/model_build.h"
 
-#include "converters/random.h"
 #include "converters/ray_stream.h"
 #include "converters/spectrum.h"
+#include "core/random.h"
 #include "lightmodel/coverage.h"
 #include "lightmodel/density_lattice.h"
 #include "lightmodel/diagram_estimate.h"

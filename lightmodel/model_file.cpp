@@ -1,7 +1,7 @@
 #include "lightmodel/model_file.h"
 
-#include "converters/error.h"
 #include "converters/io.h"
+#include "core/error.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/points/PointAttribute.h>

@@ -1,7 +1,7 @@
 // raymodel: build the paper's complex light-source model from a ray file, store it as one
 // OpenVDB file, and summarise a stored model.
-#include "converters/error.h"
-#include "converters/progress.h"
+#include "core/error.h"
+#include "core/progress.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 

@@ -6,11 +6,11 @@
 
 #include <fmt/format.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "tracer/film/checkpoint.h"
 #include "tracer/film/render_output.h"
-#include "tracer/raytrace_resume.h"
 #include "tracer/raytrace_options.h"
+#include "tracer/raytrace_resume.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
 

@@ -11,7 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 
 namespace rayset::tracer {
 

@@ -8,7 +8,7 @@
 
 #include <unistd.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 
 namespace rayset::tracer {
 

@@ -1,6 +1,6 @@
 #include "viz/diagram_surface.h"
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "viz/vtk_arrays.h"
 
 #include <vtkCellArray.h>
@@ -51,7 +51,7 @@ vtkSmartPointer<vtkPolyData> diagram_surface(const lightmodel::LightModel& model
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetDataTypeToDouble();  // exported values keep the table's precision
     auto intensity = named_doubles("intensity");
-    auto add = [&](lightmodel::Vec3 w) {
+    auto add = [&](Vec3 w) {
         const double value = flux * diagram.pdf(w);
         intensity->InsertNextValue(value);
         return points->InsertNextPoint(value * w.x, value * w.y, value * w.z);
@@ -82,7 +82,7 @@ vtkSmartPointer<vtkPolyData> diagram_surface(const lightmodel::LightModel& model
     surface->SetPoints(points);
     surface->SetPolys(polys);
     surface->GetPointData()->SetScalars(intensity);
-    const lightmodel::Vec3 centre = model.intensity_frame.cell_centre(cell);
+    const Vec3 centre = model.intensity_frame.cell_centre(cell);
     set_field_values(surface, "cell", {double(cell[0]), double(cell[1]), double(cell[2])});
     set_field_values(surface, "cell_centre_mm", {centre.x, centre.y, centre.z});
     set_field_values(surface, "cell_flux", {flux});

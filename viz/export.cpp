@@ -1,7 +1,7 @@
 #include "viz/export.h"
 
-#include "converters/error.h"
 #include "converters/io.h"
+#include "core/error.h"
 #include "viz/diagram_surface.h"
 
 #include <vtkImageData.h>

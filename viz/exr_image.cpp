@@ -1,6 +1,6 @@
 #include "viz/exr_image.h"
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "viz/vtk_arrays.h"
 
 #include <ImfChannelList.h>

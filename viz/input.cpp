@@ -1,8 +1,8 @@
 #include "viz/input.h"
 
-#include "converters/error.h"
 #include "converters/photometry.h"
 #include "converters/ray_stream.h"
+#include "core/error.h"
 #include "lightmodel/model_file.h"
 #include "viz/diagram_surface.h"
 #include "viz/model_lattices.h"

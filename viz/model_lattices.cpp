@@ -14,7 +14,7 @@ vtkSmartPointer<vtkImageData> image_over(const lightmodel::LatticeFrame& frame) 
     auto image = vtkSmartPointer<vtkImageData>::New();
     const auto& d = frame.dims();
     image->SetDimensions(d[0], d[1], d[2]);
-    const lightmodel::Vec3 c = frame.cell_centre({0, 0, 0});
+    const Vec3 c = frame.cell_centre({0, 0, 0});
     image->SetOrigin(c.x, c.y, c.z);
     image->SetSpacing(frame.cell_size(), frame.cell_size(), frame.cell_size());
     return image;

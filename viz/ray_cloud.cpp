@@ -1,7 +1,7 @@
 #include "viz/ray_cloud.h"
 
-#include "converters/random.h"
 #include "converters/ray_stream.h"
+#include "core/random.h"
 #include "viz/vtk_arrays.h"
 
 #include <vtkCellArray.h>

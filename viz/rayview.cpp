@@ -1,6 +1,6 @@
 // rayview: look at ray files, light models, IES / EULUMDAT photometry and the tracer's EXR
 // images in VTK; render them off-screen to PNG or export them for ParaView.
-#include "converters/error.h"
+#include "core/error.h"
 #include "viz/export.h"
 #include "viz/scene.h"
 

@@ -1,7 +1,7 @@
 #include "viz/scene.h"
 
-#include "converters/error.h"
 #include "converters/io.h"
+#include "core/error.h"
 #include "viz/view_style.h"
 
 #include <vtkCamera.h>

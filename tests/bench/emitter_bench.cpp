@@ -2,9 +2,9 @@
 // 3 source sizes away), sample_Le (photon emission) and a camera ray's intersect + L, on a
 // model of the 39-chip cluster built from 1e6 synthetic rays at start-up.
 // Usage: emitter_bench [--benchmark_filter=...]
-#include "converters/random.h"
 #include "converters/ray_stream.h"
 #include "converters/synth.h"
+#include "core/random.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 
@@ -66,7 +66,7 @@ void camera_ray(benchmark::State& state) {
     for (auto _ : state) {
         const Vec3 target{b.lower.x + rng.uniform() * (b.upper.x - b.lower.x), b.lower.y + rng.uniform() * (b.upper.y - b.lower.y), 0};
         const Vec3 eye{0, 0, 50};
-        const Vec3 dir = analytic::normalized(target - eye);
+        const Vec3 dir = normalized(target - eye);
         EmitterHit hit;
         double L = 0;
         if (s.intersect(eye, dir, 1e9, hit)) L = s.L(eye, dir, hit);

@@ -43,7 +43,7 @@ Errors map_errors(const ReceiverMap& map, const analytic::LambertianDisk& disk, 
         for (int i = 0; i < map.irradiance.nx(); ++i) {
             const Vec3 p = map.cell_centre(i, j), q{p.x, p.z, kHeight};  // the disk's frame
             const double truth = 1e6 * disk.irradiance(q, {0, 0, -1});   // W/m^2
-            const Vec3 w = analytic::normalized(q);
+            const Vec3 w = normalized(q);
             const double model_value = truth * model.intensity(w) / disk.intensity(w);
             const double measured = luminance_weight(map.irradiance.mean(i, j));
             truth_squares += std::pow(measured / truth - 1, 2);

@@ -4,6 +4,7 @@
 #include "converters/emit.h"
 
 #include "converters/farfield.h"
+#include "core/geometry.h"
 #include "synth_test_support.h"
 
 #include <gtest/gtest.h>
@@ -13,7 +14,6 @@
 namespace rayset {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180;
 
 std::string error_of(const std::function<void()>& f) {

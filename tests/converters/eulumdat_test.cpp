@@ -1,9 +1,9 @@
 // EULUMDAT: every Isym with its stored planes, cd/klm -> cd, lamp sets, round trips through
 // files and through Photometry and IES, and bad input with the message it must give.
-#include "converters/error.h"
 #include "converters/eulumdat.h"
 #include "converters/ies.h"
 #include "converters/photometry.h"
+#include "core/error.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

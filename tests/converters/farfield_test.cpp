@@ -19,7 +19,6 @@
 namespace rayset {
 namespace {
 
-constexpr double kPi = analytic::kPi;
 constexpr double kDeg = kPi / 180;
 
 std::string error_of(const std::function<void()>& f) {
@@ -223,7 +222,7 @@ DirectionHistogram expected_rays(const analytic::Source& source, double n) {
             for (int a = 0; a < 3; ++a)
                 for (int b = 0; b < 3; ++b) {
                     const double g = (row + (a + 0.5) / 3) * step, c = (column + (b + 0.5) / 3) * step;
-                    const analytic::Vec3 v{std::sin(g) * std::cos(c), std::sin(g) * std::sin(c), std::cos(g)};
+                    const Vec3 v{std::sin(g) * std::cos(c), std::sin(g) * std::sin(c), std::cos(g)};
                     flux += source.intensity(v) * std::sin(g) * step * step / 9;
                 }
             const double g = (row + 0.5) * step, c = (column + 0.5) * step;
@@ -235,7 +234,7 @@ DirectionHistogram expected_rays(const analytic::Source& source, double n) {
     return h;
 }
 
-analytic::Vec3 direction_deg(double gamma, double c) {
+Vec3 direction_deg(double gamma, double c) {
     const double g = gamma * kDeg, a = c * kDeg;
     return {std::sin(g) * std::cos(a), std::sin(g) * std::sin(a), std::cos(g)};
 }
@@ -247,7 +246,7 @@ TEST(FarFieldSmoothing, EdgeFitIsExactAtTheHorizonOfAFlatEmitter) {
     const DirectionHistogram h = expected_rays(*disk, 1e7);
     for (double gamma : {30.0, 75.0, 80.0, 85.0})
         for (double sigma : {4.0, 8.0}) {
-            const analytic::Vec3 u = direction_deg(gamma, 7);
+            const Vec3 u = direction_deg(gamma, 7);
             const double truth = disk->intensity(u);
             const double edge = h.edge_fit(u.x, u.y, u.z, sigma).intensity / truth - 1;
             EXPECT_NEAR(edge, 0, 1e-3) << gamma << " deg, sigma " << sigma;
@@ -267,11 +266,11 @@ TEST(FarFieldSmoothing, EdgeFitsAreChosenAtEdgesNotOnLobes) {
     const auto lobe = make_source("lobe", {{"n", "20"}});
     const DirectionHistogram flat = expected_rays(*disk, 1e6), peaked = expected_rays(*lobe, 1e6);
     for (double gamma = 60; gamma <= 85; gamma += 5) {
-        const analytic::Vec3 u = direction_deg(gamma, 7);
+        const Vec3 u = direction_deg(gamma, 7);
         EXPECT_EQ(flat.adaptive(u.x, u.y, u.z).kind, DirectionHistogram::Kind::edge) << gamma;
     }
     for (double gamma = 0; gamma <= 40; gamma += 2.5) {
-        const analytic::Vec3 u = direction_deg(gamma, 7);
+        const Vec3 u = direction_deg(gamma, 7);
         EXPECT_NE(peaked.adaptive(u.x, u.y, u.z).kind, DirectionHistogram::Kind::edge) << gamma;
     }
 }

@@ -1,8 +1,8 @@
 // IES LM-63: hand-written files of every version and TILT form, round trips for every
 // symmetry, and every kind of bad input with the message it must give.
-#include "converters/error.h"
 #include "converters/ies.h"
 #include "converters/photometry.h"
+#include "core/error.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Photometry::intensity and total_flux against analytic distributions, and the symmetry
 // unfolding against values chosen at mirror-image planes.
-#include "converters/error.h"
 #include "converters/photometry.h"
+#include "core/error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Small ray files made by hand for the ray operation tests (subsample, merge, transform).
 #pragma once
 
-#include "converters/random.h"
 #include "converters/ray_stream.h"
+#include "core/random.h"
 
 #include <cmath>
 #include <cstring>

@@ -22,19 +22,26 @@ constexpr uint64_t kDataStart = 36288;  // no tables, labels or text
 // Ray i: origin (i, 0, 0), direction +z, radiant flux (i % 7 + 1) / 8 W (exact in float).
 float flux_of(size_t i) { return float(i % 7 + 1) / 8; }
 
+// Rays 0..n-1 as described above.
+RayChunk numbered_rays(size_t n) {
+    RayChunk chunk;
+    for (size_t i = 0; i < n; ++i) {
+        Ray r;
+        r.origin = {float(i), 0, 0};
+        r.direction = {0, 0, 1};
+        r.radiant = flux_of(i);
+        chunk.rays.push_back(r);
+    }
+    return chunk;
+}
+
 std::string write_file(const test::ScratchDir& dir, size_t rays, std::set<size_t> bad_rays = {}) {
     RayHeader h;
     h.has_radiant = true;
     const std::string path = dir.file("rays.tm25ray");
     auto encoder = create_tm25(path, h);
-    RayChunk chunk;
-    for (size_t i = 0; i < rays; ++i) {
-        Ray r;
-        r.origin = {float(i), 0, 0};
-        r.direction = {0, 0, bad_rays.count(i) ? std::nanf("") : 1.0f};
-        r.radiant = flux_of(i);
-        chunk.rays.push_back(r);
-    }
+    RayChunk chunk = numbered_rays(rays);
+    for (size_t i : bad_rays) chunk.rays[i].direction.z = std::nanf("");
     encoder->write(chunk);
     encoder->finish();
     return path;
@@ -123,15 +130,9 @@ TEST(RayReader, AWavelengthOfZeroIsRefused) {
     h.spectral = SpectralKind::per_ray_wavelength;
     const std::string path = dir.file("zero.tm25ray");
     auto encoder = create_tm25(path, h);
-    RayChunk chunk;
-    for (size_t i = 0; i < 3000; ++i) {
-        Ray r;
-        r.origin = {float(i), 0, 0};
-        r.direction = {0, 0, 1};
-        r.radiant = flux_of(i);
-        r.wavelength = i == 1500 ? 0.0f : i == 10 ? std::nanf("") : 450.0f;
-        chunk.rays.push_back(r);
-    }
+    RayChunk chunk = numbered_rays(3000);
+    for (size_t i = 0; i < 3000; ++i)
+        chunk.rays[i].wavelength = i == 1500 ? 0.0f : i == 10 ? std::nanf("") : 450.0f;
     encoder->write(chunk);
     encoder->finish();
     auto reader = open_rays(path, chunks_of(1000));
@@ -265,15 +266,7 @@ TEST(RayReaderInParts, SmallFilesAndTextFormatsAreOnePart) {
     h.has_radiant = true;
     const std::string csv = dir.file("rays.csv");
     auto encoder = create_rays(csv, RayFormat::csv, h);
-    RayChunk chunk;
-    for (size_t i = 0; i < 5000; ++i) {
-        Ray r;
-        r.origin = {float(i), 0, 0};
-        r.direction = {0, 0, 1};
-        r.radiant = flux_of(i);
-        chunk.rays.push_back(r);
-    }
-    encoder->write(chunk);
+    encoder->write(numbered_rays(5000));
     encoder->finish();
     auto reader = open_rays(csv, chunks_of(100));
     EXPECT_EQ(reader->parts(), 1u);

@@ -2,10 +2,10 @@
 #include "converters/synth.h"
 
 #include "converters/io.h"
-#include "converters/random.h"
 #include "converters/spectrum.h"
-#include "synth_test_support.h"
+#include "core/random.h"
 #include "support/test_support.h"
+#include "synth_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -68,8 +68,8 @@ TEST(SynthSources, BuildFromNameAndParameters) {
     EXPECT_EQ(disk->name(), "disk");
     EXPECT_DOUBLE_EQ(disk->total_flux(), 3.0);
     // I0 = flux / pi for Lambert, along the normal (sin 60, 0, cos 60); half of it along z.
-    EXPECT_DOUBLE_EQ(disk->intensity({std::sqrt(0.75), 0, 0.5}), 3.0 / analytic::kPi);
-    EXPECT_NEAR(disk->intensity({0, 0, 1}), 1.5 / analytic::kPi, 1e-15);
+    EXPECT_DOUBLE_EQ(disk->intensity({std::sqrt(0.75), 0, 0.5}), 3.0 / kPi);
+    EXPECT_NEAR(disk->intensity({0, 0, 1}), 1.5 / kPi, 1e-15);
     // parameters() reads back to the same source.
     std::vector<std::string> words;
     const std::string text = disk->parameters();
@@ -83,11 +83,11 @@ TEST(SynthSources, BuildFromNameAndParameters) {
     EXPECT_EQ(again->parameters(), text);
 
     auto rect = make_source("rectangle", parse_source_parameters({"size_x=2", "size_y=0.5", "radiance=0.1"}));
-    EXPECT_DOUBLE_EQ(rect->total_flux(), analytic::kPi * 0.1 * 1.0);
+    EXPECT_DOUBLE_EQ(rect->total_flux(), kPi * 0.1 * 1.0);
     auto sphere = make_source("sphere", {});
     EXPECT_DOUBLE_EQ(sphere->total_flux(), 1.0);
     auto lobe = make_source("lobe", parse_source_parameters({"n=3", "intensity=2"}));
-    EXPECT_DOUBLE_EQ(lobe->total_flux(), 2 * analytic::kPi * 2 / 4);
+    EXPECT_DOUBLE_EQ(lobe->total_flux(), 2 * kPi * 2 / 4);
 
     auto cluster = make_source("cluster", {});
     const auto& chips = static_cast<const analytic::ChipCluster&>(*cluster).chips();
@@ -144,7 +144,7 @@ TEST(SynthSources, SpectrumFiles) {
     EXPECT_EQ(h.spectral_tables[0].wavelength, (std::vector<float>{450, 500, 550}));
     EXPECT_EQ(h.spectral_tables[0].weight, (std::vector<float>{0.5f, 1, 0.25f}));
     EXPECT_NEAR(disk->luminous_flux(), luminous_efficacy(h.spectral_tables[0]), 1e-12);
-    EXPECT_EQ(disk->parameters(), "radius=1 radiance=" + format_double(1 / (analytic::kPi * analytic::kPi)) + " spectrum=" + good);
+    EXPECT_EQ(disk->parameters(), "radius=1 radiance=" + format_double(1 / (kPi * kPi)) + " spectrum=" + good);
 
     auto bad = [&](const std::string& name, const std::string& content) {
         const std::string path = dir.file(name);

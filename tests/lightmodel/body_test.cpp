@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "converters/analytic_sources.h"
-#include "converters/random.h"
+#include "core/random.h"
 #include "lightmodel/density_lattice.h"
 #include "lightmodel/sphere_body.h"
 #include "lightmodel/sphere_fit.h"
@@ -148,7 +148,7 @@ TEST(BodyDensityLattice, ParallelBuildByMergingThreadLatticesMatchesSerial) {
     std::vector<Vec3> points(n);
     Pcg32 rng(3);
     for (Vec3& p : points) {
-        const double r = std::sqrt(rng.uniform()), phi = 2 * analytic::kPi * rng.uniform();
+        const double r = std::sqrt(rng.uniform()), phi = 2 * kPi * rng.uniform();
         p = {r * std::cos(phi), r * std::sin(phi), 0};
     }
     const LatticeFrame frame = frame_over({-1, -1, 0}, {1, 1, 0}, 128);
@@ -571,7 +571,7 @@ TEST(BodyEndToEnd, LambertianDiskSilhouetteMatchesTheTrueDisk) {
     const double pixel = 0.004;  // a quarter of a density cell (2 mm / 125 = 0.016 mm)
     start = Clock::now();
     const Silhouette face_on = silhouette_iou(body, 0, pixel);
-    const Silhouette oblique = silhouette_iou(body, analytic::kPi / 3, pixel);
+    const Silhouette oblique = silhouette_iou(body, kPi / 3, pixel);
     const double render_s = seconds_since(start);
     std::printf("[ disk ] %zu rays, resolution %d (%d x %d x %d cells), %zu occupied, %zu boundary cells, "
                 "reference count %.0f, %zu spheres\n",

@@ -4,7 +4,7 @@
 // reproduction of Lambertian emission, continuity, exact sampling (pdf consistency and
 // chi-square goodness of fit), storage, and its far-field accuracy on analytic sources.
 #include "converters/analytic_sources.h"
-#include "converters/random.h"
+#include "core/random.h"
 #include "lightmodel/diagram_estimate.h"
 #include "lightmodel/direction_map.h"
 #include "lightmodel/goniometric_diagram.h"
@@ -22,9 +22,8 @@
 namespace rayset::lightmodel {
 namespace {
 
-using analytic::kPi;
 
-double distance(Vec3 a, Vec3 b) { return analytic::length(a - b); }
+double distance(Vec3 a, Vec3 b) { return length(a - b); }
 
 Vec3 uniform_direction(Pcg32& rng) {
     const double z = 1 - 2 * rng.uniform(), phi = 2 * kPi * rng.uniform();
@@ -75,7 +74,7 @@ TEST(DirectionMap, RoundTripNearPolesEdgesAndEquator) {
     for (const Vec3& w : directions) {
         const Vec3 back = square_to_direction(direction_to_square(w));
         EXPECT_LT(distance(back, w), 1e-14) << w.x << " " << w.y << " " << w.z;
-        EXPECT_NEAR(analytic::length(back), 1.0, 1e-15);
+        EXPECT_NEAR(length(back), 1.0, 1e-15);
     }
     const Vec2 south = direction_to_square({0, 0, -1});
     EXPECT_EQ(south.x, 1.0);
@@ -113,7 +112,7 @@ TEST(DirectionMap, PreservesArea) {
     Pcg32 rng(13);
     for (int k = 0; k < samples; ++k) directions.push_back(square_to_direction({rng.uniform(), rng.uniform()}));
     for (const Cap& cap : caps) {
-        const Vec3 axis = analytic::normalized(cap.axis);
+        const Vec3 axis = normalized(cap.axis);
         const double cos_alpha = std::cos(cap.half_angle_deg * kPi / 180);
         int inside = 0;
         for (const Vec3& w : directions) inside += dot(w, axis) >= cos_alpha;
@@ -451,7 +450,7 @@ TEST(DiagramSampling, PdfOfSampleEqualsPdfOfDirection) {
         Pcg32 rng(26);
         for (int k = 0; k < 100000; ++k) {
             const DirectionSample s = diagram.sample({rng.uniform(), rng.uniform()});
-            ASSERT_NEAR(analytic::length(s.direction), 1.0, 1e-14);
+            ASSERT_NEAR(length(s.direction), 1.0, 1e-14);
             ASSERT_GT(s.pdf, 0);
             ASSERT_NEAR(s.pdf, diagram.pdf(s.direction), 1e-9 * s.pdf) << bands << " x " << sectors;
         }
@@ -610,7 +609,7 @@ TEST(DiagramFarField, AccuracyAtOneMillionRays) {
             for (const auto& [bands, sectors] : grids) diagrams.emplace_back(bands, sectors);
             Pcg32 rng(seed, uint64_t(c.name[0]));
             for (int k = 0; k < 1000000; ++k) {
-                const Vec3 w = analytic::normalized(to_vec3(c.source->sample_ray(rng).direction));
+                const Vec3 w = normalized(to_vec3(c.source->sample_ray(rng).direction));
                 for (auto& diagram : diagrams) diagram.accumulate(w, 1.0);
             }
             for (size_t g = 0; g < diagrams.size(); ++g) {

@@ -3,9 +3,9 @@
 // illuminance. Every random draw has a fixed seed; each bound says the confidence it gives.
 #include "lightmodel/model_support.h"
 
-#include "converters/random.h"
-#include "converters/spectrum.h"
 #include "converters/ray_stream.h"
+#include "converters/spectrum.h"
+#include "core/random.h"
 #include "lightmodel/direction_map.h"
 #include "lightmodel/model_file.h"
 #include "lightmodel/naive_source.h"
@@ -23,8 +23,6 @@ namespace rayset::test {
 namespace {
 
 using lightmodel::Vec2;
-using lightmodel::Vec3;
-constexpr double kPi = analytic::kPi;
 
 Vec3 rand3(Pcg32& rng) { return {rng.uniform(), rng.uniform(), rng.uniform()}; }
 
@@ -193,9 +191,9 @@ TEST(Model, SampleLiDirectionsFollowPdfLi) {
         const Vec3 centre = 0.5 * (box.lower + box.upper);
         const double size = box.longest();
         const Vec3 ref = centre + Vec3{1.5 * size, 0.5 * size, 2.5 * size};
-        const Vec3 axis = analytic::normalized(centre - ref);
+        const Vec3 axis = normalized(centre - ref);
         Vec3 e1, e2;
-        analytic::orthonormal_basis(axis, e1, e2);
+        orthonormal_basis(axis, e1, e2);
         const double cos_max = std::cos(std::asin(std::min(1.0, 0.9 * size / length(centre - ref))));
         const int nu = 12, nphi = 16, sub = 48;
         auto direction = [&](double u, double phi) {
@@ -219,7 +217,7 @@ TEST(Model, SampleLiDirectionsFollowPdfLi) {
         std::vector<double> count(nu * nphi, 0);
         for (int s = 0; s < n; ++s) {
             const lightmodel::VolumeSample p = volume.sample_point(rng.uniform(), rng.uniform(), rand3(rng));
-            const Vec3 w = analytic::normalized(p.point - ref);
+            const Vec3 w = normalized(p.point - ref);
             const double u = dot(w, axis);
             if (u < cos_max) continue;
             double phi = std::atan2(dot(w, e2), dot(w, e1));
@@ -283,7 +281,7 @@ TEST(Model, DirectVisibilityOfTheDisk) {
         const double tilt = tilt_deg * kPi / 180;
         const Vec3 view{std::sin(tilt), 0, std::cos(tilt)};  // from the disk toward the eye
         Vec3 e1, e2;
-        analytic::orthonormal_basis(view, e1, e2);
+        orthonormal_basis(view, e1, e2);
         const int n = 400;
         const double half = 1.2;
         int both = 0, either = 0, inside_truth = 0;
@@ -336,7 +334,7 @@ Estimate light_sampling(const lightmodel::ComplexSource& s, Vec3 x, Vec3 normal,
 // BSDF sampling of a Lambertian receiver: cosine-weighted directions, E = pi * mean(L of hits).
 Estimate bsdf_sampling(const lightmodel::ComplexSource& s, Vec3 x, Vec3 normal, int n, uint64_t seed) {
     Vec3 e1, e2;
-    analytic::orthonormal_basis(normal, e1, e2);
+    orthonormal_basis(normal, e1, e2);
     Pcg32 rng(seed);
     double sum = 0, sum2 = 0;
     for (int i = 0; i < n; ++i) {
@@ -366,7 +364,7 @@ TEST(Model, IlluminanceByLightAndBsdfSampling) {
         for (double off_axis_deg : {0.0, 40.0}) {
             const double d = 2 * sizes, a = off_axis_deg * kPi / 180;
             const Vec3 x{d * std::sin(a), 0, d * std::cos(a)};
-            const Vec3 normal = analytic::normalized(-1.0 * x);
+            const Vec3 normal = normalized(-1.0 * x);
             const double truth = b.truth->irradiance(x, normal) * scale;
             // Seeds differ per case, so the cases are independent draws.
             const uint64_t seed = uint64_t(100 * sizes + off_axis_deg);

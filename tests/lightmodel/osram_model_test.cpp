@@ -17,7 +17,6 @@
 namespace rayset::test {
 namespace {
 
-constexpr double kPi = analytic::kPi;
 
 TEST(OsramModel, BuildsKeepsItsFluxAndFarField) {
     RAYSET_REQUIRE_SHARED_DATA();

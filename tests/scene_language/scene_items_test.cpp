@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/geometry.h"
 #include "scene_language/scene_test_support.h"
 #include "tracer/scene_language/scene_language.h"
 
@@ -19,7 +20,6 @@ using namespace scene_test;
 
 Camera camera_of(const std::string& body) { return parse("camera { " + body + " }").camera; }
 
-constexpr double kPi = 3.14159265358979323846;
 
 // ---------------------------------------------------------------- camera
 

@@ -41,7 +41,7 @@ TEST(SceneLanguageCornell, ParsesWithTheValuesItsTextGives) {
     // Camera: angle 39.5 rescales the unit direction to |right| / tan(39.5/2 deg) / 2.
     ASSERT_TRUE(s.has_camera);
     expect_vec(s.camera.location, {27.8, 27.3, -80.0});
-    expect_vec(s.camera.direction, {0, 0, 0.5 / std::tan(39.5 / 2 * analytic::kPi / 180)});
+    expect_vec(s.camera.direction, {0, 0, 0.5 / std::tan(39.5 / 2 * kPi / 180)});
     expect_vec(s.camera.right, {-1, 0, 0});
     expect_vec(s.camera.up, {0, 1, 0});
 
@@ -116,7 +116,7 @@ TEST(SceneLanguageTransforms, RotateFollowsPovRayLeftHandedConvention) {
     // rotate <90, 90, 0> is x first, then y: +y -> +z -> +x.
     expect_vec(pov_rotation({90, 90, 0}).vector({0, 1, 0}), {1, 0, 0}, 1e-15);
     // A general angle against the hand-written matrix of rotate 30*y.
-    const double c = std::cos(analytic::kPi / 6), s = std::sin(analytic::kPi / 6);
+    const double c = std::cos(kPi / 6), s = std::sin(kPi / 6);
     const Matrix4 r = pov_rotation({0, 30, 0});
     const double expected[16] = {c, 0, s, 0, 0, 1, 0, 0, -s, 0, c, 0, 0, 0, 0, 1};
     for (int i = 0; i < 16; ++i) EXPECT_NEAR(r.m[i], expected[i], 1e-15) << i;
@@ -195,7 +195,7 @@ TEST(SceneLanguageExpressions, VectorsAndPromotion) {
 }
 
 TEST(SceneLanguageExpressions, Functions) {
-    const double pi = analytic::kPi;
+    const double pi = kPi;
     EXPECT_NEAR(eval("sin(pi/6)").x, 0.5, 1e-15);
     EXPECT_NEAR(eval("cos(0) + tan(0)").x, 1, 1e-15);
     EXPECT_NEAR(eval("asin(1)").x, pi / 2, 1e-15);

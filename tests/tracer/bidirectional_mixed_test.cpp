@@ -69,7 +69,7 @@ TEST(BidirectionalMixed, WhiteLedFromTwoRayFilesPlusAPointLight) {
     for (int j = 0; j < map.irradiance.ny(); ++j)
         for (int i = 0; i < map.irradiance.nx(); ++i) {
             const Vec3 p = map.cell_centre(i, j), q{p.x, p.z, H};  // disk frame: floor at z = H
-            const Vec3 w = analytic::normalized(q);
+            const Vec3 w = normalized(q);
             // Lux from each disk: closed form (W/mm^2 -> W/m^2) x efficacy, times the model's
             // far field over the disk's (docs: removes the 1e6-ray model's own ~1.2% noise).
             double lux = 0;
@@ -79,8 +79,8 @@ TEST(BidirectionalMixed, WhiteLedFromTwoRayFilesPlusAPointLight) {
                 lux += 1e6 * disk.irradiance(q, {0, 0, -1}) * led.efficacy() * model.intensity(w) / disk.intensity(w);
             }
             const Vec3 to_lamp = lamp - p;
-            const double d2 = analytic::dot(to_lamp, to_lamp) * 1e-6;  // m^2
-            lux += kLumensPerWatt * intensity * (to_lamp.y / std::sqrt(analytic::dot(to_lamp, to_lamp))) / d2;
+            const double d2 = dot(to_lamp, to_lamp) * 1e-6;  // m^2
+            lux += kLumensPerWatt * intensity * (to_lamp.y / std::sqrt(dot(to_lamp, to_lamp))) / d2;
             const double measured = map.irradiance.photometric_mean(i, j);
             const double se = map.irradiance.photometric_standard_error(i, j);
             worst = std::max(worst, std::fabs(measured / lux - 1));

@@ -3,7 +3,7 @@
 // where neighbouring cells of the spatial hash are most likely to share a slot.
 #include <gtest/gtest.h>
 
-#include "converters/random.h"
+#include "core/random.h"
 #include "tracer/render/photon_grid.h"
 
 namespace rayset::tracer {
@@ -27,7 +27,7 @@ TEST(BidirectionalPhotonGrid, GatherVisitsEachPhotonWithinTheRadiusOnce) {
         grid.for_each_near(p, [&](const Photon& photon) { ++visits[size_t(photon.power.red)]; });
         for (size_t i = 0; i < photons.size(); ++i) {
             const Vec3 d = photons[i].position - p;
-            const int expected = analytic::dot(d, d) <= radius * radius ? 1 : 0;
+            const int expected = dot(d, d) <= radius * radius ? 1 : 0;
             ASSERT_EQ(visits[i], expected) << "photon " << i << " at point " << p.x << "," << p.y << "," << p.z;
         }
     }

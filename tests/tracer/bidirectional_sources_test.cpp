@@ -11,21 +11,20 @@
 #include <gtest/gtest.h>
 
 #include "converters/analytic_sources.h"
-#include "converters/error.h"
 #include "converters/synth.h"
+#include "core/error.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 #include "support/test_support.h"
-#include "tracer/tracer_support.h"
 #include "tracer/render/ray_sources.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
+#include "tracer/tracer_support.h"
 
 namespace rayset::tracer {
 namespace {
 
-using analytic::kPi;
 
 constexpr double kDiskRadius = 1, kDiskFlux = 1;  // mm, W
 
@@ -100,7 +99,7 @@ TEST(BidirectionalDisk, PrimaryIlluminanceMatchesClosedForm) {
         for (int i = 0; i < primary.irradiance.nx(); ++i) {
             const Vec3 p = primary.cell_centre(i, j), q{p.x, p.z, H};
             const double truth = 1e6 * disk_truth().irradiance(q, {0, 0, -1});  // W/m^2
-            const Vec3 w = analytic::normalized(q);
+            const Vec3 w = normalized(q);
             const double model_truth = truth * model.intensity(w) / disk_truth().intensity(w);
             const double measured = luminance_weight(primary.irradiance.mean(i, j));
             const double se = primary.irradiance.photometric_standard_error(i, j) / kLumensPerWatt;
@@ -138,20 +137,20 @@ TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
     const RenderResult r = render(render_scene, settings);
     const Film& direct = r.layers[0].film;
     const Camera& c = description.camera;
-    const double pixel_area = analytic::length(c.right) / settings.width * analytic::length(c.up) / settings.height;
-    const double focal = analytic::length(c.direction);
+    const double pixel_area = length(c.right) / settings.width * length(c.up) / settings.height;
+    const double focal = length(c.direction);
     double irradiance = 0, inner_sum = 0;
     int inner = 0;
     for (int y = 0; y < settings.height; ++y)
         for (int x = 0; x < settings.width; ++x) {
             const double s = (x + 0.5) / settings.width - 0.5, t = 0.5 - (y + 0.5) / settings.height;
             const Vec3 d = c.direction + s * c.right + t * c.up;
-            const double distance = analytic::length(d), cos_theta = focal / distance;
+            const double distance = length(d), cos_theta = focal / distance;
             const double solid_angle = pixel_area * focal / (distance * distance * distance);
             const double L = luminance_weight(direct.mean(x, y));  // W/(m^2 sr)
             irradiance += L * solid_angle * cos_theta;
             // Where the pixel's footprint on the disk plane lies within 0.7 radii of the centre.
-            const double footprint = D * std::sqrt(s * s * analytic::dot(c.right, c.right) + t * t * analytic::dot(c.up, c.up)) / focal;
+            const double footprint = D * std::sqrt(s * s * dot(c.right, c.right) + t * t * dot(c.up, c.up)) / focal;
             if (footprint < 0.7 * kDiskRadius) inner_sum += L, ++inner;
         }
     const double radiance_truth = 1e6 * kDiskFlux / (kPi * kPi * kDiskRadius * kDiskRadius);
@@ -190,13 +189,13 @@ TEST(BidirectionalDisk, CameraSeesTheDiskInAMirror) {
     settings.width = settings.height = 64, settings.passes = 16, settings.seed = 8;
     const RenderResult r = render(render_scene, settings);
     const Camera& c = description.camera;
-    const double pixel_area = analytic::length(c.right) / settings.width * analytic::length(c.up) / settings.height;
-    const double focal = analytic::length(c.direction);
+    const double pixel_area = length(c.right) / settings.width * length(c.up) / settings.height;
+    const double focal = length(c.direction);
     double irradiance = 0;
     for (int y = 0; y < settings.height; ++y)
         for (int x = 0; x < settings.width; ++x) {
             const double s = (x + 0.5) / settings.width - 0.5, t = 0.5 - (y + 0.5) / settings.height;
-            const double distance = analytic::length(c.direction + s * c.right + t * c.up);
+            const double distance = length(c.direction + s * c.right + t * c.up);
             irradiance += luminance_weight(r.layers[0].film.mean(x, y)) * pixel_area * focal * focal / std::pow(distance, 4);
         }
     const lightmodel::ComplexSource model(

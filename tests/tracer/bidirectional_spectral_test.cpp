@@ -21,11 +21,11 @@
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 #include "support/test_support.h"
-#include "tracer/tracer_support.h"
 #include "tracer/render/renderer.h"
 #include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/spectrum.h"
 #include "tracer/scene_language/scene_language.h"
+#include "tracer/tracer_support.h"
 
 namespace rayset::tracer {
 namespace {
@@ -161,7 +161,7 @@ TEST(SpectralSource, RadianceSpectrumHasTheLuminanceOfTheColour) {
     for (const auto& m : models) {
         const lightmodel::ComplexSource source(m);
         for (const Vec3 origin : {Vec3{0, 0, 20}, Vec3{0.3, -0.2, 10}, Vec3{5, 5, 30}}) {
-            const Vec3 dir = analytic::normalized(Vec3{0.1, 0.05, 0} - origin);
+            const Vec3 dir = normalized(Vec3{0.1, 0.05, 0} - origin);
             const double rgb_luminance = lightmodel::luminance(source.L_colour(origin, dir, {}));
             double spectral_luminance = 0;
             for (double first = kLambdaMin; first < kLambdaMax; first += 4) {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "converters/error.h"
-#include "converters/random.h"
+#include "core/error.h"
+#include "core/random.h"
 #include "tracer/render/material.h"
 #include "tracer/scene_language/scene_language.h"
 
@@ -109,8 +109,8 @@ TEST(RenderMaterial, SamplingAgreesWithEvaluation) {
                 EXPECT_NEAR(s.pdf, bsdf.pdf(s.wi), 1e-9 * s.pdf);
             }
             s1 += a, q1 += a * a;
-            const double z = rng.uniform(), phi = 2 * analytic::kPi * rng.uniform(), r = std::sqrt(1 - z * z);
-            const double b = bsdf.eval({r * std::cos(phi), r * std::sin(phi), z}).red * 2 * analytic::kPi;
+            const double z = rng.uniform(), phi = 2 * kPi * rng.uniform(), r = std::sqrt(1 - z * z);
+            const double b = bsdf.eval({r * std::cos(phi), r * std::sin(phi), z}).red * 2 * kPi;
             s2 += b, q2 += b * b;
         }
         const double m1 = s1 / count, m2 = s2 / count;

@@ -70,7 +70,7 @@ TEST(RenderFurnace, PointLightInWhiteSphereMatchesClosedForm) {
     )", settings);
     double mean = 0, se = 0;
     image_mean(r.film, mean, se);
-    const double expected = albedo * intensity / (analytic::kPi * radius_m * radius_m * (1 - albedo));
+    const double expected = albedo * intensity / (kPi * radius_m * radius_m * (1 - albedo));
     EXPECT_LT(se, 0.01 * expected);
     EXPECT_NEAR(mean, expected, kZ * se) << "standard error " << se;
 }
@@ -127,7 +127,7 @@ TEST(RenderPointLight, ReceiverOnPlaneRecordsInverseSquareCosine) {
         for (int i = 0; i < 9; ++i) {
             const Vec3 p = map.cell_centre(i, j);
             const Vec3 to_light = Vec3{100, 1000, -50} - p;
-            const double d_m = analytic::length(to_light) / 1000, cos_theta = to_light.y / analytic::length(to_light);
+            const double d_m = length(to_light) / 1000, cos_theta = to_light.y / length(to_light);
             const double expected = 683 * 2 * cos_theta / (d_m * d_m);
             EXPECT_NEAR(map.irradiance.photometric_mean(i, j), expected,
                         kZ * map.irradiance.photometric_standard_error(i, j) + 1e-9 * expected)
@@ -145,7 +145,7 @@ TEST(RenderPointLight, CameraSeesAPlaneWithLambertsLuminance) {
     // whole pixel sample (before the fix here, 17% of them on the plane).
     RenderSettings settings;
     settings.width = settings.height = 8, settings.passes = 16, settings.seed = 2;
-    const double expected = 0.7 / analytic::kPi * 2 / (1.0 * 1.0);
+    const double expected = 0.7 / kPi * 2 / (1.0 * 1.0);
     for (const char* surface : {"plane { z, 0 pigment { rgb 0.7 } finish { diffuse 1 } }",
                                 "plane { -z, 0 pigment { rgb 0.7 } finish { diffuse 1 } }",
                                 "box { <-100, -100, 0>, <100, 100, 10> pigment { rgb 0.7 } finish { diffuse 1 } }"}) {
@@ -235,7 +235,7 @@ TEST(RenderAreaLight, TwoSidedRectangleEmitsHalfItsPowerEachWay) {
         illuminance_receiver { <-1, -400, -1>, <0, 0, 2>, <2, 0, 0> resolution <1, 1> name "below" }
         illuminance_receiver { <-1, 400, -1>, <2, 0, 0>, <0, 0, 2> resolution <1, 1> name "above" }
     )", settings);
-    const double radiance = 4 * analytic::kPi / (2 * analytic::kPi * 100 * 100);
+    const double radiance = 4 * kPi / (2 * kPi * 100 * 100);
     const std::vector<Vec3> facing_down{{-50, 0, -50}, {50, 0, -50}, {50, 0, 50}, {-50, 0, 50}};
     const std::vector<Vec3> facing_up{{-50, 0, -50}, {-50, 0, 50}, {50, 0, 50}, {50, 0, -50}};
     const double below = 683e6 * analytic::polygon_irradiance(radiance, facing_down, {0, -400, 0}, {0, 1, 0});

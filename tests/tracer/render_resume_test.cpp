@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "converters/analytic_sources.h"
-#include "converters/error.h"
 #include "converters/synth.h"
+#include "core/error.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 #include "support/test_support.h"

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "support/test_support.h"
 #include "tracer/render/camera.h"
 #include "tracer/render/render_scene.h"
@@ -22,7 +22,7 @@ struct Scene {
     SurfaceHit hit(Vec3 o, Vec3 d, RayKind kind = RayKind::indirect) const {
         SurfaceHit h;
         h.object = -2;
-        if (!scene.intersect(o, analytic::normalized(d), 0, kInf, kind, h)) h.object = -1;
+        if (!scene.intersect(o, normalized(d), 0, kInf, kind, h)) h.object = -1;
         return h;
     }
     RenderScene scene;
@@ -47,7 +47,7 @@ TEST(RenderScene, NonUniformlyScaledSphereIsAnEllipsoid) {
     h = s.hit({0, 0, 0}, target);
     ASSERT_EQ(h.object, 0);
     expect_vec(h.point, target, 1e-5);
-    expect_vec(h.normal, analytic::normalized({target.x / 4, target.y, 4 * (target.z - 10)}), 1e-5);
+    expect_vec(h.normal, normalized({target.x / 4, target.y, 4 * (target.z - 10)}), 1e-5);
 }
 
 TEST(RenderScene, RotatedBoxHasOutwardNormals) {
@@ -64,7 +64,7 @@ TEST(RenderScene, RotatedBoxHasOutwardNormals) {
         const Vec3 o{20 * std::cos(a), 0.2, 10 + 20 * std::sin(a)};
         const SurfaceHit g = s.hit(o, Vec3{0, 0, 10} - o);
         ASSERT_EQ(g.object, 0);
-        EXPECT_LT(analytic::dot(g.normal, Vec3{0, 0, 10} - o), 0) << "angle " << a;
+        EXPECT_LT(dot(g.normal, Vec3{0, 0, 10} - o), 0) << "angle " << a;
     }
 }
 
@@ -75,7 +75,7 @@ TEST(RenderScene, PlaneIsInfiniteUserGeometry) {
     ASSERT_EQ(h.object, 0);
     // Embree keeps the hit distance in float: t ~ 3003 is exact to 2^-24 t = 1.8e-4.
     EXPECT_NEAR(h.point.y, 2 * std::sqrt(2.0), 3003 * std::ldexp(1.0, -24));
-    expect_vec(h.normal, analytic::normalized({0, 1, 1}), 1e-12);
+    expect_vec(h.normal, normalized({0, 1, 1}), 1e-12);
 }
 
 TEST(RenderScene, MeshInstancesShareOnePrototype) {
@@ -106,7 +106,7 @@ TEST(RenderScene, Mesh2NormalsAreInterpolated) {
     ASSERT_EQ(h.object, 0);
     // (-0.5, -0.5) = a + u (b - a) + v (c - a) with u = 1/8, v = 1/4: weights 5/8, 1/8, 1/4
     // -> (-0.5, 0, -1).
-    expect_vec(h.shading_normal, analytic::normalized({-0.5, 0, -1}), 1e-5);
+    expect_vec(h.shading_normal, normalized({-0.5, 0, -1}), 1e-5);
     expect_vec(h.normal, {0, 0, std::copysign(1.0, h.normal.z)}, 1e-9);
 }
 
@@ -140,9 +140,9 @@ TEST(RenderCamera, PovRayFrameAndMirroredRight) {
     PerspectiveCamera camera(c, 100, 50);
     expect_vec(camera.ray(50, 25).direction, {0, 0, 1}, 1e-12);
     // Image left edge, top row: direction + (-0.5) right + 0.5 up.
-    expect_vec(camera.ray(0, 0).direction, analytic::normalized({-0.665, 0.5, 1}), 1e-12);
+    expect_vec(camera.ray(0, 0).direction, normalized({-0.665, 0.5, 1}), 1e-12);
     c.right = {-1, 0, 0};  // cornell.pov's right <-1,0,0>: the image's left is +x
-    expect_vec(PerspectiveCamera(c, 100, 50).ray(0, 25).direction, analytic::normalized({0.5, 0, 1}), 1e-12);
+    expect_vec(PerspectiveCamera(c, 100, 50).ray(0, 25).direction, normalized({0.5, 0, 1}), 1e-12);
 }
 
 // The message of the error a scene gives the renderer, or "no error".

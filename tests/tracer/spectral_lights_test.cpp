@@ -73,7 +73,7 @@ std::string floor_scene(const std::string& light, const std::string& floor) {
 // I cos / d^2 per unit intensity at a cell centre (m^-2).
 double inverse_square_cosine(const ReceiverMap& map, int i, int j) {
     const Vec3 to_light = Vec3{100, 1000, -50} - map.cell_centre(i, j);
-    const double d_m = analytic::length(to_light) / 1000, cos_theta = to_light.y / analytic::length(to_light);
+    const double d_m = length(to_light) / 1000, cos_theta = to_light.y / length(to_light);
     return cos_theta / (d_m * d_m);
 }
 

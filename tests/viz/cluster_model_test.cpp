@@ -156,7 +156,7 @@ TEST(ClusterModelViews, CentreCellDiagramIsTheLambertianLobe) {
     const double radius_z = pole[2];
     EXPECT_NEAR(pole[0], 0, 1e-12);
     EXPECT_NEAR(pole[1], 0, 1e-12);
-    const double expected = cell_flux / analytic::kPi;
+    const double expected = cell_flux / kPi;
     const double sigma = std::sqrt(2.25 / (0.0975 * rays) + 0.25 / (0.0925 * rays));
     RecordProperty("pole_ratio", std::to_string(radius_z / expected));
     RecordProperty("pole_bound", std::to_string(4 * sigma));
@@ -169,7 +169,7 @@ TEST(ClusterModelViews, CentreCellDiagramIsTheLambertianLobe) {
     // 2 u du = 2 cos(theta) / 40 of the rays; sigma of a band mean is 1 / sqrt(that count), 4 sigma.
     vtkDataArray* intensity = diagram->GetPointData()->GetArray("intensity");
     for (int ring : {15, 30}) {
-        const double theta = analytic::kPi * ring / 90;
+        const double theta = kPi * ring / 90;
         double mean = 0;
         for (int i = 0; i < 72; ++i) mean += intensity->GetComponent(1 + (ring - 1) * 72 + i, 0) / 72;
         const double band_rays = rays * 2 * std::cos(theta) / 40;
@@ -193,7 +193,7 @@ TEST(ClusterModelViews, DiagramsAddUpToTheClusterIntensity) {
     }
     EXPECT_EQ(diagrams, int(cluster.model->diagrams.size()));
     const double truth = cluster.truth->intensity({0, 0, 1});
-    EXPECT_NEAR(truth, 1 / analytic::kPi, 1e-12);
+    EXPECT_NEAR(truth, 1 / kPi, 1e-12);
     const double sigma = std::sqrt(2.25 / (0.0975 * 1e6) + 0.25 / (0.0925 * 1e6));
     RecordProperty("sum_ratio", std::to_string(sum / truth));
     RecordProperty("sum_bound", std::to_string(4 * sigma));

@@ -54,7 +54,7 @@ struct ReceiverMap {
         return receiver.corner + ((i + 0.5) / receiver.nx) * receiver.edge1 + ((j + 0.5) / receiver.ny) * receiver.edge2;
     }
     // Unit normal of the side the receiver records light from: cross(edge1, edge2).
-    Vec3 front_normal() const { return analytic::normalized(analytic::cross(receiver.edge1, receiver.edge2)); }
+    Vec3 front_normal() const { return normalized(cross(receiver.edge1, receiver.edge2)); }
 };
 
 }  // namespace rayset::tracer

@@ -14,7 +14,7 @@
 #include <fmt/format.h>
 #include <png.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 
 namespace rayset::tracer {
 

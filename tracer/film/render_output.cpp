@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "tracer/film/image_writers.h"
 #include "tracer/film/staged_files.h"
 

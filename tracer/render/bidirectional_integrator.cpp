@@ -13,7 +13,6 @@ namespace rayset::tracer {
 
 namespace {
 
-using analytic::dot;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Photons count at a point only if they landed on a surface facing nearly the same way, so
 // that light on a neighbouring wall near a corner is not spread onto this one.

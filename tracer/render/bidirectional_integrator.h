@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "converters/random.h"
+#include "core/random.h"
 #include "tracer/render/photon_grid.h"
 #include "tracer/render/ray_sources.h"
 #include "tracer/render/render_scene.h"

@@ -19,7 +19,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "converters/progress.h"
+#include "core/progress.h"
 #include "tracer/render/bidirectional_integrator.h"
 #include "tracer/render/camera.h"
 #include "tracer/render/path_integrator.h"

@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 
 namespace rayset::tracer {
 
@@ -47,7 +47,7 @@ PerspectiveCamera::PerspectiveCamera(const Camera& camera, int width, int height
 CameraRay PerspectiveCamera::ray(double x, double y) const {
     const double s = x / width_, t = y / height_;
     const Vec3 d = camera_.direction + (s - 0.5) * camera_.right + (0.5 - t) * camera_.up;
-    return {camera_.location, analytic::normalized(d)};
+    return {camera_.location, normalized(d)};
 }
 
 }  // namespace rayset::tracer

@@ -6,15 +6,11 @@
 
 #include <fmt/format.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "tracer/render/sampling.h"
 
 namespace rayset::tracer {
 
-using analytic::cross;
-using analytic::dot;
-using analytic::length;
-using analytic::normalized;
 
 namespace {
 

@@ -5,12 +5,10 @@
 
 #include <fmt/format.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 
 namespace rayset::tracer {
 
-using analytic::dot;
-using analytic::normalized;
 
 namespace {
 

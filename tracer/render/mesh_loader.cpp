@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 
 namespace rayset::tracer {
 

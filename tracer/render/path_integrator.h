@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "converters/random.h"
+#include "core/random.h"
 #include "tracer/render/render_scene.h"
 
 namespace rayset::tracer {

@@ -55,7 +55,7 @@ public:
             for (uint32_t k = start_[slots[s]]; k < start_[slots[s] + 1]; ++k) {
                 const Photon& photon = photons_[k];
                 const Vec3 d = photon.position - p;
-                if (analytic::dot(d, d) <= r2) f(photon);
+                if (dot(d, d) <= r2) f(photon);
             }
         }
     }

@@ -10,7 +10,6 @@
 
 namespace rayset::tracer {
 
-using analytic::dot;
 
 namespace {
 

@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
-#include "converters/error.h"
 #include "converters/ray_stream.h"
 #include "converters/spectrum.h"
+#include "core/error.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
@@ -19,8 +19,6 @@ namespace rayset::tracer {
 
 namespace {
 
-using analytic::dot;
-using analytic::length;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Uniform scale of a transform that keeps angles (rotation times a scale), or 0 if it does not.
@@ -95,7 +93,7 @@ std::optional<SourceLiSampleOf<SampledSpectrum>> PlacedRaySource::sample_Li(Vec3
     const auto s = emitter_->sample_Li(to_local_.point(ref), u_cell, u_voxel, u_point, {}, &query);
     if (!s) return std::nullopt;
     SourceLiSampleOf<SampledSpectrum> out;
-    out.wi = analytic::normalized(to_world_.vector(s->wi));
+    out.wi = normalized(to_world_.vector(s->wi));
     out.distance = s->distance * k_;
     out.Li = radiance_scale_ * spectrum_of(query);
     out.pdf = s->pdf;
@@ -107,7 +105,7 @@ std::optional<SourceLiSample> PlacedRaySource::sample_Li(Vec3 ref, double u_cell
     const auto s = emitter_->sample_Li(to_local_.point(ref), u_cell, u_voxel, u_point);
     if (!s) return std::nullopt;
     SourceLiSample out;
-    out.wi = analytic::normalized(to_world_.vector(s->wi));
+    out.wi = normalized(to_world_.vector(s->wi));
     out.distance = s->distance * k_;
     out.Li = radiance_scale_ * to_rgb(s->Li_colour);
     out.pdf = s->pdf;  // a conformal map keeps solid angles
@@ -120,14 +118,14 @@ double PlacedRaySource::pdf_Li(Vec3 ref, Vec3 wi) const {
 
 SourcePhoton PlacedRaySource::sample_Le(const double u[7]) const {
     const lightmodel::LeSample s = emitter_->sample_Le(u);
-    return {to_world_.point(s.origin), analytic::normalized(to_world_.vector(s.direction)), to_rgb(s.flux_colour), {}};
+    return {to_world_.point(s.origin), normalized(to_world_.vector(s.direction)), to_rgb(s.flux_colour), {}};
 }
 
 SourcePhotonOf<SampledSpectrum> PlacedRaySource::sample_Le(const double u[7], double u_wavelength) const {
     const lightmodel::LeSample s = emitter_->sample_Le(u);
     SourcePhotonOf<SampledSpectrum> out;
     out.origin = to_world_.point(s.origin);
-    out.direction = analytic::normalized(to_world_.vector(s.direction));
+    out.direction = normalized(to_world_.vector(s.direction));
     const double luminance = lightmodel::luminance(s.flux_colour);
     if (s.spectrum && !s.spectrum->is_zero()) {
         out.wavelengths = SampledWavelengths::sample(*s.spectrum, u_wavelength);

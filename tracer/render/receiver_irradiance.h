@@ -6,7 +6,7 @@
 // come in as callables.
 #pragma once
 
-#include "converters/random.h"
+#include "core/random.h"
 #include "tracer/render/material.h"
 #include "tracer/render/spectrum.h"
 

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "tracer/render/camera.h"
 #include "tracer/render/scene_geometry.h"
 
@@ -115,7 +115,7 @@ RenderScene::~RenderScene() {
 Vec3 RenderScene::offset(Vec3 point, Vec3 normal, Vec3 direction) const {
     const double scale = std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
     const double e = epsilon_ + 1e-6 * scale;  // float rounding of Embree's hit points
-    return point + (analytic::dot(direction, normal) >= 0 ? e : -e) * normal;
+    return point + (dot(direction, normal) >= 0 ? e : -e) * normal;
 }
 
 bool RenderScene::intersect(Vec3 origin, Vec3 direction, double t_near, double t_far, RayKind kind, SurfaceHit& hit) const {

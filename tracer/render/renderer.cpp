@@ -9,9 +9,9 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "converters/error.h"
-#include "converters/progress.h"
-#include "converters/random.h"
+#include "core/error.h"
+#include "core/progress.h"
+#include "core/random.h"
 #include "tracer/render/camera.h"
 #include "tracer/render/path_integrator.h"
 #include "tracer/render/ray_sources.h"

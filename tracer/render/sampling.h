@@ -9,13 +9,11 @@
 
 namespace rayset::tracer {
 
-using analytic::kPi;
-using analytic::Vec3;
 
 // An orthonormal frame around a unit normal: local (x, y, z) with z the normal.
 struct Frame {
     Vec3 s, t, n;
-    explicit Frame(Vec3 normal) : n(normal) { analytic::orthonormal_basis(normal, s, t); }
+    explicit Frame(Vec3 normal) : n(normal) { orthonormal_basis(normal, s, t); }
     Vec3 to_world(Vec3 v) const { return v.x * s + v.y * t + v.z * n; }
 };
 
@@ -40,6 +38,6 @@ inline double power_heuristic(double pdf_a, double pdf_b) {
     return a + b > 0 ? a / (a + b) : 0;
 }
 
-inline Vec3 reflect(Vec3 wo, Vec3 n) { return 2 * analytic::dot(wo, n) * n - wo; }
+inline Vec3 reflect(Vec3 wo, Vec3 n) { return 2 * dot(wo, n) * n - wo; }
 
 }  // namespace rayset::tracer

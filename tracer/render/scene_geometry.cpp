@@ -11,14 +11,11 @@
 
 #include <fmt/format.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "tracer/render/mesh_loader.h"
 
 namespace rayset::tracer {
 
-using analytic::cross;
-using analytic::length;
-using analytic::normalized;
 
 namespace {
 
@@ -195,7 +192,7 @@ private:
             prim.sphere = false;
             prim.object = k;
             prim.normal = normalized(m.normal(plane->normal));
-            prim.distance = analytic::dot(prim.normal, m.point(plane->distance * plane->normal));
+            prim.distance = dot(prim.normal, m.point(plane->distance * plane->normal));
             quadrics.quadrics.push_back(prim);
         } else if (const auto* triangle = std::get_if<TriangleShape>(&o.shape)) {
             add_triangle(k, m, inverse, triangle->a, triangle->b, triangle->c, leaf, soup);
@@ -324,7 +321,7 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
     // Embree hands t back in float: at a distance t the point may miss the plane by t x 6e-8,
     // more than the offset of a scene whose only geometry is an infinite plane (extent 1), and
     // its shadow rays would then start behind the plane. Put the point back on the plane.
-    if (!prim.sphere) hit.point = hit.point - (analytic::dot(prim.normal, hit.point) - prim.distance) * prim.normal;
+    if (!prim.sphere) hit.point = hit.point - (dot(prim.normal, hit.point) - prim.distance) * prim.normal;
     hit.normal = prim.sphere ? unit_or_up(transpose_times(prim.world_to_unit, prim.world_to_unit.point(hit.point))) : prim.normal;
     hit.shading_normal = hit.normal;
 }

@@ -18,7 +18,7 @@
 #include <cmath>
 #include <type_traits>
 
-#include "converters/random.h"
+#include "core/random.h"
 #include "lightmodel/emission_spectrum.h"
 #include "tracer/render/rgb.h"
 

@@ -284,7 +284,7 @@ void apply_angle(Parser& p, Camera& camera, const CameraItems& items) {
     if (length(camera.direction) == 0)
         p.fail(items.angle_token, "the camera direction is zero: 'angle' cannot set its length");
     camera.angle = *items.angle;
-    const double half_angle = *items.angle * analytic::kPi / 360.0;
+    const double half_angle = *items.angle * kPi / 360.0;
     const double direction_length = length(camera.right) / std::tan(half_angle) / 2.0;
     camera.direction = direction_length * normalized(camera.direction);
 }

@@ -7,6 +7,7 @@
 // offsets) the departure is kept and said in a comment.
 #include "tracer/scene_language/internal_functions.h"
 
+#include "core/geometry.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -14,7 +15,6 @@
 namespace rayset::tracer {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kSqrt3 = 1.73205080756887729353;
 
 double sqr(double v) { return v * v; }

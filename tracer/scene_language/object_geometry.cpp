@@ -21,7 +21,7 @@
 #include <cmath>
 #include <optional>
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "tracer/scene_language/object_grammar.h"
 
 namespace rayset::tracer {

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "tracer/scene_language/source_location.h"
 
 namespace rayset::tracer {

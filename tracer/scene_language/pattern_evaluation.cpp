@@ -11,6 +11,7 @@
 // layout of brick, hexagon, square and triangular, and the order of map lookups.
 #include <cmath>
 
+#include "core/geometry.h"
 #include "tracer/scene_language/appearance_grammar.h"
 #include "tracer/scene_language/functions.h"
 #include "tracer/scene_language/object_tree.h"
@@ -18,7 +19,6 @@
 namespace rayset::tracer {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 double fraction(double v) { return v - std::floor(v); }
 

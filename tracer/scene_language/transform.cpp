@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "converters/error.h"
+#include "core/error.h"
 
 namespace rayset::tracer {
 
@@ -81,7 +81,7 @@ Matrix4 scaling(Vec3 factors) {
 }
 
 Matrix4 pov_rotation(Vec3 degrees) {
-    const double to_radians = analytic::kPi / 180.0;
+    const double to_radians = kPi / 180.0;
     const double ax = degrees.x * to_radians, ay = degrees.y * to_radians,
                  az = degrees.z * to_radians;
     Matrix4 rx, ry, rz;
@@ -96,7 +96,7 @@ Matrix4 pov_rotation(Vec3 degrees) {
 
 Matrix4 axis_rotation(Vec3 axis, double degrees) {
     const Vec3 k = normalized(axis);
-    const double angle = degrees * analytic::kPi / 180.0, c = std::cos(angle), s = std::sin(angle);
+    const double angle = degrees * kPi / 180.0, c = std::cos(angle), s = std::sin(angle);
     const double kk[3] = {k.x, k.y, k.z};
     const double cross[3][3] = {{0, -k.z, k.y}, {k.z, 0, -k.x}, {-k.y, k.x, 0}};
     Matrix4 r;

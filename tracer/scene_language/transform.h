@@ -12,7 +12,6 @@
 
 namespace rayset::tracer {
 
-using analytic::Vec3;
 
 struct Matrix4 {
     // Row-major storage of the column-vector matrix: m[4 * row + column].

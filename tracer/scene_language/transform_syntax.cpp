@@ -2,7 +2,7 @@
 // and transform, which compose in writing order, and transform { ... } blocks.
 #include <fmt/format.h>
 
-#include "converters/error.h"
+#include "core/error.h"
 #include "tracer/scene_language/parser.h"
 
 namespace rayset::tracer {

@@ -1,9 +1,9 @@
 // The 14 real IES and EULUMDAT files: figures read off the files by hand, total flux against the
 // lumens the files state, and round trips IES -> IES, LDT -> LDT, IES -> LDT -> IES, LDT -> IES -> LDT.
-#include "converters/error.h"
 #include "converters/eulumdat.h"
 #include "converters/ies.h"
 #include "converters/photometry.h"
+#include "core/error.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

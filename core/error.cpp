@@ -1,4 +1,4 @@
-#include "converters/error.h"
+#include "core/error.h"
 
 namespace rayset {
 

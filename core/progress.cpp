@@ -1,4 +1,4 @@
-#include "converters/progress.h"
+#include "core/progress.h"
 
 #include <algorithm>
 #include <cstdio>
