@@ -297,12 +297,14 @@ DirectionHistogram::Estimate DirectionHistogram::edge_fit(double x, double y, do
     edge_like = false;
     if (!(m0 > 0)) return e;
     const double gradient = std::hypot(m1[0], m1[1]), ratio = gradient / (sigma * m0);
-    if (ratio >= edge_at(kEdgeNear).ratio) return e;  // beyond the edge: no intensity
+    // The bounds of the ratio, computed once.
+    static const double near_ratio = edge_at(kEdgeNear).ratio, far_ratio = edge_at(kEdgeFar).ratio;
+    if (ratio >= near_ratio) return e;  // beyond the edge: no intensity
     const double u1 = gradient > 0 ? m1[0] / gradient : 1, u2 = gradient > 0 ? m1[1] / gradient : 0;
     // a = M0 G(z); each ray of weight k at p adds flux k (A + B s) to it, s = p along the
     // gradient: the fit's equivalent kernel, which carries the rays' noise.
     double a = m0, A = 1, B = 0, spread = 1;
-    if (ratio > edge_at(kEdgeFar).ratio) {
+    if (ratio > far_ratio) {
         const EdgeSolution edge = solve_edge(ratio);
         a = m0 * edge.gain;
         A = edge.gain - edge.gain_slope * edge.ratio / edge.slope;
