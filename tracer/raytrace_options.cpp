@@ -392,8 +392,9 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
         ->check(CLI::PositiveNumber);
     app.add_flag("--naive-sources", o.naive_sources, "Bidirectional: ray sources as their stored rays (the naive "
                                                      "model of the paper's Figure 1) instead of the light model");
-    app.add_flag("--spectral", o.spectral, "Bidirectional: spectral transport (4 hero wavelengths per path and "
-                                           "photon, sources' spectra, RGB materials upsampled) instead of RGB; "
+    app.add_flag("--spectral", o.spectral, "Spectral transport, either integrator (4 hero wavelengths per path "
+                                           "and photon, sources' spectra, RGB lights and materials upsampled) "
+                                           "instead of RGB; "
                                            "also global_settings { spectral on }");
     app.add_flag("--resume", o.resume, "Continue the interrupted render whose checkpoint is OUT.checkpoint (same "
                                        "scene and options), up to --passes or --time in total");

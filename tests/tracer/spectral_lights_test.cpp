@@ -29,8 +29,8 @@ RenderResult render_text(const std::string& text, RenderSettings settings) {
     return render(scene, settings);
 }
 
-std::string with_mode(const std::string& scene, bool spectral) {
-    return std::string("global_settings { integrator \"bidirectional\" spectral ") + (spectral ? "on" : "off") + " }\n" +
+std::string with_mode(const std::string& scene, bool spectral, const std::string& integrator = "bidirectional") {
+    return "global_settings { integrator \"" + integrator + "\" spectral " + (spectral ? "on" : "off") + " }\n" +
            scene;
 }
 
@@ -81,28 +81,37 @@ TEST(SpectralLights, GreyPointLightGivesTheRgbLuxAndInverseSquareCosine) {
     // Light 1 m above a grey floor, a receiver lying on it facing up: E = 683 lm/W x I cos / d^2
     // with I = 2 W/sr. RGB transport is exact (next-event estimation of a point light); the
     // spectral estimate's only noise is the hero wavelengths' (the luminance of D65 x V / pdf
-    // over the four), bounded by kZ of its standard error per cell.
+    // over the four), bounded by kZ of its standard error per cell. Both integrators: the path
+    // tracer is the bidirectional one's estimate of ordinary lights. The path tracer takes one
+    // sample per cell and pass, the bidirectional one about a thousand (its photons / cells):
+    // passes so that the standard errors rest on many samples in both.
     RenderSettings settings;
-    settings.render_image = false, settings.passes = 8, settings.seed = 1;
+    settings.render_image = false, settings.seed = 1;
     const std::string scene = floor_scene("2", "0.7");
-    const RenderResult rgb = render_text(with_mode(scene, false), settings);
-    const RenderResult spectral = render_text(with_mode(scene, true), settings);
-    const ReceiverMap& a = rgb.receivers.at(0);
-    const ReceiverMap& b = spectral.receivers.at(0);
-    double worst_sigma = 0;
-    for (int j = 0; j < 7; ++j)
-        for (int i = 0; i < 9; ++i) {
-            const double expected = 683 * 2 * inverse_square_cosine(a, i, j);
-            const double se = b.irradiance.photometric_standard_error(i, j);
-            EXPECT_NEAR(a.irradiance.photometric_mean(i, j), expected, 1e-9 * expected) << "cell " << i << "," << j;
-            EXPECT_GT(se, 0);
-            EXPECT_NEAR(b.irradiance.photometric_mean(i, j), expected, kZ * se) << "cell " << i << "," << j;
-            worst_sigma = std::max(worst_sigma, std::abs(b.irradiance.photometric_mean(i, j) - expected) / se);
-        }
-    std::printf("grey point light: centre cell RGB %.6g lx, spectral %.6g lx (se %.2g), truth %.6g lx; worst cell "
-                "%.2f standard errors\n",
-                a.irradiance.photometric_mean(4, 3), b.irradiance.photometric_mean(4, 3),
-                b.irradiance.photometric_standard_error(4, 3), 683 * 2 * inverse_square_cosine(a, 4, 3), worst_sigma);
+    for (const char* integrator : {"path", "bidirectional"}) {
+        settings.passes = std::string(integrator) == "path" ? 4096 : 8;
+        const RenderResult rgb = render_text(with_mode(scene, false, integrator), settings);
+        const RenderResult spectral = render_text(with_mode(scene, true, integrator), settings);
+        const ReceiverMap& a = rgb.receivers.at(0);
+        const ReceiverMap& b = spectral.receivers.at(0);
+        double worst_sigma = 0;
+        for (int j = 0; j < 7; ++j)
+            for (int i = 0; i < 9; ++i) {
+                const double expected = 683 * 2 * inverse_square_cosine(a, i, j);
+                const double se = b.irradiance.photometric_standard_error(i, j);
+                EXPECT_NEAR(a.irradiance.photometric_mean(i, j), expected, 1e-9 * expected)
+                    << integrator << " cell " << i << "," << j;
+                EXPECT_GT(se, 0) << integrator;
+                EXPECT_NEAR(b.irradiance.photometric_mean(i, j), expected, kZ * se)
+                    << integrator << " cell " << i << "," << j;
+                worst_sigma = std::max(worst_sigma, std::abs(b.irradiance.photometric_mean(i, j) - expected) / se);
+            }
+        std::printf("%s, grey point light: centre cell RGB %.6g lx, spectral %.6g lx (se %.2g), truth %.6g lx; "
+                    "worst cell %.2f standard errors\n",
+                    integrator, a.irradiance.photometric_mean(4, 3), b.irradiance.photometric_mean(4, 3),
+                    b.irradiance.photometric_standard_error(4, 3), 683 * 2 * inverse_square_cosine(a, 4, 3),
+                    worst_sigma);
+    }
 }
 
 TEST(SpectralLights, ColouredPointLightOnColouredFloorGivesTheUpsampledClosedForms) {

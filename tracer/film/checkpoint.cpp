@@ -194,9 +194,9 @@ CheckpointIdentity checkpoint_identity(const SceneDescription& scene, const Rend
     id.width = settings.width, id.height = settings.height;
     id.seed = settings.seed;
     id.integrator = scene.global.integrator;
-    // Spectral transport is a variant of the bidirectional integrator (--spectral; the scene's
+    // Spectral transport is a variant of its integrator (--spectral; the scene's
     // `spectral on` is in its hash already): named with it, the file format stays as it is.
-    if (id.integrator == "bidirectional" && settings.spectral) id.integrator += " spectral";
+    if (settings.spectral) id.integrator += " spectral";
     id.render_image = settings.render_image;
     id.photons_per_pass = settings.photons_per_pass;
     id.photon_radius = settings.photon_radius;

@@ -14,9 +14,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "core/random.h"
+#include "tracer/render/integrator.h"
 #include "tracer/render/photon_grid.h"
 #include "tracer/render/ray_sources.h"
 #include "tracer/render/render_scene.h"
@@ -92,5 +95,15 @@ private:
     lightmodel::BinnedSpectrum camera_wavelength_density_;  // spectral only
 };
 using BidirectionalIntegrator = BidirectionalIntegratorOf<Rgb>;
+
+// The bidirectional integrator as the renderer's integrator (bidirectional_passes.cpp): its
+// camera pass, then a photon pass and density estimation at the pass's visible points, the
+// gather radius shrinking from pass to pass; lights, emitting surfaces and the background by
+// the path tracer alongside. RGB or spectral transport.
+std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene, const RenderSettings& settings,
+                                                          const RenderResult& start);
+// Its light components: direct visibility of the sources' bodies, primary light (straight
+// from a source to the first smooth surface), secondary light (scattered before).
+const std::vector<std::string>& bidirectional_layers();
 
 }  // namespace rayset::tracer

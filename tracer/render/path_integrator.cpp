@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "tracer/render/receiver_irradiance.h"
+#include "tracer/render/renderer.h"
 
 namespace rayset::tracer {
 
@@ -121,5 +122,30 @@ Q PathIntegratorOf<Q>::trace(PathState& s, const Wavelengths& wavelengths, Pcg32
 
 template class PathIntegratorOf<Rgb>;
 template class PathIntegratorOf<SampledSpectrum>;
+
+namespace {
+
+template <class Q>
+class PathTracing : public Integrator {
+public:
+    explicit PathTracing(const RenderScene& scene) : path_(scene) {}
+    void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng, uint64_t& rays) const override {
+        sink.add(0, path_.radiance(ray.origin, ray.direction, rng, rays));
+    }
+    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng, uint64_t& rays) const override {
+        sink.add(0, path_.irradiance(point, normal, rng, rays));
+    }
+
+private:
+    PathIntegratorOf<Q> path_;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene, const RenderSettings& settings,
+                                                 const RenderResult&) {
+    if (spectral_transport(scene, settings)) return std::make_unique<PathTracing<SampledSpectrum>>(scene);
+    return std::make_unique<PathTracing<Rgb>>(scene);
+}
 
 }  // namespace rayset::tracer

@@ -9,9 +9,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/random.h"
+#include "tracer/render/integrator.h"
 #include "tracer/render/render_scene.h"
 
 namespace rayset::tracer {
@@ -54,5 +56,10 @@ private:
     lightmodel::BinnedSpectrum wavelength_density_;  // spectral only
 };
 using PathIntegrator = PathIntegratorOf<Rgb>;
+
+// The path tracer as the renderer's integrator: one radiance sample per camera ray, one
+// irradiance sample per receiver sample, no layers; RGB or spectral transport.
+std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene, const RenderSettings& settings,
+                                                 const RenderResult& start);
 
 }  // namespace rayset::tracer

@@ -1,9 +1,10 @@
-// Progressive passes over tiles and receiver cells (see renderer.h).
+// The progressive pass driver over an integrator (see renderer.h, integrator.h).
 #include "tracer/render/renderer.h"
 
 #include <atomic>
 #include <chrono>
 #include <limits>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -13,8 +14,7 @@
 #include "core/progress.h"
 #include "core/random.h"
 #include "tracer/render/camera.h"
-#include "tracer/render/path_integrator.h"
-#include "tracer/render/ray_sources.h"
+#include "tracer/render/integrator.h"
 
 namespace rayset::tracer {
 
@@ -28,57 +28,118 @@ uint64_t pass_seed(uint64_t seed, int pass) {
 
 namespace {
 
-struct PassContext {
-    const RenderScene& scene;
-    const PathIntegrator& integrator;
-    const PerspectiveCamera& camera;
-    const RenderSettings& settings;
-    double to_si;  // internal radiance/irradiance -> per square metre
-};
+// The one progressive pass loop: an integrator's samples at every sample point, pass after
+// pass, each pass added to the films only once complete, so that an abandoned pass leaves
+// no trace.
+class PassDriver {
+public:
+    PassDriver(const RenderScene& scene, const RenderSettings& settings, Integrator& integrator,
+               const std::vector<ReceiverMap>& receivers, StopFlag stop)
+        : integrator_(integrator),
+          camera_(scene.description().camera, settings.width, settings.height),
+          points_(settings, receivers),
+          samples_(integrator.samples_per_pass()),
+          weight_(1.0 / samples_),
+          to_si_(scene.units().per_square_metre()),
+          seed_(settings.seed),
+          stop_(stop) {}
 
-// One pass's samples, written by index (pixel, then receiver cell) and added to the grids only
-// once the pass is complete, so that an abandoned pass leaves no trace.
-void render_pass_image(const PassContext& c, std::vector<Rgb>& image, uint64_t seed, std::atomic<uint64_t>& rays,
-                       const RenderControl& control) {
-    const int tile = c.settings.tile_size, w = c.settings.width, h = c.settings.height;
-    const int tiles_x = (w + tile - 1) / tile, tiles_y = (h + tile - 1) / tile;
-    tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y), [&](const tbb::blocked_range<int>& range) {
-        uint64_t counted = 0;
-        for (int t = range.begin(); t != range.end() && !stop_requested(control); ++t) {
-            const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
-            for (int y = y0; y < std::min(h, y0 + tile); ++y)
-                for (int x = x0; x < std::min(w, x0 + tile); ++x) {
-                    Pcg32 rng(seed, uint64_t(y) * w + x);
-                    const double px = x + rng.uniform_float(), py = y + rng.uniform_float();
-                    const CameraRay ray = c.camera.ray(px, py);
-                    image[size_t(y) * w + x] = c.to_si * c.integrator.radiance(ray.origin, ray.direction, rng, counted);
-                }
+    // Pass `pass` within `arena`: its values, or nothing when it was stopped.
+    std::optional<PassValues> render_pass(tbb::task_arena& arena, int pass, int components,
+                                          std::atomic<uint64_t>& rays) {
+        PassValues values(components, points_.size());
+        integrator_.begin_pass(pass, points_);
+        const uint64_t seed = pass_seed(seed_, pass);
+        arena.execute([&] {
+            camera_samples(values, seed, rays);
+            receiver_samples(values, seed, rays);
+            if (!stopped(stop_)) integrator_.end_pass(pass, points_, values, rays, stop_);
+        });
+        if (stopped(stop_)) return std::nullopt;  // the pass may be incomplete: abandoned
+        return values;
+    }
+
+    // The pass's values into the film, the receivers and the layers, in SI units.
+    void add(const PassValues& values, RenderResult& result) const {
+        for (size_t p = 0; p < points_.pixels(); ++p) {
+            const int x = int(p % size_t(points_.width)), y = int(p / size_t(points_.width));
+            add_point(values, p, result.film, [&](size_t l) -> SampleGrid& { return result.layers[l].film; }, x, y);
         }
-        rays += counted;
-    });
-}
+        for (size_t r = 0; r < result.receivers.size(); ++r) {
+            const int nx = result.receivers[r].irradiance.nx(), ny = result.receivers[r].irradiance.ny();
+            const size_t first = points_.pixels() + points_.receiver_first[r];
+            for (int k = 0; k < nx * ny; ++k)
+                add_point(values, first + size_t(k), result.receivers[r].irradiance,
+                          [&](size_t l) -> SampleGrid& { return result.layers[l].receivers[r].irradiance; },
+                          k % nx, k / nx);
+        }
+        if (points_.pixels() > 0) {
+            result.film.finish_pass();
+            for (RenderLayer& layer : result.layers) layer.film.finish_pass();
+        }
+        for (ReceiverMap& map : result.receivers) map.irradiance.finish_pass();
+        for (RenderLayer& layer : result.layers)
+            for (ReceiverMap& map : layer.receivers) map.irradiance.finish_pass();
+    }
 
-void render_pass_receivers(const PassContext& c, const std::vector<ReceiverMap>& maps, std::vector<Rgb>& cells,
-                           uint64_t seed, std::atomic<uint64_t>& rays, const RenderControl& control) {
-    uint64_t stream = uint64_t(c.settings.width) * c.settings.height;
-    size_t first = 0;
-    for (const ReceiverMap& map : maps) {
-        const int nx = map.irradiance.nx(), ny = map.irradiance.ny();
-        const Vec3 normal = map.front_normal();
-        tbb::parallel_for(tbb::blocked_range<int>(0, nx * ny), [&](const tbb::blocked_range<int>& range) {
-            if (stop_requested(control)) return;
+private:
+    template <class LayerGrid>
+    void add_point(const PassValues& values, size_t i, SampleGrid& total, LayerGrid&& layer, int x, int y) const {
+        for (size_t l = 0; l + 1 < values.components.size(); ++l)
+            layer(l).add(x, y, to_si_ * values.components[l][i]);
+        total.add(x, y, to_si_ * values.total(i));
+    }
+
+    void camera_samples(PassValues& values, uint64_t seed, std::atomic<uint64_t>& rays) const {
+        const int w = points_.width, h = points_.height, tile = points_.tile_size, tiles_x = points_.tiles_x();
+        tbb::parallel_for(tbb::blocked_range<int>(0, points_.tiles()), [&](const tbb::blocked_range<int>& range) {
             uint64_t counted = 0;
-            for (int k = range.begin(); k != range.end(); ++k) {
-                Pcg32 rng(seed, stream + uint64_t(k));
-                const Rgb e = c.integrator.irradiance(map.cell_centre(k % nx, k / nx), normal, rng, counted);
-                cells[first + size_t(k)] = c.to_si * e;
+            for (int t = range.begin(); t != range.end() && !stopped(stop_); ++t) {
+                const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
+                for (int y = y0; y < std::min(h, y0 + tile); ++y)
+                    for (int x = x0; x < std::min(w, x0 + tile); ++x) {
+                        const size_t p = size_t(y) * w + x;
+                        Pcg32 rng(seed, p);
+                        const SampleSink sink{values, p, t, weight_};
+                        for (int k = 0; k < samples_; ++k) {
+                            const double px = x + rng.uniform_float(), py = y + rng.uniform_float();
+                            integrator_.camera_sample(camera_.ray(px, py), sink, rng, counted);
+                        }
+                    }
             }
             rays += counted;
         });
-        stream += uint64_t(nx) * ny;
-        first += size_t(nx) * ny;
     }
-}
+
+    void receiver_samples(PassValues& values, uint64_t seed, std::atomic<uint64_t>& rays) const {
+        for (size_t r = 0; r < points_.receivers->size(); ++r) {
+            const ReceiverMap& map = (*points_.receivers)[r];
+            const int nx = map.irradiance.nx(), ny = map.irradiance.ny();
+            const Vec3 normal = map.front_normal();
+            const size_t first = points_.receiver_first[r];
+            tbb::parallel_for(tbb::blocked_range<int>(0, nx * ny), [&](const tbb::blocked_range<int>& range) {
+                if (stopped(stop_)) return;
+                uint64_t counted = 0;
+                for (int k = range.begin(); k != range.end(); ++k) {
+                    const size_t c = first + size_t(k);
+                    Pcg32 rng(seed, points_.first_cell_stream + c);
+                    const SampleSink sink{values, points_.pixels() + c, -1, weight_};
+                    const Vec3 point = map.cell_centre(k % nx, k / nx);
+                    for (int n = 0; n < samples_; ++n) integrator_.receiver_sample(point, normal, sink, rng, counted);
+                }
+                rays += counted;
+            });
+        }
+    }
+
+    Integrator& integrator_;
+    const PerspectiveCamera camera_;
+    const SamplePoints points_;
+    const int samples_;
+    const double weight_, to_si_;
+    const uint64_t seed_;
+    const StopFlag stop_;
+};
 
 bool same_layout(const SampleGrid& a, const SampleGrid& b) { return a.nx() == b.nx() && a.ny() == b.ny(); }
 
@@ -101,9 +162,8 @@ RenderResult blank_render(const SceneDescription& scene, const RenderSettings& s
     RenderResult result;
     result.film = blank_film();
     result.receivers = blank_maps();
-    if (scene.global.integrator == "bidirectional")
-        for (const char* name : {"direct_visibility", "primary", "secondary"})
-            result.layers.push_back({name, blank_film(), blank_maps()});
+    for (const std::string& name : integrator_layers(scene.global.integrator))
+        result.layers.push_back({name, blank_film(), blank_maps()});
     return result;
 }
 
@@ -144,42 +204,21 @@ double PassBudget::fraction_done(int passes_done) const {
 
 RenderResult render(const RenderScene& scene, const RenderSettings& settings, RenderResult start,
                     const RenderControl& control) {
-    if (scene.description().global.integrator == "bidirectional")
-        return render_bidirectional(scene, RaySourceSet(scene.description(), settings.naive_sources), settings,
-                                    std::move(start), control);
     RenderResult result = starting_state(scene, settings, std::move(start));
+    const std::unique_ptr<Integrator> integrator = make_integrator(scene, settings, result);
+    result.samples_per_pass = integrator->samples_per_pass();
     const PassBudget budget(settings, result.seconds);
-    const PerspectiveCamera camera(scene.description().camera, settings.width, settings.height);
-    const PathIntegrator integrator(scene);
-    const PassContext context{scene, integrator, camera, settings, scene.units().per_square_metre()};
-
-    std::vector<Rgb> image(settings.render_image ? size_t(settings.width) * settings.height : 0);
-    size_t cells = 0;
-    for (const ReceiverMap& map : result.receivers) cells += size_t(map.irradiance.nx()) * map.irradiance.ny();
-    std::vector<Rgb> cell_values(cells);
-
+    PassDriver driver(scene, settings, *integrator, result.receivers, control.stop);
+    const int components = int(result.layers.size()) + 1;
     tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
     ProgressBar progress("rendering", settings.progress);
     while (!stop_requested(control) && budget.allows_another(result.passes)) {
-        const uint64_t seed = pass_seed(settings.seed, result.passes);
         std::atomic<uint64_t> rays{0};
-        arena.execute([&] {
-            if (settings.render_image) render_pass_image(context, image, seed, rays, control);
-            render_pass_receivers(context, result.receivers, cell_values, seed, rays, control);
-        });
-        if (stop_requested(control)) break;  // the pass may be incomplete: abandoned
-        if (settings.render_image) {
-            for (size_t p = 0; p < image.size(); ++p) result.film.add(int(p % settings.width), int(p / settings.width), image[p]);
-            result.film.finish_pass();
-        }
-        size_t first = 0;
-        for (ReceiverMap& map : result.receivers) {
-            const int nx = map.irradiance.nx(), ny = map.irradiance.ny();
-            for (int k = 0; k < nx * ny; ++k) map.irradiance.add(k % nx, k / nx, cell_values[first + size_t(k)]);
-            map.irradiance.finish_pass();
-            first += size_t(nx) * ny;
-        }
+        const std::optional<PassValues> pass = driver.render_pass(arena, result.passes, components, rays);
+        if (!pass) break;
+        driver.add(*pass, result);
         ++result.passes;
+        integrator->pass_completed(result);
         result.rays += rays;
         result.seconds = budget.elapsed();
         if (control.after_pass) control.after_pass(result);

@@ -1,7 +1,9 @@
-// The progressive renderer: passes of one sample per pixel and per receiver cell (the
-// bidirectional one takes several when its photons outnumber them), tiles spread over TBB threads, a pass or time budget and a progress bar. Every pixel and cell draws from
-// its own PCG32 stream (stream = pixel index, seed mixed with the pass number), so an image
-// depends on the seed and the number of passes only, not on threads or timing.
+// The progressive renderer: one pass driver over the scene's integrator (integrator.h). A pass
+// takes the integrator's samples at every pixel and receiver cell, tiles spread over TBB
+// threads; a pass or time budget, checkpoints after passes, a progress bar. Every pixel and
+// cell draws from its own PCG32 stream (stream = sample point, seed mixed with the pass
+// number), so an image depends on the seed and the number of passes only, not on threads or
+// timing.
 #pragma once
 
 #include <atomic>
@@ -26,7 +28,7 @@ struct RenderSettings {
     bool progress = false;          // progress bar on stderr (when it is a terminal)
     int tile_size = 16;
     static constexpr int kDefaultPasses = 16;
-    // Bidirectional integrator (bidirectional_renderer.cpp).
+    // Bidirectional integrator (bidirectional_passes.cpp).
     int photons_per_pass = 0;   // 0: the camera samples of a pass (pixels + receiver cells), at least 65536;
                                 // a pass takes photons / (pixels + cells) samples per pixel and cell, at least 1
     double photon_radius = 0;   // gather radius of the first pass, scene units; 0: 1/100 of the
@@ -68,17 +70,17 @@ struct RenderControl {
 };
 
 // The state before the first pass: zeroed film (when settings.render_image), receiver maps
-// and, for the bidirectional integrator, its layers.
+// and the integrator's layers.
 RenderResult blank_render(const SceneDescription& scene, const RenderSettings& settings);
 
-// The scene's integrator: global_settings { integrator "path" } (default) or "bidirectional".
+// Renders with the scene's integrator (make_integrator, integrator.h).
 // `start`: a state to continue (from a checkpoint of the same scene and settings, or a render
 // stopped earlier); with start.passes == 0 the render starts afresh. Pass budgets count
 // start's passes and seconds: a continued render ends where an uninterrupted one would.
 RenderResult render(const RenderScene& scene, const RenderSettings& settings, RenderResult start = {},
                     const RenderControl& control = {});
 
-// The budget both renderers keep: `passes`, else passes until `time_limit`, else
+// The budget of a render: `passes`, else passes until `time_limit`, else
 // kDefaultPasses; checked between passes. The clock starts at construction, from
 // `seconds_before` (the time a continued render has already spent).
 class PassBudget {
@@ -96,14 +98,8 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
-class RaySourceSet;
-// Progressive bidirectional render (bidirectional_integrator.h) with the scene's ray sources
-// already loaded; lights, emission and background are added by the path tracer.
-RenderResult render_bidirectional(const RenderScene& scene, const RaySourceSet& sources, const RenderSettings& settings,
-                                  RenderResult start = {}, const RenderControl& control = {});
-
-// Shared by both renderers: `start` if it continues a render (after checking it has the
-// layout of blank_render), else the blank state.
+// `start` if it continues a render (after checking it has the layout of blank_render),
+// else the blank state.
 RenderResult starting_state(const RenderScene& scene, const RenderSettings& settings, RenderResult start);
 inline bool stop_requested(const RenderControl& control) {
     return control.stop && control.stop->load(std::memory_order_relaxed);

@@ -1,0 +1,234 @@
+// The bidirectional integrator over the renderer's passes: the camera samples of a pass keep
+// their visible points, then a photon pass and density estimation at those points.
+//
+// Progressive photon mapping in the probabilistic form of Knaus & Zwicker 2011 ("Progressive
+// photon mapping: a probabilistic approach", ACM TOG 30(3)): every pass has fresh visible
+// points and photons, all gathers of pass i use one radius r_i, and the image is the average
+// of the passes. r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1) with alpha = 2/3 (the rule and value of
+// Hachisuka, Ogaki & Jensen 2008, "Progressive photon mapping"), so both the variance and the
+// bias of the average vanish as passes grow.
+#include "tracer/render/bidirectional_integrator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "tracer/render/path_integrator.h"
+#include "tracer/render/renderer.h"
+
+namespace rayset::tracer {
+
+namespace {
+
+constexpr double kAlpha = 2.0 / 3.0;
+constexpr uint64_t kPhotonBlock = 4096;
+constexpr uint64_t kMinimumPhotons = 65536;
+constexpr uint64_t kPhotonSeedSalt = 0x6A09E667F3BCC909ULL;  // photon streams apart from camera streams
+
+// Lights, emitting surfaces and the background are the path tracer's (in the transport Q of the
+// pass); skip it when there are none.
+bool has_ordinary_light(const RenderScene& scene) {
+    if (!scene.lights().empty() || !is_black(scene.background())) return true;
+    for (size_t i = 0; i < scene.description().objects.size(); ++i)
+        if (!is_black(scene.material(int(i)).emission)) return true;
+    return false;
+}
+
+// The pass values' components: the layers, then light of the path tracer.
+enum Component { kDirectVisibility, kPrimary, kSecondary, kOrdinary };
+
+template <class Point>
+double default_radius(const std::vector<std::vector<Point>>& points, const std::vector<ReceiverMap>& receivers) {
+    // The extent of the middle 90% of the points along each axis: a floor plane seen to its
+    // horizon must not make the radius (and so every gather) as wide as the floor.
+    std::vector<double> coordinates[3];
+    auto add = [&](Vec3 p) {
+        coordinates[0].push_back(p.x), coordinates[1].push_back(p.y), coordinates[2].push_back(p.z);
+    };
+    for (const auto& tile : points)
+        for (const Point& vp : tile) add(vp.point);
+    for (const ReceiverMap& map : receivers)
+        for (int j = 0; j < map.receiver.ny; ++j)
+            for (int i = 0; i < map.receiver.nx; ++i) add(map.cell_centre(i, j));
+    if (coordinates[0].empty()) return 1;
+    double squares = 0;
+    for (std::vector<double>& c : coordinates) {
+        auto at = [&](double fraction) {
+            const auto k = c.begin() + std::ptrdiff_t(fraction * double(c.size() - 1));
+            std::nth_element(c.begin(), k, c.end());
+            return *k;
+        };
+        const double low = at(0.05), high = at(0.95);
+        squares += (high - low) * (high - low);
+    }
+    const double diagonal = std::sqrt(squares);
+    return diagonal > 0 ? diagonal / 100 : 1;
+}
+
+// Camera samples per pixel and receiver cell in one pass: as many as make the pass's camera
+// paths about as many as its photons, at least one.
+int camera_samples_per_pass(uint64_t photons_per_pass, size_t camera_points) {
+    return int(std::max<uint64_t>(1, photons_per_pass / std::max<uint64_t>(1, camera_points)));
+}
+
+// The radius after `passes_done` passes, the last of them gathered with `radius`.
+double shrunk_radius(double radius, int passes_done) { return radius * std::sqrt((passes_done + kAlpha) / (passes_done + 1)); }
+
+template <class Q>
+class BidirectionalPasses : public Integrator {
+public:
+    using Point = VisiblePointOf<Q>;
+    using Photon = PhotonOf<Q>;
+    using Grid = PhotonGridOf<Photon>;
+
+    BidirectionalPasses(const RenderScene& scene, const RenderSettings& settings, const RenderResult& start);
+    int samples_per_pass() const override { return samples_; }
+    void begin_pass(int, const SamplePoints& points) override { visible_.assign(size_t(points.tiles()), {}); }
+    void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng, uint64_t& rays) const override;
+    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng, uint64_t& rays) const override;
+    void end_pass(int pass, const SamplePoints& points, PassValues& values, std::atomic<uint64_t>& rays,
+                  StopFlag stop) override;
+    void pass_completed(RenderResult& result) override;
+
+private:
+    std::vector<Photon> trace_photons(int pass, std::atomic<uint64_t>& rays, StopFlag stop) const;
+    void gather(const SamplePoints& points, const Grid& grid, PassValues& values) const;
+
+    RaySourceSet sources_;
+    BidirectionalIntegratorOf<Q> integrator_;
+    PathIntegratorOf<Q> path_;
+    bool ordinary_;
+    uint64_t seed_;
+    uint64_t photons_per_pass_;
+    int samples_;
+    double radius_;
+    // The pass under way: visible points by tile (each tile's written by one thread), memory.
+    mutable std::vector<std::vector<Point>> visible_;
+    size_t photon_bytes_ = 0, visible_point_bytes_ = 0;
+};
+
+template <class Q>
+BidirectionalPasses<Q>::BidirectionalPasses(const RenderScene& scene, const RenderSettings& settings,
+                                            const RenderResult& start)
+    : sources_(scene.description(), settings.naive_sources),
+      integrator_(scene, sources_),
+      path_(scene),
+      ordinary_(has_ordinary_light(scene)),
+      seed_(settings.seed) {
+    size_t points = settings.render_image ? size_t(settings.width) * settings.height : 0;
+    for (const IlluminanceReceiver& r : scene.description().receivers) points += size_t(r.nx) * r.ny;
+    photons_per_pass_ = settings.photons_per_pass > 0 ? uint64_t(settings.photons_per_pass)
+                                                      : std::max<uint64_t>(kMinimumPhotons, points);
+    // Camera work balanced against photon work: a small image or a receiver-only render takes
+    // several samples per pixel and cell in each pass rather than leave the photon pass (and its
+    // fixed cost) to dominate; the primary light and antialiasing converge that much faster.
+    samples_ = camera_samples_per_pass(photons_per_pass_, points);
+    // A continued render goes on from the radius its last pass used.
+    radius_ = start.passes > 0 ? shrunk_radius(start.photon_radius, start.passes) : settings.photon_radius;
+}
+
+template <class Q>
+void BidirectionalPasses<Q>::camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+                                           uint64_t& rays) const {
+    std::vector<Point>& visible = visible_[size_t(sink.tile)];
+    const size_t first_point = visible.size();
+    const CameraSample s =
+        integrator_.camera_path(ray.origin, ray.direction, uint32_t(sink.index), rng, rays, visible);
+    for (size_t v = first_point; v < visible.size(); ++v) visible[v].beta = sink.weight * visible[v].beta;
+    sink.add(kDirectVisibility, s.direct_visibility);
+    sink.add(kPrimary, s.primary);
+    if (ordinary_) sink.add(kOrdinary, path_.radiance(ray.origin, ray.direction, rng, rays));
+}
+
+template <class Q>
+void BidirectionalPasses<Q>::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+                                             uint64_t& rays) const {
+    sink.add(kPrimary, integrator_.receiver_primary(point, normal, rng, rays));
+    if (ordinary_) sink.add(kOrdinary, path_.irradiance(point, normal, rng, rays));
+}
+
+template <class Q>
+void BidirectionalPasses<Q>::end_pass(int pass, const SamplePoints& points, PassValues& values,
+                                      std::atomic<uint64_t>& rays, StopFlag stop) {
+    if (sources_.empty() || points.size() == 0 || stopped(stop)) return;
+    if (!(radius_ > 0)) radius_ = default_radius(visible_, *points.receivers);
+    std::vector<Photon> photons = trace_photons(pass, rays, stop);
+    if (stopped(stop)) return;
+    const Grid grid(std::move(photons), radius_);
+    size_t visible_points = 0;
+    for (const auto& tile_points : visible_) visible_points += tile_points.size();
+    photon_bytes_ = std::max(photon_bytes_, grid.memory_bytes());
+    visible_point_bytes_ = std::max(visible_point_bytes_, visible_points * sizeof(Point));
+    gather(points, grid, values);
+}
+
+// In fixed blocks, so that the photons' order does not depend on threads.
+template <class Q>
+std::vector<typename BidirectionalPasses<Q>::Photon> BidirectionalPasses<Q>::trace_photons(
+    int pass, std::atomic<uint64_t>& rays, StopFlag stop) const {
+    const uint64_t photon_seed = pass_seed(seed_ ^ kPhotonSeedSalt, pass);
+    const size_t blocks = size_t((photons_per_pass_ + kPhotonBlock - 1) / kPhotonBlock);
+    std::vector<std::vector<Photon>> traced(blocks);
+    tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+        if (stopped(stop)) return;
+        uint64_t counted = 0;
+        const uint64_t first = b * kPhotonBlock, count = std::min(kPhotonBlock, photons_per_pass_ - first);
+        traced[b] = integrator_.trace_photons(first, count, photons_per_pass_, photon_seed, counted);
+        rays += counted;
+    });
+    std::vector<Photon> photons;
+    for (auto& block : traced) photons.insert(photons.end(), block.begin(), block.end());
+    return photons;
+}
+
+// Density estimation at the visible points and receiver cells.
+template <class Q>
+void BidirectionalPasses<Q>::gather(const SamplePoints& points, const Grid& grid, PassValues& values) const {
+    std::vector<Rgb>& primary = values.components[kPrimary];
+    std::vector<Rgb>& secondary = values.components[kSecondary];
+    tbb::parallel_for(size_t(0), visible_.size(), [&](size_t t) {
+        for (const Point& vp : visible_[t]) {
+            Rgb direct, scattered;
+            integrator_.gather(vp, grid, direct, scattered);
+            primary[vp.pixel] += direct;
+            secondary[vp.pixel] += scattered;
+        }
+    });
+    for (size_t r = 0; r < points.receivers->size(); ++r) {
+        const ReceiverMap& map = (*points.receivers)[r];
+        const int nx = map.receiver.nx;
+        const Vec3 normal = map.front_normal();
+        tbb::parallel_for(0, nx * map.receiver.ny, [&](int k) {
+            const size_t c = points.pixels() + points.receiver_first[r] + size_t(k);
+            Rgb direct, scattered;
+            integrator_.gather_irradiance(map.cell_centre(k % nx, k / nx), normal, grid, direct, scattered);
+            primary[c] += direct;
+            secondary[c] += scattered;
+        });
+    }
+}
+
+template <class Q>
+void BidirectionalPasses<Q>::pass_completed(RenderResult& result) {
+    result.photons += sources_.empty() ? 0 : photons_per_pass_;
+    result.photon_radius = radius_;
+    result.photon_bytes = std::max(result.photon_bytes, photon_bytes_);
+    result.visible_point_bytes = std::max(result.visible_point_bytes, visible_point_bytes_);
+    radius_ = shrunk_radius(radius_, result.passes);
+}
+
+}  // namespace
+
+const std::vector<std::string>& bidirectional_layers() {
+    static const std::vector<std::string> names = {"direct_visibility", "primary", "secondary"};
+    return names;
+}
+
+std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene, const RenderSettings& settings,
+                                                          const RenderResult& start) {
+    if (spectral_transport(scene, settings)) return std::make_unique<BidirectionalPasses<SampledSpectrum>>(scene, settings, start);
+    return std::make_unique<BidirectionalPasses<Rgb>>(scene, settings, start);
+}
+
+}  // namespace rayset::tracer

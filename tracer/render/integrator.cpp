@@ -1,0 +1,71 @@
+// The integrators by name, and the records the pass driver shares with them (integrator.h).
+#include "tracer/render/integrator.h"
+
+#include "core/error.h"
+#include "tracer/render/bidirectional_integrator.h"
+#include "tracer/render/path_integrator.h"
+#include "tracer/render/renderer.h"
+
+namespace rayset::tracer {
+
+namespace {
+
+struct IntegratorEntry {
+    const char* name;
+    std::vector<std::string> layers;
+    std::unique_ptr<Integrator> (*make)(const RenderScene&, const RenderSettings&, const RenderResult&);
+};
+
+const std::vector<IntegratorEntry>& integrators() {
+    static const std::vector<IntegratorEntry> entries = {
+        {"path", {}, make_path_integrator},
+        {"bidirectional", bidirectional_layers(), make_bidirectional_integrator},
+    };
+    return entries;
+}
+
+const IntegratorEntry& integrator_named(const std::string& name) {
+    for (const IntegratorEntry& entry : integrators())
+        if (name == entry.name) return entry;
+    throw Error("unknown integrator \"" + name + "\" (path or bidirectional)");
+}
+
+}  // namespace
+
+SamplePoints::SamplePoints(const RenderSettings& settings, const std::vector<ReceiverMap>& receivers)
+    : width(settings.render_image ? settings.width : 0),
+      height(settings.render_image ? settings.height : 0),
+      tile_size(settings.tile_size),
+      first_cell_stream(uint64_t(settings.width) * settings.height),
+      receivers(&receivers) {
+    size_t first = 0;
+    for (const ReceiverMap& map : receivers)
+        receiver_first.push_back(first), first += size_t(map.irradiance.nx()) * map.irradiance.ny();
+}
+
+size_t SamplePoints::cells() const {
+    if (receivers->empty()) return 0;
+    const SampleGrid& last = receivers->back().irradiance;
+    return receiver_first.back() + size_t(last.nx()) * last.ny();
+}
+
+PassValues::PassValues(int components, size_t points) : components(size_t(components), std::vector<Rgb>(points)) {}
+
+Rgb PassValues::total(size_t i) const {
+    Rgb sum = components[0][i];
+    for (size_t c = 1; c < components.size(); ++c) sum += components[c][i];
+    return sum;
+}
+
+std::unique_ptr<Integrator> make_integrator(const RenderScene& scene, const RenderSettings& settings,
+                                            const RenderResult& start) {
+    return integrator_named(scene.description().global.integrator).make(scene, settings, start);
+}
+
+std::vector<std::string> integrator_layers(const std::string& name) { return integrator_named(name).layers; }
+
+bool spectral_transport(const RenderScene& scene, const RenderSettings& settings) {
+    return settings.spectral || scene.description().global.spectral;
+}
+
+}  // namespace rayset::tracer

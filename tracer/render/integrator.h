@@ -1,0 +1,106 @@
+// The integrator interface: what one light-transport algorithm computes, for the one pass
+// driver (renderer.h) that owns tiles, receivers, films, layers, budget, checkpoints and
+// progress.
+//
+// A pass draws samples_per_pass() camera samples at every pixel and receiver cell, each from
+// the random stream of its sample point; every sample adds its light to the pass's values,
+// split into the integrator's components. Then the integrator may finish the pass with work
+// over all of it (the bidirectional integrator traces photons and gathers them at the
+// pass's visible points). The driver adds the pass to the films only once it is complete.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/random.h"
+#include "tracer/film/film.h"
+#include "tracer/render/camera.h"
+
+namespace rayset::tracer {
+
+class RenderScene;
+struct RenderSettings;
+struct RenderResult;
+
+// The sample points of a pass: the pixels (when the image is rendered) in row order, then the
+// receiver cells, receiver after receiver, row by row. Pixel p draws from random stream p,
+// receiver cell c from stream first_cell_stream + c.
+struct SamplePoints {
+    int width = 0, height = 0;  // the image; 0 x 0 for a receivers-only render
+    int tile_size = 16;
+    uint64_t first_cell_stream = 0;  // the image size, rendered or not
+    const std::vector<ReceiverMap>* receivers = nullptr;
+    std::vector<size_t> receiver_first;  // index of each receiver's first cell among the cells
+
+    SamplePoints(const RenderSettings& settings, const std::vector<ReceiverMap>& receivers);
+    size_t pixels() const { return size_t(width) * height; }
+    size_t cells() const;
+    size_t size() const { return pixels() + cells(); }
+    int tiles_x() const { return (width + tile_size - 1) / tile_size; }
+    int tiles() const { return tiles_x() * ((height + tile_size - 1) / tile_size); }
+};
+
+// A pass's light at every sample point, renderer units: one array per component.
+struct PassValues {
+    std::vector<std::vector<Rgb>> components;
+    PassValues(int components, size_t points);
+    // The light of point i: the sum of its components in their order.
+    Rgb total(size_t i) const;
+};
+
+// Where one camera sample's light goes: sample point `index` (of tile `tile` for a pixel, -1
+// for a receiver cell), each value weighted by 1 / samples per pass.
+struct SampleSink {
+    PassValues& values;
+    size_t index;
+    int tile;
+    double weight;
+    void add(int component, Rgb value) const { values.components[size_t(component)][index] += weight * value; }
+};
+
+// Once true, the pass under way is abandoned (RenderControl::stop).
+using StopFlag = const std::atomic<bool>*;
+inline bool stopped(StopFlag stop) { return stop && stop->load(std::memory_order_relaxed); }
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+
+    // The pass values hold one component per layer of the integrator (integrator_layers), in
+    // that order, and one more, the last, for light in no layer; the film holds their sum.
+
+    // Camera samples per pixel and receiver cell in each pass.
+    virtual int samples_per_pass() const { return 1; }
+
+    // Before a pass's samples (on the driver's thread).
+    virtual void begin_pass(int /*pass*/, const SamplePoints& /*points*/) {}
+    // One camera ray's light (and whatever the integrator keeps of it for end_pass). Called
+    // concurrently for different tiles and receiver cells.
+    virtual void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+                               uint64_t& rays) const = 0;
+    // One sample of the irradiance at a receiver cell's centre `point`, from the side `normal`
+    // points into. Called concurrently for different cells.
+    virtual void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+                                 uint64_t& rays) const = 0;
+    // After every sample of the pass: work over the whole pass, inside the driver's thread
+    // arena; returns early (the pass is then dropped) once `stop` is set.
+    virtual void end_pass(int /*pass*/, const SamplePoints& /*points*/, PassValues& /*values*/,
+                          std::atomic<uint64_t>& /*rays*/, StopFlag /*stop*/) {}
+    // The pass is complete and added: the integrator's own figures into `result`.
+    virtual void pass_completed(RenderResult& /*result*/) {}
+};
+
+// The integrators by the name global_settings { integrator NAME } gives: "path" (the
+// default) or "bidirectional". `start`: the state a continued render goes on from.
+std::unique_ptr<Integrator> make_integrator(const RenderScene& scene, const RenderSettings& settings,
+                                            const RenderResult& start);
+// The light components the integrator of that name keeps apart, each written out as a layer
+// (its own image and receiver maps); known before the scene is built (checkpoints).
+std::vector<std::string> integrator_layers(const std::string& name);
+// Whether paths carry spectra (--spectral or global_settings { spectral on }) or RGB.
+bool spectral_transport(const RenderScene& scene, const RenderSettings& settings);
+
+}  // namespace rayset::tracer
