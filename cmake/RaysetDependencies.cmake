@@ -17,6 +17,8 @@ find_package(Ceres 2.1 REQUIRED)
 list(APPEND CMAKE_MODULE_PATH "/usr/lib/x86_64-linux-gnu/cmake/OpenVDB")
 find_package(OpenVDB REQUIRED)
 find_package(embree 3 REQUIRED)
+# Open MPI: raytrace renders across processes when an MPI launcher starts it.
+find_package(MPI REQUIRED COMPONENTS C)
 find_package(OpenEXR 3 CONFIG REQUIRED)
 find_package(VTK 9.1 REQUIRED COMPONENTS
   CommonCore CommonDataModel FiltersCore FiltersSources FiltersGeneral

@@ -11,6 +11,7 @@
 #include "tracer/film/render_output.h"
 #include "tracer/raytrace_options.h"
 #include "tracer/raytrace_resume.h"
+#include "tracer/render/processes.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
 
@@ -77,6 +78,16 @@ std::vector<std::string> write_all_outputs(const RenderResult& result, const Out
     return written;
 }
 
+// A process other than the root of an MPI job renders its share of the passes; the root
+// reads the checkpoint, writes every file and says what happened.
+int render_share(const RenderScene& scene, const RenderSettings& settings) {
+    const InterruptSignals interrupt;
+    RenderControl control;
+    control.stop = &interrupt.flag();
+    render(scene, settings, {}, control);
+    return interrupt.signal() ? interrupt.exit_code() : 0;
+}
+
 int run(int argc, char** argv) {
     RaytraceOptions options;
     int exit_code = 0;
@@ -98,6 +109,10 @@ int run(int argc, char** argv) {
                              "per run; +SF chooses it)\n",
                      frames.first_frame, frames.first_frame, frames.last_frame);
     const SceneDescription description = parse_scene_file(options.scene, parse_options);
+    const Processes& processes = Processes::world();
+    if (!processes.is_root()) options.quiet = true;
+    if (processes.size() > 1 && (options.parse_only || options.bench))
+        throw Error("--parse-only and --bench run in one process: start raytrace without mpirun for them");
     if (options.parse_only) {
         fmt::print("{}: {} objects, {} lights, {} ray sources, {} receivers, {}; {} files read\n",
                    options.scene, description.objects.size(), description.lights.size(),
@@ -121,6 +136,7 @@ int run(int argc, char** argv) {
         return 0;
     }
     const OutputRequest request = output_request(options);
+    if (!processes.is_root()) return render_share(scene, settings);
     for (const std::string& target : {request.exr, request.png}) {  // fail before, not after, the render
         const fs::path folder = fs::path(target).parent_path();
         if (!target.empty() && !folder.empty() && !fs::is_directory(folder))
@@ -147,6 +163,7 @@ int run(int argc, char** argv) {
     const InterruptSignals interrupt;  // SIGINT, SIGTERM: stop between or within passes
     RenderControl control;
     control.after_pass = [&](const RenderResult& state) { checkpoints.after_pass(state); };
+    control.wants_state = [&] { return checkpoints.due(); };
     control.stop = &interrupt.flag();
     const RenderResult result = render(scene, settings, std::move(start), control);
     if (interrupt.signal() && result.passes == 0) {
@@ -184,6 +201,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    const MpiSession mpi(&argc, &argv);
     try {
         return run(argc, argv);
     } catch (const rayset::Error& e) {
@@ -191,5 +209,7 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
         std::fprintf(stderr, "raytrace: internal error: %s\n", e.what());
     }
+    // The other processes of an MPI job would wait for this one forever.
+    if (Processes::world().size() > 1) Processes::world().abort(1);
     return 1;
 }

@@ -64,9 +64,13 @@ CheckpointSchedule::CheckpointSchedule(std::string path, CheckpointIdentity iden
       passes_on_disk_(passes_on_disk),
       last_write_(std::chrono::steady_clock::now()) {}
 
-void CheckpointSchedule::after_pass(const RenderResult& state) {
+bool CheckpointSchedule::due() const {
     const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_write_).count();
-    if (passes_on_disk_ > 0 && since < interval_) return;
+    return passes_on_disk_ == 0 || since >= interval_;
+}
+
+void CheckpointSchedule::after_pass(const RenderResult& state) {
+    if (!due()) return;
     try {
         write(state);
     } catch (const Error& e) {

@@ -23,6 +23,18 @@ SampleGrid SampleGrid::restored(int nx, int ny, int samples, std::vector<Rgb> su
     return grid;
 }
 
+void SampleGrid::append_accumulators(std::vector<double>& out) const {
+    out.push_back(samples_);
+    for (const Rgb& s : sum_) out.insert(out.end(), {s.red, s.green, s.blue});
+    out.insert(out.end(), photometric_squares_.begin(), photometric_squares_.end());
+}
+
+void SampleGrid::add_accumulators(const double*& in) {
+    samples_ += int(*in++);
+    for (Rgb& s : sum_) s += Rgb{in[0], in[1], in[2]}, in += 3;
+    for (double& square : photometric_squares_) square += *in++;
+}
+
 Rgb SampleGrid::mean(int x, int y) const {
     return samples_ ? (1.0 / samples_) * sum_[size_t(y) * nx_ + x] : Rgb{};
 }

@@ -32,6 +32,11 @@ public:
     double photometric_mean(int x, int y) const { return photometric(mean(x, y)); }
     // Standard error of photometric_mean from the spread of the samples (0 with one sample).
     double photometric_standard_error(int x, int y) const;
+    // The accumulators as numbers (samples, sums, squares) appended to `out`, and another such
+    // grid's numbers, read from `in` (advanced past them), added to these: how processes
+    // that rendered different passes of one render combine them.
+    void append_accumulators(std::vector<double>& out) const;
+    void add_accumulators(const double*& in);
     // The accumulators themselves, row by row: what a checkpoint stores.
     const std::vector<Rgb>& sums() const { return sum_; }
     const std::vector<double>& photometric_squares() const { return photometric_squares_; }

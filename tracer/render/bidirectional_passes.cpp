@@ -90,8 +90,13 @@ public:
     void end_pass(int pass, const SamplePoints& points, PassValues& values, std::atomic<uint64_t>& rays,
                   StopFlag stop) override;
     void pass_completed(RenderResult& result) override;
+    bool first_pass_sets_outcome() const override { return !sources_.empty() && !(base_radius_ > 0); }
+    std::vector<double> first_pass_outcome() const override { return {base_radius_}; }
+    void set_first_pass_outcome(const std::vector<double>& outcome) override { base_radius_ = outcome.at(0); }
 
 private:
+    // The gather radius of a pass: shrinking pass after pass from that of pass base_pass_.
+    double radius(int pass) const;
     std::vector<Photon> trace_photons(int pass, std::atomic<uint64_t>& rays, StopFlag stop) const;
     void gather(const SamplePoints& points, const Grid& grid, PassValues& values) const;
 
@@ -102,7 +107,8 @@ private:
     uint64_t seed_;
     uint64_t photons_per_pass_;
     int samples_;
-    double radius_;
+    int base_pass_;
+    double base_radius_;  // 0 until the first pass's visible points give it
     // The pass under way: visible points by tile (each tile's written by one thread), memory.
     mutable std::vector<std::vector<Point>> visible_;
     size_t photon_bytes_ = 0, visible_point_bytes_ = 0;
@@ -125,7 +131,15 @@ BidirectionalPasses<Q>::BidirectionalPasses(const RenderScene& scene, const Rend
     // fixed cost) to dominate; the primary light and antialiasing converge that much faster.
     samples_ = camera_samples_per_pass(photons_per_pass_, points);
     // A continued render goes on from the radius its last pass used.
-    radius_ = start.passes > 0 ? shrunk_radius(start.photon_radius, start.passes) : settings.photon_radius;
+    base_pass_ = start.passes;
+    base_radius_ = start.passes > 0 ? shrunk_radius(start.photon_radius, start.passes) : settings.photon_radius;
+}
+
+template <class Q>
+double BidirectionalPasses<Q>::radius(int pass) const {
+    double r = base_radius_;
+    for (int k = base_pass_ + 1; k <= pass; ++k) r = shrunk_radius(r, k);
+    return r;
 }
 
 template <class Q>
@@ -152,10 +166,10 @@ template <class Q>
 void BidirectionalPasses<Q>::end_pass(int pass, const SamplePoints& points, PassValues& values,
                                       std::atomic<uint64_t>& rays, StopFlag stop) {
     if (sources_.empty() || points.size() == 0 || stopped(stop)) return;
-    if (!(radius_ > 0)) radius_ = default_radius(visible_, *points.receivers);
+    if (!(base_radius_ > 0)) base_radius_ = default_radius(visible_, *points.receivers);
     std::vector<Photon> photons = trace_photons(pass, rays, stop);
     if (stopped(stop)) return;
-    const Grid grid(std::move(photons), radius_);
+    const Grid grid(std::move(photons), radius(pass));
     size_t visible_points = 0;
     for (const auto& tile_points : visible_) visible_points += tile_points.size();
     photon_bytes_ = std::max(photon_bytes_, grid.memory_bytes());
@@ -212,10 +226,9 @@ void BidirectionalPasses<Q>::gather(const SamplePoints& points, const Grid& grid
 template <class Q>
 void BidirectionalPasses<Q>::pass_completed(RenderResult& result) {
     result.photons += sources_.empty() ? 0 : photons_per_pass_;
-    result.photon_radius = radius_;
+    result.photon_radius = radius(result.passes - 1);
     result.photon_bytes = std::max(result.photon_bytes, photon_bytes_);
     result.visible_point_bytes = std::max(result.visible_point_bytes, visible_point_bytes_);
-    radius_ = shrunk_radius(radius_, result.passes);
 }
 
 }  // namespace

@@ -89,8 +89,16 @@ public:
     // arena; returns early (the pass is then dropped) once `stop` is set.
     virtual void end_pass(int /*pass*/, const SamplePoints& /*points*/, PassValues& /*values*/,
                           std::atomic<uint64_t>& /*rays*/, StopFlag /*stop*/) {}
-    // The pass is complete and added: the integrator's own figures into `result`.
+    // Pass result.passes - 1 is complete (rendered here or by another process): the
+    // integrator's own figures into `result`.
     virtual void pass_completed(RenderResult& /*result*/) {}
+
+    // Whether passes after the first take something from it (the bidirectional integrator's
+    // gather radius, derived from the first pass's visible points unless given); a process
+    // that did not render the first pass is then handed first_pass_outcome().
+    virtual bool first_pass_sets_outcome() const { return false; }
+    virtual std::vector<double> first_pass_outcome() const { return {}; }
+    virtual void set_first_pass_outcome(const std::vector<double>& /*outcome*/) {}
 };
 
 // The integrators by the name global_settings { integrator NAME } gives: "path" (the

@@ -15,6 +15,7 @@
 #include "core/random.h"
 #include "tracer/render/camera.h"
 #include "tracer/render/integrator.h"
+#include "tracer/render/processes.h"
 
 namespace rayset::tracer {
 
@@ -202,30 +203,110 @@ double PassBudget::fraction_done(int passes_done) const {
     return std::min(1.0, fraction);
 }
 
+namespace {
+
+// Every grid of a render, in one order on every process.
+template <class Result, class F>
+void for_each_grid(Result& result, F&& f) {
+    f(result.film);
+    for (auto& map : result.receivers) f(map.irradiance);
+    for (auto& layer : result.layers) {
+        f(layer.film);
+        for (auto& map : layer.receivers) f(map.irradiance);
+    }
+}
+
+// The render as a whole at the root: every process's passes summed (Processes::sum_at_root:
+// the same bits for a given number of processes), rays too. Several processes only; the
+// others get their own share back.
+RenderResult combined(const Processes& processes, const RenderResult& local, RenderResult blank) {
+    std::vector<double> numbers{double(local.rays)};  // exact below 2^53
+    for_each_grid(local, [&](const SampleGrid& g) { g.append_accumulators(numbers); });
+    processes.sum_at_root(numbers);
+    if (!processes.is_root()) return local;
+    RenderResult total = local;
+    total.film = std::move(blank.film), total.receivers = std::move(blank.receivers);
+    total.layers = std::move(blank.layers);
+    const double* in = numbers.data();
+    total.rays = uint64_t(*in++);
+    for_each_grid(total, [&](SampleGrid& g) { g.add_accumulators(in); });
+    return total;
+}
+
+// Every process starts from the root's passes, radius, photons and time; only the root holds
+// the accumulators of a continued render.
+void share_start(const Processes& processes, RenderResult& result) {
+    std::vector<int64_t> counts{result.passes, int64_t(result.photons)};
+    std::vector<double> figures{result.photon_radius, result.seconds};
+    processes.broadcast(counts);
+    processes.broadcast(figures);
+    result.passes = int(counts[0]), result.photons = uint64_t(counts[1]);
+    result.photon_radius = figures[0], result.seconds = figures[1];
+}
+
+// What the root decides before each round of passes: how many (0: the render ends; at most
+// one per process) and whether after_pass wants the state after them.
+struct Round {
+    int passes = 0;
+    bool report = false;
+};
+
+Round next_round(const Processes& processes, const PassBudget& budget, const Integrator& integrator,
+                 const RenderResult& result, const RenderControl& control) {
+    std::vector<int64_t> decision{0, 0};
+    if (processes.is_root() && !stop_requested(control)) {
+        int passes = 0;
+        while (passes < processes.size() && budget.allows_another(result.passes + passes)) ++passes;
+        // The first pass alone when the others depend on it.
+        if (result.passes == 0 && integrator.first_pass_sets_outcome()) passes = std::min(passes, 1);
+        const bool report = control.after_pass && (!control.wants_state || control.wants_state());
+        decision = {passes, report ? 1 : 0};
+    }
+    processes.broadcast(decision);
+    return {int(decision[0]), decision[1] != 0};
+}
+
+}  // namespace
+
 RenderResult render(const RenderScene& scene, const RenderSettings& settings, RenderResult start,
                     const RenderControl& control) {
-    RenderResult result = starting_state(scene, settings, std::move(start));
+    const Processes& processes = Processes::world();
+    RenderResult result = starting_state(scene, settings, processes.is_root() ? std::move(start) : RenderResult{});
+    share_start(processes, result);
     const std::unique_ptr<Integrator> integrator = make_integrator(scene, settings, result);
     result.samples_per_pass = integrator->samples_per_pass();
     const PassBudget budget(settings, result.seconds);
     PassDriver driver(scene, settings, *integrator, result.receivers, control.stop);
     const int components = int(result.layers.size()) + 1;
     tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
-    ProgressBar progress("rendering", settings.progress);
-    while (!stop_requested(control) && budget.allows_another(result.passes)) {
+    ProgressBar progress("rendering", settings.progress && processes.is_root());
+    // Rounds of passes: process r renders pass (passes done) + r.
+    for (Round round; (round = next_round(processes, budget, *integrator, result, control)).passes > 0;) {
+        const bool renders = processes.rank() < round.passes;
+        const bool sets_outcome = result.passes == 0 && integrator->first_pass_sets_outcome();
         std::atomic<uint64_t> rays{0};
-        const std::optional<PassValues> pass = driver.render_pass(arena, result.passes, components, rays);
-        if (!pass) break;
-        driver.add(*pass, result);
-        ++result.passes;
-        integrator->pass_completed(result);
+        std::optional<PassValues> pass;
+        if (renders) pass = driver.render_pass(arena, result.passes + processes.rank(), components, rays);
+        if (!processes.all(!renders || pass)) break;  // stopped somewhere: the round is dropped
+        if (pass) driver.add(*pass, result);
+        if (sets_outcome) {
+            std::vector<double> outcome = integrator->first_pass_outcome();
+            processes.broadcast(outcome);
+            integrator->set_first_pass_outcome(outcome);
+        }
+        for (int p = 0; p < round.passes; ++p) ++result.passes, integrator->pass_completed(result);
         result.rays += rays;
         result.seconds = budget.elapsed();
-        if (control.after_pass) control.after_pass(result);
+        if (round.report && processes.size() == 1) control.after_pass(result);
+        if (round.report && processes.size() > 1) {
+            const RenderResult state = combined(processes, result, blank_render(scene.description(), settings));
+            if (processes.is_root()) control.after_pass(state);
+        }
         progress.update(budget.fraction_done(result.passes));
     }
     progress.done();
     result.seconds = budget.elapsed();
+    if (processes.size() > 1) result = combined(processes, result, blank_render(scene.description(), settings));
     return result;
 }
 

@@ -64,6 +64,10 @@ struct RenderControl {
     // Called after every completed pass with the state so far (passes, accumulators, rays,
     // photons, radius, seconds): what a checkpoint stores.
     std::function<void(const RenderResult&)> after_pass;
+    // Whether after_pass would use the state after the passes under way (a checkpoint is due);
+    // unset: always. Asked at the root before each round: with several processes the state
+    // is only combined when wanted.
+    std::function<bool()> wants_state;
     // Once true (a signal handler may set it), the pass under way is abandoned and render
     // returns the completed passes.
     const std::atomic<bool>* stop = nullptr;
@@ -73,7 +77,9 @@ struct RenderControl {
 // and the integrator's layers.
 RenderResult blank_render(const SceneDescription& scene, const RenderSettings& settings);
 
-// Renders with the scene's integrator (make_integrator, integrator.h).
+// Renders with the scene's integrator (make_integrator, integrator.h), on every process of
+// Processes::world() (processes.h): each renders its share of the passes, the root returns
+// their combination (the others their own share) and alone calls control.after_pass.
 // `start`: a state to continue (from a checkpoint of the same scene and settings, or a render
 // stopped earlier); with start.passes == 0 the render starts afresh. Pass budgets count
 // start's passes and seconds: a continued render ends where an uninterrupted one would.
