@@ -78,6 +78,10 @@ public:
         return c[0] >= 0 && c[1] >= 0 && c[2] >= 0 && c[0] < dims_[0] && c[1] < dims_[1] && c[2] < dims_[2];
     }
     int64_t linear(const Coord& c) const { return (int64_t(c[2]) * dims_[1] + c[1]) * dims_[0] + c[0]; }
+    Coord coord(int64_t linear) const {
+        return {int32_t(linear % dims_[0]), int32_t(linear / dims_[0] % dims_[1]),
+                int32_t(linear / (int64_t(dims_[0]) * dims_[1]))};
+    }
     Vec3 cell_lower(const Coord& c) const {
         return {origin_.x + c[0] * cell_, origin_.y + c[1] * cell_, origin_.z + c[2] * cell_};
     }

@@ -153,6 +153,7 @@ void describe_metadata(Io& io, Model& model) {
 }
 
 struct MetadataWriter {
+    explicit MetadataWriter(openvdb::MetaMap& meta) : meta(meta) {}
     openvdb::MetaMap& meta;
     std::string options_text;
 
@@ -186,6 +187,7 @@ struct MetadataWriter {
 // Texts, frames and the options are required; the numbers and bins keep their defaults when
 // missing (files written before them).
 struct MetadataReader {
+    MetadataReader(const openvdb::MetaMap& meta, const std::string& path) : meta(meta), path(path) {}
     const openvdb::MetaMap& meta;
     const std::string& path;
     std::map<std::string, long long> option_values;
@@ -234,90 +236,209 @@ struct MetadataReader {
     }
 };
 
-}  // namespace
-
-void write_model(const LightModel& model, const std::string& path) {
-    initialise_openvdb();
-    openvdb::GridPtrVec grids;
-
+// The lattices of the density frame: ray counts of the occupied voxels, the boundary voxels.
+void add_density_grids(const LightModel& model, openvdb::GridPtrVec& grids) {
     auto density = openvdb::FloatGrid::create(0.f);
     density->setName(grid::density);
     density->setTransform(frame_transform(model.density_frame));
     density->setGridClass(openvdb::GRID_FOG_VOLUME);
-    {
-        auto acc = density->getAccessor();
-        for (size_t v = 0; v < model.voxels.size(); ++v)
-            acc.setValue(vdb(model.voxels[v]), model.voxel_density[v]);
-    }
+    auto counts = density->getAccessor();
+    for (size_t v = 0; v < model.voxels.size(); ++v)
+        counts.setValue(vdb(model.voxels[v]), model.voxel_density[v]);
     grids.push_back(density);
 
     auto boundary = openvdb::BoolGrid::create(false);
     boundary->setName(grid::boundary);
     boundary->setTransform(frame_transform(model.density_frame));
-    {
-        auto acc = boundary->getAccessor();
-        for (const Coord& c : model.boundary_voxels) acc.setValue(vdb(c), true);
-    }
+    auto flags = boundary->getAccessor();
+    for (const Coord& c : model.boundary_voxels) flags.setValue(vdb(c), true);
     grids.push_back(boundary);
+}
 
+// The flux cells' radiant (or luminous) and luminous flux and visible fractions, and their
+// spectra as an index-space table: voxel (cell, bin, 0).
+void add_flux_grids(const LightModel& model, openvdb::GridPtrVec& grids) {
     auto flux = openvdb::DoubleGrid::create(0.0);
-    flux->setName(grid::flux);
-    flux->setTransform(frame_transform(model.flux_frame));
     auto luminous = openvdb::DoubleGrid::create(0.0);
-    luminous->setName(grid::luminous);
-    luminous->setTransform(frame_transform(model.flux_frame));
     auto visible = openvdb::FloatGrid::create(1.f);
+    flux->setName(grid::flux);
+    luminous->setName(grid::luminous);
     visible->setName(grid::visible_fraction);
-    visible->setTransform(frame_transform(model.flux_frame));
-    {
-        auto fa = flux->getAccessor();
-        auto la = luminous->getAccessor();
-        auto va = visible->getAccessor();
-        for (const FluxCell& c : model.flux_cells) {
-            fa.setValue(vdb(c.coord), c.flux);
-            la.setValue(vdb(c.coord), c.luminous);
-            va.setValue(vdb(c.coord), float(c.visible_fraction));
-        }
+    for (const openvdb::GridBase::Ptr& g : {openvdb::GridBase::Ptr(flux), openvdb::GridBase::Ptr(luminous),
+                                            openvdb::GridBase::Ptr(visible)}) {
+        g->setTransform(frame_transform(model.flux_frame));
+        grids.push_back(g);
     }
-    grids.push_back(flux);
-    grids.push_back(luminous);
-    grids.push_back(visible);
+    auto fa = flux->getAccessor();
+    auto la = luminous->getAccessor();
+    auto va = visible->getAccessor();
+    for (const FluxCell& c : model.flux_cells) {
+        fa.setValue(vdb(c.coord), c.flux);
+        la.setValue(vdb(c.coord), c.luminous);
+        va.setValue(vdb(c.coord), float(c.visible_fraction));
+    }
 
-    // Index-space tables: voxel (cell, bin, 0) of the spectra, (a, b, diagram) of the diagrams.
     auto spectra = openvdb::FloatGrid::create(0.f);
     spectra->setName(grid::spectra);
-    {
-        auto acc = spectra->getAccessor();
-        for (size_t c = 0; c < model.flux_cells.size(); ++c)
-            for (int b = 0; b < model.bins.count; ++b)
-                acc.setValue(openvdb::Coord(int(c), b, 0),
-                             model.spectra[c * size_t(model.bins.count) + size_t(b)]);
-    }
+    auto sa = spectra->getAccessor();
+    for (size_t c = 0; c < model.flux_cells.size(); ++c)
+        for (int b = 0; b < model.bins.count; ++b)
+            sa.setValue(openvdb::Coord(int(c), b, 0), model.spectra[c * size_t(model.bins.count) + size_t(b)]);
     grids.push_back(spectra);
+}
 
+// Each intensity cell's diagram number, and the diagrams as an index-space table: voxel
+// (a, b, diagram).
+void add_diagram_grids(const LightModel& model, openvdb::GridPtrVec& grids) {
     auto intensity_cell = openvdb::Int32Grid::create(-1);
     intensity_cell->setName(grid::intensity_cell);
     intensity_cell->setTransform(frame_transform(model.intensity_frame));
     auto diagrams = openvdb::FloatGrid::create(0.f);
     diagrams->setName(grid::diagrams);
-    {
-        auto ia = intensity_cell->getAccessor();
-        auto da = diagrams->getAccessor();
-        for (size_t k = 0; k < model.diagrams.size(); ++k) {
-            ia.setValue(vdb(model.diagram_cells[k]), int32_t(k));
-            const std::vector<float> data = model.diagrams[k].serialize();
-            for (size_t i = 0; i < data.size(); ++i)
-                da.setValue(openvdb::Coord(int(i), int(k), 0), data[i]);
-        }
+    auto ia = intensity_cell->getAccessor();
+    auto da = diagrams->getAccessor();
+    for (size_t k = 0; k < model.diagrams.size(); ++k) {
+        ia.setValue(vdb(model.diagram_cells[k]), int32_t(k));
+        const std::vector<float> data = model.diagrams[k].serialize();
+        for (size_t i = 0; i < data.size(); ++i) da.setValue(openvdb::Coord(int(i), int(k), 0), data[i]);
     }
     grids.push_back(intensity_cell);
     grids.push_back(diagrams);
+}
 
+struct ModelFile {
+    openvdb::GridPtrVecPtr grids;
+    openvdb::MetaMap::Ptr meta;
+};
+
+ModelFile open_model_file(const std::string& path) {
+    ModelFile file;
+    try {
+        openvdb::io::File vdb_file(path);
+        vdb_file.open();
+        file.grids = vdb_file.getGrids();
+        file.meta = vdb_file.getMetadata();
+        vdb_file.close();
+    } catch (const std::exception& e) {
+        throw Error(path + ": cannot read as an OpenVDB model file: " + e.what());
+    }
+    auto version = file.meta->getMetadata<openvdb::Int32Metadata>(kVersionKey);
+    if (!version) throw Error(path + ": not a rayset model (no " + kVersionKey + " metadata)");
+    if (version->value() != kModelVersion)
+        throw Error(path + ": model version " + std::to_string(version->value()) +
+                    ", this raymodel reads version " + std::to_string(kModelVersion) +
+                    ": rebuild the model with raymodel build");
+    return file;
+}
+
+// Diagrams, in index order, and the intensity cell of each.
+void read_diagrams(const ModelFile& file, const std::string& path, LightModel& model) {
+    auto intensity_cell = find_grid<openvdb::Int32Grid>(file.grids, grid::intensity_cell, path);
+    auto diagram_grid = find_grid<openvdb::FloatGrid>(file.grids, grid::diagrams, path);
+    std::vector<std::vector<float>> diagram_data;
+    for (auto it = diagram_grid->cbeginValueOn(); it; ++it) {
+        const size_t k = size_t(it.getCoord().y()), i = size_t(it.getCoord().x());
+        if (diagram_data.size() <= k) diagram_data.resize(k + 1);
+        if (diagram_data[k].size() <= i) diagram_data[k].resize(i + 1, 0.f);
+        diagram_data[k][i] = *it;
+    }
+    model.diagram_cells.resize(diagram_data.size());
+    for (auto it = intensity_cell->cbeginValueOn(); it; ++it) {
+        if (*it < 0 || size_t(*it) >= diagram_data.size())
+            throw Error(path + ": intensity_cell names a missing diagram");
+        model.diagram_cells[size_t(*it)] = {it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
+    }
+    for (const auto& data : diagram_data) {
+        try {
+            model.diagrams.push_back(GoniometricDiagram::deserialize(data));
+        } catch (const std::exception& e) {
+            throw Error(path + ": a goniometric diagram is malformed: " + e.what());
+        }
+    }
+}
+
+// Flux cells in the order of their linear index, as the build made them; returns the index of
+// each cell by its linear index.
+std::map<int64_t, size_t> read_flux_cells(const ModelFile& file, const std::string& path, LightModel& model) {
+    auto flux = find_grid<openvdb::DoubleGrid>(file.grids, grid::flux, path);
+    auto la = find_grid<openvdb::DoubleGrid>(file.grids, grid::luminous, path)->getConstAccessor();
+    auto va = find_grid<openvdb::FloatGrid>(file.grids, grid::visible_fraction, path)->getConstAccessor();
+    std::vector<std::pair<int64_t, FluxCell>> cells;
+    for (auto it = flux->cbeginValueOn(); it; ++it) {
+        FluxCell c;
+        c.coord = {it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
+        c.flux = *it;
+        c.luminous = la.getValue(it.getCoord());
+        c.visible_fraction = va.getValue(it.getCoord());
+        cells.emplace_back(model.flux_frame.linear(c.coord), c);
+    }
+    std::sort(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::map<int64_t, size_t> cell_index;
+    for (const auto& [linear, cell] : cells) {
+        cell_index[linear] = model.flux_cells.size();
+        model.flux_cells.push_back(cell);
+    }
+    return cell_index;
+}
+
+// Voxels grouped by flux cell, in the density grid's order (as the build grouped them), and
+// each flux cell's diagram.
+void read_voxels(const ModelFile& file, const std::string& path, const std::map<int64_t, size_t>& cell_index,
+                 LightModel& model) {
+    auto density = find_grid<openvdb::FloatGrid>(file.grids, grid::density, path);
+    auto ia = find_grid<openvdb::Int32Grid>(file.grids, grid::intensity_cell, path)->getConstAccessor();
+    std::vector<std::vector<std::pair<Coord, float>>> grouped(model.flux_cells.size());
+    for (auto it = density->cbeginValueOn(); it; ++it) {
+        const Coord v{it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
+        const Vec3 centre = model.density_frame.cell_centre(v);
+        const auto found = cell_index.find(model.flux_frame.linear(model.flux_frame.cell_of(centre)));
+        if (found == cell_index.end()) continue;  // a voxel whose rays carried no flux
+        grouped[found->second].emplace_back(v, *it);
+        FluxCell& cell = model.flux_cells[found->second];
+        if (cell.intensity_cell < 0)
+            cell.intensity_cell =
+                ia.getValue(vdb(model.intensity_frame.cell_of(model.flux_frame.cell_centre(cell.coord))));
+    }
+    for (size_t c = 0; c < grouped.size(); ++c) {
+        FluxCell& cell = model.flux_cells[c];
+        if (grouped[c].empty() || cell.intensity_cell < 0 || size_t(cell.intensity_cell) >= model.diagrams.size())
+            throw Error(path + ": flux cell " + std::to_string(c) +
+                        " has no voxels or no diagram: the file is inconsistent");
+        cell.first_voxel = uint32_t(model.voxels.size());
+        cell.voxel_count = uint32_t(grouped[c].size());
+        for (const auto& [v, count] : grouped[c]) {
+            model.voxels.push_back(v);
+            model.voxel_density.push_back(count);
+        }
+    }
+    auto boundary = find_grid<openvdb::BoolGrid>(file.grids, grid::boundary, path);
+    for (auto it = boundary->cbeginValueOn(); it; ++it)
+        model.boundary_voxels.push_back({it.getCoord().x(), it.getCoord().y(), it.getCoord().z()});
+}
+
+void read_spectra(const ModelFile& file, const std::string& path, LightModel& model) {
+    auto spectra = find_grid<openvdb::FloatGrid>(file.grids, grid::spectra, path);
+    model.spectra.assign(model.flux_cells.size() * size_t(model.bins.count), 0.f);
+    for (auto it = spectra->cbeginValueOn(); it; ++it) {
+        const size_t c = size_t(it.getCoord().x()), b = size_t(it.getCoord().y());
+        if (c < model.flux_cells.size() && b < size_t(model.bins.count))
+            model.spectra[c * size_t(model.bins.count) + b] = *it;
+    }
+}
+
+}  // namespace
+
+void write_model(const LightModel& model, const std::string& path) {
+    initialise_openvdb();
+    openvdb::GridPtrVec grids;
+    add_density_grids(model, grids);
+    add_flux_grids(model, grids);
+    add_diagram_grids(model, grids);
     grids.push_back(sphere_grid(model.spheres, model.density_frame.cell_size()));
 
     openvdb::MetaMap meta;
     meta.insertMeta(kVersionKey, openvdb::Int32Metadata(kModelVersion));
-    MetadataWriter writer{meta};
+    MetadataWriter writer(meta);
     describe_metadata(writer, model);
 
     // Written beside the target and renamed into place: no half-written model on failure.
@@ -332,125 +453,15 @@ void write_model(const LightModel& model, const std::string& path) {
 
 LightModel read_model(const std::string& path) {
     initialise_openvdb();
-    openvdb::GridPtrVecPtr grids;
-    openvdb::MetaMap::Ptr meta;
-    try {
-        openvdb::io::File file(path);
-        file.open();
-        grids = file.getGrids();
-        meta = file.getMetadata();
-        file.close();
-    } catch (const std::exception& e) {
-        throw Error(path + ": cannot read as an OpenVDB model file: " + e.what());
-    }
-    auto version = meta->getMetadata<openvdb::Int32Metadata>(kVersionKey);
-    if (!version) throw Error(path + ": not a rayset model (no " + kVersionKey + " metadata)");
-    if (version->value() != kModelVersion)
-        throw Error(path + ": model version " + std::to_string(version->value()) +
-                    ", this raymodel reads version " + std::to_string(kModelVersion) +
-                    ": rebuild the model with raymodel build");
-
+    const ModelFile file = open_model_file(path);
     LightModel model;
     model.options.smooth_diagrams = false;  // files that do not say so were built with histograms
-    MetadataReader reader{*meta, path};
+    MetadataReader reader(*file.meta, path);
     describe_metadata(reader, model);
-
-    // Diagrams, in index order.
-    auto intensity_cell = find_grid<openvdb::Int32Grid>(grids, grid::intensity_cell, path);
-    auto diagram_grid = find_grid<openvdb::FloatGrid>(grids, grid::diagrams, path);
-    std::vector<std::vector<float>> diagram_data;
-    for (auto it = diagram_grid->cbeginValueOn(); it; ++it) {
-        const size_t k = size_t(it.getCoord().y()), i = size_t(it.getCoord().x());
-        if (diagram_data.size() <= k) diagram_data.resize(k + 1);
-        if (diagram_data[k].size() <= i) diagram_data[k].resize(i + 1, 0.f);
-        diagram_data[k][i] = *it;
-    }
-    model.diagram_cells.resize(diagram_data.size());
-    for (auto it = intensity_cell->cbeginValueOn(); it; ++it) {
-        if (*it < 0 || size_t(*it) >= diagram_data.size())
-            throw Error(path + ": intensity_cell names a missing diagram");
-        model.diagram_cells[size_t(*it)] = {it.getCoord().x(), it.getCoord().y(),
-                                            it.getCoord().z()};
-    }
-    for (const auto& data : diagram_data) {
-        try {
-            model.diagrams.push_back(GoniometricDiagram::deserialize(data));
-        } catch (const std::exception& e) {
-            throw Error(path + ": a goniometric diagram is malformed: " + e.what());
-        }
-    }
-
-    // Flux cells in the order of their linear index, as the build made them.
-    auto flux = find_grid<openvdb::DoubleGrid>(grids, grid::flux, path);
-    auto luminous = find_grid<openvdb::DoubleGrid>(grids, grid::luminous, path);
-    auto visible = find_grid<openvdb::FloatGrid>(grids, grid::visible_fraction, path);
-    std::vector<std::pair<int64_t, FluxCell>> cells;
-    {
-        auto la = luminous->getConstAccessor();
-        auto va = visible->getConstAccessor();
-        for (auto it = flux->cbeginValueOn(); it; ++it) {
-            FluxCell c;
-            c.coord = {it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
-            c.flux = *it;
-            c.luminous = la.getValue(it.getCoord());
-            c.visible_fraction = va.getValue(it.getCoord());
-            cells.emplace_back(model.flux_frame.linear(c.coord), c);
-        }
-    }
-    std::sort(cells.begin(), cells.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::map<int64_t, size_t> cell_index;
-    for (const auto& [linear, cell] : cells) {
-        cell_index[linear] = model.flux_cells.size();
-        model.flux_cells.push_back(cell);
-    }
-
-    // Voxels grouped by flux cell, in the density grid's order (as the build grouped them).
-    auto density = find_grid<openvdb::FloatGrid>(grids, grid::density, path);
-    std::vector<std::vector<std::pair<Coord, float>>> grouped(model.flux_cells.size());
-    {
-        auto ia = intensity_cell->getConstAccessor();
-        for (auto it = density->cbeginValueOn(); it; ++it) {
-            const Coord v{it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
-            const Vec3 centre = model.density_frame.cell_centre(v);
-            const auto found =
-                cell_index.find(model.flux_frame.linear(model.flux_frame.cell_of(centre)));
-            if (found == cell_index.end()) continue;  // a voxel whose rays carried no flux
-            grouped[found->second].emplace_back(v, *it);
-            FluxCell& cell = model.flux_cells[found->second];
-            if (cell.intensity_cell < 0)
-                cell.intensity_cell = ia.getValue(
-                    vdb(model.intensity_frame.cell_of(model.flux_frame.cell_centre(cell.coord))));
-        }
-    }
-    for (size_t c = 0; c < grouped.size(); ++c) {
-        FluxCell& cell = model.flux_cells[c];
-        if (grouped[c].empty() || cell.intensity_cell < 0 ||
-            size_t(cell.intensity_cell) >= model.diagrams.size())
-            throw Error(path + ": flux cell " + std::to_string(c) +
-                        " has no voxels or no diagram: the file is inconsistent");
-        cell.first_voxel = uint32_t(model.voxels.size());
-        cell.voxel_count = uint32_t(grouped[c].size());
-        for (const auto& [v, count] : grouped[c]) {
-            model.voxels.push_back(v);
-            model.voxel_density.push_back(count);
-        }
-    }
-
-    auto boundary = find_grid<openvdb::BoolGrid>(grids, grid::boundary, path);
-    for (auto it = boundary->cbeginValueOn(); it; ++it)
-        model.boundary_voxels.push_back({it.getCoord().x(), it.getCoord().y(), it.getCoord().z()});
-
-    auto spectra = find_grid<openvdb::FloatGrid>(grids, grid::spectra, path);
-    model.spectra.assign(model.flux_cells.size() * size_t(model.bins.count), 0.f);
-    for (auto it = spectra->cbeginValueOn(); it; ++it) {
-        const size_t c = size_t(it.getCoord().x()), b = size_t(it.getCoord().y());
-        if (c < model.flux_cells.size() && b < size_t(model.bins.count))
-            model.spectra[c * size_t(model.bins.count) + b] = *it;
-    }
-
-    model.spheres =
-        read_spheres(*find_grid<openvdb::points::PointDataGrid>(grids, grid::spheres, path));
+    read_diagrams(file, path, model);
+    read_voxels(file, path, read_flux_cells(file, path, model), model);
+    read_spectra(file, path, model);
+    model.spheres = read_spheres(*find_grid<openvdb::points::PointDataGrid>(file.grids, grid::spheres, path));
     return model;
 }
 
