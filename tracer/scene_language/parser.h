@@ -282,6 +282,8 @@ private:
     Numeric parse_additive_after(Numeric first);  // + - with `first` already read as a term
     Numeric parse_vector_literal(const Token& open);
     Numeric parse_numeric_identifier(const Token& token, const Value& value);
+    // The built-in constants and functions: their tables and handlers (builtins.cpp).
+    class Builtins;
     Numeric parse_builtin_numeric(const Token& name);
     // Constants and built-in variables (pi, x, clock, version ...): nothing for anything else.
     std::optional<Numeric> builtin_constant(const Token& name) const;
