@@ -292,6 +292,10 @@ private:
     Numeric call_spline(const Token& name, const Spline& spline);
     std::string parse_builtin_string(const Token& name);
     Colour parse_colour_body(const Token& start, bool keyword_given);
+    // parse_rvalue by its first token: a keyword, the layered texture, a declared identifier.
+    Value parse_keyword_rvalue(const Token& token);
+    Value parse_layered_texture_rvalue();
+    Value parse_identifier_rvalue(const Token& token, const Token& purpose);
     Value parse_array(const Token& keyword);
     void parse_array_initialiser(Array& array, size_t dimension, size_t& index,
                                  const Token& keyword);
