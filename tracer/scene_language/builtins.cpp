@@ -51,441 +51,545 @@ std::string format_float(double value, int width, int precision) {
     return fmt::sprintf(zeros ? "%0*.*f" : "%*.*f", w, std::min(precision, 100), value);
 }
 
-// The keywords that start a numeric expression: constants, built-in variables and functions.
-constexpr Keyword kNumericBuiltins[] = {Keyword::pi,
-                                        Keyword::true_,
-                                        Keyword::false_,
-                                        Keyword::yes,
-                                        Keyword::no,
-                                        Keyword::on,
-                                        Keyword::off,
-                                        Keyword::x,
-                                        Keyword::y,
-                                        Keyword::z,
-                                        Keyword::t,
-                                        Keyword::u,
-                                        Keyword::v,
-                                        Keyword::clock,
-                                        Keyword::clock_delta,
-                                        Keyword::clock_on,
-                                        Keyword::frame_number,
-                                        Keyword::initial_frame,
-                                        Keyword::final_frame,
-                                        Keyword::initial_clock,
-                                        Keyword::final_clock,
-                                        Keyword::image_width,
-                                        Keyword::image_height,
-                                        Keyword::version,
-                                        Keyword::now,
-                                        Keyword::abs,
-                                        Keyword::acos,
-                                        Keyword::acosh,
-                                        Keyword::asc,
-                                        Keyword::asin,
-                                        Keyword::asinh,
-                                        Keyword::atan,
-                                        Keyword::atan2,
-                                        Keyword::atanh,
-                                        Keyword::bitwise_and,
-                                        Keyword::bitwise_or,
-                                        Keyword::bitwise_xor,
-                                        Keyword::ceil,
-                                        Keyword::cos,
-                                        Keyword::cosh,
-                                        Keyword::defined,
-                                        Keyword::degrees,
-                                        Keyword::dimensions,
-                                        Keyword::dimension_size,
-                                        Keyword::div,
-                                        Keyword::exp,
-                                        Keyword::file_exists,
-                                        Keyword::floor,
-                                        Keyword::inside,
-                                        Keyword::int_,
-                                        Keyword::ln,
-                                        Keyword::log,
-                                        Keyword::max,
-                                        Keyword::min,
-                                        Keyword::mod,
-                                        Keyword::pow,
-                                        Keyword::radians,
-                                        Keyword::rand,
-                                        Keyword::seed,
-                                        Keyword::select,
-                                        Keyword::sin,
-                                        Keyword::sinh,
-                                        Keyword::sqrt,
-                                        Keyword::strcmp,
-                                        Keyword::strlen,
-                                        Keyword::tan,
-                                        Keyword::tanh,
-                                        Keyword::val,
-                                        Keyword::vdot,
-                                        Keyword::vlength,
-                                        Keyword::min_extent,
-                                        Keyword::max_extent,
-                                        Keyword::trace,
-                                        Keyword::vaxis_rotate,
-                                        Keyword::vcross,
-                                        Keyword::vrotate,
-                                        Keyword::vnormalize,
-                                        Keyword::vturbulence};
-
-// The keywords that start a string expression.
-constexpr Keyword kStringBuiltins[] = {Keyword::chr,    Keyword::concat, Keyword::datetime,
-                                       Keyword::str,    Keyword::strlwr, Keyword::strupr,
-                                       Keyword::substr, Keyword::vstr,   Keyword::input_file_name};
-
-template <size_t N>
-bool one_of(Keyword keyword, const Keyword (&set)[N]) {
-    return std::find(std::begin(set), std::end(set), keyword) != std::end(set);
+template <typename Entry, size_t N>
+const Entry* find_entry(const Entry (&table)[N], Keyword keyword) {
+    const Entry* entry = std::find_if(std::begin(table), std::end(table),
+                                      [&](const Entry& e) { return e.keyword == keyword; });
+    return entry == std::end(table) ? nullptr : entry;
 }
 
 }  // namespace
 
+// The built-ins, one table entry each: constants and variables, float functions, the other
+// numeric functions and the string functions. Nested in Parser for the state some of them read
+// or change (random streams, identifiers, the start time that `now` counts from).
+class Parser::Builtins {
+public:
+    class Call;
+    struct Constant {
+        Keyword keyword;
+        Numeric value;
+    };
+    // The animation's clock and frames, the image size, the language version, the time.
+    struct Variable {
+        Keyword keyword;
+        Numeric (*value)(const Parser& parser);
+    };
+    // A float of a float, refused outside its domain as POV-Ray's result would be meaningless.
+    struct FloatFunction {
+        Keyword keyword;
+        double (*value)(double a);
+        bool (*in_domain)(double a) = nullptr;  // null: every float
+        const char* outside_domain = nullptr;
+    };
+    struct NumericFunction {
+        Keyword keyword;
+        Numeric (*call)(Call& call);
+    };
+    struct StringFunction {
+        Keyword keyword;
+        std::string (*call)(Call& call);
+    };
+    static const Constant kConstants[];
+    static const Variable kVariables[];
+    static const FloatFunction kFloatFunctions[];
+    static const NumericFunction kNumericFunctions[];
+    static const StringFunction kStringFunctions[];
+    static Numeric evaluate(const FloatFunction& function, Call& call);
+
+private:
+    static Numeric bitwise(Call& call, long long (*combine)(long long a, long long b));
+    static Numeric select(Call& call);
+    static Numeric seed(Call& call);
+    static Numeric rand(Call& call);
+    static Numeric file_exists(Call& call);
+    static ArrayRef array_argument(Call& call);
+    static Numeric dimension_size(Call& call);
+    static Numeric bounding_box_corner(Call& call, bool maximum);
+    static Numeric inside(Call& call);
+    static Numeric trace(Call& call);
+    static std::string chr(Call& call);
+    static std::string concat(Call& call);
+    static std::string vstr(Call& call);
+    static std::string substr(Call& call);
+    static std::string change_case(Call& call, int (*change)(int c));
+    static std::string datetime(Call& call);
+};
+
+// One call name(...) of a built-in function, from its '(' on: the arguments as the built-ins
+// read them, with messages naming the function.
+class Parser::Builtins::Call {
+public:
+    Call(Parser& parser, const Token& name)
+        : parser(parser), name(name), open(parser.open_call(name)) {}
+
+    void comma() { parser.call_comma(name); }
+    bool accept_comma() { return parser.accept(Symbol::comma); }
+    void close() { parser.close_call(name, open); }
+    const std::string& word() const { return parser.word(name); }
+
+    double float_argument() {
+        const Token at = parser.peek();
+        const Numeric n = parser.parse_expression();
+        if (n.terms != 1)
+            parser.fail(at, fmt::format("'{}' takes a float here, found a vector", word()));
+        return n.v[0];
+    }
+    // A float truncated toward zero and clamped to int's range.
+    int int_argument(const char* what) {
+        const double value = parser.parse_float(fmt::format("as the {} of '{}'", what, word()));
+        return static_cast<int>(std::clamp(std::trunc(value), -2147483648.0, 2147483647.0));
+    }
+    Vec3 vector_argument() {
+        const Token at = parser.peek();
+        const Numeric n = parser.parse_expression();
+        if (n.terms > 3)
+            parser.fail(at, fmt::format("'{}' takes a vector here, found a colour", word()));
+        return n.promoted(3).vec3();
+    }
+    ObjectRef object_argument() {
+        const Token at = parser.peek();
+        if (const ObjectRef* object = parser.peek_declared<ObjectRef>()) {
+            const ObjectRef held = *object;
+            parser.next();
+            return held;
+        }
+        parser.fail_identifier(at, fmt::format("an object identifier in '{}'", word()));
+    }
+    std::string string_argument() { return parser.parse_string(); }
+
+    // The whole argument list of a function of one float, one vector or one string.
+    double sole_float() {
+        const double a = float_argument();
+        close();
+        return a;
+    }
+    Vec3 sole_vector() {
+        const Vec3 a = vector_argument();
+        close();
+        return a;
+    }
+    std::string sole_string() {
+        std::string s = string_argument();
+        close();
+        return s;
+    }
+    std::pair<double, double> two_floats() {
+        const double a = float_argument();
+        comma();
+        const double b = float_argument();
+        close();
+        return {a, b};
+    }
+    // min, max and the bitwise functions: two floats or more.
+    std::vector<double> at_least_two_floats() {
+        std::vector<double> args{float_argument()};
+        while (accept_comma()) args.push_back(float_argument());
+        close();
+        if (args.size() < 2)
+            parser.fail(name, fmt::format("'{}' takes at least 2 arguments, found 1", word()));
+        return args;
+    }
+    std::pair<Vec3, Vec3> two_vectors() {
+        const Vec3 a = vector_argument();
+        comma();
+        const Vec3 b = vector_argument();
+        close();
+        return {a, b};
+    }
+
+    void domain(bool ok, const char* what) const {
+        if (!ok)
+            parser.fail(name, fmt::format("'{}': {} (POV-Ray would compute a meaningless number)",
+                                          word(), what));
+    }
+
+    Parser& parser;
+    const Token& name;
+    const Token open;
+};
+
+const Parser::Builtins::Constant Parser::Builtins::kConstants[] = {
+    {Keyword::pi, Numeric::scalar(kPi)},       {Keyword::true_, Numeric::scalar(1)},
+    {Keyword::yes, Numeric::scalar(1)},        {Keyword::on, Numeric::scalar(1)},
+    {Keyword::false_, Numeric::scalar(0)},     {Keyword::no, Numeric::scalar(0)},
+    {Keyword::off, Numeric::scalar(0)},        {Keyword::x, Numeric::vector3({1, 0, 0})},
+    {Keyword::y, Numeric::vector3({0, 1, 0})}, {Keyword::z, Numeric::vector3({0, 0, 1})},
+    {Keyword::t, Numeric{{0, 0, 0, 1, 0}, 4}}, {Keyword::u, Numeric{{1, 0, 0, 0, 0}, 2}},
+    {Keyword::v, Numeric{{0, 1, 0, 0, 0}, 2}},
+};
+
+const Parser::Builtins::Variable Parser::Builtins::kVariables[] = {
+    {Keyword::clock, [](const Parser& p) { return Numeric::scalar(p.options_.animation.clock); }},
+    {Keyword::clock_delta,
+     [](const Parser& p) { return Numeric::scalar(p.options_.animation.clock_delta); }},
+    {Keyword::clock_on,
+     [](const Parser& p) { return Numeric::scalar(p.options_.animation.clock_on ? 1 : 0); }},
+    {Keyword::frame_number,
+     [](const Parser& p) { return Numeric::scalar(p.options_.animation.frame_number); }},
+    {Keyword::initial_frame,
+     [](const Parser& p) { return Numeric::scalar(p.options_.animation.initial_frame); }},
+    {Keyword::final_frame,
+     [](const Parser& p) { return Numeric::scalar(p.options_.animation.final_frame); }},
+    {Keyword::initial_clock,
+     [](const Parser& p) { return Numeric::scalar(p.options_.animation.initial_clock); }},
+    {Keyword::final_clock,
+     [](const Parser& p) { return Numeric::scalar(p.options_.animation.final_clock); }},
+    {Keyword::image_width,
+     [](const Parser& p) { return Numeric::scalar(p.options_.animation.image_width); }},
+    {Keyword::image_height,
+     [](const Parser& p) { return Numeric::scalar(p.options_.animation.image_height); }},
+    {Keyword::version, [](const Parser& p) { return Numeric::scalar(p.version_); }},
+    {Keyword::now, [](const Parser& p) { return Numeric::scalar(days_since_2000(p.start_time_)); }},
+};
+
+const Parser::Builtins::FloatFunction Parser::Builtins::kFloatFunctions[] = {
+    {Keyword::abs, [](double a) { return std::fabs(a); }},
+    {Keyword::ceil, [](double a) { return std::ceil(a); }},
+    {Keyword::floor, [](double a) { return std::floor(a); }},
+    {Keyword::int_, [](double a) { return std::trunc(a); }},
+    {Keyword::cos, [](double a) { return std::cos(a); }},
+    {Keyword::sin, [](double a) { return std::sin(a); }},
+    {Keyword::tan, [](double a) { return std::tan(a); }},
+    {Keyword::cosh, [](double a) { return std::cosh(a); }},
+    {Keyword::sinh, [](double a) { return std::sinh(a); }},
+    {Keyword::tanh, [](double a) { return std::tanh(a); }},
+    {Keyword::atan, [](double a) { return std::atan(a); }},
+    {Keyword::asinh, [](double a) { return std::asinh(a); }},
+    {Keyword::exp, [](double a) { return std::exp(a); }},
+    {Keyword::degrees, [](double a) { return a * 180.0 / kPi; }},
+    {Keyword::radians, [](double a) { return a * kPi / 180.0; }},
+    {Keyword::asin, [](double a) { return std::asin(a); },
+     [](double a) { return a >= -1 && a <= 1; }, "argument outside [-1, 1]"},
+    {Keyword::acos, [](double a) { return std::acos(a); },
+     [](double a) { return a >= -1 && a <= 1; }, "argument outside [-1, 1]"},
+    {Keyword::acosh, [](double a) { return std::acosh(a); }, [](double a) { return a >= 1; },
+     "argument below 1"},
+    {Keyword::atanh, [](double a) { return std::atanh(a); },
+     [](double a) { return a > -1 && a < 1; }, "argument outside (-1, 1)"},
+    {Keyword::sqrt, [](double a) { return std::sqrt(a); }, [](double a) { return a >= 0; },
+     "negative argument"},
+    {Keyword::ln, [](double a) { return std::log(a); }, [](double a) { return a > 0; },
+     "argument not positive"},
+    {Keyword::log, [](double a) { return std::log10(a); }, [](double a) { return a > 0; },
+     "argument not positive"},
+};
+
+const Parser::Builtins::NumericFunction Parser::Builtins::kNumericFunctions[] = {
+    {Keyword::atan2,
+     [](Call& call) {
+         const auto [a, b] = call.two_floats();
+         return Numeric::scalar(std::atan2(a, b));
+     }},
+    {Keyword::pow,
+     [](Call& call) {
+         const auto [a, b] = call.two_floats();
+         call.domain(!(a < 0 && b != std::trunc(b)), "a negative number to a non-integer power");
+         call.domain(!(a == 0 && b < 0), "zero to a negative power");
+         return Numeric::scalar(std::pow(a, b));
+     }},
+    {Keyword::mod,
+     [](Call& call) {
+         const auto [a, b] = call.two_floats();
+         call.domain(b != 0, "division by zero");
+         return Numeric::scalar(std::fmod(a, b));
+     }},
+    {Keyword::div,
+     [](Call& call) {
+         const auto [a, b] = call.two_floats();
+         call.domain(b != 0, "division by zero");
+         return Numeric::scalar(std::trunc(a / b));
+     }},
+    {Keyword::min,
+     [](Call& call) {
+         const std::vector<double> args = call.at_least_two_floats();
+         return Numeric::scalar(*std::min_element(args.begin(), args.end()));
+     }},
+    {Keyword::max,
+     [](Call& call) {
+         const std::vector<double> args = call.at_least_two_floats();
+         return Numeric::scalar(*std::max_element(args.begin(), args.end()));
+     }},
+    {Keyword::bitwise_and,
+     [](Call& call) { return bitwise(call, [](long long a, long long b) { return a & b; }); }},
+    {Keyword::bitwise_or,
+     [](Call& call) { return bitwise(call, [](long long a, long long b) { return a | b; }); }},
+    {Keyword::bitwise_xor,
+     [](Call& call) { return bitwise(call, [](long long a, long long b) { return a ^ b; }); }},
+    {Keyword::select, select},
+    {Keyword::seed, seed},
+    {Keyword::rand, rand},
+    {Keyword::asc,
+     [](Call& call) {
+         const std::string s = call.sole_string();
+         return Numeric::scalar(s.empty() ? 0 : static_cast<unsigned char>(s[0]));
+     }},
+    {Keyword::strlen,
+     [](Call& call) { return Numeric::scalar(static_cast<double>(call.sole_string().size())); }},
+    {Keyword::val,
+     [](Call& call) { return Numeric::scalar(std::strtod(call.sole_string().c_str(), nullptr)); }},
+    {Keyword::file_exists, file_exists},
+    {Keyword::strcmp,
+     [](Call& call) {
+         const std::string a = call.string_argument();
+         call.comma();
+         const std::string b = call.string_argument();
+         call.close();
+         const int order = a.compare(b);
+         return Numeric::scalar(order < 0 ? -1 : order > 0 ? 1 : 0);
+     }},
+    {Keyword::defined,
+     [](Call& call) {
+         const bool defined = call.parser.is_defined(call.name);
+         call.close();
+         return Numeric::scalar(defined ? 1 : 0);
+     }},
+    {Keyword::dimensions,
+     [](Call& call) {
+         const ArrayRef array = array_argument(call);
+         call.close();
+         return Numeric::scalar(static_cast<double>(array->sizes.size()));
+     }},
+    {Keyword::dimension_size, dimension_size},
+    {Keyword::vdot,
+     [](Call& call) {
+         const auto [a, b] = call.two_vectors();
+         return Numeric::scalar(dot(a, b));
+     }},
+    {Keyword::vcross,
+     [](Call& call) {
+         const auto [a, b] = call.two_vectors();
+         return Numeric::vector3(cross(a, b));
+     }},
+    {Keyword::vrotate,
+     [](Call& call) {
+         const auto [a, b] = call.two_vectors();
+         return Numeric::vector3(pov_rotation(b).vector(a));
+     }},
+    {Keyword::vlength, [](Call& call) { return Numeric::scalar(length(call.sole_vector())); }},
+    {Keyword::vnormalize,
+     [](Call& call) {
+         const Vec3 a = call.sole_vector();
+         call.domain(length(a) > 0, "zero-length vector");
+         return Numeric::vector3(normalized(a));
+     }},
+    {Keyword::vaxis_rotate,
+     [](Call& call) {
+         const Vec3 a = call.vector_argument();
+         call.comma();
+         const Vec3 axis = call.vector_argument();
+         call.comma();
+         const double degrees = call.float_argument();
+         call.close();
+         call.domain(length(axis) > 0, "zero-length axis");
+         return Numeric::vector3(axis_rotation(axis, degrees).vector(a));
+     }},
+    {Keyword::min_extent, [](Call& call) { return bounding_box_corner(call, false); }},
+    {Keyword::max_extent, [](Call& call) { return bounding_box_corner(call, true); }},
+    {Keyword::inside, inside},
+    {Keyword::trace, trace},
+    {Keyword::vturbulence,
+     [](Call& call) -> Numeric {
+         call.parser.fail_not_supported(call.name, "vturbulence (POV-Ray's noise function)");
+     }},
+};
+
+Numeric Parser::Builtins::evaluate(const FloatFunction& function, Call& call) {
+    const double a = call.sole_float();
+    if (function.in_domain) call.domain(function.in_domain(a), function.outside_domain);
+    return Numeric::scalar(function.value(a));
+}
+
+// The floats are truncated to 64-bit integers, combined, and the result cut to an int.
+Numeric Parser::Builtins::bitwise(Call& call, long long (*combine)(long long a, long long b)) {
+    const std::vector<double> args = call.at_least_two_floats();
+    auto as_int = [](double a) {
+        return static_cast<long long>(std::clamp(std::trunc(a), -9.2e18, 9.2e18));
+    };
+    long long r = as_int(args[0]);
+    for (size_t i = 1; i < args.size(); ++i) r = combine(r, as_int(args[i]));
+    return Numeric::scalar(static_cast<double>(static_cast<int>(r)));
+}
+
+Numeric Parser::Builtins::select(Call& call) {
+    const double a = call.float_argument();
+    call.comma();
+    const Numeric b = call.parser.parse_expression();
+    call.comma();
+    const Numeric c = call.parser.parse_expression();
+    if (call.accept_comma()) {
+        const Numeric d = call.parser.parse_expression();
+        call.close();
+        return a < 0 ? b : a == 0 ? c : d;
+    }
+    call.close();
+    return a < 0 ? b : c;
+}
+
+Numeric Parser::Builtins::seed(Call& call) {
+    const double s = call.sole_float();
+    call.parser.random_streams_.push_back({seed_state(s)});
+    return Numeric::scalar(static_cast<double>(call.parser.random_streams_.size() - 1));
+}
+
+Numeric Parser::Builtins::rand(Call& call) {
+    const Token at = call.parser.peek();
+    const double s = call.sole_float();
+    std::vector<RandomStream>& streams = call.parser.random_streams_;
+    const double index = std::trunc(s);
+    if (!(index >= 0 && index < static_cast<double>(streams.size())))
+        call.parser.fail(at,
+                         fmt::format("rand({}): no such random stream (make one with seed())", s));
+    RandomStream& stream = streams[static_cast<size_t>(index)];
+    stream.state = stream.state * 1812433253u + 12345u;
+    return Numeric::scalar(static_cast<double>(stream.state) / 4294967295.0);
+}
+
+Numeric Parser::Builtins::file_exists(Call& call) {
+    const std::string s = call.sole_string();
+    try {
+        call.parser.resolve_file(s, call.name, "file");
+        return Numeric::scalar(1);
+    } catch (const SceneError&) {
+        return Numeric::scalar(0);
+    }
+}
+
+// An array identifier, or an element of an array of arrays.
+ArrayRef Parser::Builtins::array_argument(Call& call) {
+    Parser& parser = call.parser;
+    const Token at = parser.peek();
+    const ArrayRef* array = parser.peek_declared<ArrayRef>();
+    if (!array) parser.fail_identifier(at, fmt::format("an array identifier in '{}'", call.word()));
+    ArrayRef held = *array;
+    parser.next();
+    while (parser.peek_is(Symbol::lbracket)) {
+        const Value element = *parser.array_element(at, *held, false);
+        if (!std::holds_alternative<ArrayRef>(element))
+            parser.fail(at, fmt::format("'{}': the element is {}, not an array", call.word(),
+                                        type_name(element)));
+        held = std::get<ArrayRef>(element);
+    }
+    return held;
+}
+
+Numeric Parser::Builtins::dimension_size(Call& call) {
+    const ArrayRef array = array_argument(call);
+    call.comma();
+    const Token dimension_at = call.parser.peek();
+    const int dimension = static_cast<int>(call.float_argument());
+    call.close();
+    const size_t dimensions = array->sizes.size();
+    if (dimension < 1 || dimension > static_cast<int>(dimensions))
+        call.parser.fail(
+            dimension_at,
+            fmt::format("dimension_size: the array has {} dimension{}, asked for dimension {}",
+                        dimensions, dimensions == 1 ? "" : "s", dimension));
+    return Numeric::scalar(array->sizes[static_cast<size_t>(dimension - 1)]);
+}
+
+Numeric Parser::Builtins::bounding_box_corner(Call& call, bool maximum) {
+    const ObjectRef object = call.object_argument();
+    call.close();
+    Vec3 minimum_corner, maximum_corner;
+    if (!object_bounding_box(*object, minimum_corner, maximum_corner))
+        call.parser.fail_not_supported(call.name,
+                                       fmt::format("'{}' of this kind of object", call.word()));
+    return Numeric::vector3(maximum ? maximum_corner : minimum_corner);
+}
+
+Numeric Parser::Builtins::inside(Call& call) {
+    const ObjectRef object = call.object_argument();
+    call.comma();
+    const Vec3 point = call.vector_argument();
+    call.close();
+    bool inside = false;
+    if (!object_inside(*object, point, inside))
+        call.parser.fail_not_supported(call.name, "'inside' of this kind of object");
+    return Numeric::scalar(inside ? 1 : 0);
+}
+
+// trace(object, origin, direction [, normal]): the identifier after the third comma receives the
+// normal at the hit, or <0,0,0> when the ray misses.
+Numeric Parser::Builtins::trace(Call& call) {
+    Parser& parser = call.parser;
+    const ObjectRef object = call.object_argument();
+    call.comma();
+    const Vec3 origin = call.vector_argument();
+    call.comma();
+    const Vec3 direction = call.vector_argument();
+    SymbolRef normal_symbol;
+    if (call.accept_comma()) {
+        const Token at = parser.raw_peek();
+        const NameId normal = parser.next_raw_identifier("to receive the normal in 'trace'");
+        parser.assign(at, normal, Numeric::vector3({0, 0, 0}), false);
+        normal_symbol = parser.lookup(normal);
+    }
+    call.close();
+    Vec3 hit, normal;
+    bool found = false;
+    if (!object_trace(*object, origin, direction, hit, normal, found))
+        parser.fail_not_supported(call.name, "'trace' of this kind of object");
+    if (normal_symbol) normal_symbol->value = Numeric::vector3(found ? normal : Vec3{0, 0, 0});
+    return Numeric::vector3(found ? hit : Vec3{0, 0, 0});
+}
+
 bool Parser::is_numeric_builtin(NameId name) const {
-    return one_of(keyword_of(name), kNumericBuiltins);
+    const Keyword keyword = keyword_of(name);
+    return find_entry(Builtins::kConstants, keyword) || find_entry(Builtins::kVariables, keyword) ||
+           find_entry(Builtins::kFloatFunctions, keyword) ||
+           find_entry(Builtins::kNumericFunctions, keyword);
 }
 
 std::optional<Numeric> Parser::builtin_constant(const Token& name) const {
-    const AnimationSettings& animation = options_.animation;
-    switch (keyword_of(name.name)) {
-        case Keyword::pi: return Numeric::scalar(3.1415926535897932384626);
-        case Keyword::true_:
-        case Keyword::yes:
-        case Keyword::on: return Numeric::scalar(1);
-        case Keyword::false_:
-        case Keyword::no:
-        case Keyword::off: return Numeric::scalar(0);
-        case Keyword::x: return Numeric::vector3({1, 0, 0});
-        case Keyword::y: return Numeric::vector3({0, 1, 0});
-        case Keyword::z: return Numeric::vector3({0, 0, 1});
-        case Keyword::t: return Numeric{{0, 0, 0, 1, 0}, 4};
-        case Keyword::u: return Numeric{{1, 0, 0, 0, 0}, 2};
-        case Keyword::v: return Numeric{{0, 1, 0, 0, 0}, 2};
-        case Keyword::clock: return Numeric::scalar(animation.clock);
-        case Keyword::clock_delta: return Numeric::scalar(animation.clock_delta);
-        case Keyword::clock_on: return Numeric::scalar(animation.clock_on ? 1 : 0);
-        case Keyword::frame_number: return Numeric::scalar(animation.frame_number);
-        case Keyword::initial_frame: return Numeric::scalar(animation.initial_frame);
-        case Keyword::final_frame: return Numeric::scalar(animation.final_frame);
-        case Keyword::initial_clock: return Numeric::scalar(animation.initial_clock);
-        case Keyword::final_clock: return Numeric::scalar(animation.final_clock);
-        case Keyword::image_width: return Numeric::scalar(animation.image_width);
-        case Keyword::image_height: return Numeric::scalar(animation.image_height);
-        case Keyword::version: return Numeric::scalar(version_);
-        case Keyword::now: return Numeric::scalar(days_since_2000(start_time_));
-        default: return std::nullopt;
-    }
+    const Keyword keyword = keyword_of(name.name);
+    if (const Builtins::Constant* constant = find_entry(Builtins::kConstants, keyword))
+        return constant->value;
+    if (const Builtins::Variable* variable = find_entry(Builtins::kVariables, keyword))
+        return variable->value(*this);
+    return std::nullopt;
 }
 
 Numeric Parser::parse_builtin_numeric(const Token& name) {
-    const Keyword k = keyword_of(name.name);
     if (const std::optional<Numeric> constant = builtin_constant(name)) return *constant;
-
-    const Token open = open_call(name);
-    auto close = [&] { close_call(name, open); };
-    auto comma = [&] { call_comma(name); };
-    auto float_arg = [&]() {
-        const Token at = peek();
-        const Numeric n = parse_expression();
-        if (n.terms != 1)
-            fail(at, fmt::format("'{}' takes a float here, found a vector", word(name)));
-        return n.v[0];
-    };
-    auto vector_arg = [&]() {
-        const Token at = peek();
-        const Numeric n = parse_expression();
-        if (n.terms > 3)
-            fail(at, fmt::format("'{}' takes a vector here, found a colour", word(name)));
-        return n.promoted(3).vec3();
-    };
-    auto domain = [&](bool ok, const char* what) {
-        if (!ok)
-            fail(name, fmt::format("'{}': {} (POV-Ray would compute a meaningless number)",
-                                   word(name), what));
-    };
-    auto object_arg = [&]() -> ObjectRef {
-        const Token at = peek();
-        if (const ObjectRef* object = peek_declared<ObjectRef>()) {
-            const ObjectRef held = *object;
-            next();
-            return held;
-        }
-        fail_identifier(at, fmt::format("an object identifier in '{}'", word(name)));
-    };
-    auto one_float = [&](double (*f)(double)) {
-        const double a = float_arg();
-        close();
-        return Numeric::scalar(f(a));
-    };
-
-    switch (k) {
-        case Keyword::abs: return one_float([](double a) { return std::fabs(a); });
-        case Keyword::ceil: return one_float([](double a) { return std::ceil(a); });
-        case Keyword::floor: return one_float([](double a) { return std::floor(a); });
-        case Keyword::int_: return one_float([](double a) { return std::trunc(a); });
-        case Keyword::cos: return one_float([](double a) { return std::cos(a); });
-        case Keyword::sin: return one_float([](double a) { return std::sin(a); });
-        case Keyword::tan: return one_float([](double a) { return std::tan(a); });
-        case Keyword::cosh: return one_float([](double a) { return std::cosh(a); });
-        case Keyword::sinh: return one_float([](double a) { return std::sinh(a); });
-        case Keyword::tanh: return one_float([](double a) { return std::tanh(a); });
-        case Keyword::atan: return one_float([](double a) { return std::atan(a); });
-        case Keyword::asinh: return one_float([](double a) { return std::asinh(a); });
-        case Keyword::exp: return one_float([](double a) { return std::exp(a); });
-        case Keyword::degrees:
-            return one_float([](double a) { return a * 180.0 / 3.1415926535897932384626; });
-        case Keyword::radians:
-            return one_float([](double a) { return a * 3.1415926535897932384626 / 180.0; });
-        case Keyword::asin:
-        case Keyword::acos: {
-            const double a = float_arg();
-            close();
-            domain(a >= -1 && a <= 1, "argument outside [-1, 1]");
-            return Numeric::scalar(k == Keyword::asin ? std::asin(a) : std::acos(a));
-        }
-        case Keyword::acosh: {
-            const double a = float_arg();
-            close();
-            domain(a >= 1, "argument below 1");
-            return Numeric::scalar(std::acosh(a));
-        }
-        case Keyword::atanh: {
-            const double a = float_arg();
-            close();
-            domain(a > -1 && a < 1, "argument outside (-1, 1)");
-            return Numeric::scalar(std::atanh(a));
-        }
-        case Keyword::sqrt: {
-            const double a = float_arg();
-            close();
-            domain(a >= 0, "negative argument");
-            return Numeric::scalar(std::sqrt(a));
-        }
-        case Keyword::ln:
-        case Keyword::log: {
-            const double a = float_arg();
-            close();
-            domain(a > 0, "argument not positive");
-            return Numeric::scalar(k == Keyword::log ? std::log10(a) : std::log(a));
-        }
-        case Keyword::atan2:
-        case Keyword::pow:
-        case Keyword::mod:
-        case Keyword::div: {
-            const double a = float_arg();
-            comma();
-            const double b = float_arg();
-            close();
-            if (k == Keyword::atan2) return Numeric::scalar(std::atan2(a, b));
-            if (k == Keyword::pow) {
-                domain(!(a < 0 && b != std::trunc(b)), "a negative number to a non-integer power");
-                domain(!(a == 0 && b < 0), "zero to a negative power");
-                return Numeric::scalar(std::pow(a, b));
-            }
-            domain(b != 0, "division by zero");
-            return Numeric::scalar(k == Keyword::mod ? std::fmod(a, b) : std::trunc(a / b));
-        }
-        case Keyword::min:
-        case Keyword::max:
-        case Keyword::bitwise_and:
-        case Keyword::bitwise_or:
-        case Keyword::bitwise_xor: {
-            std::vector<double> args{float_arg()};
-            while (accept(Symbol::comma)) args.push_back(float_arg());
-            close();
-            if (args.size() < 2)
-                fail(name, fmt::format("'{}' takes at least 2 arguments, found 1", word(name)));
-            if (k == Keyword::min)
-                return Numeric::scalar(*std::min_element(args.begin(), args.end()));
-            if (k == Keyword::max)
-                return Numeric::scalar(*std::max_element(args.begin(), args.end()));
-            auto as_int = [](double a) {
-                return static_cast<long long>(std::clamp(std::trunc(a), -9.2e18, 9.2e18));
-            };
-            long long r = as_int(args[0]);
-            for (size_t i = 1; i < args.size(); ++i) {
-                const long long b = as_int(args[i]);
-                r = k == Keyword::bitwise_and  ? (r & b)
-                    : k == Keyword::bitwise_or ? (r | b)
-                                               : (r ^ b);
-            }
-            return Numeric::scalar(static_cast<double>(static_cast<int>(r)));
-        }
-        case Keyword::select: {
-            const double a = float_arg();
-            comma();
-            const Numeric b = parse_expression();
-            comma();
-            const Numeric c = parse_expression();
-            if (accept(Symbol::comma)) {
-                const Numeric d = parse_expression();
-                close();
-                return a < 0 ? b : a == 0 ? c : d;
-            }
-            close();
-            return a < 0 ? b : c;
-        }
-        case Keyword::seed: {
-            const double s = float_arg();
-            close();
-            random_streams_.push_back({seed_state(s)});
-            return Numeric::scalar(static_cast<double>(random_streams_.size() - 1));
-        }
-        case Keyword::rand: {
-            const Token at = peek();
-            const double s = float_arg();
-            close();
-            const double index = std::trunc(s);
-            if (!(index >= 0 && index < static_cast<double>(random_streams_.size())))
-                fail(at, fmt::format("rand({}): no such random stream (make one with seed())", s));
-            RandomStream& stream = random_streams_[static_cast<size_t>(index)];
-            stream.state = stream.state * 1812433253u + 12345u;
-            return Numeric::scalar(static_cast<double>(stream.state) / 4294967295.0);
-        }
-        case Keyword::asc:
-        case Keyword::strlen:
-        case Keyword::val:
-        case Keyword::file_exists: {
-            const std::string s = parse_string();
-            close();
-            if (k == Keyword::asc)
-                return Numeric::scalar(s.empty() ? 0 : static_cast<unsigned char>(s[0]));
-            if (k == Keyword::strlen) return Numeric::scalar(static_cast<double>(s.size()));
-            if (k == Keyword::val) return Numeric::scalar(std::strtod(s.c_str(), nullptr));
-            try {
-                resolve_file(s, name, "file");
-                return Numeric::scalar(1);
-            } catch (const SceneError&) {
-                return Numeric::scalar(0);
-            }
-        }
-        case Keyword::strcmp: {
-            const std::string a = parse_string();
-            comma();
-            const std::string b = parse_string();
-            close();
-            const int order = a.compare(b);
-            return Numeric::scalar(order < 0 ? -1 : order > 0 ? 1 : 0);
-        }
-        case Keyword::defined: {
-            const bool defined = is_defined(name);
-            close();
-            return Numeric::scalar(defined ? 1 : 0);
-        }
-        case Keyword::dimensions:
-        case Keyword::dimension_size: {
-            // An array identifier, or an element of an array of arrays.
-            const Token at = peek();
-            const ArrayRef* array = peek_declared<ArrayRef>();
-            if (!array) fail_identifier(at, fmt::format("an array identifier in '{}'", word(name)));
-            ArrayRef held = *array;
-            next();
-            while (peek_is(Symbol::lbracket)) {
-                const Value element = *array_element(at, *held, false);
-                if (!std::holds_alternative<ArrayRef>(element))
-                    fail(at, fmt::format("'{}': the element is {}, not an array", word(name),
-                                         type_name(element)));
-                held = std::get<ArrayRef>(element);
-            }
-            if (k == Keyword::dimensions) {
-                close();
-                return Numeric::scalar(static_cast<double>(held->sizes.size()));
-            }
-            comma();
-            const Token dimension_at = peek();
-            const int dimension = static_cast<int>(float_arg());
-            close();
-            if (dimension < 1 || dimension > static_cast<int>(held->sizes.size()))
-                fail(dimension_at,
-                     fmt::format(
-                         "dimension_size: the array has {} dimension{}, asked for dimension {}",
-                         held->sizes.size(), held->sizes.size() == 1 ? "" : "s", dimension));
-            return Numeric::scalar(held->sizes[static_cast<size_t>(dimension - 1)]);
-        }
-        case Keyword::vdot:
-        case Keyword::vcross:
-        case Keyword::vrotate: {
-            const Vec3 a = vector_arg();
-            comma();
-            const Vec3 b = vector_arg();
-            close();
-            if (k == Keyword::vdot) return Numeric::scalar(dot(a, b));
-            if (k == Keyword::vcross) return Numeric::vector3(cross(a, b));
-            return Numeric::vector3(pov_rotation(b).vector(a));
-        }
-        case Keyword::vlength:
-        case Keyword::vnormalize: {
-            const Vec3 a = vector_arg();
-            close();
-            if (k == Keyword::vlength) return Numeric::scalar(length(a));
-            domain(length(a) > 0, "zero-length vector");
-            return Numeric::vector3(normalized(a));
-        }
-        case Keyword::vaxis_rotate: {
-            const Vec3 a = vector_arg();
-            comma();
-            const Vec3 axis = vector_arg();
-            comma();
-            const double degrees = float_arg();
-            close();
-            domain(length(axis) > 0, "zero-length axis");
-            return Numeric::vector3(axis_rotation(axis, degrees).vector(a));
-        }
-        case Keyword::min_extent:
-        case Keyword::max_extent: {
-            const ObjectRef object = object_arg();
-            close();
-            Vec3 minimum, maximum;
-            if (!object_bounding_box(*object, minimum, maximum))
-                fail_not_supported(name, fmt::format("'{}' of this kind of object", word(name)));
-            return Numeric::vector3(k == Keyword::min_extent ? minimum : maximum);
-        }
-        case Keyword::inside: {
-            const ObjectRef object = object_arg();
-            comma();
-            const Vec3 point = vector_arg();
-            close();
-            bool inside = false;
-            if (!object_inside(*object, point, inside))
-                fail_not_supported(name, "'inside' of this kind of object");
-            return Numeric::scalar(inside ? 1 : 0);
-        }
-        case Keyword::trace: {
-            const ObjectRef object = object_arg();
-            comma();
-            const Vec3 origin = vector_arg();
-            comma();
-            const Vec3 direction = vector_arg();
-            SymbolRef normal_symbol;
-            if (accept(Symbol::comma)) {
-                const Token at = raw_peek();
-                const NameId normal = next_raw_identifier("to receive the normal in 'trace'");
-                assign(at, normal, Numeric::vector3({0, 0, 0}), false);
-                normal_symbol = lookup(normal);
-            }
-            close();
-            Vec3 hit, normal;
-            bool found = false;
-            if (!object_trace(*object, origin, direction, hit, normal, found))
-                fail_not_supported(name, "'trace' of this kind of object");
-            if (normal_symbol)
-                normal_symbol->value = Numeric::vector3(found ? normal : Vec3{0, 0, 0});
-            return Numeric::vector3(found ? hit : Vec3{0, 0, 0});
-        }
-        case Keyword::vturbulence:
-            fail_not_supported(name, "vturbulence (POV-Ray's noise function)");
-        default: break;
-    }
+    Builtins::Call call(*this, name);
+    const Keyword keyword = keyword_of(name.name);
+    if (const Builtins::FloatFunction* function = find_entry(Builtins::kFloatFunctions, keyword))
+        return Builtins::evaluate(*function, call);
+    if (const Builtins::NumericFunction* function =
+            find_entry(Builtins::kNumericFunctions, keyword))
+        return function->call(call);
     fail_not_supported(name, fmt::format("'{}'", word(name)));
 }
+
+const Parser::Builtins::StringFunction Parser::Builtins::kStringFunctions[] = {
+    {Keyword::chr, chr},
+    {Keyword::concat, concat},
+    {Keyword::str,
+     [](Call& call) {
+         const double value = call.parser.parse_float("as the value of 'str'");
+         call.comma();
+         const int width = call.int_argument("width");
+         call.comma();
+         const int precision = call.int_argument("precision");
+         call.close();
+         return format_float(value, width, precision);
+     }},
+    {Keyword::vstr, vstr},
+    {Keyword::substr, substr},
+    {Keyword::strupr,
+     [](Call& call) { return change_case(call, [](int c) { return std::toupper(c); }); }},
+    {Keyword::strlwr,
+     [](Call& call) { return change_case(call, [](int c) { return std::tolower(c); }); }},
+    {Keyword::datetime, datetime},
+};
 
 bool Parser::starts_string(const Token& token) {
     if (token.kind == TokenKind::string) return true;
     if (token.kind != TokenKind::word) return false;
     const Keyword keyword = keyword_of(token.name);
-    if (one_of(keyword, kStringBuiltins)) return true;
+    if (keyword == Keyword::input_file_name || find_entry(Builtins::kStringFunctions, keyword))
+        return true;
     if (keyword != Keyword::size_) return false;  // any other keyword
     const SymbolRef symbol = lookup(token.name);
     if (!symbol) return false;
@@ -530,116 +634,99 @@ std::string Parser::parse_string() {
     fail_identifier(token, "a string");
 }
 
-std::string Parser::parse_builtin_string(const Token& name) {
-    const Keyword k = keyword_of(name.name);
-    if (k == Keyword::input_file_name)
-        return fs::path(files_.front().source->path).filename().string();
-    if (k != Keyword::chr && k != Keyword::concat && k != Keyword::datetime && k != Keyword::str &&
-        k != Keyword::strlwr && k != Keyword::strupr && k != Keyword::substr && k != Keyword::vstr)
-        fail_identifier(name, "a string");
-    const Token open = open_call(name);
-    auto close = [&] { close_call(name, open); };
-    auto comma = [&] { call_comma(name); };
-    auto int_arg = [&](const char* what) {
-        const double value = parse_float(fmt::format("as the {} of '{}'", what, word(name)));
-        return static_cast<int>(std::clamp(std::trunc(value), -2147483648.0, 2147483647.0));
-    };
-    switch (k) {
-        case Keyword::chr: {
-            const Token at = peek();
-            const int code = int_arg("character code");
-            close();
-            if (code < 0 || code > 0x10FFFF)
-                fail(at, fmt::format("chr({}): not a character code", code));
-            std::string out;
-            append_utf8(static_cast<char32_t>(code), out);
-            return out;
-        }
-        case Keyword::concat: {
-            std::string out = parse_string();
-            while (accept(Symbol::comma)) {
-                out += parse_string();
-                if (static_cast<long>(out.size()) > options_.max_string_length)
-                    fail(name, fmt::format("string limit: a string of more than {} bytes "
-                                           "(ParseOptions::max_string_length)",
-                                           options_.max_string_length));
-            }
-            close();
-            return out;
-        }
-        case Keyword::str: {
-            const double value = parse_float("as the value of 'str'");
-            comma();
-            const int width = int_arg("width");
-            comma();
-            const int precision = int_arg("precision");
-            close();
-            return format_float(value, width, precision);
-        }
-        case Keyword::vstr: {
-            const int requested = int_arg("number of terms");
-            comma();
-            const Token at = peek();
-            const Numeric vector = parse_expression();
-            comma();
-            const std::string separator = parse_string();
-            comma();
-            const int width = int_arg("width");
-            comma();
-            const int precision = int_arg("precision");
-            close();
-            const int terms = std::clamp(requested, 2, 5);
-            if (vector.terms > terms)
-                fail(at, fmt::format("vstr: the vector has {} terms, more than the {} asked for",
-                                     vector.terms, terms));
-            std::string out;
-            for (int i = 0; i < terms; ++i) {
-                // Missing terms are zeros, even for a float (POV-Ray's behaviour, not its
-                // manual's).
-                const double term = i < vector.terms ? vector.v[i] : 0.0;
-                out += (i ? separator : "") + format_float(term, width, precision);
-            }
-            return out;
-        }
-        case Keyword::substr: {
-            const std::string s = parse_string();
-            comma();
-            const Token at = peek();
-            const int position = int_arg("position");
-            comma();
-            const int count = int_arg("length");
-            close();
-            if (position < 1 || count < 0 || static_cast<size_t>(position - 1 + count) > s.size())
-                fail(at, fmt::format("substr: characters {} to {} of a string of {}", position,
-                                     position + count - 1, s.size()));
-            return s.substr(static_cast<size_t>(position - 1), static_cast<size_t>(count));
-        }
-        case Keyword::strupr:
-        case Keyword::strlwr: {
-            std::string s = parse_string();
-            close();
-            for (char& c : s)
-                c = static_cast<char>(k == Keyword::strupr
-                                          ? std::toupper(static_cast<unsigned char>(c))
-                                          : std::tolower(static_cast<unsigned char>(c)));
-            return s;
-        }
-        case Keyword::datetime: {
-            const double days = parse_float("as the time of 'datetime' (days since 2000)");
-            std::string format = "%Y-%m-%d %H:%M:%SZ";
-            if (accept(Symbol::comma)) format = parse_string();
-            close();
-            const std::time_t seconds =
-                static_cast<std::time_t>(std::floor(946684800.0 + days * 86400.0));
-            std::tm utc{};
-            gmtime_r(&seconds, &utc);
-            char buffer[512];
-            const size_t length = std::strftime(buffer, sizeof buffer, format.c_str(), &utc);
-            return std::string(buffer, length);
-        }
-        default: break;
+std::string Parser::Builtins::chr(Call& call) {
+    const Token at = call.parser.peek();
+    const int code = call.int_argument("character code");
+    call.close();
+    if (code < 0 || code > 0x10FFFF)
+        call.parser.fail(at, fmt::format("chr({}): not a character code", code));
+    std::string out;
+    append_utf8(static_cast<char32_t>(code), out);
+    return out;
+}
+
+std::string Parser::Builtins::concat(Call& call) {
+    const long limit = call.parser.options_.max_string_length;
+    std::string out = call.string_argument();
+    while (call.accept_comma()) {
+        out += call.string_argument();
+        if (static_cast<long>(out.size()) > limit)
+            call.parser.fail(call.name, fmt::format("string limit: a string of more than {} bytes "
+                                                    "(ParseOptions::max_string_length)",
+                                                    limit));
     }
-    fail_identifier(name, "a string");
+    call.close();
+    return out;
+}
+
+std::string Parser::Builtins::vstr(Call& call) {
+    const int requested = call.int_argument("number of terms");
+    call.comma();
+    const Token at = call.parser.peek();
+    const Numeric vector = call.parser.parse_expression();
+    call.comma();
+    const std::string separator = call.string_argument();
+    call.comma();
+    const int width = call.int_argument("width");
+    call.comma();
+    const int precision = call.int_argument("precision");
+    call.close();
+    const int terms = std::clamp(requested, 2, 5);
+    if (vector.terms > terms)
+        call.parser.fail(at,
+                         fmt::format("vstr: the vector has {} terms, more than the {} asked for",
+                                     vector.terms, terms));
+    std::string out;
+    for (int i = 0; i < terms; ++i) {
+        // Missing terms are zeros, even for a float (POV-Ray's behaviour, not its manual's).
+        const double term = i < vector.terms ? vector.v[i] : 0.0;
+        out += (i ? separator : "") + format_float(term, width, precision);
+    }
+    return out;
+}
+
+std::string Parser::Builtins::substr(Call& call) {
+    const std::string s = call.string_argument();
+    call.comma();
+    const Token at = call.parser.peek();
+    const int position = call.int_argument("position");
+    call.comma();
+    const int count = call.int_argument("length");
+    call.close();
+    if (position < 1 || count < 0 || static_cast<size_t>(position - 1 + count) > s.size())
+        call.parser.fail(at, fmt::format("substr: characters {} to {} of a string of {}", position,
+                                         position + count - 1, s.size()));
+    return s.substr(static_cast<size_t>(position - 1), static_cast<size_t>(count));
+}
+
+// strupr and strlwr: byte by byte, in the C locale's sense of letters.
+std::string Parser::Builtins::change_case(Call& call, int (*change)(int c)) {
+    std::string s = call.sole_string();
+    for (char& c : s) c = static_cast<char>(change(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string Parser::Builtins::datetime(Call& call) {
+    const double days = call.parser.parse_float("as the time of 'datetime' (days since 2000)");
+    std::string format = "%Y-%m-%d %H:%M:%SZ";
+    if (call.accept_comma()) format = call.string_argument();
+    call.close();
+    const std::time_t seconds = static_cast<std::time_t>(std::floor(946684800.0 + days * 86400.0));
+    std::tm utc{};
+    gmtime_r(&seconds, &utc);
+    char buffer[512];
+    const size_t length = std::strftime(buffer, sizeof buffer, format.c_str(), &utc);
+    return std::string(buffer, length);
+}
+
+std::string Parser::parse_builtin_string(const Token& name) {
+    const Keyword keyword = keyword_of(name.name);
+    if (keyword == Keyword::input_file_name)
+        return fs::path(files_.front().source->path).filename().string();
+    const Builtins::StringFunction* function = find_entry(Builtins::kStringFunctions, keyword);
+    if (!function) fail_identifier(name, "a string");
+    Builtins::Call call(*this, name);
+    return function->call(call);
 }
 
 }  // namespace rayset::tracer

@@ -61,6 +61,52 @@ std::string binary_word(Keyword type, int bytes, double value) {
     return out;
 }
 
+// #read's data: the file's tokens, taken one by one.
+const Token& take_data_token(FileHandle& file) {
+    return file.read_tokens->tokens[file.read_position++];
+}
+
+// A signed float literal of a #read data file, its sign (if any) being `first`.
+double read_data_number(const Parser& parser, FileHandle& file, const Token& first) {
+    double sign = 1;
+    Token token = first;
+    if (token.is(Symbol::minus) || token.is(Symbol::plus)) {
+        sign = token.is(Symbol::minus) ? -1 : 1;
+        token = take_data_token(file);
+    }
+    if (token.kind != TokenKind::number)
+        parser.fail(token, fmt::format("#read: expected a number in {}, found {}", file.path,
+                                       parser.describe(token)));
+    return sign * token.number;
+}
+
+// A vector literal <a, b, ...> of 2 to 5 terms of a #read data file, after its '<'.
+Numeric read_data_vector(const Parser& parser, FileHandle& file, const Token& open) {
+    Numeric vector;
+    vector.terms = 0;
+    for (;;) {
+        if (vector.terms == 5)
+            parser.fail(open, fmt::format("#read: a vector of more than 5 terms in {}", file.path));
+        vector.v[vector.terms++] = read_data_number(parser, file, take_data_token(file));
+        const Token separator = take_data_token(file);
+        if (separator.is(Symbol::greater)) break;
+        if (!separator.is(Symbol::comma))
+            parser.fail(separator,
+                        fmt::format("#read: expected ',' or '>' in a vector in {}", file.path));
+    }
+    if (vector.terms < 2)
+        parser.fail(open, fmt::format("#read: a vector needs 2 terms or more in {}", file.path));
+    return vector;
+}
+
+// The next item of a #read data file: a string, a vector or a float.
+Value read_data_item(const Parser& parser, FileHandle& file) {
+    const Token first = take_data_token(file);
+    if (first.kind == TokenKind::string) return file.read_tokens->strings[first.string];
+    if (first.is(Symbol::less)) return read_data_vector(parser, file, first);
+    return Numeric::scalar(read_data_number(parser, file, first));
+}
+
 }  // namespace
 
 std::string Parser::resolve_file(const std::string& name, const Token& at, const std::string& what,
@@ -182,21 +228,7 @@ void Parser::directive_read(const Token& directive) {
     if (file->writing)
         fail(handle, fmt::format("#read from a file opened for writing ({})", file->path));
     const std::vector<Token>& data = file->read_tokens->tokens;
-    auto take = [&]() -> const Token& { return data[file->read_position++]; };
     auto at_end = [&] { return data[file->read_position].kind == TokenKind::end; };
-    // A signed float literal of the data file.
-    auto read_number = [&](const Token& first) {
-        double sign = 1;
-        Token token = first;
-        if (token.is(Symbol::minus) || token.is(Symbol::plus)) {
-            sign = token.is(Symbol::minus) ? -1 : 1;
-            token = take();
-        }
-        if (token.kind != TokenKind::number)
-            fail(token, fmt::format("#read: expected a number in {}, found {}", file->path,
-                                    describe(token)));
-        return sign * token.number;
-    };
     // The file closes, undefining its handle, when a read meets its end: after an item with no
     // comma after it, or where an item should be (POV-Ray's rule).
     bool ended = false;
@@ -209,30 +241,7 @@ void Parser::directive_read(const Token& directive) {
             ended = true;
             break;
         }
-        const Token first = take();
-        Value value;
-        if (first.kind == TokenKind::string) {
-            value = file->read_tokens->strings[first.string];
-        } else if (first.is(Symbol::less)) {
-            Numeric vector;
-            vector.terms = 0;
-            for (;;) {
-                if (vector.terms == 5)
-                    fail(first,
-                         fmt::format("#read: a vector of more than 5 terms in {}", file->path));
-                vector.v[vector.terms++] = read_number(take());
-                const Token separator = take();
-                if (separator.is(Symbol::greater)) break;
-                if (!separator.is(Symbol::comma))
-                    fail(separator,
-                         fmt::format("#read: expected ',' or '>' in a vector in {}", file->path));
-            }
-            if (vector.terms < 2)
-                fail(first, fmt::format("#read: a vector needs 2 terms or more in {}", file->path));
-            value = vector;
-        } else {
-            value = Numeric::scalar(read_number(first));
-        }
+        Value value = read_data_item(*this, *file);
         if (data[file->read_position].is(Symbol::comma))
             ++file->read_position;
         else

@@ -118,20 +118,11 @@ double UserFunction::run(const Instruction* begin, const Instruction* end, const
                 stack[top] = call_builtin(in->index, &stack[top], in->argument_count);
                 ++top;
                 break;
-            case Op::call_function: {
+            case Op::call_function:
                 top -= in->argument_count;
-                const UserFunction& callee = *callees_[static_cast<size_t>(in->index)];
-                if (in->component == -1) {
-                    stack[top] = callee.evaluate_float(&stack[top]);
-                } else {
-                    const Numeric r = callee.evaluate(&stack[top]);
-                    stack[top] = in->component == -2
-                                     ? 0.297 * r.v[0] + 0.589 * r.v[1] + 0.114 * r.v[2]
-                                     : r.v[in->component];
-                }
+                stack[top] = call_function(*in, &stack[top]);
                 ++top;
                 break;
-            }
             case Op::select3:
                 top -= 2;
                 stack[top - 1] = stack[top - 1] < 0 ? stack[top] : stack[top + 1];
@@ -143,23 +134,37 @@ double UserFunction::run(const Instruction* begin, const Instruction* end, const
                                                        : stack[top + 2];
                 break;
             case Op::sum:
-            case Op::product: {
+            case Op::product:
                 // Bounds on the stack; the body follows this instruction.
                 top -= 2;
-                const double first = stack[top], last = stack[top + 1];
-                double result = in->op == Op::sum ? 0.0 : 1.0;
-                for (double i = first; i <= last; i += 1) {
-                    locals[in->index] = i;
-                    const double term = run(in + 1, in + 1 + in->length, parameters, locals);
-                    result = in->op == Op::sum ? result + term : result * term;
-                }
-                stack[top++] = result;
+                stack[top] = run_loop(*in, stack[top], stack[top + 1], parameters, locals);
+                ++top;
                 in += in->length;
                 break;
-            }
         }
     }
     return stack[0];
+}
+
+// The float the callee returns, or the term of its vector result the call takes (-2: its gray).
+double UserFunction::call_function(const Instruction& call, const double* arguments) const {
+    const UserFunction& callee = *callees_[static_cast<size_t>(call.index)];
+    if (call.component == -1) return callee.evaluate_float(arguments);
+    const Numeric r = callee.evaluate(arguments);
+    return call.component == -2 ? 0.297 * r.v[0] + 0.589 * r.v[1] + 0.114 * r.v[2]
+                                : r.v[call.component];
+}
+
+// sum() or product() of the loop body that follows `loop`, its variable from first to last.
+double UserFunction::run_loop(const Instruction& loop, double first, double last,
+                              const double* parameters, double* locals) const {
+    double result = loop.op == Op::sum ? 0.0 : 1.0;
+    for (double i = first; i <= last; i += 1) {
+        locals[loop.index] = i;
+        const double term = run(&loop + 1, &loop + 1 + loop.length, parameters, locals);
+        result = loop.op == Op::sum ? result + term : result * term;
+    }
+    return result;
 }
 
 double UserFunction::evaluate_float(const double* arguments) const {

@@ -75,6 +75,9 @@ private:
     friend class Parser;
     double run(const Instruction* begin, const Instruction* end, const double* parameters,
                double* locals) const;
+    double call_function(const Instruction& call, const double* arguments) const;
+    double run_loop(const Instruction& loop, double first, double last, const double* parameters,
+                    double* locals) const;
 
     Kind kind_ = Kind::expression;
     int parameter_count_ = 3;

@@ -282,6 +282,8 @@ private:
     Numeric parse_additive_after(Numeric first);  // + - with `first` already read as a term
     Numeric parse_vector_literal(const Token& open);
     Numeric parse_numeric_identifier(const Token& token, const Value& value);
+    // The built-in constants and functions: their tables and handlers (builtins.cpp).
+    class Builtins;
     Numeric parse_builtin_numeric(const Token& name);
     // Constants and built-in variables (pi, x, clock, version ...): nothing for anything else.
     std::optional<Numeric> builtin_constant(const Token& name) const;
@@ -290,6 +292,10 @@ private:
     Numeric call_spline(const Token& name, const Spline& spline);
     std::string parse_builtin_string(const Token& name);
     Colour parse_colour_body(const Token& start, bool keyword_given);
+    // parse_rvalue by its first token: a keyword, the layered texture, a declared identifier.
+    Value parse_keyword_rvalue(const Token& token);
+    Value parse_layered_texture_rvalue();
+    Value parse_identifier_rvalue(const Token& token, const Token& purpose);
     Value parse_array(const Token& keyword);
     void parse_array_initialiser(Array& array, size_t dimension, size_t& index,
                                  const Token& keyword);

@@ -1,5 +1,7 @@
 // What may follow '=' in #declare and #local, or be passed to a macro (POV-Ray's RVALUE):
 // chosen by the first token, as POV-Ray chooses it. Arrays and their initialisers too.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "tracer/scene_language/grammar.h"
@@ -16,129 +18,140 @@ ArrayRef copy_array(const Array& array) {
     return copy;
 }
 
+// The values written as a keyword and a block, and how each block is read. texture is not here:
+// several texture blocks in a row are one layered texture.
+struct BlockValue {
+    Keyword keyword;
+    Value (*parse)(Parser& parser, const Token& keyword);
+};
+const BlockValue kBlockValues[] = {
+    {Keyword::function, [](Parser& p, const Token& k) { return Value(p.parse_function(k)); }},
+    {Keyword::spline, [](Parser& p, const Token& k) { return Value(p.parse_spline(k)); }},
+    {Keyword::transform,
+     [](Parser& p, const Token& k) { return Value(TransformValue{p.parse_transform_block(k)}); }},
+    {Keyword::pigment, [](Parser& p, const Token& k) { return Value(parse_pigment(p, k)); }},
+    {Keyword::normal, [](Parser& p, const Token& k) { return Value(parse_normal(p, k)); }},
+    {Keyword::finish, [](Parser& p, const Token& k) { return Value(parse_finish(p, k)); }},
+    {Keyword::interior, [](Parser& p, const Token& k) { return Value(parse_interior(p, k)); }},
+    {Keyword::media, [](Parser& p, const Token& k) { return Value(parse_media(p, k)); }},
+    {Keyword::density, [](Parser& p, const Token& k) { return Value(parse_density(p, k)); }},
+    {Keyword::material, [](Parser& p, const Token& k) { return Value(parse_material(p, k)); }},
+    {Keyword::color_map, [](Parser& p, const Token& k) { return Value(parse_colour_map(p, k)); }},
+    {Keyword::colour_map, [](Parser& p, const Token& k) { return Value(parse_colour_map(p, k)); }},
+    {Keyword::pigment_map,
+     [](Parser& p, const Token& k) { return Value(parse_pigment_map(p, k)); }},
+    {Keyword::normal_map, [](Parser& p, const Token& k) { return Value(parse_normal_map(p, k)); }},
+    {Keyword::slope_map, [](Parser& p, const Token& k) { return Value(parse_slope_map(p, k)); }},
+    {Keyword::texture_map,
+     [](Parser& p, const Token& k) { return Value(parse_texture_map(p, k)); }},
+    {Keyword::density_map,
+     [](Parser& p, const Token& k) { return Value(parse_density_map(p, k)); }},
+    {Keyword::camera, [](Parser& p, const Token& k) { return Value(parse_camera(p, k)); }},
+    {Keyword::fog, [](Parser& p, const Token& k) { return Value(parse_fog(p, k)); }},
+    {Keyword::rainbow, [](Parser& p, const Token& k) { return Value(parse_rainbow(p, k)); }},
+    {Keyword::sky_sphere, [](Parser& p, const Token& k) { return Value(parse_sky_sphere(p, k)); }},
+};
+
+const BlockValue* find_block_value(Keyword keyword) {
+    const BlockValue* entry =
+        std::find_if(std::begin(kBlockValues), std::end(kBlockValues),
+                     [&](const BlockValue& block) { return block.keyword == keyword; });
+    return entry == std::end(kBlockValues) ? nullptr : entry;
+}
+
 }  // namespace
 
 Value Parser::parse_rvalue(const Token& purpose) {
     const Token token = peek();
     // Blocks may hold directives as anywhere else; only numbers and strings end at one.
-    const size_t saved_directive_frame = directive_frame_;
     struct Restore {
         size_t& frame;
         size_t saved;
         ~Restore() { frame = saved; }
-    } restore{directive_frame_, saved_directive_frame};
-    auto block = [&](auto&& parse) -> Value {
-        const Token keyword = next();
-        directive_frame_ = 0;
-        return parse(keyword);
-    };
+    } restore{directive_frame_, directive_frame_};
 
     if (token.kind == TokenKind::string) return parse_string();
-    if (token.kind == TokenKind::word && is_keyword(token.name)) {
-        if (starts_string(token)) return parse_string();
-        if (starts_object(*this, token)) {
-            directive_frame_ = 0;
-            return parse_object(*this);
-        }
-        if (is_colour_keyword(token)) {
-            const Colour c = parse_colour();
-            return Numeric{{c.red, c.green, c.blue, c.filter, c.transmit}, 5};
-        }
-        switch (static_cast<Keyword>(token.name)) {
-            case Keyword::array:
-                // Not a block: what follows its sizes is looked at, and a directive there must
-                // wait until the array is declared (arrays.inc writes `#local A = array[N]`
-                // followed by directives that use A).
-                next();
-                return parse_array(token);
-            case Keyword::function:
-                return block([&](const Token& k) { return Value(parse_function(k)); });
-            case Keyword::spline:
-                return block([&](const Token& k) { return Value(parse_spline(k)); });
-            case Keyword::transform:
-                return block([&](const Token& k) {
-                    return Value(TransformValue{parse_transform_block(k)});
-                });
-            case Keyword::texture: {
-                // #declare T = texture { } texture { } ...: a layered texture.
-                TextureRef texture = std::get<TextureRef>(
-                    block([&](const Token& k) { return Value(parse_texture(*this, k)); }));
-                directive_frame_ = saved_directive_frame;
-                while (peek_operator().is(Keyword::texture)) {
-                    const Token keyword = next();
-                    directive_frame_ = 0;
-                    const TextureRef above = parse_texture(*this, keyword);
-                    directive_frame_ = saved_directive_frame;
-                    texture = layer_textures(*this, keyword, texture, above);
-                }
-                return texture;
-            }
-            case Keyword::pigment:
-                return block([&](const Token& k) { return Value(parse_pigment(*this, k)); });
-            case Keyword::normal:
-                return block([&](const Token& k) { return Value(parse_normal(*this, k)); });
-            case Keyword::finish:
-                return block([&](const Token& k) { return Value(parse_finish(*this, k)); });
-            case Keyword::interior:
-                return block([&](const Token& k) { return Value(parse_interior(*this, k)); });
-            case Keyword::media:
-                return block([&](const Token& k) { return Value(parse_media(*this, k)); });
-            case Keyword::density:
-                return block([&](const Token& k) { return Value(parse_density(*this, k)); });
-            case Keyword::material:
-                return block([&](const Token& k) { return Value(parse_material(*this, k)); });
-            case Keyword::color_map:
-            case Keyword::colour_map:
-                return block([&](const Token& k) { return Value(parse_colour_map(*this, k)); });
-            case Keyword::pigment_map:
-                return block([&](const Token& k) { return Value(parse_pigment_map(*this, k)); });
-            case Keyword::normal_map:
-                return block([&](const Token& k) { return Value(parse_normal_map(*this, k)); });
-            case Keyword::slope_map:
-                return block([&](const Token& k) { return Value(parse_slope_map(*this, k)); });
-            case Keyword::texture_map:
-                return block([&](const Token& k) { return Value(parse_texture_map(*this, k)); });
-            case Keyword::density_map:
-                return block([&](const Token& k) { return Value(parse_density_map(*this, k)); });
-            case Keyword::camera:
-                return block([&](const Token& k) { return Value(parse_camera(*this, k)); });
-            case Keyword::fog:
-                return block([&](const Token& k) { return Value(parse_fog(*this, k)); });
-            case Keyword::rainbow:
-                return block([&](const Token& k) { return Value(parse_rainbow(*this, k)); });
-            case Keyword::sky_sphere:
-                return block([&](const Token& k) { return Value(parse_sky_sphere(*this, k)); });
-            default: break;
-        }
-        if (is_numeric_builtin(token.name)) return parse_numeric();
-        fail_not_supported(token, fmt::format("'{}' as a value", word(token)));
-    }
-    if (token.kind == TokenKind::word) {
-        const Value* value = peek_value();
-        if (!value) fail_identifier(token, fmt::format("a value for '{}'", word(purpose)));
-        if (std::holds_alternative<Numeric>(*value)) return parse_numeric();
-        if (std::holds_alternative<std::string>(*value)) return parse_string();
-        const Value held = *value;
-        next();
-        if (const ArrayRef* array = std::get_if<ArrayRef>(&held)) {
-            if (!peek_operator().is(Symbol::lbracket)) return copy_array(**array);
-            Value element = *array_element(token, **array, false);
-            if (std::holds_alternative<Numeric>(element) ||
-                std::holds_alternative<FunctionRef>(element) ||
-                std::holds_alternative<SplineRef>(element))
-                return parse_additive_after(
-                    parse_term_after(parse_postfix(parse_numeric_identifier(token, element))));
-            return element;
-        }
-        if (std::holds_alternative<FunctionRef>(held) || std::holds_alternative<SplineRef>(held)) {
-            if (!peek_operator().is(Symbol::lparen)) return held;  // the function or spline itself
-            return parse_additive_after(
-                parse_term_after(parse_postfix(parse_numeric_identifier(token, held))));
-        }
-        return held;
-    }
+    if (token.kind == TokenKind::word && is_keyword(token.name)) return parse_keyword_rvalue(token);
+    if (token.kind == TokenKind::word) return parse_identifier_rvalue(token, purpose);
     if (starts_expression(token)) return parse_numeric();
     fail_expected(fmt::format("a value for '{}'", word(purpose)), token);
+}
+
+Value Parser::parse_keyword_rvalue(const Token& token) {
+    if (starts_string(token)) return parse_string();
+    if (starts_object(*this, token)) {
+        directive_frame_ = 0;
+        return parse_object(*this);
+    }
+    if (is_colour_keyword(token)) {
+        const Colour c = parse_colour();
+        return Numeric{{c.red, c.green, c.blue, c.filter, c.transmit}, 5};
+    }
+    const Keyword keyword = static_cast<Keyword>(token.name);
+    if (keyword == Keyword::array) {
+        // Not a block: what follows its sizes is looked at, and a directive there must wait
+        // until the array is declared (arrays.inc writes `#local A = array[N]` followed by
+        // directives that use A).
+        next();
+        return parse_array(token);
+    }
+    if (keyword == Keyword::texture) return parse_layered_texture_rvalue();
+    if (const BlockValue* block = find_block_value(keyword)) {
+        const Token block_keyword = next();
+        directive_frame_ = 0;
+        return block->parse(*this, block_keyword);
+    }
+    if (is_numeric_builtin(token.name)) return parse_numeric();
+    fail_not_supported(token, fmt::format("'{}' as a value", word(token)));
+}
+
+// #declare T = texture { } texture { } ...: a layered texture. Inside the blocks directives run
+// as anywhere; between them, as after a number, one may end the value.
+Value Parser::parse_layered_texture_rvalue() {
+    const size_t saved_directive_frame = directive_frame_;
+    auto read_block = [&] {
+        const Token keyword = next();
+        directive_frame_ = 0;
+        TextureRef texture = parse_texture(*this, keyword);
+        directive_frame_ = saved_directive_frame;
+        return std::make_pair(keyword, texture);
+    };
+    TextureRef texture = read_block().second;
+    while (peek_operator().is(Keyword::texture)) {
+        const auto [keyword, above] = read_block();
+        texture = layer_textures(*this, keyword, texture, above);
+    }
+    return texture;
+}
+
+// A declared identifier: its value, or an expression that starts with it (an element of a
+// numeric array, a call of a function or spline).
+Value Parser::parse_identifier_rvalue(const Token& token, const Token& purpose) {
+    const Value* value = peek_value();
+    if (!value) fail_identifier(token, fmt::format("a value for '{}'", word(purpose)));
+    if (std::holds_alternative<Numeric>(*value)) return parse_numeric();
+    if (std::holds_alternative<std::string>(*value)) return parse_string();
+    const Value held = *value;
+    next();
+    auto expression_from = [&](const Value& start) -> Value {
+        return parse_additive_after(
+            parse_term_after(parse_postfix(parse_numeric_identifier(token, start))));
+    };
+    auto is_callable = [](const Value& v) {
+        return std::holds_alternative<FunctionRef>(v) || std::holds_alternative<SplineRef>(v);
+    };
+    if (const ArrayRef* array = std::get_if<ArrayRef>(&held)) {
+        if (!peek_operator().is(Symbol::lbracket)) return copy_array(**array);
+        Value element = *array_element(token, **array, false);
+        if (std::holds_alternative<Numeric>(element) || is_callable(element))
+            return expression_from(element);
+        return element;
+    }
+    if (is_callable(held)) {
+        if (!peek_operator().is(Symbol::lparen)) return held;  // the function or spline itself
+        return expression_from(held);
+    }
+    return held;
 }
 
 std::string Array::mismatch(const Value& value) const {
