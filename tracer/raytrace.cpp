@@ -78,6 +78,83 @@ std::vector<std::string> write_all_outputs(const RenderResult& result, const Out
     return written;
 }
 
+// What the scene language is told, for the animation frame `frame`.
+ParseOptions parse_options_of(const RaytraceOptions& options, const AnimationSettings& frame) {
+    ParseOptions parse_options;
+    parse_options.include_paths = options.include_paths;
+    parse_options.write_roots = options.write_roots;
+    parse_options.max_memory_megabytes = options.max_parse_memory_mb;
+    parse_options.declarations = options.declarations;
+    parse_options.animation = frame;
+    return parse_options;
+}
+
+// The options given, else the scene's global_settings, else the defaults.
+RenderSettings render_settings(const RaytraceOptions& options, const SceneDescription& description,
+                               const RenderSettings& size) {
+    RenderSettings settings = size;
+    settings.passes = options.passes ? options.passes : description.global.passes;
+    settings.time_limit = options.time_limit >= 0 ? options.time_limit : description.global.time_limit;
+    settings.seed = options.seed;
+    settings.threads = options.threads;
+    settings.progress = !options.quiet;
+    settings.photons_per_pass = options.photons_per_pass;
+    settings.photon_radius = options.photon_radius;
+    settings.naive_sources = options.naive_sources;
+    settings.spectral = options.spectral;
+    return settings;
+}
+
+void print_scene_summary(const std::string& scene, const SceneDescription& description) {
+    fmt::print("{}: {} objects, {} lights, {} ray sources, {} receivers, {}; {} files read\n", scene,
+               description.objects.size(), description.lights.size(), description.ray_sources.size(),
+               description.receivers.size(), description.has_camera ? "a camera" : "no camera",
+               description.files.size());
+}
+
+// Fails before, not after, the render.
+void check_output_folders(const OutputRequest& request) {
+    for (const std::string& target : {request.exr, request.png}) {
+        const fs::path folder = fs::path(target).parent_path();
+        if (!target.empty() && !folder.empty() && !fs::is_directory(folder))
+            throw Error(target + ": the output folder does not exist");
+    }
+}
+
+// The state to continue from: the checkpoint with --resume (checked before the render: one that
+// does not fit is refused and nothing is written), else none.
+RenderResult starting_point(const RaytraceOptions& options, const std::string& checkpoint_path,
+                            const CheckpointIdentity& identity, const SceneDescription& description,
+                            const RenderSettings& settings) {
+    if (!options.resume) {
+        if (fs::exists(checkpoint_path) && !options.quiet)
+            std::fprintf(stderr, "raytrace: note: starting afresh; %s will be replaced (--resume continues it)\n",
+                         checkpoint_path.c_str());
+        return {};
+    }
+    if (!fs::exists(checkpoint_path))
+        throw Error(checkpoint_path + ": no checkpoint to resume from (it is removed when a render completes; "
+                                      "--keep-checkpoint keeps it)");
+    RenderResult start = read_checkpoint(checkpoint_path, identity, blank_render(description, settings));
+    if (!options.quiet)
+        fmt::print("resuming from {}: {} passes done in {:.2f} s\n", checkpoint_path, start.passes, start.seconds);
+    return start;
+}
+
+void print_render_summary(const RenderSettings& settings, const RenderResult& result,
+                          const std::vector<std::string>& written) {
+    fmt::print("{} x {} pixels, {} passes of {} sample{} per pixel in {:.2f} s, {:.3g} rays ({:.3g} rays/s)\n",
+               settings.width, settings.height, result.passes, result.samples_per_pass,
+               result.samples_per_pass == 1 ? "" : "s", result.seconds, double(result.rays),
+               result.rays / result.seconds);
+    if (result.photons)
+        fmt::print("{:.3g} photons ({:.3g} photons/s), final gather radius {:.4g}; photon grid {:.1f} MiB, "
+                   "visible points {:.1f} MiB (largest pass)\n",
+                   double(result.photons), result.photons / result.seconds, result.photon_radius,
+                   result.photon_bytes / 1048576.0, result.visible_point_bytes / 1048576.0);
+    for (const std::string& file : written) fmt::print("wrote {}\n", file);
+}
+
 // A process other than the root of an MPI job renders its share of the passes; the root
 // reads the checkpoint, writes every file and says what happened.
 int render_share(const RenderScene& scene, const RenderSettings& settings) {
@@ -88,77 +165,13 @@ int render_share(const RenderScene& scene, const RenderSettings& settings) {
     return interrupt.signal() ? interrupt.exit_code() : 0;
 }
 
-int run(int argc, char** argv) {
-    RaytraceOptions options;
-    int exit_code = 0;
-    if (!parse_raytrace_options(argc, argv, options, exit_code)) return exit_code;
-
-    RenderSettings settings;
-    if (options.width) settings.width = options.width;
-    if (options.height) settings.height = options.height;
-    ParseOptions parse_options;
-    parse_options.include_paths = options.include_paths;
-    parse_options.write_roots = options.write_roots;
-    parse_options.max_memory_megabytes = options.max_parse_memory_mb;
-    parse_options.declarations = options.declarations;
-    const AnimationFrames frames =
-        animation_frames(options.animation, settings.width, settings.height);
-    parse_options.animation = frames.first;
-    if (frames.last_frame > frames.first_frame && !options.quiet)
-        std::fprintf(stderr, "raytrace: note: rendering frame %d only of frames %d to %d (one frame "
-                             "per run; +SF chooses it)\n",
-                     frames.first_frame, frames.first_frame, frames.last_frame);
-    const SceneDescription description = parse_scene_file(options.scene, parse_options);
-    const Processes& processes = Processes::world();
-    if (!processes.is_root()) options.quiet = true;
-    if (processes.size() > 1 && (options.parse_only || options.bench))
-        throw Error("--parse-only and --bench run in one process: start raytrace without mpirun for them");
-    if (options.parse_only) {
-        fmt::print("{}: {} objects, {} lights, {} ray sources, {} receivers, {}; {} files read\n",
-                   options.scene, description.objects.size(), description.lights.size(),
-                   description.ray_sources.size(), description.receivers.size(),
-                   description.has_camera ? "a camera" : "no camera", description.files.size());
-        return 0;
-    }
-    RenderScene scene(description);
-
-    settings.passes = options.passes ? options.passes : description.global.passes;
-    settings.time_limit = options.time_limit >= 0 ? options.time_limit : description.global.time_limit;
-    settings.seed = options.seed;
-    settings.threads = options.threads;
-    settings.progress = !options.quiet;
-    settings.photons_per_pass = options.photons_per_pass;
-    settings.photon_radius = options.photon_radius;
-    settings.naive_sources = options.naive_sources;
-    settings.spectral = options.spectral;
-    if (options.bench) {
-        run_raytrace_benchmark(scene, settings);
-        return 0;
-    }
-    const OutputRequest request = output_request(options);
-    if (!processes.is_root()) return render_share(scene, settings);
-    for (const std::string& target : {request.exr, request.png}) {  // fail before, not after, the render
-        const fs::path folder = fs::path(target).parent_path();
-        if (!target.empty() && !folder.empty() && !fs::is_directory(folder))
-            throw Error(target + ": the output folder does not exist");
-    }
-    // Checked before the render: a checkpoint that does not fit is refused and nothing is written.
+// The render with checkpoints and interruption, then its files; the exit code.
+int render_to_files(const RenderScene& scene, const RenderSettings& settings, const RaytraceOptions& options,
+                    const OutputRequest& request, const AnimationSettings& frame) {
     const std::string checkpoint_path = request.receiver_prefix + ".checkpoint";
-    CheckpointIdentity identity = checkpoint_identity(description, settings);
-    add_animation(identity, frames.first);
-    RenderResult start;
-    if (options.resume) {
-        if (!fs::exists(checkpoint_path))
-            throw Error(checkpoint_path + ": no checkpoint to resume from (it is removed when a render completes; "
-                                          "--keep-checkpoint keeps it)");
-        start = read_checkpoint(checkpoint_path, identity, blank_render(description, settings));
-        if (!options.quiet)
-            fmt::print("resuming from {}: {} passes done in {:.2f} s\n", checkpoint_path, start.passes, start.seconds);
-    } else if (fs::exists(checkpoint_path) && !options.quiet) {
-        std::fprintf(stderr, "raytrace: note: starting afresh; %s will be replaced (--resume continues it)\n",
-                     checkpoint_path.c_str());
-    }
-
+    CheckpointIdentity identity = checkpoint_identity(scene.description(), settings);
+    add_animation(identity, frame);
+    RenderResult start = starting_point(options, checkpoint_path, identity, scene.description(), settings);
     CheckpointSchedule checkpoints(checkpoint_path, identity, options.checkpoint_interval, start.passes);
     const InterruptSignals interrupt;  // SIGINT, SIGTERM: stop between or within passes
     RenderControl control;
@@ -183,19 +196,42 @@ int run(int argc, char** argv) {
                      interrupt.signal_name(), result.passes, result.passes, checkpoint_path.c_str());
         return interrupt.exit_code();
     }
-    if (!options.quiet) {
-        fmt::print("{} x {} pixels, {} passes of {} sample{} per pixel in {:.2f} s, {:.3g} rays ({:.3g} rays/s)\n",
-                   settings.width, settings.height, result.passes, result.samples_per_pass,
-                   result.samples_per_pass == 1 ? "" : "s", result.seconds, double(result.rays),
-                   result.rays / result.seconds);
-        if (result.photons)
-            fmt::print("{:.3g} photons ({:.3g} photons/s), final gather radius {:.4g}; photon grid {:.1f} MiB, "
-                       "visible points {:.1f} MiB (largest pass)\n",
-                       double(result.photons), result.photons / result.seconds, result.photon_radius,
-                       result.photon_bytes / 1048576.0, result.visible_point_bytes / 1048576.0);
-        for (const std::string& file : written) fmt::print("wrote {}\n", file);
-    }
+    if (!options.quiet) print_render_summary(settings, result, written);
     return 0;
+}
+
+int run(int argc, char** argv) {
+    RaytraceOptions options;
+    int exit_code = 0;
+    if (!parse_raytrace_options(argc, argv, options, exit_code)) return exit_code;
+    const Processes& processes = Processes::world();
+    if (!processes.is_root()) options.quiet = true;
+    if (processes.size() > 1 && (options.parse_only || options.bench))
+        throw Error("--parse-only and --bench run in one process: start raytrace without mpirun for them");
+
+    RenderSettings size;
+    if (options.width) size.width = options.width;
+    if (options.height) size.height = options.height;
+    const AnimationFrames frames = animation_frames(options.animation, size.width, size.height);
+    if (frames.last_frame > frames.first_frame && !options.quiet)
+        std::fprintf(stderr, "raytrace: note: rendering frame %d only of frames %d to %d (one frame "
+                             "per run; +SF chooses it)\n",
+                     frames.first_frame, frames.first_frame, frames.last_frame);
+    const SceneDescription description = parse_scene_file(options.scene, parse_options_of(options, frames.first));
+    if (options.parse_only) {
+        print_scene_summary(options.scene, description);
+        return 0;
+    }
+    RenderScene scene(description);
+    const RenderSettings settings = render_settings(options, description, size);
+    if (options.bench) {
+        run_raytrace_benchmark(scene, settings);
+        return 0;
+    }
+    if (!processes.is_root()) return render_share(scene, settings);
+    const OutputRequest request = output_request(options);
+    check_output_folders(request);
+    return render_to_files(scene, settings, options, request, frames.first);
 }
 
 }  // namespace
