@@ -42,6 +42,11 @@ with the budget already reached only writes its outputs. A checkpoint of another
 seed or integrator setting is refused, naming what differs. A completed render removes the
 checkpoint (--keep-checkpoint keeps it, to add passes later).
 
+Several processes or machines: mpirun -n N raytrace ... (or srun) shares the passes among N
+processes (give each --threads); rank 0 writes the files and checkpoints. The result equals the
+one-process render up to the order of floating-point sums, the same bits for a given N; a
+Slurm script: examples/slurm_render.sh.
+
 POV-Ray switches: +Wn width, +Hn height, +Ofile output, +Ifile scene, +Ldir include folder;
 animation: +Kn clock, +KFIn / +KFFn initial / final frame, +KIn / +KFn initial / final clock,
 +SFn / +EFn subset start / end frame (.ini: Clock=, Initial_Frame=, Final_Frame=, Initial_Clock=,
@@ -342,38 +347,39 @@ AnimationFrames animation_frames(const AnimationOptions& options, int width, int
     return frames;
 }
 
-bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit_code) {
-    std::vector<std::string> ini_files, pov_switches, rest;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg.size() > 1 && arg[0] == '+') pov_switches.push_back(arg);
-        else if (lower(arg).rfind("declare=", 0) == 0) pov_switches.push_back(arg);
-        else if (ends_with_ini(arg) && arg[0] != '-') ini_files.push_back(arg);
-        else rest.push_back(arg);
-    }
-    CLI::App app(kDescription, "raytrace");
-    app.get_formatter()->column_width(34);
+namespace {
+
+// Options given on the command line, applied after .ini files and + switches (which they
+// override).
+struct CommandLine {
     std::string scene, output, png;
     std::vector<std::string> includes;
     int width = 0, height = 0, passes = 0, threads = 0;
     double time_limit = -1, exposure = 0;
     uint64_t seed = 0;
-    app.add_option("scene", scene, "Scene file (.pov); or +Ifile / Input_File_Name=");
-    app.add_option("-o,--output", output, "Output OpenEXR file (default: SCENE-NAME.exr here); or +Ofile");
-    app.add_option("--png", png, "Preview PNG file (default: the output's name with .png)");
+};
+
+void add_image_options(CLI::App& app, RaytraceOptions& o, CommandLine& c) {
+    app.add_option("scene", c.scene, "Scene file (.pov); or +Ifile / Input_File_Name=");
+    app.add_option("-o,--output", c.output, "Output OpenEXR file (default: SCENE-NAME.exr here); or +Ofile");
+    app.add_option("--png", c.png, "Preview PNG file (default: the output's name with .png)");
     app.add_flag("--no-png", o.no_png, "Write no PNG preview");
-    app.add_option("--width", width, "Image width in pixels (default 320); or +Wn")->check(CLI::Range(1, 65536));
-    app.add_option("--height", height, "Image height in pixels (default 240); or +Hn")->check(CLI::Range(1, 65536));
-    app.add_option("--passes", passes, "Progressive passes (default: the scene's `passes`, else 16, "
-                                       "or unlimited with a time limit)")->check(CLI::PositiveNumber);
-    app.add_option("--time", time_limit, "Time budget in seconds, checked between passes (default: the scene's "
-                                         "`time_limit`)")->check(CLI::NonNegativeNumber);
-    app.add_option("--threads", threads, "Threads (default: every core); the image does not depend on it")
+    app.add_option("--width", c.width, "Image width in pixels (default 320); or +Wn")->check(CLI::Range(1, 65536));
+    app.add_option("--height", c.height, "Image height in pixels (default 240); or +Hn")
+        ->check(CLI::Range(1, 65536));
+    app.add_option("--passes", c.passes, "Progressive passes (default: the scene's `passes`, else 16, "
+                                         "or unlimited with a time limit)")->check(CLI::PositiveNumber);
+    app.add_option("--time", c.time_limit, "Time budget in seconds, checked between passes (default: the scene's "
+                                           "`time_limit`)")->check(CLI::NonNegativeNumber);
+    app.add_option("--threads", c.threads, "Threads (default: every core); the image does not depend on it")
         ->check(CLI::NonNegativeNumber);
-    app.add_option("--seed", seed, "Random seed (default 0): same seed and passes, same image");
-    app.add_option("--include-path", includes, "Folder searched for #include and mesh files (repeatable); or +Ldir");
-    app.add_option("--exposure", exposure, "PNG preview: multiply radiance in W/(m^2 sr) by this before sRGB "
-                                           "(default: 1 / 99th percentile of the largest channel of the lit pixels)")->check(CLI::PositiveNumber);
+    app.add_option("--seed", c.seed, "Random seed (default 0): same seed and passes, same image");
+    app.add_option("--include-path", c.includes, "Folder searched for #include and mesh files (repeatable); or +Ldir");
+    app.add_option("--exposure", c.exposure, "PNG preview: multiply radiance in W/(m^2 sr) by this before sRGB "
+                                             "(default: 1 / 99th percentile of the largest channel of the lit pixels)")->check(CLI::PositiveNumber);
+}
+
+void add_tool_options(CLI::App& app, RaytraceOptions& o) {
     app.add_flag("--bench", o.bench, "Benchmark: renderer rays/s against bare Embree rtcIntersect1 on the same "
                                      "rays, 1 and 2 threads; writes nothing");
     app.add_flag("-q,--quiet", o.quiet, "No progress bar or summary");
@@ -384,6 +390,9 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
                                                    "default: none, writing is refused)");
     app.add_option("--max-parse-memory", o.max_parse_memory_mb, "Megabytes the scene may make the parser grow by "
                                                                 "(default: half the RAM)")->check(CLI::PositiveNumber);
+}
+
+void add_transport_options(CLI::App& app, RaytraceOptions& o) {
     app.add_option("--photons", o.photons_per_pass, "Bidirectional: photons per pass (default: the pass's camera "
                                                     "samples, at least 65536; a pass takes photons / (pixels + "
                                                     "receiver cells) samples per pixel and cell, at least 1)")->check(CLI::PositiveNumber);
@@ -396,6 +405,9 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
                                            "and photon, sources' spectra, RGB lights and materials upsampled) "
                                            "instead of RGB; "
                                            "also global_settings { spectral on }");
+}
+
+void add_checkpoint_options(CLI::App& app, RaytraceOptions& o) {
     app.add_flag("--resume", o.resume, "Continue the interrupted render whose checkpoint is OUT.checkpoint (same "
                                        "scene and options), up to --passes or --time in total");
     app.add_flag("--keep-checkpoint", o.keep_checkpoint, "Keep OUT.checkpoint after the render completes (to "
@@ -403,6 +415,40 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
     app.add_option("--checkpoint-interval", o.checkpoint_interval, "Seconds between checkpoints (default 10; 0: "
                                                                    "after every pass)")
         ->check(CLI::NonNegativeNumber);
+}
+
+void apply_command_line(const CommandLine& c, RaytraceOptions& o) {
+    if (!c.scene.empty()) o.scene = c.scene;
+    if (!c.output.empty()) o.output = c.output;
+    if (!c.png.empty()) o.png = c.png;
+    if (c.width) o.width = c.width;
+    if (c.height) o.height = c.height;
+    if (c.passes) o.passes = c.passes;
+    if (c.time_limit >= 0) o.time_limit = c.time_limit;
+    o.threads = c.threads;
+    o.seed = c.seed;
+    o.exposure = c.exposure;
+    o.include_paths.insert(o.include_paths.end(), c.includes.begin(), c.includes.end());
+}
+
+}  // namespace
+
+bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit_code) {
+    std::vector<std::string> ini_files, pov_switches, rest;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg.size() > 1 && arg[0] == '+') pov_switches.push_back(arg);
+        else if (lower(arg).rfind("declare=", 0) == 0) pov_switches.push_back(arg);
+        else if (ends_with_ini(arg) && arg[0] != '-') ini_files.push_back(arg);
+        else rest.push_back(arg);
+    }
+    CLI::App app(kDescription, "raytrace");
+    app.get_formatter()->column_width(34);
+    CommandLine command_line;
+    add_image_options(app, o, command_line);
+    add_tool_options(app, o);
+    add_transport_options(app, o);
+    add_checkpoint_options(app, o);
     try {
         std::reverse(rest.begin(), rest.end());  // CLI11 takes the arguments in reverse order
         app.parse(rest);
@@ -415,17 +461,7 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
         if (s[0] == '+') apply_pov_switch(s, "command line", o);
         else apply_ini_setting(s, "command line", o);
     }
-    if (!scene.empty()) o.scene = scene;
-    if (!output.empty()) o.output = output;
-    if (!png.empty()) o.png = png;
-    if (width) o.width = width;
-    if (height) o.height = height;
-    if (passes) o.passes = passes;
-    if (time_limit >= 0) o.time_limit = time_limit;
-    o.threads = threads;
-    o.seed = seed;
-    o.exposure = exposure;
-    o.include_paths.insert(o.include_paths.end(), includes.begin(), includes.end());
+    apply_command_line(command_line, o);
     if (o.scene.empty()) {
         std::fprintf(stderr, "raytrace: no scene file given (raytrace SCENE.pov, +ISCENE.pov or Input_File_Name= in an "
                              ".ini file); see raytrace --help\n");
