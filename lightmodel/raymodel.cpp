@@ -68,6 +68,83 @@ void print(const nlohmann::json& j) {
     std::printf("body         %zu spheres\n", j["spheres"].get<size_t>());
 }
 
+// The command line of `raymodel build` and `raymodel info`.
+struct Command {
+    ModelOptions options;
+    std::string input, output, diagram_smoothing = "auto";
+    bool json = false;
+};
+
+CLI::App* add_build_command(CLI::App& app, Command& c) {
+    ModelOptions& o = c.options;
+    auto* build = app.add_subcommand("build", "Build a model from a ray file of any supported format");
+    build->add_option("rayfile", c.input, "Ray file (TM-25, LightTools, Zemax, SPEOS, CSV)")->required()->check(CLI::ExistingFile);
+    build->add_option("-o,--output", c.output, "Model file to write (.vdb)")->required();
+    build->add_option("--density-resolution", o.density_resolution,
+                      "Cells along the longest axis of the density lattice; 0 adapts it to the ray count "
+                      "(round(sqrt(rays / 64)), at most --max-density-resolution)");
+    build->add_option("--max-density-resolution", o.max_density_resolution, "Upper bound of the adapted density resolution")
+        ->capture_default_str();
+    build->add_option("--flux-resolution", o.flux_resolution, "Cells along the longest axis of the flux lattice")
+        ->capture_default_str();
+    build->add_option("--intensity-resolution", o.intensity_resolution,
+                      "Cells along the longest axis of the intensity lattice (one goniometric diagram each)")
+        ->capture_default_str();
+    build->add_option("--max-spheres", o.max_spheres_per_cell, "Most spheres in one boundary cell")->capture_default_str();
+    build->add_option("--samples-per-cell", o.samples_per_cell, "Origins kept per boundary cell for the sphere fit")
+        ->capture_default_str();
+    build->add_option("--diagram-smoothing", c.diagram_smoothing,
+                      "Goniometric diagrams: 'auto' estimates each intensity cell's density of directions with kernels "
+                      "whose width (per direction, from all rays) and grid follow the rays; 'none' keeps each cell's "
+                      "histogram (40 x 12 cells unless set below)")
+        ->check(CLI::IsMember({"auto", "none"}))
+        ->capture_default_str();
+    build->add_option("--diagram-bands", o.diagram_bands,
+                      "Bands of cos(theta) of each goniometric diagram (even); 0: chosen from the rays")
+        ->capture_default_str();
+    build->add_option("--diagram-sectors", o.diagram_sectors,
+                      "Sectors of phi of each goniometric diagram; 0: chosen from the rays")
+        ->capture_default_str();
+    build->add_option("--threads", o.threads, "Worker threads; 0 = all cores")->capture_default_str();
+    build->add_option("--seed", o.seed, "Seed of the reservoir sampling of origins")->capture_default_str();
+    build->add_flag("--json", c.json, "Print the summary as JSON");
+    return build;
+}
+
+// The model built with a progress bar per pass, written, and summarised.
+void run_build(Command& c) {
+    c.options.smooth_diagrams = c.diagram_smoothing == "auto";
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<rayset::ProgressBar> bar;
+    int current = 0;
+    const char* labels[] = {"", "bounds", "lattices", "origins", "spheres"};
+    const LightModel model = build_model(c.input, c.options, [&](int pass, double fraction) {
+        if (pass != current) {
+            if (bar) bar->done();
+            bar = std::make_unique<rayset::ProgressBar>(std::string("pass ") + std::to_string(pass) + "/4 " + labels[pass]);
+            current = pass;
+        }
+        bar->update(fraction);
+    });
+    if (bar) bar->done();
+    write_model(model, c.output);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    nlohmann::json j = summary(model, c.output);
+    j["build_seconds"] = seconds;
+    if (c.json) {
+        std::printf("%s\n", j.dump(2).c_str());
+        return;
+    }
+    print(j);
+    std::printf("built in     %.2f s\n", seconds);
+}
+
+void run_info(const Command& c) {
+    const nlohmann::json j = summary(read_model(c.input), c.input);
+    if (c.json) std::printf("%s\n", j.dump(2).c_str());
+    else print(j);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -82,77 +159,16 @@ int main(int argc, char** argv) {
         "  vdb_print -l LED.vdb                           the grids, as OpenVDB sees them\n"
         "Run 'raymodel COMMAND --help' for the options of each command."};
     app.require_subcommand(1);
-
-    ModelOptions options;
-    std::string input, output, diagram_smoothing = "auto";
-    bool json = false;
-    auto* build = app.add_subcommand("build", "Build a model from a ray file of any supported format");
-    build->add_option("rayfile", input, "Ray file (TM-25, LightTools, Zemax, SPEOS, CSV)")->required()->check(CLI::ExistingFile);
-    build->add_option("-o,--output", output, "Model file to write (.vdb)")->required();
-    build->add_option("--density-resolution", options.density_resolution,
-                      "Cells along the longest axis of the density lattice; 0 adapts it to the ray count "
-                      "(round(sqrt(rays / 64)), at most --max-density-resolution)");
-    build->add_option("--max-density-resolution", options.max_density_resolution, "Upper bound of the adapted density resolution")
-        ->capture_default_str();
-    build->add_option("--flux-resolution", options.flux_resolution, "Cells along the longest axis of the flux lattice")
-        ->capture_default_str();
-    build->add_option("--intensity-resolution", options.intensity_resolution,
-                      "Cells along the longest axis of the intensity lattice (one goniometric diagram each)")
-        ->capture_default_str();
-    build->add_option("--max-spheres", options.max_spheres_per_cell, "Most spheres in one boundary cell")->capture_default_str();
-    build->add_option("--samples-per-cell", options.samples_per_cell, "Origins kept per boundary cell for the sphere fit")
-        ->capture_default_str();
-    build->add_option("--diagram-smoothing", diagram_smoothing,
-                      "Goniometric diagrams: 'auto' estimates each intensity cell's density of directions with kernels "
-                      "whose width (per direction, from all rays) and grid follow the rays; 'none' keeps each cell's "
-                      "histogram (40 x 12 cells unless set below)")
-        ->check(CLI::IsMember({"auto", "none"}))
-        ->capture_default_str();
-    build->add_option("--diagram-bands", options.diagram_bands,
-                      "Bands of cos(theta) of each goniometric diagram (even); 0: chosen from the rays")
-        ->capture_default_str();
-    build->add_option("--diagram-sectors", options.diagram_sectors,
-                      "Sectors of phi of each goniometric diagram; 0: chosen from the rays")
-        ->capture_default_str();
-    build->add_option("--threads", options.threads, "Worker threads; 0 = all cores")->capture_default_str();
-    build->add_option("--seed", options.seed, "Seed of the reservoir sampling of origins")->capture_default_str();
-    build->add_flag("--json", json, "Print the summary as JSON");
-
-    auto* info = app.add_subcommand("info", "Summarise a model file");
-    info->add_option("model", input, "Model file (.vdb)")->required()->check(CLI::ExistingFile);
-    info->add_flag("--json", json, "Print the summary as JSON");
+    Command command;
+    CLI::App* build = add_build_command(app, command);
+    CLI::App* info = app.add_subcommand("info", "Summarise a model file");
+    info->add_option("model", command.input, "Model file (.vdb)")->required()->check(CLI::ExistingFile);
+    info->add_flag("--json", command.json, "Print the summary as JSON");
 
     try {
         app.parse(argc, argv);
-        if (*build) {
-            options.smooth_diagrams = diagram_smoothing == "auto";
-            const auto start = std::chrono::steady_clock::now();
-            std::unique_ptr<rayset::ProgressBar> bar;
-            int current = 0;
-            const char* labels[] = {"", "bounds", "lattices", "origins", "spheres"};
-            const LightModel model = build_model(input, options, [&](int pass, double fraction) {
-                if (pass != current) {
-                    if (bar) bar->done();
-                    bar = std::make_unique<rayset::ProgressBar>(std::string("pass ") + std::to_string(pass) + "/4 " + labels[pass]);
-                    current = pass;
-                }
-                bar->update(fraction);
-            });
-            if (bar) bar->done();
-            write_model(model, output);
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            nlohmann::json j = summary(model, output);
-            j["build_seconds"] = seconds;
-            if (json) std::printf("%s\n", j.dump(2).c_str());
-            else {
-                print(j);
-                std::printf("built in     %.2f s\n", seconds);
-            }
-        } else if (*info) {
-            const nlohmann::json j = summary(read_model(input), input);
-            if (json) std::printf("%s\n", j.dump(2).c_str());
-            else print(j);
-        }
+        if (*build) run_build(command);
+        else if (*info) run_info(command);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     } catch (const std::exception& e) {
