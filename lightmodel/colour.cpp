@@ -35,24 +35,24 @@ Xyz bin_colour_matching(const SpectralBins& bins, int bin) {
     return {sum.x / steps, sum.y / steps, sum.z / steps};
 }
 
-LinearRgb colour_per_flux(const Xyz& xyz, double efficacy) {
+Rgb colour_per_flux(const Xyz& xyz, double efficacy) {
     const double scale = efficacy / kRgbLumensPerWatt;
     if (!(xyz.y > 0)) return {scale, scale, scale};
-    LinearRgb c = to_linear_srgb({xyz.x / xyz.y, 1, xyz.z / xyz.y});  // Y = 1
+    Rgb c = to_linear_srgb({xyz.x / xyz.y, 1, xyz.z / xyz.y});  // Y = 1
     // Toward white (1, 1, 1), which has the same Y = 1, until the most negative channel is 0.
-    const double lowest = std::min({c.r, c.g, c.b});
+    const double lowest = std::min({c.red, c.green, c.blue});
     if (lowest < 0) {
         const double t = -lowest / (1 - lowest);
-        c = {(1 - t) * c.r + t, (1 - t) * c.g + t, (1 - t) * c.b + t};
+        c = {(1 - t) * c.red + t, (1 - t) * c.green + t, (1 - t) * c.blue + t};
     }
     const double y = luminance(c);  // 1 up to the rounding of the matrix
     return (scale / y) * c;
 }
 
-std::vector<LinearRgb> cell_colours(const LightModel& model) {
+std::vector<Rgb> cell_colours(const LightModel& model) {
     std::vector<Xyz> bin_xyz(size_t(model.bins.count));
     for (int b = 0; b < model.bins.count; ++b) bin_xyz[size_t(b)] = bin_colour_matching(model.bins, b);
-    std::vector<LinearRgb> colours;
+    std::vector<Rgb> colours;
     colours.reserve(model.flux_cells.size());
     for (size_t c = 0; c < model.flux_cells.size(); ++c) {
         const FluxCell& cell = model.flux_cells[c];

@@ -23,11 +23,11 @@ Xyz bin_colour_matching(const SpectralBins& bins, int bin);
 // Linear-sRGB triple of one unit of flux whose chromaticity is that of `xyz` (any scale; grey
 // when it is zero) and whose luminous value is `efficacy` lm per unit: luminance(result) =
 // efficacy / kRgbLumensPerWatt.
-LinearRgb colour_per_flux(const Xyz& xyz, double efficacy);
+Rgb colour_per_flux(const Xyz& xyz, double efficacy);
 
 // Per-unit-flux colour of each flux cell of a model: chromaticity of its spectrum, luminance
 // from its luminous flux. Cells without a known spectrum are grey; without a known luminous
 // flux they keep the renderer's convention (a watt is 683 lm, a lumen is a lumen).
-std::vector<LinearRgb> cell_colours(const LightModel& model);
+std::vector<Rgb> cell_colours(const LightModel& model);
 
 }  // namespace rayset::lightmodel

@@ -29,8 +29,8 @@ double ComplexSource::L(Vec3 origin, Vec3 dir, const EmitterHit&, const Spectral
     return volume_.radiance_toward(origin, dir, 0, kInfinity, select);
 }
 
-LinearRgb ComplexSource::L_colour(Vec3 origin, Vec3 dir, const EmitterHit&) const {
-    LinearRgb colour;
+Rgb ComplexSource::L_colour(Vec3 origin, Vec3 dir, const EmitterHit&) const {
+    Rgb colour;
     volume_.radiance_toward(origin, dir, 0, kInfinity, {}, &colour);
     return colour;
 }

@@ -21,10 +21,10 @@ public:
 
     double phi(const SpectralSelect& select = {}) const override { return volume_.total(select); }
     Box bounds() const override { return model_->bounds(); }
-    LinearRgb phi_colour() const override { return volume_.total_colour(); }
+    Rgb phi_colour() const override { return volume_.total_colour(); }
     bool intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hit) const override;
     double L(Vec3 origin, Vec3 dir, const EmitterHit& hit, const SpectralSelect& select = {}) const override;
-    LinearRgb L_colour(Vec3 origin, Vec3 dir, const EmitterHit& hit) const override;
+    Rgb L_colour(Vec3 origin, Vec3 dir, const EmitterHit& hit) const override;
     void L_spectral(Vec3 origin, Vec3 dir, const EmitterHit& hit, SpectralQuery& query) const override;
     BinnedSpectrum phi_spectrum() const override { return volume_.total_spectrum(); }
     std::optional<LiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,

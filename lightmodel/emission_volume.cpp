@@ -59,8 +59,8 @@ BinnedSpectrum EmissionVolume::total_spectrum() const {
     return BinnedSpectrum(sum);
 }
 
-LinearRgb EmissionVolume::total_colour() const {
-    LinearRgb sum;
+Rgb EmissionVolume::total_colour() const {
+    Rgb sum;
     for (uint32_t c = 0; c < model_.flux_cells.size(); ++c) sum += model_.flux_cells[c].flux * cell_colour_[c];
     return sum;
 }
@@ -83,10 +83,10 @@ double EmissionVolume::cell_volume(uint32_t cell) const {
 }
 
 double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
-                                       const SpectralSelect& select, LinearRgb* colour, SpectralQuery* spectral) const {
+                                       const SpectralSelect& select, Rgb* colour, SpectralQuery* spectral) const {
     const Vec3 emitted = -dir;
     double sum = 0;
-    LinearRgb colour_sum;
+    Rgb colour_sum;
     traverse(origin, dir, tmin, tmax, [&](uint32_t c, double t0, double t1) {
         const FluxCell& cell = model_.flux_cells[c];
         const double d = model_.diagrams[size_t(cell.intensity_cell)].pdf(emitted);

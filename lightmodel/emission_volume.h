@@ -48,10 +48,10 @@ public:
     // integral as a linear-sRGB triple (colour.h) is stored there too, and with `spectral` its
     // values at the query's wavelengths (emission_spectrum.h), from one traversal.
     double radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax, const SpectralSelect& select,
-                           LinearRgb* colour = nullptr, SpectralQuery* spectral = nullptr) const;
+                           Rgb* colour = nullptr, SpectralQuery* spectral = nullptr) const;
     // Colour of one unit of a cell's flux (colour.h), and the colour of the whole source.
-    const LinearRgb& cell_colour(uint32_t cell) const { return cell_colour_[cell]; }
-    LinearRgb total_colour() const;
+    const Rgb& cell_colour(uint32_t cell) const { return cell_colour_[cell]; }
+    Rgb total_colour() const;
     // Luminance-normalised spectrum of one cell (emission_spectrum.h), and the source's whole
     // light as a spectrum: the cells' spectra weighted by their luminance weights.
     const BinnedSpectrum& cell_spectrum(uint32_t cell) const { return cell_spectrum_[cell]; }
@@ -78,7 +78,7 @@ private:
     const LightModel& model_;
     std::vector<int32_t> voxel_cell_;   // dense density lattice -> flux cell, -1 empty
     std::vector<double> cell_cdf_;      // over flux cells, by flux
-    std::vector<LinearRgb> cell_colour_;
+    std::vector<Rgb> cell_colour_;
     std::vector<BinnedSpectrum> cell_spectrum_;
     double voxel_volume_ = 0;
 };

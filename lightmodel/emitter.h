@@ -25,7 +25,7 @@ struct LiSample {
     double distance = 0;  // to the body hit along wi (for the shadow ray)
     double Li = 0;      // radiance arriving from wi
     double pdf = 0;     // sr^-1
-    LinearRgb Li_colour;  // the same radiance as a colour (colour.h), whatever the selection
+    Rgb Li_colour;  // the same radiance as a colour (colour.h), whatever the selection
 };
 
 // Photon emission: where and in which direction a photon leaves, and the flux it carries
@@ -36,7 +36,7 @@ struct LeSample {
     double pdf_position = 0;  // mm^-3 (volume) or probability of the ray (naive)
     double pdf_direction = 0; // sr^-1 (0: the direction is fixed, a delta)
     int32_t cell = -1;        // flux cell (spectrum) of the origin; -1 naive
-    LinearRgb flux_colour;    // the photon's whole flux as a colour (colour.h)
+    Rgb flux_colour;    // the photon's whole flux as a colour (colour.h)
     // Its spectrum (emission_spectrum.h): the photon's flux at wavelength l is
     // luminance(flux_colour) x spectrum(l); or, for a ray of one known wavelength (naive),
     // that wavelength (spectrum null), the flux there being luminance(flux_colour) / V(l).
@@ -50,14 +50,14 @@ public:
     virtual double phi(const SpectralSelect& select = {}) const = 0;
     virtual Box bounds() const = 0;
     // The source's whole flux as a colour (colour.h): what an RGB renderer emits.
-    virtual LinearRgb phi_colour() const = 0;
+    virtual Rgb phi_colour() const = 0;
 
     // The body a camera ray sees; an emitter without one (the naive ray set) returns false.
     virtual bool intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hit) const = 0;
     // Radiance arriving at `origin` from direction `dir` whose ray met the body at `hit`.
     virtual double L(Vec3 origin, Vec3 dir, const EmitterHit& hit, const SpectralSelect& select = {}) const = 0;
     // The same radiance as a colour (colour.h).
-    virtual LinearRgb L_colour(Vec3 origin, Vec3 dir, const EmitterHit& hit) const = 0;
+    virtual Rgb L_colour(Vec3 origin, Vec3 dir, const EmitterHit& hit) const = 0;
     // The same radiance at the query's wavelengths (emission_spectrum.h), added to its values.
     virtual void L_spectral(Vec3 origin, Vec3 dir, const EmitterHit& hit, SpectralQuery& query) const = 0;
     // The whole light's spectrum, each part weighted by its luminance weight: where a camera

@@ -39,14 +39,14 @@ NaiveRaySource::NaiveRaySource(const std::string& ray_file) {
     for (int b = 0; b < bins_.count; ++b) band_colour_.push_back(colour_per_flux(bin_colour_matching(bins_, b), 1));
 }
 
-LinearRgb NaiveRaySource::ray_colour(size_t i) const {
+Rgb NaiveRaySource::ray_colour(size_t i) const {
     const double efficacy =
         luminous_known_ && flux_[i] > 0 && std::isfinite(luminous_[i]) ? luminous_[i] / flux_[i] : default_efficacy_;
     return (efficacy * flux_[i]) * band_colour_[size_t(band_[i] + 1)];
 }
 
-LinearRgb NaiveRaySource::phi_colour() const {
-    LinearRgb sum;
+Rgb NaiveRaySource::phi_colour() const {
+    Rgb sum;
     for (size_t i = 0; i < flux_.size(); ++i) sum += ray_colour(i);
     return sum;
 }
@@ -72,7 +72,7 @@ LeSample NaiveRaySource::sample_Le(const double u[7], const SpectralSelect& sele
                         : (select.band < 0 || band_[i] == select.band) ? flux_[i]
                                                                         : 0.0;
     s.flux = flux_[i] > 0 ? cdf_.back() * part / flux_[i] : 0;
-    s.flux_colour = flux_[i] > 0 ? (cdf_.back() / flux_[i]) * ray_colour(i) : LinearRgb{};
+    s.flux_colour = flux_[i] > 0 ? (cdf_.back() / flux_[i]) * ray_colour(i) : Rgb{};
     if (std::isfinite(wavelength_[i])) s.wavelength_nm = wavelength_[i];
     else s.spectrum = &grey_;
     return s;

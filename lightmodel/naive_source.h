@@ -18,10 +18,10 @@ public:
     size_t ray_count() const { return origins_.size(); }
     double phi(const SpectralSelect& select = {}) const override;
     Box bounds() const override { return bounds_; }
-    LinearRgb phi_colour() const override;
+    Rgb phi_colour() const override;
     bool intersect(Vec3, Vec3, double, EmitterHit&) const override { return false; }
     double L(Vec3, Vec3, const EmitterHit&, const SpectralSelect& = {}) const override { return 0; }
-    LinearRgb L_colour(Vec3, Vec3, const EmitterHit&) const override { return {}; }
+    Rgb L_colour(Vec3, Vec3, const EmitterHit&) const override { return {}; }
     void L_spectral(Vec3, Vec3, const EmitterHit&, SpectralQuery&) const override {}
     BinnedSpectrum phi_spectrum() const override { return {}; }
     std::optional<LiSample> sample_Li(Vec3, double, double, Vec3, const SpectralSelect& = {},
@@ -47,10 +47,10 @@ private:
     SpectralBins bins_;
     // Colour of a unit of flux of each ray's spectral bin at 1 lm per unit (index bin + 1; 0:
     // unknown wavelength, grey), scaled per ray by its efficacy.
-    std::vector<LinearRgb> band_colour_;
+    std::vector<Rgb> band_colour_;
     bool luminous_known_ = false;
     double default_efficacy_ = kRgbLumensPerWatt;
-    LinearRgb ray_colour(size_t i) const;  // of the ray's whole flux
+    Rgb ray_colour(size_t i) const;  // of the ray's whole flux
     Box bounds_;
 };
 

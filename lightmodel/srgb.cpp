@@ -23,13 +23,13 @@ Matrix3 inverse(const double a[3][3]) {
 
 }  // namespace
 
-Xyz to_xyz(const LinearRgb& c) {
+Xyz to_xyz(const Rgb& c) {
     const auto& m = kSrgbToXyz;
-    return {m[0][0] * c.r + m[0][1] * c.g + m[0][2] * c.b, m[1][0] * c.r + m[1][1] * c.g + m[1][2] * c.b,
-            m[2][0] * c.r + m[2][1] * c.g + m[2][2] * c.b};
+    return {m[0][0] * c.red + m[0][1] * c.green + m[0][2] * c.blue, m[1][0] * c.red + m[1][1] * c.green + m[1][2] * c.blue,
+            m[2][0] * c.red + m[2][1] * c.green + m[2][2] * c.blue};
 }
 
-LinearRgb to_linear_srgb(const Xyz& c) {
+Rgb to_linear_srgb(const Xyz& c) {
     static const Matrix3 inverse_matrix = inverse(kSrgbToXyz);
     const auto& m = inverse_matrix.m;
     return {m[0][0] * c.x + m[0][1] * c.y + m[0][2] * c.z, m[1][0] * c.x + m[1][1] * c.y + m[1][2] * c.z,

@@ -35,25 +35,25 @@ TEST(Colour, SrgbPrimariesAndWhiteComeBackPure) {
     // or grey, with the luminance asked for.
     const double efficacy = 300;  // lm per unit
     const double y = efficacy / kRgbLumensPerWatt;
-    const LinearRgb red = colour_per_flux({0.4124, 0.2126, 0.0193}, efficacy);
-    const LinearRgb green = colour_per_flux({0.3576, 0.7152, 0.1192}, efficacy);
-    const LinearRgb blue = colour_per_flux({0.1805, 0.0722, 0.9505}, efficacy);
-    const LinearRgb white = colour_per_flux({0.95047, 1.0, 1.08883}, efficacy);
-    EXPECT_NEAR(red.r, y / 0.2126, 1e-3 * y / 0.2126);
-    EXPECT_NEAR(red.g, 0, 1e-3);
-    EXPECT_NEAR(red.b, 0, 1e-3);
-    EXPECT_NEAR(green.g, y / 0.7152, 1e-3 * y / 0.7152);
-    EXPECT_NEAR(green.r, 0, 1e-3);
-    EXPECT_NEAR(green.b, 0, 1e-3);
-    EXPECT_NEAR(blue.b, y / 0.0722, 1e-3 * y / 0.0722);
-    EXPECT_NEAR(blue.r, 0, 1e-3);
-    EXPECT_NEAR(blue.g, 0, 1e-3);
-    for (double channel : {white.r, white.g, white.b}) EXPECT_NEAR(channel, y, 1e-3 * y);
+    const Rgb red = colour_per_flux({0.4124, 0.2126, 0.0193}, efficacy);
+    const Rgb green = colour_per_flux({0.3576, 0.7152, 0.1192}, efficacy);
+    const Rgb blue = colour_per_flux({0.1805, 0.0722, 0.9505}, efficacy);
+    const Rgb white = colour_per_flux({0.95047, 1.0, 1.08883}, efficacy);
+    EXPECT_NEAR(red.red, y / 0.2126, 1e-3 * y / 0.2126);
+    EXPECT_NEAR(red.green, 0, 1e-3);
+    EXPECT_NEAR(red.blue, 0, 1e-3);
+    EXPECT_NEAR(green.green, y / 0.7152, 1e-3 * y / 0.7152);
+    EXPECT_NEAR(green.red, 0, 1e-3);
+    EXPECT_NEAR(green.blue, 0, 1e-3);
+    EXPECT_NEAR(blue.blue, y / 0.0722, 1e-3 * y / 0.0722);
+    EXPECT_NEAR(blue.red, 0, 1e-3);
+    EXPECT_NEAR(blue.green, 0, 1e-3);
+    for (double channel : {white.red, white.green, white.blue}) EXPECT_NEAR(channel, y, 1e-3 * y);
     // Unknown spectrum: grey.
-    const LinearRgb grey = colour_per_flux({}, efficacy);
-    EXPECT_EQ(grey.r, y);
-    EXPECT_EQ(grey.g, y);
-    EXPECT_EQ(grey.b, y);
+    const Rgb grey = colour_per_flux({}, efficacy);
+    EXPECT_EQ(grey.red, y);
+    EXPECT_EQ(grey.green, y);
+    EXPECT_EQ(grey.blue, y);
 }
 
 TEST(Colour, SpectralColoursKeepTheirLuminanceAndHue) {
@@ -62,18 +62,18 @@ TEST(Colour, SpectralColoursKeepTheirLuminanceAndHue) {
     SpectralBins bins;
     for (int b = 0; b < bins.count; ++b) {
         const double efficacy = kMaxLuminousEfficacy * photopic_efficiency(bins.centre(b));
-        const LinearRgb c = colour_per_flux(bin_colour_matching(bins, b), efficacy);
+        const Rgb c = colour_per_flux(bin_colour_matching(bins, b), efficacy);
         EXPECT_NEAR(luminance(c), efficacy / kRgbLumensPerWatt, 1e-9 * (1 + efficacy)) << bins.centre(b);
-        EXPECT_GE(std::min({c.r, c.g, c.b}), -1e-12) << bins.centre(b);
+        EXPECT_GE(std::min({c.red, c.green, c.blue}), -1e-12) << bins.centre(b);
     }
     auto colour_at = [&](double nm) { return colour_per_flux(bin_colour_matching(bins, bins.bin_of(nm)), 1); };
-    const LinearRgb red = colour_at(630), green = colour_at(530), blue = colour_at(460);
-    EXPECT_GT(red.r, 5 * red.g);
-    EXPECT_GT(red.r, 5 * red.b);
-    EXPECT_GT(green.g, 2 * green.r);
-    EXPECT_GT(green.g, 2 * green.b);
-    EXPECT_GT(blue.b, 5 * blue.r);
-    EXPECT_GT(blue.b, 5 * blue.g);
+    const Rgb red = colour_at(630), green = colour_at(530), blue = colour_at(460);
+    EXPECT_GT(red.red, 5 * red.green);
+    EXPECT_GT(red.red, 5 * red.blue);
+    EXPECT_GT(green.green, 2 * green.red);
+    EXPECT_GT(green.green, 2 * green.blue);
+    EXPECT_GT(blue.blue, 5 * blue.red);
+    EXPECT_GT(blue.blue, 5 * blue.green);
 }
 
 }  // namespace

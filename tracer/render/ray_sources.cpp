@@ -32,7 +32,6 @@ double conformal_scale(const Matrix4& m) {
     return s;
 }
 
-Rgb to_rgb(const lightmodel::LinearRgb& c) { return {c.r, c.g, c.b}; }
 static_assert(lightmodel::kRgbLumensPerWatt == kLumensPerWatt, "one photometric convention");
 
 lightmodel::SpectralQuery spectral_query(const SampledWavelengths& wavelengths) {
@@ -57,7 +56,7 @@ PlacedRaySource::PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emit
     k_ = conformal_scale(to_world);
     if (!(k_ > 0))
         throw Error("ray_source: the transform must keep angles (rotations, translations and one uniform scale)");
-    power_ = luminance_weight(to_rgb(emitter_->phi_colour()));
+    power_ = luminance_weight(emitter_->phi_colour());
     radiance_scale_ = 1 / (k_ * k_);
 }
 
@@ -76,7 +75,7 @@ bool PlacedRaySource::intersect(Vec3 origin, Vec3 direction, double t_max, doubl
 
 Rgb PlacedRaySource::radiance(Vec3 origin, Vec3 direction, NoWavelengths) const {
     const Local l = to_local(origin, direction);
-    return radiance_scale_ * to_rgb(emitter_->L_colour(l.origin, l.direction, lightmodel::EmitterHit{}));
+    return radiance_scale_ * emitter_->L_colour(l.origin, l.direction, lightmodel::EmitterHit{});
 }
 
 SampledSpectrum PlacedRaySource::radiance(Vec3 origin, Vec3 direction, const SampledWavelengths& wavelengths) const {
@@ -107,7 +106,7 @@ std::optional<SourceLiSample> PlacedRaySource::sample_Li(Vec3 ref, double u_cell
     SourceLiSample out;
     out.wi = normalized(to_world_.vector(s->wi));
     out.distance = s->distance * k_;
-    out.Li = radiance_scale_ * to_rgb(s->Li_colour);
+    out.Li = radiance_scale_ * s->Li_colour;
     out.pdf = s->pdf;  // a conformal map keeps solid angles
     return out;
 }
@@ -118,7 +117,7 @@ double PlacedRaySource::pdf_Li(Vec3 ref, Vec3 wi) const {
 
 SourcePhoton PlacedRaySource::sample_Le(const double u[7]) const {
     const lightmodel::LeSample s = emitter_->sample_Le(u);
-    return {to_world_.point(s.origin), normalized(to_world_.vector(s.direction)), to_rgb(s.flux_colour), {}};
+    return {to_world_.point(s.origin), normalized(to_world_.vector(s.direction)), s.flux_colour, {}};
 }
 
 SourcePhotonOf<SampledSpectrum> PlacedRaySource::sample_Le(const double u[7], double u_wavelength) const {

@@ -54,8 +54,7 @@ CieXyz cie_xyz(double nm) {
 }
 
 Rgb xyz_to_rgb(const CieXyz& c) {
-    const lightmodel::LinearRgb rgb = lightmodel::to_linear_srgb(c);
-    return {rgb.r, rgb.g, rgb.b};
+    return lightmodel::to_linear_srgb(c);
 }
 
 CieXyz rgb_to_xyz(const Rgb& c) { return lightmodel::to_xyz({c.red, c.green, c.blue}); }

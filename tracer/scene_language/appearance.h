@@ -11,16 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "core/colour.h"
 #include "tracer/scene_language/copy_on_write.h"
 #include "tracer/scene_language/source_location.h"
 #include "tracer/scene_language/transform.h"
 #include "tracer/scene_language/values.h"
 
 namespace rayset::tracer {
-
-struct Rgb {
-    double red = 0, green = 0, blue = 0;
-};
 
 // POV-Ray's five-component colour: filter and transmit are the fractions of light passing
 // through, filtered by the colour or not.
