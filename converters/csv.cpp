@@ -73,6 +73,43 @@ bool parse_floats(std::string_view value, float* out, size_t n) {
     return true;
 }
 
+std::string_view trim_blanks(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+}
+
+// The header field a metadata key of each kind sets, or null for a key of another kind.
+std::string* text_field(RayHeader& h, std::string_view key) {
+    for (size_t i = 0; i < std::size(kTextKeys); ++i)
+        if (key == kTextKeys[i]) return &h.text[i];
+    if (key == "creation_date") return &h.creation_date;
+    if (key == "additional_text") return &h.additional_text;
+    if (key == "description") return &h.description;
+    return nullptr;
+}
+
+double* double_field(RayHeader& h, std::string_view key) {
+    if (key == "stated_radiant_W") return &h.stated_radiant;
+    if (key == "stated_luminous_lm") return &h.stated_luminous;
+    return nullptr;
+}
+
+float* float_field(RayHeader& h, std::string_view key) {
+    if (key == "single_wavelength_nm") return &h.single_wavelength;
+    if (key == "min_wavelength_nm") return &h.min_wavelength;
+    if (key == "max_wavelength_nm") return &h.max_wavelength;
+    return nullptr;
+}
+
+Vec3f* vector_field(RayHeader& h, std::string_view key) {
+    if (key == "data_origin") return &h.data_origin;
+    if (key == "placement_location") return &h.placement.location;
+    if (key == "placement_rotation_rad") return &h.placement.rotation_rad;
+    if (key == "placement_scale") return &h.placement.scale;
+    return nullptr;
+}
+
 class CsvDecoder : public RayDecoder {
 public:
     explicit CsvDecoder(const std::string& path) : in_(path) {
@@ -167,86 +204,83 @@ private:
         parse_columns(spectral);
     }
 
-    void apply_metadata(const std::string& key, std::string_view raw, uint32_t column, std::optional<SpectralKind>& spectral) {
+    void apply_metadata(const std::string& key, std::string_view raw, uint32_t column,
+                        std::optional<SpectralKind>& spectral) {
         // Text keeps its spaces; around anything else they are noise.
-        std::string_view value = raw;
-        while (!value.empty() && (value.front() == ' ' || value.front() == '\t')) value.remove_prefix(1);
-        while (!value.empty() && (value.back() == ' ' || value.back() == '\t')) value.remove_suffix(1);
-        const uint32_t value_column = column_of(line_, value);
-        auto bad = [&](const std::string& expected) {
-            in_.fail_here(fmt::format("{} '{}' is not {}", key, value, expected), value_column);
-        };
-        auto number = [&](double& out) {
-            if (!parse_double(value, out)) bad("a number");
-        };
-        auto number_f = [&](float& out) {
-            if (!parse_float(value, out)) bad("a number");
-        };
-        auto text = [&](std::string& out) {
-            if (!unescape(raw, out)) bad("valid text (a backslash must be followed by \\, n or r)");
-        };
-        for (size_t i = 0; i < 9; ++i)
-            if (key == kTextKeys[i]) return text(header_.text[i]);
-        if (key == "unit") {
-            for (LengthUnit u : kUnits)
-                if (value == to_string(u)) {
-                    header_.unit = u;
-                    return;
-                }
-            bad("a length unit (mm, cm, m, in, ft, um or nm)");
-        } else if (key == "stated_radiant_W") {
-            number(header_.stated_radiant);
-        } else if (key == "stated_luminous_lm") {
-            number(header_.stated_luminous);
-        } else if (key == "spectral") {
-            for (size_t k = 0; k < std::size(kSpectralNames); ++k)
-                if (value == kSpectralNames[k]) spectral = static_cast<SpectralKind>(k);
-            if (!spectral) bad("a spectral kind (none, single_wavelength, per_ray_wavelength, shared_table or per_ray_table)");
-        } else if (key == "single_wavelength_nm") {
-            number_f(header_.single_wavelength);
-        } else if (key == "min_wavelength_nm") {
-            number_f(header_.min_wavelength);
-        } else if (key == "max_wavelength_nm") {
-            number_f(header_.max_wavelength);
-        } else if (key == "spectral_table") {
-            std::vector<std::string_view> f = split_fields(value);
-            SpectralTable& table = header_.spectral_tables.emplace_back();
-            for (size_t i = 0; i < f.size(); ++i) {
-                float v = 0;
-                if (!parse_float(f[i], v) || !std::isfinite(v)) bad("pairs of finite numbers (nm weight ...)");
-                (i % 2 ? table.weight : table.wavelength).push_back(v);
-            }
-            if (f.empty() || f.size() % 2) bad("pairs of numbers (nm weight ...)");
-        } else if (key == "creation_method") {
-            double v = 0;
-            number(v);
-            if (v != std::floor(v) || std::abs(v) > 1e9) bad("a whole number");
-            header_.creation_method = static_cast<int32_t>(v);
-        } else if (key == "creation_date") {
-            text(header_.creation_date);
-        } else if (key == "additional_text") {
-            text(header_.additional_text);
-        } else if (key == "description") {
-            text(header_.description);
-        } else if (key == "far_field") {
-            if (value != "yes" && value != "no") bad("yes or no");
-            header_.far_field = value == "yes";
-        } else if (key == "data_origin" || key == "placement_location" || key == "placement_rotation_rad" || key == "placement_scale") {
-            Vec3f& v = key == "data_origin"              ? header_.data_origin
-                       : key == "placement_location"     ? header_.placement.location
-                       : key == "placement_rotation_rad" ? header_.placement.rotation_rad
-                                                         : header_.placement.scale;
+        const std::string_view value = trim_blanks(raw);
+        if (std::string* text = text_field(header_, key)) {
+            if (!unescape(raw, *text))
+                fail_metadata(key, value,
+                              "valid text (a backslash must be followed by \\, n or r)");
+        } else if (double* number = double_field(header_, key)) {
+            if (!parse_double(value, *number)) fail_metadata(key, value, "a number");
+        } else if (float* number = float_field(header_, key)) {
+            if (!parse_float(value, *number)) fail_metadata(key, value, "a number");
+        } else if (Vec3f* vector = vector_field(header_, key)) {
             float f[3];
-            if (!parse_floats(value, f, 3)) bad("three finite numbers");
-            v = {f[0], f[1], f[2]};
+            if (!parse_floats(value, f, 3)) fail_metadata(key, value, "three finite numbers");
+            *vector = {f[0], f[1], f[2]};
         } else if (key == "placement_inclination_azimuth_deg") {
-            if (!parse_floats(value, header_.placement.inclination_azimuth_deg.data(), 4)) bad("four finite numbers");
+            if (!parse_floats(value, header_.placement.inclination_azimuth_deg.data(), 4))
+                fail_metadata(key, value, "four finite numbers");
+        } else if (key == "unit") {
+            header_.unit = parse_unit(key, value);
+        } else if (key == "spectral") {
+            spectral = parse_spectral_kind(key, value);
+        } else if (key == "spectral_table") {
+            parse_spectral_table(key, value, header_.spectral_tables.emplace_back());
+        } else if (key == "creation_method") {
+            header_.creation_method = parse_creation_method(key, value);
+        } else if (key == "far_field") {
+            if (value != "yes" && value != "no") fail_metadata(key, value, "yes or no");
+            header_.far_field = value == "yes";
         } else {
-            in_.fail_here(fmt::format("unknown metadata key '{}' (see docs/formats/csv.md; a comment that is not "
-                                      "metadata must not start with 'word:')",
-                                      key),
-                          column);
+            in_.fail_here(
+                fmt::format("unknown metadata key '{}' (see docs/formats/csv.md; a comment "
+                            "that is not metadata must not start with 'word:')",
+                            key),
+                column);
         }
+    }
+
+    LengthUnit parse_unit(const std::string& key, std::string_view value) const {
+        for (LengthUnit u : kUnits)
+            if (value == to_string(u)) return u;
+        fail_metadata(key, value, "a length unit (mm, cm, m, in, ft, um or nm)");
+    }
+
+    SpectralKind parse_spectral_kind(const std::string& key, std::string_view value) const {
+        for (size_t k = 0; k < std::size(kSpectralNames); ++k)
+            if (value == kSpectralNames[k]) return static_cast<SpectralKind>(k);
+        fail_metadata(key, value,
+                      "a spectral kind (none, single_wavelength, per_ray_wavelength, shared_table "
+                      "or per_ray_table)");
+    }
+
+    void parse_spectral_table(const std::string& key, std::string_view value,
+                              SpectralTable& table) const {
+        std::vector<std::string_view> f = split_fields(value);
+        for (size_t i = 0; i < f.size(); ++i) {
+            float v = 0;
+            if (!parse_float(f[i], v) || !std::isfinite(v))
+                fail_metadata(key, value, "pairs of finite numbers (nm weight ...)");
+            (i % 2 ? table.weight : table.wavelength).push_back(v);
+        }
+        if (f.empty() || f.size() % 2)
+            fail_metadata(key, value, "pairs of numbers (nm weight ...)");
+    }
+
+    int32_t parse_creation_method(const std::string& key, std::string_view value) const {
+        double v = 0;
+        if (!parse_double(value, v)) fail_metadata(key, value, "a number");
+        if (v != std::floor(v) || std::abs(v) > 1e9) fail_metadata(key, value, "a whole number");
+        return static_cast<int32_t>(v);
+    }
+
+    [[noreturn]] void fail_metadata(const std::string& key, std::string_view value,
+                                    const std::string& expected) const {
+        in_.fail_here(fmt::format("{} '{}' is not {}", key, value, expected),
+                      column_of(line_, value));
     }
 
     void parse_columns(std::optional<SpectralKind> spectral) {

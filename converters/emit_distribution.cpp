@@ -47,72 +47,101 @@ double fold(Symmetry symmetry, double c) {
     }
 }
 
-}  // namespace
+[[noreturn]] void fail_distribution(const std::string& name, const std::string& what) {
+    throw Error(name + ": " + what);
+}
 
-IntensityDistribution::IntensityDistribution(const Photometry& p, const std::string& name) {
-    auto bad = [&](const std::string& what) { throw Error(name + ": " + what); };
+// Only type C photometry with ascending angles and a full table of intensities >= 0 is sampled.
+void check_distribution(const Photometry& p, const std::string& name) {
     if (p.type != PhotometricType::C)
-        bad(std::string("type ") + (p.type == PhotometricType::A ? "A" : "B") +
-            " photometry cannot be turned into rays: only type C is supported (convert the file to type C first)");
+        fail_distribution(name, std::string("type ") + (p.type == PhotometricType::A ? "A" : "B") +
+                                    " photometry cannot be turned into rays: only type C is "
+                                    "supported (convert the file to type C first)");
     const auto& h = p.horizontal_deg;
     const auto& v = p.vertical_deg;
-    if (h.empty() || v.size() < 2) bad("rays need at least two vertical angles and one horizontal angle");
-    if (p.candela.size() != h.size() * v.size()) bad("the candela table does not match the angles");
+    if (h.empty() || v.size() < 2)
+        fail_distribution(name, "rays need at least two vertical angles and one horizontal angle");
+    if (p.candela.size() != h.size() * v.size())
+        fail_distribution(name, "the candela table does not match the angles");
     for (size_t j = 0; j < v.size(); ++j)
         if (!(v[j] >= 0 && v[j] <= 180) || (j && !(v[j] > v[j - 1])))
-            bad("vertical angle " + format_double(v[j]) + " is not ascending within 0..180 degrees");
+            fail_distribution(name, "vertical angle " + format_double(v[j]) +
+                                        " is not ascending within 0..180 degrees");
     for (size_t i = 0; i < h.size(); ++i)
         if (!std::isfinite(h[i]) || (i && !(h[i] > h[i - 1])))
-            bad("horizontal angle " + format_double(h[i]) + " is not ascending");
-    if (h.back() - h.front() > 360) bad("the horizontal angles span more than 360 degrees");
+            fail_distribution(name,
+                              "horizontal angle " + format_double(h[i]) + " is not ascending");
+    if (h.back() - h.front() > 360)
+        fail_distribution(name, "the horizontal angles span more than 360 degrees");
     for (double cd : p.candela)
-        if (!(cd >= 0 && std::isfinite(cd))) bad("candela value " + format_double(cd) + " is not a number >= 0");
+        if (!(cd >= 0 && std::isfinite(cd)))
+            fail_distribution(name, "candela value " + format_double(cd) + " is not a number >= 0");
+}
 
-    // C nodes over one full turn: the stored planes and their mirror images.
-    const Symmetry symmetry = symmetry_of(h);
-    if (symmetry == Symmetry::axial) {
-        c_ = {0, 360};
-    } else if (symmetry == Symmetry::none) {
+// C nodes over one full turn: the stored planes and their mirror images.
+std::vector<double> unfolded_c_nodes(const std::vector<double>& h, Symmetry symmetry) {
+    if (symmetry == Symmetry::axial) return {0, 360};
+    std::vector<double> c;
+    if (symmetry == Symmetry::none) {
         // A closing plane (C360 after C0) is C0 again: LM-63 requires equal values, and taking
         // C0's keeps a table and its EULUMDAT form (which has no C360) the same, as
         // Photometry::intensity() does.
         for (double a : h)
-            if (a < h.front() + 360) c_.push_back(a);
-        c_.push_back(h.front() + 360);
-    } else {
-        c_ = {0, 360};
-        for (double a : h) {
-            c_.push_back(a);
-            if (symmetry == Symmetry::bilateral_90_270) c_.push_back(wrap_360(180 - a));
-            if (symmetry == Symmetry::bilateral_0_180 || symmetry == Symmetry::quadrant) c_.push_back(360 - a);
-            if (symmetry == Symmetry::quadrant) c_.insert(c_.end(), {180 - a, 180 + a});
-        }
-        std::sort(c_.begin(), c_.end());
-        c_.erase(std::unique(c_.begin(), c_.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }), c_.end());
-        c_.back() = 360;
+            if (a < h.front() + 360) c.push_back(a);
+        c.push_back(h.front() + 360);
+        return c;
     }
-    gamma_ = v;
+    c = {0, 360};
+    for (double a : h) {
+        c.push_back(a);
+        if (symmetry == Symmetry::bilateral_90_270) c.push_back(wrap_360(180 - a));
+        if (symmetry == Symmetry::bilateral_0_180 || symmetry == Symmetry::quadrant)
+            c.push_back(360 - a);
+        if (symmetry == Symmetry::quadrant) c.insert(c.end(), {180 - a, 180 + a});
+    }
+    std::sort(c.begin(), c.end());
+    const auto same = [](double a, double b) { return std::abs(a - b) < 1e-9; };
+    c.erase(std::unique(c.begin(), c.end(), same), c.end());
+    c.back() = 360;
+    return c;
+}
 
-    // Values on the unfolded grid: the stored plane a node folds onto, or (for nodes that are not
-    // images of a stored plane, such as 0 for 90..270 files) the linear interpolation that
-    // Photometry::intensity() would give there.
-    auto stored = [&](size_t k, size_t j) {
-        if (h.size() == 1) return p.candela[p.index(0, j)];
-        // Without symmetry the nodes are the stored planes, then the first one again at +360.
-        if (symmetry == Symmetry::none) return p.candela[p.index(k + 1 < c_.size() ? k : 0, j)];
-        const double angle = c_[k];
-        const double a = std::clamp(fold(symmetry, angle), h.front(), h.back());
-        size_t i = size_t(std::upper_bound(h.begin(), h.end(), a) - h.begin());
-        i = std::min(i == 0 ? 0 : i - 1, h.size() - 2);
-        const double t = (a - h[i]) / (h[i + 1] - h[i]);
-        return (1 - t) * p.candela[p.index(i, j)] + t * p.candela[p.index(i + 1, j)];
-    };
+// The value at unfolded node k and gamma index j: the stored plane the node folds onto, or (for
+// nodes that are not images of a stored plane, such as 0 for 90..270 files) the linear
+// interpolation that Photometry::intensity() would give there.
+double unfolded_value(const Photometry& p, Symmetry symmetry, const std::vector<double>& c,
+                      size_t k, size_t j) {
+    const auto& h = p.horizontal_deg;
+    if (h.size() == 1) return p.candela[p.index(0, j)];
+    // Without symmetry the nodes are the stored planes, then the first one again at +360.
+    if (symmetry == Symmetry::none) return p.candela[p.index(k + 1 < c.size() ? k : 0, j)];
+    const double a = std::clamp(fold(symmetry, c[k]), h.front(), h.back());
+    size_t i = size_t(std::upper_bound(h.begin(), h.end(), a) - h.begin());
+    i = std::min(i == 0 ? 0 : i - 1, h.size() - 2);
+    const double t = (a - h[i]) / (h[i + 1] - h[i]);
+    return (1 - t) * p.candela[p.index(i, j)] + t * p.candela[p.index(i + 1, j)];
+}
+
+}  // namespace
+
+IntensityDistribution::IntensityDistribution(const Photometry& p, const std::string& name) {
+    check_distribution(p, name);
+    const Symmetry symmetry = symmetry_of(p.horizontal_deg);
+    c_ = unfolded_c_nodes(p.horizontal_deg, symmetry);
+    gamma_ = p.vertical_deg;
     values_.resize(c_.size() * gamma_.size());
     for (size_t k = 0; k < c_.size(); ++k)
-        for (size_t j = 0; j < gamma_.size(); ++j) values_[k * gamma_.size() + j] = stored(k, j);
+        for (size_t j = 0; j < gamma_.size(); ++j)
+            values_[k * gamma_.size() + j] = unfolded_value(p, symmetry, c_, k, j);
+    integrate_cells();
+    if (!(total_ > 0))
+        fail_distribution(
+            name, "the intensity table is zero everywhere: there is no light to turn into rays");
+}
 
-    // Exact flux of each cell: the bilinear intensity integrates over C to the mean of its two
-    // edges, leaving the integrals of (1 - t) sin(gamma) and t sin(gamma) over the band.
+// Exact flux of each cell: the bilinear intensity integrates over C to the mean of its two edges,
+// leaving the integrals of (1 - t) sin(gamma) and t sin(gamma) over the band.
+void IntensityDistribution::integrate_cells() {
     const size_t bands = gamma_.size() - 1;
     std::vector<double> w0(bands), w1(bands);
     for (size_t j = 0; j < bands; ++j) {
@@ -125,12 +154,12 @@ IntensityDistribution::IntensityDistribution(const Photometry& p, const std::str
     for (size_t k = 0; k + 1 < c_.size(); ++k) {
         const double dc = (c_[k + 1] - c_[k]) * kRadian;
         for (size_t j = 0; j < bands; ++j) {
-            const double low = (value(k, j) + value(k + 1, j)) / 2, high = (value(k, j + 1) + value(k + 1, j + 1)) / 2;
+            const double low = (value(k, j) + value(k + 1, j)) / 2;
+            const double high = (value(k, j + 1) + value(k + 1, j + 1)) / 2;
             total_ += dc * (low * w0[j] + high * w1[j]);
             cumulative_.push_back(total_);
         }
     }
-    if (!(total_ > 0)) bad("the intensity table is zero everywhere: there is no light to turn into rays");
 }
 
 double IntensityDistribution::intensity(double c_deg, double gamma_deg) const {

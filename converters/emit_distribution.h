@@ -30,6 +30,8 @@ public:
 
 private:
     double value(size_t k, size_t j) const { return values_[k * gamma_.size() + j]; }
+    // Fills cumulative_, sin_max_ and total_ from the nodes and their values.
+    void integrate_cells();
 
     std::vector<double> c_;       // unfolded C nodes, c_.front() + 360 == c_.back()
     std::vector<double> gamma_;   // stored gamma nodes

@@ -128,77 +128,146 @@ bool looks_like_eulumdat(std::string_view head) {
     return whole(v[0], 0, 3) && whole(v[1], 0, 4) && whole(v[2], 1, 1e6) && v[3] >= 0 && whole(v[4], 1, 1e6) && v[5] >= 0;
 }
 
-EulumdatFile read_eulumdat(const std::string& path) {
-    TextInput in(path);
-    LineReader r(in);
-    EulumdatFile f;
-    const int big = std::numeric_limits<int>::max();
-    f.company = r.text("line 1 (company identification)");
-    if (f.company.compare(0, 3, "\xEF\xBB\xBF") == 0) f.company.erase(0, 3);  // UTF-8 byte order mark
+namespace {
+
+constexpr int kIntMax = std::numeric_limits<int>::max();
+
+// Lines 2-7: Ityp, Isym, Mc, Dc, Ng, Dg. Returns the line of Isym, which errors about the
+// planes a symmetry needs point at.
+uint64_t read_counts(LineReader& r, EulumdatFile& f) {
     f.ityp = r.integer("Ityp (type indicator)", 0, 3);
     f.isym = r.integer("Isym (symmetry indicator)", 0, 4);
-    uint64_t isym_line = r.line();
-    f.mc = r.integer("Mc (number of C planes)", 1, big);
+    const uint64_t isym_line = r.line();
+    f.mc = r.integer("Mc (number of C planes)", 1, kIntMax);
     if ((f.isym == 2 && f.mc % 2) || ((f.isym == 3 || f.isym == 4) && f.mc % 4))
-        r.fail_here("Mc is " + std::to_string(f.mc) + ": Isym " + std::to_string(f.isym) + " needs a multiple of " +
-                    (f.isym == 2 ? "2" : "4"));
+        r.fail_here("Mc is " + std::to_string(f.mc) + ": Isym " + std::to_string(f.isym) +
+                    " needs a multiple of " + (f.isym == 2 ? "2" : "4"));
     f.dc = r.non_negative("Dc (distance between C planes)");
-    f.ng = r.integer("Ng (number of gamma angles)", 1, big);
+    f.ng = r.integer("Ng (number of gamma angles)", 1, kIntMax);
     f.dg = r.non_negative("Dg (distance between gamma angles)");
-    size_t planes = eulumdat_stored_planes(f.isym, f.mc);
-    // Each value takes a line of at least 2 bytes: counts beyond that are corrupt, not allocations.
-    if ((planes + 1) * uint64_t(f.ng) + uint64_t(f.mc) > in.size() / 2 + 1)
-        r.fail_here("Mc " + std::to_string(f.mc) + " and Ng " + std::to_string(f.ng) + " ask for more values than the " +
-                    std::to_string(in.size()) + "-byte file can hold");
+    return isym_line;
+}
+
+// Each value takes a line of at least 2 bytes: counts beyond that are corrupt, not allocations.
+void check_counts_fit(const LineReader& r, const EulumdatFile& f, uint64_t file_size) {
+    const size_t planes = eulumdat_stored_planes(f.isym, f.mc);
+    if ((planes + 1) * uint64_t(f.ng) + uint64_t(f.mc) > file_size / 2 + 1)
+        r.fail_here("Mc " + std::to_string(f.mc) + " and Ng " + std::to_string(f.ng) +
+                    " ask for more values than the " + std::to_string(file_size) +
+                    "-byte file can hold");
+}
+
+// Lines 8-12.
+void read_text_lines(LineReader& r, EulumdatFile& f) {
     f.report_number = r.text("line 8 (measurement report number)");
     f.luminaire_name = r.text("line 9 (luminaire name)");
     f.luminaire_number = r.text("line 10 (luminaire number)");
     f.file_name = r.text("line 11 (file name)");
     f.date_user = r.text("line 12 (date/user)");
+}
+
+// Lines 13-21: the luminaire's body and its luminous area.
+void read_dimensions(LineReader& r, EulumdatFile& f) {
     f.luminaire_length_mm = r.non_negative("luminaire length/diameter (mm)");
     f.luminaire_width_mm = r.non_negative("luminaire width (mm)");
     f.luminaire_height_mm = r.non_negative("luminaire height (mm)");
     f.luminous_length_mm = r.non_negative("luminous area length/diameter (mm)");
     f.luminous_width_mm = r.non_negative("luminous area width (mm)");
     const char* sides[] = {"C0", "C90", "C180", "C270"};
-    for (int i = 0; i < 4; ++i) f.luminous_height_mm[size_t(i)] = r.non_negative(std::string("luminous area height at ") + sides[i] + " (mm)");
+    for (int i = 0; i < 4; ++i)
+        f.luminous_height_mm[size_t(i)] =
+            r.non_negative(std::string("luminous area height at ") + sides[i] + " (mm)");
+}
+
+// Lines 22-25: DFF, LORL, the conversion factor and the tilt.
+void read_ratios_and_tilt(LineReader& r, EulumdatFile& f) {
     f.downward_flux_percent = r.number("DFF (downward flux fraction, %)");
     f.light_output_ratio_percent = r.number("LORL (light output ratio, %)");
     f.conversion_factor = r.number("conversion factor for luminous intensities");
-    if (!(f.conversion_factor > 0)) r.fail_here("conversion factor is " + format_double(f.conversion_factor) + ": expected a positive number");
+    if (!(f.conversion_factor > 0))
+        r.fail_here("conversion factor is " + format_double(f.conversion_factor) +
+                    ": expected a positive number");
     f.tilt_deg = r.number("tilt of the luminaire during measurement");
-    int sets = r.integer("number of lamp sets", 1, int(std::min<uint64_t>(in.size() / 12 + 1, uint64_t(big))));
-    for (int s = 0; s < sets; ++s) {
-        std::string which = "lamp set " + std::to_string(s + 1) + ": ";
-        EulumdatLampSet set;
-        set.count = r.integer(which + "number of lamps", -big, big);
-        if (set.count == 0) r.fail_here(which + "number of lamps is 0: expected a count (negative for absolute photometry)");
-        set.type = r.text(which + "lamp type");
-        set.lumens = r.number(which + "total luminous flux (lm)");
-        if (!(set.lumens > 0)) r.fail_here(which + "flux is " + format_double(set.lumens) + ": expected a positive number of lumens");
-        set.color = r.text(which + "colour appearance");
-        set.rendering = r.text(which + "colour rendering");
-        set.watts = r.non_negative(which + "wattage including ballast (W)");
-        f.lamp_sets.push_back(set);
-    }
-    for (size_t i = 0; i < 10; ++i) f.direct_ratios[i] = r.number("direct ratio #" + std::to_string(i + 1) + " of 10");
+}
+
+EulumdatLampSet read_lamp_set(LineReader& r, int index) {
+    const std::string which = "lamp set " + std::to_string(index + 1) + ": ";
+    EulumdatLampSet set;
+    set.count = r.integer(which + "number of lamps", -kIntMax, kIntMax);
+    if (set.count == 0)
+        r.fail_here(which +
+                    "number of lamps is 0: expected a count (negative for absolute photometry)");
+    set.type = r.text(which + "lamp type");
+    set.lumens = r.number(which + "total luminous flux (lm)");
+    if (!(set.lumens > 0))
+        r.fail_here(which + "flux is " + format_double(set.lumens) +
+                    ": expected a positive number of lumens");
+    set.color = r.text(which + "colour appearance");
+    set.rendering = r.text(which + "colour rendering");
+    set.watts = r.non_negative(which + "wattage including ballast (W)");
+    return set;
+}
+
+// The number of sets, then six lines per set. Each set takes at least 12 bytes, which bounds
+// the count.
+void read_lamp_sets(LineReader& r, EulumdatFile& f, uint64_t file_size) {
+    const int sets = r.integer("number of lamp sets", 1,
+                               int(std::min<uint64_t>(file_size / 12 + 1, uint64_t(kIntMax))));
+    for (int s = 0; s < sets; ++s) f.lamp_sets.push_back(read_lamp_set(r, s));
+}
+
+// All Mc C angles (C360 would repeat C0) and the Ng gamma angles.
+void read_angles(LineReader& r, EulumdatFile& f, uint64_t isym_line) {
     f.c_angles_deg = r.angles(size_t(f.mc), "C angle", 0, 360);
-    if (f.c_angles_deg.back() == 360) r.fail_here("C angle 360 repeats C0: expected angles from 0 up to, not including, 360");
+    if (f.c_angles_deg.back() == 360)
+        r.fail_here("C angle 360 repeats C0: expected angles from 0 up to, not including, 360");
     f.gamma_angles_deg = r.angles(size_t(f.ng), "gamma angle", 0, 180);
     check_symmetry_planes(r, f, isym_line);
+}
+
+void read_intensities(LineReader& r, EulumdatFile& f) {
+    const size_t planes = eulumdat_stored_planes(f.isym, f.mc);
     f.intensities.resize(planes * size_t(f.ng));
     for (size_t p = 0; p < planes; ++p) {
         for (size_t g = 0; g < size_t(f.ng); ++g) {
             double& value = f.intensities[p * size_t(f.ng) + g];
-            value = r.non_negative("intensity (cd/klm) #" + std::to_string(g + 1) + " of " + std::to_string(f.ng) +
-                                   " of stored C plane #" + std::to_string(p + 1) + " of " + std::to_string(planes) + " (Isym " +
-                                   std::to_string(f.isym) + ", Mc " + std::to_string(f.mc) + ")");
+            value = r.non_negative(
+                "intensity (cd/klm) #" + std::to_string(g + 1) + " of " + std::to_string(f.ng) +
+                " of stored C plane #" + std::to_string(p + 1) + " of " + std::to_string(planes) +
+                " (Isym " + std::to_string(f.isym) + ", Mc " + std::to_string(f.mc) + ")");
         }
     }
+}
+
+// Only blank lines and a DOS end-of-file mark may follow the last intensity.
+void check_nothing_after(TextInput& in, const LineReader& r) {
     std::string line;
     while (in.next(line))
-        if (!trim(line).empty() && trim(line) != "\x1a")  // DOS end-of-file mark
-            r.fail_here("unexpected '" + trim(line) + "' after the last intensity: Mc, Ng or Isym do not match the data");
+        if (!trim(line).empty() && trim(line) != "\x1a")
+            r.fail_here("unexpected '" + trim(line) +
+                        "' after the last intensity: Mc, Ng or Isym do not match the data");
+}
+
+}  // namespace
+
+EulumdatFile read_eulumdat(const std::string& path) {
+    TextInput in(path);
+    LineReader r(in);
+    EulumdatFile f;
+    f.company = r.text("line 1 (company identification)");
+    if (f.company.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        f.company.erase(0, 3);  // UTF-8 byte order mark
+    const uint64_t isym_line = read_counts(r, f);
+    check_counts_fit(r, f, in.size());
+    read_text_lines(r, f);
+    read_dimensions(r, f);
+    read_ratios_and_tilt(r, f);
+    read_lamp_sets(r, f, in.size());
+    for (size_t i = 0; i < 10; ++i)
+        f.direct_ratios[i] = r.number("direct ratio #" + std::to_string(i + 1) + " of 10");
+    read_angles(r, f, isym_line);
+    read_intensities(r, f);
+    check_nothing_after(in, r);
     return f;
 }
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 namespace rayset {
 
@@ -231,30 +232,35 @@ int choose_symmetry(const Circle& circle, std::vector<size_t>& stored) {
     return 0;
 }
 
-}  // namespace
-
-EulumdatFile eulumdat_from_photometry(const Photometry& p, const std::string& path) {
+// Types A and B have no EULUMDAT frame; the table must be complete and gamma within 0..180.
+void check_writable(const Photometry& p, const std::string& path) {
     if (p.type != PhotometricType::C)
-        fail(path, std::string("cannot write as EULUMDAT: it holds type C photometry only and this is type ") +
-                       (p.type == PhotometricType::B ? "B" : "A") + "; write it as IES instead");
-    if (p.vertical_deg.empty() || p.horizontal_deg.empty() || p.candela.size() != p.vertical_deg.size() * p.horizontal_deg.size())
-        fail(path, "cannot write as EULUMDAT: " + std::to_string(p.candela.size()) + " candela values for " +
-                       std::to_string(p.vertical_deg.size()) + " x " + std::to_string(p.horizontal_deg.size()) + " angles");
+        fail(path, std::string("cannot write as EULUMDAT: it holds type C photometry only and ") +
+                       "this is type " + (p.type == PhotometricType::B ? "B" : "A") +
+                       "; write it as IES instead");
+    if (p.vertical_deg.empty() || p.horizontal_deg.empty() ||
+        p.candela.size() != p.vertical_deg.size() * p.horizontal_deg.size())
+        fail(path, "cannot write as EULUMDAT: " + std::to_string(p.candela.size()) +
+                       " candela values for " + std::to_string(p.vertical_deg.size()) + " x " +
+                       std::to_string(p.horizontal_deg.size()) + " angles");
     if (p.vertical_deg.front() < 0 || p.vertical_deg.back() > 180)
         fail(path, "cannot write as EULUMDAT: vertical angles outside 0..180");
-    EulumdatFile f;
-    Circle circle = full_circle(path, p);
-    std::vector<size_t> stored;
-    f.isym = choose_symmetry(circle, stored);
+}
+
+// Mc, Ng, the angles and their spacings Dc and Dg.
+void set_angles(EulumdatFile& f, const Circle& circle, const std::vector<double>& gamma_deg) {
     f.c_angles_deg = circle.c;
     f.mc = int(circle.c.size());
-    f.gamma_angles_deg = p.vertical_deg;
-    f.ng = int(p.vertical_deg.size());
+    f.gamma_angles_deg = gamma_deg;
+    f.ng = int(gamma_deg.size());
     f.dc = spacing(f.c_angles_deg);
     f.dg = spacing(f.gamma_angles_deg);
+}
 
+// Lamp set 1 describes the photometry itself: without rated lumens it is absolute (negative
+// count) and its lumens are the luminaire's flux.
+EulumdatLampSet first_lamp_set(const Photometry& p, double flux) {
     const bool absolute = !(p.rated_lumens > 0);
-    const double flux = p.total_flux();
     EulumdatLampSet set;
     set.count = absolute ? -std::max(1, p.lamp_count) : std::max(1, p.lamp_count);
     set.lumens = absolute ? (flux > 0 ? flux : 1000) : p.rated_lumens;
@@ -262,79 +268,133 @@ EulumdatFile eulumdat_from_photometry(const Photometry& p, const std::string& pa
     set.color = one_line(p, "_LDT_LAMP_COLOR");
     set.rendering = one_line(p, "_LDT_LAMP_RENDERING");
     set.watts = p.input_watts;
-    f.lamp_sets.push_back(set);
-    if (const std::string* more = keyword(p, "_LDT_MORE_LAMP_SETS")) {
-        size_t start = 0;
-        while (start <= more->size()) {
-            size_t end = more->find('\n', start);
-            std::string line = more->substr(start, end == std::string::npos ? std::string::npos : end - start);
-            std::vector<std::string> parts;
-            for (size_t a = 0, b;; a = b + 1) {
-                b = line.find('|', a);
-                parts.push_back(line.substr(a, b == std::string::npos ? std::string::npos : b - a));
-                if (b == std::string::npos) break;
-            }
-            EulumdatLampSet m;
-            double count = 0;
-            if (parts.size() != 6 || !parse_double(parts[0], count) || count != std::floor(count) || count == 0 ||
-                !parse_double(parts[2], m.lumens) || !(m.lumens > 0) || !parse_double(parts[5], m.watts))
-                fail(path, "cannot write as EULUMDAT: _LDT_MORE_LAMP_SETS line '" + line +
-                               "': expected count|type|lumens|colour|rendering|watts");
-            m.count = int(count);
-            m.type = parts[1];
-            m.color = parts[3];
-            m.rendering = parts[4];
-            f.lamp_sets.push_back(m);
-            if (end == std::string::npos) break;
-            start = end + 1;
-        }
-    }
+    return set;
+}
 
+std::vector<std::string> split(const std::string& text, char separator) {
+    std::vector<std::string> parts;
+    for (size_t a = 0, b;; a = b + 1) {
+        b = text.find(separator, a);
+        parts.push_back(text.substr(a, b == std::string::npos ? std::string::npos : b - a));
+        if (b == std::string::npos) return parts;
+    }
+}
+
+// One line of _LDT_MORE_LAMP_SETS: count|type|lumens|colour|rendering|watts.
+EulumdatLampSet parse_lamp_set(const std::string& path, const std::string& line) {
+    const std::vector<std::string> parts = split(line, '|');
+    EulumdatLampSet set;
+    double count = 0;
+    if (parts.size() != 6 || !parse_double(parts[0], count) || count != std::floor(count) ||
+        count == 0 || !parse_double(parts[2], set.lumens) || !(set.lumens > 0) ||
+        !parse_double(parts[5], set.watts))
+        fail(path, "cannot write as EULUMDAT: _LDT_MORE_LAMP_SETS line '" + line +
+                       "': expected count|type|lumens|colour|rendering|watts");
+    set.count = int(count);
+    set.type = parts[1];
+    set.color = parts[3];
+    set.rendering = parts[4];
+    return set;
+}
+
+// Intensities of the stored planes in cd/klm of lamp set 1.
+void set_intensities(EulumdatFile& f, const Circle& circle, const std::vector<size_t>& stored) {
     const size_t ng = size_t(f.ng);
-    const double to_cd_klm = 1000.0 / set.lumens;
+    const double to_cd_klm = 1000.0 / f.lamp_sets[0].lumens;
     for (size_t k : stored)
         for (size_t g = 0; g < ng; ++g) f.intensities.push_back(circle.rows[k][g] * to_cd_klm);
+}
 
+void set_text_lines(EulumdatFile& f, const Photometry& p, const std::string& path) {
     f.company = one_line(p, "MANUFAC");
     f.report_number = one_line(p, "TEST");
     f.luminaire_name = one_line(p, "LUMINAIRE");
     f.luminaire_number = one_line(p, "LUMCAT");
     f.file_name = std::filesystem::path(path).filename().string();
     f.date_user = one_line(p, "ISSUEDATE");
+}
+
+// The numbers of an _LDT_ keyword (exactly n), or nothing when the photometry lacks it.
+std::optional<std::vector<double>> keyword_numbers(const Photometry& p, const std::string& path,
+                                                   const char* key, size_t n) {
+    const std::string* value = keyword(p, key);
+    if (!value) return std::nullopt;
+    return numbers_of(path, key, *value, n);
+}
+
+std::optional<double> keyword_number(const Photometry& p, const std::string& path,
+                                     const char* key) {
+    const auto x = keyword_numbers(p, path, key, 1);
+    if (!x) return std::nullopt;
+    return (*x)[0];
+}
+
+// The luminous area from the opening, the luminaire's body from _LDT_LUMINAIRE_MM or else the
+// luminous area.
+void set_dimensions(EulumdatFile& f, const Photometry& p, const std::string& path) {
     f.luminous_length_mm = (p.round ? std::max(p.length_m, p.width_m) : p.length_m) * 1000;
     f.luminous_width_mm = p.round ? 0 : p.width_m * 1000;
-    if (const std::string* v = keyword(p, "_LDT_LUMINOUS_HEIGHTS_MM")) {
-        auto x = numbers_of(path, "_LDT_LUMINOUS_HEIGHTS_MM", *v, 4);
-        std::copy(x.begin(), x.end(), f.luminous_height_mm.begin());
-    } else {
+    if (const auto x = keyword_numbers(p, path, "_LDT_LUMINOUS_HEIGHTS_MM", 4))
+        std::copy(x->begin(), x->end(), f.luminous_height_mm.begin());
+    else
         f.luminous_height_mm.fill(p.height_m * 1000);
-    }
-    if (const std::string* v = keyword(p, "_LDT_LUMINAIRE_MM")) {
-        auto x = numbers_of(path, "_LDT_LUMINAIRE_MM", *v, 3);
-        f.luminaire_length_mm = x[0], f.luminaire_width_mm = x[1], f.luminaire_height_mm = x[2];
+    if (const auto x = keyword_numbers(p, path, "_LDT_LUMINAIRE_MM", 3)) {
+        f.luminaire_length_mm = (*x)[0];
+        f.luminaire_width_mm = (*x)[1];
+        f.luminaire_height_mm = (*x)[2];
     } else {
         f.luminaire_length_mm = f.luminous_length_mm;
         f.luminaire_width_mm = f.luminous_width_mm;
         f.luminaire_height_mm = p.height_m * 1000;
     }
-    if (const std::string* v = keyword(p, "_LDT_ITYP")) {
-        double ityp = numbers_of(path, "_LDT_ITYP", *v, 1)[0];
-        if (ityp != std::floor(ityp) || ityp < 0 || ityp > 3) fail(path, "cannot write as EULUMDAT: _LDT_ITYP '" + *v + "' is not 0..3");
-        f.ityp = int(ityp);
-    } else {
+}
+
+void set_type_indicator(EulumdatFile& f, const Photometry& p, const std::string& path) {
+    const std::string* v = keyword(p, "_LDT_ITYP");
+    if (!v) {
         f.ityp = f.isym == 1 ? 1 : 3;
+        return;
     }
-    const std::string* dff = keyword(p, "_LDT_DFF");
-    f.downward_flux_percent = dff ? numbers_of(path, "_LDT_DFF", *dff, 1)[0] : flux > 0 ? 100 * downward_flux(p) / flux : 0;
-    const std::string* lorl = keyword(p, "_LDT_LORL");
-    f.light_output_ratio_percent = lorl ? numbers_of(path, "_LDT_LORL", *lorl, 1)[0] : absolute ? 100 : 100 * flux / p.rated_lumens;
+    const double ityp = numbers_of(path, "_LDT_ITYP", *v, 1)[0];
+    if (ityp != std::floor(ityp) || ityp < 0 || ityp > 3)
+        fail(path, "cannot write as EULUMDAT: _LDT_ITYP '" + *v + "' is not 0..3");
+    f.ityp = int(ityp);
+}
+
+// DFF and LORL from their _LDT_ keywords, else from the intensities; tilt and direct ratios from
+// theirs, else 0.
+void set_ratios_and_tilt(EulumdatFile& f, const Photometry& p, const std::string& path,
+                         double flux) {
+    const bool absolute = !(p.rated_lumens > 0);
+    const auto dff = keyword_number(p, path, "_LDT_DFF");
+    f.downward_flux_percent = dff ? *dff : flux > 0 ? 100 * downward_flux(p) / flux : 0;
+    const auto lorl = keyword_number(p, path, "_LDT_LORL");
+    f.light_output_ratio_percent = lorl ? *lorl : absolute ? 100 : 100 * flux / p.rated_lumens;
     f.conversion_factor = 1;
-    const std::string* tilt = keyword(p, "_LDT_TILT");
-    f.tilt_deg = tilt ? numbers_of(path, "_LDT_TILT", *tilt, 1)[0] : 0;
-    if (const std::string* dr = keyword(p, "_LDT_DIRECT_RATIOS")) {
-        auto x = numbers_of(path, "_LDT_DIRECT_RATIOS", *dr, 10);
-        std::copy(x.begin(), x.end(), f.direct_ratios.begin());
-    }
+    f.tilt_deg = keyword_number(p, path, "_LDT_TILT").value_or(0);
+    if (const auto x = keyword_numbers(p, path, "_LDT_DIRECT_RATIOS", 10))
+        std::copy(x->begin(), x->end(), f.direct_ratios.begin());
+}
+
+}  // namespace
+
+EulumdatFile eulumdat_from_photometry(const Photometry& p, const std::string& path) {
+    check_writable(p, path);
+    EulumdatFile f;
+    const Circle circle = full_circle(path, p);
+    std::vector<size_t> stored;
+    f.isym = choose_symmetry(circle, stored);
+    set_angles(f, circle, p.vertical_deg);
+    const double flux = p.total_flux();
+    f.lamp_sets.push_back(first_lamp_set(p, flux));
+    if (const std::string* more = keyword(p, "_LDT_MORE_LAMP_SETS"))
+        for (const std::string& line : split(*more, '\n'))
+            f.lamp_sets.push_back(parse_lamp_set(path, line));
+    set_intensities(f, circle, stored);
+    set_text_lines(f, p, path);
+    set_dimensions(f, p, path);
+    set_type_indicator(f, p, path);
+    set_ratios_and_tilt(f, p, path, flux);
     return f;
 }
 

@@ -238,6 +238,51 @@ std::string smoothing_description(const FarFieldOptions& options, const std::vec
     return text;
 }
 
+// The ratio that makes the estimate's total flux the rays'.
+double flux_scale(const FarFieldGrid& grid, const BinnedRays& binned,
+                  const std::vector<double>& intensity) {
+    const size_t nc = grid.c_count(), ng = grid.gamma_count();
+    double rays_flux = 0, estimate_flux = 0;
+    for (size_t i = 0; i < nc; ++i)
+        for (size_t j = 0; j < ng; ++j) {
+            rays_flux += binned.flux[i * ng + j];
+            estimate_flux += intensity[i * ng + j] * grid.solid_angle(j);
+        }
+    return estimate_flux > 0 ? rays_flux / estimate_flux : 1;
+}
+
+// Type C photometry on the grid (C360 repeating C0) and room for the values of every cell.
+void allocate_cells(FarField& out, const FarFieldGrid& grid, bool with_sigma) {
+    const size_t nc = grid.c_count(), ng = grid.gamma_count();
+    Photometry& p = out.photometry;
+    p.type = PhotometricType::C;
+    for (size_t j = 0; j < ng; ++j) p.vertical_deg.push_back(double(j) * grid.gamma_step_deg());
+    for (size_t i = 0; i <= nc; ++i) p.horizontal_deg.push_back(double(i) * grid.c_step_deg());
+    p.rated_lumens = -1;
+    const size_t cells = (nc + 1) * ng;
+    p.candela.resize(cells);
+    out.flux.resize(cells);
+    out.solid_angle.resize(cells);
+    out.variance.resize(cells);
+    if (with_sigma) out.sigma_deg.resize(cells);
+}
+
+// Where the photometry comes from and how it was estimated.
+void add_keywords(FarField& out, const RayReader& reader, const FarFieldOptions& options) {
+    Photometry& p = out.photometry;
+    const RayHeader& header = reader.header();
+    p.keywords["TEST"] = "far field of " + reader.path();
+    if (!header.text[1].empty()) p.keywords["MANUFAC"] = header.text[1];
+    if (!header.text[0].empty()) p.keywords["LUMINAIRE"] = header.text[0];
+    p.keywords["_RAYS"] = std::to_string(out.rays);
+    p.keywords["_SMOOTHING"] = out.method;
+    p.keywords["_POLAR_AXIS"] = options.axis == PolarAxis::plus_z
+                                    ? "gamma 0 is +z of the ray file; C0 is +x, C90 is +y"
+                                    : "gamma 0 is -z of the ray file; C0 is +x, C90 is +y";
+    if (options.quantity == FarFieldQuantity::radiometric)
+        p.keywords["_RADIOMETRIC"] = "candela values are radiant intensities in W/sr";
+}
+
 }  // namespace
 
 FarField far_field(RayReader& reader, const FarFieldOptions& options) {
@@ -260,23 +305,10 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
     FarField out;
     out.rays = binned.rays;
     out.method = smoothing_description(options, sigma, kind);
-    double rays_flux = 0, estimate_flux = 0;
-    for (size_t i = 0; i < nc; ++i)
-        for (size_t j = 0; j < ng; ++j)
-            rays_flux += binned.flux[i * ng + j], estimate_flux += intensity[i * ng + j] * grid.solid_angle(j);
-    out.flux_scale = estimate_flux > 0 ? rays_flux / estimate_flux : 1;
+    out.flux_scale = flux_scale(grid, binned, intensity);
 
+    allocate_cells(out, grid, !sigma.empty());
     Photometry& p = out.photometry;
-    p.type = PhotometricType::C;
-    for (size_t j = 0; j < ng; ++j) p.vertical_deg.push_back(double(j) * grid.gamma_step_deg());
-    for (size_t i = 0; i <= nc; ++i) p.horizontal_deg.push_back(double(i) * grid.c_step_deg());
-    p.rated_lumens = -1;
-    const size_t cells = (nc + 1) * ng;
-    p.candela.resize(cells);
-    out.flux.resize(cells);
-    out.solid_angle.resize(cells);
-    out.variance.resize(cells);
-    if (!sigma.empty()) out.sigma_deg.resize(cells);
     const double scale = out.flux_scale;
     const bool histogram = options.smoothing == FarFieldSmoothing::none;
     double north_flux = 0, south_flux = 0;
@@ -304,17 +336,7 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
         }
     }
 
-    const RayHeader& header = reader.header();
-    p.keywords["TEST"] = "far field of " + reader.path();
-    if (!header.text[1].empty()) p.keywords["MANUFAC"] = header.text[1];
-    if (!header.text[0].empty()) p.keywords["LUMINAIRE"] = header.text[0];
-    p.keywords["_RAYS"] = std::to_string(out.rays);
-    p.keywords["_SMOOTHING"] = out.method;
-    p.keywords["_POLAR_AXIS"] = options.axis == PolarAxis::plus_z
-                                    ? "gamma 0 is +z of the ray file; C0 is +x, C90 is +y"
-                                    : "gamma 0 is -z of the ray file; C0 is +x, C90 is +y";
-    if (options.quantity == FarFieldQuantity::radiometric)
-        p.keywords["_RADIOMETRIC"] = "candela values are radiant intensities in W/sr";
+    add_keywords(out, reader, options);
     return out;
 }
 

@@ -51,76 +51,114 @@ private:
     void parse_header() {
         const uint64_t size = in_.size();
         if (size < kHeaderSize + sizeof kTrailer)
-            in_.fail_at(0, fmt::format("the file is {} bytes, too short for LightTools ray data (a 44-byte header and the "
-                                       "7-byte end marker LTRFEND): it is truncated",
+            in_.fail_at(0, fmt::format("the file is {} bytes, too short for LightTools ray data (a "
+                                       "44-byte header and the 7-byte end marker LTRFEND): it is "
+                                       "truncated",
                                        size));
+        check_magic_and_version();
+        read_layout();
+        const LengthUnit unit = read_unit();
+        const Vec3f origin = read_origin();
+        const float total = in_.read<float>("the total flux");
+        if (!std::isfinite(total) || total < 0)
+            in_.fail_at(kTotalFluxOffset,
+                        fmt::format("total flux {} is not a non-negative number", total));
+        const uint64_t rays = count_records(size);
+        header_ = lighttools_header(RayFormat::lighttools_binary, layout_, unit, origin, total);
+        header_.ray_count = rays;
+        in_.seek(kHeaderSize);
+    }
+
+    void check_magic_and_version() {
         char magic[4];
         in_.read(magic, sizeof magic, "the LTRF magic");
         if (std::memcmp(magic, kMagic, sizeof magic) != 0)
             in_.fail_at(0, "not LightTools binary ray data: the file does not start with 'LTRF'");
-
         const uint32_t major = read_u32("the major version");
         if (major == 3)
-            in_.fail_at(4, "LightTools ray data version 3 (with polarisation) is not supported: export without "
-                           "polarisation (version 2)");
+            in_.fail_at(4,
+                        "LightTools ray data version 3 (with polarisation) is not supported: "
+                        "export without polarisation (version 2)");
         if (major != 2) in_.fail_at(4, fmt::format("unknown major version {} (expected 2)", major));
         const uint32_t minor = read_u32("the minor version");
-        if (minor != 0) in_.fail_at(8, fmt::format("unknown minor version {} (only version 2.0 is known)", minor));
+        if (minor != 0)
+            in_.fail_at(8,
+                        fmt::format("unknown minor version {} (only version 2.0 is known)", minor));
+    }
 
+    // The data type, far-field flag and colour information: what the flux column holds and
+    // whether a wavelength column follows.
+    void read_layout() {
         const uint32_t data_type = read_u32("the data type");
         if (data_type > 1)
-            in_.fail_at(12, fmt::format("unknown data type {} (expected 0 radiometric or 1 photometric)", data_type));
+            in_.fail_at(12, fmt::format("unknown data type {} (expected 0 radiometric or 1 "
+                                        "photometric)",
+                                        data_type));
         layout_.photometric = data_type == 1;
 
         const uint32_t far_field = read_u32("the far-field flag");
         // The far-field record layout (whether positions are still stored) is documented nowhere we
         // can check and no sample exists, so guessing could silently misplace every column.
         if (far_field == 1)
-            in_.fail_at(16, "far-field LightTools ray data (far-field flag 1 at byte 16) is not supported: its record "
-                            "layout is unknown; export near-field rays instead");
-        if (far_field != 0) in_.fail_at(16, fmt::format("invalid far-field flag {} (expected 0 or 1)", far_field));
+            in_.fail_at(16,
+                        "far-field LightTools ray data (far-field flag 1 at byte 16) is not "
+                        "supported: its record layout is unknown; export near-field rays "
+                        "instead");
+        if (far_field != 0)
+            in_.fail_at(16, fmt::format("invalid far-field flag {} (expected 0 or 1)", far_field));
 
         const uint32_t colour = read_u32("the colour information");
         if (colour == 1)
-            in_.fail_at(20, "tristimulus colour information (colour info 1 at byte 20) is not supported: its record "
-                            "layout is unknown; export with wavelength or without colour information");
+            in_.fail_at(20,
+                        "tristimulus colour information (colour info 1 at byte 20) is not "
+                        "supported: its record layout is unknown; export with wavelength or "
+                        "without colour information");
         if (colour != 0 && colour != 2)
-            in_.fail_at(20, fmt::format("unknown colour information {} (expected 0 none or 2 wavelength)", colour));
+            in_.fail_at(20, fmt::format("unknown colour information {} (expected 0 none or 2 "
+                                        "wavelength)",
+                                        colour));
         layout_.wavelength = colour == 2;
+    }
 
+    LengthUnit read_unit() {
         const uint32_t unit_code = read_u32("the length unit");
         // Code 0 is "system units", whatever the LightTools model used; the file does not say
         // which, and LightTools' default system unit is mm, so mm is assumed.
         std::optional<LengthUnit> unit = unit_code == 0 ? LengthUnit::mm : lighttools_unit(unit_code);
         if (!unit)
-            in_.fail_at(24, fmt::format("unknown length unit code {} (expected 0 system, 1 mm, 2 cm, 3 m, 4 in, 5 ft, "
-                                        "6 um or 7 nm)",
+            in_.fail_at(24, fmt::format("unknown length unit code {} (expected 0 system, 1 mm, 2 "
+                                        "cm, 3 m, 4 in, 5 ft, 6 um or 7 nm)",
                                         unit_code));
+        return *unit;
+    }
 
+    Vec3f read_origin() {
         float origin[3];
         in_.read(origin, sizeof origin, "the data origin");
         if (!std::isfinite(origin[0]) || !std::isfinite(origin[1]) || !std::isfinite(origin[2]))
-            in_.fail_at(28, fmt::format("data origin ({}, {}, {}) is not finite", origin[0], origin[1], origin[2]));
-        const float total = in_.read<float>("the total flux");
-        if (!std::isfinite(total) || total < 0)
-            in_.fail_at(kTotalFluxOffset, fmt::format("total flux {} is not a non-negative number", total));
+            in_.fail_at(28, fmt::format("data origin ({}, {}, {}) is not finite", origin[0],
+                                        origin[1], origin[2]));
+        return {origin[0], origin[1], origin[2]};
+    }
 
+    // The number of records between the header and the end marker, which must be there.
+    uint64_t count_records(uint64_t size) {
         const uint64_t trailer_at = size - sizeof kTrailer;
         char trailer[sizeof kTrailer];
         in_.seek(trailer_at);
         in_.read(trailer, sizeof trailer, "the end marker");
         if (std::memcmp(trailer, kTrailer, sizeof trailer) != 0)
-            in_.fail_at(trailer_at, "the file does not end with the end marker LTRFEND: it is truncated or damaged");
-
+            in_.fail_at(trailer_at,
+                        "the file does not end with the end marker LTRFEND: it is "
+                        "truncated or damaged");
         const uint64_t body = trailer_at - kHeaderSize;
         if (body % record_bytes() != 0)
-            in_.fail_at(kHeaderSize, fmt::format("the {} bytes between the header and LTRFEND are not a whole number of "
-                                                 "{}-byte ray records (x y z kx ky kz flux{}): the file is damaged",
-                                                 body, record_bytes(), layout_.wavelength ? " wavelength" : ""));
-
-        header_ = lighttools_header(RayFormat::lighttools_binary, layout_, *unit, {origin[0], origin[1], origin[2]}, total);
-        header_.ray_count = body / record_bytes();
-        in_.seek(kHeaderSize);
+            in_.fail_at(kHeaderSize,
+                        fmt::format("the {} bytes between the header and LTRFEND are not a whole "
+                                    "number of {}-byte ray records (x y z kx ky kz flux{}): the "
+                                    "file is damaged",
+                                    body, record_bytes(), layout_.wavelength ? " wavelength" : ""));
+        return body / record_bytes();
     }
 
     BinaryInput in_;

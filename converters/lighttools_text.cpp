@@ -59,6 +59,16 @@ const char* unit_name(LengthUnit unit) {
     return "millimeters";
 }
 
+// What the header lines give, gathered up to lt_startofdata.
+struct HeaderLines {
+    std::map<std::string, uint64_t> seen;  // key -> line, to reject repeated keys
+    std::vector<std::string> comments;
+    std::optional<bool> photometric;
+    std::optional<LengthUnit> unit;
+    Vec3f origin;
+    double total = std::nan("");
+};
+
 class LightToolsTextDecoder : public RayDecoder {
 public:
     explicit LightToolsTextDecoder(const std::string& path) : in_(path) {
@@ -106,108 +116,167 @@ public:
 
 private:
     void parse_header() {
-        std::map<std::string, uint64_t> seen;  // key -> line, to reject repeated keys
-        std::vector<std::string> comments;
-        std::optional<bool> photometric;
-        std::optional<LengthUnit> unit;
-        Vec3f origin;
-        double total = std::nan("");
-        bool started = false;
+        HeaderLines lines;
+        read_header_lines(lines);
+        if (!lines.photometric) fail_missing("lt_datatype", "radiant_power or luminous_flux?");
+        if (!lines.unit) fail_missing("lt_length_units", "the unit of the positions is unknown");
+        if (!std::isfinite(lines.total))
+            fail_missing("lt_radiant_flux",
+                         "the relative ray fluxes cannot be scaled without the total");
+        layout_.photometric = *lines.photometric;
+
+        std::string description;
+        for (const std::string& c : lines.comments)
+            description += (description.empty() ? "" : "\n") + c;
+        std::string name = std::move(header_.text[0]);
+        header_ = lighttools_header(RayFormat::lighttools_text, layout_, *lines.unit, lines.origin,
+                                    lines.total);
+        header_.text[0] = std::move(name);
+        header_.description = std::move(description);
+    }
+
+    // Reads up to and including lt_startofdata.
+    void read_header_lines(HeaderLines& lines) {
         while (in_.next(line_)) {
             std::string_view text = trim(line_);
             if (text.empty()) continue;
             if (text.front() == '#') {
-                std::string_view comment = trim(text.substr(1));
-                comments.emplace_back(comment);
+                lines.comments.emplace_back(trim(text.substr(1)));
                 continue;
             }
-            if (text == kStart) {
-                started = true;
-                break;
-            }
-            // A header line that ends the file was most likely cut short: say so rather than
-            // complain about its content.
-            if (in_.offset() == in_.size())
-                in_.fail_here(fmt::format("the file ends inside the header, before {}: it is truncated", kStart));
-            size_t colon = text.find(':');
-            if (colon == std::string_view::npos)
-                in_.fail_here(fmt::format("expected 'key: value' or {} but found '{}'{}", kStart, text.substr(0, 40),
-                                          std::isalpha(static_cast<unsigned char>(text.front())) ? "" : ": is lt_startofdata missing?"));
-            const std::string key = lower(trim(text.substr(0, colon)));
-            const std::string_view value = trim(text.substr(colon + 1));
-            const uint32_t value_column = column_of(line_, value);
-            auto [it, fresh] = seen.emplace(key, in_.line_number());
-            if (!fresh) in_.fail_here(fmt::format("{} is given a second time (first on line {})", key, it->second));
-            auto bad_value = [&](const std::string& what) { in_.fail_here(what, value_column); };
-
-            if (key == "lt_rdf_version") {
-                double version = 0;
-                if (!parse_double(value, version) || std::floor(version) != 2)
-                    bad_value(fmt::format("lt_rdf_version '{}' is not supported (only version 2.0 is known)", value));
-            } else if (key == "dataname") {
-                header_.text[0] = std::string(value);
-            } else if (key == "lt_datatype") {
-                const std::string v = lower(value);
-                if (v != "radiant_power" && v != "luminous_flux")
-                    bad_value(fmt::format("unknown lt_datatype '{}' (expected radiant_power or luminous_flux)", value));
-                photometric = v == "luminous_flux";
-            } else if (key == "lt_far_field_data") {
-                const std::string v = lower(value);
-                if (v == "yes")
-                    bad_value("far-field LightTools ray data is not supported: its row layout is unknown; export "
-                              "near-field rays instead");
-                if (v != "no") bad_value(fmt::format("unknown lt_far_field_data '{}' (expected no or yes)", value));
-            } else if (key == "lt_color_info") {
-                const std::string v = lower(value);
-                if (v == "wavelength") {
-                    layout_.wavelength = true;
-                } else if (v != "none") {
-                    bad_value(fmt::format("lt_color_info '{}' is not supported (expected none or wavelength; the row "
-                                          "layout of tristimulus data is unknown)",
-                                          value));
-                }
-            } else if (key == "lt_length_units") {
-                const std::string v = lower(value);
-                for (const UnitName& u : kUnitNames)
-                    if (v == u.name) unit = u.unit;
-                if (!unit)
-                    bad_value(fmt::format("unknown lt_length_units '{}' (expected millimeters, centimeters, meters, "
-                                          "inches, feet, micrometers or nanometers)",
-                                          value));
-            } else if (key == "lt_data_origin") {
-                std::vector<std::string_view> f = split_fields(value);
-                if (f.size() != 3 || !parse_float(f[0], origin.x) || !parse_float(f[1], origin.y) ||
-                    !parse_float(f[2], origin.z) || !std::isfinite(origin.x) || !std::isfinite(origin.y) ||
-                    !std::isfinite(origin.z))
-                    bad_value(fmt::format("lt_data_origin '{}' is not three finite numbers", value));
-            } else if (key == "lt_radiant_flux" || key == "lt_luminous_flux") {
-                // LightTools 8.7 writes lt_radiant_flux for luminous data too: the key names the
-                // total whatever lt_datatype says.
-                if (seen.count(key == "lt_radiant_flux" ? "lt_luminous_flux" : "lt_radiant_flux"))
-                    in_.fail_here("the file gives both lt_radiant_flux and lt_luminous_flux; one total is expected");
-                if (!parse_double(value, total) || !std::isfinite(total) || total < 0)
-                    bad_value(fmt::format("{} '{}' is not a non-negative number", key, value));
-            } else if (key.rfind("lt_", 0) == 0) {
-                in_.fail_here(fmt::format("unknown key {}: this LightTools ray data is not supported", key));
-            }
-            // Other keys are descriptive entries LightTools may add; they do not change the rays.
+            if (text == kStart) return;
+            read_key_line(text, lines);
         }
-        if (!started)
-            in_.fail_here(fmt::format("the file ends without {}: it is truncated or not LightTools ray data", kStart));
-        auto require = [&](bool present, const char* key, const char* why) {
-            if (!present) in_.fail_here(fmt::format("no {} line before {}: {}", key, kStart, why));
-        };
-        require(photometric.has_value(), "lt_datatype", "radiant_power or luminous_flux?");
-        require(unit.has_value(), "lt_length_units", "the unit of the positions is unknown");
-        require(std::isfinite(total), "lt_radiant_flux", "the relative ray fluxes cannot be scaled without the total");
-        layout_.photometric = *photometric;
+        in_.fail_here(fmt::format(
+            "the file ends without {}: it is truncated or not LightTools ray data", kStart));
+    }
 
-        std::string description;
-        for (const std::string& c : comments) description += (description.empty() ? "" : "\n") + c;
-        std::string name = std::move(header_.text[0]);
-        header_ = lighttools_header(RayFormat::lighttools_text, layout_, *unit, origin, total);
-        header_.text[0] = std::move(name);
-        header_.description = std::move(description);
+    void read_key_line(std::string_view text, HeaderLines& lines) {
+        // A header line that ends the file was most likely cut short: say so rather than
+        // complain about its content.
+        if (in_.offset() == in_.size())
+            in_.fail_here(
+                fmt::format("the file ends inside the header, before {}: it is truncated", kStart));
+        size_t colon = text.find(':');
+        if (colon == std::string_view::npos)
+            in_.fail_here(fmt::format("expected 'key: value' or {} but found '{}'{}", kStart,
+                                      text.substr(0, 40),
+                                      std::isalpha(static_cast<unsigned char>(text.front()))
+                                          ? ""
+                                          : ": is lt_startofdata missing?"));
+        const std::string key = lower(trim(text.substr(0, colon)));
+        const std::string_view value = trim(text.substr(colon + 1));
+        auto [it, fresh] = lines.seen.emplace(key, in_.line_number());
+        if (!fresh)
+            in_.fail_here(
+                fmt::format("{} is given a second time (first on line {})", key, it->second));
+        apply_key(key, value, lines);
+    }
+
+    void apply_key(const std::string& key, std::string_view value, HeaderLines& lines) {
+        if (key == "lt_rdf_version") {
+            check_version(value);
+        } else if (key == "dataname") {
+            header_.text[0] = std::string(value);
+        } else if (key == "lt_datatype") {
+            lines.photometric = parse_datatype(value);
+        } else if (key == "lt_far_field_data") {
+            check_near_field(value);
+        } else if (key == "lt_color_info") {
+            layout_.wavelength = parse_color_info(value);
+        } else if (key == "lt_length_units") {
+            lines.unit = parse_unit(value);
+        } else if (key == "lt_data_origin") {
+            lines.origin = parse_origin(value);
+        } else if (key == "lt_radiant_flux" || key == "lt_luminous_flux") {
+            lines.total = parse_total(key, value, lines);
+        } else if (key.rfind("lt_", 0) == 0) {
+            in_.fail_here(
+                fmt::format("unknown key {}: this LightTools ray data is not supported", key));
+        }
+        // Other keys are descriptive entries LightTools may add; they do not change the rays.
+    }
+
+    void check_version(std::string_view value) const {
+        double version = 0;
+        if (!parse_double(value, version) || std::floor(version) != 2)
+            fail_value(
+                value,
+                fmt::format("lt_rdf_version '{}' is not supported (only version 2.0 is known)",
+                            value));
+    }
+
+    bool parse_datatype(std::string_view value) const {
+        const std::string v = lower(value);
+        if (v != "radiant_power" && v != "luminous_flux")
+            fail_value(value, fmt::format("unknown lt_datatype '{}' (expected radiant_power or "
+                                          "luminous_flux)",
+                                          value));
+        return v == "luminous_flux";
+    }
+
+    void check_near_field(std::string_view value) const {
+        const std::string v = lower(value);
+        if (v == "yes")
+            fail_value(value,
+                       "far-field LightTools ray data is not supported: its row layout is "
+                       "unknown; export near-field rays instead");
+        if (v != "no")
+            fail_value(value,
+                       fmt::format("unknown lt_far_field_data '{}' (expected no or yes)", value));
+    }
+
+    // Whether rows carry a wavelength.
+    bool parse_color_info(std::string_view value) const {
+        const std::string v = lower(value);
+        if (v != "none" && v != "wavelength")
+            fail_value(value, fmt::format("lt_color_info '{}' is not supported (expected none or "
+                                          "wavelength; the row layout of tristimulus data is "
+                                          "unknown)",
+                                          value));
+        return v == "wavelength";
+    }
+
+    LengthUnit parse_unit(std::string_view value) const {
+        const std::string v = lower(value);
+        for (const UnitName& u : kUnitNames)
+            if (v == u.name) return u.unit;
+        fail_value(value, fmt::format("unknown lt_length_units '{}' (expected millimeters, "
+                                      "centimeters, meters, inches, feet, micrometers or "
+                                      "nanometers)",
+                                      value));
+    }
+
+    Vec3f parse_origin(std::string_view value) const {
+        Vec3f origin;
+        std::vector<std::string_view> f = split_fields(value);
+        if (f.size() != 3 || !parse_float(f[0], origin.x) || !parse_float(f[1], origin.y) ||
+            !parse_float(f[2], origin.z) || !std::isfinite(origin.x) || !std::isfinite(origin.y) ||
+            !std::isfinite(origin.z))
+            fail_value(value,
+                       fmt::format("lt_data_origin '{}' is not three finite numbers", value));
+        return origin;
+    }
+
+    double parse_total(const std::string& key, std::string_view value,
+                       const HeaderLines& lines) const {
+        // LightTools 8.7 writes lt_radiant_flux for luminous data too: the key names the
+        // total whatever lt_datatype says.
+        if (lines.seen.count(key == "lt_radiant_flux" ? "lt_luminous_flux" : "lt_radiant_flux"))
+            in_.fail_here(
+                "the file gives both lt_radiant_flux and lt_luminous_flux; one total is expected");
+        double total = 0;
+        if (!parse_double(value, total) || !std::isfinite(total) || total < 0)
+            fail_value(value, fmt::format("{} '{}' is not a non-negative number", key, value));
+        return total;
+    }
+
+    [[noreturn]] void fail_value(std::string_view value, const std::string& what) const {
+        in_.fail_here(what, column_of(line_, value));
+    }
+
+    [[noreturn]] void fail_missing(const char* key, const char* why) const {
+        in_.fail_here(fmt::format("no {} line before {}: {}", key, kStart, why));
     }
 
     void count_rays() {

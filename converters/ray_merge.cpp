@@ -175,11 +175,8 @@ void convert(const Source& s, const RayHeader& out, const RayChunk& in, RayChunk
     }
 }
 
-}  // namespace
-
-RayOpReport merge_rays(const std::vector<std::string>& inputs, const std::string& output, RayFormat format,
-                       const MergeOptions& options, const RayReadOptions& read, const Progress& progress) {
-    if (inputs.empty()) throw Error("merge: no input files given");
+std::vector<Source> open_sources(const std::vector<std::string>& inputs,
+                                 const RayReadOptions& read) {
     std::vector<Source> sources;
     for (const std::string& path : inputs) {
         Source s;
@@ -188,37 +185,42 @@ RayOpReport merge_rays(const std::vector<std::string>& inputs, const std::string
         s.weights = std::make_unique<PhotometricWeights>(s.reader->header());
         sources.push_back(std::move(s));
     }
-    const RayHeader& first = sources[0].header();
-    RayOpReport report;
-    RayHeader& out = report.header;
-    out = first;
-    out.unit = options.unit.value_or(first.unit);
+    return sources;
+}
+
+// The output's unit and ray count; each source's scale to that unit. Origins of far-field rays
+// mean nothing, so they cannot share a file with near-field ones.
+void plan_units(std::vector<Source>& sources, RayHeader& out) {
+    const bool far_field = sources[0].header().far_field;
     out.ray_count = 0;
     for (Source& s : sources) {
         s.length_scale = millimetres_per(s.header().unit) / millimetres_per(out.unit);
         out.ray_count += s.header().ray_count;
-        if (s.header().far_field != first.far_field)
-            fail(s.path, fmt::format("cannot merge far-field rays (whose origins mean nothing) with near-field rays: "
-                                     "{} is {}far-field, {} is {}far-field",
-                                     sources[0].path, first.far_field ? "" : "not ", s.path, first.far_field ? "not " : ""));
+        if (s.header().far_field != far_field)
+            fail(s.path,
+                 fmt::format("cannot merge far-field rays (whose origins mean nothing) with "
+                             "near-field rays: {} is {}far-field, {} is {}far-field",
+                             sources[0].path, far_field ? "" : "not ", s.path,
+                             far_field ? "not " : ""));
     }
+}
 
-    const std::string spectrum_dropped = plan_spectra(sources, out);
-    if (!spectrum_dropped.empty()) report.warnings.push_back(spectrum_dropped);
-    for (std::string& note : plan_columns(sources, out, !spectrum_dropped.empty())) report.warnings.push_back(std::move(note));
-    for (std::string& note : plan_extras(sources, out)) report.warnings.push_back(std::move(note));
-
+// The wavelength range spanning every input's.
+void plan_wavelength_range(const std::vector<Source>& sources, RayHeader& out) {
     out.min_wavelength = out.max_wavelength = kUnknown;
-    if (out.spectral != SpectralKind::none)
-        for (const Source& s : sources) {
-            const RayHeader& h = s.header();
-            for (float w : {h.min_wavelength, h.max_wavelength, h.single_wavelength}) {
-                if (std::isnan(w)) continue;
-                if (!(out.min_wavelength <= w)) out.min_wavelength = w;
-                if (!(out.max_wavelength >= w)) out.max_wavelength = w;
-            }
+    if (out.spectral == SpectralKind::none) return;
+    for (const Source& s : sources) {
+        const RayHeader& h = s.header();
+        for (float w : {h.min_wavelength, h.max_wavelength, h.single_wavelength}) {
+            if (std::isnan(w)) continue;
+            if (!(out.min_wavelength <= w)) out.min_wavelength = w;
+            if (!(out.max_wavelength >= w)) out.max_wavelength = w;
         }
-    // Totals add; a derived column has no stated total, so the writer sums the rays instead.
+    }
+}
+
+// Totals add; a derived column has no stated total, so the writer sums the rays instead.
+void plan_totals(const std::vector<Source>& sources, RayHeader& out) {
     double radiant = 0, luminous = 0;
     for (const Source& s : sources) {
         radiant += s.derive_radiant ? std::nan("") : s.header().stated_radiant;
@@ -226,19 +228,34 @@ RayOpReport merge_rays(const std::vector<std::string>& inputs, const std::string
     }
     out.stated_radiant = out.has_radiant ? radiant : std::nan("");
     out.stated_luminous = out.has_luminous ? luminous : std::nan("");
+}
 
+// The first input's data origin and placement are kept; returns a warning for each input whose
+// own differ.
+std::vector<std::string> plan_placement(const std::vector<Source>& sources, RayHeader& out) {
+    const RayHeader& first = sources[0].header();
     out.data_origin = scaled(first.data_origin, sources[0].length_scale);
     out.placement.location = scaled(first.placement.location, sources[0].length_scale);
+    std::vector<std::string> notes;
     for (size_t i = 1; i < sources.size(); ++i) {
         const RayHeader& h = sources[i].header();
         const double k = sources[i].length_scale;
         const SourcePlacement& p = h.placement;
-        if (!nearly_equal(scaled(h.data_origin, k), out.data_origin) || !nearly_equal(scaled(p.location, k), out.placement.location) ||
-            !nearly_equal(p.rotation_rad, first.placement.rotation_rad) || !nearly_equal(p.scale, first.placement.scale))
-            report.warnings.push_back(fmt::format("{} has another data origin or placement than {}; the first one's is kept",
-                                                  sources[i].path, sources[0].path));
+        if (!nearly_equal(scaled(h.data_origin, k), out.data_origin) ||
+            !nearly_equal(scaled(p.location, k), out.placement.location) ||
+            !nearly_equal(p.rotation_rad, first.placement.rotation_rad) ||
+            !nearly_equal(p.scale, first.placement.scale))
+            notes.push_back(fmt::format(
+                "{} has another data origin or placement than {}; the first one's is kept",
+                sources[i].path, sources[0].path));
     }
+    return notes;
+}
 
+// Writes every input's rays in order, converted to the output's terms.
+void write_merged(std::vector<Source>& sources, const std::string& output, RayFormat format,
+                  RayOpReport& report, const Progress& progress) {
+    const RayHeader& out = report.header;
     auto writer = create_rays(output, format, out);
     double done = 0;
     const double total_rays = std::max<double>(1, double(out.ray_count));
@@ -249,13 +266,40 @@ RayOpReport merge_rays(const std::vector<std::string>& inputs, const std::string
             chunk.first_index = report.totals.rays;
             writer->write(chunk);
             detail::add_totals(report.totals, out, chunk);
-            if (progress) progress((done + s.reader->progress() * double(s.header().ray_count)) / total_rays);
+            if (progress)
+                progress((done + s.reader->progress() * double(s.header().ray_count)) / total_rays);
         }
         done += double(s.header().ray_count);
         for (const std::string& w : s.reader->warnings()) report.warnings.push_back(w);
     }
     writer->finish();
     report.dropped = writer->dropped();
+}
+
+void append(std::vector<std::string>& to, std::vector<std::string> notes) {
+    for (std::string& note : notes) to.push_back(std::move(note));
+}
+
+}  // namespace
+
+RayOpReport merge_rays(const std::vector<std::string>& inputs, const std::string& output,
+                       RayFormat format, const MergeOptions& options, const RayReadOptions& read,
+                       const Progress& progress) {
+    if (inputs.empty()) throw Error("merge: no input files given");
+    std::vector<Source> sources = open_sources(inputs, read);
+    RayOpReport report;
+    RayHeader& out = report.header;
+    out = sources[0].header();
+    out.unit = options.unit.value_or(out.unit);
+    plan_units(sources, out);
+    const std::string spectrum_dropped = plan_spectra(sources, out);
+    if (!spectrum_dropped.empty()) report.warnings.push_back(spectrum_dropped);
+    append(report.warnings, plan_columns(sources, out, !spectrum_dropped.empty()));
+    append(report.warnings, plan_extras(sources, out));
+    plan_wavelength_range(sources, out);
+    plan_totals(sources, out);
+    append(report.warnings, plan_placement(sources, out));
+    write_merged(sources, output, format, report, progress);
     return report;
 }
 

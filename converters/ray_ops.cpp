@@ -53,62 +53,59 @@ std::array<double, 3> apply(const Matrix3& m, double x, double y, double z) {
 
 // ---- subsample ---------------------------------------------------------------------------------
 
-RayOpReport subsample_rays(const std::string& input, const std::string& output, RayFormat format,
-                           const SubsampleOptions& options, const RayReadOptions& read, const Progress& progress) {
-    auto first = open_rays(input, read);
-    const RayHeader& in = first->header();
-    const uint64_t n = in.ray_count;
+namespace {
+
+// The number of rays to keep: the count asked for, or the fraction of n rounded.
+uint64_t rays_to_keep(const std::string& input, const SubsampleOptions& options, uint64_t n) {
     uint64_t k = options.count;
     if (k == 0) {
         if (!(options.fraction > 0 && options.fraction <= 1))
-            fail(input, fmt::format("subsample: the fraction to keep is {}, not a number in (0, 1]", options.fraction));
+            fail(input, fmt::format("subsample: the fraction to keep is {}, not a number in (0, 1]",
+                                    options.fraction));
         k = static_cast<uint64_t>(std::llround(options.fraction * double(n)));
         if (k == 0)
-            fail(input, fmt::format("subsample: keeping {} of {} rays keeps none; ask for a count or a larger fraction",
+            fail(input, fmt::format("subsample: keeping {} of {} rays keeps none; ask for a count "
+                                    "or a larger fraction",
                                     options.fraction, n));
     }
-    if (k > n) fail(input, fmt::format("subsample: {} rays asked for, but the file holds only {}", k, n));
+    if (k > n)
+        fail(input, fmt::format("subsample: {} rays asked for, but the file holds only {}", k, n));
+    return k;
+}
 
-    // Pass 1: the fluxes of the rays the selection keeps.
-    double kept_radiant = 0, kept_luminous = 0;
-    {
-        Selection select(n, k, options.seed);
-        RayChunk chunk;
-        while (first->read(chunk)) {
-            for (const Ray& r : chunk.rays)
-                if (select.next()) {
-                    if (in.has_radiant) kept_radiant += r.radiant;
-                    if (in.has_luminous) kept_luminous += r.luminous;
-                }
-            if (progress) progress(0.5 * first->progress());
-        }
-        if (select.seen() != n)
-            fail(input, fmt::format("subsample: the header counts {} rays but the file holds {}", n, select.seen()));
+struct FluxSums {
+    double radiant = 0, luminous = 0;
+};
+
+// The first pass: the fluxes of the rays the selection keeps.
+FluxSums kept_flux(RayReader& reader, const std::string& input, uint64_t k, uint64_t seed,
+                   const Progress& progress) {
+    const RayHeader& in = reader.header();
+    const uint64_t n = in.ray_count;
+    FluxSums kept;
+    Selection select(n, k, seed);
+    RayChunk chunk;
+    while (reader.read(chunk)) {
+        for (const Ray& r : chunk.rays)
+            if (select.next()) {
+                if (in.has_radiant) kept.radiant += r.radiant;
+                if (in.has_luminous) kept.luminous += r.luminous;
+            }
+        if (progress) progress(0.5 * reader.progress());
     }
-    const RayTotals total = first->totals();
-    auto scale_for = [&](bool present, double sum_in, double sum_kept, const char* what) {
-        if (!present || sum_in == 0) return 1.0;
-        if (sum_kept <= 0)
-            fail(input, fmt::format("subsample: the {} rays kept with seed {} carry no {} flux, so the total cannot be "
-                                    "kept; keep more rays or use another seed", k, options.seed, what));
-        return sum_in / sum_kept;
-    };
-    const double radiant_scale = scale_for(in.has_radiant, total.radiant, kept_radiant, "radiant");
-    const double luminous_scale = scale_for(in.has_luminous, total.luminous, kept_luminous, "luminous");
+    if (select.seen() != n)
+        fail(input, fmt::format("subsample: the header counts {} rays but the file holds {}", n,
+                                select.seen()));
+    return kept;
+}
 
-    RayOpReport report;
-    report.warnings = first->warnings();
-    report.header = in;
-    report.header.ray_count = k;
-    report.header.stated_radiant = in.has_radiant ? total.radiant : std::nan("");
-    report.header.stated_luminous = in.has_luminous ? total.luminous : std::nan("");
-
-    // Pass 2: the same selection again, writing.
-    auto second = open_rays(input, read);
-    auto out = create_rays(output, format, report.header);
-    Selection select(n, k, options.seed);
+// The second pass: the same selection again, writing the kept rays scaled.
+void write_kept(RayReader& reader, RayEncoder& out, uint64_t seed, double radiant_scale,
+                double luminous_scale, RayOpReport& report, const Progress& progress) {
+    const RayHeader& in = reader.header();
+    Selection select(in.ray_count, report.header.ray_count, seed);
     RayChunk chunk, kept;
-    while (second->read(chunk)) {
+    while (reader.read(chunk)) {
         kept.clear();
         kept.first_index = report.totals.rays;
         for (size_t i = 0; i < chunk.rays.size(); ++i)
@@ -117,12 +114,47 @@ RayOpReport subsample_rays(const std::string& input, const std::string& output, 
             if (in.has_radiant) r.radiant = float(r.radiant * radiant_scale);
             if (in.has_luminous) r.luminous = float(r.luminous * luminous_scale);
         }
-        if (!kept.rays.empty()) out->write(kept);
+        if (!kept.rays.empty()) out.write(kept);
         detail::add_totals(report.totals, report.header, kept);
-        if (progress) progress(0.5 + 0.5 * second->progress());
+        if (progress) progress(0.5 + 0.5 * reader.progress());
     }
-    out->finish();
-    report.dropped = out->dropped();
+    out.finish();
+    report.dropped = out.dropped();
+}
+
+}  // namespace
+
+RayOpReport subsample_rays(const std::string& input, const std::string& output, RayFormat format,
+                           const SubsampleOptions& options, const RayReadOptions& read,
+                           const Progress& progress) {
+    auto first = open_rays(input, read);
+    const RayHeader& in = first->header();
+    const uint64_t k = rays_to_keep(input, options, in.ray_count);
+    const FluxSums kept = kept_flux(*first, input, k, options.seed, progress);
+    const RayTotals total = first->totals();
+    // The factor that brings the kept rays' flux back to the file's total.
+    auto scale_for = [&](bool present, double sum_in, double sum_kept, const char* what) {
+        if (!present || sum_in == 0) return 1.0;
+        if (sum_kept <= 0)
+            fail(input, fmt::format("subsample: the {} rays kept with seed {} carry no {} flux, so "
+                                    "the total cannot be kept; keep more rays or use another seed",
+                                    k, options.seed, what));
+        return sum_in / sum_kept;
+    };
+    const double radiant_scale = scale_for(in.has_radiant, total.radiant, kept.radiant, "radiant");
+    const double luminous_scale =
+        scale_for(in.has_luminous, total.luminous, kept.luminous, "luminous");
+
+    RayOpReport report;
+    report.warnings = first->warnings();
+    report.header = in;
+    report.header.ray_count = k;
+    report.header.stated_radiant = in.has_radiant ? total.radiant : std::nan("");
+    report.header.stated_luminous = in.has_luminous ? total.luminous : std::nan("");
+
+    auto second = open_rays(input, read);
+    auto out = create_rays(output, format, report.header);
+    write_kept(*second, *out, options.seed, radiant_scale, luminous_scale, report, progress);
     return report;
 }
 
