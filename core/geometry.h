@@ -23,6 +23,14 @@ inline Vec3 normalized(Vec3 a) { return (1 / length(a)) * a; }
 // Two unit vectors that complete `axis` (unit) to a right-handed orthonormal basis
 // (Duff et al. 2017, "Building an Orthonormal Basis, Revisited"): no trigonometry, so it is
 // bit-identical wherever IEEE arithmetic is.
-void orthonormal_basis(Vec3 axis, Vec3& u, Vec3& v);
+// Inline: the path tracer builds one at every bounce, and rayset_core is compiled without
+// link-time optimisation, so an out-of-line definition stays a call.
+inline void orthonormal_basis(Vec3 axis, Vec3& u, Vec3& v) {
+    const double sign = std::copysign(1.0, axis.z);
+    const double a = -1 / (sign + axis.z);
+    const double b = axis.x * axis.y * a;
+    u = {1 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
+    v = {b, sign + axis.y * axis.y * a, -axis.y};
+}
 
 }  // namespace rayset

@@ -192,6 +192,13 @@ bool crosses_box(Vec3 origin, Vec3 direction, double t_max, Vec3 low, Vec3 high)
     double t0 = 0, t1 = t_max;
     const double o[3] = {origin.x, origin.y, origin.z}, d[3] = {direction.x, direction.y, direction.z};
     const double lo[3] = {low.x, low.y, low.z}, hi[3] = {high.x, high.y, high.z};
+    // A ray outside a slab and heading away from it misses the box: decided by signs alone,
+    // before any division. For a unit direction the slab test below says the same (both its
+    // distances are negative), so this changes no outcome, only what those rays cost. A NaN
+    // t_max makes the slab test reject nothing: then neither does this.
+    bool away = false;
+    for (int k = 0; k < 3; ++k) away |= (o[k] < lo[k] && d[k] < 0) | (o[k] > hi[k] && d[k] > 0);
+    if (away && !std::isnan(t_max)) return false;
     for (int k = 0; k < 3; ++k) {
         const double inverse = 1 / d[k];
         double near = (lo[k] - o[k]) * inverse, far = (hi[k] - o[k]) * inverse;
