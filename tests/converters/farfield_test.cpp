@@ -206,9 +206,9 @@ TEST(FarFieldDigits, ValuesKeepTheDigitsTheirErrorsSupport) {
 // Coarser levels merge 2 x 2 bins, so every level's bins must tile the sphere: 2 x 2^3 = 16
 // degrees does not divide 180.
 TEST(FarFieldSmoothing, HistogramLevelsMustDivideTheSphere) {
-    EXPECT_NO_THROW(DirectionHistogram(DirectionResolution{2.5, 3, 4, 16, 4}));
-    EXPECT_THROW(DirectionHistogram(DirectionResolution{2, 4, 4, 16, 4}), std::invalid_argument);
-    EXPECT_THROW(DirectionHistogram(DirectionResolution{7, 1, 14, 28, 4}), std::invalid_argument);
+    EXPECT_NO_THROW(DirectionHistogram(DirectionResolution{2.5, 3, 4, 16, 4, false}));
+    EXPECT_THROW(DirectionHistogram(DirectionResolution{2, 4, 4, 16, 4, false}), std::invalid_argument);
+    EXPECT_THROW(DirectionHistogram(DirectionResolution{7, 1, 14, 28, 4, false}), std::invalid_argument);
 }
 
 // The rays a source emits on average: each 0.25 degree bin of the histogram gets its expected
