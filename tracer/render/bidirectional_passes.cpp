@@ -84,14 +84,20 @@ public:
 
     BidirectionalPasses(const RenderScene& scene, const RenderSettings& settings, const RenderResult& start);
     int samples_per_pass() const override { return samples_; }
-    void begin_pass(int, const SamplePoints& points) override { visible_.assign(size_t(points.tiles()), {}); }
+    void begin_pass(int, const SamplePoints& points) override {
+        visible_.assign(size_t(points.tiles()), {});
+        receivers_ = points.receivers;
+    }
     void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng, uint64_t& rays) const override;
     void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng, uint64_t& rays) const override;
     void end_pass(int pass, const SamplePoints& points, PassValues& values, std::atomic<uint64_t>& rays,
                   StopFlag stop) override;
     void pass_completed(RenderResult& result) override;
     bool first_pass_sets_outcome() const override { return !sources_.empty() && !(base_radius_ > 0); }
-    std::vector<double> first_pass_outcome() const override { return {base_radius_}; }
+    std::vector<double> first_pass_outcome() override {
+        if (!(base_radius_ > 0)) base_radius_ = default_radius(visible_, *receivers_);
+        return {base_radius_};
+    }
     void set_first_pass_outcome(const std::vector<double>& outcome) override { base_radius_ = outcome.at(0); }
 
 private:
@@ -111,6 +117,7 @@ private:
     double base_radius_;  // 0 until the first pass's visible points give it
     // The pass under way: visible points by tile (each tile's written by one thread), memory.
     mutable std::vector<std::vector<Point>> visible_;
+    const std::vector<ReceiverMap>* receivers_ = nullptr;
     size_t photon_bytes_ = 0, visible_point_bytes_ = 0;
 };
 

@@ -93,11 +93,12 @@ public:
     // integrator's own figures into `result`.
     virtual void pass_completed(RenderResult& /*result*/) {}
 
-    // Whether passes after the first take something from it (the bidirectional integrator's
-    // gather radius, derived from the first pass's visible points unless given); a process
-    // that did not render the first pass is then handed first_pass_outcome().
+    // Whether passes take something from the first one (the bidirectional integrator's gather
+    // radius, derived from the first pass's visible points unless given). The process that
+    // renders the first pass is asked first_pass_outcome() once its samples are in, and every
+    // process, before its pass ends, is handed it.
     virtual bool first_pass_sets_outcome() const { return false; }
-    virtual std::vector<double> first_pass_outcome() const { return {}; }
+    virtual std::vector<double> first_pass_outcome() { return {}; }
     virtual void set_first_pass_outcome(const std::vector<double>& /*outcome*/) {}
 };
 

@@ -45,17 +45,20 @@ public:
           seed_(settings.seed),
           stop_(stop) {}
 
-    // Pass `pass` within `arena`: its values, or nothing when it was stopped.
+    // Pass `pass` within `arena`: its values, or nothing when it was stopped. `between` runs
+    // after the samples and before the integrator's end of the pass, stopped or not.
+    template <class Between>
     std::optional<PassValues> render_pass(tbb::task_arena& arena, int pass, int components,
-                                          std::atomic<uint64_t>& rays) {
+                                          std::atomic<uint64_t>& rays, Between&& between) {
         PassValues values(components, points_.size());
         integrator_.begin_pass(pass, points_);
         const uint64_t seed = pass_seed(seed_, pass);
         arena.execute([&] {
             camera_samples(values, seed, rays);
             receiver_samples(values, seed, rays);
-            if (!stopped(stop_)) integrator_.end_pass(pass, points_, values, rays, stop_);
         });
+        between();
+        if (!stopped(stop_)) arena.execute([&] { integrator_.end_pass(pass, points_, values, rays, stop_); });
         if (stopped(stop_)) return std::nullopt;  // the pass may be incomplete: abandoned
         return values;
     }
@@ -257,8 +260,6 @@ Round next_round(const Processes& processes, const PassBudget& budget, const Int
     if (processes.is_root() && !stop_requested(control)) {
         int passes = 0;
         while (passes < processes.size() && budget.allows_another(result.passes + passes)) ++passes;
-        // The first pass alone when the others depend on it.
-        if (result.passes == 0 && integrator.first_pass_sets_outcome()) passes = std::min(passes, 1);
         const bool report = control.after_pass && (!control.wants_state || control.wants_state());
         decision = {passes, report ? 1 : 0};
     }
@@ -285,15 +286,20 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings, Re
         const bool renders = processes.rank() < round.passes;
         const bool sets_outcome = result.passes == 0 && integrator->first_pass_sets_outcome();
         std::atomic<uint64_t> rays{0};
-        std::optional<PassValues> pass;
-        if (renders) pass = driver.render_pass(arena, result.passes + processes.rank(), components, rays);
-        if (!processes.all(!renders || pass)) break;  // stopped somewhere: the round is dropped
-        if (pass) driver.add(*pass, result);
-        if (sets_outcome) {
-            std::vector<double> outcome = integrator->first_pass_outcome();
+        // Rank 0 renders the first pass: what the others take from it is handed on once its
+        // samples are in, before their own passes end.
+        const auto share_outcome = [&] {
+            if (!sets_outcome) return;
+            std::vector<double> outcome;
+            if (processes.is_root()) outcome = integrator->first_pass_outcome();
             processes.broadcast(outcome);
             integrator->set_first_pass_outcome(outcome);
-        }
+        };
+        std::optional<PassValues> pass;
+        if (renders) pass = driver.render_pass(arena, result.passes + processes.rank(), components, rays, share_outcome);
+        else share_outcome();
+        if (!processes.all(!renders || pass)) break;  // stopped somewhere: the round is dropped
+        if (pass) driver.add(*pass, result);
         for (int p = 0; p < round.passes; ++p) ++result.passes, integrator->pass_completed(result);
         result.rays += rays;
         result.seconds = budget.elapsed();
