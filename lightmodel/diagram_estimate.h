@@ -1,5 +1,5 @@
 // Goniometric diagrams from a limited set of rays: the kernel density estimate of the far field
-// (converters/farfield_smoothing.h), twiced von Mises-Fisher kernels over rays binned at 2.5
+// (converters/photometry/farfield_smoothing.h), twiced von Mises-Fisher kernels over rays binned at 2.5
 // degrees (coarser bins up to a quarter of the bandwidth), applied to the rays of each intensity
 // cell.
 //
@@ -24,7 +24,7 @@
 // the one of all the rays is their sum, made when the diagrams are.
 #pragma once
 
-#include "converters/farfield_smoothing.h"
+#include "converters/photometry/farfield_smoothing.h"
 #include "lightmodel/goniometric_diagram.h"
 
 #include <memory>

@@ -8,7 +8,7 @@
 // angles and a density over the square times 1/(4 pi) is a density over directions (sr^-1).
 #pragma once
 
-#include "converters/analytic_geometry.h"
+#include "converters/analytic/analytic_geometry.h"
 
 namespace rayset::lightmodel {
 

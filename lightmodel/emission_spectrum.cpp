@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "converters/cie_tables.h"
+#include "converters/colour/cie_tables.h"
 
 namespace rayset::lightmodel {
 

@@ -18,7 +18,7 @@ inline constexpr double kSpectrumFirstNm = 360, kSpectrumLastNm = 830;
 inline constexpr double kSpectrumBinNm = 10;
 inline constexpr int kSpectrumBins = 47;
 
-// Mean of V(lambda) (photopic_efficiency, converters/spectrum.h) over spectrum bin k (exact for
+// Mean of V(lambda) (photopic_efficiency, converters/colour/spectrum.h) over spectrum bin k (exact for
 // its linear interpolation).
 double photopic_bin_mean(int bin);
 // CIE illuminant D65 (CIE 15, 10 nm table), relative, 100 at 560 nm; linear between entries.

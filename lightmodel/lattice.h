@@ -4,7 +4,7 @@
 // intensity (5) lattices nest and a cell is a cube whatever the box's shape. Lengths in mm.
 #pragma once
 
-#include "converters/analytic_geometry.h"
+#include "converters/analytic/analytic_geometry.h"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 #include "lightmodel/model_build.h"
 
-#include "converters/ray_stream.h"
-#include "converters/spectrum.h"
+#include "converters/rays/ray_stream.h"
+#include "converters/colour/spectrum.h"
 #include "core/random.h"
 #include "lightmodel/coverage.h"
 #include "lightmodel/density_lattice.h"

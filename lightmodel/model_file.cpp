@@ -1,6 +1,6 @@
 #include "lightmodel/model_file.h"
 
-#include "converters/io.h"
+#include "converters/rays/io.h"
 #include "core/error.h"
 
 #include <openvdb/openvdb.h>

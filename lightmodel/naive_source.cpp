@@ -1,7 +1,7 @@
 #include "lightmodel/naive_source.h"
 
-#include "converters/ray_stream.h"
-#include "converters/spectrum.h"
+#include "converters/rays/ray_stream.h"
+#include "converters/colour/spectrum.h"
 
 #include <algorithm>
 #include <cmath>

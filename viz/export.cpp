@@ -1,6 +1,6 @@
 #include "viz/export.h"
 
-#include "converters/io.h"
+#include "converters/rays/io.h"
 #include "core/error.h"
 #include "viz/diagram_surface.h"
 

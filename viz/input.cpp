@@ -1,7 +1,7 @@
 #include "viz/input.h"
 
-#include "converters/photometry.h"
-#include "converters/ray_stream.h"
+#include "converters/photometry/photometry.h"
+#include "converters/rays/ray_stream.h"
 #include "core/error.h"
 #include "lightmodel/model_file.h"
 #include "viz/diagram_surface.h"

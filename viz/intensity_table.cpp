@@ -1,6 +1,6 @@
 #include "viz/intensity_table.h"
 
-#include "converters/spectrum.h"
+#include "converters/colour/spectrum.h"
 
 #include <cmath>
 #include <filesystem>

@@ -1,11 +1,11 @@
 // Far-field intensity as a type C table, whatever file it comes from: binned from a ray file's
-// rays (converters/farfield.h) or read from IES LM-63 / EULUMDAT. The photometric solid and
+// rays (converters/photometry/farfield.h) or read from IES LM-63 / EULUMDAT. The photometric solid and
 // the polar curves are both drawn from this one table, so they agree with each other and with
 // `rayconv farfield` / `rayconv info`.
 #pragma once
 
-#include "converters/farfield.h"
-#include "converters/photometry.h"
+#include "converters/photometry/farfield.h"
+#include "converters/photometry/photometry.h"
 
 #include <optional>
 #include <string>

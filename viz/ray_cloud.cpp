@@ -1,6 +1,6 @@
 #include "viz/ray_cloud.h"
 
-#include "converters/ray_stream.h"
+#include "converters/rays/ray_stream.h"
 #include "core/random.h"
 #include "viz/vtk_arrays.h"
 

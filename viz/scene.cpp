@@ -1,6 +1,6 @@
 #include "viz/scene.h"
 
-#include "converters/io.h"
+#include "converters/rays/io.h"
 #include "core/error.h"
 #include "viz/view_style.h"
 

@@ -2,8 +2,8 @@
 // 3 source sizes away), sample_Le (photon emission) and a camera ray's intersect + L, on a
 // model of the 39-chip cluster built from 1e6 synthetic rays at start-up.
 // Usage: emitter_bench [--benchmark_filter=...]
-#include "converters/ray_stream.h"
-#include "converters/synth.h"
+#include "converters/rays/ray_stream.h"
+#include "converters/analytic/synth.h"
 #include "core/random.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"

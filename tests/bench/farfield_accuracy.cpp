@@ -10,8 +10,8 @@
 // weighted mean of (estimate / closed form - 1)^2. Estimators: the histogram (smoothing
 // none), kernel density with the bandwidth chosen per direction (auto), and the fraction of
 // values whose closed form lies within 2 stated standard errors (95% if they are honest).
-#include "converters/farfield.h"
-#include "converters/synth.h"
+#include "converters/photometry/farfield.h"
+#include "converters/analytic/synth.h"
 #include "converters/synth_test_support.h"
 
 #include <algorithm>

@@ -1,8 +1,8 @@
 // Oracle, for choosing a bandwidth rule: the far field at a ladder of fixed bandwidths, and per gamma
 // row the one closest to the closed form (chosen with the truth, so no estimator can do better
 // with one bandwidth per row). Usage: farfield_oracle SOURCE RAYS [KEY VALUE]
-#include "converters/farfield.h"
-#include "converters/synth.h"
+#include "converters/photometry/farfield.h"
+#include "converters/analytic/synth.h"
 #include "converters/synth_test_support.h"
 #include <cstdio>
 #include <cstdlib>

@@ -17,9 +17,9 @@
 #include <memory>
 #include <string>
 
-#include "converters/analytic_sources.h"
-#include "converters/ray_stream.h"
-#include "converters/synth.h"
+#include "converters/analytic/analytic_sources.h"
+#include "converters/rays/ray_stream.h"
+#include "converters/analytic/synth.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"

@@ -4,7 +4,7 @@
 // without info's summary (bounding box, wavelengths, direction coverage). With --sequential as
 // `rayconv convert` and the other commands do: chunks of ray records in file order, decoded and
 // validated on a read-ahead thread. io_throughput.sh times them against `cat`.
-#include "converters/ray_stream.h"
+#include "converters/rays/ray_stream.h"
 #include "core/error.h"
 
 #include <cstdio>

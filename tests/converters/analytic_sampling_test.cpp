@@ -2,7 +2,7 @@
 // carry onto receivers in the near field against the integral of the exact irradiance, the
 // radiance integrated by an independent Monte Carlo against the total flux, and the lobe's
 // cumulative angular distribution.
-#include "converters/analytic_sources.h"
+#include "converters/analytic/analytic_sources.h"
 #include "synth_test_support.h"
 
 #include <gtest/gtest.h>

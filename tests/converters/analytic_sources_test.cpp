@@ -1,7 +1,7 @@
 // The analytic sources against independent truths: irradiance closed forms against brute-force
 // 2-D quadrature of the radiance, textbook special cases, the far-field limit, intensity
 // against total flux, and the sampled rays against the irradiance they should deliver.
-#include "converters/analytic_sources.h"
+#include "converters/analytic/analytic_sources.h"
 #include "synth_test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // rayset CSV rays: a hand-written file read as documented, bit-exact round trips of rays and
 // header metadata, and every bad-input message.
-#include "converters/codecs.h"
-#include "converters/io.h"
+#include "converters/formats/codecs.h"
+#include "converters/rays/io.h"
 #include "support/test_support.h"
 
 #include <cmath>

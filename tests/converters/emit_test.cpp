@@ -1,9 +1,9 @@
 // Rays from photometry: the sampled distribution against Photometry::intensity() (a separate
 // implementation of the same interpolation), its exact flux against quadrature, the emitted
 // rays' far field against the distribution within the statistics of the ray count.
-#include "converters/emit.h"
+#include "converters/photometry/emit.h"
 
-#include "converters/farfield.h"
+#include "converters/photometry/farfield.h"
 #include "core/geometry.h"
 #include "synth_test_support.h"
 

@@ -1,8 +1,8 @@
 // EULUMDAT: every Isym with its stored planes, cd/klm -> cd, lamp sets, round trips through
 // files and through Photometry and IES, and bad input with the message it must give.
-#include "converters/eulumdat.h"
-#include "converters/ies.h"
-#include "converters/photometry.h"
+#include "converters/photometry/eulumdat.h"
+#include "converters/photometry/ies.h"
+#include "converters/photometry/photometry.h"
 #include "core/error.h"
 #include "support/test_support.h"
 

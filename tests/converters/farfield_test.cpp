@@ -1,12 +1,12 @@
 // Far-field photometry of ray files: exact cell solid angles, conservation of flux, and the
 // acceptance test that a synthetic Lambertian disk's far-field IES file follows the cosine law
 // within the statistics of its ray count.
-#include "converters/farfield.h"
-#include "converters/farfield_smoothing.h"
+#include "converters/photometry/farfield.h"
+#include "converters/photometry/farfield_smoothing.h"
 
-#include "converters/io.h"
-#include "converters/spectrum.h"
-#include "converters/synth.h"
+#include "converters/rays/io.h"
+#include "converters/colour/spectrum.h"
+#include "converters/analytic/synth.h"
 #include "support/test_support.h"
 #include "synth_test_support.h"
 

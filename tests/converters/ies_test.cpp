@@ -1,7 +1,7 @@
 // IES LM-63: hand-written files of every version and TILT form, round trips for every
 // symmetry, and every kind of bad input with the message it must give.
-#include "converters/ies.h"
-#include "converters/photometry.h"
+#include "converters/photometry/ies.h"
+#include "converters/photometry/photometry.h"
 #include "core/error.h"
 #include "support/test_support.h"
 

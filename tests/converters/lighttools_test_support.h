@@ -2,8 +2,8 @@
 // rays spanning many exponents, hand-assembled binary files, bit-exact comparison, error checks.
 #pragma once
 
-#include "converters/codecs.h"
-#include "converters/io.h"
+#include "converters/formats/codecs.h"
+#include "converters/rays/io.h"
 #include "support/test_support.h"
 
 #include <cmath>

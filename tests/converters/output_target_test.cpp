@@ -4,7 +4,7 @@
 // Pipes stand in for devices here: any user can make one.
 #include <gtest/gtest.h>
 
-#include "converters/io.h"
+#include "converters/rays/io.h"
 #include "support/test_support.h"
 
 #include <cerrno>

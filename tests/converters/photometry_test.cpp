@@ -1,6 +1,6 @@
 // Photometry::intensity and total_flux against analytic distributions, and the symmetry
 // unfolding against values chosen at mirror-image planes.
-#include "converters/photometry.h"
+#include "converters/photometry/photometry.h"
 #include "core/error.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // in the blocks of four and in the rest, must be what ray(i) reads from the columns.
 #include <gtest/gtest.h>
 
-#include "converters/ray.h"
+#include "converters/rays/ray.h"
 
 #include <cstring>
 #include <random>

@@ -1,5 +1,5 @@
-#include "converters/ray_ops.h"
-#include "converters/spectrum.h"
+#include "converters/rays/ray_ops.h"
+#include "converters/colour/spectrum.h"
 
 #include "ray_ops_test_support.h"
 #include "support/test_support.h"

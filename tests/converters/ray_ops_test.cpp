@@ -1,4 +1,4 @@
-#include "converters/ray_ops.h"
+#include "converters/rays/ray_ops.h"
 
 #include "ray_ops_test_support.h"
 #include "support/test_support.h"

@@ -1,7 +1,7 @@
 // Small ray files made by hand for the ray operation tests (subsample, merge, transform).
 #pragma once
 
-#include "converters/ray_stream.h"
+#include "converters/rays/ray_stream.h"
 #include "core/random.h"
 
 #include <cmath>

@@ -3,8 +3,8 @@
 // without those threads would give, errors included.
 #include <gtest/gtest.h>
 
-#include "converters/codecs.h"
-#include "converters/ray_stream.h"
+#include "converters/formats/codecs.h"
+#include "converters/rays/ray_stream.h"
 #include "support/test_support.h"
 
 #include <algorithm>

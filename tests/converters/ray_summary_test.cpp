@@ -1,9 +1,9 @@
 // The one-pass summary behind `rayconv info`, on analytic sources whose answers are known.
 #include <gtest/gtest.h>
 
-#include "converters/ray_summary.h"
-#include "converters/simd.h"
-#include "converters/synth.h"
+#include "converters/rays/ray_summary.h"
+#include "converters/rays/simd.h"
+#include "converters/analytic/synth.h"
 #include "ray_ops_test_support.h"
 #include "support/test_support.h"
 

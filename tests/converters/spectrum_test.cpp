@@ -1,4 +1,4 @@
-#include "converters/spectrum.h"
+#include "converters/colour/spectrum.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // SPEOS binary .ray: round trips, the totals the writer states, strict detection, bad sizes and
 // headers.
-#include "converters/codecs.h"
-#include "converters/spectrum.h"
+#include "converters/formats/codecs.h"
+#include "converters/colour/spectrum.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // The random generator, building sources from text, and synthesising ray files.
-#include "converters/synth.h"
+#include "converters/analytic/synth.h"
 
-#include "converters/io.h"
-#include "converters/spectrum.h"
+#include "converters/rays/io.h"
+#include "converters/colour/spectrum.h"
 #include "core/random.h"
 #include "support/test_support.h"
 #include "synth_test_support.h"

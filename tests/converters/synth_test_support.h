@@ -2,10 +2,10 @@
 // closed forms are checked against), statistical bounds, and rays held in memory.
 #pragma once
 
-#include "converters/analytic_sources.h"
-#include "converters/farfield.h"
-#include "converters/photometry.h"
-#include "converters/ray_stream.h"
+#include "converters/analytic/analytic_sources.h"
+#include "converters/photometry/farfield.h"
+#include "converters/photometry/photometry.h"
+#include "converters/rays/ray_stream.h"
 #include "support/statistics.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // TM-25 codec: bad files and bad requests. Every file error must name the file and the byte
 // of the offending field; offsets here are computed from formats.md, not from the decoder.
-#include "converters/codecs.h"
-#include "converters/io.h"
+#include "converters/formats/codecs.h"
+#include "converters/rays/io.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

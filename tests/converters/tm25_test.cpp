@@ -1,8 +1,8 @@
 // TM-25 codec: write -> read round trips for every flag combination the format allows, the
 // byte layout the encoder writes checked against formats.md offsets, and bad files.
-#include "converters/codecs.h"
-#include "converters/io.h"
-#include "converters/tm25_layout.h"
+#include "converters/formats/codecs.h"
+#include "converters/rays/io.h"
+#include "converters/formats/tm25_layout.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Zemax binary source files: round trips through the writer, hand-built files decoded against
 // the layout in formats.md, and every kind of bad header or size.
-#include "converters/codecs.h"
+#include "converters/formats/codecs.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

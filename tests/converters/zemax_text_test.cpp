@@ -1,7 +1,7 @@
 // Zemax text source files: round trips, the tolerances the hand-made real files need, and every
 // malformed line named by line and column.
-#include "converters/codecs.h"
-#include "converters/io.h"
+#include "converters/formats/codecs.h"
+#include "converters/rays/io.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

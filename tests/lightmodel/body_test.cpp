@@ -2,7 +2,7 @@
 // sphere body, and the whole chain on a Lambertian disk against its true silhouette.
 #include <gtest/gtest.h>
 
-#include "converters/analytic_sources.h"
+#include "converters/analytic/analytic_sources.h"
 #include "core/random.h"
 #include "lightmodel/density_lattice.h"
 #include "lightmodel/sphere_body.h"

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "converters/spectrum.h"
+#include "converters/colour/spectrum.h"
 #include "lightmodel/colour.h"
 
 namespace rayset::lightmodel {

@@ -3,7 +3,7 @@
 // accuracy, area preservation and edge folding; the diagram's cells, normalisation, exact
 // reproduction of Lambertian emission, continuity, exact sampling (pdf consistency and
 // chi-square goodness of fit), storage, and its far-field accuracy on analytic sources.
-#include "converters/analytic_sources.h"
+#include "converters/analytic/analytic_sources.h"
 #include "core/random.h"
 #include "lightmodel/diagram_estimate.h"
 #include "lightmodel/direction_map.h"

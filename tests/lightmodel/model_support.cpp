@@ -1,7 +1,7 @@
 #include "lightmodel/model_support.h"
 
-#include "converters/ray_stream.h"
-#include "converters/synth.h"
+#include "converters/rays/ray_stream.h"
+#include "converters/analytic/synth.h"
 
 #include <mutex>
 

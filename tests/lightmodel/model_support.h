@@ -2,7 +2,7 @@
 // built from them once per test binary (a build of a million rays takes seconds).
 #pragma once
 
-#include "converters/analytic_sources.h"
+#include "converters/analytic/analytic_sources.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 #include "support/test_support.h"

@@ -3,8 +3,8 @@
 // illuminance. Every random draw has a fixed seed; each bound says the confidence it gives.
 #include "lightmodel/model_support.h"
 
-#include "converters/ray_stream.h"
-#include "converters/spectrum.h"
+#include "converters/rays/ray_stream.h"
+#include "converters/colour/spectrum.h"
 #include "core/random.h"
 #include "lightmodel/direction_map.h"
 #include "lightmodel/model_file.h"

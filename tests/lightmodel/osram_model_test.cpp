@@ -1,8 +1,8 @@
 // The model of a real measured file: OSRAM's blue OSTAR Stage chip (100k rays, TM-25, 1.68 W).
 // It builds, keeps the file's flux, and its far field agrees with the rays' own far field in the
 // same cells within the rays' statistics; the figures the issue asks for are printed.
-#include "converters/farfield.h"
-#include "converters/ray_stream.h"
+#include "converters/photometry/farfield.h"
+#include "converters/rays/ray_stream.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"

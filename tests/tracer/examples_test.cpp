@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "converters/synth.h"
+#include "converters/analytic/synth.h"
 #include "support/test_support.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"

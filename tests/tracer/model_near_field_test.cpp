@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "converters/analytic_sources.h"
-#include "converters/synth.h"
+#include "converters/analytic/analytic_sources.h"
+#include "converters/analytic/synth.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 #include "support/test_support.h"

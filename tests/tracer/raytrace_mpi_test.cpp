@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include "converters/analytic_sources.h"
-#include "converters/synth.h"
+#include "converters/analytic/analytic_sources.h"
+#include "converters/analytic/synth.h"
 #include "support/test_support.h"
 #include "tracer/film/checkpoint.h"
 #include "tracer/render/renderer.h"

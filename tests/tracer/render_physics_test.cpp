@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "converters/analytic_geometry.h"
+#include "converters/analytic/analytic_geometry.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
 

@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "converters/analytic_geometry.h"
-#include "converters/spectrum.h"
+#include "converters/analytic/analytic_geometry.h"
+#include "converters/colour/spectrum.h"
 #include "lightmodel/emission_spectrum.h"
 #include "tracer/render/renderer.h"
 #include "tracer/render/rgb_upsampling.h"

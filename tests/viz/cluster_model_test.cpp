@@ -3,7 +3,7 @@
 // exported diagrams have the chips' Lambertian lobe, and re-read files match the model.
 #include <gtest/gtest.h>
 
-#include "converters/analytic_sources.h"
+#include "converters/analytic/analytic_sources.h"
 #include "viz/diagram_surface.h"
 #include "viz/export.h"
 #include "viz/scene.h"

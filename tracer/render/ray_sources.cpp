@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "converters/ray_stream.h"
-#include "converters/spectrum.h"
+#include "converters/rays/ray_stream.h"
+#include "converters/colour/spectrum.h"
 #include "core/error.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"

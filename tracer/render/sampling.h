@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "converters/analytic_geometry.h"
+#include "converters/analytic/analytic_geometry.h"
 
 namespace rayset::tracer {
 

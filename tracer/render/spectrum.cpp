@@ -1,7 +1,7 @@
 // Sampled wavelengths and the film's spectral -> RGB conversion (see spectrum.h).
 #include "tracer/render/spectrum.h"
 
-#include "converters/spectrum.h"
+#include "converters/colour/spectrum.h"
 #include "lightmodel/colour.h"
 
 namespace rayset::tracer {

@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 #include <fmt/printf.h>
 
-#include "converters/io.h"
+#include "converters/rays/io.h"
 #include "tracer/scene_language/grammar.h"
 #include "tracer/scene_language/object_tree.h"
 #include "tracer/scene_language/parse_error.h"

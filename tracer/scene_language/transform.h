@@ -8,7 +8,7 @@
 
 #include <array>
 
-#include "converters/analytic_geometry.h"
+#include "converters/analytic/analytic_geometry.h"
 
 namespace rayset::tracer {
 

@@ -5,7 +5,7 @@
 // prints those pairs, and checks that every file converts to the formats that can hold it.
 #include <gtest/gtest.h>
 
-#include "converters/ray_stream.h"
+#include "converters/rays/ray_stream.h"
 #include "support/test_support.h"
 
 #include <cmath>

@@ -1,8 +1,8 @@
 // Acceptance (b): real LED luminaire IES files -> rays (TM-25) -> far field -> IES reproduce
 // the candela table within the statistics of the ray count. Also: the far field of OSRAM's
 // measured LED ray file points along +z, as LED ray files do.
-#include "converters/emit.h"
-#include "converters/farfield.h"
+#include "converters/photometry/emit.h"
+#include "converters/photometry/farfield.h"
 #include "support/statistics.h"
 #include "support/test_support.h"
 #include "converters/synth_test_support.h"

@@ -1,8 +1,8 @@
 // LightTools ray data exported by LightTools itself: the figures the files state, the binary and
 // text exports of the same rays agreeing, the TM-25 export of Cyl10k agreeing with its text
 // export, and real rays surviving our writers unchanged.
-#include "converters/codecs.h"
-#include "converters/ray_stream.h"
+#include "converters/formats/codecs.h"
+#include "converters/rays/ray_stream.h"
 #include "support/test_support.h"
 
 #include <cmath>

@@ -1,8 +1,8 @@
 // The 14 real IES and EULUMDAT files: figures read off the files by hand, total flux against the
 // lumens the files state, and round trips IES -> IES, LDT -> LDT, IES -> LDT -> IES, LDT -> IES -> LDT.
-#include "converters/eulumdat.h"
-#include "converters/ies.h"
-#include "converters/photometry.h"
+#include "converters/photometry/eulumdat.h"
+#include "converters/photometry/ies.h"
+#include "converters/photometry/photometry.h"
 #include "core/error.h"
 #include "support/test_support.h"
 

@@ -1,5 +1,5 @@
-#include "converters/ray_stream.h"
-#include "converters/spectrum.h"
+#include "converters/rays/ray_stream.h"
+#include "converters/colour/spectrum.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // The four real TM-25 files in ../shared/data/rayfiles: their figures as data/README.md and
 // formats.md state them (and, where those say nothing, as an independent Python reading of the
 // bytes found them), and a byte-identical write-back through the encoder.
-#include "converters/codecs.h"
-#include "converters/ray_stream.h"
+#include "converters/formats/codecs.h"
+#include "converters/rays/ray_stream.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // are read through the validating reader, which scales relative fluxes to the stated totals;
 // rayset states totals that agree with the rays it writes, optical-automation keeps the
 // relative weights, so only the absolute fluxes are comparable.
-#include "converters/codecs.h"
+#include "converters/formats/codecs.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

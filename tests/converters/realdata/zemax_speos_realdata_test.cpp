@@ -4,9 +4,9 @@
 // "ray_content" is test_08_ray.ray (SPEOS), "dat_content" test_08_dat.DAT (Zemax flux only),
 // "sdf_content" test_08_sdf.sdf (Zemax spectral); the *_reference files are that project's
 // conversions of them and hold the same rays.
-#include "converters/codecs.h"
-#include "converters/io.h"
-#include "converters/spectrum.h"
+#include "converters/formats/codecs.h"
+#include "converters/rays/io.h"
+#include "converters/colour/spectrum.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
