@@ -4,10 +4,11 @@ namespace rayset {
 
 std::string Location::str() const {
     switch (kind) {
-    case Kind::byte: return "byte " + std::to_string(value);
-    case Kind::line:
-        return "line " + std::to_string(value) + (column ? ", column " + std::to_string(column) : "");
-    case Kind::none: break;
+        case Kind::byte: return "byte " + std::to_string(value);
+        case Kind::line:
+            return "line " + std::to_string(value) +
+                   (column ? ", column " + std::to_string(column) : "");
+        case Kind::none: break;
     }
     return {};
 }

@@ -15,12 +15,15 @@ double lobe(double wavelength, double peak, double width_below, double width_abo
 }
 
 // Efficacy of a cell that says nothing about its luminous flux.
-double default_efficacy(const LightModel& model) { return model.flux_unit == "lm" ? 1.0 : kRgbLumensPerWatt; }
+double default_efficacy(const LightModel& model) {
+    return model.flux_unit == "lm" ? 1.0 : kRgbLumensPerWatt;
+}
 
 }  // namespace
 
 Xyz colour_matching(double l) {
-    return {1.056 * lobe(l, 599.8, 37.9, 31.0) + 0.362 * lobe(l, 442.0, 16.0, 26.7) - 0.065 * lobe(l, 501.1, 20.4, 26.2),
+    return {1.056 * lobe(l, 599.8, 37.9, 31.0) + 0.362 * lobe(l, 442.0, 16.0, 26.7) -
+                0.065 * lobe(l, 501.1, 20.4, 26.2),
             0.821 * lobe(l, 568.8, 46.9, 40.5) + 0.286 * lobe(l, 530.9, 16.3, 31.1),
             1.217 * lobe(l, 437.0, 11.8, 36.0) + 0.681 * lobe(l, 459.0, 26.0, 13.8)};
 }
@@ -29,7 +32,8 @@ Xyz bin_colour_matching(const SpectralBins& bins, int bin) {
     const int steps = std::max(1, int(std::lround(bins.width_nm)));
     Xyz sum;
     for (int i = 0; i < steps; ++i) {
-        const Xyz c = colour_matching(bins.first_nm + bin * bins.width_nm + (i + 0.5) * bins.width_nm / steps);
+        const Xyz c = colour_matching(bins.first_nm + bin * bins.width_nm +
+                                      (i + 0.5) * bins.width_nm / steps);
         sum.x += c.x, sum.y += c.y, sum.z += c.z;
     }
     return {sum.x / steps, sum.y / steps, sum.z / steps};
@@ -51,7 +55,8 @@ Rgb colour_per_flux(const Xyz& xyz, double efficacy) {
 
 std::vector<Rgb> cell_colours(const LightModel& model) {
     std::vector<Xyz> bin_xyz(size_t(model.bins.count));
-    for (int b = 0; b < model.bins.count; ++b) bin_xyz[size_t(b)] = bin_colour_matching(model.bins, b);
+    for (int b = 0; b < model.bins.count; ++b)
+        bin_xyz[size_t(b)] = bin_colour_matching(model.bins, b);
     std::vector<Rgb> colours;
     colours.reserve(model.flux_cells.size());
     for (size_t c = 0; c < model.flux_cells.size(); ++c) {
@@ -59,10 +64,12 @@ std::vector<Rgb> cell_colours(const LightModel& model) {
         Xyz xyz;
         for (int b = 0; b < model.bins.count && !model.spectra.empty(); ++b) {
             const double w = model.spectra[c * size_t(model.bins.count) + size_t(b)];
-            xyz.x += w * bin_xyz[size_t(b)].x, xyz.y += w * bin_xyz[size_t(b)].y, xyz.z += w * bin_xyz[size_t(b)].z;
+            xyz.x += w * bin_xyz[size_t(b)].x, xyz.y += w * bin_xyz[size_t(b)].y,
+                xyz.z += w * bin_xyz[size_t(b)].z;
         }
-        const double efficacy =
-            std::isfinite(cell.luminous) && cell.flux > 0 ? cell.luminous / cell.flux : default_efficacy(model);
+        const double efficacy = std::isfinite(cell.luminous) && cell.flux > 0
+                                    ? cell.luminous / cell.flux
+                                    : default_efficacy(model);
         colours.push_back(colour_per_flux(xyz, efficacy));
     }
     return colours;

@@ -9,7 +9,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 }
 
 ComplexSource::ComplexSource(std::shared_ptr<const LightModel> model)
-    : model_(std::move(model)), volume_(*model_), body_(model_->spheres), diagram_flux_(model_->diagrams.size(), 0) {
+    : model_(std::move(model)),
+      volume_(*model_),
+      body_(model_->spheres),
+      diagram_flux_(model_->diagrams.size(), 0) {
     for (const FluxCell& c : model_->flux_cells) diagram_flux_[size_t(c.intensity_cell)] += c.flux;
 }
 
@@ -25,7 +28,8 @@ bool ComplexSource::intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hi
 // The radiance of the whole line through the emitting volume, not only beyond the hit: the
 // body marks where the source is seen, the volume says how bright. sample_Li uses the same
 // line integral, so both strategies estimate the same integral (MIS stays unbiased).
-double ComplexSource::L(Vec3 origin, Vec3 dir, const EmitterHit&, const SpectralSelect& select) const {
+double ComplexSource::L(Vec3 origin, Vec3 dir, const EmitterHit&,
+                        const SpectralSelect& select) const {
     return volume_.radiance_toward(origin, dir, 0, kInfinity, select);
 }
 
@@ -35,12 +39,14 @@ Rgb ComplexSource::L_colour(Vec3 origin, Vec3 dir, const EmitterHit&) const {
     return colour;
 }
 
-void ComplexSource::L_spectral(Vec3 origin, Vec3 dir, const EmitterHit&, SpectralQuery& query) const {
+void ComplexSource::L_spectral(Vec3 origin, Vec3 dir, const EmitterHit&,
+                               SpectralQuery& query) const {
     volume_.radiance_toward(origin, dir, 0, kInfinity, {}, nullptr, &query);
 }
 
-std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
-                                                 const SpectralSelect& select, SpectralQuery* spectral) const {
+std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double u_voxel,
+                                                 Vec3 u_point, const SpectralSelect& select,
+                                                 SpectralQuery* spectral) const {
     const VolumeSample point = volume_.sample_point(u_cell, u_voxel, u_point);
     const Vec3 to_point = point.point - ref;
     const double distance = length(to_point);
@@ -80,20 +86,26 @@ LeSample ComplexSource::sample_Le(const double u[7], const SpectralSelect& selec
     return s;
 }
 
-void ComplexSource::pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position, double& pdf_direction) const {
+void ComplexSource::pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position,
+                           double& pdf_direction) const {
     pdf_position = volume_.pdf_point(origin);
     const int32_t c = volume_.cell_at(origin);
-    pdf_direction = c < 0 ? 0 : model_->diagrams[size_t(model_->flux_cells[size_t(c)].intensity_cell)].pdf(direction);
+    pdf_direction =
+        c < 0
+            ? 0
+            : model_->diagrams[size_t(model_->flux_cells[size_t(c)].intensity_cell)].pdf(direction);
 }
 
 double ComplexSource::intensity(Vec3 w, const SpectralSelect& select) const {
     double sum = 0;
     if (select.quantity == SpectralSelect::flux && select.band < 0) {
-        for (size_t k = 0; k < diagram_flux_.size(); ++k) sum += diagram_flux_[k] * model_->diagrams[k].pdf(w);
+        for (size_t k = 0; k < diagram_flux_.size(); ++k)
+            sum += diagram_flux_[k] * model_->diagrams[k].pdf(w);
         return sum;
     }
     for (uint32_t c = 0; c < model_->flux_cells.size(); ++c)
-        sum += volume_.cell_flux(c, select) * model_->diagrams[size_t(model_->flux_cells[c].intensity_cell)].pdf(w);
+        sum += volume_.cell_flux(c, select) *
+               model_->diagrams[size_t(model_->flux_cells[c].intensity_cell)].pdf(w);
     return sum;
 }
 

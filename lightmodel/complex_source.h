@@ -23,16 +23,19 @@ public:
     Box bounds() const override { return model_->bounds(); }
     Rgb phi_colour() const override { return volume_.total_colour(); }
     bool intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hit) const override;
-    double L(Vec3 origin, Vec3 dir, const EmitterHit& hit, const SpectralSelect& select = {}) const override;
+    double L(Vec3 origin, Vec3 dir, const EmitterHit& hit,
+             const SpectralSelect& select = {}) const override;
     Rgb L_colour(Vec3 origin, Vec3 dir, const EmitterHit& hit) const override;
-    void L_spectral(Vec3 origin, Vec3 dir, const EmitterHit& hit, SpectralQuery& query) const override;
+    void L_spectral(Vec3 origin, Vec3 dir, const EmitterHit& hit,
+                    SpectralQuery& query) const override;
     BinnedSpectrum phi_spectrum() const override { return volume_.total_spectrum(); }
     std::optional<LiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
                                       const SpectralSelect& select = {},
                                       SpectralQuery* spectral = nullptr) const override;
     double pdf_Li(Vec3 ref, Vec3 wi) const override;
     LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const override;
-    void pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position, double& pdf_direction) const override;
+    void pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position,
+                double& pdf_direction) const override;
 
     // Far-field radiant intensity of the model toward `w` (flux/sr): sum over flux cells of
     // Phi_c D_k(w). What sample_Le emits and what the camera sees from far away.

@@ -16,10 +16,12 @@ void measure_visible_fractions(LightModel& model, int lines, uint64_t seed) {
     const double reach = length(bounds.extent()) + model.density_frame.cell_size();
     tbb::parallel_for(size_t(0), model.flux_cells.size(), [&](size_t c) {
         Pcg32 rng(seed, c);
-        const GoniometricDiagram& diagram = model.diagrams[size_t(model.flux_cells[c].intensity_cell)];
+        const GoniometricDiagram& diagram =
+            model.diagrams[size_t(model.flux_cells[c].intensity_cell)];
         int hits = 0;
         for (int i = 0; i < lines; ++i) {
-            const Vec3 x = volume.sample_in_cell(uint32_t(c), rng.uniform(), {rng.uniform(), rng.uniform(), rng.uniform()});
+            const Vec3 x = volume.sample_in_cell(uint32_t(c), rng.uniform(),
+                                                 {rng.uniform(), rng.uniform(), rng.uniform()});
             const Vec3 w = diagram.sample({rng.uniform(), rng.uniform()}).direction;
             BodyHit hit;
             hits += body.intersect(x - reach * w, w, 2 * reach, hit) ? 1 : 0;

@@ -22,7 +22,8 @@ openvdb::Coord to_vdb(const Coord& c) { return openvdb::Coord(c[0], c[1], c[2]);
 }  // namespace
 
 int adapted_resolution(uint64_t ray_count, int max_resolution) {
-    if (max_resolution < 1) throw std::invalid_argument("adapted_resolution: max_resolution must be >= 1");
+    if (max_resolution < 1)
+        throw std::invalid_argument("adapted_resolution: max_resolution must be >= 1");
     const double n = std::round(std::sqrt(double(ray_count) / 64.0));
     const int lower = std::min(8, max_resolution);
     return int(std::clamp(n, double(lower), double(max_resolution)));
@@ -34,9 +35,11 @@ DensityLattice::DensityLattice(const LatticeFrame& frame) : frame_(frame) {
     counts_->setTransform(transform());
 }
 
-DensityLattice::DensityLattice(const LatticeFrame& frame, const openvdb::FloatGrid& grid) : frame_(frame) {
+DensityLattice::DensityLattice(const LatticeFrame& frame, const openvdb::FloatGrid& grid)
+    : frame_(frame) {
     initialize_openvdb();
-    counts_ = openvdb::DoubleGrid::create(openvdb::DoubleTree::Ptr(new openvdb::DoubleTree(grid.tree())));
+    counts_ =
+        openvdb::DoubleGrid::create(openvdb::DoubleTree::Ptr(new openvdb::DoubleTree(grid.tree())));
     counts_->tree().voxelizeActiveTiles();  // a pruned file may hold tiles; cells are voxels here
     counts_->setTransform(transform());
 }
@@ -81,7 +84,8 @@ double DensityLattice::total() const {
 uint64_t DensityLattice::occupied_cell_count() const { return counts_->activeVoxelCount(); }
 
 std::vector<Coord> DensityLattice::boundary_cells() const {
-    static const int kNeighbours[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const int kNeighbours[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                          {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     auto accessor = counts_->getConstAccessor();
     std::vector<Coord> cells;
     for (auto it = counts_->cbeginValueOn(); it; ++it) {
@@ -94,13 +98,15 @@ std::vector<Coord> DensityLattice::boundary_cells() const {
             }
         }
     }
-    std::sort(cells.begin(), cells.end(),
-              [this](const Coord& a, const Coord& b) { return frame_.linear(a) < frame_.linear(b); });
+    std::sort(cells.begin(), cells.end(), [this](const Coord& a, const Coord& b) {
+        return frame_.linear(a) < frame_.linear(b);
+    });
     return cells;
 }
 
 openvdb::FloatGrid::Ptr DensityLattice::grid() const {
-    auto grid = openvdb::FloatGrid::create(openvdb::FloatTree::Ptr(new openvdb::FloatTree(counts_->tree())));
+    auto grid = openvdb::FloatGrid::create(
+        openvdb::FloatTree::Ptr(new openvdb::FloatTree(counts_->tree())));
     grid->setTransform(transform());
     grid->setName("density");
     grid->setGridClass(openvdb::GRID_UNKNOWN);

@@ -10,7 +10,6 @@ namespace rayset::lightmodel {
 
 namespace {
 
-
 constexpr int kProbeBands = 20, kProbeSectors = 24;
 // A local fit's estimate over the kernel's, applied to every cell, at most this: beyond it the
 // kernel's estimate is too near zero for the ratio to mean anything.

@@ -1,7 +1,7 @@
 // Goniometric diagrams from a limited set of rays: the kernel density estimate of the far field
-// (converters/photometry/farfield_smoothing.h), twiced von Mises-Fisher kernels over rays binned at 2.5
-// degrees (coarser bins up to a quarter of the bandwidth), applied to the rays of each intensity
-// cell.
+// (converters/photometry/farfield_smoothing.h), twiced von Mises-Fisher kernels over rays binned
+// at 2.5 degrees (coarser bins up to a quarter of the bandwidth), applied to the rays of each
+// intensity cell.
 //
 // Bandwidth: chosen per direction by the Goldenshluger-Lepski rule from all the rays of the
 // source (a ladder from 4 to 16 degrees), and used for that direction in every cell. The cells'

@@ -6,7 +6,6 @@
 
 namespace rayset::lightmodel {
 
-
 Vec2 direction_to_square(Vec3 w) {
     const double ax = std::abs(w.x), ay = std::abs(w.y), az = std::abs(w.z);
     // r = sqrt(1 - |z|), written so that it keeps full precision near the poles where 1 - |z|

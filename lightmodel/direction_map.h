@@ -12,7 +12,6 @@
 
 namespace rayset::lightmodel {
 
-
 struct Vec2 {
     double x = 0, y = 0;
 };

@@ -1,11 +1,11 @@
-// Emitted light as a spectrum, for a renderer that transports wavelengths (tracer/render/spectrum.h).
-// A spectrum here is a shape: piecewise constant over 10 nm bins spanning 360-830 nm (the
-// renderer's wavelength range, that of the tabulated CIE V(lambda)), normalised so that the
-// integral of V(lambda) s(lambda) is 1. Multiplied by a luminance weight Y in the renderer's
-// convention (683 lm/W x Y, colour.h), it gives the spectral quantity whose luminous value is
-// exactly that of the RGB colour the same light has: a cell's spectrum is its binned spectrum
-// (model.h, 10 nm from 380 nm); a cell without one takes the shape of CIE illuminant D65, the
-// white point of linear sRGB, so grey light stays grey.
+// Emitted light as a spectrum, for a renderer that transports wavelengths
+// (tracer/render/spectrum.h). A spectrum here is a shape: piecewise constant over 10 nm bins
+// spanning 360-830 nm (the renderer's wavelength range, that of the tabulated CIE V(lambda)),
+// normalised so that the integral of V(lambda) s(lambda) is 1. Multiplied by a luminance weight Y
+// in the renderer's convention (683 lm/W x Y, colour.h), it gives the spectral quantity whose
+// luminous value is exactly that of the RGB colour the same light has: a cell's spectrum is its
+// binned spectrum (model.h, 10 nm from 380 nm); a cell without one takes the shape of CIE
+// illuminant D65, the white point of linear sRGB, so grey light stays grey.
 #pragma once
 
 #include <array>
@@ -18,8 +18,8 @@ inline constexpr double kSpectrumFirstNm = 360, kSpectrumLastNm = 830;
 inline constexpr double kSpectrumBinNm = 10;
 inline constexpr int kSpectrumBins = 47;
 
-// Mean of V(lambda) (photopic_efficiency, converters/colour/spectrum.h) over spectrum bin k (exact for
-// its linear interpolation).
+// Mean of V(lambda) (photopic_efficiency, converters/colour/spectrum.h) over spectrum bin k (exact
+// for its linear interpolation).
 double photopic_bin_mean(int bin);
 // CIE illuminant D65 (CIE 15, 10 nm table), relative, 100 at 560 nm; linear between entries.
 double illuminant_d65(double wavelength_nm);

@@ -54,21 +54,24 @@ BinnedSpectrum EmissionVolume::total_spectrum() const {
     std::array<double, kSpectrumBins> sum{};
     for (uint32_t c = 0; c < model_.flux_cells.size(); ++c) {
         const double weight = model_.flux_cells[c].flux * luminance(cell_colour_[c]);
-        for (int k = 0; k < kSpectrumBins; ++k) sum[size_t(k)] += weight * cell_spectrum_[c].value(k);
+        for (int k = 0; k < kSpectrumBins; ++k)
+            sum[size_t(k)] += weight * cell_spectrum_[c].value(k);
     }
     return BinnedSpectrum(sum);
 }
 
 Rgb EmissionVolume::total_colour() const {
     Rgb sum;
-    for (uint32_t c = 0; c < model_.flux_cells.size(); ++c) sum += model_.flux_cells[c].flux * cell_colour_[c];
+    for (uint32_t c = 0; c < model_.flux_cells.size(); ++c)
+        sum += model_.flux_cells[c].flux * cell_colour_[c];
     return sum;
 }
 
 double EmissionVolume::cell_flux(uint32_t cell, const SpectralSelect& select) const {
     const FluxCell& c = model_.flux_cells[cell];
     if (select.quantity == SpectralSelect::luminous) return c.luminous;
-    if (select.band >= 0) return c.flux * model_.spectra[size_t(cell) * model_.bins.count + select.band];
+    if (select.band >= 0)
+        return c.flux * model_.spectra[size_t(cell) * model_.bins.count + select.band];
     return c.flux;
 }
 
@@ -83,7 +86,8 @@ double EmissionVolume::cell_volume(uint32_t cell) const {
 }
 
 double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
-                                       const SpectralSelect& select, Rgb* colour, SpectralQuery* spectral) const {
+                                       const SpectralSelect& select, Rgb* colour,
+                                       SpectralQuery* spectral) const {
     const Vec3 emitted = -dir;
     double sum = 0;
     Rgb colour_sum;
@@ -95,7 +99,8 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
         if (colour) colour_sum += (cell.flux * per_flux) * cell_colour_[c];
         if (spectral) {
             const double weight = cell.flux * per_flux * luminance(cell_colour_[c]);
-            for (int i = 0; i < 4; ++i) spectral->value[i] += weight * cell_spectrum_[c](spectral->nm[i]);
+            for (int i = 0; i < 4; ++i)
+                spectral->value[i] += weight * cell_spectrum_[c](spectral->nm[i]);
         }
     });
     if (colour) *colour = colour_sum;
@@ -105,17 +110,19 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
 double EmissionVolume::pdf_direction(Vec3 origin, Vec3 dir) const {
     const double total = cell_cdf_.empty() ? 0 : cell_cdf_.back();
     double sum = 0;
-    traverse(origin, dir, 0, std::numeric_limits<double>::infinity(), [&](uint32_t c, double t0, double t1) {
-        const double density = model_.flux_cells[c].flux / total / cell_volume(c);
-        sum += density * (t1 * t1 * t1 - t0 * t0 * t0) / 3;
-    });
+    traverse(origin, dir, 0, std::numeric_limits<double>::infinity(),
+             [&](uint32_t c, double t0, double t1) {
+                 const double density = model_.flux_cells[c].flux / total / cell_volume(c);
+                 sum += density * (t1 * t1 * t1 - t0 * t0 * t0) / 3;
+             });
     return sum;
 }
 
 VolumeSample EmissionVolume::sample_point(double u_cell, double u_voxel, Vec3 u_point) const {
     const double target = u_cell * cell_cdf_.back();
-    const size_t c = std::min(size_t(std::upper_bound(cell_cdf_.begin(), cell_cdf_.end(), target) - cell_cdf_.begin()),
-                              cell_cdf_.size() - 1);
+    const size_t c = std::min(
+        size_t(std::upper_bound(cell_cdf_.begin(), cell_cdf_.end(), target) - cell_cdf_.begin()),
+        cell_cdf_.size() - 1);
     const FluxCell& cell = model_.flux_cells[c];
     VolumeSample s;
     s.point = sample_in_cell(uint32_t(c), u_voxel, u_point);
@@ -126,16 +133,19 @@ VolumeSample EmissionVolume::sample_point(double u_cell, double u_voxel, Vec3 u_
 
 Vec3 EmissionVolume::sample_in_cell(uint32_t c, double u_voxel, Vec3 u_point) const {
     const FluxCell& cell = model_.flux_cells[c];
-    const uint32_t v = cell.first_voxel + std::min(uint32_t(u_voxel * cell.voxel_count), cell.voxel_count - 1);
+    const uint32_t v =
+        cell.first_voxel + std::min(uint32_t(u_voxel * cell.voxel_count), cell.voxel_count - 1);
     const double h = model_.density_frame.cell_size();
-    return model_.density_frame.cell_lower(model_.voxels[v]) + Vec3{u_point.x * h, u_point.y * h, u_point.z * h};
+    return model_.density_frame.cell_lower(model_.voxels[v]) +
+           Vec3{u_point.x * h, u_point.y * h, u_point.z * h};
 }
 
 int32_t EmissionVolume::cell_at(Vec3 point) const {
     const LatticeFrame& frame = model_.density_frame;
     const double h = frame.cell_size();
     const Vec3 q = point - frame.origin();
-    const Coord c{int32_t(std::floor(q.x / h)), int32_t(std::floor(q.y / h)), int32_t(std::floor(q.z / h))};
+    const Coord c{int32_t(std::floor(q.x / h)), int32_t(std::floor(q.y / h)),
+                  int32_t(std::floor(q.z / h))};
     if (!frame.contains(c)) return -1;
     return voxel_cell_[size_t(frame.linear(c))];
 }

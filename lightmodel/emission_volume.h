@@ -47,8 +47,9 @@ public:
     // origin + t dir, t in [tmin, tmax], emit toward -dir. With `colour`, the same line
     // integral as a linear-sRGB triple (colour.h) is stored there too, and with `spectral` its
     // values at the query's wavelengths (emission_spectrum.h), from one traversal.
-    double radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax, const SpectralSelect& select,
-                           Rgb* colour = nullptr, SpectralQuery* spectral = nullptr) const;
+    double radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
+                           const SpectralSelect& select, Rgb* colour = nullptr,
+                           SpectralQuery* spectral = nullptr) const;
     // Colour of one unit of a cell's flux (colour.h), and the colour of the whole source.
     const Rgb& cell_colour(uint32_t cell) const { return cell_colour_[cell]; }
     Rgb total_colour() const;
@@ -72,12 +73,13 @@ public:
     double cell_volume(uint32_t cell) const;  // occupied volume, mm^3
 
     // Visits the occupied voxels the segment crosses: f(flux_cell, t0, t1), in order.
-    template <class F> void traverse(Vec3 origin, Vec3 dir, double tmin, double tmax, F&& f) const;
+    template <class F>
+    void traverse(Vec3 origin, Vec3 dir, double tmin, double tmax, F&& f) const;
 
 private:
     const LightModel& model_;
-    std::vector<int32_t> voxel_cell_;   // dense density lattice -> flux cell, -1 empty
-    std::vector<double> cell_cdf_;      // over flux cells, by flux
+    std::vector<int32_t> voxel_cell_;  // dense density lattice -> flux cell, -1 empty
+    std::vector<double> cell_cdf_;     // over flux cells, by flux
     std::vector<Rgb> cell_colour_;
     std::vector<BinnedSpectrum> cell_spectrum_;
     double voxel_volume_ = 0;

@@ -21,22 +21,22 @@ struct EmitterHit {
 // Light sampling from a shaded point: a direction toward the source with the radiance that
 // arrives along it and the solid-angle density it was drawn with.
 struct LiSample {
-    Vec3 wi;            // unit, from the shaded point toward the source
+    Vec3 wi;              // unit, from the shaded point toward the source
     double distance = 0;  // to the body hit along wi (for the shadow ray)
-    double Li = 0;      // radiance arriving from wi
-    double pdf = 0;     // sr^-1
-    Rgb Li_colour;  // the same radiance as a colour (colour.h), whatever the selection
+    double Li = 0;        // radiance arriving from wi
+    double pdf = 0;       // sr^-1
+    Rgb Li_colour;        // the same radiance as a colour (colour.h), whatever the selection
 };
 
 // Photon emission: where and in which direction a photon leaves, and the flux it carries
 // (already divided by the densities it was drawn with).
 struct LeSample {
     Vec3 origin, direction;
-    double flux = 0;        // of the photon, in the selected quantity
-    double pdf_position = 0;  // mm^-3 (volume) or probability of the ray (naive)
-    double pdf_direction = 0; // sr^-1 (0: the direction is fixed, a delta)
-    int32_t cell = -1;        // flux cell (spectrum) of the origin; -1 naive
-    Rgb flux_colour;    // the photon's whole flux as a colour (colour.h)
+    double flux = 0;           // of the photon, in the selected quantity
+    double pdf_position = 0;   // mm^-3 (volume) or probability of the ray (naive)
+    double pdf_direction = 0;  // sr^-1 (0: the direction is fixed, a delta)
+    int32_t cell = -1;         // flux cell (spectrum) of the origin; -1 naive
+    Rgb flux_colour;           // the photon's whole flux as a colour (colour.h)
     // Its spectrum (emission_spectrum.h): the photon's flux at wavelength l is
     // luminance(flux_colour) x spectrum(l); or, for a ray of one known wavelength (naive),
     // that wavelength (spectrum null), the flux there being luminance(flux_colour) / V(l).
@@ -55,11 +55,13 @@ public:
     // The body a camera ray sees; an emitter without one (the naive ray set) returns false.
     virtual bool intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hit) const = 0;
     // Radiance arriving at `origin` from direction `dir` whose ray met the body at `hit`.
-    virtual double L(Vec3 origin, Vec3 dir, const EmitterHit& hit, const SpectralSelect& select = {}) const = 0;
+    virtual double L(Vec3 origin, Vec3 dir, const EmitterHit& hit,
+                     const SpectralSelect& select = {}) const = 0;
     // The same radiance as a colour (colour.h).
     virtual Rgb L_colour(Vec3 origin, Vec3 dir, const EmitterHit& hit) const = 0;
     // The same radiance at the query's wavelengths (emission_spectrum.h), added to its values.
-    virtual void L_spectral(Vec3 origin, Vec3 dir, const EmitterHit& hit, SpectralQuery& query) const = 0;
+    virtual void L_spectral(Vec3 origin, Vec3 dir, const EmitterHit& hit,
+                            SpectralQuery& query) const = 0;
     // The whole light's spectrum, each part weighted by its luminance weight: where a camera
     // path's wavelengths are worth sampling. Zero for an emitter a camera cannot see.
     virtual BinnedSpectrum phi_spectrum() const = 0;
@@ -75,7 +77,8 @@ public:
 
     // Photon emission from seven uniform numbers in [0, 1).
     virtual LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const = 0;
-    virtual void pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position, double& pdf_direction) const = 0;
+    virtual void pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position,
+                        double& pdf_direction) const = 0;
 };
 
 }  // namespace rayset::lightmodel

@@ -10,7 +10,6 @@ namespace rayset::lightmodel {
 
 namespace {
 
-
 constexpr double kOneMinusEpsilon = 0x1.fffffffffffffp-1;
 constexpr int kMaxGridSize = 4096;  // bands and sectors; bounds what deserialize() accepts
 
@@ -74,7 +73,8 @@ int GoniometricDiagram::cell_of(Vec3 w) const {
 }
 
 void GoniometricDiagram::accumulate(Vec3 w, double weight) {
-    if (!has_histogram()) throw std::logic_error("a deserialised goniometric diagram cannot accumulate");
+    if (!has_histogram())
+        throw std::logic_error("a deserialised goniometric diagram cannot accumulate");
     if (!(weight >= 0) || !std::isfinite(weight))
         throw std::invalid_argument("goniometric diagram weight must be finite and >= 0");
     histogram_[size_t(cell_of(w))] += weight;
@@ -93,7 +93,8 @@ void GoniometricDiagram::merge(const GoniometricDiagram& other) {
 }
 
 void GoniometricDiagram::finalize() {
-    if (!has_histogram()) throw std::logic_error("a deserialised goniometric diagram is already final");
+    if (!has_histogram())
+        throw std::logic_error("a deserialised goniometric diagram is already final");
     std::vector<double> centres(histogram_.size(), 0.0);
     if (total_weight_ > 0) {
         const double per_weight = 1 / (total_weight_ * cell_solid_angle());
@@ -109,7 +110,8 @@ void GoniometricDiagram::build_nodes(const std::vector<double>& centres) {
     const bool two_per_side = half >= 2;
     nodes_.assign(size_t(row_count()) * sectors_, 0.0);
     for (int band = 0; band < bands_; ++band)
-        for (int j = 0; j < sectors_; ++j) node(centre_row(band), j) = centres[size_t(band) * sectors_ + j];
+        for (int j = 0; j < sectors_; ++j)
+            node(centre_row(band), j) = centres[size_t(band) * sectors_ + j];
 
     auto ring_mean = [&](int band) {
         double sum = 0;
@@ -130,8 +132,10 @@ void GoniometricDiagram::build_nodes(const std::vector<double>& centres) {
         } else {
             // A side without light: each side's own extrapolation, so the cut-off stays sharp
             // (the dark side's is 0).
-            node(half + 1, j) = extrapolate(below, two_per_side ? centre(half - 2) : 0, two_per_side);
-            node(half + 2, j) = extrapolate(above, two_per_side ? centre(half + 1) : 0, two_per_side);
+            node(half + 1, j) =
+                extrapolate(below, two_per_side ? centre(half - 2) : 0, two_per_side);
+            node(half + 2, j) =
+                extrapolate(above, two_per_side ? centre(half + 1) : 0, two_per_side);
         }
     }
 }
@@ -146,7 +150,8 @@ void GoniometricDiagram::normalise_nodes() {
         for (int j = 0; j < sectors_; ++j) {
             const int j1 = (j + 1) % sectors_;
             const size_t p = size_t(r) * sectors_ + j;
-            const double mean = 0.25 * (node(r, j) + node(r, j1) + node(r + 1, j) + node(r + 1, j1));
+            const double mean =
+                0.25 * (node(r, j) + node(r, j1) + node(r + 1, j) + node(r + 1, j1));
             patch_cdf_[p + 1] = patch_cdf_[p] + mean * extent;
         }
     }
@@ -192,14 +197,16 @@ double GoniometricDiagram::pdf(Vec3 w) const {
 
 double GoniometricDiagram::bin_average(int cell) const {
     require_finalized();
-    if (cell < 0 || cell >= cell_count()) throw std::out_of_range("goniometric diagram cell out of range");
+    if (cell < 0 || cell >= cell_count())
+        throw std::out_of_range("goniometric diagram cell out of range");
     // The lines through the cell's centre split it into four quarters of equal solid angle,
     // each inside one bilinear patch, whose mean is its value at the quarter's centre.
     const int band = cell / sectors_, sector = cell % sectors_;
     const double u = row_u(centre_row(band)), quarter_u = 0.5 / bands_;
     const double phi = (sector + 0.5) * 2 * kPi / sectors_, quarter_phi = 0.5 * kPi / sectors_;
-    return 0.25 * (density(u - quarter_u, phi - quarter_phi) + density(u - quarter_u, phi + quarter_phi) +
-                   density(u + quarter_u, phi - quarter_phi) + density(u + quarter_u, phi + quarter_phi));
+    return 0.25 *
+           (density(u - quarter_u, phi - quarter_phi) + density(u - quarter_u, phi + quarter_phi) +
+            density(u + quarter_u, phi - quarter_phi) + density(u + quarter_u, phi + quarter_phi));
 }
 
 DirectionSample GoniometricDiagram::sample(Vec2 u) const {
@@ -251,23 +258,28 @@ GoniometricDiagram GoniometricDiagram::deserialize(const std::vector<float>& dat
     const int bands = int(data[0]), sectors = int(data[1]);
     const size_t cells = size_t(bands) * sectors;
     if (data.size() != 3 + cells)
-        throw std::invalid_argument("goniometric diagram data: expected " + std::to_string(3 + cells) +
-                                    " values for a " + std::to_string(bands) + " x " + std::to_string(sectors) +
+        throw std::invalid_argument("goniometric diagram data: expected " +
+                                    std::to_string(3 + cells) + " values for a " +
+                                    std::to_string(bands) + " x " + std::to_string(sectors) +
                                     " grid, got " + std::to_string(data.size()));
     if (!(data[2] >= 0) || !std::isfinite(data[2]))
-        throw std::invalid_argument("goniometric diagram data: total weight must be finite and >= 0");
-    return from_densities(bands, sectors, data[2], std::vector<double>(data.begin() + 3, data.end()));
+        throw std::invalid_argument(
+            "goniometric diagram data: total weight must be finite and >= 0");
+    return from_densities(bands, sectors, data[2],
+                          std::vector<double>(data.begin() + 3, data.end()));
 }
 
 GoniometricDiagram GoniometricDiagram::from_densities(int bands, int sectors, double total_weight,
                                                       const std::vector<double>& centres) {
     GoniometricDiagram diagram(bands, sectors);
     if (centres.size() != diagram.histogram_.size())
-        throw std::invalid_argument("goniometric diagram: expected " + std::to_string(diagram.histogram_.size()) +
+        throw std::invalid_argument("goniometric diagram: expected " +
+                                    std::to_string(diagram.histogram_.size()) +
                                     " cell densities, got " + std::to_string(centres.size()));
     for (double value : centres)
         if (!(value >= 0) || !std::isfinite(value))
-            throw std::invalid_argument("goniometric diagram data: densities must be finite and >= 0");
+            throw std::invalid_argument(
+                "goniometric diagram data: densities must be finite and >= 0");
     diagram.histogram_.clear();
     diagram.total_weight_ = total_weight;
     diagram.build_nodes(centres);

@@ -17,8 +17,8 @@
 //     at u = 0 and the cut-off of a planar emitter stays sharp instead of being blurred over a
 //     band (the dark side's extrapolation is 0).
 // Extrapolated nodes are clamped at >= 0. A density linear in u on each side of the horizon (a
-// Lambertian emitter) is then reproduced without bias. The nodes are scaled so the density integrates to 1, and sample()
-// draws exactly in proportion to pdf().
+// Lambertian emitter) is then reproduced without bias. The nodes are scaled so the density
+// integrates to 1, and sample() draws exactly in proportion to pdf().
 //
 // Life cycle: accumulate() / merge() any number of times, finalize(), then query. A diagram
 // with no weight is *empty*: pdf() is 0 everywhere and sample() throws std::logic_error (there
@@ -114,8 +114,9 @@ private:
     std::vector<double> histogram_;
     double total_weight_ = 0;
     bool finalized_ = false;
-    std::vector<double> nodes_;      // row_count() x sectors, node (row, column) at the sector's centre
-    std::vector<double> patch_cdf_;  // (row_count() - 1) x sectors + 1 entries from 0 to 1; empty if empty
+    std::vector<double> nodes_;  // row_count() x sectors, node (row, column) at the sector's centre
+    std::vector<double>
+        patch_cdf_;  // (row_count() - 1) x sectors + 1 entries from 0 to 1; empty if empty
 };
 
 }  // namespace rayset::lightmodel

@@ -13,7 +13,6 @@
 
 namespace rayset::lightmodel {
 
-
 struct Box {
     Vec3 lower{1e300, 1e300, 1e300}, upper{-1e300, -1e300, -1e300};
     void extend(Vec3 p) {
@@ -22,7 +21,10 @@ struct Box {
     }
     bool empty() const { return lower.x > upper.x; }
     Vec3 extent() const { return upper - lower; }
-    double longest() const { const Vec3 e = extent(); return std::max({e.x, e.y, e.z}); }
+    double longest() const {
+        const Vec3 e = extent();
+        return std::max({e.x, e.y, e.z});
+    }
 };
 
 using Coord = std::array<int32_t, 3>;
@@ -51,7 +53,8 @@ public:
     }
 
     // A frame as stored: the inverse of resolution(), origin(), cell_size(), dims().
-    static LatticeFrame from_parts(int resolution, Vec3 origin, double cell, std::array<int32_t, 3> dims) {
+    static LatticeFrame from_parts(int resolution, Vec3 origin, double cell,
+                                   std::array<int32_t, 3> dims) {
         LatticeFrame f;
         f.resolution_ = resolution;
         f.origin_ = origin;
@@ -62,22 +65,26 @@ public:
 
     int resolution() const { return resolution_; }
     double cell_size() const { return cell_; }
-    Vec3 origin() const { return origin_; }                  // lower corner of cell (0,0,0)
+    Vec3 origin() const { return origin_; }  // lower corner of cell (0,0,0)
     const std::array<int32_t, 3>& dims() const { return dims_; }
     int64_t cell_count() const { return int64_t(dims_[0]) * dims_[1] * dims_[2]; }
 
     // The cell holding `p`, clamped into the lattice (origins on the upper faces belong to the
     // last cell).
     Coord cell_of(Vec3 p) const {
-        const double q[3] = {(p.x - origin_.x) / cell_, (p.y - origin_.y) / cell_, (p.z - origin_.z) / cell_};
+        const double q[3] = {(p.x - origin_.x) / cell_, (p.y - origin_.y) / cell_,
+                             (p.z - origin_.z) / cell_};
         Coord c;
         for (int a = 0; a < 3; ++a) c[a] = std::clamp(int32_t(std::floor(q[a])), 0, dims_[a] - 1);
         return c;
     }
     bool contains(const Coord& c) const {
-        return c[0] >= 0 && c[1] >= 0 && c[2] >= 0 && c[0] < dims_[0] && c[1] < dims_[1] && c[2] < dims_[2];
+        return c[0] >= 0 && c[1] >= 0 && c[2] >= 0 && c[0] < dims_[0] && c[1] < dims_[1] &&
+               c[2] < dims_[2];
     }
-    int64_t linear(const Coord& c) const { return (int64_t(c[2]) * dims_[1] + c[1]) * dims_[0] + c[0]; }
+    int64_t linear(const Coord& c) const {
+        return (int64_t(c[2]) * dims_[1] + c[1]) * dims_[0] + c[0];
+    }
     Coord coord(int64_t linear) const {
         return {int32_t(linear % dims_[0]), int32_t(linear / dims_[0] % dims_[1]),
                 int32_t(linear / (int64_t(dims_[0]) * dims_[1]))};

@@ -33,11 +33,11 @@ struct ModelOptions {
     bool smooth_diagrams = true;
     int diagram_bands = 0;
     int diagram_sectors = 0;
-    double spectral_bin_nm = 10;       // width of the per-cell spectrum bins, 380..780 nm
-    int coverage_lines = 512;          // lines per flux cell measuring its visible fraction
-    int threads = 0;                   // 0: all cores
-    uint64_t seed = 1;                 // reservoir sampling of origins
-    bool progress = false;             // progress bar on stderr
+    double spectral_bin_nm = 10;  // width of the per-cell spectrum bins, 380..780 nm
+    int coverage_lines = 512;     // lines per flux cell measuring its visible fraction
+    int threads = 0;              // 0: all cores
+    uint64_t seed = 1;            // reservoir sampling of origins
+    bool progress = false;        // progress bar on stderr
 };
 
 // Wavelength bins of the per-cell spectra: [first + i*width, first + (i+1)*width).
@@ -64,7 +64,7 @@ struct FluxCell {
 };
 
 struct ModelSource {
-    std::string path;             // ray file the model was built from
+    std::string path;  // ray file the model was built from
     std::string format;
     uint64_t rays = 0;
     double radiant = 0, luminous = 0;  // totals of the rays as read (W, lm; NaN if unknown)
@@ -79,19 +79,19 @@ struct LightModel {
     LatticeFrame density_frame, flux_frame, intensity_frame;
     // Occupied density voxels, grouped by flux cell (FluxCell::first_voxel/voxel_count).
     std::vector<Coord> voxels;
-    std::vector<float> voxel_density;   // ray count of each voxel (for viewing)
+    std::vector<float> voxel_density;  // ray count of each voxel (for viewing)
     std::vector<Coord> boundary_voxels;
     std::vector<FluxCell> flux_cells;
     SpectralBins bins;
-    std::vector<float> spectra;         // flux_cells.size() x bins.count, fractions summing to 1
-                                        // (all zero when wavelengths are unknown)
-    std::vector<Coord> diagram_cells;   // intensity-lattice coordinate of each diagram
+    std::vector<float> spectra;        // flux_cells.size() x bins.count, fractions summing to 1
+                                       // (all zero when wavelengths are unknown)
+    std::vector<Coord> diagram_cells;  // intensity-lattice coordinate of each diagram
     std::vector<GoniometricDiagram> diagrams;
     std::vector<Sphere> spheres;
 
     double total_flux() const;
     double total_luminous() const;
-    Box bounds() const;                 // of the body (spheres), mm
+    Box bounds() const;  // of the body (spheres), mm
 };
 
 }  // namespace rayset::lightmodel

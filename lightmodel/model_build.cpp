@@ -1,7 +1,7 @@
 #include "lightmodel/model_build.h"
 
-#include "converters/rays/ray_stream.h"
 #include "converters/colour/spectrum.h"
+#include "converters/rays/ray_stream.h"
 #include "core/random.h"
 #include "lightmodel/coverage.h"
 #include "lightmodel/density_lattice.h"
@@ -49,7 +49,9 @@ std::vector<std::vector<double>> table_bins(const RayHeader& header, const Spect
 using Report = std::function<void(int pass, double fraction)>;
 
 // Origins in millimetres.
-Vec3 origin_mm(const Ray& r, double scale) { return {r.origin.x * scale, r.origin.y * scale, r.origin.z * scale}; }
+Vec3 origin_mm(const Ray& r, double scale) {
+    return {r.origin.x * scale, r.origin.y * scale, r.origin.z * scale};
+}
 
 // The lattices nest: a density voxel belongs to the flux cell holding its centre, a flux cell
 // to the intensity cell holding its centre (the three resolutions need not divide each
@@ -63,7 +65,8 @@ struct LatticeNesting {
         intensity_cell.resize(flux_cell.size());
         for (int64_t v = 0; v < voxels.cell_count(); ++v) {
             const Coord cell = model.flux_frame.cell_of(voxels.cell_centre(voxels.coord(v)));
-            const Coord intensity = model.intensity_frame.cell_of(model.flux_frame.cell_centre(cell));
+            const Coord intensity =
+                model.intensity_frame.cell_of(model.flux_frame.cell_centre(cell));
             flux_cell[size_t(v)] = int32_t(model.flux_frame.linear(cell));
             intensity_cell[size_t(v)] = int32_t(model.intensity_frame.linear(intensity));
         }
@@ -73,9 +76,11 @@ struct LatticeNesting {
 // Sums per flux cell (one thread's in pass 2, then their total).
 struct CellSums {
     std::vector<double> flux, luminous, spectrum;  // spectrum: `bins` values per cell
-    CellSums(size_t cells, int bins) : flux(cells, 0), luminous(cells, 0), spectrum(cells * size_t(bins), 0) {}
+    CellSums(size_t cells, int bins)
+        : flux(cells, 0), luminous(cells, 0), spectrum(cells * size_t(bins), 0) {}
     void add(const CellSums& other) {
-        for (size_t c = 0; c < flux.size(); ++c) flux[c] += other.flux[c], luminous[c] += other.luminous[c];
+        for (size_t c = 0; c < flux.size(); ++c)
+            flux[c] += other.flux[c], luminous[c] += other.luminous[c];
         for (size_t i = 0; i < spectrum.size(); ++i) spectrum[i] += other.spectrum[i];
     }
 };
@@ -98,9 +103,10 @@ public:
             for (int b = 0; b < count; ++b) spectrum[b] += phi * tables_[0][size_t(b)];
             return;
         }
-        const float wl = header_.spectral == SpectralKind::single_wavelength ? header_.single_wavelength
-                         : header_.spectral == SpectralKind::shared_table     ? kUnknown
-                                                                              : r.wavelength;
+        const float wl = header_.spectral == SpectralKind::single_wavelength
+                             ? header_.single_wavelength
+                         : header_.spectral == SpectralKind::shared_table ? kUnknown
+                                                                          : r.wavelength;
         if (const int b = bins_.bin_of(wl); b >= 0) spectrum[b] += phi;
     }
 
@@ -123,16 +129,19 @@ public:
 
     void add(size_t cell, Vec3 w, double flux) {
         if (estimate_) return estimate_->add(cell, w, flux);
-        if (!histograms_[cell]) histograms_[cell] = std::make_unique<GoniometricDiagram>(bands(), sectors());
+        if (!histograms_[cell])
+            histograms_[cell] = std::make_unique<GoniometricDiagram>(bands(), sectors());
         histograms_[cell]->accumulate(w, flux);
     }
 
     // The diagrams of the cells `wanted`, in that order.
     std::vector<GoniometricDiagram> diagrams(const std::vector<size_t>& wanted) {
-        if (estimate_) return estimate_->diagrams(wanted, options_.diagram_bands, options_.diagram_sectors);
+        if (estimate_)
+            return estimate_->diagrams(wanted, options_.diagram_bands, options_.diagram_sectors);
         std::vector<GoniometricDiagram> out;
         for (size_t cell : wanted) {
-            if (!histograms_[cell]) histograms_[cell] = std::make_unique<GoniometricDiagram>(bands(), sectors());
+            if (!histograms_[cell])
+                histograms_[cell] = std::make_unique<GoniometricDiagram>(bands(), sectors());
             histograms_[cell]->finalize();
             out.push_back(std::move(*histograms_[cell]));
         }
@@ -140,9 +149,13 @@ public:
     }
 
 private:
-    int bands() const { return options_.diagram_bands > 0 ? options_.diagram_bands : GoniometricDiagram::kDefaultBands; }
+    int bands() const {
+        return options_.diagram_bands > 0 ? options_.diagram_bands
+                                          : GoniometricDiagram::kDefaultBands;
+    }
     int sectors() const {
-        return options_.diagram_sectors > 0 ? options_.diagram_sectors : GoniometricDiagram::kDefaultSectors;
+        return options_.diagram_sectors > 0 ? options_.diagram_sectors
+                                            : GoniometricDiagram::kDefaultSectors;
     }
     const ModelOptions& options_;
     std::optional<DiagramEstimate> estimate_;
@@ -151,7 +164,8 @@ private:
 
 // Pass 1: the origins' box (mm) and the source's description. Returns the file's millimetres
 // per unit.
-double read_bounds(const std::string& ray_file, LightModel& model, Box& bounds, const Report& report) {
+double read_bounds(const std::string& ray_file, LightModel& model, Box& bounds,
+                   const Report& report) {
     auto reader = open_rays(ray_file);
     const RayHeader& header = reader->header();
     const double scale = millimetres_per(header.unit);
@@ -165,7 +179,8 @@ double read_bounds(const std::string& ray_file, LightModel& model, Box& bounds, 
     }
     model.source.rays = reader->totals().rays;
     model.source.radiant = header.has_radiant ? reader->totals().radiant : std::nan("");
-    if (model.source.rays == 0) throw Error(ray_file + ": the file holds no rays to build a model from");
+    if (model.source.rays == 0)
+        throw Error(ray_file + ": the file holds no rays to build a model from");
     return scale;
 }
 
@@ -178,12 +193,13 @@ struct RayTotals {
 // Pass 2: the origins into the density lattice, flux and spectra into their flux cells,
 // directions into their intensity cell's diagram.
 RayTotals accumulate_rays(const std::string& ray_file, double scale, LightModel& model,
-                          const LatticeNesting& nesting, DensityLattice& density, DiagramRays& diagram_rays,
-                          const Report& report) {
+                          const LatticeNesting& nesting, DensityLattice& density,
+                          DiagramRays& diagram_rays, const Report& report) {
     const LatticeFrame& voxels = model.density_frame;
     const size_t flux_cells = size_t(model.flux_frame.cell_count());
     const int bins = model.bins.count;
-    tbb::enumerable_thread_specific<CellSums> thread_sums([&] { return CellSums(flux_cells, bins); });
+    tbb::enumerable_thread_specific<CellSums> thread_sums(
+        [&] { return CellSums(flux_cells, bins); });
     auto reader = open_rays(ray_file);
     const RayHeader& header = reader->header();
     const PhotometricWeights photometric(header);
@@ -199,20 +215,22 @@ RayTotals accumulate_rays(const std::string& ray_file, double scale, LightModel&
         const size_t n = chunk.size();
         origins.resize(n);
         voxel_of_ray.resize(n);
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& range) {
-            CellSums& sums = thread_sums.local();
-            for (size_t i = range.begin(); i != range.end(); ++i) {
-                const Ray& r = chunk.rays[i];
-                origins[i] = origin_mm(r, scale);
-                const int64_t v = voxels.linear(voxels.cell_of(origins[i]));
-                const size_t cell = size_t(nesting.flux_cell[size_t(v)]);
-                const double phi = flux_of(r);
-                sums.flux[cell] += phi;
-                if (totals.luminous_known) sums.luminous[cell] += photometric.luminous(r);
-                spectrum_of.add(r, phi, &sums.spectrum[cell * size_t(bins)]);
-                voxel_of_ray[i] = int32_t(v);
-            }
-        });
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096),
+                          [&](const tbb::blocked_range<size_t>& range) {
+                              CellSums& sums = thread_sums.local();
+                              for (size_t i = range.begin(); i != range.end(); ++i) {
+                                  const Ray& r = chunk.rays[i];
+                                  origins[i] = origin_mm(r, scale);
+                                  const int64_t v = voxels.linear(voxels.cell_of(origins[i]));
+                                  const size_t cell = size_t(nesting.flux_cell[size_t(v)]);
+                                  const double phi = flux_of(r);
+                                  sums.flux[cell] += phi;
+                                  if (totals.luminous_known)
+                                      sums.luminous[cell] += photometric.luminous(r);
+                                  spectrum_of.add(r, phi, &sums.spectrum[cell * size_t(bins)]);
+                                  voxel_of_ray[i] = int32_t(v);
+                              }
+                          });
         // Directions one thread at a time: a histogram per cell and thread would not fit.
         for (size_t i = 0; i < n; ++i) {
             const Ray& r = chunk.rays[i];
@@ -232,7 +250,8 @@ struct CellVoxels {
     std::vector<std::vector<float>> counts;
 };
 
-CellVoxels voxels_by_cell(const DensityLattice& density, const LatticeNesting& nesting, size_t flux_cells) {
+CellVoxels voxels_by_cell(const DensityLattice& density, const LatticeNesting& nesting,
+                          size_t flux_cells) {
     CellVoxels out;
     out.voxels.resize(flux_cells);
     out.counts.resize(flux_cells);
@@ -262,7 +281,8 @@ void add_flux_cells(LightModel& model, const RayTotals& totals, const DensityLat
         cell.coord = model.flux_frame.coord(int64_t(fc));
         cell.flux = totals.sums.flux[fc];
         cell.luminous = totals.luminous_known ? totals.sums.luminous[fc] : std::nan("");
-        const size_t k = size_t(nesting.intensity_cell[size_t(density.frame().linear(occupied.voxels[fc][0]))]);
+        const size_t k =
+            size_t(nesting.intensity_cell[size_t(density.frame().linear(occupied.voxels[fc][0]))]);
         if (diagram_index[k] < 0) {
             diagram_index[k] = int32_t(diagram_of.size());
             diagram_of.push_back(k);
@@ -271,13 +291,16 @@ void add_flux_cells(LightModel& model, const RayTotals& totals, const DensityLat
         cell.intensity_cell = diagram_index[k];
         cell.first_voxel = uint32_t(model.voxels.size());
         cell.voxel_count = uint32_t(occupied.voxels[fc].size());
-        model.voxels.insert(model.voxels.end(), occupied.voxels[fc].begin(), occupied.voxels[fc].end());
-        model.voxel_density.insert(model.voxel_density.end(), occupied.counts[fc].begin(), occupied.counts[fc].end());
+        model.voxels.insert(model.voxels.end(), occupied.voxels[fc].begin(),
+                            occupied.voxels[fc].end());
+        model.voxel_density.insert(model.voxel_density.end(), occupied.counts[fc].begin(),
+                                   occupied.counts[fc].end());
         const double* spectrum = &totals.sums.spectrum[fc * size_t(bins)];
         double spectrum_sum = 0;
         for (int b = 0; b < bins; ++b) spectrum_sum += spectrum[b];
         for (int b = 0; b < bins; ++b)
-            model.spectra.push_back(totals.spectral && spectrum_sum > 0 ? float(spectrum[b] / spectrum_sum) : 0.f);
+            model.spectra.push_back(
+                totals.spectral && spectrum_sum > 0 ? float(spectrum[b] / spectrum_sum) : 0.f);
         model.flux_cells.push_back(cell);
     }
     model.diagrams = diagram_rays.diagrams(diagram_of);
@@ -292,8 +315,9 @@ struct BoundarySamples {
 };
 
 // Pass 3: a reservoir sample of the origins in each boundary voxel.
-BoundarySamples sample_boundary_origins(const std::string& ray_file, double scale, const LightModel& model,
-                                        const ModelOptions& options, const Report& report) {
+BoundarySamples sample_boundary_origins(const std::string& ray_file, double scale,
+                                        const LightModel& model, const ModelOptions& options,
+                                        const Report& report) {
     const LatticeFrame& voxels = model.density_frame;
     std::vector<int32_t> boundary_slot(size_t(voxels.cell_count()), -1);
     for (size_t b = 0; b < model.boundary_voxels.size(); ++b)
@@ -313,7 +337,8 @@ BoundarySamples sample_boundary_origins(const std::string& ray_file, double scal
             const uint64_t k = out.seen[size_t(slot)]++;
             if (k < out.per_cell) {
                 out.samples[size_t(slot) * out.per_cell + k] = p;
-            } else if (const uint64_t j = uint64_t(rng.uniform() * double(k + 1)); j < out.per_cell) {
+            } else if (const uint64_t j = uint64_t(rng.uniform() * double(k + 1));
+                       j < out.per_cell) {
                 out.samples[size_t(slot) * out.per_cell + j] = p;
             }
         }
@@ -324,7 +349,8 @@ BoundarySamples sample_boundary_origins(const std::string& ray_file, double scal
 
 // The spheres of each boundary voxel, fitted to its sampled origins, as many as its share of
 // the rays calls for.
-void fit_boundary_spheres(LightModel& model, const BoundarySamples& boundary, const ModelOptions& options) {
+void fit_boundary_spheres(LightModel& model, const BoundarySamples& boundary,
+                          const ModelOptions& options) {
     const LatticeFrame& voxels = model.density_frame;
     std::vector<double> boundary_counts(boundary.seen.begin(), boundary.seen.end());
     const double reference = reference_count(boundary_counts);
@@ -334,17 +360,21 @@ void fit_boundary_spheres(LightModel& model, const BoundarySamples& boundary, co
         if (n == 0) return;
         const auto first = boundary.samples.begin() + std::ptrdiff_t(b * boundary.per_cell);
         const std::vector<Vec3> cell_samples(first, first + std::ptrdiff_t(n));
-        const int k = spheres_for_count(double(boundary.seen[b]), reference, options.max_spheres_per_cell);
-        fitted[b] = fit_cell_spheres(voxels.cell_lower(model.boundary_voxels[b]), voxels.cell_size(), cell_samples, k);
+        const int k =
+            spheres_for_count(double(boundary.seen[b]), reference, options.max_spheres_per_cell);
+        fitted[b] = fit_cell_spheres(voxels.cell_lower(model.boundary_voxels[b]),
+                                     voxels.cell_size(), cell_samples, k);
     });
     for (const auto& s : fitted) model.spheres.insert(model.spheres.end(), s.begin(), s.end());
 }
 
 }  // namespace
 
-LightModel build_model(const std::string& ray_file, const ModelOptions& options, const BuildProgress& progress) {
+LightModel build_model(const std::string& ray_file, const ModelOptions& options,
+                       const BuildProgress& progress) {
     std::optional<tbb::global_control> threads;
-    if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
+    if (options.threads > 0)
+        threads.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
     const Report report = [&](int pass, double f) {
         if (progress) progress(pass, f);
     };
@@ -356,9 +386,10 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
 
     Box bounds;
     const double scale = read_bounds(ray_file, model, bounds, report);
-    const int density_resolution = options.density_resolution > 0
-                                       ? options.density_resolution
-                                       : adapted_resolution(model.source.rays, options.max_density_resolution);
+    const int density_resolution =
+        options.density_resolution > 0
+            ? options.density_resolution
+            : adapted_resolution(model.source.rays, options.max_density_resolution);
     model.density_frame = LatticeFrame(bounds, density_resolution);
     model.flux_frame = LatticeFrame(bounds, options.flux_resolution);
     model.intensity_frame = LatticeFrame(bounds, options.intensity_resolution);
@@ -366,18 +397,22 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
 
     DensityLattice density(model.density_frame);
     DiagramRays diagram_rays(options, size_t(model.intensity_frame.cell_count()));
-    const RayTotals totals = accumulate_rays(ray_file, scale, model, nesting, density, diagram_rays, report);
-    // Luminous flux of the rays: their luminous column, or their radiant flux weighted by V(lambda).
+    const RayTotals totals =
+        accumulate_rays(ray_file, scale, model, nesting, density, diagram_rays, report);
+    // Luminous flux of the rays: their luminous column, or their radiant flux weighted by
+    // V(lambda).
     model.source.luminous = std::nan("");
     if (totals.luminous_known) {
         model.source.luminous = 0;
         for (double l : totals.sums.luminous) model.source.luminous += l;
     }
     add_flux_cells(model, totals, density, nesting, diagram_rays);
-    if (model.flux_cells.empty()) throw Error(ray_file + ": the rays carry no flux to build a model from");
+    if (model.flux_cells.empty())
+        throw Error(ray_file + ": the rays carry no flux to build a model from");
 
     model.boundary_voxels = density.boundary_cells();
-    fit_boundary_spheres(model, sample_boundary_origins(ray_file, scale, model, options, report), options);
+    fit_boundary_spheres(model, sample_boundary_origins(ray_file, scale, model, options, report),
+                         options);
     measure_visible_fractions(model, options.coverage_lines, options.seed);
     report(4, 1);
     return model;

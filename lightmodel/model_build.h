@@ -16,6 +16,7 @@ namespace rayset::lightmodel {
 // Called with the pass (1..4, 4 = sphere fit) and the fraction done, for progress bars.
 using BuildProgress = std::function<void(int pass, double fraction)>;
 
-LightModel build_model(const std::string& ray_file, const ModelOptions& options, const BuildProgress& progress = {});
+LightModel build_model(const std::string& ray_file, const ModelOptions& options,
+                       const BuildProgress& progress = {});
 
 }  // namespace rayset::lightmodel

@@ -187,7 +187,8 @@ struct MetadataWriter {
 // Texts, frames and the options are required; the numbers and bins keep their defaults when
 // missing (files written before them).
 struct MetadataReader {
-    MetadataReader(const openvdb::MetaMap& meta, const std::string& path) : meta(meta), path(path) {}
+    MetadataReader(const openvdb::MetaMap& meta, const std::string& path)
+        : meta(meta), path(path) {}
     const openvdb::MetaMap& meta;
     const std::string& path;
     std::map<std::string, long long> option_values;
@@ -264,8 +265,9 @@ void add_flux_grids(const LightModel& model, openvdb::GridPtrVec& grids) {
     flux->setName(grid::flux);
     luminous->setName(grid::luminous);
     visible->setName(grid::visible_fraction);
-    for (const openvdb::GridBase::Ptr& g : {openvdb::GridBase::Ptr(flux), openvdb::GridBase::Ptr(luminous),
-                                            openvdb::GridBase::Ptr(visible)}) {
+    for (const openvdb::GridBase::Ptr& g :
+         {openvdb::GridBase::Ptr(flux), openvdb::GridBase::Ptr(luminous),
+          openvdb::GridBase::Ptr(visible)}) {
         g->setTransform(frame_transform(model.flux_frame));
         grids.push_back(g);
     }
@@ -283,7 +285,8 @@ void add_flux_grids(const LightModel& model, openvdb::GridPtrVec& grids) {
     auto sa = spectra->getAccessor();
     for (size_t c = 0; c < model.flux_cells.size(); ++c)
         for (int b = 0; b < model.bins.count; ++b)
-            sa.setValue(openvdb::Coord(int(c), b, 0), model.spectra[c * size_t(model.bins.count) + size_t(b)]);
+            sa.setValue(openvdb::Coord(int(c), b, 0),
+                        model.spectra[c * size_t(model.bins.count) + size_t(b)]);
     grids.push_back(spectra);
 }
 
@@ -300,7 +303,8 @@ void add_diagram_grids(const LightModel& model, openvdb::GridPtrVec& grids) {
     for (size_t k = 0; k < model.diagrams.size(); ++k) {
         ia.setValue(vdb(model.diagram_cells[k]), int32_t(k));
         const std::vector<float> data = model.diagrams[k].serialize();
-        for (size_t i = 0; i < data.size(); ++i) da.setValue(openvdb::Coord(int(i), int(k), 0), data[i]);
+        for (size_t i = 0; i < data.size(); ++i)
+            da.setValue(openvdb::Coord(int(i), int(k), 0), data[i]);
     }
     grids.push_back(intensity_cell);
     grids.push_back(diagrams);
@@ -346,7 +350,8 @@ void read_diagrams(const ModelFile& file, const std::string& path, LightModel& m
     for (auto it = intensity_cell->cbeginValueOn(); it; ++it) {
         if (*it < 0 || size_t(*it) >= diagram_data.size())
             throw Error(path + ": intensity_cell names a missing diagram");
-        model.diagram_cells[size_t(*it)] = {it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
+        model.diagram_cells[size_t(*it)] = {it.getCoord().x(), it.getCoord().y(),
+                                            it.getCoord().z()};
     }
     for (const auto& data : diagram_data) {
         try {
@@ -359,10 +364,12 @@ void read_diagrams(const ModelFile& file, const std::string& path, LightModel& m
 
 // Flux cells in the order of their linear index, as the build made them; returns the index of
 // each cell by its linear index.
-std::map<int64_t, size_t> read_flux_cells(const ModelFile& file, const std::string& path, LightModel& model) {
+std::map<int64_t, size_t> read_flux_cells(const ModelFile& file, const std::string& path,
+                                          LightModel& model) {
     auto flux = find_grid<openvdb::DoubleGrid>(file.grids, grid::flux, path);
     auto la = find_grid<openvdb::DoubleGrid>(file.grids, grid::luminous, path)->getConstAccessor();
-    auto va = find_grid<openvdb::FloatGrid>(file.grids, grid::visible_fraction, path)->getConstAccessor();
+    auto va =
+        find_grid<openvdb::FloatGrid>(file.grids, grid::visible_fraction, path)->getConstAccessor();
     std::vector<std::pair<int64_t, FluxCell>> cells;
     for (auto it = flux->cbeginValueOn(); it; ++it) {
         FluxCell c;
@@ -372,7 +379,8 @@ std::map<int64_t, size_t> read_flux_cells(const ModelFile& file, const std::stri
         c.visible_fraction = va.getValue(it.getCoord());
         cells.emplace_back(model.flux_frame.linear(c.coord), c);
     }
-    std::sort(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::sort(cells.begin(), cells.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
     std::map<int64_t, size_t> cell_index;
     for (const auto& [linear, cell] : cells) {
         cell_index[linear] = model.flux_cells.size();
@@ -383,25 +391,28 @@ std::map<int64_t, size_t> read_flux_cells(const ModelFile& file, const std::stri
 
 // Voxels grouped by flux cell, in the density grid's order (as the build grouped them), and
 // each flux cell's diagram.
-void read_voxels(const ModelFile& file, const std::string& path, const std::map<int64_t, size_t>& cell_index,
-                 LightModel& model) {
+void read_voxels(const ModelFile& file, const std::string& path,
+                 const std::map<int64_t, size_t>& cell_index, LightModel& model) {
     auto density = find_grid<openvdb::FloatGrid>(file.grids, grid::density, path);
-    auto ia = find_grid<openvdb::Int32Grid>(file.grids, grid::intensity_cell, path)->getConstAccessor();
+    auto ia =
+        find_grid<openvdb::Int32Grid>(file.grids, grid::intensity_cell, path)->getConstAccessor();
     std::vector<std::vector<std::pair<Coord, float>>> grouped(model.flux_cells.size());
     for (auto it = density->cbeginValueOn(); it; ++it) {
         const Coord v{it.getCoord().x(), it.getCoord().y(), it.getCoord().z()};
         const Vec3 centre = model.density_frame.cell_centre(v);
-        const auto found = cell_index.find(model.flux_frame.linear(model.flux_frame.cell_of(centre)));
+        const auto found =
+            cell_index.find(model.flux_frame.linear(model.flux_frame.cell_of(centre)));
         if (found == cell_index.end()) continue;  // a voxel whose rays carried no flux
         grouped[found->second].emplace_back(v, *it);
         FluxCell& cell = model.flux_cells[found->second];
         if (cell.intensity_cell < 0)
-            cell.intensity_cell =
-                ia.getValue(vdb(model.intensity_frame.cell_of(model.flux_frame.cell_centre(cell.coord))));
+            cell.intensity_cell = ia.getValue(
+                vdb(model.intensity_frame.cell_of(model.flux_frame.cell_centre(cell.coord))));
     }
     for (size_t c = 0; c < grouped.size(); ++c) {
         FluxCell& cell = model.flux_cells[c];
-        if (grouped[c].empty() || cell.intensity_cell < 0 || size_t(cell.intensity_cell) >= model.diagrams.size())
+        if (grouped[c].empty() || cell.intensity_cell < 0 ||
+            size_t(cell.intensity_cell) >= model.diagrams.size())
             throw Error(path + ": flux cell " + std::to_string(c) +
                         " has no voxels or no diagram: the file is inconsistent");
         cell.first_voxel = uint32_t(model.voxels.size());
@@ -461,7 +472,8 @@ LightModel read_model(const std::string& path) {
     read_diagrams(file, path, model);
     read_voxels(file, path, read_flux_cells(file, path, model), model);
     read_spectra(file, path, model);
-    model.spheres = read_spheres(*find_grid<openvdb::points::PointDataGrid>(file.grids, grid::spheres, path));
+    model.spheres =
+        read_spheres(*find_grid<openvdb::points::PointDataGrid>(file.grids, grid::spheres, path));
     return model;
 }
 

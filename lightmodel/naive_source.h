@@ -40,9 +40,9 @@ public:
 private:
     std::vector<Vec3> origins_, directions_;
     std::vector<float> flux_, luminous_;
-    std::vector<int16_t> band_;     // spectral bin of the ray's wavelength, -1 unknown
-    std::vector<float> wavelength_; // nm, NaN unknown
-    BinnedSpectrum grey_;           // of rays without a wavelength
+    std::vector<int16_t> band_;      // spectral bin of the ray's wavelength, -1 unknown
+    std::vector<float> wavelength_;  // nm, NaN unknown
+    BinnedSpectrum grey_;            // of rays without a wavelength
     std::vector<double> cdf_;
     SpectralBins bins_;
     // Colour of a unit of flux of each ray's spectral bin at 1 lm per unit (index bin + 1; 0:

@@ -28,8 +28,12 @@ nlohmann::json summary(const LightModel& m, const std::string& path) {
     const Box b = m.bounds();
     nlohmann::json j;
     j["model"] = path;
-    j["source"] = {{"path", m.source.path}, {"format", m.source.format}, {"rays", m.source.rays},
-                   {"radiant_W", m.source.radiant}, {"luminous_lm", m.source.luminous}, {"unit", m.source.unit}};
+    j["source"] = {{"path", m.source.path},
+                   {"format", m.source.format},
+                   {"rays", m.source.rays},
+                   {"radiant_W", m.source.radiant},
+                   {"luminous_lm", m.source.luminous},
+                   {"unit", m.source.unit}};
     j["flux_unit"] = m.flux_unit;
     j["total_flux"] = m.total_flux();
     j["total_luminous_lm"] = m.total_luminous();
@@ -47,21 +51,27 @@ nlohmann::json summary(const LightModel& m, const std::string& path) {
 }
 
 void print(const nlohmann::json& j) {
-    std::printf("model        %s (%s bytes)\n", j["model"].get<std::string>().c_str(),
-                j.contains("file_bytes") ? std::to_string(j["file_bytes"].get<uint64_t>()).c_str() : "?");
-    std::printf("source       %s (%s, %llu rays, unit %s)\n", j["source"]["path"].get<std::string>().c_str(),
+    std::printf(
+        "model        %s (%s bytes)\n", j["model"].get<std::string>().c_str(),
+        j.contains("file_bytes") ? std::to_string(j["file_bytes"].get<uint64_t>()).c_str() : "?");
+    std::printf("source       %s (%s, %llu rays, unit %s)\n",
+                j["source"]["path"].get<std::string>().c_str(),
                 j["source"]["format"].get<std::string>().c_str(),
-                (unsigned long long)j["source"]["rays"].get<uint64_t>(), j["source"]["unit"].get<std::string>().c_str());
+                (unsigned long long)j["source"]["rays"].get<uint64_t>(),
+                j["source"]["unit"].get<std::string>().c_str());
     std::printf("total flux   %.9g %s (rays: %.9g W, %.9g lm)\n", j["total_flux"].get<double>(),
                 j["flux_unit"].get<std::string>().c_str(), j["source"]["radiant_W"].get<double>(),
                 j["source"]["luminous_lm"].get<double>());
     for (const char* name : {"density_lattice", "flux_lattice", "intensity_lattice"}) {
         const auto& f = j[name];
-        std::printf("%-18s %d (%d x %d x %d cells of %.4g mm)", name, f["resolution"].get<int>(), f["dims"][0].get<int>(),
-                    f["dims"][1].get<int>(), f["dims"][2].get<int>(), f["cell_mm"].get<double>());
+        std::printf("%-18s %d (%d x %d x %d cells of %.4g mm)", name, f["resolution"].get<int>(),
+                    f["dims"][0].get<int>(), f["dims"][1].get<int>(), f["dims"][2].get<int>(),
+                    f["cell_mm"].get<double>());
         if (f.contains("occupied_cells"))
-            std::printf(", %zu occupied, %zu boundary", f["occupied_cells"].get<size_t>(), f["boundary_cells"].get<size_t>());
-        if (f.contains("cells_with_light")) std::printf(", %zu with light", f["cells_with_light"].get<size_t>());
+            std::printf(", %zu occupied, %zu boundary", f["occupied_cells"].get<size_t>(),
+                        f["boundary_cells"].get<size_t>());
+        if (f.contains("cells_with_light"))
+            std::printf(", %zu with light", f["cells_with_light"].get<size_t>());
         if (f.contains("diagrams")) std::printf(", %zu diagrams", f["diagrams"].get<size_t>());
         std::printf("\n");
     }
@@ -77,36 +87,57 @@ struct Command {
 
 CLI::App* add_build_command(CLI::App& app, Command& c) {
     ModelOptions& o = c.options;
-    auto* build = app.add_subcommand("build", "Build a model from a ray file of any supported format");
-    build->add_option("rayfile", c.input, "Ray file (TM-25, LightTools, Zemax, SPEOS, CSV)")->required()->check(CLI::ExistingFile);
+    auto* build =
+        app.add_subcommand("build", "Build a model from a ray file of any supported format");
+    build->add_option("rayfile", c.input, "Ray file (TM-25, LightTools, Zemax, SPEOS, CSV)")
+        ->required()
+        ->check(CLI::ExistingFile);
     build->add_option("-o,--output", c.output, "Model file to write (.vdb)")->required();
-    build->add_option("--density-resolution", o.density_resolution,
-                      "Cells along the longest axis of the density lattice; 0 adapts it to the ray count "
-                      "(round(sqrt(rays / 64)), at most --max-density-resolution)");
-    build->add_option("--max-density-resolution", o.max_density_resolution, "Upper bound of the adapted density resolution")
+    build->add_option(
+        "--density-resolution", o.density_resolution,
+        "Cells along the longest axis of the density lattice; 0 adapts it to the ray count "
+        "(round(sqrt(rays / 64)), at most --max-density-resolution)");
+    build
+        ->add_option("--max-density-resolution", o.max_density_resolution,
+                     "Upper bound of the adapted density resolution")
         ->capture_default_str();
-    build->add_option("--flux-resolution", o.flux_resolution, "Cells along the longest axis of the flux lattice")
+    build
+        ->add_option("--flux-resolution", o.flux_resolution,
+                     "Cells along the longest axis of the flux lattice")
         ->capture_default_str();
-    build->add_option("--intensity-resolution", o.intensity_resolution,
-                      "Cells along the longest axis of the intensity lattice (one goniometric diagram each)")
+    build
+        ->add_option(
+            "--intensity-resolution", o.intensity_resolution,
+            "Cells along the longest axis of the intensity lattice (one goniometric diagram each)")
         ->capture_default_str();
-    build->add_option("--max-spheres", o.max_spheres_per_cell, "Most spheres in one boundary cell")->capture_default_str();
-    build->add_option("--samples-per-cell", o.samples_per_cell, "Origins kept per boundary cell for the sphere fit")
+    build->add_option("--max-spheres", o.max_spheres_per_cell, "Most spheres in one boundary cell")
         ->capture_default_str();
-    build->add_option("--diagram-smoothing", c.diagram_smoothing,
-                      "Goniometric diagrams: 'auto' estimates each intensity cell's density of directions with kernels "
-                      "whose width (per direction, from all rays) and grid follow the rays; 'none' keeps each cell's "
-                      "histogram (40 x 12 cells unless set below)")
+    build
+        ->add_option("--samples-per-cell", o.samples_per_cell,
+                     "Origins kept per boundary cell for the sphere fit")
+        ->capture_default_str();
+    build
+        ->add_option("--diagram-smoothing", c.diagram_smoothing,
+                     "Goniometric diagrams: 'auto' estimates each intensity cell's density of "
+                     "directions with kernels "
+                     "whose width (per direction, from all rays) and grid follow the rays; 'none' "
+                     "keeps each cell's "
+                     "histogram (40 x 12 cells unless set below)")
         ->check(CLI::IsMember({"auto", "none"}))
         ->capture_default_str();
-    build->add_option("--diagram-bands", o.diagram_bands,
-                      "Bands of cos(theta) of each goniometric diagram (even); 0: chosen from the rays")
+    build
+        ->add_option(
+            "--diagram-bands", o.diagram_bands,
+            "Bands of cos(theta) of each goniometric diagram (even); 0: chosen from the rays")
         ->capture_default_str();
-    build->add_option("--diagram-sectors", o.diagram_sectors,
-                      "Sectors of phi of each goniometric diagram; 0: chosen from the rays")
+    build
+        ->add_option("--diagram-sectors", o.diagram_sectors,
+                     "Sectors of phi of each goniometric diagram; 0: chosen from the rays")
         ->capture_default_str();
-    build->add_option("--threads", o.threads, "Worker threads; 0 = all cores")->capture_default_str();
-    build->add_option("--seed", o.seed, "Seed of the reservoir sampling of origins")->capture_default_str();
+    build->add_option("--threads", o.threads, "Worker threads; 0 = all cores")
+        ->capture_default_str();
+    build->add_option("--seed", o.seed, "Seed of the reservoir sampling of origins")
+        ->capture_default_str();
     build->add_flag("--json", c.json, "Print the summary as JSON");
     return build;
 }
@@ -121,14 +152,16 @@ void run_build(Command& c) {
     const LightModel model = build_model(c.input, c.options, [&](int pass, double fraction) {
         if (pass != current) {
             if (bar) bar->done();
-            bar = std::make_unique<rayset::ProgressBar>(std::string("pass ") + std::to_string(pass) + "/4 " + labels[pass]);
+            bar = std::make_unique<rayset::ProgressBar>(
+                std::string("pass ") + std::to_string(pass) + "/4 " + labels[pass]);
             current = pass;
         }
         bar->update(fraction);
     });
     if (bar) bar->done();
     write_model(model, c.output);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::json j = summary(model, c.output);
     j["build_seconds"] = seconds;
     if (c.json) {
@@ -141,17 +174,22 @@ void run_build(Command& c) {
 
 void run_info(const Command& c) {
     const nlohmann::json j = summary(read_model(c.input), c.input);
-    if (c.json) std::printf("%s\n", j.dump(2).c_str());
-    else print(j);
+    if (c.json)
+        std::printf("%s\n", j.dump(2).c_str());
+    else
+        print(j);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{
-        "raymodel: the complex light-source model of a ray file (Zhdanov et al.; docs/light-model.md).\n\n"
-        "The model is what the tracer renders a ray file with: a body of spheres that cameras see, a\n"
-        "flux lattice and goniometric diagrams that light sampling and photon emission draw from.\n\n"
+        "raymodel: the complex light-source model of a ray file (Zhdanov et al.; "
+        "docs/light-model.md).\n\n"
+        "The model is what the tracer renders a ray file with: a body of spheres that cameras see, "
+        "a\n"
+        "flux lattice and goniometric diagrams that light sampling and photon emission draw "
+        "from.\n\n"
         "Examples:\n"
         "  raymodel build LED.TM25RAY -o LED.vdb          build with the paper's defaults\n"
         "  raymodel build LED.TM25RAY -o LED.vdb --flux-resolution 16 --threads 2\n"
@@ -162,13 +200,17 @@ int main(int argc, char** argv) {
     Command command;
     CLI::App* build = add_build_command(app, command);
     CLI::App* info = app.add_subcommand("info", "Summarise a model file");
-    info->add_option("model", command.input, "Model file (.vdb)")->required()->check(CLI::ExistingFile);
+    info->add_option("model", command.input, "Model file (.vdb)")
+        ->required()
+        ->check(CLI::ExistingFile);
     info->add_flag("--json", command.json, "Print the summary as JSON");
 
     try {
         app.parse(argc, argv);
-        if (*build) run_build(command);
-        else if (*info) run_info(command);
+        if (*build)
+            run_build(command);
+        else if (*info)
+            run_info(command);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     } catch (const std::exception& e) {

@@ -30,7 +30,9 @@ bool line_ball(const Sphere& s, Vec3 origin, Vec3 dir, double& t0, double& t1) {
 
 void throw_on_error(RTCDevice device, const char* what) {
     const RTCError error = rtcGetDeviceError(device);
-    if (error != RTC_ERROR_NONE) throw std::runtime_error(std::string("SphereBody: Embree error ") + std::to_string(int(error)) + " in " + what);
+    if (error != RTC_ERROR_NONE)
+        throw std::runtime_error(std::string("SphereBody: Embree error ") +
+                                 std::to_string(int(error)) + " in " + what);
 }
 
 RTCRayHit make_rayhit(Vec3 origin, Vec3 dir, double tmax) {
@@ -82,16 +84,21 @@ void record_inside(const RTCFilterFunctionNArguments* args) {
     auto* c = reinterpret_cast<InsideContext*>(args->context);
     const Sphere& s = (*c->spheres)[RTCHitN_primID(args->hit, args->N, 0)];
     const Vec3 d = c->p - centre_of(s);
-    if (dot(d, d) < double(s.r) * s.r) c->inside = true;  // accepted: shortens the ray, ends sooner
-    else args->valid[0] = 0;
+    if (dot(d, d) < double(s.r) * s.r)
+        c->inside = true;  // accepted: shortens the ray, ends sooner
+    else
+        args->valid[0] = 0;
 }
 
 }  // namespace
 
-SphereBody::SphereBody(std::vector<Sphere> spheres, RTCDevice device) : spheres_(std::move(spheres)) {
+SphereBody::SphereBody(std::vector<Sphere> spheres, RTCDevice device)
+    : spheres_(std::move(spheres)) {
     for (const Sphere& s : spheres_) {
-        if (!(s.r >= 0) || !std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z) || !std::isfinite(s.r))
-            throw std::invalid_argument("SphereBody: a sphere with a non-finite centre or negative radius");
+        if (!(s.r >= 0) || !std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z) ||
+            !std::isfinite(s.r))
+            throw std::invalid_argument(
+                "SphereBody: a sphere with a non-finite centre or negative radius");
         bounds_.extend(centre_of(s) - Vec3{s.r, s.r, s.r});
         bounds_.extend(centre_of(s) + Vec3{s.r, s.r, s.r});
         max_radius_ = std::max(max_radius_, s.r);
@@ -109,8 +116,9 @@ SphereBody::SphereBody(std::vector<Sphere> spheres, RTCDevice device) : spheres_
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
     if (!spheres_.empty()) {
         RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-        auto* vertices = static_cast<Sphere*>(rtcSetNewGeometryBuffer(
-            geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, sizeof(Sphere), spheres_.size()));
+        auto* vertices = static_cast<Sphere*>(
+            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                    sizeof(Sphere), spheres_.size()));
         throw_on_error(device_, "allocating the sphere buffer");
         std::copy(spheres_.begin(), spheres_.end(), vertices);
         rtcCommitGeometry(geometry);
@@ -168,14 +176,18 @@ bool SphereBody::intersect(Vec3 origin, Vec3 dir, double tmax, BodyHit& hit) con
 bool SphereBody::entry_after_inside(Vec3 origin, Vec3 dir, double tmax, BodyHit& hit) const {
     std::vector<uint32_t> crossed;
     crossed_spheres(origin, dir, tmax, crossed);
-    struct Interval { double t0, t1; uint32_t sphere; };
+    struct Interval {
+        double t0, t1;
+        uint32_t sphere;
+    };
     std::vector<Interval> intervals;
     intervals.reserve(crossed.size());
     for (uint32_t i : crossed) {
         double t0, t1;
         if (line_ball(spheres_[i], origin, dir, t0, t1)) intervals.push_back({t0, t1, i});
     }
-    std::sort(intervals.begin(), intervals.end(), [](const Interval& a, const Interval& b) { return a.t0 < b.t0; });
+    std::sort(intervals.begin(), intervals.end(),
+              [](const Interval& a, const Interval& b) { return a.t0 < b.t0; });
     double reach = 0;
     for (const Interval& in : intervals) {
         if (in.t0 > reach) return in.t0 <= tmax && hit_from(in.sphere, origin, dir, in.t0, hit);
@@ -197,7 +209,8 @@ bool SphereBody::occluded(Vec3 origin, Vec3 dir, double tmax) const {
     return ray.tfar < 0;  // Embree marks an occluded ray with tfar = -inf
 }
 
-void SphereBody::crossed_spheres(Vec3 origin, Vec3 dir, double tmax, std::vector<uint32_t>& out) const {
+void SphereBody::crossed_spheres(Vec3 origin, Vec3 dir, double tmax,
+                                 std::vector<uint32_t>& out) const {
     out.clear();
     if (spheres_.empty()) return;
     CrossingContext c;

@@ -35,7 +35,8 @@ double distance2(const Point& a, const double* b) {
 // steps Newton steps of the spread below, which is smooth and convex.
 struct OffsetResidual {
     OffsetResidual(const Point& p, double inverse_scale) : p(p), inverse_scale(inverse_scale) {}
-    template <class T> bool operator()(const T* centre, T* residual) const {
+    template <class T>
+    bool operator()(const T* centre, T* residual) const {
         for (int a = 0; a < 3; ++a) residual[a] = (centre[a] - p[a]) * inverse_scale;
         return true;
     }
@@ -84,15 +85,18 @@ std::vector<std::array<double, 4>> farthest_point_centres(const std::vector<Poin
     std::vector<double> nearest(q.size());
     for (size_t i = 0; i < q.size(); ++i) nearest[i] = distance2(q[i], centres[0].data());
     while (int(centres.size()) < count) {
-        const size_t far = size_t(std::max_element(nearest.begin(), nearest.end()) - nearest.begin());
+        const size_t far =
+            size_t(std::max_element(nearest.begin(), nearest.end()) - nearest.begin());
         if (nearest[far] == 0) break;  // every remaining sample repeats a centre
         centres.push_back({q[far][0], q[far][1], q[far][2], 0});
-        for (size_t i = 0; i < q.size(); ++i) nearest[i] = std::min(nearest[i], distance2(q[i], centres.back().data()));
+        for (size_t i = 0; i < q.size(); ++i)
+            nearest[i] = std::min(nearest[i], distance2(q[i], centres.back().data()));
     }
     return centres;
 }
 
-std::vector<int> nearest_centres(const std::vector<Point>& q, const std::vector<std::array<double, 4>>& centres) {
+std::vector<int> nearest_centres(const std::vector<Point>& q,
+                                 const std::vector<std::array<double, 4>>& centres) {
     std::vector<int> owner(q.size());
     for (size_t i = 0; i < q.size(); ++i) {
         double best = std::numeric_limits<double>::infinity();
@@ -116,10 +120,13 @@ void covering_radii(const std::vector<Point>& q, const std::vector<int>& owner, 
 
 }  // namespace
 
-std::vector<Sphere> fit_cell_spheres(Vec3 cell_lower, double cell_size, const std::vector<Vec3>& samples,
-                                     int sphere_count, const SphereFitOptions& options) {
-    if (samples.empty()) throw std::invalid_argument("fit_cell_spheres: a boundary cell needs at least one sample");
-    if (!(cell_size > 0)) throw std::invalid_argument("fit_cell_spheres: cell size must be positive");
+std::vector<Sphere> fit_cell_spheres(Vec3 cell_lower, double cell_size,
+                                     const std::vector<Vec3>& samples, int sphere_count,
+                                     const SphereFitOptions& options) {
+    if (samples.empty())
+        throw std::invalid_argument("fit_cell_spheres: a boundary cell needs at least one sample");
+    if (!(cell_size > 0))
+        throw std::invalid_argument("fit_cell_spheres: cell size must be positive");
     std::vector<Point> q(samples.size());
     for (size_t i = 0; i < samples.size(); ++i) {
         const Vec3 r = (1 / cell_size) * (samples[i] - cell_lower);
@@ -128,7 +135,8 @@ std::vector<Sphere> fit_cell_spheres(Vec3 cell_lower, double cell_size, const st
     // The spacing is capped by that of the same number of samples spread evenly over a flat
     // cell, 0.5 / sqrt(n): a few samples far apart do not make a sphere larger than the cell.
     const double cap = 0.5 / std::sqrt(double(q.size()));
-    const double delta = options.footprint * (q.size() > 1 ? std::min(mean_nearest_neighbour(q), cap) : cap);
+    const double delta =
+        options.footprint * (q.size() > 1 ? std::min(mean_nearest_neighbour(q), cap) : cap);
 
     auto spheres = farthest_point_centres(q, std::max(1, sphere_count));
     std::vector<int> owner = nearest_centres(q, spheres);
@@ -179,11 +187,13 @@ std::vector<Sphere> fit_cell_spheres(Vec3 cell_lower, double cell_size, const st
     result.reserve(spheres.size());
     for (const auto& s : spheres) {
         if (s[3] < 0) continue;
-        Sphere sphere{float(cell_lower.x + cell_size * s[0]), float(cell_lower.y + cell_size * s[1]),
+        Sphere sphere{float(cell_lower.x + cell_size * s[0]),
+                      float(cell_lower.y + cell_size * s[1]),
                       float(cell_lower.z + cell_size * s[2]), float(cell_size * s[3])};
         // Rounding the centre to float moves it by up to half an ulp per axis: grow the radius
         // by that so the samples stay covered in single precision too.
-        const float largest = std::max({std::abs(sphere.x), std::abs(sphere.y), std::abs(sphere.z), sphere.r});
+        const float largest =
+            std::max({std::abs(sphere.x), std::abs(sphere.y), std::abs(sphere.z), sphere.r});
         sphere.r += 2 * (std::nextafter(largest, std::numeric_limits<float>::infinity()) - largest);
         result.push_back(sphere);
     }
@@ -193,7 +203,8 @@ std::vector<Sphere> fit_cell_spheres(Vec3 cell_lower, double cell_size, const st
 int spheres_for_count(double count, double reference_count, int max_spheres) {
     if (max_spheres < 1) throw std::invalid_argument("spheres_for_count: max_spheres must be >= 1");
     if (!(reference_count > 0)) return max_spheres;
-    return int(std::clamp(std::round(max_spheres * count / reference_count), 1.0, double(max_spheres)));
+    return int(
+        std::clamp(std::round(max_spheres * count / reference_count), 1.0, double(max_spheres)));
 }
 
 double reference_count(std::vector<double> counts, double quantile) {

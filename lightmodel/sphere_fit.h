@@ -45,8 +45,9 @@ struct SphereFitOptions {
 
 // Spheres (world coordinates, mm) of the cell whose lower corner is `cell_lower` and edge
 // `cell_size`, fitted to `samples` (the origins sampled in the cell, at least one).
-std::vector<Sphere> fit_cell_spheres(Vec3 cell_lower, double cell_size, const std::vector<Vec3>& samples,
-                                     int sphere_count, const SphereFitOptions& options = {});
+std::vector<Sphere> fit_cell_spheres(Vec3 cell_lower, double cell_size,
+                                     const std::vector<Vec3>& samples, int sphere_count,
+                                     const SphereFitOptions& options = {});
 
 // Spheres for a boundary cell holding `count` rays: K = clamp(round(max_spheres x count /
 // reference_count), 1, max_spheres), so the densest boundary cells get the most spheres and a

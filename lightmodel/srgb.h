@@ -12,14 +12,17 @@ namespace rayset::lightmodel {
 // The efficacy that makes a grey triple (1, 1, 1) of 1 W carry 683 lm.
 inline constexpr double kRgbLumensPerWatt = 683.0;
 // Linear sRGB -> CIE XYZ (the standard's four-digit matrix); row 1 is the luminance weights.
-inline constexpr double kSrgbToXyz[3][3] = {{0.4124, 0.3576, 0.1805}, {0.2126, 0.7152, 0.0722}, {0.0193, 0.1192, 0.9505}};
+inline constexpr double kSrgbToXyz[3][3] = {
+    {0.4124, 0.3576, 0.1805}, {0.2126, 0.7152, 0.0722}, {0.0193, 0.1192, 0.9505}};
 
 inline double luminance(double r, double g, double b) {
     return kSrgbToXyz[1][0] * r + kSrgbToXyz[1][1] * g + kSrgbToXyz[1][2] * b;
 }
 inline double luminance(const Rgb& c) { return luminance(c.red, c.green, c.blue); }
 
-struct Xyz { double x = 0, y = 0, z = 0; };
+struct Xyz {
+    double x = 0, y = 0, z = 0;
+};
 
 Xyz to_xyz(const Rgb& c);
 // The exact inverse of kSrgbToXyz: to_linear_srgb(to_xyz(c)) == c up to rounding.

@@ -4,13 +4,13 @@
 
 #include "support/test_support.h"
 
-#include <ImfRgbaFile.h>
 #include <ImfArray.h>
+#include <ImfRgbaFile.h>
 #include <ceres/ceres.h>
 #include <embree3/rtcore.h>
 #include <openvdb/openvdb.h>
-#include <tbb/parallel_reduce.h>
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkSphereSource.h>
@@ -25,7 +25,8 @@ TEST(Dependencies, EmbreeIntersectsASpherePoint) {
     ASSERT_NE(device, nullptr);
     RTCScene scene = rtcNewScene(device);
     RTCGeometry sphere = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(sphere, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(sphere, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                          RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
     v[0] = 0, v[1] = 0, v[2] = 10, v[3] = 2;  // centre (0,0,10), radius 2
     rtcCommitGeometry(sphere);
     rtcAttachGeometry(scene, sphere);
@@ -70,7 +71,8 @@ TEST(Dependencies, OpenVdbGridRoundTripsThroughAFile) {
 namespace {
 struct DistanceToSphere {
     DistanceToSphere(double x, double y, double z) : x(x), y(y), z(z) {}
-    template <class T> bool operator()(const T* centre, const T* radius, T* residual) const {
+    template <class T>
+    bool operator()(const T* centre, const T* radius, T* residual) const {
         T dx = centre[0] - T(x), dy = centre[1] - T(y), dz = centre[2] - T(z);
         residual[0] = ceres::sqrt(dx * dx + dy * dy + dz * dz) - radius[0];
         return true;
@@ -86,9 +88,10 @@ TEST(Dependencies, CeresFitsASphereToPointsOnIt) {
     const int n = 200;
     for (int i = 0; i < n; ++i) {
         double z = 1 - (2.0 * i + 1) / n, r = std::sqrt(1 - z * z), phi = i * 2.399963229728653;
-        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<DistanceToSphere, 1, 3, 1>(
-                                     new DistanceToSphere(1 + 4 * r * std::cos(phi), -2 + 4 * r * std::sin(phi), 3 + 4 * z)),
-                                 nullptr, centre, &radius);
+        problem.AddResidualBlock(
+            new ceres::AutoDiffCostFunction<DistanceToSphere, 1, 3, 1>(new DistanceToSphere(
+                1 + 4 * r * std::cos(phi), -2 + 4 * r * std::sin(phi), 3 + 4 * z)),
+            nullptr, centre, &radius);
     }
     ceres::Solver::Options options;
     ceres::Solver::Summary summary;

@@ -18,7 +18,7 @@
 namespace rayset::tracer {
 // raytrace_bench.cpp
 void run_raytrace_benchmark(RenderScene& scene, const RenderSettings& settings);
-}
+}  // namespace rayset::tracer
 
 namespace {
 
@@ -28,7 +28,8 @@ namespace fs = std::filesystem;
 
 OutputRequest output_request(const RaytraceOptions& o) {
     OutputRequest request;
-    fs::path exr = o.output.empty() ? fs::path(o.scene).filename().replace_extension(".exr") : fs::path(o.output);
+    fs::path exr = o.output.empty() ? fs::path(o.scene).filename().replace_extension(".exr")
+                                    : fs::path(o.output);
     fs::path png = o.png;
     if (exr.extension() == ".png") {  // +Oimage.png, as a POV-Ray user writes it: the preview
         if (png.empty()) png = exr;
@@ -47,10 +48,13 @@ OutputRequest output_request(const RaytraceOptions& o) {
 void add_animation(CheckpointIdentity& identity, const AnimationSettings& animation) {
     if (!animation.clock_on) return;
     uint64_t hash = identity.scene_hash;  // FNV-1a, continued over the built-ins' bytes
-    const double values[] = {
-        animation.clock, animation.clock_delta, double(animation.frame_number),
-        double(animation.initial_frame), double(animation.final_frame), animation.initial_clock,
-        animation.final_clock};
+    const double values[] = {animation.clock,
+                             animation.clock_delta,
+                             double(animation.frame_number),
+                             double(animation.initial_frame),
+                             double(animation.final_frame),
+                             animation.initial_clock,
+                             animation.final_clock};
     for (const double value : values) {
         unsigned char bytes[sizeof value];
         std::memcpy(bytes, &value, sizeof value);
@@ -62,17 +66,25 @@ void add_animation(CheckpointIdentity& identity, const AnimationSettings& animat
 }
 
 // The image and receiver files of a render and of each of its light layers.
-std::vector<std::string> write_all_outputs(const RenderResult& result, const OutputRequest& request) {
-    std::vector<std::string> written = write_render_outputs(&result.film, result.receivers, request);
-    for (const RenderLayer& layer : result.layers) {  // bidirectional: OUT.LAYER.exr, .png, receiver maps
+std::vector<std::string> write_all_outputs(const RenderResult& result,
+                                           const OutputRequest& request) {
+    std::vector<std::string> written =
+        write_render_outputs(&result.film, result.receivers, request);
+    for (const RenderLayer& layer :
+         result.layers) {  // bidirectional: OUT.LAYER.exr, .png, receiver maps
         OutputRequest layer_request = request;
         auto with_layer = [&](const std::string& path) {
-            return path.empty() ? path : fs::path(path).replace_extension("." + layer.name + fs::path(path).extension().string()).string();
+            return path.empty() ? path
+                                : fs::path(path)
+                                      .replace_extension("." + layer.name +
+                                                         fs::path(path).extension().string())
+                                      .string();
         };
         layer_request.exr = with_layer(request.exr);
         layer_request.png = with_layer(request.png);
         layer_request.receiver_prefix = request.receiver_prefix + "." + layer.name;
-        for (const std::string& file : write_render_outputs(&layer.film, layer.receivers, layer_request))
+        for (const std::string& file :
+             write_render_outputs(&layer.film, layer.receivers, layer_request))
             written.push_back(file);
     }
     return written;
@@ -94,7 +106,8 @@ RenderSettings render_settings(const RaytraceOptions& options, const SceneDescri
                                const RenderSettings& size) {
     RenderSettings settings = size;
     settings.passes = options.passes ? options.passes : description.global.passes;
-    settings.time_limit = options.time_limit >= 0 ? options.time_limit : description.global.time_limit;
+    settings.time_limit =
+        options.time_limit >= 0 ? options.time_limit : description.global.time_limit;
     settings.seed = options.seed;
     settings.threads = options.threads;
     settings.progress = !options.quiet;
@@ -106,10 +119,10 @@ RenderSettings render_settings(const RaytraceOptions& options, const SceneDescri
 }
 
 void print_scene_summary(const std::string& scene, const SceneDescription& description) {
-    fmt::print("{}: {} objects, {} lights, {} ray sources, {} receivers, {}; {} files read\n", scene,
-               description.objects.size(), description.lights.size(), description.ray_sources.size(),
-               description.receivers.size(), description.has_camera ? "a camera" : "no camera",
-               description.files.size());
+    fmt::print("{}: {} objects, {} lights, {} ray sources, {} receivers, {}; {} files read\n",
+               scene, description.objects.size(), description.lights.size(),
+               description.ray_sources.size(), description.receivers.size(),
+               description.has_camera ? "a camera" : "no camera", description.files.size());
 }
 
 // Fails before, not after, the render.
@@ -128,30 +141,39 @@ RenderResult starting_point(const RaytraceOptions& options, const std::string& c
                             const RenderSettings& settings) {
     if (!options.resume) {
         if (fs::exists(checkpoint_path) && !options.quiet)
-            std::fprintf(stderr, "raytrace: note: starting afresh; %s will be replaced (--resume continues it)\n",
-                         checkpoint_path.c_str());
+            std::fprintf(
+                stderr,
+                "raytrace: note: starting afresh; %s will be replaced (--resume continues it)\n",
+                checkpoint_path.c_str());
         return {};
     }
     if (!fs::exists(checkpoint_path))
-        throw Error(checkpoint_path + ": no checkpoint to resume from (it is removed when a render completes; "
-                                      "--keep-checkpoint keeps it)");
-    RenderResult start = read_checkpoint(checkpoint_path, identity, blank_render(description, settings));
+        throw Error(checkpoint_path +
+                    ": no checkpoint to resume from (it is removed when a render completes; "
+                    "--keep-checkpoint keeps it)");
+    RenderResult start =
+        read_checkpoint(checkpoint_path, identity, blank_render(description, settings));
     if (!options.quiet)
-        fmt::print("resuming from {}: {} passes done in {:.2f} s\n", checkpoint_path, start.passes, start.seconds);
+        fmt::print("resuming from {}: {} passes done in {:.2f} s\n", checkpoint_path, start.passes,
+                   start.seconds);
     return start;
 }
 
 void print_render_summary(const RenderSettings& settings, const RenderResult& result,
                           const std::vector<std::string>& written) {
-    fmt::print("{} x {} pixels, {} passes of {} sample{} per pixel in {:.2f} s, {:.3g} rays ({:.3g} rays/s)\n",
-               settings.width, settings.height, result.passes, result.samples_per_pass,
-               result.samples_per_pass == 1 ? "" : "s", result.seconds, double(result.rays),
-               result.rays / result.seconds);
+    fmt::print(
+        "{} x {} pixels, {} passes of {} sample{} per pixel in {:.2f} s, {:.3g} rays ({:.3g} "
+        "rays/s)\n",
+        settings.width, settings.height, result.passes, result.samples_per_pass,
+        result.samples_per_pass == 1 ? "" : "s", result.seconds, double(result.rays),
+        result.rays / result.seconds);
     if (result.photons)
-        fmt::print("{:.3g} photons ({:.3g} photons/s), final gather radius {:.4g}; photon grid {:.1f} MiB, "
-                   "visible points {:.1f} MiB (largest pass)\n",
-                   double(result.photons), result.photons / result.seconds, result.photon_radius,
-                   result.photon_bytes / 1048576.0, result.visible_point_bytes / 1048576.0);
+        fmt::print(
+            "{:.3g} photons ({:.3g} photons/s), final gather radius {:.4g}; photon grid {:.1f} "
+            "MiB, "
+            "visible points {:.1f} MiB (largest pass)\n",
+            double(result.photons), result.photons / result.seconds, result.photon_radius,
+            result.photon_bytes / 1048576.0, result.visible_point_bytes / 1048576.0);
     for (const std::string& file : written) fmt::print("wrote {}\n", file);
 }
 
@@ -166,13 +188,16 @@ int render_share(const RenderScene& scene, const RenderSettings& settings) {
 }
 
 // The render with checkpoints and interruption, then its files; the exit code.
-int render_to_files(const RenderScene& scene, const RenderSettings& settings, const RaytraceOptions& options,
-                    const OutputRequest& request, const AnimationSettings& frame) {
+int render_to_files(const RenderScene& scene, const RenderSettings& settings,
+                    const RaytraceOptions& options, const OutputRequest& request,
+                    const AnimationSettings& frame) {
     const std::string checkpoint_path = request.receiver_prefix + ".checkpoint";
     CheckpointIdentity identity = checkpoint_identity(scene.description(), settings);
     add_animation(identity, frame);
-    RenderResult start = starting_point(options, checkpoint_path, identity, scene.description(), settings);
-    CheckpointSchedule checkpoints(checkpoint_path, identity, options.checkpoint_interval, start.passes);
+    RenderResult start =
+        starting_point(options, checkpoint_path, identity, scene.description(), settings);
+    CheckpointSchedule checkpoints(checkpoint_path, identity, options.checkpoint_interval,
+                                   start.passes);
     const InterruptSignals interrupt;  // SIGINT, SIGTERM: stop between or within passes
     RenderControl control;
     control.after_pass = [&](const RenderResult& state) { checkpoints.after_pass(state); };
@@ -180,20 +205,25 @@ int render_to_files(const RenderScene& scene, const RenderSettings& settings, co
     control.stop = &interrupt.flag();
     const RenderResult result = render(scene, settings, std::move(start), control);
     if (interrupt.signal() && result.passes == 0) {
-        std::fprintf(stderr, "raytrace: interrupted (%s) before the first pass was complete; nothing written\n",
-                     interrupt.signal_name());
+        std::fprintf(
+            stderr,
+            "raytrace: interrupted (%s) before the first pass was complete; nothing written\n",
+            interrupt.signal_name());
         return interrupt.exit_code();
     }
 
     std::vector<std::string> written = write_all_outputs(result, request);
     // The outputs first: a checkpoint is never removed before what it led to is on disk.
-    if (interrupt.signal() || options.keep_checkpoint) checkpoints.write(result);
-    else checkpoints.remove();
+    if (interrupt.signal() || options.keep_checkpoint)
+        checkpoints.write(result);
+    else
+        checkpoints.remove();
     if (interrupt.signal()) {
-        std::fprintf(stderr,
-                     "raytrace: interrupted (%s) after %d passes; wrote the outputs of pass %d and %s.\n"
-                     "Continue with the same command and --resume.\n",
-                     interrupt.signal_name(), result.passes, result.passes, checkpoint_path.c_str());
+        std::fprintf(
+            stderr,
+            "raytrace: interrupted (%s) after %d passes; wrote the outputs of pass %d and %s.\n"
+            "Continue with the same command and --resume.\n",
+            interrupt.signal_name(), result.passes, result.passes, checkpoint_path.c_str());
         return interrupt.exit_code();
     }
     if (!options.quiet) print_render_summary(settings, result, written);
@@ -207,17 +237,20 @@ int run(int argc, char** argv) {
     const Processes& processes = Processes::world();
     if (!processes.is_root()) options.quiet = true;
     if (processes.size() > 1 && (options.parse_only || options.bench))
-        throw Error("--parse-only and --bench run in one process: start raytrace without mpirun for them");
+        throw Error(
+            "--parse-only and --bench run in one process: start raytrace without mpirun for them");
 
     RenderSettings size;
     if (options.width) size.width = options.width;
     if (options.height) size.height = options.height;
     const AnimationFrames frames = animation_frames(options.animation, size.width, size.height);
     if (frames.last_frame > frames.first_frame && !options.quiet)
-        std::fprintf(stderr, "raytrace: note: rendering frame %d only of frames %d to %d (one frame "
-                             "per run; +SF chooses it)\n",
+        std::fprintf(stderr,
+                     "raytrace: note: rendering frame %d only of frames %d to %d (one frame "
+                     "per run; +SF chooses it)\n",
                      frames.first_frame, frames.first_frame, frames.last_frame);
-    const SceneDescription description = parse_scene_file(options.scene, parse_options_of(options, frames.first));
+    const SceneDescription description =
+        parse_scene_file(options.scene, parse_options_of(options, frames.first));
     if (options.parse_only) {
         print_scene_summary(options.scene, description);
         return 0;

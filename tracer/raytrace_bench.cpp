@@ -25,8 +25,10 @@ void run_raytrace_benchmark(RenderScene& scene, const RenderSettings& base) {
     size_t shadow = 0;
     for (const RecordedRay& r : rays) shadow += r.shadow;
 
-    fmt::print("scene: {} objects; image {} x {}, {} passes; one pass casts {} rays ({} occlusion)\n",
-               scene.description().objects.size(), settings.width, settings.height, settings.passes, rays.size(), shadow);
+    fmt::print(
+        "scene: {} objects; image {} x {}, {} passes; one pass casts {} rays ({} occlusion)\n",
+        scene.description().objects.size(), settings.width, settings.height, settings.passes,
+        rays.size(), shadow);
     // Best of 5 alternating rounds: on a shared machine other work only ever slows a round down.
     double renderer_one = 0, bare_one = 0;
     for (int threads : {1, 2}) {
@@ -35,13 +37,17 @@ void run_raytrace_benchmark(RenderScene& scene, const RenderSettings& base) {
         for (int round = 0; round < 5; ++round) {
             const RenderResult result = render(scene, settings);
             renderer = std::max(renderer, result.rays / result.seconds);
-            bare = std::max(bare, scene.bare_embree_rays_per_second(rays, threads, settings.passes));
+            bare =
+                std::max(bare, scene.bare_embree_rays_per_second(rays, threads, settings.passes));
         }
         if (threads == 1) renderer_one = renderer, bare_one = bare;
-        fmt::print("threads {}: renderer {:.4g} rays/s, bare rtcIntersect1/rtcOccluded1 {:.4g} rays/s, ratio {:.2f}",
-                   threads, renderer, bare, renderer / bare);
+        fmt::print(
+            "threads {}: renderer {:.4g} rays/s, bare rtcIntersect1/rtcOccluded1 {:.4g} rays/s, "
+            "ratio {:.2f}",
+            threads, renderer, bare, renderer / bare);
         if (threads == 2)
-            fmt::print("; scaling 1->2 threads: renderer x{:.2f}, bare x{:.2f}", renderer / renderer_one, bare / bare_one);
+            fmt::print("; scaling 1->2 threads: renderer x{:.2f}, bare x{:.2f}",
+                       renderer / renderer_one, bare / bare_one);
         fmt::print("\n");
     }
 }

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "core/error.h"
 
@@ -17,7 +17,8 @@ namespace rayset::tracer {
 
 namespace {
 
-constexpr const char* kDescription = R"(raytrace: render a POV-Ray-style scene with a physically based path tracer.
+constexpr const char* kDescription =
+    R"(raytrace: render a POV-Ray-style scene with a physically based path tracer.
 
 Writes OUT.exr (linear R,G,B radiance in W/(m^2 sr) per linear-sRGB channel, and Y, the
 luminance in cd/m^2 = 683 * (0.2126 R + 0.7152 G + 0.0722 B)), a PNG preview (sRGB, auto
@@ -29,7 +30,8 @@ tracer/render/README.md for every convention.
 Examples:
   raytrace cornell.pov +W640 +H480 +Ocornell.exr --passes 64
   raytrace scene.pov --time 60 --threads 2 --seed 7 -o out/scene.exr
-  raytrace render.ini            (Width=, Height=, Input_File_Name=, Output_File_Name=, Library_Path=)
+  raytrace render.ini
+      (Width=, Height=, Input_File_Name=, Output_File_Name=, Library_Path=)
 
 Stop and resume: while it renders, raytrace keeps OUT.checkpoint (OUT.exr with .checkpoint),
 the state after a completed pass: written after the first pass, then at most every
@@ -72,7 +74,8 @@ int parse_size(const std::string& value, const std::string& what, const std::str
         if (used == value.size() && v >= 1 && v <= 65536) return int(v);
     } catch (const std::exception&) {
     }
-    throw Error(fmt::format("{}: {} must be a whole number from 1 to 65536, got '{}'", where, what, value));
+    throw Error(
+        fmt::format("{}: {} must be a whole number from 1 to 65536, got '{}'", where, what, value));
 }
 
 double parse_number(const std::string& value, const std::string& what, const std::string& where) {
@@ -88,12 +91,14 @@ double parse_number(const std::string& value, const std::string& what, const std
 int parse_frame(const std::string& value, const std::string& what, const std::string& where) {
     const double v = parse_number(value, what, where);
     if (v != std::floor(v) || std::abs(v) > 1e9)
-        throw Error(fmt::format("{}: {} must be a whole frame number, got '{}'", where, what,
-                                value));
+        throw Error(
+            fmt::format("{}: {} must be a whole frame number, got '{}'", where, what, value));
     return int(v);
 }
 
-bool ends_with_ini(const std::string& arg) { return arg.size() > 4 && lower(arg.substr(arg.size() - 4)) == ".ini"; }
+bool ends_with_ini(const std::string& arg) {
+    return arg.size() > 4 && lower(arg.substr(arg.size() - 4)) == ".ini";
+}
 
 // A setting that a + switch and an .ini key both give; `apply` reads its value (`what` names it
 // in messages, `where` is the command line or FILE:LINE).
@@ -157,29 +162,73 @@ constexpr const char* kSupportedSwitches = "+W +H +O +I +L +K +KFI +KFF +KI +KF 
 // output: they have nothing to act on in a progressive physical renderer, which always writes its
 // image, so a POV-Ray .ini file may keep them (the sample scenes' .ini files carry them). They are
 // read and have no effect.
-const char* const kIniKeysWithoutEffect[] = {
-    "antialias", "antialias_threshold", "antialias_depth", "antialias_gamma", "jitter",
-    "jitter_amount", "sampling_method", "pause_when_done", "output_file_type", "output_alpha",
-    "output_to_file", "bits_per_color", "test_abort", "test_abort_count", "verbose", "display",
-    "display_gamma", "dither", "dither_method", "palette", "preview_start_size", "preview_end_size",
-    "warning_console", "debug_console", "fatal_console", "render_console", "statistic_console",
-    "all_console", "render_pattern", "render_block_size", "render_block_step", "draw_vistas",
-    "all_file", "debug_file", "fatal_file", "render_file", "statistic_file", "warning_file",
-    "create_ini", "quality", "bounding", "bounding_method", "bounding_threshold", "light_buffer",
-    "vista_buffer", "remove_bounds", "split_unions", "high_reproducibility", "radiosity_vain_pretrace",
-    "pre_scene_return", "pre_frame_return", "post_frame_return", "post_scene_return",
-    "user_abort_return", "fatal_error_return"};
+const char* const kIniKeysWithoutEffect[] = {"antialias",
+                                             "antialias_threshold",
+                                             "antialias_depth",
+                                             "antialias_gamma",
+                                             "jitter",
+                                             "jitter_amount",
+                                             "sampling_method",
+                                             "pause_when_done",
+                                             "output_file_type",
+                                             "output_alpha",
+                                             "output_to_file",
+                                             "bits_per_color",
+                                             "test_abort",
+                                             "test_abort_count",
+                                             "verbose",
+                                             "display",
+                                             "display_gamma",
+                                             "dither",
+                                             "dither_method",
+                                             "palette",
+                                             "preview_start_size",
+                                             "preview_end_size",
+                                             "warning_console",
+                                             "debug_console",
+                                             "fatal_console",
+                                             "render_console",
+                                             "statistic_console",
+                                             "all_console",
+                                             "render_pattern",
+                                             "render_block_size",
+                                             "render_block_step",
+                                             "draw_vistas",
+                                             "all_file",
+                                             "debug_file",
+                                             "fatal_file",
+                                             "render_file",
+                                             "statistic_file",
+                                             "warning_file",
+                                             "create_ini",
+                                             "quality",
+                                             "bounding",
+                                             "bounding_method",
+                                             "bounding_threshold",
+                                             "light_buffer",
+                                             "vista_buffer",
+                                             "remove_bounds",
+                                             "split_unions",
+                                             "high_reproducibility",
+                                             "radiosity_vain_pretrace",
+                                             "pre_scene_return",
+                                             "pre_frame_return",
+                                             "post_frame_return",
+                                             "post_scene_return",
+                                             "user_abort_return",
+                                             "fatal_error_return"};
 
 // Options that change what POV-Ray renders or does when they are on (interlaced fields, grey
 // output, a continued or real-time render, radiosity data files): read when off, refused when on.
-const char* const kIniKeysOnlyOff[] = {
-    "field_render", "odd_field", "grayscale_output", "continue_trace", "clockless_animation",
-    "real_time_raytracing", "radiosity_from_file", "radiosity_to_file"};
+const char* const kIniKeysOnlyOff[] = {"field_render",        "odd_field",
+                                       "grayscale_output",    "continue_trace",
+                                       "clockless_animation", "real_time_raytracing",
+                                       "radiosity_from_file", "radiosity_to_file"};
 
 // Shell commands POV-Ray runs around a render and a header it includes before the scene: read
 // when empty, refused otherwise (raytrace runs no commands and reads only the scene).
 const char* const kIniKeysOnlyEmpty[] = {
-    "pre_scene_command", "pre_frame_command", "post_frame_command", "post_scene_command",
+    "pre_scene_command",  "pre_frame_command",   "post_frame_command", "post_scene_command",
     "user_abort_command", "fatal_error_command", "include_header"};
 
 // The region to render, as a fraction (0 to 1) or a pixel number: only the whole image is read.
@@ -243,8 +292,10 @@ void apply_pov_switch(const std::string& text, const std::string& where, Raytrac
         setting.apply(text.substr(1 + length), setting.what, where, o);
         return;
     }
-    throw Error(fmt::format("{}: POV-Ray switch '{}' is not supported (supported, each with a "
-                            "value: {})", where, text, kSupportedSwitches));
+    throw Error(
+        fmt::format("{}: POV-Ray switch '{}' is not supported (supported, each with a "
+                    "value: {})",
+                    where, text, kSupportedSwitches));
 }
 
 void apply_ini_file(const std::string& path, RaytraceOptions& o) {
@@ -259,12 +310,15 @@ void apply_ini_file(const std::string& path, RaytraceOptions& o) {
             // Switches, several to a line, and Key=Value among them (POV-Ray reads these too).
             std::istringstream words(line);
             for (std::string word; words >> word;) {
-                if (word[0] == '+' || word[0] == '-') apply_pov_switch(word, where, o);
-                else apply_ini_setting(word, where, o);
+                if (word[0] == '+' || word[0] == '-')
+                    apply_pov_switch(word, where, o);
+                else
+                    apply_ini_setting(word, where, o);
             }
             continue;
         }
-        if (line[0] == '[') throw Error(fmt::format("{}: not supported: .ini sections ('{}')", where, line));
+        if (line[0] == '[')
+            throw Error(fmt::format("{}: not supported: .ini sections ('{}')", where, line));
         apply_ini_setting(line, where, o);
     }
 }
@@ -275,7 +329,8 @@ void apply_ini_setting(const std::string& line, const std::string& where, Raytra
         throw Error(fmt::format("{}: expected 'Key=Value' or a +switch, found '{}'", where, line));
     const std::string key = lower(trim(line.substr(0, equals)));
     std::string value = trim(line.substr(equals + 1));
-    if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
+    if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
+        value = value.substr(1, value.size() - 2);
     const std::string name = trim(line.substr(0, equals));
     if (one_of(key, kIniKeysWithoutEffect)) return;
     if (one_of(key, kIniKeysOnlyOff)) {
@@ -284,17 +339,19 @@ void apply_ini_setting(const std::string& line, const std::string& where, Raytra
     }
     if (one_of(key, kIniKeysOnlyEmpty)) {
         if (value.empty()) return;
-        throw Error(fmt::format("{}: not supported: {}={} (raytrace runs no commands and reads no "
-                                "header: remove the option)",
-                                where, name, value));
+        throw Error(
+            fmt::format("{}: not supported: {}={} (raytrace runs no commands and reads no "
+                        "header: remove the option)",
+                        where, name, value));
     }
     if (one_of(key, kIniRegionKeys)) {
         const bool start = key.rfind("start_", 0) == 0;
         char* end = nullptr;
         const double v = std::strtod(value.c_str(), &end);
         if (*end == '\0' && !value.empty() && (start ? v >= 0 && v <= 1 : v == 1)) return;
-        throw Error(fmt::format("{}: not supported: {}={} (only the whole image: render it and crop)",
-                                where, name, value));
+        throw Error(
+            fmt::format("{}: not supported: {}={} (only the whole image: render it and crop)",
+                        where, name, value));
     }
     if (key == "version") {
         if (value == "3.7" || value == "3.70") return;
@@ -309,10 +366,11 @@ void apply_ini_setting(const std::string& line, const std::string& where, Raytra
     const auto setting = std::find_if(std::begin(kPovSettings), std::end(kPovSettings),
                                       [&](const PovSetting& s) { return key == s.ini_key; });
     if (setting == std::end(kPovSettings))
-        throw Error(fmt::format("{}: not supported: .ini option '{}' (supported: {}, Cyclic_Animation, "
-                                "Declare; POV-Ray's antialiasing, bounding, quality, display, console and "
-                                "output options are read and have no effect)",
-                                where, name, kSupportedIniKeys));
+        throw Error(
+            fmt::format("{}: not supported: .ini option '{}' (supported: {}, Cyclic_Animation, "
+                        "Declare; POV-Ray's antialiasing, bounding, quality, display, console and "
+                        "output options are read and have no effect)",
+                        where, name, kSupportedIniKeys));
     setting->apply(value, setting->what, where, o);
 }
 
@@ -361,59 +419,82 @@ struct CommandLine {
 
 void add_image_options(CLI::App& app, RaytraceOptions& o, CommandLine& c) {
     app.add_option("scene", c.scene, "Scene file (.pov); or +Ifile / Input_File_Name=");
-    app.add_option("-o,--output", c.output, "Output OpenEXR file (default: SCENE-NAME.exr here); or +Ofile");
+    app.add_option("-o,--output", c.output,
+                   "Output OpenEXR file (default: SCENE-NAME.exr here); or +Ofile");
     app.add_option("--png", c.png, "Preview PNG file (default: the output's name with .png)");
     app.add_flag("--no-png", o.no_png, "Write no PNG preview");
-    app.add_option("--width", c.width, "Image width in pixels (default 320); or +Wn")->check(CLI::Range(1, 65536));
+    app.add_option("--width", c.width, "Image width in pixels (default 320); or +Wn")
+        ->check(CLI::Range(1, 65536));
     app.add_option("--height", c.height, "Image height in pixels (default 240); or +Hn")
         ->check(CLI::Range(1, 65536));
-    app.add_option("--passes", c.passes, "Progressive passes (default: the scene's `passes`, else 16, "
-                                         "or unlimited with a time limit)")->check(CLI::PositiveNumber);
-    app.add_option("--time", c.time_limit, "Time budget in seconds, checked between passes (default: the scene's "
-                                           "`time_limit`)")->check(CLI::NonNegativeNumber);
-    app.add_option("--threads", c.threads, "Threads (default: every core); the image does not depend on it")
+    app.add_option("--passes", c.passes,
+                   "Progressive passes (default: the scene's `passes`, else 16, "
+                   "or unlimited with a time limit)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--time", c.time_limit,
+                   "Time budget in seconds, checked between passes (default: the scene's "
+                   "`time_limit`)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--threads", c.threads,
+                   "Threads (default: every core); the image does not depend on it")
         ->check(CLI::NonNegativeNumber);
     app.add_option("--seed", c.seed, "Random seed (default 0): same seed and passes, same image");
-    app.add_option("--include-path", c.includes, "Folder searched for #include and mesh files (repeatable); or +Ldir");
-    app.add_option("--exposure", c.exposure, "PNG preview: multiply radiance in W/(m^2 sr) by this before sRGB "
-                                             "(default: 1 / 99th percentile of the largest channel of the lit pixels)")->check(CLI::PositiveNumber);
+    app.add_option("--include-path", c.includes,
+                   "Folder searched for #include and mesh files (repeatable); or +Ldir");
+    app.add_option("--exposure", c.exposure,
+                   "PNG preview: multiply radiance in W/(m^2 sr) by this before sRGB "
+                   "(default: 1 / 99th percentile of the largest channel of the lit pixels)")
+        ->check(CLI::PositiveNumber);
 }
 
 void add_tool_options(CLI::App& app, RaytraceOptions& o) {
-    app.add_flag("--bench", o.bench, "Benchmark: renderer rays/s against bare Embree rtcIntersect1 on the same "
-                                     "rays, 1 and 2 threads; writes nothing");
+    app.add_flag("--bench", o.bench,
+                 "Benchmark: renderer rays/s against bare Embree rtcIntersect1 on the same "
+                 "rays, 1 and 2 threads; writes nothing");
     app.add_flag("-q,--quiet", o.quiet, "No progress bar or summary");
-    app.add_flag("--parse-only", o.parse_only, "Read the scene (includes, macros, every statement) and say what it "
-                                               "holds or why it cannot be read; render nothing");
-    app.add_option("--allow-write", o.write_roots, "Folder the scene's #fopen ... write/append may write to, "
-                                                   "relative names from the working directory (repeatable; "
-                                                   "default: none, writing is refused)");
-    app.add_option("--max-parse-memory", o.max_parse_memory_mb, "Megabytes the scene may make the parser grow by "
-                                                                "(default: half the RAM)")->check(CLI::PositiveNumber);
+    app.add_flag("--parse-only", o.parse_only,
+                 "Read the scene (includes, macros, every statement) and say what it "
+                 "holds or why it cannot be read; render nothing");
+    app.add_option("--allow-write", o.write_roots,
+                   "Folder the scene's #fopen ... write/append may write to, "
+                   "relative names from the working directory (repeatable; "
+                   "default: none, writing is refused)");
+    app.add_option("--max-parse-memory", o.max_parse_memory_mb,
+                   "Megabytes the scene may make the parser grow by "
+                   "(default: half the RAM)")
+        ->check(CLI::PositiveNumber);
 }
 
 void add_transport_options(CLI::App& app, RaytraceOptions& o) {
-    app.add_option("--photons", o.photons_per_pass, "Bidirectional: photons per pass (default: the pass's camera "
-                                                    "samples, at least 65536; a pass takes photons / (pixels + "
-                                                    "receiver cells) samples per pixel and cell, at least 1)")->check(CLI::PositiveNumber);
-    app.add_option("--photon-radius", o.photon_radius, "Bidirectional: gather radius of the first pass in scene "
-                                                       "units (default: 1/100 of the visible points' extent)")
+    app.add_option("--photons", o.photons_per_pass,
+                   "Bidirectional: photons per pass (default: the pass's camera "
+                   "samples, at least 65536; a pass takes photons / (pixels + "
+                   "receiver cells) samples per pixel and cell, at least 1)")
         ->check(CLI::PositiveNumber);
-    app.add_flag("--naive-sources", o.naive_sources, "Bidirectional: ray sources as their stored rays (the naive "
-                                                     "model of the paper's Figure 1) instead of the light model");
-    app.add_flag("--spectral", o.spectral, "Spectral transport, either integrator (4 hero wavelengths per path "
-                                           "and photon, sources' spectra, RGB lights and materials upsampled) "
-                                           "instead of RGB; "
-                                           "also global_settings { spectral on }");
+    app.add_option("--photon-radius", o.photon_radius,
+                   "Bidirectional: gather radius of the first pass in scene "
+                   "units (default: 1/100 of the visible points' extent)")
+        ->check(CLI::PositiveNumber);
+    app.add_flag("--naive-sources", o.naive_sources,
+                 "Bidirectional: ray sources as their stored rays (the naive "
+                 "model of the paper's Figure 1) instead of the light model");
+    app.add_flag("--spectral", o.spectral,
+                 "Spectral transport, either integrator (4 hero wavelengths per path "
+                 "and photon, sources' spectra, RGB lights and materials upsampled) "
+                 "instead of RGB; "
+                 "also global_settings { spectral on }");
 }
 
 void add_checkpoint_options(CLI::App& app, RaytraceOptions& o) {
-    app.add_flag("--resume", o.resume, "Continue the interrupted render whose checkpoint is OUT.checkpoint (same "
-                                       "scene and options), up to --passes or --time in total");
-    app.add_flag("--keep-checkpoint", o.keep_checkpoint, "Keep OUT.checkpoint after the render completes (to "
-                                                         "resume later with more passes)");
-    app.add_option("--checkpoint-interval", o.checkpoint_interval, "Seconds between checkpoints (default 10; 0: "
-                                                                   "after every pass)")
+    app.add_flag("--resume", o.resume,
+                 "Continue the interrupted render whose checkpoint is OUT.checkpoint (same "
+                 "scene and options), up to --passes or --time in total");
+    app.add_flag("--keep-checkpoint", o.keep_checkpoint,
+                 "Keep OUT.checkpoint after the render completes (to "
+                 "resume later with more passes)");
+    app.add_option("--checkpoint-interval", o.checkpoint_interval,
+                   "Seconds between checkpoints (default 10; 0: "
+                   "after every pass)")
         ->check(CLI::NonNegativeNumber);
 }
 
@@ -437,10 +518,14 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
     std::vector<std::string> ini_files, pov_switches, rest;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg.size() > 1 && arg[0] == '+') pov_switches.push_back(arg);
-        else if (lower(arg).rfind("declare=", 0) == 0) pov_switches.push_back(arg);
-        else if (ends_with_ini(arg) && arg[0] != '-') ini_files.push_back(arg);
-        else rest.push_back(arg);
+        if (arg.size() > 1 && arg[0] == '+')
+            pov_switches.push_back(arg);
+        else if (lower(arg).rfind("declare=", 0) == 0)
+            pov_switches.push_back(arg);
+        else if (ends_with_ini(arg) && arg[0] != '-')
+            ini_files.push_back(arg);
+        else
+            rest.push_back(arg);
     }
     CLI::App app(kDescription, "raytrace");
     app.get_formatter()->column_width(34);
@@ -458,13 +543,17 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
     }
     for (const std::string& ini : ini_files) apply_ini_file(ini, o);
     for (const std::string& s : pov_switches) {
-        if (s[0] == '+') apply_pov_switch(s, "command line", o);
-        else apply_ini_setting(s, "command line", o);
+        if (s[0] == '+')
+            apply_pov_switch(s, "command line", o);
+        else
+            apply_ini_setting(s, "command line", o);
     }
     apply_command_line(command_line, o);
     if (o.scene.empty()) {
-        std::fprintf(stderr, "raytrace: no scene file given (raytrace SCENE.pov, +ISCENE.pov or Input_File_Name= in an "
-                             ".ini file); see raytrace --help\n");
+        std::fprintf(stderr,
+                     "raytrace: no scene file given (raytrace SCENE.pov, +ISCENE.pov or "
+                     "Input_File_Name= in an "
+                     ".ini file); see raytrace --help\n");
         exit_code = 2;
         return false;
     }

@@ -16,19 +16,20 @@ namespace rayset::tracer {
 
 // POV-Ray's animation options as given; unset: not given.
 struct AnimationOptions {
-    std::optional<double> clock;                      // +K, Clock=
-    std::optional<int> initial_frame, final_frame;    // +KFI +KFF, Initial_Frame= Final_Frame=
+    std::optional<double> clock;                       // +K, Clock=
+    std::optional<int> initial_frame, final_frame;     // +KFI +KFF, Initial_Frame= Final_Frame=
     std::optional<double> initial_clock, final_clock;  // +KI +KF, Initial_Clock= Final_Clock=
     // +SF +EF, Subset_Start_Frame= Subset_End_Frame=: a frame number, or a value strictly between
     // 0 and 1 for a fraction of the frames.
     std::optional<double> subset_start, subset_end;
-    bool cyclic = false;  // +KC, Cyclic_Animation=on: the last frame stops one step short of the end
+    bool cyclic =
+        false;  // +KC, Cyclic_Animation=on: the last frame stops one step short of the end
 };
 
 struct RaytraceOptions {
     std::string scene;
-    std::string output;       // EXR path; default: the scene's name with .exr, in the current folder
-    std::string png;          // preview path; default: the EXR's path with .png
+    std::string output;  // EXR path; default: the scene's name with .exr, in the current folder
+    std::string png;     // preview path; default: the EXR's path with .png
     bool no_png = false;
     int width = 0, height = 0;  // 0: the renderer's default (320 x 240)
     int passes = 0;             // 0: the scene's `passes`, else the renderer's rule
@@ -38,16 +39,16 @@ struct RaytraceOptions {
     double exposure = 0;
     std::vector<std::string> include_paths;
     bool bench = false;
-    bool parse_only = false;                 // read the scene, report what it holds, render nothing
-    std::vector<std::string> write_roots;    // folders the scene's #fopen may write to
+    bool parse_only = false;               // read the scene, report what it holds, render nothing
+    std::vector<std::string> write_roots;  // folders the scene's #fopen may write to
     std::vector<std::pair<std::string, double>> declarations;  // Declare=NAME=VALUE
-    long max_parse_memory_mb = 0;            // 0: the parser's default (half the RAM)
+    long max_parse_memory_mb = 0;  // 0: the parser's default (half the RAM)
     bool quiet = false;
     // Bidirectional integrator (global_settings { integrator "bidirectional" }).
-    int photons_per_pass = 0;     // 0: the renderer's default
-    double photon_radius = 0;     // scene units; 0: the renderer's default
-    bool naive_sources = false;   // ray sources as their stored rays (paper Figure 1)
-    bool spectral = false;        // spectral transport (bidirectional)
+    int photons_per_pass = 0;    // 0: the renderer's default
+    double photon_radius = 0;    // scene units; 0: the renderer's default
+    bool naive_sources = false;  // ray sources as their stored rays (paper Figure 1)
+    bool spectral = false;       // spectral transport (bidirectional)
     // Stop and resume: OUT.checkpoint beside the output holds the last completed pass.
     bool resume = false;              // continue from OUT.checkpoint
     bool keep_checkpoint = false;     // keep OUT.checkpoint after a completed render
@@ -57,7 +58,7 @@ struct RaytraceOptions {
 
 // The frames POV-Ray would render and the built-ins of the first of them.
 struct AnimationFrames {
-    AnimationSettings first;   // clock, frame_number, ..., image_width and image_height
+    AnimationSettings first;              // clock, frame_number, ..., image_width and image_height
     int first_frame = 0, last_frame = 0;  // equal: one frame (also without animation)
 };
 

@@ -2,9 +2,9 @@
 #include "tracer/raytrace_resume.h"
 
 #include <csignal>
-#include <utility>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include <unistd.h>
 
@@ -24,7 +24,8 @@ extern "C" void on_interrupt(int number) {
     received_signal.store(number);
     stop_flag.store(true);
     static const char message[] =
-        "\nraytrace: stopping: writing the last completed pass and the checkpoint (again to quit at once)\n";
+        "\nraytrace: stopping: writing the last completed pass and the checkpoint (again to quit "
+        "at once)\n";
     const ssize_t ignored = write(STDERR_FILENO, message, sizeof message - 1);
     (void)ignored;
 }
@@ -56,8 +57,8 @@ const char* InterruptSignals::signal_name() const {
     return signal() == SIGINT ? "SIGINT" : signal() == SIGTERM ? "SIGTERM" : "no signal";
 }
 
-CheckpointSchedule::CheckpointSchedule(std::string path, CheckpointIdentity identity, double interval,
-                                       int passes_on_disk)
+CheckpointSchedule::CheckpointSchedule(std::string path, CheckpointIdentity identity,
+                                       double interval, int passes_on_disk)
     : path_(std::move(path)),
       identity_(std::move(identity)),
       interval_(interval),
@@ -65,7 +66,8 @@ CheckpointSchedule::CheckpointSchedule(std::string path, CheckpointIdentity iden
       last_write_(std::chrono::steady_clock::now()) {}
 
 bool CheckpointSchedule::due() const {
-    const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_write_).count();
+    const double since =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - last_write_).count();
     return passes_on_disk_ == 0 || since >= interval_;
 }
 
@@ -74,7 +76,9 @@ void CheckpointSchedule::after_pass(const RenderResult& state) {
     try {
         write(state);
     } catch (const Error& e) {
-        std::fprintf(stderr, "raytrace: warning: %s (the render goes on; retried after the next pass)\n", e.what());
+        std::fprintf(stderr,
+                     "raytrace: warning: %s (the render goes on; retried after the next pass)\n",
+                     e.what());
     }
 }
 

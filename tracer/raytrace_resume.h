@@ -32,7 +32,8 @@ class CheckpointSchedule {
 public:
     // `passes_on_disk`: the passes of the checkpoint already at `path` that this render
     // continues (0 for a fresh render, whose file is replaced at its first pass).
-    CheckpointSchedule(std::string path, CheckpointIdentity identity, double interval, int passes_on_disk);
+    CheckpointSchedule(std::string path, CheckpointIdentity identity, double interval,
+                       int passes_on_disk);
     // Whether after_pass would write now.
     bool due() const;
     // A failed write here is reported on stderr and retried at the next pass: the render goes on.

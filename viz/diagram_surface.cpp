@@ -7,8 +7,8 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 
-#include <cmath>
 #include <fmt/format.h>
+#include <cmath>
 
 namespace rayset::viz {
 
@@ -36,15 +36,17 @@ lightmodel::Coord brightest_intensity_cell(const lightmodel::LightModel& model) 
     return model.diagram_cells[best];
 }
 
-vtkSmartPointer<vtkPolyData> diagram_surface(const lightmodel::LightModel& model, const lightmodel::Coord& cell,
-                                             int rings, int sectors) {
+vtkSmartPointer<vtkPolyData> diagram_surface(const lightmodel::LightModel& model,
+                                             const lightmodel::Coord& cell, int rings,
+                                             int sectors) {
     const int k = diagram_index(model, cell);
     if (k < 0) {
         std::string cells;
         for (size_t i = 0; i < model.diagram_cells.size() && i < 32; ++i)
-            cells += fmt::format(" {},{},{}", model.diagram_cells[i][0], model.diagram_cells[i][1], model.diagram_cells[i][2]);
-        throw Error(fmt::format("intensity cell {},{},{} emits nothing; cells with a diagram:{}", cell[0], cell[1],
-                                cell[2], cells));
+            cells += fmt::format(" {},{},{}", model.diagram_cells[i][0], model.diagram_cells[i][1],
+                                 model.diagram_cells[i][2]);
+        throw Error(fmt::format("intensity cell {},{},{} emits nothing; cells with a diagram:{}",
+                                cell[0], cell[1], cell[2], cells));
     }
     const auto& diagram = model.diagrams[k];
     const double flux = diagram_flux(model, k);
@@ -61,12 +63,15 @@ vtkSmartPointer<vtkPolyData> diagram_surface(const lightmodel::LightModel& model
         const double theta = M_PI * j / rings;
         for (int i = 0; i < sectors; ++i) {
             const double phi = 2 * M_PI * i / sectors;
-            add({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
+            add({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                 std::cos(theta)});
         }
     }
     const vtkIdType south = add({0, 0, -1});
 
-    auto ring_point = [&](int j, int i) { return vtkIdType(1 + (j - 1) * sectors + (i % sectors)); };
+    auto ring_point = [&](int j, int i) {
+        return vtkIdType(1 + (j - 1) * sectors + (i % sectors));
+    };
     auto polys = vtkSmartPointer<vtkCellArray>::New();
     for (int i = 0; i < sectors; ++i) {
         const vtkIdType top[3] = {0, ring_point(1, i), ring_point(1, i + 1)};
@@ -74,7 +79,8 @@ vtkSmartPointer<vtkPolyData> diagram_surface(const lightmodel::LightModel& model
         const vtkIdType bottom[3] = {south, ring_point(rings - 1, i + 1), ring_point(rings - 1, i)};
         polys->InsertNextCell(3, bottom);
         for (int j = 1; j + 1 < rings; ++j) {
-            const vtkIdType q[4] = {ring_point(j, i), ring_point(j + 1, i), ring_point(j + 1, i + 1), ring_point(j, i + 1)};
+            const vtkIdType q[4] = {ring_point(j, i), ring_point(j + 1, i),
+                                    ring_point(j + 1, i + 1), ring_point(j, i + 1)};
             polys->InsertNextCell(4, q);
         }
     }

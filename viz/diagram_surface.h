@@ -23,7 +23,8 @@ double diagram_flux(const lightmodel::LightModel& model, int index);
 // the -z pole, and between them `rings` - 1 rings of `sectors` points at theta = j pi / rings,
 // phi = i 2 pi / sectors. Point data "intensity"; field data "cell" (i, j, k), "cell_centre_mm",
 // "cell_flux", "unit". Throws rayset::Error when the cell emits nothing.
-vtkSmartPointer<vtkPolyData> diagram_surface(const lightmodel::LightModel& model, const lightmodel::Coord& cell,
-                                             int rings = 90, int sectors = 72);
+vtkSmartPointer<vtkPolyData> diagram_surface(const lightmodel::LightModel& model,
+                                             const lightmodel::Coord& cell, int rings = 90,
+                                             int sectors = 72);
 
 }  // namespace rayset::viz

@@ -9,8 +9,8 @@
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 
-#include <filesystem>
 #include <fmt/format.h>
+#include <filesystem>
 #include <fstream>
 
 namespace rayset::viz {
@@ -39,14 +39,17 @@ namespace {
 
 // The collection ParaView opens in one go: a multiblock file whose blocks are the files beside
 // it (the format vtkXMLMultiBlockDataWriter writes, without copying the data again).
-void write_collection(const std::string& path, const std::vector<std::pair<std::string, std::string>>& blocks) {
+void write_collection(const std::string& path,
+                      const std::vector<std::pair<std::string, std::string>>& blocks) {
     write_atomically(path, [&](const std::string& temporary) {
         std::ofstream out(temporary);
         out << "<?xml version=\"1.0\"?>\n"
-               "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+               "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
+               "byte_order=\"LittleEndian\">\n"
                "  <vtkMultiBlockDataSet>\n";
         for (size_t i = 0; i < blocks.size(); ++i)
-            out << fmt::format("    <DataSet index=\"{}\" name=\"{}\" file=\"{}\"/>\n", i, blocks[i].first, blocks[i].second);
+            out << fmt::format("    <DataSet index=\"{}\" name=\"{}\" file=\"{}\"/>\n", i,
+                               blocks[i].first, blocks[i].second);
         out << "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
         return bool(out.flush());
     });
@@ -54,7 +57,8 @@ void write_collection(const std::string& path, const std::vector<std::pair<std::
 
 }  // namespace
 
-std::vector<std::string> export_input(Input& input, const ViewOptions& options, const std::string& directory) {
+std::vector<std::string> export_input(Input& input, const ViewOptions& options,
+                                      const std::string& directory) {
     std::error_code error;
     fs::create_directories(directory, error);
     if (error) throw Error(directory + ": cannot create the folder: " + error.message());
@@ -67,30 +71,32 @@ std::vector<std::string> export_input(Input& input, const ViewOptions& options, 
         written.push_back((fs::path(directory) / file).string());
     };
     switch (input.kind()) {
-    case InputKind::model: {
-        save("density", ".vti", input.data(View::density, options));
-        save("flux", ".vti", input.data(View::flux, options));
-        save("spheres", ".vtp", input.data(View::spheres, options));
-        const auto& model = input.model();
-        for (size_t k = 0; k < model.diagrams.size(); ++k) {
-            if (model.diagrams[k].empty()) continue;
-            const auto& c = model.diagram_cells[k];
-            save(fmt::format("diagram_{}_{}_{}", c[0], c[1], c[2]), ".vtp", diagram_surface(model, c));
+        case InputKind::model: {
+            save("density", ".vti", input.data(View::density, options));
+            save("flux", ".vti", input.data(View::flux, options));
+            save("spheres", ".vtp", input.data(View::spheres, options));
+            const auto& model = input.model();
+            for (size_t k = 0; k < model.diagrams.size(); ++k) {
+                if (model.diagrams[k].empty()) continue;
+                const auto& c = model.diagram_cells[k];
+                save(fmt::format("diagram_{}_{}_{}", c[0], c[1], c[2]), ".vtp",
+                     diagram_surface(model, c));
+            }
+            break;
         }
-        break;
+        case InputKind::rays:
+            save("rays", ".vtp", input.data(View::rays, options));
+            save("farfield", ".vtp", input.data(View::farfield, options));
+            save("polar", ".vtp", input.data(View::polar, options));
+            break;
+        case InputKind::photometry:
+            save("farfield", ".vtp", input.data(View::farfield, options));
+            save("polar", ".vtp", input.data(View::polar, options));
+            break;
+        case InputKind::image: save("image", ".vti", input.data(View::image, options)); break;
     }
-    case InputKind::rays:
-        save("rays", ".vtp", input.data(View::rays, options));
-        save("farfield", ".vtp", input.data(View::farfield, options));
-        save("polar", ".vtp", input.data(View::polar, options));
-        break;
-    case InputKind::photometry:
-        save("farfield", ".vtp", input.data(View::farfield, options));
-        save("polar", ".vtp", input.data(View::polar, options));
-        break;
-    case InputKind::image: save("image", ".vti", input.data(View::image, options)); break;
-    }
-    const std::string collection = (fs::path(directory) / (fs::path(input.path()).stem().string() + ".vtm")).string();
+    const std::string collection =
+        (fs::path(directory) / (fs::path(input.path()).stem().string() + ".vtm")).string();
     write_collection(collection, blocks);
     written.push_back(collection);
     return written;

@@ -17,7 +17,8 @@ namespace rayset::viz {
 //   image:      image.vti;
 // then <file stem>.vtm naming them all (written last, so it only names files that exist).
 // Returns the paths written, the .vtm last. Every file goes through a temporary name.
-std::vector<std::string> export_input(Input& input, const ViewOptions& options, const std::string& directory);
+std::vector<std::string> export_input(Input& input, const ViewOptions& options,
+                                      const std::string& directory);
 
 // One dataset to one file; the writer follows the extension (.vti image data, .vtp poly data).
 void write_dataset(vtkDataObject* data, const std::string& path);

@@ -11,9 +11,10 @@
 namespace rayset::viz {
 
 struct ExrLayer {
-    vtkSmartPointer<vtkImageData> image;  // point data "luminance", one point per pixel, row 0 at the bottom
-    std::string unit;                     // the header's "units" string attribute, else "cd/m^2"
-    std::string channel;                  // what was read: a channel name, or "R,G,B"
+    vtkSmartPointer<vtkImageData>
+        image;            // point data "luminance", one point per pixel, row 0 at the bottom
+    std::string unit;     // the header's "units" string attribute, else "cd/m^2"
+    std::string channel;  // what was read: a channel name, or "R,G,B"
 };
 
 // `layer`: a channel of that name ("Y", "illuminance"), or the layer's Y channel ("layer.Y"),

@@ -17,11 +17,13 @@ namespace rayset::viz {
 
 namespace {
 
-constexpr const char* kViewNames[] = {"rays", "farfield", "polar", "density", "spheres", "flux", "diagram", "image"};
+constexpr const char* kViewNames[] = {"rays",    "farfield", "polar",   "density",
+                                      "spheres", "flux",     "diagram", "image"};
 
 std::string lower_extension(const std::string& path) {
     std::string e = std::filesystem::path(path).extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(e.begin(), e.end(), e.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return e;
 }
 
@@ -40,7 +42,9 @@ InputKind detect_kind(const std::string& path) {
         return InputKind::rays;
     } catch (const Error&) {
     }
-    throw Error(path + ": not a ray file, a model (.vdb), an IES / EULUMDAT file or an OpenEXR image (.exr)");
+    throw Error(
+        path +
+        ": not a ray file, a model (.vdb), an IES / EULUMDAT file or an OpenEXR image (.exr)");
 }
 
 }  // namespace
@@ -55,10 +59,10 @@ std::optional<View> view_from_name(const std::string& name) {
 
 std::vector<View> views_of(InputKind kind) {
     switch (kind) {
-    case InputKind::rays: return {View::rays, View::farfield, View::polar};
-    case InputKind::model: return {View::spheres, View::density, View::flux, View::diagram};
-    case InputKind::photometry: return {View::farfield, View::polar};
-    case InputKind::image: return {View::image};
+        case InputKind::rays: return {View::rays, View::farfield, View::polar};
+        case InputKind::model: return {View::spheres, View::density, View::flux, View::diagram};
+        case InputKind::photometry: return {View::farfield, View::polar};
+        case InputKind::image: return {View::image};
     }
     return {};
 }
@@ -83,9 +87,10 @@ const IntensityTable& Input::intensity() {
             FarFieldOptions smoothed;  // as rayconv farfield makes them by default
             smoothed.smoothing = FarFieldSmoothing::automatic;
             intensity_ = intensity_of_rays(path_, smoothed);
-        }
-        else if (kind_ == InputKind::photometry) intensity_ = intensity_of_photometry(path_);
-        else throw Error(path_ + ": has no far field (open a ray file or an IES / EULUMDAT file)");
+        } else if (kind_ == InputKind::photometry)
+            intensity_ = intensity_of_photometry(path_);
+        else
+            throw Error(path_ + ": has no far field (open a ray file or an IES / EULUMDAT file)");
     }
     return *intensity_;
 }
@@ -109,17 +114,18 @@ vtkSmartPointer<vtkDataObject> Input::data(View view, const ViewOptions& options
     if (std::find(offered.begin(), offered.end(), view) == offered.end()) {
         std::string names;
         for (View v : offered) names += std::string(" ") + to_string(v);
-        throw Error(path_ + ": no view '" + to_string(view) + "' for this kind of file (views:" + names + ")");
+        throw Error(path_ + ": no view '" + to_string(view) +
+                    "' for this kind of file (views:" + names + ")");
     }
     switch (view) {
-    case View::rays: return rays(options.rays);
-    case View::farfield: return photometric_solid(intensity());
-    case View::polar: return polar_curves(intensity());
-    case View::density: return density_image(model());
-    case View::spheres: return sphere_set(model());
-    case View::flux: return flux_image(model());
-    case View::diagram: return diagram_surface(model(), chosen_cell(model(), options));
-    case View::image: return image(options.layer).image;
+        case View::rays: return rays(options.rays);
+        case View::farfield: return photometric_solid(intensity());
+        case View::polar: return polar_curves(intensity());
+        case View::density: return density_image(model());
+        case View::spheres: return sphere_set(model());
+        case View::flux: return flux_image(model());
+        case View::diagram: return diagram_surface(model(), chosen_cell(model(), options));
+        case View::image: return image(options.layer).image;
     }
     return nullptr;
 }

@@ -9,7 +9,9 @@ namespace rayset::viz {
 
 namespace {
 
-std::string file_label(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+std::string file_label(const std::string& path) {
+    return std::filesystem::path(path).filename().string();
+}
 
 // The largest value on the stored grid and where it is.
 void locate_maximum(IntensityTable& t) {
@@ -34,7 +36,8 @@ IntensityTable intensity_of_rays(const std::string& path, FarFieldOptions option
     FarField field = far_field(*reader, options);
     IntensityTable t;
     t.standard_error = field.photometry;
-    for (size_t k = 0; k < field.variance.size(); ++k) t.standard_error->candela[k] = std::sqrt(field.variance[k]);
+    for (size_t k = 0; k < field.variance.size(); ++k)
+        t.standard_error->candela[k] = std::sqrt(field.variance[k]);
     t.photometry = std::move(field.photometry);
     t.unit = luminous ? "cd" : "W/sr";
     t.label = file_label(path);

@@ -1,6 +1,6 @@
 // Far-field intensity as a type C table, whatever file it comes from: binned from a ray file's
-// rays (converters/photometry/farfield.h) or read from IES LM-63 / EULUMDAT. The photometric solid and
-// the polar curves are both drawn from this one table, so they agree with each other and with
+// rays (converters/photometry/farfield.h) or read from IES LM-63 / EULUMDAT. The photometric solid
+// and the polar curves are both drawn from this one table, so they agree with each other and with
 // `rayconv farfield` / `rayconv info`.
 #pragma once
 
@@ -13,9 +13,9 @@
 namespace rayset::viz {
 
 struct IntensityTable {
-    Photometry photometry;    // type C
-    std::string unit;         // "cd", or "W/sr" for rays that carry no luminous information
-    std::string label;        // file name, for legends
+    Photometry photometry;  // type C
+    std::string unit;       // "cd", or "W/sr" for rays that carry no luminous information
+    std::string label;      // file name, for legends
     // Where gamma = 0 points in the model frame: +1 for ray files (LED rays emit along +z),
     // -1 for IES / LDT (nadir along -z, the luminaire convention).
     int axis = 1;

@@ -15,9 +15,9 @@
 #include <vtkSliderWidget.h>
 #include <vtkTextProperty.h>
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <iostream>
 
 namespace rayset::viz {
@@ -48,23 +48,26 @@ void on_pick(vtkObject*, unsigned long, void* data, void*) {
     const auto& model = s.input->model();
     const lightmodel::Coord cell = model.intensity_frame.cell_of({p[0], p[1], p[2]});
     if (diagram_index(model, cell) < 0) {
-        std::cerr << fmt::format("intensity cell {},{},{} emits nothing\n", cell[0], cell[1], cell[2]);
+        std::cerr << fmt::format("intensity cell {},{},{} emits nothing\n", cell[0], cell[1],
+                                 cell[2]);
         return;
     }
-    std::cerr << fmt::format("picked ({:.3f}, {:.3f}, {:.3f}) mm: intensity cell {},{},{}\n", p[0], p[1], p[2], cell[0],
-                             cell[1], cell[2]);
+    std::cerr << fmt::format("picked ({:.3f}, {:.3f}, {:.3f}) mm: intensity cell {},{},{}\n", p[0],
+                             p[1], p[2], cell[0], cell[1], cell[2]);
     show_diagram(s, cell);
     s.diagram_panel->GetRenderWindow()->Render();
 }
 
 void on_slide(vtkObject* caller, unsigned long, void* data, void*) {
     auto* widget = static_cast<vtkSliderWidget*>(caller);
-    const double value = static_cast<vtkSliderRepresentation2D*>(widget->GetRepresentation())->GetValue();
+    const double value =
+        static_cast<vtkSliderRepresentation2D*>(widget->GetRepresentation())->GetValue();
     (*static_cast<std::function<void(double)>*>(data))(std::round(value));
 }
 
-vtkSmartPointer<vtkSliderWidget> threshold_slider(vtkRenderWindowInteractor* interactor, vtkRenderer* renderer,
-                                                  const ViewHandles& h, double initial) {
+vtkSmartPointer<vtkSliderWidget> threshold_slider(vtkRenderWindowInteractor* interactor,
+                                                  vtkRenderer* renderer, const ViewHandles& h,
+                                                  double initial) {
     auto rep = vtkSmartPointer<vtkSliderRepresentation2D>::New();
     rep->SetMinimumValue(h.threshold_min);
     rep->SetMaximumValue(h.threshold_max);
@@ -75,7 +78,8 @@ vtkSmartPointer<vtkSliderWidget> threshold_slider(vtkRenderWindowInteractor* int
     rep->GetPoint2Coordinate()->SetCoordinateSystemToNormalizedViewport();
     rep->GetPoint2Coordinate()->SetValue(0.7, 0.06);
     rep->SetRenderer(renderer);
-    for (auto* p : {rep->GetTitleProperty(), rep->GetLabelProperty()}) p->SetColor(kText[0], kText[1], kText[2]);
+    for (auto* p : {rep->GetTitleProperty(), rep->GetLabelProperty()})
+        p->SetColor(kText[0], kText[1], kText[2]);
     auto slider = vtkSmartPointer<vtkSliderWidget>::New();
     slider->SetInteractor(interactor);
     slider->SetRepresentation(rep);
@@ -91,13 +95,16 @@ void interact(Scene& scene, Input& input, View view, const ViewOptions& options)
     auto interactor = vtkSmartPointer<vtkRenderWindowInteractor>::New();
     interactor->SetRenderWindow(scene.window);
     const bool flat = scene.panels.front().handles.flat;
-    if (flat) interactor->SetInteractorStyle(vtkSmartPointer<vtkInteractorStyleImage>::New());
-    else interactor->SetInteractorStyle(vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New());
+    if (flat)
+        interactor->SetInteractorStyle(vtkSmartPointer<vtkInteractorStyleImage>::New());
+    else
+        interactor->SetInteractorStyle(vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New());
 
     PickState pick;
     auto picker = vtkSmartPointer<vtkCellPicker>::New();
     auto pick_callback = vtkSmartPointer<vtkCallbackCommand>::New();
-    const bool model_view = input.kind() == InputKind::model && view != View::diagram && scene.panels.size() == 1;
+    const bool model_view =
+        input.kind() == InputKind::model && view != View::diagram && scene.panels.size() == 1;
     if (model_view) {
         // The model keeps the left two thirds; the diagram of the picked cell the rest.
         Panel& left = scene.panels.front();
@@ -113,7 +120,8 @@ void interact(Scene& scene, Input& input, View view, const ViewOptions& options)
         pick_callback->SetCallback(on_pick);
         pick_callback->SetClientData(&pick);
         picker->AddObserver(vtkCommand::EndPickEvent, pick_callback);
-        std::cerr << "press 'p' over the model to show the goniometric diagram of the intensity cell there\n";
+        std::cerr << "press 'p' over the model to show the goniometric diagram of the intensity "
+                     "cell there\n";
     }
 
     vtkSmartPointer<vtkSliderWidget> slider;
@@ -121,8 +129,8 @@ void interact(Scene& scene, Input& input, View view, const ViewOptions& options)
     std::function<void(double)> set_threshold;
     if (scene.panels.front().handles.set_threshold) {
         set_threshold = scene.panels.front().handles.set_threshold;
-        slider = threshold_slider(interactor, scene.panels.front().renderer, scene.panels.front().handles,
-                                  options.density_threshold);
+        slider = threshold_slider(interactor, scene.panels.front().renderer,
+                                  scene.panels.front().handles, options.density_threshold);
         slide_callback->SetCallback(on_slide);
         slide_callback->SetClientData(&set_threshold);
         slider->AddObserver(vtkCommand::InteractionEvent, slide_callback);

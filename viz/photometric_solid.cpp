@@ -12,7 +12,8 @@
 
 namespace rayset::viz {
 
-vtkSmartPointer<vtkPolyData> photometric_solid(const IntensityTable& table, double c_step_deg, double gamma_step_deg) {
+vtkSmartPointer<vtkPolyData> photometric_solid(const IntensityTable& table, double c_step_deg,
+                                               double gamma_step_deg) {
     const int nc = std::max(3, int(std::lround(360 / c_step_deg)));
     const int ng = std::max(2, int(std::lround(180 / gamma_step_deg)));
     const double deg = M_PI / 180;
@@ -38,7 +39,8 @@ vtkSmartPointer<vtkPolyData> photometric_solid(const IntensityTable& table, doub
     for (int i = 0; i < nc; ++i) {
         const int next = (i + 1) % nc;
         for (int j = 0; j < ng; ++j) {
-            const vtkIdType q[4] = {i * (ng + 1) + j, next * (ng + 1) + j, next * (ng + 1) + j + 1, i * (ng + 1) + j + 1};
+            const vtkIdType q[4] = {i * (ng + 1) + j, next * (ng + 1) + j, next * (ng + 1) + j + 1,
+                                    i * (ng + 1) + j + 1};
             quads->InsertNextCell(4, q);
         }
     }

@@ -28,14 +28,16 @@ struct CurvePoint {
 };
 std::vector<CurvePoint> curve_points(const Photometry& p, double c) {
     std::vector<CurvePoint> out;
-    for (size_t v = p.vertical_deg.size(); v-- > 0;) out.push_back({c + 180, p.vertical_deg[v], -1});
+    for (size_t v = p.vertical_deg.size(); v-- > 0;)
+        out.push_back({c + 180, p.vertical_deg[v], -1});
     for (double g : p.vertical_deg) out.push_back({c, g, 1});
     return out;
 }
 
 vtkIdType insert_polar_point(vtkPoints* points, const CurvePoint& at, double value) {
     const double deg = M_PI / 180;
-    return points->InsertNextPoint(at.side * value * std::sin(at.gamma * deg), -value * std::cos(at.gamma * deg), 0);
+    return points->InsertNextPoint(at.side * value * std::sin(at.gamma * deg),
+                                   -value * std::cos(at.gamma * deg), 0);
 }
 
 }  // namespace
@@ -55,7 +57,8 @@ vtkSmartPointer<vtkPolyData> polar_curves(const IntensityTable& table) {
             const double value = p.intensity(at.plane_c, at.gamma);
             ids.push_back(insert_polar_point(points, at, value));
             intensity->InsertNextValue(value);
-            if (table.standard_error) error->InsertNextValue(table.standard_error->intensity(at.plane_c, at.gamma));
+            if (table.standard_error)
+                error->InsertNextValue(table.standard_error->intensity(at.plane_c, at.gamma));
             gamma->InsertNextValue(at.side * at.gamma);
         }
         lines->InsertNextCell(vtkIdType(ids.size()), ids.data());
@@ -83,7 +86,8 @@ vtkSmartPointer<vtkPolyData> polar_bands(const IntensityTable& table) {
             std::vector<vtkIdType> ids;
             for (const CurvePoint& at : curve_points(table.photometry, c)) {
                 const double value = table.photometry.intensity(at.plane_c, at.gamma);
-                const double band = kBandErrors * table.standard_error->intensity(at.plane_c, at.gamma);
+                const double band =
+                    kBandErrors * table.standard_error->intensity(at.plane_c, at.gamma);
                 ids.push_back(insert_polar_point(points, at, std::max(0.0, value - band)));
                 ids.push_back(insert_polar_point(points, at, value + band));
             }
@@ -114,13 +118,15 @@ vtkSmartPointer<vtkPolyData> polar_grid(double ring_step, int rings) {
     for (int r = 1; r <= rings; ++r) {
         std::vector<vtkIdType> ids;
         for (int a = 0; a <= 120; ++a)
-            ids.push_back(points->InsertNextPoint(r * ring_step * std::cos(a * 3 * deg), r * ring_step * std::sin(a * 3 * deg), 0));
+            ids.push_back(points->InsertNextPoint(r * ring_step * std::cos(a * 3 * deg),
+                                                  r * ring_step * std::sin(a * 3 * deg), 0));
         lines->InsertNextCell(vtkIdType(ids.size()), ids.data());
     }
     const double outer = rings * ring_step;
     for (int a = 0; a < 180; a += 30) {
-        const vtkIdType ids[2] = {points->InsertNextPoint(outer * std::cos(a * deg), outer * std::sin(a * deg), 0),
-                                  points->InsertNextPoint(-outer * std::cos(a * deg), -outer * std::sin(a * deg), 0)};
+        const vtkIdType ids[2] = {
+            points->InsertNextPoint(outer * std::cos(a * deg), outer * std::sin(a * deg), 0),
+            points->InsertNextPoint(-outer * std::cos(a * deg), -outer * std::sin(a * deg), 0)};
         lines->InsertNextCell(2, ids);
     }
     auto grid = vtkSmartPointer<vtkPolyData>::New();

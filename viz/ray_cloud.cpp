@@ -35,12 +35,15 @@ vtkSmartPointer<vtkPolyData> ray_cloud(const std::string& path, const RayCloudOp
     const bool radiant = header.has_radiant;
     auto points = vtkSmartPointer<vtkPoints>::New();
     auto vertices = vtkSmartPointer<vtkCellArray>::New();
-    auto flux = named_floats("flux"), wavelength = named_floats("wavelength"), direction = named_floats("direction", 3);
+    auto flux = named_floats("flux"), wavelength = named_floats("wavelength"),
+         direction = named_floats("direction", 3);
     for (const Ray& ray : sample) {
         const vtkIdType id = points->InsertNextPoint(ray.origin.x, ray.origin.y, ray.origin.z);
         vertices->InsertNextCell(1, &id);
         flux->InsertNextValue(radiant ? ray.radiant : ray.luminous);
-        const float nm = header.spectral == SpectralKind::single_wavelength ? header.single_wavelength : ray.wavelength;
+        const float nm = header.spectral == SpectralKind::single_wavelength
+                             ? header.single_wavelength
+                             : ray.wavelength;
         wavelength->InsertNextValue(nm);
         direction->InsertNextTuple3(ray.direction.x, ray.direction.y, ray.direction.z);
     }

@@ -18,6 +18,7 @@ struct RayCloudOptions {
 // One vertex per sampled ray at its origin (file unit). Point data "flux" (radiant W, or lm
 // when the file carries only luminous flux), "wavelength" (nm, NaN when unknown), vectors
 // "direction"; field data "unit" (length unit), "flux_unit", "rays" (rays in the file).
-vtkSmartPointer<vtkPolyData> ray_cloud(const std::string& path, const RayCloudOptions& options = {});
+vtkSmartPointer<vtkPolyData> ray_cloud(const std::string& path,
+                                       const RayCloudOptions& options = {});
 
 }  // namespace rayset::viz

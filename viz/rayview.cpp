@@ -17,8 +17,8 @@ rayset::lightmodel::Coord parse_cell(const std::string& text) {
     rayset::lightmodel::Coord c{};
     char comma1 = 0, comma2 = 0;
     std::istringstream in(text);
-    if (!(in >> c[0] >> comma1 >> c[1] >> comma2 >> c[2]) || comma1 != ',' || comma2 != ',' || !in.eof() || c[0] < 0 ||
-        c[1] < 0 || c[2] < 0)
+    if (!(in >> c[0] >> comma1 >> c[1] >> comma2 >> c[2]) || comma1 != ',' || comma2 != ',' ||
+        !in.eof() || c[0] < 0 || c[1] < 0 || c[2] < 0)
         throw rayset::Error("--cell: '" + text + "' is not i,j,k (intensity-lattice cell, from 0)");
     return c;
 }
@@ -27,7 +27,8 @@ void parse_size(const std::string& text, SceneOptions& scene) {
     int w = 0, h = 0;
     char x = 0;
     std::istringstream in(text);
-    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w < 16 || h < 16 || w > 16384 || h > 16384)
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w < 16 || h < 16 ||
+        w > 16384 || h > 16384)
         throw rayset::Error("--size: '" + text + "' is not WIDTHxHEIGHT in pixels (16 to 16384)");
     scene.width = w, scene.height = h;
 }
@@ -44,11 +45,15 @@ int main(int argc, char** argv) {
         "  OpenEXR image (raytrace)                         image\n\n"
         "Examples:\n"
         "  rayview LED.TM25RAY                              interactive window: drag to orbit\n"
-        "  rayview LED.vdb --show density --threshold 10    slider moves the threshold; 'p' over the\n"
-        "                                                   model shows that cell's diagram beside it\n"
-        "  rayview LED.vdb --show diagram --cell 2,2,0 --png d.png --size 1200x900 --camera 30,-60,1.2\n"
+        "  rayview LED.vdb --show density --threshold 10    slider moves the threshold; 'p' over "
+        "the\n"
+        "                                                   model shows that cell's diagram beside "
+        "it\n"
+        "  rayview LED.vdb --show diagram --cell 2,2,0 --png d.png --size 1200x900 --camera "
+        "30,-60,1.2\n"
         "  rayview LED.TM25RAY --show polar --compare lamp.ies --png polar.png\n"
-        "  rayview LED.vdb --export LED-vtk                 .vti / .vtp files and LED.vtm for ParaView\n"
+        "  rayview LED.vdb --export LED-vtk                 .vti / .vtp files and LED.vtm for "
+        "ParaView\n"
         "  rayview render.exr --layer Y --png render.png\n"
         "Off-screen rendering needs an X server; on a machine without a display run it under\n"
         "'xvfb-run -a rayview ...'."};
@@ -56,21 +61,36 @@ int main(int argc, char** argv) {
     std::string file, compare, show, cell, layer = "Y", png, size = "1200x900", camera, export_dir;
     ViewOptions options;
     bool colour_by_flux = false;
-    app.add_option("file", file, "Ray file, model (.vdb), IES / LDT file or EXR image")->required()->check(CLI::ExistingFile);
+    app.add_option("file", file, "Ray file, model (.vdb), IES / LDT file or EXR image")
+        ->required()
+        ->check(CLI::ExistingFile);
     app.add_option("--show", show, "View: rays|farfield|polar|density|spheres|flux|diagram|image");
-    app.add_option("--cell", cell, "diagram: intensity-lattice cell i,j,k (default: the one carrying most flux)");
-    app.add_option("--layer", layer, "image: channel or layer (Y, R,G,B of a layer, or any channel name)")->capture_default_str();
-    app.add_option("--threshold", options.density_threshold, "density: rays per voxel drawn or contoured")->capture_default_str();
-    app.add_flag("--contour", options.contour, "density: contour surface at the threshold instead of voxels");
-    app.add_option("--points", options.rays.max_rays, "rays: rays sampled from the file")->capture_default_str();
-    app.add_option("--seed", options.rays.seed, "rays: seed of the sampling")->capture_default_str();
-    app.add_flag("--colour-by-flux", colour_by_flux, "rays: colour by flux even when wavelengths are known");
-    app.add_option("--compare", compare, "A second file: polar curves overlaid, other views side by side")
+    app.add_option("--cell", cell,
+                   "diagram: intensity-lattice cell i,j,k (default: the one carrying most flux)");
+    app.add_option("--layer", layer,
+                   "image: channel or layer (Y, R,G,B of a layer, or any channel name)")
+        ->capture_default_str();
+    app.add_option("--threshold", options.density_threshold,
+                   "density: rays per voxel drawn or contoured")
+        ->capture_default_str();
+    app.add_flag("--contour", options.contour,
+                 "density: contour surface at the threshold instead of voxels");
+    app.add_option("--points", options.rays.max_rays, "rays: rays sampled from the file")
+        ->capture_default_str();
+    app.add_option("--seed", options.rays.seed, "rays: seed of the sampling")
+        ->capture_default_str();
+    app.add_flag("--colour-by-flux", colour_by_flux,
+                 "rays: colour by flux even when wavelengths are known");
+    app.add_option("--compare", compare,
+                   "A second file: polar curves overlaid, other views side by side")
         ->check(CLI::ExistingFile);
     app.add_option("--png", png, "Render off-screen to this PNG instead of opening a window");
     app.add_option("--size", size, "PNG size WIDTHxHEIGHT")->capture_default_str();
-    app.add_option("--camera", camera, "azimuth,elevation[,zoom]: turns in degrees from the view's start, zoom > 1 closer");
-    app.add_option("--export", export_dir, "Write every dataset of FILE as VTK XML files and a .vtm into this folder");
+    app.add_option(
+        "--camera", camera,
+        "azimuth,elevation[,zoom]: turns in degrees from the view's start, zoom > 1 closer");
+    app.add_option("--export", export_dir,
+                   "Write every dataset of FILE as VTK XML files and a .vtm into this folder");
 
     try {
         app.parse(argc, argv);
@@ -86,11 +106,14 @@ int main(int argc, char** argv) {
         View view = views_of(input.kind()).front();
         if (!show.empty()) {
             const auto v = view_from_name(show);
-            if (!v) throw rayset::Error("--show: unknown view '" + show + "' (rays|farfield|polar|density|spheres|flux|diagram|image)");
+            if (!v)
+                throw rayset::Error("--show: unknown view '" + show +
+                                    "' (rays|farfield|polar|density|spheres|flux|diagram|image)");
             view = *v;
         }
         if (!export_dir.empty()) {
-            for (const auto& path : export_input(input, options, export_dir)) std::printf("wrote %s\n", path.c_str());
+            for (const auto& path : export_input(input, options, export_dir))
+                std::printf("wrote %s\n", path.c_str());
             if (png.empty() && show.empty()) return 0;
         }
         SceneOptions scene_options;

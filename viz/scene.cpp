@@ -31,7 +31,8 @@ CameraTurn parse_camera(const std::string& text) {
     return {values[0], values[1], values.size() == 3 ? values[2] : 1};
 }
 
-void place_camera(vtkRenderer* renderer, const ViewHandles& handles, const std::optional<CameraTurn>& turn) {
+void place_camera(vtkRenderer* renderer, const ViewHandles& handles,
+                  const std::optional<CameraTurn>& turn) {
     vtkCamera* camera = renderer->GetActiveCamera();
     const CameraTurn t = turn ? *turn : CameraTurn{handles.azimuth, handles.elevation, 1};
     if (handles.flat) {
@@ -43,8 +44,10 @@ void place_camera(vtkRenderer* renderer, const ViewHandles& handles, const std::
         // xy plane; +z stays up on the screen (LED sources emit along +z) except looking along it.
         const double deg = M_PI / 180, az = t.azimuth * deg, el = t.elevation * deg;
         camera->SetPosition(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
-        if (std::abs(std::cos(el)) < 1e-3) camera->SetViewUp(-std::sin(az), std::cos(az), 0);
-        else camera->SetViewUp(0, 0, 1);
+        if (std::abs(std::cos(el)) < 1e-3)
+            camera->SetViewUp(-std::sin(az), std::cos(az), 0);
+        else
+            camera->SetViewUp(0, 0, 1);
     }
     camera->SetFocalPoint(0, 0, 0);
     renderer->ResetCamera();
@@ -65,7 +68,8 @@ Panel make_panel(vtkRenderWindow* window, double x0, double x1) {
 
 }  // namespace
 
-Scene build_scene(Input& first, Input* second, View view, const ViewOptions& options, const SceneOptions& so) {
+Scene build_scene(Input& first, Input* second, View view, const ViewOptions& options,
+                  const SceneOptions& so) {
     Scene scene;
     scene.window = vtkSmartPointer<vtkRenderWindow>::New();
     scene.window->SetOffScreenRendering(so.offscreen ? 1 : 0);

@@ -41,11 +41,13 @@ struct Scene {
 };
 
 // Points the renderer's camera as `turn` says, or as the view's handles default to.
-void place_camera(vtkRenderer* renderer, const ViewHandles& handles, const std::optional<CameraTurn>& turn);
+void place_camera(vtkRenderer* renderer, const ViewHandles& handles,
+                  const std::optional<CameraTurn>& turn);
 
 // `view` of `first`; with `second`, the polar view overlays both far fields in one chart and
 // every other view puts the second file in a right-hand panel.
-Scene build_scene(Input& first, Input* second, View view, const ViewOptions& options, const SceneOptions& scene);
+Scene build_scene(Input& first, Input* second, View view, const ViewOptions& options,
+                  const SceneOptions& scene);
 // Renders and writes the window to `path` (through a temporary file renamed into place).
 void write_png(Scene& scene, const std::string& path);
 // Opens the window and runs the event loop until it is closed. For model views a right-hand

@@ -16,8 +16,8 @@
 
 namespace rayset::viz {
 
-ViewHandles add_density_view(vtkRenderer* renderer, vtkImageData* density, const std::string& title, double threshold,
-                             bool contour) {
+ViewHandles add_density_view(vtkRenderer* renderer, vtkImageData* density, const std::string& title,
+                             double threshold, bool contour) {
     double range[2];
     density->GetPointData()->GetScalars()->GetRange(range);
     auto lut = colour_map(std::max(threshold, 0.0), range[1]);
@@ -49,7 +49,8 @@ ViewHandles add_density_view(vtkRenderer* renderer, vtkImageData* density, const
     }
     double bounds[6];
     density->GetBounds(bounds);
-    for (int a = 0; a < 6; ++a) bounds[a] += (a % 2 ? 0.5 : -0.5) * cell;  // cell faces, not centres
+    for (int a = 0; a < 6; ++a)
+        bounds[a] += (a % 2 ? 0.5 : -0.5) * cell;  // cell faces, not centres
     add_scalar_bar(renderer, lut, "rays per voxel");
     add_axes(renderer, bounds, "mm");
     add_title(renderer, title);

@@ -4,7 +4,8 @@
 
 namespace rayset::viz {
 
-ViewHandles add_diagram_view(vtkRenderer* renderer, vtkPolyData* diagram, const std::string& title) {
+ViewHandles add_diagram_view(vtkRenderer* renderer, vtkPolyData* diagram,
+                             const std::string& title) {
     return add_farfield_view(renderer, diagram, title);
 }
 

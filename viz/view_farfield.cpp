@@ -54,7 +54,8 @@ ViewHandles add_farfield_view(vtkRenderer* renderer, vtkPolyData* solid, const s
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     renderer->AddActor(actor);
-    if (vtkDataArray* error = solid->GetPointData()->GetArray("standard_error")) renderer->AddActor(band_shell(solid, error));
+    if (vtkDataArray* error = solid->GetPointData()->GetArray("standard_error"))
+        renderer->AddActor(band_shell(solid, error));
 
     const std::string unit = field_string(solid, "unit");
     double bounds[6];

@@ -22,7 +22,9 @@ ViewHandles add_image_view(vtkRenderer* renderer, const ExrLayer& layer, const s
     actor->GetMapper()->SetInputConnection(colours->GetOutputPort());
     renderer->AddActor(actor);
     const bool illuminance = layer.unit == "lux" || layer.unit == "lx";
-    add_scalar_bar(renderer, lut, std::string(illuminance ? "illuminance" : "luminance") + " (" + layer.unit + ")");
+    add_scalar_bar(
+        renderer, lut,
+        std::string(illuminance ? "illuminance" : "luminance") + " (" + layer.unit + ")");
     add_title(renderer, title);
     ViewHandles h;
     h.flat = true;

@@ -7,25 +7,26 @@
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
-#include <vtkPoints.h>
 #include <vtkLegendBoxActor.h>
+#include <vtkPoints.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 namespace rayset::viz {
 
 namespace {
 
 constexpr double kPlaneColours[6][3] = {{0.85, 0.15, 0.15}, {0.15, 0.35, 0.85}, {0.1, 0.6, 0.2},
-                                        {0.9, 0.5, 0.0},   {0.55, 0.2, 0.7},   {0.0, 0.6, 0.6}};
+                                        {0.9, 0.5, 0.0},    {0.55, 0.2, 0.7},   {0.0, 0.6, 0.6}};
 
-void add_world_label(vtkRenderer* renderer, const std::string& text, double x, double y, int justify) {
+void add_world_label(vtkRenderer* renderer, const std::string& text, double x, double y,
+                     int justify) {
     auto label = vtkSmartPointer<vtkTextActor>::New();
     label->SetInput(text.c_str());
     label->GetTextProperty()->SetColor(0.35, 0.35, 0.35);
@@ -70,7 +71,8 @@ vtkSmartPointer<vtkActor> band_actor(vtkPolyData* bands, vtkIdType c, const doub
 
 }  // namespace
 
-ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const IntensityTable*>& tables) {
+ViewHandles add_polar_view(vtkRenderer* renderer,
+                           const std::vector<const IntensityTable*>& tables) {
     double maximum = 0;
     for (const auto* t : tables) maximum = std::max(maximum, t->max_intensity);
     const double step = polar_ring_step(maximum);
@@ -78,7 +80,8 @@ ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const Intens
     const double grey[3] = {0.75, 0.75, 0.75};
     renderer->AddActor(line_actor(polar_grid(step, rings), grey, 1));
     const std::string unit = tables.front()->unit;
-    for (int r = 1; r <= rings; ++r) add_world_label(renderer, fmt::format("{:g} {}", r * step, unit), 0.02 * step, r * step, 0);
+    for (int r = 1; r <= rings; ++r)
+        add_world_label(renderer, fmt::format("{:g} {}", r * step, unit), 0.02 * step, r * step, 0);
     const double outer = rings * step * 1.07;
     add_world_label(renderer, "0\xC2\xB0", 0, -outer, 1);
     add_world_label(renderer, "180\xC2\xB0", 0, outer, 1);
@@ -93,7 +96,8 @@ ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const Intens
         auto bands = polar_bands(*t);
         const auto planes = polar_planes(*t);
         for (vtkIdType c = 0; c < curves->GetNumberOfCells(); ++c) {
-            if (c < bands->GetNumberOfCells()) renderer->AddActor(band_actor(bands, c, kPlaneColours[colour % 6]));
+            if (c < bands->GetNumberOfCells())
+                renderer->AddActor(band_actor(bands, c, kPlaneColours[colour % 6]));
             // One polyline per plane, drawn in its own colour.
             auto one = one_cell(curves, c);
             const double* rgb = kPlaneColours[colour % 6];
@@ -118,7 +122,8 @@ ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const Intens
     legend->SetNumberOfEntries(int(entries.size()));
     colour = 0;
     for (size_t e = 0; e < entries.size(); ++e, ++colour) {
-        double rgb[3] = {kPlaneColours[colour % 6][0], kPlaneColours[colour % 6][1], kPlaneColours[colour % 6][2]};
+        double rgb[3] = {kPlaneColours[colour % 6][0], kPlaneColours[colour % 6][1],
+                         kPlaneColours[colour % 6][2]};
         legend->SetEntry(int(e), symbol, entries[e].second.c_str(), rgb);
     }
     legend->GetEntryTextProperty()->SetColor(kText[0], kText[1], kText[2]);
@@ -130,16 +135,19 @@ ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const Intens
     legend->GetPosition2Coordinate()->SetValue(0.28, 0.045 * entries.size());
     renderer->AddViewProp(legend);
 
-    std::string title = tables.size() == 1 ? tables.front()->label + ": polar curves" : "polar curves";
+    std::string title =
+        tables.size() == 1 ? tables.front()->label + ": polar curves" : "polar curves";
     bool banded = false;
     for (const auto* t : tables) {
         std::string error;
         if (t->standard_error) {
-            error = fmt::format(" \xC2\xB1 {:.2g}", t->standard_error->intensity(t->max_c_deg, t->max_gamma_deg));
+            error = fmt::format(" \xC2\xB1 {:.2g}",
+                                t->standard_error->intensity(t->max_c_deg, t->max_gamma_deg));
             banded = true;
         }
-        title += fmt::format("\n{}maximum {:.4g}{} {} at C{:g} gamma {:g}", tables.size() > 1 ? t->label + ": " : "",
-                             t->max_intensity, error, t->unit, t->max_c_deg, t->max_gamma_deg);
+        title += fmt::format("\n{}maximum {:.4g}{} {} at C{:g} gamma {:g}",
+                             tables.size() > 1 ? t->label + ": " : "", t->max_intensity, error,
+                             t->unit, t->max_c_deg, t->max_gamma_deg);
     }
     if (banded) title += fmt::format("\nbands: \xC2\xB1{:g} standard errors", kBandErrors);
     add_title(renderer, title);

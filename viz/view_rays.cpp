@@ -17,7 +17,8 @@
 
 namespace rayset::viz {
 
-ViewHandles add_rays_view(vtkRenderer* renderer, vtkPolyData* cloud, const std::string& title, bool colour_by_flux) {
+ViewHandles add_rays_view(vtkRenderer* renderer, vtkPolyData* cloud, const std::string& title,
+                          bool colour_by_flux) {
     // Wavelengths that are unknown (NaN) do not count; without any, colour by flux.
     double range[2] = {1e300, -1e300};
     vtkDataArray* wavelength = cloud->GetPointData()->GetArray("wavelength");
@@ -67,7 +68,9 @@ ViewHandles add_rays_view(vtkRenderer* renderer, vtkPolyData* cloud, const std::
     renderer->AddActor(arrow_actor);
 
     const std::string unit = field_string(cloud, "unit");
-    add_scalar_bar(renderer, lut, by_wavelength ? "wavelength (nm)" : "flux per ray (" + field_string(cloud, "flux_unit") + ")");
+    add_scalar_bar(renderer, lut,
+                   by_wavelength ? "wavelength (nm)"
+                                 : "flux per ray (" + field_string(cloud, "flux_unit") + ")");
     add_axes(renderer, bounds, unit);
     add_title(renderer, title);
     ViewHandles h;

@@ -10,7 +10,8 @@
 
 namespace rayset::viz {
 
-ViewHandles add_spheres_view(vtkRenderer* renderer, vtkPolyData* spheres, const std::string& title) {
+ViewHandles add_spheres_view(vtkRenderer* renderer, vtkPolyData* spheres,
+                             const std::string& title) {
     double range[2];
     spheres->GetPointData()->GetScalars()->GetRange(range);
     auto lut = colour_map(range[0], range[1]);

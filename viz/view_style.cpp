@@ -2,9 +2,9 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCubeAxesActor.h>
 #include <vtkCubeSource.h>
 #include <vtkGlyph3DMapper.h>
-#include <vtkCubeAxesActor.h>
 #include <vtkProperty.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
@@ -17,9 +17,10 @@ namespace rayset::viz {
 namespace {
 
 // Viridis (matplotlib) at 0, 1/8, ..., 1.
-constexpr double kViridis[9][3] = {{0.267, 0.005, 0.329}, {0.283, 0.141, 0.458}, {0.254, 0.265, 0.530},
-                                   {0.207, 0.372, 0.553}, {0.164, 0.471, 0.558}, {0.128, 0.567, 0.551},
-                                   {0.135, 0.659, 0.518}, {0.267, 0.749, 0.441}, {0.993, 0.906, 0.144}};
+constexpr double kViridis[9][3] = {
+    {0.267, 0.005, 0.329}, {0.283, 0.141, 0.458}, {0.254, 0.265, 0.530},
+    {0.207, 0.372, 0.553}, {0.164, 0.471, 0.558}, {0.128, 0.567, 0.551},
+    {0.135, 0.659, 0.518}, {0.267, 0.749, 0.441}, {0.993, 0.906, 0.144}};
 
 void dark_text(vtkTextProperty* p, int size) {
     p->SetColor(kText[0], kText[1], kText[2]);
@@ -65,7 +66,8 @@ void add_scalar_bar(vtkRenderer* renderer, vtkScalarsToColors* map, const std::s
     renderer->AddViewProp(bar);
 }
 
-void add_axes(vtkRenderer* renderer, const double bounds[6], const std::string& unit, const std::string& prefix) {
+void add_axes(vtkRenderer* renderer, const double bounds[6], const std::string& unit,
+              const std::string& prefix) {
     auto axes = vtkSmartPointer<vtkCubeAxesActor>::New();
     axes->SetBounds(bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5]);
     axes->SetCamera(renderer->GetActiveCamera());
@@ -81,10 +83,12 @@ void add_axes(vtkRenderer* renderer, const double bounds[6], const std::string& 
         axes->GetTitleTextProperty(a)->SetColor(kText[0], kText[1], kText[2]);
         axes->GetLabelTextProperty(a)->SetColor(kText[0], kText[1], kText[2]);
     }
-    for (auto* p : {axes->GetXAxesLinesProperty(), axes->GetYAxesLinesProperty(), axes->GetZAxesLinesProperty()})
+    for (auto* p : {axes->GetXAxesLinesProperty(), axes->GetYAxesLinesProperty(),
+                    axes->GetZAxesLinesProperty()})
         p->SetColor(0.3, 0.3, 0.3);
     // A flat source has a (nearly) zero-thickness axis, whose labels would pile up.
-    const double largest = std::max({bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]});
+    const double largest =
+        std::max({bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]});
     if (bounds[1] - bounds[0] <= 1e-3 * largest) axes->XAxisVisibilityOff();
     if (bounds[3] - bounds[2] <= 1e-3 * largest) axes->YAxisVisibilityOff();
     if (bounds[5] - bounds[4] <= 1e-3 * largest) axes->ZAxisVisibilityOff();
@@ -101,7 +105,8 @@ void add_title(vtkRenderer* renderer, const std::string& text) {
     renderer->AddViewProp(title);
 }
 
-void add_cell_cubes(vtkRenderer* renderer, vtkAlgorithmOutput* cells, double edge, vtkLookupTable* lut) {
+void add_cell_cubes(vtkRenderer* renderer, vtkAlgorithmOutput* cells, double edge,
+                    vtkLookupTable* lut) {
     auto cube = vtkSmartPointer<vtkCubeSource>::New();
     cube->SetXLength(edge);
     cube->SetYLength(edge);

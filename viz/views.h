@@ -18,13 +18,14 @@ namespace rayset::viz {
 struct ViewHandles {
     std::function<void(double)> set_threshold;  // density: rays per voxel
     double threshold_min = 0, threshold_max = 0;
-    double azimuth = -60, elevation = 30;       // default camera direction (scene.h, degrees)
-    bool flat = false;                          // a 2-D chart: parallel projection, no turning
+    double azimuth = -60, elevation = 30;  // default camera direction (scene.h, degrees)
+    bool flat = false;                     // a 2-D chart: parallel projection, no turning
 };
 
 ViewHandles add_view(vtkRenderer* renderer, Input& input, View view, const ViewOptions& options);
 
-ViewHandles add_rays_view(vtkRenderer* renderer, vtkPolyData* cloud, const std::string& title, bool colour_by_flux);
+ViewHandles add_rays_view(vtkRenderer* renderer, vtkPolyData* cloud, const std::string& title,
+                          bool colour_by_flux);
 ViewHandles add_farfield_view(vtkRenderer* renderer, vtkPolyData* solid, const std::string& title);
 // Several far fields overlaid in one polar chart, one colour and legend entry per plane and file.
 ViewHandles add_polar_view(vtkRenderer* renderer, const std::vector<const IntensityTable*>& tables);

@@ -40,7 +40,8 @@ std::string field_string(vtkDataObject* data, const char* name) {
 std::vector<double> field_values(vtkDataObject* data, const char* name) {
     std::vector<double> values;
     if (auto* a = data->GetFieldData()->GetArray(name))
-        for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) values.push_back(a->GetComponent(i, 0));
+        for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+            values.push_back(a->GetComponent(i, 0));
     return values;
 }
 

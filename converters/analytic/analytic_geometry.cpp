@@ -42,7 +42,8 @@ ArcIntegrals arc_integrals(double q, double b, double t1, double t2) {
     ArcIntegrals r;
     r.one = (dt + 2 * da) / s;
     // cos t / D = (Q/D - 1) / B; the two parts are rearranged so the 1/B is exact.
-    r.cos = b > 0 ? dt * b / ((q + s) * s) + 2 * q * da / (s * b) : (std::sin(t2) - std::sin(t1)) / q;
+    r.cos =
+        b > 0 ? dt * b / ((q + s) * s) + 2 * q * da / (s * b) : (std::sin(t2) - std::sin(t1)) / q;
     // sin t / D integrates to ln(D(t2)/D(t1)) / B, written with log1p for small B.
     const double d1 = q - b * std::cos(t1);
     const double dc = std::cos(t1) - std::cos(t2);
@@ -53,13 +54,15 @@ ArcIntegrals arc_integrals(double q, double b, double t1, double t2) {
 
 }  // namespace
 
-double polygon_irradiance(double radiance, const std::vector<Vec3>& vertices, Vec3 point, Vec3 normal) {
+double polygon_irradiance(double radiance, const std::vector<Vec3>& vertices, Vec3 point,
+                          Vec3 normal) {
     const size_t n = vertices.size();
     if (n < 3) return 0;
     // Newell's normal points to the side from which the vertices run counter-clockwise.
     Vec3 emitting;
     for (size_t i = 0; i < n; ++i) emitting = emitting + cross(vertices[i], vertices[(i + 1) % n]);
-    if (!(dot(emitting, point - vertices[0]) > 0)) return 0;  // behind the emitting side or in its plane
+    if (!(dot(emitting, point - vertices[0]) > 0))
+        return 0;  // behind the emitting side or in its plane
 
     std::vector<Vec3> clipped;
     clipped.reserve(n + 2);
@@ -76,7 +79,8 @@ double polygon_irradiance(double radiance, const std::vector<Vec3>& vertices, Ve
     return std::max(0.0, -0.5 * radiance * sum);
 }
 
-double disk_irradiance(double radiance, Vec3 centre, Vec3 axis, double radius, Vec3 point, Vec3 normal) {
+double disk_irradiance(double radiance, Vec3 centre, Vec3 axis, double radius, Vec3 point,
+                       Vec3 normal) {
     Vec3 e1, e2;
     orthonormal_basis(axis, e1, e2);
     const Vec3 d = point - centre;
@@ -121,7 +125,9 @@ double disk_irradiance(double radiance, Vec3 centre, Vec3 axis, double radius, V
     double sum = arc;
     if (chord) {
         // The chord closes the contour from the arc's end back to its start (in world space).
-        auto at = [&](double phi) { return centre + (a * std::cos(phi)) * e1 + (a * std::sin(phi)) * e2; };
+        auto at = [&](double phi) {
+            return centre + (a * std::cos(phi)) * e1 + (a * std::sin(phi)) * e2;
+        };
         sum += edge_term(at(phi2), at(phi1), point, normal);
     }
     return std::max(0.0, -0.5 * radiance * sum);

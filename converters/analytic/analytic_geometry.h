@@ -16,11 +16,13 @@ namespace rayset::analytic {
 // vertices run counter-clockwise. Exact (Lambert's contour formula, see
 // docs/synthetic-sources.md), after clipping the polygon to the receiver's front half-space
 // (the zero-width bridges clipping leaves in a non-convex polygon cancel in the contour sum).
-double polygon_irradiance(double radiance, const std::vector<Vec3>& vertices, Vec3 point, Vec3 normal);
+double polygon_irradiance(double radiance, const std::vector<Vec3>& vertices, Vec3 point,
+                          Vec3 normal);
 
 // Irradiance from a one-sided Lambertian disk of `radius` centred at `centre` that emits into
 // the half-space its unit `axis` points to. Exact closed form of the contour integral, also
 // when the receiver's plane cuts the disk.
-double disk_irradiance(double radiance, Vec3 centre, Vec3 axis, double radius, Vec3 point, Vec3 normal);
+double disk_irradiance(double radiance, Vec3 centre, Vec3 axis, double radius, Vec3 point,
+                       Vec3 normal);
 
 }  // namespace rayset::analytic

@@ -1,7 +1,7 @@
 #include "converters/analytic/analytic_sources.h"
 
-#include "converters/rays/io.h"
 #include "converters/colour/spectrum.h"
+#include "converters/rays/io.h"
 #include "core/error.h"
 
 #include <algorithm>
@@ -17,8 +17,8 @@ namespace {
 
 void require_positive(const char* source, const char* what, const char* unit, double value) {
     if (!(value > 0 && std::isfinite(value)))
-        throw Error(std::string(source) + ": " + what + " must be a positive number of " + unit + ", not " +
-                    format_double(value));
+        throw Error(std::string(source) + ": " + what + " must be a positive number of " + unit +
+                    ", not " + format_double(value));
 }
 
 void check_spectrum(const char* source, const Spectrum& spectrum) {
@@ -55,7 +55,8 @@ bool within(double value, double tolerance) { return std::abs(value) <= toleranc
 
 std::vector<Vec3> rectangle_corners(double cx, double cy, double sx, double sy) {
     const double hx = sx / 2, hy = sy / 2;
-    return {{cx - hx, cy - hy, 0}, {cx + hx, cy - hy, 0}, {cx + hx, cy + hy, 0}, {cx - hx, cy + hy, 0}};
+    return {
+        {cx - hx, cy - hy, 0}, {cx + hx, cy - hy, 0}, {cx + hx, cy + hy, 0}, {cx - hx, cy + hy, 0}};
 }
 
 std::string join(const std::vector<double>& values) {
@@ -84,8 +85,9 @@ void Source::describe_spectrum(RayHeader& header) const {
 }
 
 double Source::luminous_flux() const {
-    const double efficacy = spectrum_.has_table() ? luminous_efficacy(spectrum_.table)
-                                                  : kMaxLuminousEfficacy * photopic_efficiency(spectrum_.wavelength_nm);
+    const double efficacy =
+        spectrum_.has_table() ? luminous_efficacy(spectrum_.table)
+                              : kMaxLuminousEfficacy * photopic_efficiency(spectrum_.wavelength_nm);
     return total_flux() * efficacy;
 }
 
@@ -100,15 +102,19 @@ LambertianDisk::LambertianDisk(double radius, double radiance, Spectrum spectrum
     : Source(std::move(spectrum)), radius_(radius), radiance_(radiance), tilt_deg_(tilt_deg) {
     require_positive("disk", "radius", "mm", radius);
     require_positive("disk", "radiance", "W/(mm^2 sr)", radiance);
-    if (!(std::abs(tilt_deg) <= 90)) throw Error("disk: tilt must be a number of degrees from -90 to 90, not " + format_double(tilt_deg));
+    if (!(std::abs(tilt_deg) <= 90))
+        throw Error("disk: tilt must be a number of degrees from -90 to 90, not " +
+                    format_double(tilt_deg));
     check_spectrum("disk", spectrum_);
     normal_ = from_disk({0, 0, 1});
 }
 
-LambertianDisk LambertianDisk::with_flux(double radius, double flux, Spectrum spectrum, double tilt_deg) {
+LambertianDisk LambertianDisk::with_flux(double radius, double flux, Spectrum spectrum,
+                                         double tilt_deg) {
     require_positive("disk", "radius", "mm", radius);
     require_positive("disk", "flux", "W", flux);
-    return LambertianDisk(radius, flux / (kPi * kPi * radius * radius), std::move(spectrum), tilt_deg);
+    return LambertianDisk(radius, flux / (kPi * kPi * radius * radius), std::move(spectrum),
+                          tilt_deg);
 }
 
 // A rotation about y; none at all without a tilt, so untilted disks give the rays they always gave.
@@ -125,7 +131,8 @@ Vec3 LambertianDisk::to_disk(Vec3 v) const {
 }
 
 std::string LambertianDisk::parameters() const {
-    return "radius=" + format_double(radius_) + (tilt_deg_ != 0 ? " tilt=" + format_double(tilt_deg_) : "") +
+    return "radius=" + format_double(radius_) +
+           (tilt_deg_ != 0 ? " tilt=" + format_double(tilt_deg_) : "") +
            " radiance=" + format_double(radiance_) + " " + spectrum_parameters();
 }
 
@@ -154,7 +161,8 @@ Ray LambertianDisk::sample_ray(Pcg32& rng) const {
 
 // ---------------------------------------------------------------------------------------------
 
-LambertianRectangle::LambertianRectangle(double size_x, double size_y, double radiance, Spectrum spectrum)
+LambertianRectangle::LambertianRectangle(double size_x, double size_y, double radiance,
+                                         Spectrum spectrum)
     : Source(std::move(spectrum)), size_x_(size_x), size_y_(size_y), radiance_(radiance) {
     require_positive("rectangle", "size_x", "mm", size_x);
     require_positive("rectangle", "size_y", "mm", size_y);
@@ -162,7 +170,8 @@ LambertianRectangle::LambertianRectangle(double size_x, double size_y, double ra
     check_spectrum("rectangle", spectrum_);
 }
 
-LambertianRectangle LambertianRectangle::with_flux(double size_x, double size_y, double flux, Spectrum spectrum) {
+LambertianRectangle LambertianRectangle::with_flux(double size_x, double size_y, double flux,
+                                                   Spectrum spectrum) {
     require_positive("rectangle", "size_x", "mm", size_x);
     require_positive("rectangle", "size_y", "mm", size_y);
     require_positive("rectangle", "flux", "W", flux);
@@ -213,10 +222,13 @@ LambertianSphere LambertianSphere::with_flux(double radius, double flux, Spectru
 }
 
 std::string LambertianSphere::parameters() const {
-    return "radius=" + format_double(radius_) + " radiance=" + format_double(radiance_) + " " + spectrum_parameters();
+    return "radius=" + format_double(radius_) + " radiance=" + format_double(radiance_) + " " +
+           spectrum_parameters();
 }
 
-double LambertianSphere::total_flux() const { return kPi * radiance_ * 4 * kPi * radius_ * radius_; }
+double LambertianSphere::total_flux() const {
+    return kPi * radiance_ * 4 * kPi * radius_ * radius_;
+}
 
 double LambertianSphere::intensity(Vec3) const { return radiance_ * kPi * radius_ * radius_; }
 
@@ -265,7 +277,8 @@ CosineLobe CosineLobe::with_flux(double exponent, double flux, Spectrum spectrum
 }
 
 std::string CosineLobe::parameters() const {
-    return "n=" + format_double(exponent_) + " intensity=" + format_double(peak_) + " " + spectrum_parameters();
+    return "n=" + format_double(exponent_) + " intensity=" + format_double(peak_) + " " +
+           spectrum_parameters();
 }
 
 double CosineLobe::total_flux() const { return 2 * kPi * peak_ / (exponent_ + 1); }
@@ -287,7 +300,8 @@ double CosineLobe::irradiance(Vec3 point, Vec3 normal) const {
 Ray CosineLobe::sample_ray(Pcg32& rng) const {
     // cos(theta) = u^(1/(n+1)) inverts the cumulative flux 1 - cos^(n+1); the azimuth comes
     // from a disk point so that no sin/cos is needed.
-    const double c = exponent_ == 1 ? std::sqrt(1 - rng.uniform()) : std::pow(1 - rng.uniform(), 1 / (exponent_ + 1));
+    const double c = exponent_ == 1 ? std::sqrt(1 - rng.uniform())
+                                    : std::pow(1 - rng.uniform(), 1 / (exponent_ + 1));
     const double s = std::sqrt(std::max(0.0, 1 - c * c));
     double x, y, r2;
     do unit_disk(rng, x, y), r2 = x * x + y * y;
@@ -314,9 +328,11 @@ ChipCluster::ChipCluster(const Layout& layout, const std::vector<double>& fluxes
         const int count = layout.rings[k];
         const double radius = double(k) * layout.pitch;
         if (count < 0)
-            throw Error("cluster: ring " + std::to_string(k + 1) + " cannot hold " + std::to_string(count) + " chips");
+            throw Error("cluster: ring " + std::to_string(k + 1) + " cannot hold " +
+                        std::to_string(count) + " chips");
         if (radius == 0 && count > 1)
-            throw Error("cluster: ring 1 has radius 0, so it holds one chip or none, not " + std::to_string(count));
+            throw Error("cluster: ring 1 has radius 0, so it holds one chip or none, not " +
+                        std::to_string(count));
         for (int j = 0; j < count; ++j) {
             const double angle = 2 * kPi * j / count;
             Chip chip;
@@ -325,7 +341,8 @@ ChipCluster::ChipCluster(const Layout& layout, const std::vector<double>& fluxes
             chip.side = layout.chip_side;
             const size_t i = chips_.size();
             chip.flux = fluxes[i % fluxes.size()];
-            chip.wavelength_nm = wavelengths.empty() ? kUnknown : wavelengths[i % wavelengths.size()];
+            chip.wavelength_nm =
+                wavelengths.empty() ? kUnknown : wavelengths[i % wavelengths.size()];
             chips_.push_back(chip);
         }
     }
@@ -333,8 +350,10 @@ ChipCluster::ChipCluster(const Layout& layout, const std::vector<double>& fluxes
     const double side = layout.chip_side;
     for (size_t i = 0; i < chips_.size(); ++i)
         for (size_t j = i + 1; j < chips_.size(); ++j)
-            if (std::abs(chips_[i].x - chips_[j].x) < side && std::abs(chips_[i].y - chips_[j].y) < side)
-                throw Error("cluster: chips " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
+            if (std::abs(chips_[i].x - chips_[j].x) < side &&
+                std::abs(chips_[i].y - chips_[j].y) < side)
+                throw Error("cluster: chips " + std::to_string(i + 1) + " and " +
+                            std::to_string(j + 1) +
                             " overlap; use a larger pitch or a smaller chip");
     for (const Chip& c : chips_) {
         total_ += c.flux;
@@ -346,10 +365,12 @@ ChipCluster::ChipCluster(const Layout& layout, const std::vector<double>& fluxes
 
 std::string ChipCluster::parameters() const {
     std::string rings;
-    for (size_t k = 0; k < layout_.rings.size(); ++k) rings += (k ? "," : "") + std::to_string(layout_.rings[k]);
+    for (size_t k = 0; k < layout_.rings.size(); ++k)
+        rings += (k ? "," : "") + std::to_string(layout_.rings[k]);
     std::string text = "rings=" + rings + " chip=" + format_double(layout_.chip_side) +
                        " pitch=" + format_double(layout_.pitch) + " chip_flux=" + join(fluxes_);
-    return text + " " + (spectrum_.has_table() ? spectrum_parameters() : "wavelength=" + join(wavelengths_));
+    return text + " " +
+           (spectrum_.has_table() ? spectrum_parameters() : "wavelength=" + join(wavelengths_));
 }
 
 double ChipCluster::intensity(Vec3 direction) const {
@@ -362,7 +383,8 @@ double ChipCluster::radiance(Vec3 point, Vec3 direction) const {
     const double half = layout_.chip_side / 2, tolerance = 1e-6 * layout_.chip_side;
     if (!within(point.z, tolerance) || !(direction.z > 0)) return 0;
     for (const Chip& c : chips_)
-        if (std::abs(point.x - c.x) <= half + tolerance && std::abs(point.y - c.y) <= half + tolerance)
+        if (std::abs(point.x - c.x) <= half + tolerance &&
+            std::abs(point.y - c.y) <= half + tolerance)
             return c.flux / (kPi * c.side * c.side);
     return 0;
 }
@@ -370,15 +392,16 @@ double ChipCluster::radiance(Vec3 point, Vec3 direction) const {
 double ChipCluster::irradiance(Vec3 point, Vec3 normal) const {
     double sum = 0;
     for (const Chip& c : chips_)
-        sum += polygon_irradiance(c.flux / (kPi * c.side * c.side), rectangle_corners(c.x, c.y, c.side, c.side), point,
-                                  normal);
+        sum += polygon_irradiance(c.flux / (kPi * c.side * c.side),
+                                  rectangle_corners(c.x, c.y, c.side, c.side), point, normal);
     return sum;
 }
 
 Ray ChipCluster::sample_ray(Pcg32& rng) const {
     const double target = rng.uniform() * total_;
-    const size_t i = std::min<size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), target) - cumulative_.begin(),
-                                      chips_.size() - 1);
+    const size_t i = std::min<size_t>(
+        std::upper_bound(cumulative_.begin(), cumulative_.end(), target) - cumulative_.begin(),
+        chips_.size() - 1);
     const Chip& c = chips_[i];
     const double x = c.x + (rng.uniform() - 0.5) * c.side;
     const double y = c.y + (rng.uniform() - 0.5) * c.side;
@@ -390,7 +413,8 @@ Ray ChipCluster::sample_ray(Pcg32& rng) const {
 double ChipCluster::luminous_flux() const {
     if (spectrum_.has_table()) return Source::luminous_flux();
     double sum = 0;
-    for (const Chip& c : chips_) sum += c.flux * kMaxLuminousEfficacy * photopic_efficiency(c.wavelength_nm);
+    for (const Chip& c : chips_)
+        sum += c.flux * kMaxLuminousEfficacy * photopic_efficiency(c.wavelength_nm);
     return sum;
 }
 
@@ -402,8 +426,9 @@ void ChipCluster::describe_spectrum(RayHeader& header) const {
     header.spectral = SpectralKind::per_ray_wavelength;
     header.spectral_tables.clear();
     header.single_wavelength = kUnknown;
-    auto [lo, hi] = std::minmax_element(chips_.begin(), chips_.end(),
-                                        [](const Chip& a, const Chip& b) { return a.wavelength_nm < b.wavelength_nm; });
+    auto [lo, hi] = std::minmax_element(
+        chips_.begin(), chips_.end(),
+        [](const Chip& a, const Chip& b) { return a.wavelength_nm < b.wavelength_nm; });
     header.min_wavelength = float(lo->wavelength_nm);
     header.max_wavelength = float(hi->wavelength_nm);
 }

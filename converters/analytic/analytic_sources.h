@@ -42,7 +42,8 @@ public:
     virtual double intensity(Vec3 direction) const = 0;
     // Radiance (W/(mm^2 sr)) leaving `point` toward `direction`: 0 off the emitter or toward a
     // side it does not emit into. Points within 1e-6 of the source's size of its surface count
-    // as on it, so float ray origins do. NaN for the point emitter, whose radiance is a delta function.
+    // as on it, so float ray origins do. NaN for the point emitter, whose radiance is a delta
+    // function.
     virtual double radiance(Vec3 point, Vec3 direction) const = 0;
     // Irradiance (W/mm^2) at `point` on a receiver whose unit `normal` faces the light it
     // collects, exact at any distance and orientation (see each class for how).
@@ -67,7 +68,8 @@ protected:
 class LambertianDisk : public Source {
 public:
     LambertianDisk(double radius, double radiance, Spectrum spectrum = {}, double tilt_deg = 0);
-    static LambertianDisk with_flux(double radius, double flux, Spectrum spectrum = {}, double tilt_deg = 0);
+    static LambertianDisk with_flux(double radius, double flux, Spectrum spectrum = {},
+                                    double tilt_deg = 0);
     std::string name() const override { return "disk"; }
     std::string parameters() const override;
     double total_flux() const override;
@@ -92,7 +94,8 @@ private:
 class LambertianRectangle : public Source {
 public:
     LambertianRectangle(double size_x, double size_y, double radiance, Spectrum spectrum = {});
-    static LambertianRectangle with_flux(double size_x, double size_y, double flux, Spectrum spectrum = {});
+    static LambertianRectangle with_flux(double size_x, double size_y, double flux,
+                                         Spectrum spectrum = {});
     std::string name() const override { return "rectangle"; }
     std::string parameters() const override;
     double total_flux() const override;
@@ -151,7 +154,7 @@ private:
 struct Chip {
     double x = 0, y = 0;
     double side = 1;
-    double flux = 0;           // W
+    double flux = 0;  // W
     double wavelength_nm = 555;
 };
 
@@ -168,8 +171,8 @@ public:
     };
     // Chip i gets fluxes[i % size] W and wavelengths[i % size] nm (chips numbered ring by ring);
     // a table in `shared` gives every chip that spectrum instead of a wavelength.
-    ChipCluster(const Layout& layout, const std::vector<double>& fluxes, const std::vector<double>& wavelengths,
-                Spectrum shared = {});
+    ChipCluster(const Layout& layout, const std::vector<double>& fluxes,
+                const std::vector<double>& wavelengths, Spectrum shared = {});
     std::string name() const override { return "cluster"; }
     std::string parameters() const override;
     double total_flux() const override { return total_; }

@@ -25,7 +25,8 @@ SourceParameters parse_source_parameters(const std::vector<std::string>& words);
 // The source `name` (disk, rectangle, sphere, lobe, cluster) with `parameters`; unset ones take
 // the defaults source_help() lists. Throws Error naming the unknown source or key (and the
 // known ones), a value that is not a number, or a value out of range.
-std::unique_ptr<analytic::Source> make_source(const std::string& name, const SourceParameters& parameters);
+std::unique_ptr<analytic::Source> make_source(const std::string& name,
+                                              const SourceParameters& parameters);
 
 // Every source with its keys, units and defaults, one line per key, for --help.
 std::string source_help();
@@ -44,7 +45,8 @@ struct SynthOptions {
 // The header of the rays synthesize() writes: mm, radiant flux (and luminous), the source's
 // spectral kind, stated totals (no luminous total with a wavelength per ray: it depends on the
 // draw), text fields naming the source, its parameters, count and seed.
-RayHeader synth_header(const analytic::Source& source, uint64_t ray_count, uint64_t seed, const SynthOptions& options = {});
+RayHeader synth_header(const analytic::Source& source, uint64_t ray_count, uint64_t seed,
+                       const SynthOptions& options = {});
 
 // Writes ray_count rays of equal radiant flux total/ray_count (rounded to float once) drawn
 // with Pcg32(seed) into `out`, then calls out.finish(). The same seed gives the same rays.

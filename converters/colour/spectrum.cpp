@@ -14,7 +14,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Integral over [a, b] of the product of two functions that are linear on [a, b], given their
 // values at a, the midpoint and b: Simpson's rule is exact for the quadratic product.
-double product_integral(double a, double b, double fa, double fm, double fb, double ga, double gm, double gb) {
+double product_integral(double a, double b, double fa, double fm, double fb, double ga, double gm,
+                        double gb) {
     return (b - a) * (fa * ga + 4 * fm * gm + fb * gb) / 6;
 }
 
@@ -37,7 +38,9 @@ double luminous_efficacy(const SpectralTable& table) {
     const auto& s = table.weight;
     const size_t n = std::min(w.size(), s.size());
     if (n == 0) return kNaN;
-    if (n == 1) return s[0] > 0 ? kMaxLuminousEfficacy * photopic_efficiency(w[0]) : kNaN;  // a spectral line
+    if (n == 1)
+        return s[0] > 0 ? kMaxLuminousEfficacy * photopic_efficiency(w[0])
+                        : kNaN;  // a spectral line
 
     double power = 0, luminous = 0;
     for (size_t i = 0; i + 1 < n; ++i) {
@@ -51,8 +54,9 @@ double luminous_efficacy(const SpectralTable& table) {
         while (lo < b) {
             double hi = std::min(b, std::floor(lo) + 1);
             const double mid = (lo + hi) / 2;
-            luminous += product_integral(lo, hi, weight_at(lo), weight_at(mid), weight_at(hi), photopic_efficiency(lo),
-                                         photopic_efficiency(mid), photopic_efficiency(hi));
+            luminous += product_integral(lo, hi, weight_at(lo), weight_at(mid), weight_at(hi),
+                                         photopic_efficiency(lo), photopic_efficiency(mid),
+                                         photopic_efficiency(hi));
             lo = hi;
         }
     }
@@ -61,7 +65,8 @@ double luminous_efficacy(const SpectralTable& table) {
 
 PhotometricWeights::PhotometricWeights(const RayHeader& header) : header_(&header) {
     table_efficacy_.reserve(header.spectral_tables.size());
-    for (const SpectralTable& t : header.spectral_tables) table_efficacy_.push_back(luminous_efficacy(t));
+    for (const SpectralTable& t : header.spectral_tables)
+        table_efficacy_.push_back(luminous_efficacy(t));
     single_efficacy_ = kMaxLuminousEfficacy * photopic_efficiency(header.single_wavelength);
     const bool spectral = header.spectral != SpectralKind::none;
     luminous_known_ = header.has_luminous || (header.has_radiant && spectral);
@@ -70,19 +75,23 @@ PhotometricWeights::PhotometricWeights(const RayHeader& header) : header_(&heade
 
 double PhotometricWeights::efficacy(const Ray& ray) const {
     switch (header_->spectral) {
-    case SpectralKind::none: return kNaN;
-    case SpectralKind::single_wavelength: return single_efficacy_;
-    case SpectralKind::per_ray_wavelength: return kMaxLuminousEfficacy * photopic_efficiency(ray.wavelength);
-    case SpectralKind::shared_table: return table_efficacy_.empty() ? kNaN : table_efficacy_[0];
-    case SpectralKind::per_ray_table:
-        return ray.spectrum >= 0 && size_t(ray.spectrum) < table_efficacy_.size() ? table_efficacy_[ray.spectrum] : kNaN;
+        case SpectralKind::none: return kNaN;
+        case SpectralKind::single_wavelength: return single_efficacy_;
+        case SpectralKind::per_ray_wavelength:
+            return kMaxLuminousEfficacy * photopic_efficiency(ray.wavelength);
+        case SpectralKind::shared_table: return table_efficacy_.empty() ? kNaN : table_efficacy_[0];
+        case SpectralKind::per_ray_table:
+            return ray.spectrum >= 0 && size_t(ray.spectrum) < table_efficacy_.size()
+                       ? table_efficacy_[ray.spectrum]
+                       : kNaN;
     }
     return kNaN;
 }
 
 std::optional<double> PhotometricWeights::shared_efficacy() const {
     const SpectralKind kind = header_->spectral;
-    if (kind != SpectralKind::single_wavelength && kind != SpectralKind::shared_table) return std::nullopt;
+    if (kind != SpectralKind::single_wavelength && kind != SpectralKind::shared_table)
+        return std::nullopt;
     return efficacy(Ray{});
 }
 

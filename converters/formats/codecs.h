@@ -19,8 +19,8 @@ using Head = std::vector<uint8_t>;
 // binary, SPEOS): clears `chunk` and sets its first index, reads the next records (at most
 // max_rays, none past `count`) of `columns` floats each into `records`, sizes `chunk` to
 // match and advances `next`. Returns the number of records read, 0 at the end.
-size_t read_f32_records(BinaryInput& in, size_t columns, uint64_t count, size_t max_rays, uint64_t& next,
-                        std::vector<float>& records, RayColumns& chunk);
+size_t read_f32_records(BinaryInput& in, size_t columns, uint64_t count, size_t max_rays,
+                        uint64_t& next, std::vector<float>& records, RayColumns& chunk);
 
 bool sniff_tm25(const Head& head, uint64_t size);
 std::unique_ptr<RayDecoder> open_tm25(const std::string& path);
@@ -28,11 +28,13 @@ std::unique_ptr<RayEncoder> create_tm25(const std::string& path, const RayHeader
 
 bool sniff_lighttools_binary(const Head& head, uint64_t size);
 std::unique_ptr<RayDecoder> open_lighttools_binary(const std::string& path);
-std::unique_ptr<RayEncoder> create_lighttools_binary(const std::string& path, const RayHeader& header);
+std::unique_ptr<RayEncoder> create_lighttools_binary(const std::string& path,
+                                                     const RayHeader& header);
 
 bool sniff_lighttools_text(const Head& head, uint64_t size);
 std::unique_ptr<RayDecoder> open_lighttools_text(const std::string& path);
-std::unique_ptr<RayEncoder> create_lighttools_text(const std::string& path, const RayHeader& header);
+std::unique_ptr<RayEncoder> create_lighttools_text(const std::string& path,
+                                                   const RayHeader& header);
 
 bool sniff_zemax_binary(const Head& head, uint64_t size);
 std::unique_ptr<RayDecoder> open_zemax_binary(const std::string& path);

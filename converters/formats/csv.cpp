@@ -41,10 +41,10 @@
 #include "converters/rays/io.h"
 #include "converters/rays/text_row_count.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fmt/format.h>
 #include <iterator>
 #include <map>
 
@@ -125,12 +125,14 @@ public:
         lines_.clear();
         const size_t extras = header_.extras.size();
         while (chunk.size() < std::max<size_t>(max_rays, 1) && next_ < header_.ray_count) {
-            if (!in_.next(line_)) in_.fail_here("the file ended before its last ray: it changed while being read");
+            if (!in_.next(line_))
+                in_.fail_here("the file ended before its last ray: it changed while being read");
             if (line_.find_first_not_of(" \t") == std::string::npos) continue;
             const std::vector<std::string_view> fields = split_fields(line_, true);
             if (fields.size() != columns_.size())
-                in_.fail_here(fmt::format("expected {} comma-separated values (one per column of line {}) but found {}",
-                                          columns_.size(), column_line_, fields.size()));
+                in_.fail_here(fmt::format(
+                    "expected {} comma-separated values (one per column of line {}) but found {}",
+                    columns_.size(), column_line_, fields.size()));
             Ray ray;
             chunk.extra.resize(chunk.extra.size() + extras);
             float* extra = chunk.extra.data() + chunk.extra.size() - extras;
@@ -152,23 +154,28 @@ public:
 private:
     void store(Ray& ray, float* extra, const Column& column, std::string_view field) {
         float v = 0;
-        if (field.empty()) in_.fail_here("empty value: write nan for an unknown one", column_of(line_, field));
-        if (!parse_float(field, v)) in_.fail_here(fmt::format("'{}' is not a number", field), column_of(line_, field));
+        if (field.empty())
+            in_.fail_here("empty value: write nan for an unknown one", column_of(line_, field));
+        if (!parse_float(field, v))
+            in_.fail_here(fmt::format("'{}' is not a number", field), column_of(line_, field));
         switch (column.role) {
-        case Role::position: {
-            float* p[6] = {&ray.origin.x, &ray.origin.y, &ray.origin.z, &ray.direction.x, &ray.direction.y, &ray.direction.z};
-            *p[column.index] = v;
-            break;
-        }
-        case Role::radiant: ray.radiant = v; break;
-        case Role::luminous: ray.luminous = v; break;
-        case Role::wavelength: ray.wavelength = v; break;
-        case Role::spectrum:
-            if (!(v == std::floor(v) && v >= -1 && v < 2147483647.0f))
-                in_.fail_here(fmt::format("spectrum index '{}' is not a whole number >= -1", field), column_of(line_, field));
-            ray.spectrum = static_cast<int32_t>(v);
-            break;
-        case Role::extra: extra[column.index] = v; break;
+            case Role::position: {
+                float* p[6] = {&ray.origin.x,    &ray.origin.y,    &ray.origin.z,
+                               &ray.direction.x, &ray.direction.y, &ray.direction.z};
+                *p[column.index] = v;
+                break;
+            }
+            case Role::radiant: ray.radiant = v; break;
+            case Role::luminous: ray.luminous = v; break;
+            case Role::wavelength: ray.wavelength = v; break;
+            case Role::spectrum:
+                if (!(v == std::floor(v) && v >= -1 && v < 2147483647.0f))
+                    in_.fail_here(
+                        fmt::format("spectrum index '{}' is not a whole number >= -1", field),
+                        column_of(line_, field));
+                ray.spectrum = static_cast<int32_t>(v);
+                break;
+            case Role::extra: extra[column.index] = v; break;
         }
     }
 
@@ -184,23 +191,31 @@ private:
                 break;
             }
             size_t key_begin = line_.find_first_not_of(" \t", start + 1);
-            if (key_begin == std::string::npos || !std::islower(static_cast<unsigned char>(line_[key_begin])))
+            if (key_begin == std::string::npos ||
+                !std::islower(static_cast<unsigned char>(line_[key_begin])))
                 continue;  // free-text comment
             size_t key_end = key_begin;
-            while (key_end < line_.size() && (std::isalnum(static_cast<unsigned char>(line_[key_end])) || line_[key_end] == '_'))
+            while (
+                key_end < line_.size() &&
+                (std::isalnum(static_cast<unsigned char>(line_[key_end])) || line_[key_end] == '_'))
                 ++key_end;
             if (key_end == line_.size() || line_[key_end] != ':') continue;
             const std::string key = line_.substr(key_begin, key_end - key_begin);
             std::string_view value(line_);
-            value.remove_prefix(std::min(line_.size(), key_end + (line_.compare(key_end, 2, ": ") == 0 ? 2 : 1)));
+            value.remove_prefix(
+                std::min(line_.size(), key_end + (line_.compare(key_end, 2, ": ") == 0 ? 2 : 1)));
             auto [it, fresh] = seen.emplace(key, in_.line_number());
             if (!fresh && key != "spectral_table")
-                in_.fail_here(fmt::format("{} is given a second time (first on line {})", key, it->second), uint32_t(key_begin + 1));
+                in_.fail_here(
+                    fmt::format("{} is given a second time (first on line {})", key, it->second),
+                    uint32_t(key_begin + 1));
             apply_metadata(key, value, uint32_t(key_begin + 1), spectral);
         }
         if (in_.line_number() == 0) fail(in_.path(), "the file is empty");
         if (!found)
-            in_.fail_here("no column line (x,y,z,kx,ky,kz,...) after the comments: the file is truncated or not rayset CSV");
+            in_.fail_here(
+                "no column line (x,y,z,kx,ky,kz,...) after the comments: the file is truncated or "
+                "not rayset CSV");
         parse_columns(spectral);
     }
 
@@ -288,13 +303,16 @@ private:
         const std::vector<std::string_view> names = split_fields(line_, true);
         for (size_t i = 0; i < 6; ++i)
             if (names.size() <= i || names[i] != kPositionColumns[i])
-                in_.fail_here("the column line must start with x,y,z,kx,ky,kz", names.size() > i ? column_of(line_, names[i]) : 1);
+                in_.fail_here("the column line must start with x,y,z,kx,ky,kz",
+                              names.size() > i ? column_of(line_, names[i]) : 1);
         std::map<std::string_view, bool> seen;
         for (size_t i = 0; i < names.size(); ++i) {
             const std::string_view name = names[i];
-            if (name.empty()) in_.fail_here(fmt::format("column {} has no name", i + 1), column_of(line_, name));
+            if (name.empty())
+                in_.fail_here(fmt::format("column {} has no name", i + 1), column_of(line_, name));
             if (!seen.emplace(name, true).second)
-                in_.fail_here(fmt::format("column '{}' appears twice", name), column_of(line_, name));
+                in_.fail_here(fmt::format("column '{}' appears twice", name),
+                              column_of(line_, name));
             if (i < 6) {
                 columns_.push_back({Role::position, i});
             } else if (name == kRadiant) {
@@ -316,23 +334,29 @@ private:
             }
         }
         if (!header_.has_radiant && !header_.has_luminous)
-            in_.fail_here(fmt::format("no {} or {} column: every ray needs a flux", kRadiant, kLuminous));
+            in_.fail_here(
+                fmt::format("no {} or {} column: every ray needs a flux", kRadiant, kLuminous));
         check_spectral(spectral, seen.count(kWavelength) > 0, seen.count(kSpectrum) > 0);
     }
 
-    void check_spectral(std::optional<SpectralKind> spectral, bool wavelength_column, bool spectrum_column) {
-        const SpectralKind kind = spectral ? *spectral
+    void check_spectral(std::optional<SpectralKind> spectral, bool wavelength_column,
+                        bool spectrum_column) {
+        const SpectralKind kind = spectral            ? *spectral
                                   : wavelength_column ? SpectralKind::per_ray_wavelength
                                   : spectrum_column   ? SpectralKind::per_ray_table
                                                       : SpectralKind::none;
         const std::string_view name = kSpectralNames[static_cast<size_t>(kind)];
         if (wavelength_column != (kind == SpectralKind::per_ray_wavelength))
-            in_.fail_here(fmt::format("spectral kind {} {} a {} column", name, wavelength_column ? "does not take" : "needs", kWavelength));
+            in_.fail_here(fmt::format("spectral kind {} {} a {} column", name,
+                                      wavelength_column ? "does not take" : "needs", kWavelength));
         if (spectrum_column != (kind == SpectralKind::per_ray_table))
-            in_.fail_here(fmt::format("spectral kind {} {} a {} column", name, spectrum_column ? "does not take" : "needs", kSpectrum));
+            in_.fail_here(fmt::format("spectral kind {} {} a {} column", name,
+                                      spectrum_column ? "does not take" : "needs", kSpectrum));
         const size_t tables = header_.spectral_tables.size();
-        if ((kind == SpectralKind::shared_table && tables != 1) || (kind == SpectralKind::per_ray_table && tables == 0))
-            in_.fail_here(fmt::format("spectral kind {} but {} spectral_table lines in the comments", name, tables));
+        if ((kind == SpectralKind::shared_table && tables != 1) ||
+            (kind == SpectralKind::per_ray_table && tables == 0))
+            in_.fail_here(fmt::format(
+                "spectral kind {} but {} spectral_table lines in the comments", name, tables));
         if (kind == SpectralKind::single_wavelength && !(header_.single_wavelength > 0))
             in_.fail_here("spectral kind single_wavelength needs a positive single_wavelength_nm");
         header_.spectral = kind;
@@ -362,6 +386,8 @@ bool sniff_csv(const Head& head, uint64_t size) {
     return false;
 }
 
-std::unique_ptr<RayDecoder> open_csv(const std::string& path) { return std::make_unique<CsvDecoder>(path); }
+std::unique_ptr<RayDecoder> open_csv(const std::string& path) {
+    return std::make_unique<CsvDecoder>(path);
+}
 
 }  // namespace rayset

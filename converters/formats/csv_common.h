@@ -28,22 +28,24 @@ inline constexpr NamedExtra kNamedExtras[] = {
 };
 
 // Indexed by SpectralKind.
-inline constexpr std::string_view kSpectralNames[] = {"none", "single_wavelength", "per_ray_wavelength", "shared_table",
-                                                      "per_ray_table"};
+inline constexpr std::string_view kSpectralNames[] = {
+    "none", "single_wavelength", "per_ray_wavelength", "shared_table", "per_ray_table"};
 
 // Keys of RayHeader::text, in its order.
-inline constexpr std::string_view kTextKeys[9] = {"name",      "manufacturer", "model_creator",
-                                                  "ray_file_creator", "equipment", "camera",
-                                                  "operating_conditions", "additional_info", "data_reference"};
+inline constexpr std::string_view kTextKeys[9] = {
+    "name",   "manufacturer",         "model_creator",   "ray_file_creator", "equipment",
+    "camera", "operating_conditions", "additional_info", "data_reference"};
 
-inline constexpr LengthUnit kUnits[] = {LengthUnit::mm,   LengthUnit::cm, LengthUnit::m, LengthUnit::inch,
-                                        LengthUnit::ft,   LengthUnit::um, LengthUnit::nm};
+inline constexpr LengthUnit kUnits[] = {LengthUnit::mm,   LengthUnit::cm, LengthUnit::m,
+                                        LengthUnit::inch, LengthUnit::ft, LengthUnit::um,
+                                        LengthUnit::nm};
 
 // Whether `name` is a column with a fixed meaning (an additional extra may not use it).
 inline bool is_reserved_column(std::string_view name) {
     for (std::string_view p : kPositionColumns)
         if (name == p) return true;
-    if (name == kRadiant || name == kLuminous || name == kWavelength || name == kSpectrum) return true;
+    if (name == kRadiant || name == kLuminous || name == kWavelength || name == kSpectrum)
+        return true;
     for (const NamedExtra& e : kNamedExtras)
         if (name == e.name) return true;
     return false;
@@ -53,10 +55,14 @@ inline bool is_reserved_column(std::string_view name) {
 inline std::string escape(std::string_view text) {
     std::string out;
     for (char c : text) {
-        if (c == '\\') out += "\\\\";
-        else if (c == '\n') out += "\\n";
-        else if (c == '\r') out += "\\r";
-        else out += c;
+        if (c == '\\')
+            out += "\\\\";
+        else if (c == '\n')
+            out += "\\n";
+        else if (c == '\r')
+            out += "\\r";
+        else
+            out += c;
     }
     return out;
 }
@@ -71,10 +77,10 @@ inline bool unescape(std::string_view text, std::string& out) {
         }
         if (++i == text.size()) return false;
         switch (text[i]) {
-        case '\\': out += '\\'; break;
-        case 'n': out += '\n'; break;
-        case 'r': out += '\r'; break;
-        default: return false;
+            case '\\': out += '\\'; break;
+            case 'n': out += '\n'; break;
+            case 'r': out += '\r'; break;
+            default: return false;
         }
     }
     return true;

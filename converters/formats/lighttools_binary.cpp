@@ -2,13 +2,13 @@
 // "LTRFEND". There is no ray count: it follows from the file size. Layout in
 // ../shared/formats.md "LightTools ray data"; verified against real LightTools exports.
 #include "converters/formats/codecs.h"
-#include "converters/rays/io.h"
 #include "converters/formats/lighttools_common.h"
+#include "converters/rays/io.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fmt/format.h>
 
 namespace rayset {
 
@@ -25,7 +25,8 @@ public:
 
     bool decode(RayColumns& chunk, size_t max_rays) override {
         const size_t columns = layout_.columns();
-        const size_t n = read_f32_records(in_, columns, header_.ray_count, max_rays, next_, buffer_, chunk);
+        const size_t n =
+            read_f32_records(in_, columns, header_.ray_count, max_rays, next_, buffer_, chunk);
         for (size_t i = 0; i < n; ++i) {
             const float* f = &buffer_[i * columns];
             Ray ray;
@@ -38,7 +39,9 @@ public:
         return n > 0;
     }
 
-    Location locate(uint64_t index) const override { return Location::byte(kHeaderSize + index * record_bytes()); }
+    Location locate(uint64_t index) const override {
+        return Location::byte(kHeaderSize + index * record_bytes());
+    }
     bool can_seek() const override { return true; }
     void seek(uint64_t index) override { in_.seek(locate(index).value), next_ = index; }
     bool flux_is_relative() const override { return true; }
@@ -124,7 +127,8 @@ private:
         const uint32_t unit_code = read_u32("the length unit");
         // Code 0 is "system units", whatever the LightTools model used; the file does not say
         // which, and LightTools' default system unit is mm, so mm is assumed.
-        std::optional<LengthUnit> unit = unit_code == 0 ? LengthUnit::mm : lighttools_unit(unit_code);
+        std::optional<LengthUnit> unit =
+            unit_code == 0 ? LengthUnit::mm : lighttools_unit(unit_code);
         if (!unit)
             in_.fail_at(24, fmt::format("unknown length unit code {} (expected 0 system, 1 mm, 2 "
                                         "cm, 3 m, 4 in, 5 ft, 6 um or 7 nm)",
@@ -169,9 +173,13 @@ private:
 
 class LightToolsBinaryEncoder : public RayEncoder {
 public:
-    LightToolsBinaryEncoder(const std::string& path, const RayHeader& header) : out_(path), header_(header) {
+    LightToolsBinaryEncoder(const std::string& path, const RayHeader& header)
+        : out_(path), header_(header) {
         std::optional<LightToolsLayout> layout = lighttools_layout_for(header, dropped_);
-        if (!layout) fail(path, "cannot write LightTools ray data: the rays carry neither radiant nor luminous flux");
+        if (!layout)
+            fail(path,
+                 "cannot write LightTools ray data: the rays carry neither radiant nor luminous "
+                 "flux");
         layout_ = *layout;
         note_dropped_descriptions();
 
@@ -209,7 +217,8 @@ public:
 
     void finish() override {
         out_.write(kTrailer, sizeof kTrailer);
-        const double stated = layout_.photometric ? header_.stated_luminous : header_.stated_radiant;
+        const double stated =
+            layout_.photometric ? header_.stated_luminous : header_.stated_radiant;
         const float total = static_cast<float>(total_to_write(stated, sum_));
         out_.patch(kTotalFluxOffset, &total, sizeof total);
         out_.commit();
@@ -217,7 +226,8 @@ public:
 
 private:
     void note_dropped_descriptions() {
-        bool any_text = !header_.description.empty() || !header_.creation_date.empty() || !header_.additional_text.empty();
+        bool any_text = !header_.description.empty() || !header_.creation_date.empty() ||
+                        !header_.additional_text.empty();
         for (const std::string& t : header_.text) any_text = any_text || !t.empty();
         if (any_text) dropped_.push_back("descriptive text (the binary format has no text fields)");
     }
@@ -240,7 +250,8 @@ std::unique_ptr<RayDecoder> open_lighttools_binary(const std::string& path) {
     return std::make_unique<LightToolsBinaryDecoder>(path);
 }
 
-std::unique_ptr<RayEncoder> create_lighttools_binary(const std::string& path, const RayHeader& header) {
+std::unique_ptr<RayEncoder> create_lighttools_binary(const std::string& path,
+                                                     const RayHeader& header) {
     return std::make_unique<LightToolsBinaryEncoder>(path, header);
 }
 

@@ -2,15 +2,15 @@
 // a line (x y z kx ky kz flux [wavelength nm]), lt_endofdata. Verified against real exports of
 // LightTools 8.7 and 2024.03 (CRLF line endings, 7 significant digits, "e-016" exponents).
 #include "converters/formats/codecs.h"
-#include "converters/rays/io.h"
 #include "converters/formats/lighttools_common.h"
+#include "converters/rays/io.h"
 #include "converters/rays/text_row_count.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
-#include <fmt/format.h>
 #include <map>
 
 namespace rayset {
@@ -29,7 +29,8 @@ std::string_view trim(std::string_view s) {
 
 std::string lower(std::string_view s) {
     std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     return out;
 }
 
@@ -44,12 +45,15 @@ struct UnitName {
     LengthUnit unit;
 };
 constexpr UnitName kUnitNames[] = {
-    {"millimeters", LengthUnit::mm}, {"centimeters", LengthUnit::cm}, {"meters", LengthUnit::m},
-    {"inches", LengthUnit::inch},    {"feet", LengthUnit::ft},        {"micrometers", LengthUnit::um},
-    {"nanometers", LengthUnit::nm},  {"millimetres", LengthUnit::mm}, {"centimetres", LengthUnit::cm},
-    {"metres", LengthUnit::m},       {"micrometres", LengthUnit::um}, {"nanometres", LengthUnit::nm},
-    {"microns", LengthUnit::um},     {"mm", LengthUnit::mm},          {"cm", LengthUnit::cm},
-    {"m", LengthUnit::m},            {"in", LengthUnit::inch},        {"ft", LengthUnit::ft},
+    {"millimeters", LengthUnit::mm}, {"centimeters", LengthUnit::cm},
+    {"meters", LengthUnit::m},       {"inches", LengthUnit::inch},
+    {"feet", LengthUnit::ft},        {"micrometers", LengthUnit::um},
+    {"nanometers", LengthUnit::nm},  {"millimetres", LengthUnit::mm},
+    {"centimetres", LengthUnit::cm}, {"metres", LengthUnit::m},
+    {"micrometres", LengthUnit::um}, {"nanometres", LengthUnit::nm},
+    {"microns", LengthUnit::um},     {"mm", LengthUnit::mm},
+    {"cm", LengthUnit::cm},          {"m", LengthUnit::m},
+    {"in", LengthUnit::inch},        {"ft", LengthUnit::ft},
     {"um", LengthUnit::um},          {"nm", LengthUnit::nm},
 };
 
@@ -83,16 +87,19 @@ public:
         lines_.clear();
         const size_t columns = layout_.columns();
         while (chunk.size() < std::max<size_t>(max_rays, 1) && next_ < header_.ray_count) {
-            if (!in_.next(line_)) in_.fail_here("the file ended before its last ray: it changed while being read");
+            if (!in_.next(line_))
+                in_.fail_here("the file ended before its last ray: it changed while being read");
             const std::vector<std::string_view> fields = split_fields(line_);
             if (fields.empty()) continue;
             if (fields.size() != columns)
-                in_.fail_here(fmt::format("expected {} numbers (x y z kx ky kz flux{}) but found {}", columns,
-                                          layout_.wavelength ? " wavelength" : "", fields.size()));
+                in_.fail_here(
+                    fmt::format("expected {} numbers (x y z kx ky kz flux{}) but found {}", columns,
+                                layout_.wavelength ? " wavelength" : "", fields.size()));
             float v[8];
             for (size_t j = 0; j < columns; ++j)
                 if (!parse_float(fields[j], v[j]))
-                    in_.fail_here(fmt::format("'{}' is not a number", fields[j]), column_of(line_, fields[j]));
+                    in_.fail_here(fmt::format("'{}' is not a number", fields[j]),
+                                  column_of(line_, fields[j]));
             Ray ray;
             ray.origin = {v[0], v[1], v[2]};
             ray.direction = {v[3], v[4], v[5]};
@@ -285,7 +292,8 @@ private:
             fail(in_.path(), Location::line(std::max(count.last_line, in_.line_number())),
                  fmt::format("the file ends without {}: it is truncated", kEnd));
         if (count.after_end)
-            fail(in_.path(), Location::line(count.after_end), fmt::format("unexpected text after {}", kEnd));
+            fail(in_.path(), Location::line(count.after_end),
+                 fmt::format("unexpected text after {}", kEnd));
         header_.ray_count = count.rows;
     }
 
@@ -298,13 +306,19 @@ private:
 
 class LightToolsTextEncoder : public RayEncoder {
 public:
-    LightToolsTextEncoder(const std::string& path, const RayHeader& header) : out_(path), header_(header) {
+    LightToolsTextEncoder(const std::string& path, const RayHeader& header)
+        : out_(path), header_(header) {
         std::optional<LightToolsLayout> layout = lighttools_layout_for(header, dropped_);
-        if (!layout) fail(path, "cannot write LightTools ray data: the rays carry neither radiant nor luminous flux");
+        if (!layout)
+            fail(path,
+                 "cannot write LightTools ray data: the rays carry neither radiant nor luminous "
+                 "flux");
         layout_ = *layout;
         bool other_text = !header.creation_date.empty() || !header.additional_text.empty();
-        for (size_t i = 1; i < header.text.size(); ++i) other_text = other_text || !header.text[i].empty();
-        if (other_text) dropped_.push_back("descriptive text other than the name and the comment lines");
+        for (size_t i = 1; i < header.text.size(); ++i)
+            other_text = other_text || !header.text[i].empty();
+        if (other_text)
+            dropped_.push_back("descriptive text other than the name and the comment lines");
         write_header();
     }
 
@@ -315,8 +329,8 @@ public:
             const float flux = layout_.photometric ? ray.luminous : ray.radiant;
             const float nm = lighttools_wavelength(header_, ray);
             check_lighttools_ray(out_.path(), written_ + i, flux, layout_.wavelength, nm);
-            const float v[8] = {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
-                                ray.direction.z, flux, nm};
+            const float v[8] = {ray.origin.x,    ray.origin.y,    ray.origin.z, ray.direction.x,
+                                ray.direction.y, ray.direction.z, flux,         nm};
             for (size_t j = 0; j < layout_.columns(); ++j) {
                 if (j) text += ' ';
                 text += format_float(v[j]);
@@ -330,8 +344,10 @@ public:
 
     void finish() override {
         out_.write(std::string(kEnd) + kNewline);
-        const double stated = layout_.photometric ? header_.stated_luminous : header_.stated_radiant;
-        const std::string total = fmt::format("{:>{}}", format_double(total_to_write(stated, sum_)), kTotalWidth);
+        const double stated =
+            layout_.photometric ? header_.stated_luminous : header_.stated_radiant;
+        const std::string total =
+            fmt::format("{:>{}}", format_double(total_to_write(stated, sum_)), kTotalWidth);
         out_.patch(total_at_, total.data(), total.size());
         out_.commit();
     }
@@ -347,7 +363,8 @@ private:
         const std::string& description = header_.description;
         for (size_t start = 0; !description.empty();) {
             const size_t end = description.find('\n', start);
-            comments.push_back(description.substr(start, end == std::string::npos ? std::string::npos : end - start));
+            comments.push_back(description.substr(
+                start, end == std::string::npos ? std::string::npos : end - start));
             if (end == std::string::npos) break;
             start = end + 1;
         }
@@ -358,15 +375,18 @@ private:
         line("lt_rdf_version: 2.0");
         if (!header_.text[0].empty()) {
             std::string name = header_.text[0];
-            std::replace_if(name.begin(), name.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+            std::replace_if(
+                name.begin(), name.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
             line("dataname: " + name);
         }
-        line(std::string("lt_datatype: ") + (layout_.photometric ? "luminous_flux" : "radiant_power"));
+        line(std::string("lt_datatype: ") +
+             (layout_.photometric ? "luminous_flux" : "radiant_power"));
         line("lt_far_field_data: no");
         line(std::string("lt_color_info: ") + (layout_.wavelength ? "wavelength" : "none"));
         line(std::string("lt_length_units: ") + unit_name(header_.unit));
         const Vec3f& o = header_.data_origin;
-        line("lt_data_origin: " + format_float(o.x) + " " + format_float(o.y) + " " + format_float(o.z));
+        line("lt_data_origin: " + format_float(o.x) + " " + format_float(o.y) + " " +
+             format_float(o.z));
         // LightTools itself names the total lt_radiant_flux for luminous data as well. The value
         // is patched by finish() into a fixed-width field.
         out_.write("lt_radiant_flux: ");
@@ -396,7 +416,8 @@ std::unique_ptr<RayDecoder> open_lighttools_text(const std::string& path) {
     return std::make_unique<LightToolsTextDecoder>(path);
 }
 
-std::unique_ptr<RayEncoder> create_lighttools_text(const std::string& path, const RayHeader& header) {
+std::unique_ptr<RayEncoder> create_lighttools_text(const std::string& path,
+                                                   const RayHeader& header) {
     return std::make_unique<LightToolsTextEncoder>(path, header);
 }
 

@@ -2,14 +2,14 @@
 // every file seen, luminous total lm) and records of 8 f32: x y z l m n wavelength(nm) E, E a
 // relative radiant weight. No magic and no count: the size gives the count. Layout in
 // ../shared/formats.md "SPEOS .ray"; verified on the ansys/optical-automation test files.
+#include "converters/colour/spectrum.h"
 #include "converters/formats/codecs.h"
 #include "converters/rays/io.h"
-#include "converters/colour/spectrum.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fmt/format.h>
 
 namespace rayset {
 
@@ -35,7 +35,8 @@ public:
 
     bool decode(RayColumns& chunk, size_t max_rays) override {
         const size_t columns = 8;
-        const size_t n = read_f32_records(in_, columns, header_.ray_count, max_rays, next_, buffer_, chunk);
+        const size_t n =
+            read_f32_records(in_, columns, header_.ray_count, max_rays, next_, buffer_, chunk);
         for (size_t i = 0; i < n; ++i) {
             const float* f = &buffer_[i * columns];
             Ray ray;
@@ -48,7 +49,9 @@ public:
         return n > 0;
     }
 
-    Location locate(uint64_t index) const override { return Location::byte(kHeaderSize + index * kRecordSize); }
+    Location locate(uint64_t index) const override {
+        return Location::byte(kHeaderSize + index * kRecordSize);
+    }
     bool can_seek() const override { return true; }
     void seek(uint64_t index) override { in_.seek(locate(index).value), next_ = index; }
     bool flux_is_relative() const override { return true; }
@@ -59,7 +62,8 @@ private:
         if (size < kHeaderSize || (size - kHeaderSize) % kRecordSize != 0) {
             const uint64_t body = size < kHeaderSize ? 0 : size - kHeaderSize;
             in_.fail_at(std::min(size, kHeaderSize + body / kRecordSize * kRecordSize),
-                        fmt::format("the file is {} bytes, not a 28-byte SPEOS header plus whole 32-byte rays ({} bytes "
+                        fmt::format("the file is {} bytes, not a 28-byte SPEOS header plus whole "
+                                    "32-byte rays ({} bytes "
                                     "left over): it is truncated or not a SPEOS ray file",
                                     size, size < kHeaderSize ? size : body % kRecordSize));
         }
@@ -68,15 +72,19 @@ private:
         for (size_t i = 1; i <= kConstants; ++i) {
             const float v = header_float(h, i);
             if (v != kConstant)
-                in_.fail_at(4 * i, fmt::format("header value {} is {}, but it is 2.0 in every SPEOS ray file known; its "
-                                               "meaning is unknown, so this file cannot be read safely",
-                                               i + 1, v));
+                in_.fail_at(
+                    4 * i,
+                    fmt::format(
+                        "header value {} is {}, but it is 2.0 in every SPEOS ray file known; its "
+                        "meaning is unknown, so this file cannot be read safely",
+                        i + 1, v));
         }
         const float radiant = header_float(h, 0), luminous = header_float(h, 6);
         if (!(std::isfinite(radiant) && radiant >= 0))
             in_.fail_at(0, fmt::format("radiant total {} W is not a non-negative number", radiant));
         if (!(std::isfinite(luminous) && luminous >= 0))
-            in_.fail_at(kLuminousAt, fmt::format("luminous total {} lm is not a non-negative number", luminous));
+            in_.fail_at(kLuminousAt,
+                        fmt::format("luminous total {} lm is not a non-negative number", luminous));
 
         header_.format = RayFormat::speos;
         header_.unit = LengthUnit::mm;
@@ -97,15 +105,24 @@ public:
     SpeosEncoder(const std::string& path, const RayHeader& header)
         : out_(path), header_(header), scale_(millimetres_per(header.unit)) {
         if (!header.has_radiant)
-            fail(path, "cannot write SPEOS rays: their weights are radiant and these rays carry no radiant flux "
-                       "(convert luminous rays through a format that keeps them, e.g. TM-25)");
-        if (header.spectral != SpectralKind::per_ray_wavelength && header.spectral != SpectralKind::single_wavelength)
-            fail(path, "cannot write SPEOS rays: every SPEOS ray needs a wavelength and these rays have none "
-                       "(no per-ray or single wavelength in the source file)");
-        if (header.has_luminous) dropped_.push_back("per-ray luminous flux (SPEOS keeps radiant weights)");
-        if (!header.extras.empty()) dropped_.push_back("extra per-ray columns (" + std::to_string(header.extras.size()) + ")");
+            fail(path,
+                 "cannot write SPEOS rays: their weights are radiant and these rays carry no "
+                 "radiant flux "
+                 "(convert luminous rays through a format that keeps them, e.g. TM-25)");
+        if (header.spectral != SpectralKind::per_ray_wavelength &&
+            header.spectral != SpectralKind::single_wavelength)
+            fail(path,
+                 "cannot write SPEOS rays: every SPEOS ray needs a wavelength and these rays have "
+                 "none "
+                 "(no per-ray or single wavelength in the source file)");
+        if (header.has_luminous)
+            dropped_.push_back("per-ray luminous flux (SPEOS keeps radiant weights)");
+        if (!header.extras.empty())
+            dropped_.push_back("extra per-ray columns (" + std::to_string(header.extras.size()) +
+                               ")");
         if (header.unit != LengthUnit::mm)
-            dropped_.push_back(std::string("length unit ") + to_string(header.unit) + " (SPEOS rays are in mm: positions converted)");
+            dropped_.push_back(std::string("length unit ") + to_string(header.unit) +
+                               " (SPEOS rays are in mm: positions converted)");
         float h[7] = {0, kConstant, kConstant, kConstant, kConstant, kConstant, 0};
         out_.write(h, sizeof h);
     }
@@ -114,14 +131,18 @@ public:
         buffer_.resize(chunk.rays.size() * 8);
         for (size_t i = 0; i < chunk.rays.size(); ++i) {
             const Ray& ray = chunk.rays[i];
-            const float nm = header_.spectral == SpectralKind::single_wavelength ? header_.single_wavelength : ray.wavelength;
+            const float nm = header_.spectral == SpectralKind::single_wavelength
+                                 ? header_.single_wavelength
+                                 : ray.wavelength;
             const uint64_t index = written_ + i;
             if (!std::isfinite(ray.radiant) || ray.radiant < 0)
-                fail(out_.path(), fmt::format("ray {}: radiant flux {} cannot be written: SPEOS needs a non-negative weight "
+                fail(out_.path(), fmt::format("ray {}: radiant flux {} cannot be written: SPEOS "
+                                              "needs a non-negative weight "
                                               "for every ray",
                                               index + 1, ray.radiant));
             if (!(std::isfinite(nm) && nm > 0))
-                fail(out_.path(), fmt::format("ray {}: wavelength {} nm cannot be written: SPEOS needs a known wavelength "
+                fail(out_.path(), fmt::format("ray {}: wavelength {} nm cannot be written: SPEOS "
+                                              "needs a known wavelength "
                                               "for every ray",
                                               index + 1, nm));
             float* f = &buffer_[i * 8];
@@ -134,7 +155,8 @@ public:
             f[6] = nm;
             f[7] = ray.radiant;
             radiant_ += ray.radiant;
-            // Each ray is monochromatic, so its luminous flux is its radiant weight times 683 V(lambda).
+            // Each ray is monochromatic, so its luminous flux is its radiant weight times 683
+            // V(lambda).
             luminous_ += kMaxLuminousEfficacy * photopic_efficiency(nm) * ray.radiant;
         }
         out_.write(buffer_.data(), buffer_.size() * sizeof(float));
@@ -145,7 +167,8 @@ public:
     // the luminous flux V(lambda) gives those rays (SPEOS has no "unknown" total).
     void finish() override {
         const float radiant = float(total_to_write(header_.stated_radiant, radiant_));
-        const bool stated = totals_agree(header_.stated_radiant, radiant_) && std::isfinite(header_.stated_luminous);
+        const bool stated = totals_agree(header_.stated_radiant, radiant_) &&
+                            std::isfinite(header_.stated_luminous);
         const float luminous = float(stated ? header_.stated_luminous : luminous_);
         out_.patch(0, &radiant, sizeof radiant);
         out_.patch(kLuminousAt, &luminous, sizeof luminous);
@@ -168,13 +191,16 @@ private:
 // No magic: strict so that it never claims another format's file. The size must be the header
 // plus whole records and the five constant header values must be exactly 2.0.
 bool sniff_speos(const Head& head, uint64_t size) {
-    if (size < kHeaderSize || (size - kHeaderSize) % kRecordSize != 0 || head.size() < kHeaderSize) return false;
+    if (size < kHeaderSize || (size - kHeaderSize) % kRecordSize != 0 || head.size() < kHeaderSize)
+        return false;
     for (size_t i = 1; i <= kConstants; ++i)
         if (header_float(head.data(), i) != kConstant) return false;
     return true;
 }
 
-std::unique_ptr<RayDecoder> open_speos(const std::string& path) { return std::make_unique<SpeosDecoder>(path); }
+std::unique_ptr<RayDecoder> open_speos(const std::string& path) {
+    return std::make_unique<SpeosDecoder>(path);
+}
 
 std::unique_ptr<RayEncoder> create_speos(const std::string& path, const RayHeader& header) {
     return std::make_unique<SpeosEncoder>(path, header);

@@ -1,8 +1,8 @@
 // IES TM-25-13 ray files: the encoder. It writes the header up front with the ray count and
 // totals left open, streams the rays, and patches count and totals in finish().
 #include "converters/formats/codecs.h"
-#include "converters/rays/io.h"
 #include "converters/formats/tm25_layout.h"
+#include "converters/rays/io.h"
 
 #include <algorithm>
 #include <climits>
@@ -16,15 +16,15 @@ using namespace tm25;
 
 const char* kind_name(ExtraKind kind) {
     switch (kind) {
-    case ExtraKind::stokes_s1: return "Stokes S1";
-    case ExtraKind::stokes_s2: return "Stokes S2";
-    case ExtraKind::stokes_s3: return "Stokes S3";
-    case ExtraKind::ellipse_x: return "polarisation ellipse x";
-    case ExtraKind::ellipse_y: return "polarisation ellipse y";
-    case ExtraKind::ellipse_z: return "polarisation ellipse z";
-    case ExtraKind::tristimulus_x: return "tristimulus X";
-    case ExtraKind::tristimulus_z: return "tristimulus Z";
-    case ExtraKind::additional: break;
+        case ExtraKind::stokes_s1: return "Stokes S1";
+        case ExtraKind::stokes_s2: return "Stokes S2";
+        case ExtraKind::stokes_s3: return "Stokes S3";
+        case ExtraKind::ellipse_x: return "polarisation ellipse x";
+        case ExtraKind::ellipse_y: return "polarisation ellipse y";
+        case ExtraKind::ellipse_z: return "polarisation ellipse z";
+        case ExtraKind::tristimulus_x: return "tristimulus X";
+        case ExtraKind::tristimulus_z: return "tristimulus Z";
+        case ExtraKind::additional: break;
     }
     return "additional";
 }
@@ -41,7 +41,9 @@ public:
     void finish() override;
 
 private:
-    [[noreturn]] void fail_here(const std::string& what) const { fail(out_.path(), "cannot write TM-25: " + what); }
+    [[noreturn]] void fail_here(const std::string& what) const {
+        fail(out_.path(), "cannot write TM-25: " + what);
+    }
     void plan_columns();
     void check_spectra();
     void note_dropped();
@@ -64,13 +66,16 @@ private:
 void Tm25Encoder::plan_columns() {
     const RayHeader& h = header_;
     spectral_id_ = static_cast<int>(h.spectral);
-    const bool radiant_only = h.spectral == SpectralKind::per_ray_wavelength || h.spectral == SpectralKind::per_ray_table;
-    if (!h.has_radiant && !h.has_luminous) fail_here("the rays carry neither radiant nor luminous flux");
+    const bool radiant_only =
+        h.spectral == SpectralKind::per_ray_wavelength || h.spectral == SpectralKind::per_ray_table;
+    if (!h.has_radiant && !h.has_luminous)
+        fail_here("the rays carry neither radiant nor luminous flux");
     if (radiant_only && !h.has_radiant)
-        fail_here("spectral data id " + std::to_string(spectral_id_) + " needs radiant flux per ray, which the rays do not carry");
+        fail_here("spectral data id " + std::to_string(spectral_id_) +
+                  " needs radiant flux per ray, which the rays do not carry");
     if (radiant_only && h.has_luminous)
-        dropped_.push_back("luminous flux of each ray (TM-25 spectral data id " + std::to_string(spectral_id_) +
-                           " allows radiant flux only)");
+        dropped_.push_back("luminous flux of each ray (TM-25 spectral data id " +
+                           std::to_string(spectral_id_) + " allows radiant flux only)");
     // Which extras are TM-25's own columns; the rest become additional columns.
     constexpr int kKinds = static_cast<int>(ExtraKind::additional);
     int of_kind[kKinds];
@@ -92,8 +97,11 @@ void Tm25Encoder::plan_columns() {
         return n;
     };
     const int stokes_n = count_of(0, 6), tristimulus_n = count_of(6, 8);
-    if (stokes_n != 0 && stokes_n != 6) fail_here("TM-25 stores Stokes S1 S2 S3 and the polarisation ellipse axis only all six together");
-    if (tristimulus_n != 0 && tristimulus_n != 2) fail_here("TM-25 stores tristimulus X and Z only together");
+    if (stokes_n != 0 && stokes_n != 6)
+        fail_here(
+            "TM-25 stores Stokes S1 S2 S3 and the polarisation ellipse axis only all six together");
+    if (tristimulus_n != 0 && tristimulus_n != 2)
+        fail_here("TM-25 stores tristimulus X and Z only together");
     if (stokes_n && !h.has_radiant) fail_here("Stokes columns need radiant flux per ray");
     if (tristimulus_n && (!h.has_luminous || h.spectral != SpectralKind::none))
         fail_here("tristimulus columns need luminous flux (Y) per ray and no spectral information");
@@ -111,50 +119,62 @@ void Tm25Encoder::plan_columns() {
     int next_additional = columns_.additional;
     for (size_t e = 0; e < h.extras.size(); ++e) {
         int kind = static_cast<int>(h.extras[e].kind);
-        if (kind == kKinds) extra_column_[e] = next_additional++;
-        else if (kind < 6) extra_column_[e] = columns_.stokes + kind;
-        else extra_column_[e] = columns_.tristimulus + (kind - 6);
+        if (kind == kKinds)
+            extra_column_[e] = next_additional++;
+        else if (kind < 6)
+            extra_column_[e] = columns_.stokes + kind;
+        else
+            extra_column_[e] = columns_.tristimulus + (kind - 6);
     }
     mm_per_unit_ = millimetres_per(h.unit);  // TM-25 positions are in mm
 }
 
 void Tm25Encoder::check_spectra() {
     const RayHeader& h = header_;
-    if (h.spectral == SpectralKind::single_wavelength && !(std::isfinite(h.single_wavelength) && h.single_wavelength > 0))
-        fail_here("a single-wavelength file needs a positive wavelength, not " + format_float(h.single_wavelength));
-    if ((h.spectral == SpectralKind::shared_table || h.spectral == SpectralKind::per_ray_table) && h.spectral_tables.empty())
-        fail_here("spectral data id " + std::to_string(spectral_id_) + " needs spectral tables, but there are none");
+    if (h.spectral == SpectralKind::single_wavelength &&
+        !(std::isfinite(h.single_wavelength) && h.single_wavelength > 0))
+        fail_here("a single-wavelength file needs a positive wavelength, not " +
+                  format_float(h.single_wavelength));
+    if ((h.spectral == SpectralKind::shared_table || h.spectral == SpectralKind::per_ray_table) &&
+        h.spectral_tables.empty())
+        fail_here("spectral data id " + std::to_string(spectral_id_) +
+                  " needs spectral tables, but there are none");
     if (h.spectral_tables.size() > INT32_MAX) fail_here("too many spectral tables");
     for (size_t t = 0; t < h.spectral_tables.size(); ++t) {
         const SpectralTable& table = h.spectral_tables[t];
         std::string name = "spectral table " + std::to_string(t + 1);
-        if (table.wavelength.empty() || table.wavelength.size() != table.weight.size() || table.weight.size() > INT32_MAX)
-            fail_here(name + " has " + std::to_string(table.wavelength.size()) + " wavelengths and " +
-                      std::to_string(table.weight.size()) + " weights");
+        if (table.wavelength.empty() || table.wavelength.size() != table.weight.size() ||
+            table.weight.size() > INT32_MAX)
+            fail_here(name + " has " + std::to_string(table.wavelength.size()) +
+                      " wavelengths and " + std::to_string(table.weight.size()) + " weights");
         size_t bad = 0;
-        std::string problem = table_problem(table.wavelength.data(), table.weight.data(), table.weight.size(), bad);
-        if (!problem.empty()) fail_here(name + ", point " + std::to_string(bad / 2 + 1) + ": " + problem);
+        std::string problem =
+            table_problem(table.wavelength.data(), table.weight.data(), table.weight.size(), bad);
+        if (!problem.empty())
+            fail_here(name + ", point " + std::to_string(bad / 2 + 1) + ": " + problem);
     }
 }
 
 void Tm25Encoder::note_dropped() {
     const RayHeader& h = header_;
     // A description that one of the text fields already carries is not lost.
-    if (!h.description.empty() && std::find(h.text.begin(), h.text.end(), h.description) == h.text.end())
+    if (!h.description.empty() &&
+        std::find(h.text.begin(), h.text.end(), h.description) == h.text.end())
         dropped_.push_back("description");
     if (h.far_field) dropped_.push_back("far-field flag (TM-25 rays always have origins)");
     if (!(h.data_origin == Vec3f{})) dropped_.push_back("data origin");
     const SourcePlacement& p = h.placement;
     const SourcePlacement none;
-    if (!(p.location == none.location && p.rotation_rad == none.rotation_rad && p.scale == none.scale &&
-          p.inclination_azimuth_deg == none.inclination_azimuth_deg))
+    if (!(p.location == none.location && p.rotation_rad == none.rotation_rad &&
+          p.scale == none.scale && p.inclination_azimuth_deg == none.inclination_azimuth_deg))
         dropped_.push_back("source placement (location, rotation, scale, angles)");
 }
 
 void Tm25Encoder::write_text(const std::string& text, size_t chars, const std::string& what) {
     std::u32string code_points;
     size_t bad = utf8_to_utf32(text, code_points);
-    if (bad != std::string::npos) fail_here(what + " is not valid UTF-8 (byte " + std::to_string(bad) + " of the text)");
+    if (bad != std::string::npos)
+        fail_here(what + " is not valid UTF-8 (byte " + std::to_string(bad) + " of the text)");
     if (code_points.size() > chars) {
         code_points.resize(chars);
         dropped_.push_back(what + " past its first " + std::to_string(chars) + " characters");
@@ -168,11 +188,12 @@ void Tm25Encoder::write_header() {
     out_.write(kMagic, 4);
     out_.put(kVersion);
     out_.put(static_cast<int32_t>(h.creation_method));
-    out_.put(0.0f);      // totals and ray count: patched by finish()
+    out_.put(0.0f);  // totals and ray count: patched by finish()
     out_.put(0.0f);
     out_.put(uint64_t{0});
     char date[kDateBytes] = {};
-    if (h.creation_date.size() > kDateBytes) dropped_.push_back("creation date past its first 28 bytes");
+    if (h.creation_date.size() > kDateBytes)
+        dropped_.push_back("creation date past its first 28 bytes");
     std::memcpy(date, h.creation_date.data(), std::min(kDateBytes, h.creation_date.size()));
     out_.write(date, kDateBytes);
     out_.put(int32_t{0});  // ray start position: meaning unknown, 0 in every file seen
@@ -181,7 +202,8 @@ void Tm25Encoder::write_header() {
     out_.put(h.min_wavelength);
     out_.put(h.max_wavelength);
     out_.put(static_cast<int32_t>(h.spectral_tables.size()));
-    out_.put(static_cast<int32_t>(columns_.additional >= 0 ? columns_.count - columns_.additional : 0));
+    out_.put(
+        static_cast<int32_t>(columns_.additional >= 0 ? columns_.count - columns_.additional : 0));
     std::u32string additional_text;
     if (utf8_to_utf32(h.additional_text, additional_text) != std::string::npos)
         fail_here("the additional text is not valid UTF-8");
@@ -191,7 +213,8 @@ void Tm25Encoder::write_header() {
     const char reserved[kFlagsAt - kReservedAt] = {};
     out_.write(reserved, sizeof reserved);
     out_.write(flags_.data(), sizeof flags_);
-    for (size_t k = 0; k < kTextCount; ++k) write_text(h.text[k], kTextChars, std::string("text field '") + text_name(k) + "'");
+    for (size_t k = 0; k < kTextCount; ++k)
+        write_text(h.text[k], kTextChars, std::string("text field '") + text_name(k) + "'");
 
     for (const SpectralTable& table : h.spectral_tables) {
         out_.put(static_cast<int32_t>(table.wavelength.size()));
@@ -203,15 +226,17 @@ void Tm25Encoder::write_header() {
     const char zeros[kBlockAlign] = {};
     out_.write(zeros, padded(out_.offset() - kTablesAt) - (out_.offset() - kTablesAt));
     for (const ExtraColumn& extra : h.extras)
-        if (extra.kind == ExtraKind::additional) write_text(extra.label, kLabelChars, "column label '" + extra.label + "'");
+        if (extra.kind == ExtraKind::additional)
+            write_text(extra.label, kLabelChars, "column label '" + extra.label + "'");
     write_text(h.additional_text, text_chars, "additional text");
 }
 
 void Tm25Encoder::write(const RayChunk& chunk) {
     const size_t n = chunk.rays.size(), extras = header_.extras.size();
     if (chunk.extra.size() != n * extras)
-        fail_here("internal error: a chunk of " + std::to_string(n) + " rays has " + std::to_string(chunk.extra.size()) +
-                  " extra values for " + std::to_string(extras) + " extra columns");
+        fail_here("internal error: a chunk of " + std::to_string(n) + " rays has " +
+                  std::to_string(chunk.extra.size()) + " extra values for " +
+                  std::to_string(extras) + " extra columns");
     const Columns& c = columns_;
     const size_t tables = header_.spectral_tables.size();
     const bool scale = mm_per_unit_ != 1;
@@ -233,8 +258,9 @@ void Tm25Encoder::write(const RayChunk& chunk) {
         if (c.luminous >= 0) r[c.luminous] = ray.luminous, luminous_sum_ += ray.luminous;
         if (c.spectrum >= 0) {
             if (ray.spectrum < 0 || static_cast<size_t>(ray.spectrum) >= tables)
-                fail_here("ray " + std::to_string(chunk.first_index + i + 1) + " has spectrum index " +
-                          std::to_string(ray.spectrum + 1) + " but there are " + std::to_string(tables) + " spectral tables");
+                fail_here("ray " + std::to_string(chunk.first_index + i + 1) +
+                          " has spectrum index " + std::to_string(ray.spectrum + 1) +
+                          " but there are " + std::to_string(tables) + " spectral tables");
             r[c.spectrum] = static_cast<float>(ray.spectrum + 1);
         }
         const float* e = chunk.extra.data() + i * extras;
@@ -249,7 +275,8 @@ void Tm25Encoder::finish() {
     auto total = [](double stated, bool column, double sum) {
         return static_cast<float>(std::isnan(stated) && column ? sum : stated);
     };
-    const float luminous_total = total(header_.stated_luminous, flags_[luminous] == 1, luminous_sum_);
+    const float luminous_total =
+        total(header_.stated_luminous, flags_[luminous] == 1, luminous_sum_);
     const float radiant_total = total(header_.stated_radiant, flags_[radiant] == 1, radiant_sum_);
     out_.patch(kLuminousTotalAt, &luminous_total, 4);
     out_.patch(kRadiantTotalAt, &radiant_total, 4);

@@ -35,25 +35,41 @@ inline constexpr uint64_t kTextsAt = 288;
 inline constexpr size_t kTextChars = 1000;  // code points per text field
 inline constexpr size_t kTextCount = 9;
 inline constexpr uint64_t kTablesAt = kTextsAt + kTextCount * kTextChars * 4;  // 36288
-inline constexpr size_t kLabelChars = 128;  // 512 bytes of UTF-32
-inline constexpr uint64_t kBlockAlign = 32; // the spectral block and the additional text
+inline constexpr size_t kLabelChars = 128;   // 512 bytes of UTF-32
+inline constexpr uint64_t kBlockAlign = 32;  // the spectral block and the additional text
 
 // The eight data flags at byte 256, in file order.
-enum Flag { position, direction, radiant, wavelength, luminous, stokes, tristimulus, spectrum_index, kFlagCount };
+enum Flag {
+    position,
+    direction,
+    radiant,
+    wavelength,
+    luminous,
+    stokes,
+    tristimulus,
+    spectrum_index,
+    kFlagCount
+};
 using Flags = std::array<int32_t, kFlagCount>;
 
 inline constexpr uint64_t flag_at(int flag) { return kFlagsAt + 4 * static_cast<uint64_t>(flag); }
 inline const char* flag_name(int flag) {
-    static const char* const names[kFlagCount] = {"position",         "direction", "radiant flux",
-                                                  "wavelength",       "luminous flux", "Stokes",
-                                                  "tristimulus",      "spectrum index"};
+    static const char* const names[kFlagCount] = {"position",    "direction",     "radiant flux",
+                                                  "wavelength",  "luminous flux", "Stokes",
+                                                  "tristimulus", "spectrum index"};
     return names[flag];
 }
 
 inline const char* text_name(size_t field) {
-    static const char* const names[kTextCount] = {"name",         "manufacturer",       "model creator",
-                                                  "ray-file creator", "equipment/software", "camera",
-                                                  "operating conditions", "additional info", "data reference"};
+    static const char* const names[kTextCount] = {"name",
+                                                  "manufacturer",
+                                                  "model creator",
+                                                  "ray-file creator",
+                                                  "equipment/software",
+                                                  "camera",
+                                                  "operating conditions",
+                                                  "additional info",
+                                                  "data reference"};
     return names[field];
 }
 
@@ -83,7 +99,9 @@ inline Columns column_layout(const Flags& flags, int additional) {
 }
 
 // A byte count rounded up to the 32-byte blocks the spectral block and the text are padded to.
-inline uint64_t padded(uint64_t bytes) { return (bytes + kBlockAlign - 1) / kBlockAlign * kBlockAlign; }
+inline uint64_t padded(uint64_t bytes) {
+    return (bytes + kBlockAlign - 1) / kBlockAlign * kBlockAlign;
+}
 
 // UTF-32 text up to its first NUL (or all n code points) as UTF-8. Returns the index of the
 // first code point that is not a Unicode scalar value, or npos when all are valid.
@@ -93,6 +111,7 @@ size_t utf8_to_utf32(std::string_view text, std::u32string& out);
 
 // Why a spectral table cannot be used ("" if it can). bad_value is the offending value's index
 // as the file interleaves them: 2k for the k-th wavelength, 2k + 1 for its weight.
-std::string table_problem(const float* wavelength, const float* weight, size_t points, size_t& bad_value);
+std::string table_problem(const float* wavelength, const float* weight, size_t points,
+                          size_t& bad_value);
 
 }  // namespace rayset::tm25

@@ -3,13 +3,13 @@
 // verified against files written by OpticStudio-compatible tools (ansys/optical-automation,
 // TM25RaySetTools).
 #include "converters/formats/codecs.h"
-#include "converters/rays/io.h"
 #include "converters/formats/zemax_common.h"
+#include "converters/rays/io.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fmt/format.h>
 
 namespace rayset {
 
@@ -35,13 +35,17 @@ enum : size_t {
     kFluxTypeAt = 196,
 };
 
-template <class T> T get(const uint8_t* header, size_t at) {
+template <class T>
+T get(const uint8_t* header, size_t at) {
     T value;
     std::memcpy(&value, header + at, sizeof value);
     return value;
 }
 
-template <class T> void put(uint8_t* header, size_t at, T value) { std::memcpy(header + at, &value, sizeof value); }
+template <class T>
+void put(uint8_t* header, size_t at, T value) {
+    std::memcpy(header + at, &value, sizeof value);
+}
 
 Vec3f get_vec(const uint8_t* header, size_t at) {
     return {get<float>(header, at), get<float>(header, at + 4), get<float>(header, at + 8)};
@@ -59,7 +63,8 @@ public:
 
     bool decode(RayColumns& chunk, size_t max_rays) override {
         const size_t columns = layout_.columns();
-        const size_t n = read_f32_records(in_, columns, header_.ray_count, max_rays, next_, buffer_, chunk);
+        const size_t n =
+            read_f32_records(in_, columns, header_.ray_count, max_rays, next_, buffer_, chunk);
         for (size_t i = 0; i < n; ++i) {
             const float* f = &buffer_[i * columns];
             Ray ray;
@@ -72,7 +77,9 @@ public:
         return n > 0;
     }
 
-    Location locate(uint64_t index) const override { return Location::byte(kHeaderSize + index * record_bytes()); }
+    Location locate(uint64_t index) const override {
+        return Location::byte(kHeaderSize + index * record_bytes());
+    }
     bool can_seek() const override { return true; }
     void seek(uint64_t index) override { in_.seek(locate(index).value), next_ = index; }
     bool flux_is_relative() const override { return true; }
@@ -85,13 +92,20 @@ private:
         in_.read(h, kHeaderSize, "the 208-byte Zemax header");
         const int32_t identifier = get<int32_t>(h, 0);
         if (identifier != kIdentifier)
-            in_.fail_at(0, fmt::format("identifier {} is not 1010: not a Zemax source file (or a version of it this "
-                                       "reader does not know)",
-                                       identifier));
+            in_.fail_at(
+                0,
+                fmt::format(
+                    "identifier {} is not 1010: not a Zemax source file (or a version of it this "
+                    "reader does not know)",
+                    identifier));
         const uint32_t units = get<uint32_t>(h, kUnitsAt);
         const auto unit = zemax_unit(units);
         if (!unit)
-            in_.fail_at(kUnitsAt, fmt::format("dimension units code {} is not a Zemax unit (0 m, 1 in, 2 cm, 3 ft, 4 mm)", units));
+            in_.fail_at(
+                kUnitsAt,
+                fmt::format(
+                    "dimension units code {} is not a Zemax unit (0 m, 1 in, 2 cm, 3 ft, 4 mm)",
+                    units));
         layout_ = zemax_layout(
             get<int32_t>(h, kRayFormatAt), get<int32_t>(h, kFluxTypeAt),
             [&](const std::string& what) { in_.fail_at(kRayFormatAt, what); },
@@ -100,7 +114,8 @@ private:
 
         const float source_flux = get<float>(h, kSourceFluxAt);
         if (!std::isnan(source_flux) && !(std::isfinite(source_flux) && source_flux >= 0))
-            in_.fail_at(kSourceFluxAt, fmt::format("source flux {} is not a non-negative number", source_flux));
+            in_.fail_at(kSourceFluxAt,
+                        fmt::format("source flux {} is not a non-negative number", source_flux));
         (layout_.lumens ? header_.stated_luminous : header_.stated_radiant) = source_flux;
         // OpticStudio ignores the ray-set flux; it is kept as written, whatever it holds.
         header_.ray_set_flux = get<float>(h, kRaySetFluxAt);
@@ -113,7 +128,8 @@ private:
         header_.description = description;
 
         SourcePlacement& p = header_.placement;
-        for (size_t i = 0; i < 4; ++i) p.inclination_azimuth_deg[i] = get<float>(h, kAnglesAt + 4 * i);
+        for (size_t i = 0; i < 4; ++i)
+            p.inclination_azimuth_deg[i] = get<float>(h, kAnglesAt + 4 * i);
         p.location = get_vec(h, kLocationAt);
         p.rotation_rad = get_vec(h, kRotationAt);
         p.scale = get_vec(h, kScaleAt);
@@ -128,7 +144,10 @@ private:
     void parse_wavelength(float um) {
         if (layout_.wavelength || um == 0 || std::isnan(um)) return;
         if (!(std::isfinite(um) && um > 0))
-            in_.fail_at(kWavelengthAt, fmt::format("wavelength {} um is not a positive number (0 would mean composite)", um));
+            in_.fail_at(
+                kWavelengthAt,
+                fmt::format("wavelength {} um is not a positive number (0 would mean composite)",
+                            um));
         header_.spectral = SpectralKind::single_wavelength;
         header_.single_wavelength = zemax_um_to_nm(um);
     }
@@ -139,25 +158,33 @@ private:
         const uint64_t count = header_.ray_count, record = record_bytes();
         const uint64_t size = in_.size(), body = size - kHeaderSize, need = count * record;
         if (body == need) return;
-        const std::string stated =
-            fmt::format("the header (byte 4) states {} rays of {} bytes = {} bytes after the 208-byte header", count, record, need);
+        const std::string stated = fmt::format(
+            "the header (byte 4) states {} rays of {} bytes = {} bytes after the 208-byte header",
+            count, record, need);
         if (body < need && body % record != 0) {
             const uint64_t whole = body / record;
             in_.fail_at(kHeaderSize + whole * record,
-                        fmt::format("ray {} is cut off after {} of its {} bytes: the file is {} bytes, {} bytes after "
+                        fmt::format("ray {} is cut off after {} of its {} bytes: the file is {} "
+                                    "bytes, {} bytes after "
                                     "the header, but {}: the file is truncated",
                                     whole + 1, body % record, record, size, body, stated));
         }
         if (body < need)
-            in_.fail_at(kCountAt, fmt::format("{}, but the file is {} bytes, {} bytes (= {} rays) after the header: the "
-                                              "file is truncated or the count is wrong",
-                                              stated, size, body, body / record));
+            in_.fail_at(
+                kCountAt,
+                fmt::format(
+                    "{}, but the file is {} bytes, {} bytes (= {} rays) after the header: the "
+                    "file is truncated or the count is wrong",
+                    stated, size, body, body / record));
         const uint64_t extra = body - need;
-        in_.fail_at(kHeaderSize + need,
-                    fmt::format("{} bytes follow the last ray: {}, but the file is {} bytes{}", extra, stated, size,
-                                extra % record == 0 ? fmt::format(" (room for {} more {}: the count may be wrong)", extra / record,
-                                                                        extra / record == 1 ? "ray" : "rays")
-                                                    : std::string()));
+        in_.fail_at(
+            kHeaderSize + need,
+            fmt::format("{} bytes follow the last ray: {}, but the file is {} bytes{}", extra,
+                        stated, size,
+                        extra % record == 0
+                            ? fmt::format(" (room for {} more {}: the count may be wrong)",
+                                          extra / record, extra / record == 1 ? "ray" : "rays")
+                            : std::string()));
     }
 
     BinaryInput in_;
@@ -168,12 +195,14 @@ private:
 
 class ZemaxBinaryEncoder : public RayEncoder {
 public:
-    ZemaxBinaryEncoder(const std::string& path, const RayHeader& header) : out_(path), header_(header) {
+    ZemaxBinaryEncoder(const std::string& path, const RayHeader& header)
+        : out_(path), header_(header) {
         layout_ = zemax_layout_for(path, header, true, dropped_);
         unit_ = zemax_unit_for(header.unit, dropped_);
         if (std::isfinite(layout_.lumens ? header.stated_radiant : header.stated_luminous))
-            dropped_.push_back(layout_.lumens ? "stated radiant total (Zemax states one total: lumens here)"
-                                              : "stated luminous total (Zemax states one total: watts here)");
+            dropped_.push_back(layout_.lumens
+                                   ? "stated radiant total (Zemax states one total: lumens here)"
+                                   : "stated luminous total (Zemax states one total: watts here)");
         write_header();
     }
 
@@ -222,12 +251,14 @@ private:
         put(h, 0, kIdentifier);
         std::string description = header_.description;
         if (description.size() >= kDescriptionSize) {
-            dropped_.push_back(fmt::format("description beyond its first {} bytes", kDescriptionSize - 1));
+            dropped_.push_back(
+                fmt::format("description beyond its first {} bytes", kDescriptionSize - 1));
             description.resize(kDescriptionSize - 1);  // a NUL ends it for C readers
         }
         std::memcpy(h + kDescriptionAt, description.data(), description.size());
         float um = 0;  // composite
-        if (!layout_.wavelength && header_.spectral == SpectralKind::single_wavelength && std::isfinite(header_.single_wavelength))
+        if (!layout_.wavelength && header_.spectral == SpectralKind::single_wavelength &&
+            std::isfinite(header_.single_wavelength))
             um = zemax_nm_to_um(header_.single_wavelength);
         put(h, kWavelengthAt, um);
         const SourcePlacement& p = header_.placement;
@@ -258,7 +289,9 @@ bool sniff_zemax_binary(const Head& head, uint64_t size) {
     return head.size() >= 4 && get<int32_t>(head.data(), 0) == kIdentifier;
 }
 
-std::unique_ptr<RayDecoder> open_zemax_binary(const std::string& path) { return std::make_unique<ZemaxBinaryDecoder>(path); }
+std::unique_ptr<RayDecoder> open_zemax_binary(const std::string& path) {
+    return std::make_unique<ZemaxBinaryDecoder>(path);
+}
 
 std::unique_ptr<RayEncoder> create_zemax_binary(const std::string& path, const RayHeader& header) {
     return std::make_unique<ZemaxBinaryEncoder>(path, header);

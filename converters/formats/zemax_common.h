@@ -32,12 +32,12 @@ struct ZemaxLayout {
 
 inline std::optional<LengthUnit> zemax_unit(int64_t code) {
     switch (code) {
-    case 0: return LengthUnit::m;
-    case 1: return LengthUnit::inch;
-    case 2: return LengthUnit::cm;
-    case 3: return LengthUnit::ft;
-    case 4: return LengthUnit::mm;
-    default: return std::nullopt;
+        case 0: return LengthUnit::m;
+        case 1: return LengthUnit::inch;
+        case 2: return LengthUnit::cm;
+        case 3: return LengthUnit::ft;
+        case 4: return LengthUnit::mm;
+        default: return std::nullopt;
     }
 }
 
@@ -51,29 +51,35 @@ struct ZemaxUnit {
 
 inline ZemaxUnit zemax_unit_for(LengthUnit unit, std::vector<std::string>& dropped) {
     switch (unit) {
-    case LengthUnit::m: return {0, unit, 1};
-    case LengthUnit::inch: return {1, unit, 1};
-    case LengthUnit::cm: return {2, unit, 1};
-    case LengthUnit::ft: return {3, unit, 1};
-    case LengthUnit::mm: return {4, unit, 1};
-    case LengthUnit::um:
-    case LengthUnit::nm: break;
+        case LengthUnit::m: return {0, unit, 1};
+        case LengthUnit::inch: return {1, unit, 1};
+        case LengthUnit::cm: return {2, unit, 1};
+        case LengthUnit::ft: return {3, unit, 1};
+        case LengthUnit::mm: return {4, unit, 1};
+        case LengthUnit::um:
+        case LengthUnit::nm: break;
     }
-    dropped.push_back(std::string("length unit ") + to_string(unit) + " (Zemax has no code for it: positions written in mm)");
+    dropped.push_back(std::string("length unit ") + to_string(unit) +
+                      " (Zemax has no code for it: positions written in mm)");
     return {4, LengthUnit::mm, millimetres_per(unit)};
 }
 
 // The checks both variants make on the codes they read; say_format and say_flux report a bad
 // code at that field and never return.
 template <class SayFormat, class SayFlux>
-ZemaxLayout zemax_layout(int64_t ray_format, int64_t flux_type, SayFormat&& say_format, SayFlux&& say_flux) {
+ZemaxLayout zemax_layout(int64_t ray_format, int64_t flux_type, SayFormat&& say_format,
+                         SayFlux&& say_flux) {
     if (ray_format != kZemaxFluxOnly && ray_format != kZemaxSpectral)
-        say_format("ray format " + std::to_string(ray_format) + " is not a Zemax ray format (0 flux only, 2 spectral)");
+        say_format("ray format " + std::to_string(ray_format) +
+                   " is not a Zemax ray format (0 flux only, 2 spectral)");
     if (flux_type != 0 && flux_type != 1)
-        say_flux("flux type " + std::to_string(flux_type) + " is not a Zemax flux type (0 watts, 1 lumens)");
+        say_flux("flux type " + std::to_string(flux_type) +
+                 " is not a Zemax flux type (0 watts, 1 lumens)");
     if (flux_type == 1 && ray_format != kZemaxFluxOnly)
-        say_flux("flux type 1 (lumens) is only allowed with ray format 0 (flux only), this file has ray format " +
-                 std::to_string(ray_format));
+        say_flux(
+            "flux type 1 (lumens) is only allowed with ray format 0 (flux only), this file has ray "
+            "format " +
+            std::to_string(ray_format));
     ZemaxLayout layout;
     layout.lumens = flux_type == 1;
     layout.wavelength = ray_format == kZemaxSpectral;
@@ -91,8 +97,12 @@ inline RayHeader zemax_header(RayFormat format, const ZemaxLayout& layout, Lengt
     return header;
 }
 
-inline void set_zemax_flux(Ray& ray, const ZemaxLayout& layout, float flux) { (layout.lumens ? ray.luminous : ray.radiant) = flux; }
-inline float zemax_flux(const Ray& ray, const ZemaxLayout& layout) { return layout.lumens ? ray.luminous : ray.radiant; }
+inline void set_zemax_flux(Ray& ray, const ZemaxLayout& layout, float flux) {
+    (layout.lumens ? ray.luminous : ray.radiant) = flux;
+}
+inline float zemax_flux(const Ray& ray, const ZemaxLayout& layout) {
+    return layout.lumens ? ray.luminous : ray.radiant;
+}
 
 // Zemax stores micrometres, rayset nanometres. The product is rounded once to float, so
 // um -> nm -> um comes back to within one float rounding (not always bit-exact).
@@ -102,44 +112,53 @@ inline float zemax_nm_to_um(float nm) { return float(double(nm) / 1000.0); }
 // Decides the record a writer uses for rays described by `header`; `single_in_header` says the
 // format can store one wavelength in its header (binary) rather than needing a column (text).
 // Notes in `dropped` what Zemax cannot hold; fails when the rays carry no flux at all.
-inline ZemaxLayout zemax_layout_for(const std::string& path, const RayHeader& header, bool single_in_header,
-                                    std::vector<std::string>& dropped) {
+inline ZemaxLayout zemax_layout_for(const std::string& path, const RayHeader& header,
+                                    bool single_in_header, std::vector<std::string>& dropped) {
     if (!header.has_radiant && !header.has_luminous)
-        fail(path, "cannot write a Zemax source file: the rays carry neither radiant nor luminous flux");
+        fail(path,
+             "cannot write a Zemax source file: the rays carry neither radiant nor luminous flux");
     ZemaxLayout layout;
     layout.lumens = !header.has_radiant;  // one flux column: watts win, they pair with wavelengths
-    if (header.has_radiant && header.has_luminous) dropped.push_back("per-ray luminous flux (Zemax keeps one flux column: watts)");
+    if (header.has_radiant && header.has_luminous)
+        dropped.push_back("per-ray luminous flux (Zemax keeps one flux column: watts)");
     bool wants_column = header.spectral == SpectralKind::per_ray_wavelength ||
                         (header.spectral == SpectralKind::single_wavelength && !single_in_header);
-    if (header.spectral == SpectralKind::shared_table || header.spectral == SpectralKind::per_ray_table)
+    if (header.spectral == SpectralKind::shared_table ||
+        header.spectral == SpectralKind::per_ray_table)
         dropped.push_back("spectral tables (Zemax holds at most one wavelength per ray)");
     if (wants_column && layout.lumens)
         dropped.push_back("wavelengths (Zemax allows lumens only in flux-only files)");
     layout.wavelength = wants_column && !layout.lumens;
-    if (!header.extras.empty()) dropped.push_back("extra per-ray columns (" + std::to_string(header.extras.size()) + ")");
-    if (header.far_field) dropped.push_back("far-field flag (Zemax records always have a start point)");
+    if (!header.extras.empty())
+        dropped.push_back("extra per-ray columns (" + std::to_string(header.extras.size()) + ")");
+    if (header.far_field)
+        dropped.push_back("far-field flag (Zemax records always have a start point)");
     return layout;
 }
 
 // The wavelength (nm) a writer stores for `ray`: single-wavelength rays carry the header's.
 inline float zemax_ray_nm(const RayHeader& header, const Ray& ray) {
-    return header.spectral == SpectralKind::single_wavelength ? header.single_wavelength : ray.wavelength;
+    return header.spectral == SpectralKind::single_wavelength ? header.single_wavelength
+                                                              : ray.wavelength;
 }
 
 // Zemax has no "unknown" flux or wavelength: a writer refuses rays it would have to invent them
 // for. `index` is 0-based.
-inline void check_zemax_ray(const std::string& path, uint64_t index, float flux, bool wavelength, float nm) {
+inline void check_zemax_ray(const std::string& path, uint64_t index, float flux, bool wavelength,
+                            float nm) {
     if (!std::isfinite(flux) || flux < 0)
         fail(path, "ray " + std::to_string(index + 1) + ": flux " + std::to_string(flux) +
                        " cannot be written: Zemax needs a non-negative flux for every ray");
     if (wavelength && !(std::isfinite(nm) && nm > 0))
         fail(path, "ray " + std::to_string(index + 1) + ": wavelength " + std::to_string(nm) +
-                       " nm cannot be written: a Zemax spectral file needs a known wavelength for every ray");
+                       " nm cannot be written: a Zemax spectral file needs a known wavelength for "
+                       "every ray");
 }
 
 inline void check_zemax_count(const std::string& path, uint64_t count) {
     if (count > kZemaxMaxRays)
-        fail(path, "cannot write " + std::to_string(count) + " rays: a Zemax source file holds at most 4,000,000,000");
+        fail(path, "cannot write " + std::to_string(count) +
+                       " rays: a Zemax source file holds at most 4,000,000,000");
 }
 
 }  // namespace rayset

@@ -23,34 +23,40 @@ struct Shape {
 Shape shape_of(const Photometry& p, const EmitOptions& o) {
     auto check = [&](const char* what, double mm) {
         if (!(mm > 0 && std::isfinite(mm)))
-            throw Error(o.name + ": the emitter " + what + " must be a positive number of mm, not " + format_double(mm));
+            throw Error(o.name + ": the emitter " + what +
+                        " must be a positive number of mm, not " + format_double(mm));
     };
     switch (o.shape) {
-    case EmitterShape::point: return {};
-    case EmitterShape::disk: check("radius", o.radius_mm); return {true, o.radius_mm, o.radius_mm};
-    case EmitterShape::rectangle:
-        check("size x", o.size_x_mm);
-        check("size y", o.size_y_mm);
-        return {false, o.size_x_mm, o.size_y_mm};
-    case EmitterShape::opening: {
-        const double length = std::abs(p.length_m) * 1000, width = std::abs(p.width_m) * 1000;
-        if (!std::isfinite(length) || !std::isfinite(width)) throw Error(o.name + ": the luminous opening is not finite");
-        if (length == 0 || width == 0) return {};  // a point (or a line, which carries no area)
-        return p.round ? Shape{true, length / 2, width / 2} : Shape{false, length, width};
-    }
+        case EmitterShape::point: return {};
+        case EmitterShape::disk:
+            check("radius", o.radius_mm);
+            return {true, o.radius_mm, o.radius_mm};
+        case EmitterShape::rectangle:
+            check("size x", o.size_x_mm);
+            check("size y", o.size_y_mm);
+            return {false, o.size_x_mm, o.size_y_mm};
+        case EmitterShape::opening: {
+            const double length = std::abs(p.length_m) * 1000, width = std::abs(p.width_m) * 1000;
+            if (!std::isfinite(length) || !std::isfinite(width))
+                throw Error(o.name + ": the luminous opening is not finite");
+            if (length == 0 || width == 0) return {};  // a point (or a line, which carries no area)
+            return p.round ? Shape{true, length / 2, width / 2} : Shape{false, length, width};
+        }
     }
     return {};
 }
 
 std::string shape_text(const Shape& s) {
     if (s.x == 0) return "point";
-    if (s.ellipse) return "ellipse " + format_double(2 * s.x) + " x " + format_double(2 * s.y) + " mm";
+    if (s.ellipse)
+        return "ellipse " + format_double(2 * s.x) + " x " + format_double(2 * s.y) + " mm";
     return "rectangle " + format_double(s.x) + " x " + format_double(s.y) + " mm";
 }
 
 Vec3f origin(const Shape& s, Pcg32& rng) {
     if (s.x == 0) return {};
-    if (!s.ellipse) return {float((rng.uniform() - 0.5) * s.x), float((rng.uniform() - 0.5) * s.y), 0};
+    if (!s.ellipse)
+        return {float((rng.uniform() - 0.5) * s.x), float((rng.uniform() - 0.5) * s.y), 0};
     double u, v;
     do {
         u = 2 * rng.uniform() - 1;
@@ -61,7 +67,8 @@ Vec3f origin(const Shape& s, Pcg32& rng) {
 
 }  // namespace
 
-RayHeader emit_header(const Photometry& photometry, uint64_t ray_count, uint64_t seed, const EmitOptions& options) {
+RayHeader emit_header(const Photometry& photometry, uint64_t ray_count, uint64_t seed,
+                      const EmitOptions& options) {
     const IntensityDistribution distribution(photometry, options.name);
     RayHeader h;
     h.unit = LengthUnit::mm;
@@ -82,14 +89,16 @@ RayHeader emit_header(const Photometry& photometry, uint64_t ray_count, uint64_t
     h.text[1] = keyword("MANUFAC");
     h.text[3] = "rayset emit";
     h.text[4] = "rayset converters/emit";
-    h.text[7] = "rays from the far field of " + options.name + ": " + shape_text(shape_of(photometry, options)) +
-                ", gamma 0 along " + (options.axis == PolarAxis::plus_z ? "+z" : "-z") +
+    h.text[7] = "rays from the far field of " + options.name + ": " +
+                shape_text(shape_of(photometry, options)) + ", gamma 0 along " +
+                (options.axis == PolarAxis::plus_z ? "+z" : "-z") +
                 ", rays=" + std::to_string(ray_count) + " seed=" + std::to_string(seed);
     h.description = h.text[7];
     return h;
 }
 
-void emit_rays(const Photometry& photometry, uint64_t ray_count, uint64_t seed, RayEncoder& out, const EmitOptions& options) {
+void emit_rays(const Photometry& photometry, uint64_t ray_count, uint64_t seed, RayEncoder& out,
+               const EmitOptions& options) {
     if (ray_count == 0) throw Error(options.name + ": the ray count must be at least 1");
     const IntensityDistribution distribution(photometry, options.name);
     const Shape shape = shape_of(photometry, options);

@@ -37,7 +37,8 @@ struct EmitOptions {
 // Header of the rays emit_rays() writes: mm, luminous flux (radiant flux when the photometry is
 // a radiometric far field, keyword _RADIOMETRIC), no spectrum, stated total = the exact flux of
 // the interpolated distribution, text naming the source, the shape, the ray count and the seed.
-RayHeader emit_header(const Photometry& photometry, uint64_t ray_count, uint64_t seed, const EmitOptions& options = {});
+RayHeader emit_header(const Photometry& photometry, uint64_t ray_count, uint64_t seed,
+                      const EmitOptions& options = {});
 
 // Writes ray_count rays of equal flux total/ray_count drawn with Pcg32(seed) into `out` (created
 // with emit_header() of the same arguments), then calls out.finish().

@@ -38,12 +38,12 @@ Symmetry symmetry_of(const std::vector<double>& h) {
 // The stored C angle whose values the C plane `c` (0..360) has under the symmetry.
 double fold(Symmetry symmetry, double c) {
     switch (symmetry) {
-    case Symmetry::quadrant:
-        if (c > 180) c = 360 - c;
-        return c > 90 ? 180 - c : c;
-    case Symmetry::bilateral_0_180: return c > 180 ? 360 - c : c;
-    case Symmetry::bilateral_90_270: return c < 90 || c > 270 ? wrap_360(180 - c) : c;
-    default: return c;
+        case Symmetry::quadrant:
+            if (c > 180) c = 360 - c;
+            return c > 90 ? 180 - c : c;
+        case Symmetry::bilateral_0_180: return c > 180 ? 360 - c : c;
+        case Symmetry::bilateral_90_270: return c < 90 || c > 270 ? wrap_360(180 - c) : c;
+        default: return c;
     }
 }
 
@@ -171,22 +171,26 @@ double IntensityDistribution::intensity(double c_deg, double gamma_deg) const {
     j = std::min(j == 0 ? 0 : j - 1, gamma_.size() - 2);
     const double s = (c - c_[k]) / (c_[k + 1] - c_[k]);
     const double t = (gamma_deg - gamma_[j]) / (gamma_[j + 1] - gamma_[j]);
-    return (1 - s) * ((1 - t) * value(k, j) + t * value(k, j + 1)) + s * ((1 - t) * value(k + 1, j) + t * value(k + 1, j + 1));
+    return (1 - s) * ((1 - t) * value(k, j) + t * value(k, j + 1)) +
+           s * ((1 - t) * value(k + 1, j) + t * value(k + 1, j + 1));
 }
 
 void IntensityDistribution::sample(Pcg32& rng, double& c_deg, double& gamma_deg) const {
     const double target = rng.uniform() * total_;
-    const size_t cell = std::min<size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), target) - cumulative_.begin(),
-                                         cumulative_.size() - 1);
+    const size_t cell = std::min<size_t>(
+        std::upper_bound(cumulative_.begin(), cumulative_.end(), target) - cumulative_.begin(),
+        cumulative_.size() - 1);
     const size_t bands = gamma_.size() - 1;
     const size_t k = cell / bands, j = cell % bands;
-    const double v00 = value(k, j), v01 = value(k, j + 1), v10 = value(k + 1, j), v11 = value(k + 1, j + 1);
+    const double v00 = value(k, j), v01 = value(k, j + 1), v10 = value(k + 1, j),
+                 v11 = value(k + 1, j + 1);
     // Within the cell: (s, t) from the bilinear intensity alone (t from its marginal, s given t),
     // then accepted with probability sin(gamma) / max sin(gamma), which leaves the density
     // proportional to intensity x sin(gamma), the flux per unit (C, gamma).
     for (;;) {
         const double t = linear_sample(rng.uniform(), (v00 + v10) / 2, (v01 + v11) / 2);
-        const double s = linear_sample(rng.uniform(), (1 - t) * v00 + t * v01, (1 - t) * v10 + t * v11);
+        const double s =
+            linear_sample(rng.uniform(), (1 - t) * v00 + t * v01, (1 - t) * v10 + t * v11);
         const double gamma = gamma_[j] + t * (gamma_[j + 1] - gamma_[j]);
         if (rng.uniform() * sin_max_[j] >= std::sin(gamma * kRadian)) continue;
         gamma_deg = gamma;

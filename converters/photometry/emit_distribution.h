@@ -33,9 +33,9 @@ private:
     // Fills cumulative_, sin_max_ and total_ from the nodes and their values.
     void integrate_cells();
 
-    std::vector<double> c_;       // unfolded C nodes, c_.front() + 360 == c_.back()
-    std::vector<double> gamma_;   // stored gamma nodes
-    std::vector<double> values_;  // [k * gamma_.size() + j]
+    std::vector<double> c_;           // unfolded C nodes, c_.front() + 360 == c_.back()
+    std::vector<double> gamma_;       // stored gamma nodes
+    std::vector<double> values_;      // [k * gamma_.size() + j]
     std::vector<double> cumulative_;  // running flux over cells (k, j), k-major
     std::vector<double> sin_max_;     // largest sin(gamma) in each gamma band
     double total_ = 0;

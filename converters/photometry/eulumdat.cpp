@@ -33,14 +33,16 @@ public:
         std::string line;
         if (!in_.next(line))
             rayset::fail(in_.path(), Location::line(in_.line_number() + 1),
-                         "file ends where " + what + " was expected: the file is truncated or the counts are wrong");
+                         "file ends where " + what +
+                             " was expected: the file is truncated or the counts are wrong");
         return trim(line);
     }
 
     double number(const std::string& what) {
         std::string t = text(what);
         double value;
-        if (!parse_ldt_number(t, value)) in_.fail_here("expected " + what + " (a number), found '" + t + "'");
+        if (!parse_ldt_number(t, value))
+            in_.fail_here("expected " + what + " (a number), found '" + t + "'");
         return value;
     }
 
@@ -53,8 +55,8 @@ public:
     int integer(const std::string& what, int lo, int hi) {
         double value = number(what);
         if (value != std::floor(value) || value < lo || value > hi)
-            in_.fail_here(what + " is " + format_double(value) + ": expected a whole number from " + std::to_string(lo) +
-                          " to " + std::to_string(hi));
+            in_.fail_here(what + " is " + format_double(value) + ": expected a whole number from " +
+                          std::to_string(lo) + " to " + std::to_string(hi));
         return static_cast<int>(value);
     }
 
@@ -63,10 +65,12 @@ public:
         for (size_t i = 0; i < count; ++i) {
             out[i] = number(what + " #" + std::to_string(i + 1) + " of " + std::to_string(count));
             if (out[i] < lo || out[i] > hi)
-                fail_here(what + " #" + std::to_string(i + 1) + " is " + format_double(out[i]) + ": expected " +
-                          format_double(lo) + " to " + format_double(hi) + " degrees");
+                fail_here(what + " #" + std::to_string(i + 1) + " is " + format_double(out[i]) +
+                          ": expected " + format_double(lo) + " to " + format_double(hi) +
+                          " degrees");
             if (i > 0 && out[i] <= out[i - 1])
-                fail_here(what + "s are not ascending: " + format_double(out[i - 1]) + " then " + format_double(out[i]));
+                fail_here(what + "s are not ascending: " + format_double(out[i - 1]) + " then " +
+                          format_double(out[i]));
         }
         return out;
     }
@@ -85,8 +89,9 @@ private:
 void check_symmetry_planes(LineReader& r, const EulumdatFile& f, uint64_t isym_line) {
     auto need = [&](size_t index, double angle) {
         if (f.c_angles_deg[index] != angle)
-            r.fail_at(isym_line, "Isym " + std::to_string(f.isym) + " needs C angle #" + std::to_string(index + 1) + " to be " +
-                                     format_double(angle) + " but it is " + format_double(f.c_angles_deg[index]));
+            r.fail_at(isym_line, "Isym " + std::to_string(f.isym) + " needs C angle #" +
+                                     std::to_string(index + 1) + " to be " + format_double(angle) +
+                                     " but it is " + format_double(f.c_angles_deg[index]));
     };
     size_t mc = size_t(f.mc);
     if (f.isym >= 2) need(0, 0);
@@ -102,11 +107,11 @@ void check_symmetry_planes(LineReader& r, const EulumdatFile& f, uint64_t isym_l
 
 size_t eulumdat_stored_planes(int isym, int mc) {
     switch (isym) {
-    case 1: return 1;
-    case 2:
-    case 3: return size_t(mc) / 2 + 1;
-    case 4: return size_t(mc) / 4 + 1;
-    default: return size_t(mc);
+        case 1: return 1;
+        case 2:
+        case 3: return size_t(mc) / 2 + 1;
+        case 4: return size_t(mc) / 4 + 1;
+        default: return size_t(mc);
     }
 }
 
@@ -124,8 +129,11 @@ bool looks_like_eulumdat(std::string_view head) {
     double v[6];
     for (int i = 0; i < 6; ++i)
         if (!parse_ldt_number(lines[size_t(i) + 1], v[i])) return false;
-    auto whole = [](double x, double lo, double hi) { return x == std::floor(x) && x >= lo && x <= hi; };
-    return whole(v[0], 0, 3) && whole(v[1], 0, 4) && whole(v[2], 1, 1e6) && v[3] >= 0 && whole(v[4], 1, 1e6) && v[5] >= 0;
+    auto whole = [](double x, double lo, double hi) {
+        return x == std::floor(x) && x >= lo && x <= hi;
+    };
+    return whole(v[0], 0, 3) && whole(v[1], 0, 4) && whole(v[2], 1, 1e6) && v[3] >= 0 &&
+           whole(v[4], 1, 1e6) && v[5] >= 0;
 }
 
 namespace {
@@ -274,28 +282,39 @@ EulumdatFile read_eulumdat(const std::string& path) {
 void write_eulumdat(const std::string& path, const EulumdatFile& f) {
     size_t planes = eulumdat_stored_planes(f.isym, f.mc);
     if (f.isym < 0 || f.isym > 4 || f.mc < 1 || f.ng < 1 || f.c_angles_deg.size() != size_t(f.mc) ||
-        f.gamma_angles_deg.size() != size_t(f.ng) || f.intensities.size() != planes * size_t(f.ng) || f.lamp_sets.empty())
-        fail(path, "cannot write as EULUMDAT: inconsistent data (Isym " + std::to_string(f.isym) + ", Mc " + std::to_string(f.mc) +
-                       ", Ng " + std::to_string(f.ng) + ", " + std::to_string(f.c_angles_deg.size()) + " C angles, " +
-                       std::to_string(f.gamma_angles_deg.size()) + " gamma angles, " + std::to_string(f.intensities.size()) +
-                       " intensities, " + std::to_string(f.lamp_sets.size()) + " lamp sets)");
+        f.gamma_angles_deg.size() != size_t(f.ng) ||
+        f.intensities.size() != planes * size_t(f.ng) || f.lamp_sets.empty())
+        fail(path, "cannot write as EULUMDAT: inconsistent data (Isym " + std::to_string(f.isym) +
+                       ", Mc " + std::to_string(f.mc) + ", Ng " + std::to_string(f.ng) + ", " +
+                       std::to_string(f.c_angles_deg.size()) + " C angles, " +
+                       std::to_string(f.gamma_angles_deg.size()) + " gamma angles, " +
+                       std::to_string(f.intensities.size()) + " intensities, " +
+                       std::to_string(f.lamp_sets.size()) + " lamp sets)");
     std::string out;
     auto text = [&](const std::string& s) {
-        if (s.find_first_of("\r\n") != std::string::npos) fail(path, "cannot write as EULUMDAT: a text field has a line break: '" + s + "'");
+        if (s.find_first_of("\r\n") != std::string::npos)
+            fail(path, "cannot write as EULUMDAT: a text field has a line break: '" + s + "'");
         out += s;
         out += "\r\n";
     };
     auto number = [&](double x) {
-        if (!std::isfinite(x)) fail(path, "cannot write as EULUMDAT: a value is " + format_double(x));
+        if (!std::isfinite(x))
+            fail(path, "cannot write as EULUMDAT: a value is " + format_double(x));
         text(format_double(x));
     };
     text(f.company);
-    for (double x : {double(f.ityp), double(f.isym), double(f.mc), f.dc, double(f.ng), f.dg}) number(x);
-    for (const auto* s : {&f.report_number, &f.luminaire_name, &f.luminaire_number, &f.file_name, &f.date_user}) text(*s);
-    for (double x : {f.luminaire_length_mm, f.luminaire_width_mm, f.luminaire_height_mm, f.luminous_length_mm, f.luminous_width_mm})
+    for (double x : {double(f.ityp), double(f.isym), double(f.mc), f.dc, double(f.ng), f.dg})
+        number(x);
+    for (const auto* s :
+         {&f.report_number, &f.luminaire_name, &f.luminaire_number, &f.file_name, &f.date_user})
+        text(*s);
+    for (double x : {f.luminaire_length_mm, f.luminaire_width_mm, f.luminaire_height_mm,
+                     f.luminous_length_mm, f.luminous_width_mm})
         number(x);
     for (double x : f.luminous_height_mm) number(x);
-    for (double x : {f.downward_flux_percent, f.light_output_ratio_percent, f.conversion_factor, f.tilt_deg}) number(x);
+    for (double x :
+         {f.downward_flux_percent, f.light_output_ratio_percent, f.conversion_factor, f.tilt_deg})
+        number(x);
     number(double(f.lamp_sets.size()));
     for (const auto& s : f.lamp_sets) {
         number(s.count);

@@ -15,28 +15,31 @@ namespace rayset {
 struct EulumdatLampSet {
     int count = 1;  // negative: absolute photometry
     std::string type;
-    double lumens = 1000;  // total flux of the set's lamps
-    std::string color;     // colour appearance / temperature, free text
-    std::string rendering; // colour rendering group / index, free text
-    double watts = 0;      // including ballast
+    double lumens = 1000;   // total flux of the set's lamps
+    std::string color;      // colour appearance / temperature, free text
+    std::string rendering;  // colour rendering group / index, free text
+    double watts = 0;       // including ballast
 };
 
 struct EulumdatFile {
     std::string company;  // line 1
-    int ityp = 1;         // 1 point source, vertical-axis symmetry; 2 linear; 3 point source, other symmetry
-    int isym = 0;         // 0 none, 1 vertical axis, 2 plane C0-C180, 3 plane C90-C270, 4 both planes
-    int mc = 0;           // number of C planes in 0..360
-    double dc = 0;        // C-plane spacing, 0 if not equidistant
-    int ng = 0;           // number of gamma angles
-    double dg = 0;        // gamma spacing, 0 if not equidistant
-    std::string report_number, luminaire_name, luminaire_number, file_name, date_user;  // lines 8-12
-    double luminaire_length_mm = 0, luminaire_width_mm = 0, luminaire_height_mm = 0;  // width 0: round
-    double luminous_length_mm = 0, luminous_width_mm = 0;                              // width 0: round
-    std::array<double, 4> luminous_height_mm{};  // at C0, C90, C180, C270
-    double downward_flux_percent = 0;            // DFF
-    double light_output_ratio_percent = 0;       // LORL
-    double conversion_factor = 1;                // applied to the intensities
-    double tilt_deg = 0;                         // tilt during measurement
+    int ityp =
+        1;  // 1 point source, vertical-axis symmetry; 2 linear; 3 point source, other symmetry
+    int isym = 0;   // 0 none, 1 vertical axis, 2 plane C0-C180, 3 plane C90-C270, 4 both planes
+    int mc = 0;     // number of C planes in 0..360
+    double dc = 0;  // C-plane spacing, 0 if not equidistant
+    int ng = 0;     // number of gamma angles
+    double dg = 0;  // gamma spacing, 0 if not equidistant
+    std::string report_number, luminaire_name, luminaire_number, file_name,
+        date_user;  // lines 8-12
+    double luminaire_length_mm = 0, luminaire_width_mm = 0,
+           luminaire_height_mm = 0;                        // width 0: round
+    double luminous_length_mm = 0, luminous_width_mm = 0;  // width 0: round
+    std::array<double, 4> luminous_height_mm{};            // at C0, C90, C180, C270
+    double downward_flux_percent = 0;                      // DFF
+    double light_output_ratio_percent = 0;                 // LORL
+    double conversion_factor = 1;                          // applied to the intensities
+    double tilt_deg = 0;                                   // tilt during measurement
     std::vector<EulumdatLampSet> lamp_sets;
     std::array<double, 10> direct_ratios{};  // for room indices 0.6 .. 5
     std::vector<double> c_angles_deg;        // all mc

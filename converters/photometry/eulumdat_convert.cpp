@@ -35,7 +35,8 @@ std::string one_line(const Photometry& p, const char* key) {
 }
 
 // Numbers from an _LDT_ keyword: exactly n, or fail naming the keyword.
-std::vector<double> numbers_of(const std::string& path, const char* key, const std::string& value, size_t n) {
+std::vector<double> numbers_of(const std::string& path, const char* key, const std::string& value,
+                               size_t n) {
     std::vector<double> out;
     bool all_numbers = true;
     for (auto field : split_fields(value)) {
@@ -44,8 +45,8 @@ std::vector<double> numbers_of(const std::string& path, const char* key, const s
         out.push_back(x);
     }
     if (!all_numbers || out.size() != n)
-        fail(path, std::string("cannot write as EULUMDAT: keyword ") + key + " is '" + value + "': expected " +
-                       std::to_string(n) + " numbers");
+        fail(path, std::string("cannot write as EULUMDAT: keyword ") + key + " is '" + value +
+                       "': expected " + std::to_string(n) + " numbers");
     return out;
 }
 
@@ -69,7 +70,8 @@ double downward_flux(const Photometry& p) {
     if (add_90) lower.vertical_deg.push_back(90);
     lower.candela.clear();
     for (size_t h = 0; h < p.horizontal_deg.size(); ++h)
-        for (double v : lower.vertical_deg) lower.candela.push_back(p.intensity(p.horizontal_deg[h], v));
+        for (double v : lower.vertical_deg)
+            lower.candela.push_back(p.intensity(p.horizontal_deg[h], v));
     return lower.total_flux();
 }
 
@@ -79,7 +81,8 @@ Photometry eulumdat_to_photometry(const EulumdatFile& f) {
     Photometry p;
     p.type = PhotometricType::C;
     p.vertical_deg = f.gamma_angles_deg;
-    const size_t planes = eulumdat_stored_planes(f.isym, f.mc), ng = size_t(f.ng), mc = size_t(f.mc);
+    const size_t planes = eulumdat_stored_planes(f.isym, f.mc), ng = size_t(f.ng),
+                 mc = size_t(f.mc);
     const EulumdatLampSet& set = f.lamp_sets.at(0);
     const double scale = f.conversion_factor * std::fabs(set.lumens) / 1000.0;
     std::vector<size_t> order(planes);  // stored plane for each horizontal angle, ascending
@@ -89,7 +92,8 @@ Photometry eulumdat_to_photometry(const EulumdatFile& f) {
     } else if (f.isym == 3) {
         // Stored C270 .. C0 .. C90 are the mirror images of 270 .. 180 .. 90.
         for (size_t k = 0; k < planes; ++k) {
-            p.horizontal_deg.push_back(mirror_90_270(f.c_angles_deg[(3 * mc / 4 + planes - 1 - k) % mc]));
+            p.horizontal_deg.push_back(
+                mirror_90_270(f.c_angles_deg[(3 * mc / 4 + planes - 1 - k) % mc]));
             order[k] = planes - 1 - k;
         }
     } else {
@@ -100,7 +104,8 @@ Photometry eulumdat_to_photometry(const EulumdatFile& f) {
     }
     p.candela.resize(planes * ng);
     for (size_t h = 0; h < planes; ++h)
-        for (size_t g = 0; g < ng; ++g) p.candela[h * ng + g] = f.intensities[order[h] * ng + g] * scale;
+        for (size_t g = 0; g < ng; ++g)
+            p.candela[h * ng + g] = f.intensities[order[h] * ng + g] * scale;
     p.lamp_count = std::abs(set.count);
     p.rated_lumens = set.count > 0 ? set.lumens : std::nan("");
     p.input_watts = set.watts;
@@ -123,19 +128,22 @@ Photometry eulumdat_to_photometry(const EulumdatFile& f) {
     double body[3] = {f.luminaire_length_mm, f.luminaire_width_mm, f.luminaire_height_mm};
     if (body[0] || body[1] || body[2]) put("_LDT_LUMINAIRE_MM", join(body, 3));
     const auto& hs = f.luminous_height_mm;
-    if (!(hs[0] == hs[1] && hs[1] == hs[2] && hs[2] == hs[3])) put("_LDT_LUMINOUS_HEIGHTS_MM", join(hs.data(), 4));
+    if (!(hs[0] == hs[1] && hs[1] == hs[2] && hs[2] == hs[3]))
+        put("_LDT_LUMINOUS_HEIGHTS_MM", join(hs.data(), 4));
     put("_LDT_DFF", format_double(f.downward_flux_percent));
     put("_LDT_LORL", format_double(f.light_output_ratio_percent));
     if (f.tilt_deg != 0) put("_LDT_TILT", format_double(f.tilt_deg));
-    if (std::any_of(f.direct_ratios.begin(), f.direct_ratios.end(), [](double x) { return x != 0; }))
+    if (std::any_of(f.direct_ratios.begin(), f.direct_ratios.end(),
+                    [](double x) { return x != 0; }))
         put("_LDT_DIRECT_RATIOS", join(f.direct_ratios.data(), 10));
     put("_LDT_LAMP_COLOR", set.color);
     put("_LDT_LAMP_RENDERING", set.rendering);
     std::string more;
     for (size_t s = 1; s < f.lamp_sets.size(); ++s) {
         const auto& m = f.lamp_sets[s];
-        more += (s > 1 ? "\n" : "") + std::to_string(m.count) + "|" + m.type + "|" + format_double(m.lumens) + "|" + m.color +
-                "|" + m.rendering + "|" + format_double(m.watts);
+        more += (s > 1 ? "\n" : "") + std::to_string(m.count) + "|" + m.type + "|" +
+                format_double(m.lumens) + "|" + m.color + "|" + m.rendering + "|" +
+                format_double(m.watts);
     }
     put("_LDT_MORE_LAMP_SETS", more);
     return p;
@@ -171,8 +179,9 @@ Circle full_circle(const std::string& path, const Photometry& p) {
         for (double a : h) angles.push_back(a), angles.push_back(mirror_90_270(a));
     } else {
         if (h.front() < 0 || h.back() > h.front() + 360)
-            fail(path, "cannot write as EULUMDAT: horizontal angles run " + format_double(h.front()) + ".." +
-                           format_double(h.back()) + "; EULUMDAT C angles lie in 0..360");
+            fail(path, "cannot write as EULUMDAT: horizontal angles run " +
+                           format_double(h.front()) + ".." + format_double(h.back()) +
+                           "; EULUMDAT C angles lie in 0..360");
         angles = h;
         if (h.back() - h.front() >= 360) angles.pop_back();  // C360 is C0 again
     }
@@ -180,7 +189,8 @@ Circle full_circle(const std::string& path, const Photometry& p) {
     std::sort(angles.begin(), angles.end());
     Circle circle;
     for (double a : angles) {
-        if (!circle.c.empty() && a - circle.c.back() <= 1e-9) continue;  // mirror planes that coincide
+        if (!circle.c.empty() && a - circle.c.back() <= 1e-9)
+            continue;  // mirror planes that coincide
         circle.c.push_back(a);
         circle.rows.emplace_back();
         for (double v : p.vertical_deg) circle.rows.back().push_back(p.intensity(a, v));
@@ -191,12 +201,14 @@ Circle full_circle(const std::string& path, const Photometry& p) {
 size_t find_plane(const Circle& circle, double angle) {
     angle = wrap_360(angle);
     for (size_t k = 0; k < circle.c.size(); ++k)
-        if (std::fabs(circle.c[k] - angle) <= 1e-9 || std::fabs(circle.c[k] - angle) >= 360 - 1e-9) return k;
+        if (std::fabs(circle.c[k] - angle) <= 1e-9 || std::fabs(circle.c[k] - angle) >= 360 - 1e-9)
+            return k;
     return circle.c.size();
 }
 
 // Whether every plane has a mirror image plane with the same values.
-template <class Mirror> bool symmetric(const Circle& circle, Mirror mirror) {
+template <class Mirror>
+bool symmetric(const Circle& circle, Mirror mirror) {
     for (size_t k = 0; k < circle.c.size(); ++k) {
         size_t j = find_plane(circle, mirror(circle.c[k]));
         if (j == circle.c.size() || circle.rows[j] != circle.rows[k]) return false;
@@ -211,12 +223,14 @@ int choose_symmetry(const Circle& circle, std::vector<size_t>& stored) {
     stored.clear();
     auto across_0_180 = [](double a) { return 360 - a; };
     auto across_90_270 = [](double a) { return 180 - a; };
-    if (std::all_of(circle.rows.begin(), circle.rows.end(), [&](const auto& r) { return r == circle.rows[0]; })) {
+    if (std::all_of(circle.rows.begin(), circle.rows.end(),
+                    [&](const auto& r) { return r == circle.rows[0]; })) {
         stored = {0};
         return 1;
     }
     bool from_0 = c[0] == 0;
-    if (from_0 && mc % 4 == 0 && c[mc / 4] == 90 && symmetric(circle, across_0_180) && symmetric(circle, across_90_270)) {
+    if (from_0 && mc % 4 == 0 && c[mc / 4] == 90 && symmetric(circle, across_0_180) &&
+        symmetric(circle, across_90_270)) {
         for (size_t k = 0; k <= mc / 4; ++k) stored.push_back(k);
         return 4;
     }
@@ -224,7 +238,8 @@ int choose_symmetry(const Circle& circle, std::vector<size_t>& stored) {
         for (size_t k = 0; k <= mc / 2; ++k) stored.push_back(k);
         return 2;
     }
-    if (from_0 && mc % 4 == 0 && c[mc / 4] == 90 && c[3 * mc / 4] == 270 && symmetric(circle, across_90_270)) {
+    if (from_0 && mc % 4 == 0 && c[mc / 4] == 90 && c[3 * mc / 4] == 270 &&
+        symmetric(circle, across_90_270)) {
         for (size_t k = 0; k <= mc / 2; ++k) stored.push_back((3 * mc / 4 + k) % mc);
         return 3;
     }

@@ -1,8 +1,8 @@
 #include "converters/photometry/farfield.h"
 
+#include "converters/colour/spectrum.h"
 #include "converters/photometry/farfield_smoothing.h"
 #include "converters/rays/io.h"
-#include "converters/colour/spectrum.h"
 #include "core/error.h"
 #include "core/geometry.h"
 
@@ -38,7 +38,9 @@ FarFieldGrid::FarFieldGrid(const FarFieldOptions& options)
     gamma_count_ = divisions(180, gamma_step_, "gamma") + 1;
 }
 
-double FarFieldGrid::gamma_low(size_t j) const { return j == 0 ? 0 : (double(j) - 0.5) * gamma_step_; }
+double FarFieldGrid::gamma_low(size_t j) const {
+    return j == 0 ? 0 : (double(j) - 0.5) * gamma_step_;
+}
 
 double FarFieldGrid::gamma_high(size_t j) const {
     return j + 1 == gamma_count_ ? 180 : (double(j) + 0.5) * gamma_step_;
@@ -50,7 +52,8 @@ double FarFieldGrid::solid_angle(size_t j) const {
     return c_step_ * kRadian * 2 * std::sin((a + b) / 2) * std::sin((b - a) / 2);
 }
 
-void FarFieldGrid::locate(double x, double y, double z, PolarAxis axis, size_t& i, size_t& j) const {
+void FarFieldGrid::locate(double x, double y, double z, PolarAxis axis, size_t& i,
+                          size_t& j) const {
     const double polar = axis == PolarAxis::plus_z ? z : -z;
     const double gamma = std::atan2(std::hypot(x, y), polar) / kRadian;
     j = std::min(size_t(std::floor(gamma / gamma_step_ + 0.5)), gamma_count_ - 1);
@@ -62,7 +65,9 @@ void FarFieldGrid::locate(double x, double y, double z, PolarAxis axis, size_t& 
 namespace {
 
 constexpr double kMinBandwidthDeg = kFarFieldResolution.min_sigma_deg / 2, kMaxBandwidthDeg = 45;
-bool bandwidth_allowed(double degrees) { return degrees >= kMinBandwidthDeg && degrees <= kMaxBandwidthDeg; }
+bool bandwidth_allowed(double degrees) {
+    return degrees >= kMinBandwidthDeg && degrees <= kMaxBandwidthDeg;
+}
 
 }  // namespace
 
@@ -78,7 +83,8 @@ void parse_smoothing(const std::string& text, FarFieldOptions& options) {
     char* end = nullptr;
     const double degrees = std::strtod(text.c_str(), &end);
     if (text.empty() || *end != '\0' || !bandwidth_allowed(degrees))
-        throw Error("far field: smoothing '" + text + "': expected auto, none or a bandwidth in degrees from " +
+        throw Error("far field: smoothing '" + text +
+                    "': expected auto, none or a bandwidth in degrees from " +
                     format_double(kMinBandwidthDeg) + " to " + format_double(kMaxBandwidthDeg));
     options.smoothing = FarFieldSmoothing::fixed;
     options.smoothing_deg = degrees;
@@ -94,15 +100,18 @@ struct BinnedRays {
     uint64_t rays = 0;
 };
 
-void bin_rays(RayReader& reader, const FarFieldGrid& grid, const FarFieldOptions& options, BinnedRays& out) {
+void bin_rays(RayReader& reader, const FarFieldGrid& grid, const FarFieldOptions& options,
+              BinnedRays& out) {
     const PhotometricWeights weights(reader.header());
     const bool photometric = options.quantity == FarFieldQuantity::photometric;
     if (photometric && !weights.luminous_known())
-        fail(reader.path(), "the rays carry neither luminous flux nor radiant flux with a spectrum, so their "
-                            "luminous intensity is unknown; ask for a radiometric far field instead");
+        fail(reader.path(),
+             "the rays carry neither luminous flux nor radiant flux with a spectrum, so their "
+             "luminous intensity is unknown; ask for a radiometric far field instead");
     if (!photometric && !weights.radiant_known())
-        fail(reader.path(), "the rays carry neither radiant flux nor luminous flux with a spectrum, so their "
-                            "radiant intensity is unknown; ask for a photometric far field instead");
+        fail(reader.path(),
+             "the rays carry neither radiant flux nor luminous flux with a spectrum, so their "
+             "radiant intensity is unknown; ask for a photometric far field instead");
     const size_t ng = grid.gamma_count();
     out.flux.assign(grid.c_count() * ng, 0);
     out.square.assign(grid.c_count() * ng, 0);
@@ -114,14 +123,17 @@ void bin_rays(RayReader& reader, const FarFieldGrid& grid, const FarFieldOptions
             const Ray& ray = chunk.rays[k];
             const double f = photometric ? weights.luminous(ray) : weights.radiant(ray);
             if (!std::isfinite(f))
-                fail(reader.path(), "ray " + std::to_string(chunk.first_index + k + 1) + ": its " +
-                                        (photometric ? "luminous" : "radiant") +
-                                        " flux is unknown (no flux column for it and an unknown wavelength)");
+                fail(reader.path(),
+                     "ray " + std::to_string(chunk.first_index + k + 1) + ": its " +
+                         (photometric ? "luminous" : "radiant") +
+                         " flux is unknown (no flux column for it and an unknown wavelength)");
             size_t i, j;
             grid.locate(ray.direction.x, ray.direction.y, ray.direction.z, options.axis, i, j);
             out.flux[i * ng + j] += f;
             out.square[i * ng + j] += f * f;
-            if (smoothing) out.directions.add(ray.direction.x, ray.direction.y, polar_sign * ray.direction.z, f);
+            if (smoothing)
+                out.directions.add(ray.direction.x, ray.direction.y, polar_sign * ray.direction.z,
+                                   f);
         }
         out.rays += chunk.rays.size();
         if (options.progress) options.progress(reader.progress() * (smoothing ? 0.5 : 1.0));
@@ -129,8 +141,8 @@ void bin_rays(RayReader& reader, const FarFieldGrid& grid, const FarFieldOptions
 }
 
 // Intensity and variance of each cell of the histogram, the polar caps pooled over C.
-void histogram_values(const FarFieldGrid& grid, const BinnedRays& binned, std::vector<double>& intensity,
-                      std::vector<double>& variance) {
+void histogram_values(const FarFieldGrid& grid, const BinnedRays& binned,
+                      std::vector<double>& intensity, std::vector<double>& variance) {
     const size_t nc = grid.c_count(), ng = grid.gamma_count();
     intensity.assign(nc * ng, 0);
     variance.assign(nc * ng, 0);
@@ -138,19 +150,22 @@ void histogram_values(const FarFieldGrid& grid, const BinnedRays& binned, std::v
         const bool cap = j == 0 || j + 1 == ng;
         double cap_flux = 0, cap_square = 0;
         if (cap)
-            for (size_t i = 0; i < nc; ++i) cap_flux += binned.flux[i * ng + j], cap_square += binned.square[i * ng + j];
+            for (size_t i = 0; i < nc; ++i)
+                cap_flux += binned.flux[i * ng + j], cap_square += binned.square[i * ng + j];
         const double omega = grid.solid_angle(j), cap_omega = omega * double(nc);
         for (size_t i = 0; i < nc; ++i) {
             const size_t at = i * ng + j;
             intensity[at] = cap ? cap_flux / cap_omega : binned.flux[at] / omega;
-            variance[at] = cap ? cap_square / (cap_omega * cap_omega) : binned.square[at] / (omega * omega);
+            variance[at] =
+                cap ? cap_square / (cap_omega * cap_omega) : binned.square[at] / (omega * omega);
         }
     }
 }
 
 // Kernel estimates at the grid angles (C-major), on all cores; the poles evaluated once.
-void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directions, const FarFieldOptions& options,
-                     std::vector<double>& intensity, std::vector<double>& variance, std::vector<double>& sigma,
+void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directions,
+                     const FarFieldOptions& options, std::vector<double>& intensity,
+                     std::vector<double>& variance, std::vector<double>& sigma,
                      std::vector<char>& kind) {
     const size_t nc = grid.c_count(), ng = grid.gamma_count();
     intensity.assign(nc * ng, 0);
@@ -158,10 +173,13 @@ void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directi
     sigma.assign(nc * ng, 0);
     kind.assign(nc * ng, 0);
     auto at_node = [&](size_t i, size_t j) {
-        const double gamma = double(j) * grid.gamma_step_deg() * kRadian, c = double(i) * grid.c_step_deg() * kRadian;
-        const double x = std::sin(gamma) * std::cos(c), y = std::sin(gamma) * std::sin(c), polar = std::cos(gamma);
-        return options.smoothing == FarFieldSmoothing::fixed ? directions.at(x, y, polar, options.smoothing_deg)
-                                                             : directions.adaptive(x, y, polar);
+        const double gamma = double(j) * grid.gamma_step_deg() * kRadian,
+                     c = double(i) * grid.c_step_deg() * kRadian;
+        const double x = std::sin(gamma) * std::cos(c), y = std::sin(gamma) * std::sin(c),
+                     polar = std::cos(gamma);
+        return options.smoothing == FarFieldSmoothing::fixed
+                   ? directions.at(x, y, polar, options.smoothing_deg)
+                   : directions.adaptive(x, y, polar);
     };
     // The cell's mean of the estimate with the bandwidth chosen at its grid angle: Gauss-Legendre
     // in C and cos(gamma) (2 x 2 points; the polar caps 4 in C x 2), so that the values times the
@@ -178,7 +196,8 @@ void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directi
         double sum = 0;
         for (int a = 0; a < c_points; ++a) {
             // Cap: 4 equal C steps (the rule in C needs only to be exact for its few harmonics).
-            const double c = cap ? (a + 0.5) * (2 * kPi / c_points) : c_mid + (a == 0 ? -node : node) * c_half;
+            const double c =
+                cap ? (a + 0.5) * (2 * kPi / c_points) : c_mid + (a == 0 ? -node : node) * c_half;
             for (int b = 0; b < 2; ++b) {
                 const double mu = (mu0 + mu1) / 2 + (b == 0 ? -node : node) * (mu1 - mu0) / 2;
                 const double r = std::sqrt(std::max(0.0, 1 - mu * mu));
@@ -219,8 +238,8 @@ std::string smoothing_description(const FarFieldOptions& options, const std::vec
         case FarFieldSmoothing::none:
             return "none: each cell's flux over its solid angle, the polar caps pooled over C";
         case FarFieldSmoothing::fixed:
-            return "kernel density, twiced von Mises-Fisher kernel, sigma " + format_double(options.smoothing_deg) +
-                   " deg";
+            return "kernel density, twiced von Mises-Fisher kernel, sigma " +
+                   format_double(options.smoothing_deg) + " deg";
         case FarFieldSmoothing::automatic: break;
     }
     std::vector<double> sorted = sigma;
@@ -229,12 +248,14 @@ std::string smoothing_description(const FarFieldOptions& options, const std::vec
         return 100 * double(std::count(kind.begin(), kind.end(), char(k))) / double(kind.size());
     };
     char text[320];
-    std::snprintf(text, sizeof text,
-                  "kernel density (twiced von Mises-Fisher kernel), local log-quadratic fit or edge fit, chosen "
-                  "per direction with sigma by Goldenshluger-Lepski: sigma %.3g to %.3g deg, median %.3g; "
-                  "log-quadratic fits at %.0f%% and edge fits at %.0f%% of the directions",
-                  sorted.front(), sorted.back(), sorted[sorted.size() / 2],
-                  share(DirectionHistogram::Kind::log_quadratic), share(DirectionHistogram::Kind::edge));
+    std::snprintf(
+        text, sizeof text,
+        "kernel density (twiced von Mises-Fisher kernel), local log-quadratic fit or edge fit, "
+        "chosen "
+        "per direction with sigma by Goldenshluger-Lepski: sigma %.3g to %.3g deg, median %.3g; "
+        "log-quadratic fits at %.0f%% and edge fits at %.0f%% of the directions",
+        sorted.front(), sorted.back(), sorted[sorted.size() / 2],
+        share(DirectionHistogram::Kind::log_quadratic), share(DirectionHistogram::Kind::edge));
     return text;
 }
 
@@ -288,8 +309,9 @@ void add_keywords(FarField& out, const RayReader& reader, const FarFieldOptions&
 FarField far_field(RayReader& reader, const FarFieldOptions& options) {
     const FarFieldGrid grid(options);
     if (options.smoothing == FarFieldSmoothing::fixed && !bandwidth_allowed(options.smoothing_deg))
-        throw Error("far field: smoothing bandwidth " + format_double(options.smoothing_deg) + " degrees (expected " +
-                    format_double(kMinBandwidthDeg) + " to " + format_double(kMaxBandwidthDeg) + ")");
+        throw Error("far field: smoothing bandwidth " + format_double(options.smoothing_deg) +
+                    " degrees (expected " + format_double(kMinBandwidthDeg) + " to " +
+                    format_double(kMaxBandwidthDeg) + ")");
     BinnedRays binned;
     bin_rays(reader, grid, options, binned);
     const size_t nc = grid.c_count(), ng = grid.gamma_count();
@@ -312,7 +334,8 @@ FarField far_field(RayReader& reader, const FarFieldOptions& options) {
     const double scale = out.flux_scale;
     const bool histogram = options.smoothing == FarFieldSmoothing::none;
     double north_flux = 0, south_flux = 0;
-    for (size_t k = 0; k < nc; ++k) north_flux += binned.flux[k * ng], south_flux += binned.flux[k * ng + ng - 1];
+    for (size_t k = 0; k < nc; ++k)
+        north_flux += binned.flux[k * ng], south_flux += binned.flux[k * ng + ng - 1];
     for (size_t i = 0; i <= nc; ++i) {
         const size_t source = i % nc;  // the 360 plane repeats the 0 plane
         for (size_t j = 0; j < ng; ++j) {
@@ -363,7 +386,8 @@ double written_flux(const FarField& far) {
     const Photometry& p = far.photometry;
     double sum = 0;
     for (size_t h = 0; h + 1 < p.horizontal_deg.size(); ++h)
-        for (size_t v = 0; v < p.vertical_deg.size(); ++v) sum += p.candela[p.index(h, v)] * far.solid_angle[p.index(h, v)];
+        for (size_t v = 0; v < p.vertical_deg.size(); ++v)
+            sum += p.candela[p.index(h, v)] * far.solid_angle[p.index(h, v)];
     return sum;
 }
 

@@ -41,8 +41,8 @@ enum class FarFieldSmoothing {
 };
 
 struct FarFieldOptions {
-    double c_step_deg = 5;       // must divide 360
-    double gamma_step_deg = 2.5; // must divide 180
+    double c_step_deg = 5;        // must divide 360
+    double gamma_step_deg = 2.5;  // must divide 180
     PolarAxis axis = PolarAxis::plus_z;
     FarFieldQuantity quantity = FarFieldQuantity::photometric;
     FarFieldSmoothing smoothing = FarFieldSmoothing::none;
@@ -88,8 +88,8 @@ struct FarField {
     std::string method;             // how the values were made, as the keyword _SMOOTHING says
     double flux_scale = 1;          // smoothed: the factor that keeps the flux (see above)
     uint64_t rays = 0;
-    double total_flux = 0;      // sum of the cells = sum of the rays
-    double max_intensity = 0;   // cd or W/sr
+    double total_flux = 0;                    // sum of the cells = sum of the rays
+    double max_intensity = 0;                 // cd or W/sr
     double max_c_deg = 0, max_gamma_deg = 0;  // where it is
 };
 

@@ -20,7 +20,9 @@ std::string trim(std::string_view s) {
     return std::string(s.substr(b, e - b + 1));
 }
 
-bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
+bool starts_with(std::string_view s, std::string_view prefix) {
+    return s.substr(0, prefix.size()) == prefix;
+}
 
 std::string ordinal(size_t i) { return "#" + std::to_string(i + 1); }
 
@@ -36,7 +38,8 @@ public:
             pos_ = 0;
             for (auto field : split_fields(line_, true)) {
                 for (auto word : split_fields(field))
-                    if (!word.empty() && word != "\x1a") tokens_.emplace_back(word);  // DOS end-of-file mark
+                    if (!word.empty() && word != "\x1a")
+                        tokens_.emplace_back(word);  // DOS end-of-file mark
             }
         }
         token = tokens_[pos_++];
@@ -47,16 +50,18 @@ public:
         std::string token;
         if (!next(token)) in_.fail_here("file ends where " + what + " was expected");
         double value;
-        if (!parse_double(token, value)) in_.fail_here("expected " + what + ", found '" + token + "'");
-        if (!std::isfinite(value)) in_.fail_here(what + " is " + token + ": expected a finite number");
+        if (!parse_double(token, value))
+            in_.fail_here("expected " + what + ", found '" + token + "'");
+        if (!std::isfinite(value))
+            in_.fail_here(what + " is " + token + ": expected a finite number");
         return value;
     }
 
     int integer(const std::string& what, int lo, int hi) {
         double value = number(what);
         if (value != std::floor(value) || value < lo || value > hi)
-            in_.fail_here(what + " is " + format_double(value) + ": expected a whole number from " + std::to_string(lo) +
-                          " to " + std::to_string(hi));
+            in_.fail_here(what + " is " + format_double(value) + ": expected a whole number from " +
+                          std::to_string(lo) + " to " + std::to_string(hi));
         return static_cast<int>(value);
     }
 
@@ -66,10 +71,11 @@ public:
         for (size_t i = 0; i < count; ++i) {
             out[i] = number(what + " " + ordinal(i) + " of " + std::to_string(count));
             if (out[i] < lo || out[i] > hi)
-                fail_here(what + " " + ordinal(i) + " is " + format_double(out[i]) + ": expected " + format_double(lo) +
-                          " to " + format_double(hi) + " degrees");
+                fail_here(what + " " + ordinal(i) + " is " + format_double(out[i]) + ": expected " +
+                          format_double(lo) + " to " + format_double(hi) + " degrees");
             if (i > 0 && out[i] <= out[i - 1])
-                fail_here(what + "s are not ascending: " + format_double(out[i - 1]) + " then " + format_double(out[i]));
+                fail_here(what + "s are not ascending: " + format_double(out[i - 1]) + " then " +
+                          format_double(out[i]));
         }
         return out;
     }
@@ -89,18 +95,24 @@ private:
 void check_count(NumberStream& s, uint64_t count, uint64_t file_bytes, const std::string& what) {
     if (count > file_bytes / 2 + 1)
         s.fail_here(what + " ask for " + std::to_string(count) + " numbers but the file has only " +
-                    std::to_string(file_bytes) + " bytes: the counts are wrong or the file is truncated");
+                    std::to_string(file_bytes) +
+                    " bytes: the counts are wrong or the file is truncated");
 }
 
 void read_tilt_data(NumberStream& s, IesTilt& tilt, uint64_t file_bytes) {
-    tilt.lamp_to_luminaire_geometry = s.integer("TILT lamp-to-luminaire geometry (1, 2 or 3)", 1, 3);
-    int count = s.integer("number of TILT angle/multiplier pairs", 1, std::numeric_limits<int>::max());
+    tilt.lamp_to_luminaire_geometry =
+        s.integer("TILT lamp-to-luminaire geometry (1, 2 or 3)", 1, 3);
+    int count =
+        s.integer("number of TILT angle/multiplier pairs", 1, std::numeric_limits<int>::max());
     check_count(s, 2 * uint64_t(count), file_bytes, "the TILT pairs");
     tilt.angles_deg = s.angles(size_t(count), "TILT angle", 0, 180);
     tilt.multipliers.resize(size_t(count));
     for (int i = 0; i < count; ++i) {
-        double m = s.number("TILT multiplier " + ordinal(size_t(i)) + " of " + std::to_string(count));
-        if (m < 0) s.fail_here("TILT multiplier " + ordinal(size_t(i)) + " is negative (" + format_double(m) + ")");
+        double m =
+            s.number("TILT multiplier " + ordinal(size_t(i)) + " of " + std::to_string(count));
+        if (m < 0)
+            s.fail_here("TILT multiplier " + ordinal(size_t(i)) + " is negative (" +
+                        format_double(m) + ")");
         tilt.multipliers[size_t(i)] = m;
     }
 }
@@ -151,7 +163,8 @@ std::string read_header(TextInput& in, IesFile& f) {
             continue;
         }
         size_t close = text.find(']');
-        if (close == std::string::npos) in.fail_here("keyword line without ']': expected [KEYWORD] text");
+        if (close == std::string::npos)
+            in.fail_here("keyword line without ']': expected [KEYWORD] text");
         std::string key = trim(std::string_view(text).substr(1, close - 1));
         std::string value = trim(std::string_view(text).substr(close + 1));
         if (key.empty()) in.fail_here("empty keyword '[]': expected [KEYWORD] text");
@@ -174,8 +187,9 @@ void check_horizontal_range(NumberStream& s, const IesFile& f) {
         bool ok = (h.size() == 1 && first == 0) || (first == 0 && (last == 90 || last >= 180)) ||
                   (first == 90 && last == 270);
         if (!ok)
-            s.fail_here("type C horizontal angles run " + range +
-                        ": expected 0 (axial), 0..90, 0..180, 0..(more than 180 up to 360) or 90..270");
+            s.fail_here(
+                "type C horizontal angles run " + range +
+                ": expected 0 (axial), 0..90, 0..180, 0..(more than 180 up to 360) or 90..270");
     } else if (!((first == -90 || first == 0) && last == 90)) {
         s.fail_here("type A/B horizontal angles run " + range + ": expected -90..90 or 0..90");
     }
@@ -195,7 +209,8 @@ IesFile read_ies(const std::string& path) {
         f.tilt.kind = IesTilt::Kind::include;
         read_tilt_data(s, f.tilt, in.size());
     } else {
-        if (tilt.empty()) in.fail_here("TILT= names nothing: expected TILT=NONE, TILT=INCLUDE or TILT=<file>");
+        if (tilt.empty())
+            in.fail_here("TILT= names nothing: expected TILT=NONE, TILT=INCLUDE or TILT=<file>");
         f.tilt.kind = IesTilt::Kind::file;
         f.tilt.file_name = tilt;
         read_tilt_file(path, tilt_line, f.tilt);
@@ -205,49 +220,63 @@ IesFile read_ies(const std::string& path) {
     f.lamp_count = s.integer("number of lamps", 1, int_max);
     f.lumens_per_lamp = s.number("lumens per lamp");
     if (!(f.lumens_per_lamp > 0 || f.lumens_per_lamp == -1))
-        s.fail_here("lumens per lamp is " + format_double(f.lumens_per_lamp) + ": expected a positive number, or -1 for absolute photometry");
+        s.fail_here("lumens per lamp is " + format_double(f.lumens_per_lamp) +
+                    ": expected a positive number, or -1 for absolute photometry");
     f.multiplier = s.number("candela multiplier");
-    if (!(f.multiplier > 0)) s.fail_here("candela multiplier is " + format_double(f.multiplier) + ": expected a positive number");
+    if (!(f.multiplier > 0))
+        s.fail_here("candela multiplier is " + format_double(f.multiplier) +
+                    ": expected a positive number");
     int nv = s.integer("number of vertical angles", 1, int_max);
     int nh = s.integer("number of horizontal angles", 1, int_max);
     uint64_t counts_line = s.line();
     double type = s.number("photometric type");
     if (type != 1 && type != 2 && type != 3)
-        s.fail_here("unknown photometric type " + format_double(type) + ": expected 1 (type C), 2 (type B) or 3 (type A)");
+        s.fail_here("unknown photometric type " + format_double(type) +
+                    ": expected 1 (type C), 2 (type B) or 3 (type A)");
     f.photometric_type = static_cast<int>(type);
     double units = s.number("units type");
-    if (units != 1 && units != 2) s.fail_here("units type is " + format_double(units) + ": expected 1 (feet) or 2 (metres)");
+    if (units != 1 && units != 2)
+        s.fail_here("units type is " + format_double(units) + ": expected 1 (feet) or 2 (metres)");
     f.units = static_cast<int>(units);
     f.width = s.number("luminous opening width");
     f.length = s.number("luminous opening length");
     f.height = s.number("luminous opening height");
     f.ballast_factor = s.number("ballast factor");
-    if (!(f.ballast_factor > 0)) s.fail_here("ballast factor is " + format_double(f.ballast_factor) + ": expected a positive number");
-    f.generation = s.number(f.version == IesVersion::lm63_2019 ? "file generation type" : "ballast-lamp photometric factor / future use field");
+    if (!(f.ballast_factor > 0))
+        s.fail_here("ballast factor is " + format_double(f.ballast_factor) +
+                    ": expected a positive number");
+    f.generation = s.number(f.version == IesVersion::lm63_2019
+                                ? "file generation type"
+                                : "ballast-lamp photometric factor / future use field");
     f.input_watts = s.number("input watts");
-    if (f.input_watts < 0) s.fail_here("input watts is " + format_double(f.input_watts) + ": expected 0 or more");
+    if (f.input_watts < 0)
+        s.fail_here("input watts is " + format_double(f.input_watts) + ": expected 0 or more");
 
     uint64_t values = uint64_t(nv) * uint64_t(nh);
-    check_count(s, values + uint64_t(nv) + uint64_t(nh), in.size(), "the angle counts (line " + std::to_string(counts_line) + ")");
+    check_count(s, values + uint64_t(nv) + uint64_t(nh), in.size(),
+                "the angle counts (line " + std::to_string(counts_line) + ")");
     bool type_c = f.photometric_type == 1;
     f.vertical_deg = s.angles(size_t(nv), "vertical angle", type_c ? 0 : -90, type_c ? 180 : 90);
-    f.horizontal_deg = s.angles(size_t(nh), "horizontal angle", type_c ? 0 : -90, type_c ? 360 : 90);
+    f.horizontal_deg =
+        s.angles(size_t(nh), "horizontal angle", type_c ? 0 : -90, type_c ? 360 : 90);
     check_horizontal_range(s, f);
 
     f.candela.resize(size_t(values));
     for (size_t h = 0; h < size_t(nh); ++h) {
         for (size_t v = 0; v < size_t(nv); ++v) {
             double& c = f.candela[h * size_t(nv) + v];
-            c = s.number("candela value " + ordinal(v) + " of " + std::to_string(nv) + " for horizontal angle " +
-                         format_double(f.horizontal_deg[h]) + " (the counts on line " + std::to_string(counts_line) +
-                         " ask for " + std::to_string(nv) + " x " + std::to_string(nh) + ")");
+            c = s.number("candela value " + ordinal(v) + " of " + std::to_string(nv) +
+                         " for horizontal angle " + format_double(f.horizontal_deg[h]) +
+                         " (the counts on line " + std::to_string(counts_line) + " ask for " +
+                         std::to_string(nv) + " x " + std::to_string(nh) + ")");
             if (c < 0) s.fail_here("candela value " + format_double(c) + " is negative");
         }
     }
     std::string extra;
     if (s.next(extra))
         s.fail_here("unexpected '" + extra + "' after the last of the " + std::to_string(values) +
-                    " candela values: the counts on line " + std::to_string(counts_line) + " do not match the data");
+                    " candela values: the counts on line " + std::to_string(counts_line) +
+                    " do not match the data");
     return f;
 }
 

@@ -17,8 +17,9 @@ enum class IesVersion { lm63_1986, lm63_1991, lm63_1995, lm63_2002, lm63_2019 };
 struct IesTilt {
     enum class Kind { none, include, file };
     Kind kind = Kind::none;
-    std::string file_name;               // Kind::file: the name after "TILT=", as written
-    int lamp_to_luminaire_geometry = 1;  // 1 vertical, 2 horizontal along 0-180, 3 horizontal along 90-270
+    std::string file_name;  // Kind::file: the name after "TILT=", as written
+    int lamp_to_luminaire_geometry =
+        1;  // 1 vertical, 2 horizontal along 0-180, 3 horizontal along 90-270
     std::vector<double> angles_deg;
     std::vector<double> multipliers;
 };
@@ -35,10 +36,10 @@ struct IesFile {
     std::vector<IesKeyword> keywords;
     IesTilt tilt;
     int lamp_count = 1;
-    double lumens_per_lamp = -1;  // -1: absolute photometry
-    double multiplier = 1;        // candela multiplier
-    int photometric_type = 1;     // 1 C, 2 B, 3 A
-    int units = 2;                // 1 feet, 2 metres
+    double lumens_per_lamp = -1;               // -1: absolute photometry
+    double multiplier = 1;                     // candela multiplier
+    int photometric_type = 1;                  // 1 C, 2 B, 3 A
+    int units = 2;                             // 1 feet, 2 metres
     double width = 0, length = 0, height = 0;  // luminous opening, file units; negative = round
     double ballast_factor = 1;
     // Ballast-lamp photometric factor before LM-63-2002, "future use" (1) in 2002, file

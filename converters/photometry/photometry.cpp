@@ -26,11 +26,12 @@ struct Plane {
 
 void check_grid(const Photometry& p) {
     if (p.vertical_deg.empty() || p.horizontal_deg.empty())
-        throw Error("photometry: no angles (" + std::to_string(p.vertical_deg.size()) + " vertical, " +
-                    std::to_string(p.horizontal_deg.size()) + " horizontal)");
+        throw Error("photometry: no angles (" + std::to_string(p.vertical_deg.size()) +
+                    " vertical, " + std::to_string(p.horizontal_deg.size()) + " horizontal)");
     if (p.candela.size() != p.vertical_deg.size() * p.horizontal_deg.size())
         throw Error("photometry: " + std::to_string(p.candela.size()) + " candela values for " +
-                    std::to_string(p.vertical_deg.size()) + " x " + std::to_string(p.horizontal_deg.size()) + " angles");
+                    std::to_string(p.vertical_deg.size()) + " x " +
+                    std::to_string(p.horizontal_deg.size()) + " angles");
 }
 
 double wrap_360(double a) {
@@ -89,8 +90,10 @@ std::vector<Plane> unfold_type_c(const std::vector<double>& h) {
         return planes;
     }
     // Mirror images of the planes on a mirror plane coincide with them: keep one of each.
-    std::stable_sort(planes.begin(), planes.end(), [](const Plane& a, const Plane& b) { return a.angle < b.angle; });
-    planes.erase(std::unique(planes.begin(), planes.end(), [](const Plane& a, const Plane& b) { return a.angle == b.angle; }),
+    std::stable_sort(planes.begin(), planes.end(),
+                     [](const Plane& a, const Plane& b) { return a.angle < b.angle; });
+    planes.erase(std::unique(planes.begin(), planes.end(),
+                             [](const Plane& a, const Plane& b) { return a.angle == b.angle; }),
                  planes.end());
     planes.push_back({planes.front().angle + 360, planes.front().index});
     return planes;
@@ -173,19 +176,19 @@ double Photometry::intensity(double horizontal, double vertical) const {
         if (h.size() == 1) return along_vertical(*this, 0, g);
         c = wrap_360(c);
         switch (c_symmetry(h)) {
-        case CSymmetry::quadrant:
-            if (c > 180) c = 360 - c;
-            if (c > 90) c = 180 - c;
-            break;
-        case CSymmetry::bilateral_0_180:
-            if (c > 180) c = 360 - c;
-            break;
-        case CSymmetry::bilateral_90_270:
-            if (c < 90 || c > 270) c = wrap_360(180 - c);
-            break;
-        case CSymmetry::none:
-            c = h.front() + wrap_360(c - h.front());
-            return across_planes(*this, open_planes(h), c, g, true);
+            case CSymmetry::quadrant:
+                if (c > 180) c = 360 - c;
+                if (c > 90) c = 180 - c;
+                break;
+            case CSymmetry::bilateral_0_180:
+                if (c > 180) c = 360 - c;
+                break;
+            case CSymmetry::bilateral_90_270:
+                if (c < 90 || c > 270) c = wrap_360(180 - c);
+                break;
+            case CSymmetry::none:
+                c = h.front() + wrap_360(c - h.front());
+                return across_planes(*this, open_planes(h), c, g, true);
         }
         return across_planes(*this, h.size(), c, g, false);
     }
@@ -214,20 +217,25 @@ double Photometry::total_flux() const {
     std::vector<double> v_weight(vertical_deg.size()), h_weight(horizontal_deg.size(), 0.0);
     auto v_edges = band_edges(vertical_deg);
     if (type == PhotometricType::C) {
-        for (size_t j = 0; j < vertical_deg.size(); ++j) v_weight[j] = std::cos(v_edges[j] * deg) - std::cos(v_edges[j + 1] * deg);
+        for (size_t j = 0; j < vertical_deg.size(); ++j)
+            v_weight[j] = std::cos(v_edges[j] * deg) - std::cos(v_edges[j + 1] * deg);
         if (horizontal_deg.size() == 1) {
             h_weight[0] = 2 * pi;
         } else {
             auto planes = unfold_type_c(horizontal_deg);
-            // The closing plane (a0 + 360) is the first one again: trapezoid weights around the circle.
+            // The closing plane (a0 + 360) is the first one again: trapezoid weights around the
+            // circle.
             for (size_t k = 0; k < planes.size(); ++k) {
-                double lo = k == 0 ? planes[k].angle : 0.5 * (planes[k - 1].angle + planes[k].angle);
-                double hi = k + 1 == planes.size() ? planes[k].angle : 0.5 * (planes[k].angle + planes[k + 1].angle);
+                double lo =
+                    k == 0 ? planes[k].angle : 0.5 * (planes[k - 1].angle + planes[k].angle);
+                double hi = k + 1 == planes.size() ? planes[k].angle
+                                                   : 0.5 * (planes[k].angle + planes[k + 1].angle);
                 h_weight[planes[k].index] += (hi - lo) * deg;
             }
         }
     } else {
-        for (size_t j = 0; j < vertical_deg.size(); ++j) v_weight[j] = (v_edges[j + 1] - v_edges[j]) * deg;
+        for (size_t j = 0; j < vertical_deg.size(); ++j)
+            v_weight[j] = (v_edges[j + 1] - v_edges[j]) * deg;
         if (horizontal_deg.size() == 1) {
             h_weight[0] = 2.0;  // constant over latitude -90..90: integral of cos H
         } else {
@@ -236,13 +244,15 @@ double Photometry::total_flux() const {
             for (size_t k = 0; k < planes.size(); ++k) angles[k] = planes[k].angle;
             auto h_edges = band_edges(angles);
             for (size_t k = 0; k < planes.size(); ++k)
-                h_weight[planes[k].index] += std::sin(h_edges[k + 1] * deg) - std::sin(h_edges[k] * deg);
+                h_weight[planes[k].index] +=
+                    std::sin(h_edges[k + 1] * deg) - std::sin(h_edges[k] * deg);
         }
     }
     double flux = 0;
     for (size_t h = 0; h < horizontal_deg.size(); ++h) {
         double plane = 0;
-        for (size_t v = 0; v < vertical_deg.size(); ++v) plane += candela[index(h, v)] * v_weight[v];
+        for (size_t v = 0; v < vertical_deg.size(); ++v)
+            plane += candela[index(h, v)] * v_weight[v];
         flux += plane * h_weight[h];
     }
     return flux;
@@ -268,22 +278,28 @@ PhotometryFormat detect_photometry_format(const std::string& path) {
     size_t pos = 0;
     while (pos < text.size()) {
         size_t end = text.find('\n', pos);
-        std::string_view line = text.substr(pos, end == std::string_view::npos ? text.size() - pos : end - pos);
+        std::string_view line =
+            text.substr(pos, end == std::string_view::npos ? text.size() - pos : end - pos);
         size_t s = line.find_first_not_of(" \t");
-        if (s != std::string_view::npos && line.substr(s, 5) == "TILT=") return PhotometryFormat::ies;
+        if (s != std::string_view::npos && line.substr(s, 5) == "TILT=")
+            return PhotometryFormat::ies;
         if (end == std::string_view::npos) break;
         pos = end + 1;
     }
-    fail(path, "neither an IES LM-63 file (no version line such as IESNA:LM-63-2002 and no TILT= line) nor an "
-               "EULUMDAT file (lines 2 to 7 are not Ityp 0..3, Isym 0..4, Mc, Dc, Ng, Dg)");
+    fail(path,
+         "neither an IES LM-63 file (no version line such as IESNA:LM-63-2002 and no TILT= line) "
+         "nor an "
+         "EULUMDAT file (lines 2 to 7 are not Ityp 0..3, Isym 0..4, Mc, Dc, Ng, Dg)");
 }
 
 Photometry read_photometry(const std::string& path) {
-    if (detect_photometry_format(path) == PhotometryFormat::ies) return ies_to_photometry(read_ies(path));
+    if (detect_photometry_format(path) == PhotometryFormat::ies)
+        return ies_to_photometry(read_ies(path));
     return eulumdat_to_photometry(read_eulumdat(path));
 }
 
-void write_photometry(const std::string& path, const Photometry& photometry, PhotometryFormat format) {
+void write_photometry(const std::string& path, const Photometry& photometry,
+                      PhotometryFormat format) {
     if (format == PhotometryFormat::ies) {
         write_ies(path, ies_from_photometry(photometry, path));
     } else {

@@ -57,6 +57,7 @@ enum class PhotometryFormat { ies, eulumdat };
 
 Photometry read_photometry(const std::string& path);  // detects IES or EULUMDAT by content
 PhotometryFormat detect_photometry_format(const std::string& path);
-void write_photometry(const std::string& path, const Photometry& photometry, PhotometryFormat format);
+void write_photometry(const std::string& path, const Photometry& photometry,
+                      PhotometryFormat format);
 
 }  // namespace rayset

@@ -15,7 +15,10 @@ RayReadOptions ReadFlags::options() const {
     RayReadOptions o;
     if (!from.empty()) {
         auto f = ray_format_from_name(from);
-        if (!f) throw Error("--from " + from + ": unknown format (tm25, lighttools, lighttools-text, zemax, zemax-text, speos, csv)");
+        if (!f)
+            throw Error("--from " + from +
+                        ": unknown format (tm25, lighttools, lighttools-text, zemax, zemax-text, "
+                        "speos, csv)");
         o.format = *f;
     }
     if (trust == "header") o.flux_policy = FluxPolicy::stated;
@@ -25,14 +28,21 @@ RayReadOptions ReadFlags::options() const {
 }
 
 void add_read_flags(CLI::App& command, ReadFlags& flags) {
-    command.add_option("--from", flags.from, "Input ray format, if detection from the content is not wanted")
-        ->check(CLI::IsMember({"tm25", "lighttools", "lighttools-text", "zemax", "zemax-text", "speos", "csv"}));
-    command.add_option("--trust", flags.trust,
-                       "When the header's total flux and the sum of the rays disagree: 'header' scales the rays to "
-                       "the header, 'rays' keeps them. Default: header for formats whose per-ray flux is relative "
-                       "(LightTools, Zemax, SPEOS), rays for TM-25 and CSV")
+    command
+        .add_option("--from", flags.from,
+                    "Input ray format, if detection from the content is not wanted")
+        ->check(CLI::IsMember(
+            {"tm25", "lighttools", "lighttools-text", "zemax", "zemax-text", "speos", "csv"}));
+    command
+        .add_option("--trust", flags.trust,
+                    "When the header's total flux and the sum of the rays disagree: 'header' "
+                    "scales the rays to "
+                    "the header, 'rays' keeps them. Default: header for formats whose per-ray flux "
+                    "is relative "
+                    "(LightTools, Zemax, SPEOS), rays for TM-25 and CSV")
         ->check(CLI::IsMember({"header", "rays"}));
-    command.add_flag("--normalise", flags.normalise, "Accept directions that are not unit vectors and renormalise them");
+    command.add_flag("--normalise", flags.normalise,
+                     "Accept directions that are not unit vectors and renormalise them");
 }
 
 namespace {
@@ -59,7 +69,9 @@ bool is_photometry(const std::string& path) {
     }
 }
 
-std::unique_ptr<RayReader> open_input(const std::string& path, const ReadFlags& flags) { return open_rays(path, flags.options()); }
+std::unique_ptr<RayReader> open_input(const std::string& path, const ReadFlags& flags) {
+    return open_rays(path, flags.options());
+}
 
 void print_warnings(const RayReader& reader) {
     for (const auto& w : reader.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -68,12 +80,16 @@ void print_warnings(const RayReader& reader) {
 RayFormat output_format(const std::string& path, const std::string& to) {
     if (!to.empty()) {
         auto f = ray_format_from_name(to);
-        if (!f) throw Error("--to " + to + ": unknown format (tm25, lighttools, lighttools-text, zemax, zemax-text, speos, csv)");
+        if (!f)
+            throw Error("--to " + to +
+                        ": unknown format (tm25, lighttools, lighttools-text, zemax, zemax-text, "
+                        "speos, csv)");
         return *f;
     }
     if (auto f = ray_format_from_name(extension_of(path))) return *f;
     throw Error(path + ": cannot tell the output format from the name ('" + extension_of(path) +
-                "' is used by several formats or none): name it with --to (tm25, lighttools, lighttools-text, "
+                "' is used by several formats or none): name it with --to (tm25, lighttools, "
+                "lighttools-text, "
                 "zemax, zemax-text, speos, csv)");
 }
 
@@ -83,15 +99,19 @@ int main(int argc, char** argv) {
     using namespace rayset::rayconv;
     CLI::App app{
         "rayconv: read, inspect and convert LED ray files and photometric files.\n\n"
-        "Ray files: IES TM-25-13 (.TM25RAY), LightTools binary and text, Zemax binary (.DAT/.SDF) and text,\n"
-        "SPEOS binary, and CSV. The format is detected from the content (the .ray extension is ambiguous).\n"
+        "Ray files: IES TM-25-13 (.TM25RAY), LightTools binary and text, Zemax binary (.DAT/.SDF) "
+        "and text,\n"
+        "SPEOS binary, and CSV. The format is detected from the content (the .ray extension is "
+        "ambiguous).\n"
         "Photometric files: IES LM-63 (1986..2019) and EULUMDAT (.ldt).\n\n"
         "Examples:\n"
-        "  rayconv info LED.TM25RAY                       totals, bounding box, spectrum, directions\n"
+        "  rayconv info LED.TM25RAY                       totals, bounding box, spectrum, "
+        "directions\n"
         "  rayconv convert LED.TM25RAY LED.csv            any ray format to any other\n"
         "  rayconv convert lamp.ies lamp.ldt              IES <-> EULUMDAT\n"
         "  rayconv farfield LED.TM25RAY -o LED.ies        far-field intensity of the rays\n"
-        "  rayconv emit lamp.ies -o lamp.tm25ray          rays drawn from an intensity distribution\n"
+        "  rayconv emit lamp.ies -o lamp.tm25ray          rays drawn from an intensity "
+        "distribution\n"
         "  rayconv synth disk radius=1 flux=1 -o d.tm25ray  analytic source with known answers\n"
         "  rayconv subsample | merge | transform ...      ray-set operations\n"
         "Run 'rayconv COMMAND --help' for the options of each command."};

@@ -10,8 +10,8 @@ namespace rayset::rayconv {
 
 // Options every subcommand that reads rays shares.
 struct ReadFlags {
-    std::string from;       // format name, empty = detect
-    std::string trust;      // "", "header", "rays"
+    std::string from;   // format name, empty = detect
+    std::string trust;  // "", "header", "rays"
     bool normalise = false;
     RayReadOptions options() const;
 };

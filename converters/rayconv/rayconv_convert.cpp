@@ -19,17 +19,20 @@ PhotometryFormat photometry_format(const std::string& path, const std::string& t
     }
     if (t == "ies") return PhotometryFormat::ies;
     if (t == "ldt" || t == "eulumdat") return PhotometryFormat::eulumdat;
-    throw Error(path + ": cannot tell the photometric output format: end the name with .ies or .ldt, or give --to ies|ldt");
+    throw Error(path +
+                ": cannot tell the photometric output format: end the name with .ies or .ldt, or "
+                "give --to ies|ldt");
 }
 
 }  // namespace
 
 void register_convert(CLI::App& app) {
-    auto* cmd = app.add_subcommand(
-        "convert",
-        "Convert a ray file to another ray format, or a photometric file to the other photometric format. Every "
-        "field both formats hold is kept; what the target cannot hold is listed. The output appears only when "
-        "complete.");
+    auto* cmd = app.add_subcommand("convert",
+                                   "Convert a ray file to another ray format, or a photometric "
+                                   "file to the other photometric format. Every "
+                                   "field both formats hold is kept; what the target cannot hold "
+                                   "is listed. The output appears only when "
+                                   "complete.");
     struct Args {
         std::string in, out, to;
         ReadFlags read;
@@ -37,9 +40,11 @@ void register_convert(CLI::App& app) {
     auto args = std::make_shared<Args>();
     cmd->add_option("IN", args->in, "Input file")->required()->check(CLI::ExistingFile);
     cmd->add_option("OUT", args->out, "Output file")->required();
-    cmd->add_option("--to", args->to,
-                    "Output format: tm25, lighttools, lighttools-text, zemax, zemax-text, speos, csv; or ies, ldt. "
-                    "Default: from the output's extension (.tm25ray, .dat, .sdf, .csv, .ies, .ldt)");
+    cmd->add_option(
+        "--to", args->to,
+        "Output format: tm25, lighttools, lighttools-text, zemax, zemax-text, speos, csv; or ies, "
+        "ldt. "
+        "Default: from the output's extension (.tm25ray, .dat, .sdf, .csv, .ies, .ldt)");
     add_read_flags(*cmd, args->read);
     cmd->callback([args] {
         if (is_photometry(args->in)) {
@@ -55,7 +60,8 @@ void register_convert(CLI::App& app) {
         bar.done();
         print_warnings(*reader);
         for (const auto& d : writer->dropped())
-            std::fprintf(stderr, "note: %s cannot hold %s: not written\n", to_string(format), d.c_str());
+            std::fprintf(stderr, "note: %s cannot hold %s: not written\n", to_string(format),
+                         d.c_str());
     });
 }
 

@@ -1,11 +1,11 @@
 // rayconv subsample, merge and transform.
+#include "converters/rayconv/rayconv.h"
 #include "converters/rays/io.h"
 #include "converters/rays/ray_ops.h"
-#include "converters/rayconv/rayconv.h"
 #include "core/progress.h"
 
-#include <cmath>
 #include <fmt/format.h>
+#include <cmath>
 
 namespace rayset::rayconv {
 
@@ -13,12 +13,15 @@ namespace {
 
 void report(const RayOpReport& r, RayFormat format) {
     for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    for (const auto& d : r.dropped) std::fprintf(stderr, "note: %s cannot hold %s: not written\n", to_string(format), d.c_str());
+    for (const auto& d : r.dropped)
+        std::fprintf(stderr, "note: %s cannot hold %s: not written\n", to_string(format),
+                     d.c_str());
 }
 
 std::optional<LengthUnit> unit_from_name(const std::string& name) {
     if (name.empty()) return std::nullopt;
-    for (LengthUnit u : {LengthUnit::mm, LengthUnit::cm, LengthUnit::m, LengthUnit::inch, LengthUnit::ft, LengthUnit::um, LengthUnit::nm})
+    for (LengthUnit u : {LengthUnit::mm, LengthUnit::cm, LengthUnit::m, LengthUnit::inch,
+                         LengthUnit::ft, LengthUnit::um, LengthUnit::nm})
         if (name == to_string(u)) return u;
     throw Error("unknown length unit '" + name + "' (mm, cm, m, in, ft, um, nm)");
 }
@@ -30,7 +33,8 @@ std::vector<double> numbers(const std::string& text, size_t count, const char* o
         if (!parse_double(field, x)) break;
         v.push_back(x);
     }
-    if (v.size() != count) throw Error(fmt::format("{} {}: expected {} comma-separated numbers", option, text, count));
+    if (v.size() != count)
+        throw Error(fmt::format("{} {}: expected {} comma-separated numbers", option, text, count));
     return v;
 }
 
@@ -40,7 +44,8 @@ Matrix3 rotation_from(const std::string& text) {
     std::string head = text.substr(0, comma);
     if (comma != std::string::npos && (head == "x" || head == "y" || head == "z")) {
         double deg = numbers(text.substr(comma + 1), 1, "--rotate")[0];
-        std::array<double, 3> axis{head == "x" ? 1.0 : 0.0, head == "y" ? 1.0 : 0.0, head == "z" ? 1.0 : 0.0};
+        std::array<double, 3> axis{head == "x" ? 1.0 : 0.0, head == "y" ? 1.0 : 0.0,
+                                   head == "z" ? 1.0 : 0.0};
         return rotation_about_axis(axis, deg);
     }
     auto v = numbers(text, 4, "--rotate");

@@ -1,20 +1,21 @@
 #include "converters/rays/io.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
-#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <random>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace rayset {
 
-static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the binary codecs assume a little-endian host");
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+              "the binary codecs assume a little-endian host");
 
 namespace {
 
@@ -32,7 +33,8 @@ OutputTarget output_target(const std::string& path) {
     namespace fs = std::filesystem;
     std::error_code ec;
     OutputTarget target{fs::path(path)};
-    if (fs::is_symlink(target.file, ec) && fs::exists(target.file, ec)) {  // a dangling link is replaced
+    if (fs::is_symlink(target.file, ec) &&
+        fs::exists(target.file, ec)) {  // a dangling link is replaced
         target.file = fs::canonical(target.file, ec);
         if (ec) fail(path, "cannot follow the symbolic link: " + ec.message());
     }
@@ -42,19 +44,22 @@ OutputTarget output_target(const std::string& path) {
     return target;
 }
 
-// A new, empty, hidden file beside `target` whose name no other writer holds: ".NAME.tmpNNNNNN.EXT",
-// created with O_EXCL. The output is written there and renamed over the target (same folder,
-// so the rename is atomic); the extension is kept for writers that go by it. Returns its open
-// descriptor; `path` (as the user gave it) names the failure.
-int create_temporary_beside(const std::string& path, const std::filesystem::path& target, std::string& temporary) {
+// A new, empty, hidden file beside `target` whose name no other writer holds:
+// ".NAME.tmpNNNNNN.EXT", created with O_EXCL. The output is written there and renamed over the
+// target (same folder, so the rename is atomic); the extension is kept for writers that go by it.
+// Returns its open descriptor; `path` (as the user gave it) names the failure.
+int create_temporary_beside(const std::string& path, const std::filesystem::path& target,
+                            std::string& temporary) {
     namespace fs = std::filesystem;
     const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
     std::error_code ec;
-    if (!fs::is_directory(dir, ec)) fail(path, "cannot write: folder " + dir.string() + " does not exist");
+    if (!fs::is_directory(dir, ec))
+        fail(path, "cannot write: folder " + dir.string() + " does not exist");
     std::random_device random;
     int fd = -1;
     for (int attempt = 0; attempt < 16 && fd < 0; ++attempt) {
-        const std::string name = "." + target.stem().string() + ".tmp" + std::to_string(random() % 1000000) + target.extension().string();
+        const std::string name = "." + target.stem().string() + ".tmp" +
+                                 std::to_string(random() % 1000000) + target.extension().string();
         temporary = (dir / name).string();
         fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd < 0 && errno != EEXIST) break;
@@ -103,8 +108,10 @@ BinaryInput::~BinaryInput() {
 }
 
 void BinaryInput::seek(uint64_t offset) {
-    if (offset > size_) fail_here("seek past the end of the file (" + std::to_string(size_) + " bytes)");
-    if (::lseek(fd_, static_cast<off_t>(offset), SEEK_SET) < 0) fail_here("cannot seek: " + system_error_text());
+    if (offset > size_)
+        fail_here("seek past the end of the file (" + std::to_string(size_) + " bytes)");
+    if (::lseek(fd_, static_cast<off_t>(offset), SEEK_SET) < 0)
+        fail_here("cannot seek: " + system_error_text());
     buffered_begin_ = buffered_end_ = 0;
     offset_ = offset;
 }
@@ -124,7 +131,9 @@ size_t BinaryInput::fill(uint8_t* out, size_t n, const char* what) {
         uint8_t* into = direct ? out + done : buffer_.data();
         ssize_t got = ::read(fd_, into, direct ? n - done : buffer_.size());
         if (got < 0 && errno == EINTR) continue;
-        if (got < 0) fail_here((what ? std::string("read error in ") + what : std::string("read error")) + ": " + system_error_text());
+        if (got < 0)
+            fail_here((what ? std::string("read error in ") + what : std::string("read error")) +
+                      ": " + system_error_text());
         if (got == 0) break;
         if (direct) {
             done += static_cast<size_t>(got);
@@ -139,8 +148,8 @@ size_t BinaryInput::fill(uint8_t* out, size_t n, const char* what) {
 void BinaryInput::read(void* out, size_t n, const char* what) {
     size_t got = fill(static_cast<uint8_t*>(out), n, what);
     if (got != n)
-        fail_here(std::string("file ends inside ") + what + " (" + std::to_string(n) + " bytes expected, " +
-                  std::to_string(got) + " left): the file is truncated");
+        fail_here(std::string("file ends inside ") + what + " (" + std::to_string(n) +
+                  " bytes expected, " + std::to_string(got) + " left): the file is truncated");
     offset_ += n;
 }
 
@@ -151,7 +160,9 @@ size_t BinaryInput::read_some(void* out, size_t n) {
 }
 
 // ---------------------------------------------------------------------------------------------
-TextInput::TextInput(const std::string& path) : path_(path) { file_ = open_for_reading(path, size_); }
+TextInput::TextInput(const std::string& path) : path_(path) {
+    file_ = open_for_reading(path, size_);
+}
 
 TextInput::~TextInput() {
     if (file_) std::fclose(file_);
@@ -198,11 +209,14 @@ void AtomicOutput::write_fully(const uint8_t* data, size_t n, uint64_t at) {
     // Appends with write(), which a pipe takes too; only a patch goes back, with pwrite().
     const bool append = at == appended_;
     while (n > 0) {
-        ssize_t done = append ? ::write(fd_, data, n) : ::pwrite(fd_, data, n, static_cast<off_t>(at));
+        ssize_t done =
+            append ? ::write(fd_, data, n) : ::pwrite(fd_, data, n, static_cast<off_t>(at));
         if (done < 0 && errno == EINTR) continue;
         if (done < 0 && errno == ESPIPE)
-            fail(path_, "cannot write this format to a pipe: its header is completed after the rays, which needs a "
-                        "file (write to a file, or choose csv)");
+            fail(path_,
+                 "cannot write this format to a pipe: its header is completed after the rays, "
+                 "which needs a "
+                 "file (write to a file, or choose csv)");
         if (done <= 0) fail(path_, "write failed: " + system_error_text());
         data += done, n -= static_cast<size_t>(done), at += static_cast<uint64_t>(done);
         if (append) appended_ += static_cast<uint64_t>(done);
@@ -241,7 +255,8 @@ void AtomicOutput::commit() {
     if (committed_) return;
     flush();
     // A device or pipe has no disk to flush to (fsync fails on some); a file must reach its disk.
-    if (!temp_path_.empty() && ::fsync(fd_) != 0) fail(path_, "write failed: " + system_error_text());
+    if (!temp_path_.empty() && ::fsync(fd_) != 0)
+        fail(path_, "write failed: " + system_error_text());
     int closed = ::close(fd_);
     fd_ = -1;
     if (closed != 0) fail(path_, "write failed: " + system_error_text());
@@ -266,7 +281,8 @@ uint64_t file_size(const std::string& path) {
 }
 
 namespace {
-template <class T> bool parse_number(std::string_view token, T& out) {
+template <class T>
+bool parse_number(std::string_view token, T& out) {
     if (token.empty()) return false;
     const char* begin = token.data();
     const char* end = begin + token.size();
@@ -286,7 +302,8 @@ std::vector<std::string_view> split_fields(std::string_view line, bool commas) {
     if (commas) {
         while (true) {
             size_t end = line.find(',', i);
-            std::string_view field = line.substr(i, end == std::string_view::npos ? n - i : end - i);
+            std::string_view field =
+                line.substr(i, end == std::string_view::npos ? n - i : end - i);
             while (!field.empty() && is_space(field.front())) field.remove_prefix(1);
             while (!field.empty() && is_space(field.back())) field.remove_suffix(1);
             fields.push_back(field);
@@ -316,7 +333,8 @@ std::string format_double(double value) {
     return std::string(buffer, ptr);
 }
 
-void write_atomically(const std::string& path, const std::function<bool(const std::string&)>& write) {
+void write_atomically(const std::string& path,
+                      const std::function<bool(const std::string&)>& write) {
     namespace fs = std::filesystem;
     const OutputTarget target = output_target(path);
     // A device or a pipe is written in place; anything else through a temporary file beside it,

@@ -34,17 +34,22 @@ public:
     // Reads up to n bytes; returns how many (0 at the end).
     size_t read_some(void* out, size_t n);
 
-    template <class T> T read(const char* what) {
+    template <class T>
+    T read(const char* what) {
         T value;
-        read(&value, sizeof(T), what);  // little-endian host (x86_64, aarch64): static_assert in io.cpp
+        read(&value, sizeof(T),
+             what);  // little-endian host (x86_64, aarch64): static_assert in io.cpp
         return value;
     }
 
-    [[noreturn]] void fail_at(uint64_t offset, const std::string& what) const { rayset::fail(path_, Location::byte(offset), what); }
+    [[noreturn]] void fail_at(uint64_t offset, const std::string& what) const {
+        rayset::fail(path_, Location::byte(offset), what);
+    }
     [[noreturn]] void fail_here(const std::string& what) const { fail_at(offset_, what); }
 
 private:
-    // Up to n bytes into `out`, fewer only at the end of the file; `what` (if any) names a read error.
+    // Up to n bytes into `out`, fewer only at the end of the file; `what` (if any) names a read
+    // error.
     size_t fill(uint8_t* out, size_t n, const char* what);
 
     std::string path_;
@@ -88,7 +93,8 @@ private:
 // exception or an output left empty, the temporary file is removed, whatever was at `path` is
 // untouched, and rayset::Error names `path`. Like AtomicOutput, it writes through a symbolic
 // link to the file it names, and into a device or pipe (/dev/null, a FIFO) in place.
-void write_atomically(const std::string& path, const std::function<bool(const std::string&)>& write);
+void write_atomically(const std::string& path,
+                      const std::function<bool(const std::string&)>& write);
 
 // Writes to a temporary file beside the target and renames it into place on commit(). If the
 // object is destroyed without commit() (an error was thrown), the temporary file is removed and
@@ -108,7 +114,10 @@ public:
     const std::string& path() const { return path_; }
     void write(const void* data, size_t n);
     void write(std::string_view text) { write(text.data(), text.size()); }
-    template <class T> void put(const T& value) { write(&value, sizeof(T)); }
+    template <class T>
+    void put(const T& value) {
+        write(&value, sizeof(T));
+    }
     // Overwrites bytes already written (for counts and totals known only at the end).
     void patch(uint64_t offset, const void* data, size_t n);
     uint64_t offset() const { return offset_; }
@@ -122,10 +131,10 @@ private:
     std::string temp_path_;   // empty when writing a device or pipe in place
     std::string final_path_;  // where the temporary goes: path_, or the file its link names
     int fd_ = -1;
-    uint64_t offset_ = 0;      // bytes written, buffered ones included
-    uint64_t appended_ = 0;    // bytes written to the file in order (not patches)
+    uint64_t offset_ = 0;    // bytes written, buffered ones included
+    uint64_t appended_ = 0;  // bytes written to the file in order (not patches)
     std::vector<uint8_t> buffer_;
-    size_t buffered_ = 0;      // bytes waiting in buffer_, the last ones of offset_
+    size_t buffered_ = 0;  // bytes waiting in buffer_, the last ones of offset_
     bool committed_ = false;
 };
 

@@ -1,11 +1,11 @@
 // merge_rays: several ray files into one, under one header that describes every ray.
+#include "converters/colour/spectrum.h"
 #include "converters/rays/ray_ops.h"
 #include "converters/rays/ray_ops_detail.h"
-#include "converters/colour/spectrum.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <memory>
 
 namespace rayset {
@@ -14,17 +14,21 @@ namespace {
 
 const char* spectral_name(SpectralKind kind) {
     switch (kind) {
-    case SpectralKind::none: return "no spectral data";
-    case SpectralKind::single_wavelength: return "a single wavelength";
-    case SpectralKind::per_ray_wavelength: return "per-ray wavelengths";
-    case SpectralKind::shared_table: return "a spectral table";
-    case SpectralKind::per_ray_table: return "per-ray spectral tables";
+        case SpectralKind::none: return "no spectral data";
+        case SpectralKind::single_wavelength: return "a single wavelength";
+        case SpectralKind::per_ray_wavelength: return "per-ray wavelengths";
+        case SpectralKind::shared_table: return "a spectral table";
+        case SpectralKind::per_ray_table: return "per-ray spectral tables";
     }
     return "?";
 }
 
-bool is_wavelength(SpectralKind k) { return k == SpectralKind::single_wavelength || k == SpectralKind::per_ray_wavelength; }
-bool is_table(SpectralKind k) { return k == SpectralKind::shared_table || k == SpectralKind::per_ray_table; }
+bool is_wavelength(SpectralKind k) {
+    return k == SpectralKind::single_wavelength || k == SpectralKind::per_ray_wavelength;
+}
+bool is_table(SpectralKind k) {
+    return k == SpectralKind::shared_table || k == SpectralKind::per_ray_table;
+}
 
 struct Source {
     std::string path;
@@ -41,7 +45,8 @@ struct Source {
 // string, or why the spectral data had to be dropped.
 std::string plan_spectra(std::vector<Source>& sources, RayHeader& out) {
     const auto all = [&](bool (*test)(SpectralKind)) {
-        return std::all_of(sources.begin(), sources.end(), [&](const Source& s) { return test(s.header().spectral); });
+        return std::all_of(sources.begin(), sources.end(),
+                           [&](const Source& s) { return test(s.header().spectral); });
     };
     out.spectral_tables.clear();
     out.single_wavelength = kUnknown;
@@ -50,34 +55,42 @@ std::string plan_spectra(std::vector<Source>& sources, RayHeader& out) {
     } else if (all(is_wavelength)) {
         const float first = sources[0].header().single_wavelength;
         const bool one_line = std::all_of(sources.begin(), sources.end(), [&](const Source& s) {
-            return s.header().spectral == SpectralKind::single_wavelength && s.header().single_wavelength == first;
+            return s.header().spectral == SpectralKind::single_wavelength &&
+                   s.header().single_wavelength == first;
         });
-        out.spectral = one_line ? SpectralKind::single_wavelength : SpectralKind::per_ray_wavelength;
+        out.spectral =
+            one_line ? SpectralKind::single_wavelength : SpectralKind::per_ray_wavelength;
         if (one_line) out.single_wavelength = first;
     } else if (all(is_table)) {
         bool all_shared = true;
         for (Source& s : sources) {
             all_shared = all_shared && s.header().spectral == SpectralKind::shared_table;
             for (const SpectralTable& t : s.header().spectral_tables) {
-                auto same = [&](const SpectralTable& u) { return u.wavelength == t.wavelength && u.weight == t.weight; };
-                auto found = std::find_if(out.spectral_tables.begin(), out.spectral_tables.end(), same);
+                auto same = [&](const SpectralTable& u) {
+                    return u.wavelength == t.wavelength && u.weight == t.weight;
+                };
+                auto found =
+                    std::find_if(out.spectral_tables.begin(), out.spectral_tables.end(), same);
                 s.table_map.push_back(static_cast<int32_t>(found - out.spectral_tables.begin()));
                 if (found == out.spectral_tables.end()) out.spectral_tables.push_back(t);
             }
         }
-        out.spectral = all_shared && out.spectral_tables.size() == 1 ? SpectralKind::shared_table : SpectralKind::per_ray_table;
+        out.spectral = all_shared && out.spectral_tables.size() == 1 ? SpectralKind::shared_table
+                                                                     : SpectralKind::per_ray_table;
     } else {
         out.spectral = SpectralKind::none;
         std::string why = "spectral data dropped: one header cannot describe";
         for (size_t i = 0; i < sources.size(); ++i)
-            why += fmt::format("{} {} ({})", i ? "," : "", sources[i].path, spectral_name(sources[i].header().spectral));
+            why += fmt::format("{} {} ({})", i ? "," : "", sources[i].path,
+                               spectral_name(sources[i].header().spectral));
         return why;
     }
     return {};
 }
 
 // Which flux columns every ray can carry; sets what each source derives. Returns warnings.
-std::vector<std::string> plan_columns(std::vector<Source>& sources, RayHeader& out, bool spectrum_dropped) {
+std::vector<std::string> plan_columns(std::vector<Source>& sources, RayHeader& out,
+                                      bool spectrum_dropped) {
     bool any_radiant = false, any_luminous = false, all_radiant = true, all_luminous = true;
     for (const Source& s : sources) {
         any_radiant = any_radiant || s.header().has_radiant;
@@ -92,21 +105,28 @@ std::vector<std::string> plan_columns(std::vector<Source>& sources, RayHeader& o
         return std::string(h.has_radiant && h.has_luminous ? "radiant and luminous flux"
                            : h.has_radiant                 ? "radiant flux"
                                                            : "luminous flux") +
-               (h.spectral == SpectralKind::none ? " without spectral data" : " with " + std::string(spectral_name(h.spectral)));
+               (h.spectral == SpectralKind::none
+                    ? " without spectral data"
+                    : " with " + std::string(spectral_name(h.spectral)));
     };
     if (!out.has_radiant && !out.has_luminous) {
         std::string what;
-        for (const Source& s : sources) what += fmt::format("; {} carries {}", s.path, columns(s.header()));
-        fail(sources[0].path, "cannot merge: no flux column (radiant or luminous) is known for every input" + what);
+        for (const Source& s : sources)
+            what += fmt::format("; {} carries {}", s.path, columns(s.header()));
+        fail(sources[0].path,
+             "cannot merge: no flux column (radiant or luminous) is known for every input" + what);
     }
     for (Source& s : sources) {
         const RayHeader& h = s.header();
         s.derive_radiant = out.has_radiant && !h.has_radiant;
         s.derive_luminous = out.has_luminous && !h.has_luminous;
         if (h.has_radiant && !out.has_radiant)
-            notes.push_back(fmt::format("radiant flux of {} dropped: not every input carries it or can derive it", s.path));
+            notes.push_back(fmt::format(
+                "radiant flux of {} dropped: not every input carries it or can derive it", s.path));
         if (h.has_luminous && !out.has_luminous)
-            notes.push_back(fmt::format("luminous flux of {} dropped: not every input carries it or can derive it", s.path));
+            notes.push_back(fmt::format(
+                "luminous flux of {} dropped: not every input carries it or can derive it",
+                s.path));
     }
     return notes;
 }
@@ -119,16 +139,21 @@ std::vector<std::string> plan_extras(std::vector<Source>& sources, RayHeader& ou
     out.extras.clear();
     for (const Source& s : sources)
         for (const ExtraColumn& e : s.header().extras)
-            if (std::none_of(out.extras.begin(), out.extras.end(), [&](const ExtraColumn& o) { return same(o, e); }))
+            if (std::none_of(out.extras.begin(), out.extras.end(),
+                             [&](const ExtraColumn& o) { return same(o, e); }))
                 out.extras.push_back(e);
     std::vector<std::string> notes;
     for (Source& s : sources) {
         const auto& mine = s.header().extras;
         for (const ExtraColumn& o : out.extras) {
-            auto found = std::find_if(mine.begin(), mine.end(), [&](const ExtraColumn& e) { return same(o, e); });
-            s.extra_from.push_back(found == mine.end() ? -1 : static_cast<int>(found - mine.begin()));
+            auto found = std::find_if(mine.begin(), mine.end(),
+                                      [&](const ExtraColumn& e) { return same(o, e); });
+            s.extra_from.push_back(found == mine.end() ? -1
+                                                       : static_cast<int>(found - mine.begin()));
             if (found == mine.end())
-                notes.push_back(fmt::format("{} has no extra column '{}': NaN written there for its rays", s.path, o.label));
+                notes.push_back(
+                    fmt::format("{} has no extra column '{}': NaN written there for its rays",
+                                s.path, o.label));
         }
     }
     return notes;
@@ -137,7 +162,9 @@ std::vector<std::string> plan_extras(std::vector<Source>& sources, RayHeader& ou
 Vec3f scaled(const Vec3f& v, double k) { return {float(v.x * k), float(v.y * k), float(v.z * k)}; }
 
 bool nearly_equal(const Vec3f& a, const Vec3f& b) {
-    auto near = [](float x, float y) { return std::abs(x - y) <= 1e-6f * std::max({1.0f, std::abs(x), std::abs(y)}); };
+    auto near = [](float x, float y) {
+        return std::abs(x - y) <= 1e-6f * std::max({1.0f, std::abs(x), std::abs(y)});
+    };
     return near(a.x, b.x) && near(a.y, b.y) && near(a.z, b.z);
 }
 
@@ -150,28 +177,33 @@ void convert(const Source& s, const RayHeader& out, const RayChunk& in, RayChunk
     for (size_t i = 0; i < chunk.rays.size(); ++i) {
         Ray& r = chunk.rays[i];
         auto underivable = [&](const char* what) {
-            fail(s.path, fmt::format("ray {}: its {} flux cannot be derived from its spectrum ({}), so the merged file "
-                                     "cannot carry {} flux for every ray",
-                                     in.first_index + i + 1, what, std::isnan(r.wavelength) ? "unknown wavelength" : "no light", what));
+            fail(s.path,
+                 fmt::format("ray {}: its {} flux cannot be derived from its spectrum ({}), so the "
+                             "merged file "
+                             "cannot carry {} flux for every ray",
+                             in.first_index + i + 1, what,
+                             std::isnan(r.wavelength) ? "unknown wavelength" : "no light", what));
         };
         if (s.length_scale != 1) r.origin = scaled(r.origin, s.length_scale);
-        if (s.derive_radiant && !std::isfinite(r.radiant = float(s.weights->radiant(r)))) underivable("radiant");
-        if (s.derive_luminous && !std::isfinite(r.luminous = float(s.weights->luminous(r)))) underivable("luminous");
+        if (s.derive_radiant && !std::isfinite(r.radiant = float(s.weights->radiant(r))))
+            underivable("radiant");
+        if (s.derive_luminous && !std::isfinite(r.luminous = float(s.weights->luminous(r))))
+            underivable("luminous");
         if (!out.has_radiant) r.radiant = kUnknown;
         if (!out.has_luminous) r.luminous = kUnknown;
         switch (out.spectral) {
-        case SpectralKind::per_ray_wavelength:
-            if (h.spectral == SpectralKind::single_wavelength) r.wavelength = h.single_wavelength;
-            break;
-        case SpectralKind::per_ray_table:
-            r.spectrum = s.table_map[h.spectral == SpectralKind::shared_table ? 0 : r.spectrum];
-            break;
-        default:
-            r.wavelength = kUnknown;
-            r.spectrum = -1;
+            case SpectralKind::per_ray_wavelength:
+                if (h.spectral == SpectralKind::single_wavelength)
+                    r.wavelength = h.single_wavelength;
+                break;
+            case SpectralKind::per_ray_table:
+                r.spectrum = s.table_map[h.spectral == SpectralKind::shared_table ? 0 : r.spectrum];
+                break;
+            default: r.wavelength = kUnknown; r.spectrum = -1;
         }
         for (size_t e = 0; e < out_extras; ++e)
-            if (s.extra_from[e] >= 0) chunk.extra[i * out_extras + e] = in.extra[i * in_extras + s.extra_from[e]];
+            if (s.extra_from[e] >= 0)
+                chunk.extra[i * out_extras + e] = in.extra[i * in_extras + s.extra_from[e]];
     }
 }
 

@@ -4,15 +4,14 @@
 #include "core/geometry.h"
 #include "core/random.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <limits>
 
 namespace rayset {
 
 namespace {
-
 
 // Knuth's Algorithm S: ray i is kept with probability (k - kept) / (n - i), which keeps
 // exactly k rays and makes every k-subset equally likely. One draw per ray until k are kept,
@@ -42,11 +41,13 @@ double matrix_distance_from_identity(const Matrix3& m) {
 }
 
 double determinant(const Matrix3& m) {
-    return m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
+    return m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
+           m[2] * (m[3] * m[7] - m[4] * m[6]);
 }
 
 std::array<double, 3> apply(const Matrix3& m, double x, double y, double z) {
-    return {m[0] * x + m[1] * y + m[2] * z, m[3] * x + m[4] * y + m[5] * z, m[6] * x + m[7] * y + m[8] * z};
+    return {m[0] * x + m[1] * y + m[2] * z, m[3] * x + m[4] * y + m[5] * z,
+            m[6] * x + m[7] * y + m[8] * z};
 }
 
 }  // namespace
@@ -163,8 +164,10 @@ RayOpReport subsample_rays(const std::string& input, const std::string& output, 
 Matrix3 rotation_about_axis(const std::array<double, 3>& axis, double degrees) {
     const double length = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
     if (!(length > 0) || !std::isfinite(length))
-        throw Error(fmt::format("rotation axis ({}, {}, {}) has no direction", axis[0], axis[1], axis[2]));
-    if (!std::isfinite(degrees)) throw Error(fmt::format("rotation angle {} is not a number", degrees));
+        throw Error(
+            fmt::format("rotation axis ({}, {}, {}) has no direction", axis[0], axis[1], axis[2]));
+    if (!std::isfinite(degrees))
+        throw Error(fmt::format("rotation angle {} is not a number", degrees));
     const double x = axis[0] / length, y = axis[1] / length, z = axis[2] / length;
     const double a = degrees * kPi / 180, c = std::cos(a), s = std::sin(a), t = 1 - c;
     // Rodrigues' formula.
@@ -181,25 +184,34 @@ Matrix3 multiply(const Matrix3& a, const Matrix3& b) {
     return m;
 }
 
-Matrix3 transpose(const Matrix3& m) { return {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]}; }
+Matrix3 transpose(const Matrix3& m) {
+    return {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]};
+}
 
-RayTransformer::RayTransformer(const RayTransform& t, const RayHeader& header, const std::string& file)
+RayTransformer::RayTransformer(const RayTransform& t, const RayHeader& header,
+                               const std::string& file)
     : header_(header), rotation_(t.rotation) {
     if (!(t.scale > 0) || !std::isfinite(t.scale))
-        fail(file, fmt::format("transform: the scale factor is {}, not a positive number", t.scale));
+        fail(file,
+             fmt::format("transform: the scale factor is {}, not a positive number", t.scale));
     for (double v : t.rotation)
-        if (!std::isfinite(v)) fail(file, "transform: the rotation matrix holds a value that is not a number");
+        if (!std::isfinite(v))
+            fail(file, "transform: the rotation matrix holds a value that is not a number");
     const double off = matrix_distance_from_identity(multiply(t.rotation, transpose(t.rotation)));
     if (off > 1e-6 || determinant(t.rotation) < 0)
-        fail(file, fmt::format("transform: the 3x3 matrix is not a rotation (R x R^T differs from the identity by {:.3g}, "
-                               "determinant {:.6g}); give an orthonormal matrix with determinant +1",
-                               off, determinant(t.rotation)));
+        fail(file,
+             fmt::format("transform: the 3x3 matrix is not a rotation (R x R^T differs from the "
+                         "identity by {:.3g}, "
+                         "determinant {:.6g}); give an orthonormal matrix with determinant +1",
+                         off, determinant(t.rotation)));
     for (double v : t.translation)
-        if (!std::isfinite(v)) fail(file, "transform: the translation holds a value that is not a number");
+        if (!std::isfinite(v))
+            fail(file, "transform: the translation holds a value that is not a number");
 
     const LengthUnit unit = t.unit.value_or(header.unit);
     const double unit_factor = millimetres_per(header.unit) / millimetres_per(unit);
-    const double translation_factor = millimetres_per(t.translation_unit.value_or(unit)) / millimetres_per(unit);
+    const double translation_factor =
+        millimetres_per(t.translation_unit.value_or(unit)) / millimetres_per(unit);
     rotates_ = t.rotation != kIdentity3;
     linear_ = t.rotation;
     for (double& v : linear_) v *= t.scale * unit_factor;
@@ -208,9 +220,11 @@ RayTransformer::RayTransformer(const RayTransform& t, const RayHeader& header, c
     header_.unit = unit;
     const Vec3f& o = header.data_origin;
     auto p = ::rayset::apply(linear_, o.x, o.y, o.z);
-    header_.data_origin = {float(p[0] + translation_[0]), float(p[1] + translation_[1]), float(p[2] + translation_[2])};
+    header_.data_origin = {float(p[0] + translation_[0]), float(p[1] + translation_[1]),
+                           float(p[2] + translation_[2])};
     Vec3f& where = header_.placement.location;
-    where = {float(where.x * unit_factor), float(where.y * unit_factor), float(where.z * unit_factor)};
+    where = {float(where.x * unit_factor), float(where.y * unit_factor),
+             float(where.z * unit_factor)};
 
     extras_ = header.extras.size();
     const ExtraKind axis[3] = {ExtraKind::ellipse_x, ExtraKind::ellipse_y, ExtraKind::ellipse_z};
@@ -224,7 +238,8 @@ void RayTransformer::apply(RayChunk& chunk) const {
     for (size_t i = 0; i < chunk.rays.size(); ++i) {
         Ray& r = chunk.rays[i];
         auto o = ::rayset::apply(linear_, r.origin.x, r.origin.y, r.origin.z);
-        r.origin = {float(o[0] + translation_[0]), float(o[1] + translation_[1]), float(o[2] + translation_[2])};
+        r.origin = {float(o[0] + translation_[0]), float(o[1] + translation_[1]),
+                    float(o[2] + translation_[2])};
         if (!rotates_) continue;
         auto d = ::rayset::apply(rotation_, r.direction.x, r.direction.y, r.direction.z);
         const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
@@ -238,7 +253,8 @@ void RayTransformer::apply(RayChunk& chunk) const {
 }
 
 RayOpReport transform_rays(const std::string& input, const std::string& output, RayFormat format,
-                           const RayTransform& transform, const RayReadOptions& read, const Progress& progress) {
+                           const RayTransform& transform, const RayReadOptions& read,
+                           const Progress& progress) {
     auto reader = open_rays(input, read);
     RayTransformer transformer(transform, reader->header(), input);
     RayOpReport report;

@@ -58,9 +58,9 @@ RayOpReport subsample_rays(const std::string& input, const std::string& output, 
 struct MergeOptions {
     std::optional<LengthUnit> unit;
 };
-RayOpReport merge_rays(const std::vector<std::string>& inputs, const std::string& output, RayFormat format,
-                       const MergeOptions& options = {}, const RayReadOptions& read = {},
-                       const Progress& progress = {});
+RayOpReport merge_rays(const std::vector<std::string>& inputs, const std::string& output,
+                       RayFormat format, const MergeOptions& options = {},
+                       const RayReadOptions& read = {}, const Progress& progress = {});
 
 // ---- transform ---------------------------------------------------------------------------------
 using Matrix3 = std::array<double, 9>;  // row-major
@@ -72,16 +72,16 @@ Matrix3 multiply(const Matrix3& a, const Matrix3& b);  // a x b: b applies first
 Matrix3 transpose(const Matrix3& m);                   // the inverse of a rotation
 
 // origin' = rotation x (scale x origin converted to `unit`) + translation;
-// direction' = rotation x direction, renormalised (untouched when the rotation is the identity). Polarisation ellipse axes (TM-25 extras)
-// rotate with the directions. The header's data origin is a point of the rays' frame and moves
-// with them; a Zemax placement says where that frame sits in a system and only has its length
-// converted to the new unit.
+// direction' = rotation x direction, renormalised (untouched when the rotation is the identity).
+// Polarisation ellipse axes (TM-25 extras) rotate with the directions. The header's data origin is
+// a point of the rays' frame and moves with them; a Zemax placement says where that frame sits in a
+// system and only has its length converted to the new unit.
 struct RayTransform {
-    std::optional<LengthUnit> unit;               // convert lengths first; default: keep
-    double scale = 1;                             // uniform, > 0
-    Matrix3 rotation = kIdentity3;                // proper rotation (checked to 1e-6)
+    std::optional<LengthUnit> unit;  // convert lengths first; default: keep
+    double scale = 1;                // uniform, > 0
+    Matrix3 rotation = kIdentity3;   // proper rotation (checked to 1e-6)
     std::array<double, 3> translation{0, 0, 0};
-    std::optional<LengthUnit> translation_unit;   // default: the output's unit
+    std::optional<LengthUnit> translation_unit;  // default: the output's unit
 };
 
 // Applies a transform to chunks of rays described by one header; built once per input.
@@ -97,7 +97,7 @@ private:
     Matrix3 linear_;  // rotation x scale x unit factor
     Matrix3 rotation_;
     std::array<double, 3> translation_;
-    bool rotates_ = false;  // an identity rotation leaves directions bit for bit
+    bool rotates_ = false;                    // an identity rotation leaves directions bit for bit
     std::array<int, 3> ellipse_{-1, -1, -1};  // extras holding the polarisation ellipse axis
     size_t extras_ = 0;
 };

@@ -4,12 +4,12 @@
 #include "converters/rays/ray_stream.h"
 #include "converters/rays/simd.h"
 
+#include <fmt/format.h>
 #include <algorithm>
-#include <cmath>
 #include <atomic>
+#include <cmath>
 #include <condition_variable>
 #include <exception>
-#include <fmt/format.h>
 #include <limits>
 #include <mutex>
 #include <numeric>
@@ -34,10 +34,12 @@ namespace rayset {
 class RayReader::ReadAhead {
 public:
     explicit ReadAhead(const RayReader& reader) : reader_(reader) {
-        const size_t threads = std::min<size_t>(reader.parts(), std::max(1u, std::thread::hardware_concurrency()));
+        const size_t threads =
+            std::min<size_t>(reader.parts(), std::max(1u, std::thread::hardware_concurrency()));
         slots_.resize(2 * threads + 2);
         free_ = std::vector<std::condition_variable>(threads);
-        for (size_t t = 0; t < threads; ++t) threads_.emplace_back([this, t, threads] { run(t, threads); });
+        for (size_t t = 0; t < threads; ++t)
+            threads_.emplace_back([this, t, threads] { run(t, threads); });
     }
 
     ~ReadAhead() {
@@ -121,7 +123,7 @@ private:
     std::mutex mutex_;
     std::condition_variable filled_;
     std::vector<std::condition_variable> free_;  // one per thread, woken when its next slot is free
-    uint64_t taken_ = 0;  // chunks the caller has taken
+    uint64_t taken_ = 0;                         // chunks the caller has taken
     bool stopping_ = false;
     std::vector<std::thread> threads_;  // last: they start once everything above is ready
 };
@@ -136,7 +138,8 @@ RayReader::~RayReader() = default;  // stops the read-ahead thread first (ahead_
 
 double RayReader::progress() const {
     uint64_t n = header_.ray_count;
-    uint64_t done = std::max<uint64_t>(totals_.rays, rays_in_parts_.load(std::memory_order_relaxed));
+    uint64_t done =
+        std::max<uint64_t>(totals_.rays, rays_in_parts_.load(std::memory_order_relaxed));
     return n ? std::min(1.0, double(done) / double(n)) : 0.0;
 }
 
@@ -155,7 +158,8 @@ size_t RayReader::parts() const {
     if (!reopen_ || !decoder_->can_seek()) return 1;
     // Parts of at least 16 chunks: fewer would cost more in opening and threads than they save.
     const uint64_t least_rays_per_part = 16 * options_.chunk_size;
-    return static_cast<size_t>(std::clamp<uint64_t>(header_.ray_count / least_rays_per_part, 1, kMaxParts));
+    return static_cast<size_t>(
+        std::clamp<uint64_t>(header_.ray_count / least_rays_per_part, 1, kMaxParts));
 }
 
 void RayReader::read_in_parts(const std::function<void(size_t, const RayColumns&)>& visit,
@@ -175,13 +179,17 @@ void RayReader::read_in_parts(const std::function<void(size_t, const RayColumns&
     auto record_failure = [&](size_t p) {
         results[p].error = std::current_exception();
         size_t seen = failed.load();
-        while (p < seen && !failed.compare_exchange_weak(seen, p)) {}
+        while (p < seen && !failed.compare_exchange_weak(seen, p)) {
+        }
     };
     auto read_part = [&](size_t p, RayDecoder& decoder, RayColumns& chunk, bool report_progress) {
-        const uint64_t first = count * p / parts, end = parts == 1 ? UINT64_MAX : count * (p + 1) / parts;
+        const uint64_t first = count * p / parts,
+                       end = parts == 1 ? UINT64_MAX : count * (p + 1) / parts;
         if (parts > 1) decoder.seek(first);
         for (uint64_t next = first; next < end && failed.load(std::memory_order_relaxed) > p;) {
-            if (!decoder.decode(chunk, static_cast<size_t>(std::min<uint64_t>(options_.chunk_size, end - next)))) break;
+            if (!decoder.decode(chunk, static_cast<size_t>(
+                                           std::min<uint64_t>(options_.chunk_size, end - next))))
+                break;
             results[p].totals += validate(chunk);
             visit(p, chunk);
             next += chunk.size();
@@ -205,7 +213,8 @@ void RayReader::read_in_parts(const std::function<void(size_t, const RayColumns&
         }
     };
     std::vector<std::thread> helpers;
-    const size_t threads = std::min<size_t>(parts, std::max(1u, std::thread::hardware_concurrency()));
+    const size_t threads =
+        std::min<size_t>(parts, std::max(1u, std::thread::hardware_concurrency()));
     for (size_t t = 1; t < threads; ++t) helpers.emplace_back(work, false);
     work(true);
     for (std::thread& t : helpers) t.join();
@@ -218,17 +227,21 @@ void RayReader::read_in_parts(const std::function<void(size_t, const RayColumns&
 
 void RayReader::finish() {
     if (totals_.rays == 0) fail(path_, "the file holds no rays");
-    const bool no_light = (!header_.has_radiant || totals_.radiant <= 0) && (!header_.has_luminous || totals_.luminous <= 0);
+    const bool no_light = (!header_.has_radiant || totals_.radiant <= 0) &&
+                          (!header_.has_luminous || totals_.luminous <= 0);
     if (no_light) fail(path_, "every ray has zero flux: the file carries no light");
     if (totals_.zero_flux_rays)
-        warnings_.push_back(fmt::format("{}: {} of {} rays have zero flux (kept; they carry no light)", path_,
-                                        totals_.zero_flux_rays, totals_.rays));
+        warnings_.push_back(
+            fmt::format("{}: {} of {} rays have zero flux (kept; they carry no light)", path_,
+                        totals_.zero_flux_rays, totals_.rays));
     if (options_.flux_policy == FluxPolicy::rays) {
-        auto check = [&](bool present, double stated, double sum, const char* what, const char* unit) {
+        auto check = [&](bool present, double stated, double sum, const char* what,
+                         const char* unit) {
             if (present && std::isfinite(stated) && stated > 0 && !totals_agree(stated, sum))
-                warnings_.push_back(fmt::format("{}: the rays' {} flux sums to {:.7g} {} but the header states {:.7g} {}: "
-                                                "the rays are used (--trust header scales them to the header)",
-                                                path_, what, sum, unit, stated, unit));
+                warnings_.push_back(fmt::format(
+                    "{}: the rays' {} flux sums to {:.7g} {} but the header states {:.7g} {}: "
+                    "the rays are used (--trust header scales them to the header)",
+                    path_, what, sum, unit, stated, unit));
         };
         check(header_.has_radiant, header_.stated_radiant, totals_.radiant, "radiant", "W");
         check(header_.has_luminous, header_.stated_luminous, totals_.luminous, "luminous", "lm");
@@ -278,7 +291,8 @@ RAYSET_ALWAYS_INLINE bool all_pass_loops(const RayColumns& c, const RayTest& tes
     const float *dx = c.dx.data(), *dy = c.dy.data(), *dz = c.dz.data();
     int pass = 1;
     for (size_t i = 0; i < n; ++i)
-        pass &= finite_float(ox[i]) & finite_float(oy[i]) & finite_float(oz[i]) & test.direction_ok(dx[i], dy[i], dz[i]);
+        pass &= finite_float(ox[i]) & finite_float(oy[i]) & finite_float(oz[i]) &
+                test.direction_ok(dx[i], dy[i], dz[i]);
     auto all_flux_ok = [n, &pass](const float* flux) {
         for (size_t i = 0; i < n; ++i) pass &= flux_ok(flux[i]);
     };
@@ -336,8 +350,12 @@ RAYSET_ALWAYS_INLINE RayTotals flux_totals_loops(const FluxColumns& c, size_t n)
 
 // Both compiled for AVX2 too (converters/rays/simd.h).
 #if RAYSET_HAVE_AVX2_TARGET
-RAYSET_TARGET_AVX2 bool all_pass_avx2(const RayColumns& c, const RayTest& test) { return all_pass_loops(c, test); }
-RAYSET_TARGET_AVX2 RayTotals flux_totals_avx2(const FluxColumns& c, size_t n) { return flux_totals_loops(c, n); }
+RAYSET_TARGET_AVX2 bool all_pass_avx2(const RayColumns& c, const RayTest& test) {
+    return all_pass_loops(c, test);
+}
+RAYSET_TARGET_AVX2 RayTotals flux_totals_avx2(const FluxColumns& c, size_t n) {
+    return flux_totals_loops(c, n);
+}
 #endif
 
 bool all_pass(const RayColumns& c, const RayTest& test) {
@@ -358,8 +376,11 @@ RayTotals flux_totals(const FluxColumns& c, size_t n) {
 
 RayTotals RayReader::validate(RayColumns& chunk) const {
     const double tolerance = options_.direction_tolerance;
-    const RayTest test{float((1 - tolerance) * (1 - tolerance)), float((1 + tolerance) * (1 + tolerance)),
-                       header_.has_radiant, header_.has_luminous, header_.spectral == SpectralKind::per_ray_wavelength,
+    const RayTest test{float((1 - tolerance) * (1 - tolerance)),
+                       float((1 + tolerance) * (1 + tolerance)),
+                       header_.has_radiant,
+                       header_.has_luminous,
+                       header_.spectral == SpectralKind::per_ray_wavelength,
                        header_.spectral == SpectralKind::per_ray_table,
                        static_cast<int32_t>(header_.spectral_tables.size())};
     const size_t n = chunk.size();
@@ -367,7 +388,8 @@ RayTotals RayReader::validate(RayColumns& chunk) const {
     // only a chunk that fails is walked again to report (or, if allowed, fix) its first bad ray.
     if (!all_pass(chunk, test))
         for (size_t i = 0; i < n; ++i)
-            if (!test.passes(chunk.ray(i))) check_ray(chunk, i);  // throws, or normalises an accepted direction
+            if (!test.passes(chunk.ray(i)))
+                check_ray(chunk, i);  // throws, or normalises an accepted direction
 
     const FluxColumns flux{{chunk.radiant.data(), chunk.luminous.data()},
                            {header_.has_radiant, header_.has_luminous},
@@ -384,22 +406,29 @@ void RayReader::check_ray(RayColumns& chunk, size_t i) const {
         fail(path_, decoder_->locate(index), fmt::format("ray {}: {}", index + 1, what));
     };
     if (!finite_float(r.origin.x) || !finite_float(r.origin.y) || !finite_float(r.origin.z))
-        bad(fmt::format("origin ({}, {}, {}) is not a finite number", r.origin.x, r.origin.y, r.origin.z));
+        bad(fmt::format("origin ({}, {}, {}) is not a finite number", r.origin.x, r.origin.y,
+                        r.origin.z));
     const Vec3f& d = r.direction;
     if (!finite_float(d.x) || !finite_float(d.y) || !finite_float(d.z))
         bad(fmt::format("direction ({}, {}, {}) is not a finite number", d.x, d.y, d.z));
-    if (header_.has_radiant && !flux_ok(r.radiant)) bad(fmt::format("radiant flux {} is not a non-negative number", r.radiant));
-    if (header_.has_luminous && !flux_ok(r.luminous)) bad(fmt::format("luminous flux {} is not a non-negative number", r.luminous));
+    if (header_.has_radiant && !flux_ok(r.radiant))
+        bad(fmt::format("radiant flux {} is not a non-negative number", r.radiant));
+    if (header_.has_luminous && !flux_ok(r.luminous))
+        bad(fmt::format("luminous flux {} is not a non-negative number", r.luminous));
     if (header_.spectral == SpectralKind::per_ray_wavelength && !wavelength_ok(r.wavelength))
-        bad(fmt::format("wavelength {} nm is not a positive number (NaN would mean unknown)", r.wavelength));
+        bad(fmt::format("wavelength {} nm is not a positive number (NaN would mean unknown)",
+                        r.wavelength));
     const size_t tables = header_.spectral_tables.size();
-    if (header_.spectral == SpectralKind::per_ray_table && !spectrum_ok(r.spectrum, int32_t(tables)))
-        bad(fmt::format("spectrum index {} is outside the file's {} spectral tables", r.spectrum + 1, tables));
+    if (header_.spectral == SpectralKind::per_ray_table &&
+        !spectrum_ok(r.spectrum, int32_t(tables)))
+        bad(fmt::format("spectrum index {} is outside the file's {} spectral tables",
+                        r.spectrum + 1, tables));
     const double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
     if (std::abs(length - 1) > options_.direction_tolerance) {
         if (!options_.normalise_directions || length == 0)
-            bad(fmt::format("direction ({}, {}, {}) has length {:.6g}, not 1{}", d.x, d.y, d.z, length,
-                            length == 0 ? "" : " (--normalise accepts and renormalises such directions)"));
+            bad(fmt::format(
+                "direction ({}, {}, {}) has length {:.6g}, not 1{}", d.x, d.y, d.z, length,
+                length == 0 ? "" : " (--normalise accepts and renormalises such directions)"));
         r.direction = {float(d.x / length), float(d.y / length), float(d.z / length)};
         chunk.set(i, r);
     }

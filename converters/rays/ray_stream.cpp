@@ -3,36 +3,36 @@
 #include "converters/formats/codecs.h"
 #include "converters/rays/io.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fmt/format.h>
 #include <limits>
 
 namespace rayset {
 
 double millimetres_per(LengthUnit unit) {
     switch (unit) {
-    case LengthUnit::mm: return 1;
-    case LengthUnit::cm: return 10;
-    case LengthUnit::m: return 1000;
-    case LengthUnit::inch: return 25.4;
-    case LengthUnit::ft: return 304.8;
-    case LengthUnit::um: return 1e-3;
-    case LengthUnit::nm: return 1e-6;
+        case LengthUnit::mm: return 1;
+        case LengthUnit::cm: return 10;
+        case LengthUnit::m: return 1000;
+        case LengthUnit::inch: return 25.4;
+        case LengthUnit::ft: return 304.8;
+        case LengthUnit::um: return 1e-3;
+        case LengthUnit::nm: return 1e-6;
     }
     return 1;
 }
 
 const char* to_string(LengthUnit unit) {
     switch (unit) {
-    case LengthUnit::mm: return "mm";
-    case LengthUnit::cm: return "cm";
-    case LengthUnit::m: return "m";
-    case LengthUnit::inch: return "in";
-    case LengthUnit::ft: return "ft";
-    case LengthUnit::um: return "um";
-    case LengthUnit::nm: return "nm";
+        case LengthUnit::mm: return "mm";
+        case LengthUnit::cm: return "cm";
+        case LengthUnit::m: return "m";
+        case LengthUnit::inch: return "in";
+        case LengthUnit::ft: return "ft";
+        case LengthUnit::um: return "um";
+        case LengthUnit::nm: return "nm";
     }
     return "?";
 }
@@ -51,15 +51,15 @@ struct FormatEntry {
 // Detection order matters: formats with a magic first, SPEOS (no magic) last.
 const FormatEntry kFormats[] = {
     {RayFormat::tm25, "tm25", "IES TM-25-13 ray file", sniff_tm25, open_tm25, create_tm25},
-    {RayFormat::lighttools_binary, "lighttools", "LightTools binary ray data (LTRF)", sniff_lighttools_binary,
-     open_lighttools_binary, create_lighttools_binary},
-    {RayFormat::lighttools_text, "lighttools-text", "LightTools text ray data", sniff_lighttools_text,
-     open_lighttools_text, create_lighttools_text},
-    {RayFormat::zemax_binary, "zemax", "Zemax binary source file (.DAT/.SDF)", sniff_zemax_binary, open_zemax_binary,
-     create_zemax_binary},
+    {RayFormat::lighttools_binary, "lighttools", "LightTools binary ray data (LTRF)",
+     sniff_lighttools_binary, open_lighttools_binary, create_lighttools_binary},
+    {RayFormat::lighttools_text, "lighttools-text", "LightTools text ray data",
+     sniff_lighttools_text, open_lighttools_text, create_lighttools_text},
+    {RayFormat::zemax_binary, "zemax", "Zemax binary source file (.DAT/.SDF)", sniff_zemax_binary,
+     open_zemax_binary, create_zemax_binary},
     {RayFormat::csv, "csv", "CSV rays (rayset)", sniff_csv, open_csv, create_csv},
-    {RayFormat::zemax_text, "zemax-text", "Zemax text source file", sniff_zemax_text, open_zemax_text,
-     create_zemax_text},
+    {RayFormat::zemax_text, "zemax-text", "Zemax text source file", sniff_zemax_text,
+     open_zemax_text, create_zemax_text},
     {RayFormat::speos, "speos", "SPEOS binary ray file", sniff_speos, open_speos, create_speos},
 };
 
@@ -95,23 +95,30 @@ RayFormat detect_ray_format(const std::string& path) {
     if (size == 0) fail(path, "the file is empty");
     for (const auto& e : kFormats)
         if (e.sniff(head, size)) return e.format;
-    fail(path, "not a ray file of a known format: no TM-25 ('TM25') or LightTools ('LTRF', '# LightTools') "
-               "magic, no Zemax identifier 1010, not SPEOS (28-byte header + 32-byte records) nor rayset CSV "
-               "('x,y,z,kx,ky,kz' header). If it is one of these, name it with --from.");
+    fail(path,
+         "not a ray file of a known format: no TM-25 ('TM25') or LightTools ('LTRF', '# "
+         "LightTools') "
+         "magic, no Zemax identifier 1010, not SPEOS (28-byte header + 32-byte records) nor rayset "
+         "CSV "
+         "('x,y,z,kx,ky,kz' header). If it is one of these, name it with --from.");
 }
 
 bool totals_agree(double stated, double sum) {
-    return std::isfinite(stated) && std::abs(stated - sum) <= 1e-4 * std::max(std::abs(stated), std::abs(sum));
+    return std::isfinite(stated) &&
+           std::abs(stated - sum) <= 1e-4 * std::max(std::abs(stated), std::abs(sum));
 }
 
-double total_to_write(double stated, double sum) { return totals_agree(stated, sum) ? stated : sum; }
+double total_to_write(double stated, double sum) {
+    return totals_agree(stated, sum) ? stated : sum;
+}
 
-size_t read_f32_records(BinaryInput& in, size_t columns, uint64_t count, size_t max_rays, uint64_t& next,
-                        std::vector<float>& records, RayColumns& chunk) {
+size_t read_f32_records(BinaryInput& in, size_t columns, uint64_t count, size_t max_rays,
+                        uint64_t& next, std::vector<float>& records, RayColumns& chunk) {
     chunk.clear();
     chunk.first_index = next;
     if (next >= count) return 0;
-    const size_t n = static_cast<size_t>(std::min<uint64_t>(std::max<size_t>(max_rays, 1), count - next));
+    const size_t n =
+        static_cast<size_t>(std::min<uint64_t>(std::max<size_t>(max_rays, 1), count - next));
     records.resize(n * columns);
     in.read(records.data(), records.size() * sizeof(float), "a ray record");
     chunk.resize(n);
@@ -152,7 +159,8 @@ std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptio
     auto decoder = e.open(path);
     const bool relative = decoder->flux_is_relative();
     FluxPolicy policy = options.flux_policy;
-    if (policy == FluxPolicy::format_default) policy = relative ? FluxPolicy::stated : FluxPolicy::rays;
+    if (policy == FluxPolicy::format_default)
+        policy = relative ? FluxPolicy::stated : FluxPolicy::rays;
 
     std::vector<std::string> notes;
     double radiant_scale = 1, luminous_scale = 1;
@@ -161,24 +169,32 @@ std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptio
         // A first pass sums the rays so that they can be scaled while streaming the second.
         Sums sums = sum_fluxes(*decoder, options.chunk_size);
         decoder = e.open(path);
-        auto decide = [&](bool present, double stated, double sum, const char* what, const char* unit) {
+        auto decide = [&](bool present, double stated, double sum, const char* what,
+                          const char* unit) {
             if (!present) return 1.0;
             if (!(std::isfinite(stated) && stated > 0)) {
                 if (!relative)
-                    notes.push_back(fmt::format("{}: the header states no {} total; the rays' own fluxes are used", path, what));
+                    notes.push_back(fmt::format(
+                        "{}: the header states no {} total; the rays' own fluxes are used", path,
+                        what));
                 return 1.0;
             }
             if (sum <= 0 || totals_agree(stated, sum)) return 1.0;
             if (!relative)
-                notes.push_back(fmt::format("{}: the rays' {} flux sums to {:.7g} {} but the header states {:.7g} {}: "
-                                            "rays scaled to the header (--trust rays keeps them as they are)",
-                                            path, what, sum, unit, stated, unit));
+                notes.push_back(fmt::format(
+                    "{}: the rays' {} flux sums to {:.7g} {} but the header states {:.7g} {}: "
+                    "rays scaled to the header (--trust rays keeps them as they are)",
+                    path, what, sum, unit, stated, unit));
             return stated / sum;
         };
-        radiant_scale = decide(header.has_radiant, header.stated_radiant, sums.radiant, "radiant", "W");
-        luminous_scale = decide(header.has_luminous, header.stated_luminous, sums.luminous, "luminous", "lm");
-        if (header.has_radiant && radiant_scale != 1) header.stated_radiant = sums.radiant * radiant_scale;
-        if (header.has_luminous && luminous_scale != 1) header.stated_luminous = sums.luminous * luminous_scale;
+        radiant_scale =
+            decide(header.has_radiant, header.stated_radiant, sums.radiant, "radiant", "W");
+        luminous_scale =
+            decide(header.has_luminous, header.stated_luminous, sums.luminous, "luminous", "lm");
+        if (header.has_radiant && radiant_scale != 1)
+            header.stated_radiant = sums.radiant * radiant_scale;
+        if (header.has_luminous && luminous_scale != 1)
+            header.stated_luminous = sums.luminous * luminous_scale;
     }
     auto reader = std::make_unique<RayReader>(std::move(decoder), path, options);
     reader->header_ = header;
@@ -190,7 +206,8 @@ std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptio
     return reader;
 }
 
-std::unique_ptr<RayEncoder> create_rays(const std::string& path, RayFormat format, const RayHeader& header) {
+std::unique_ptr<RayEncoder> create_rays(const std::string& path, RayFormat format,
+                                        const RayHeader& header) {
     return entry(format).create(path, header);
 }
 

@@ -3,8 +3,8 @@
 // format. Memory stays constant in the number of rays.
 #pragma once
 
-#include "core/error.h"
 #include "converters/rays/ray.h"
+#include "core/error.h"
 
 #include <atomic>
 #include <functional>
@@ -129,7 +129,8 @@ public:
     double progress() const;
 
 private:
-    friend std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options);
+    friend std::unique_ptr<RayReader> open_rays(const std::string& path,
+                                                const RayReadOptions& options);
     class ReadAhead;
     // Checks and scales a chunk (on the read-ahead thread: it changes nothing but the chunk).
     RayTotals validate(RayColumns& chunk) const;
@@ -143,16 +144,18 @@ private:
     double radiant_scale_ = 1, luminous_scale_ = 1;
     RayTotals totals_;
     std::vector<std::string> warnings_;
-    std::function<std::unique_ptr<RayDecoder>()> reopen_;  // how open_rays() made the decoder (one per part)
+    std::function<std::unique_ptr<RayDecoder>()>
+        reopen_;                              // how open_rays() made the decoder (one per part)
     std::atomic<uint64_t> rays_in_parts_{0};  // read so far by read_in_parts(), for progress()
-    std::unique_ptr<ReadAhead> ahead_;  // started by the first read()
+    std::unique_ptr<ReadAhead> ahead_;        // started by the first read()
 };
 
 std::unique_ptr<RayReader> open_rays(const std::string& path, const RayReadOptions& options = {});
 
 // Creates a writer of `format` at `path` for rays described by `header` (its unit, flux
 // columns, spectral kind and extras say what each ray carries).
-std::unique_ptr<RayEncoder> create_rays(const std::string& path, RayFormat format, const RayHeader& header);
+std::unique_ptr<RayEncoder> create_rays(const std::string& path, RayFormat format,
+                                        const RayHeader& header);
 
 // Content-based detection (the .ray extension is ambiguous). Throws Error when no format fits.
 RayFormat detect_ray_format(const std::string& path);

@@ -1,14 +1,14 @@
 #include "converters/rays/ray_summary.h"
 
-#include "converters/rays/simd.h"
 #include "converters/colour/spectrum.h"
+#include "converters/rays/simd.h"
 #include "core/geometry.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <memory>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <vector>
@@ -16,7 +16,6 @@
 namespace rayset {
 
 namespace {
-
 
 // The azimuth is partitioned by the "diamond angle", a monotone stand-in for it in [0, 4) that
 // costs one division instead of an atan2 per ray: in quadrant q (counted anticlockwise from
@@ -35,30 +34,39 @@ double azimuth_of(double a) {
 // (SSE2 has no 32-bit vector multiply); numbers whose sector is kPhiBands or more are unused.
 constexpr int kSectorBits = 8;
 static_assert(RaySummary::kPhiBands <= 1 << kSectorBits);
-constexpr int kCellNumbers = RaySummary::kZBands << kSectorBits, kSectorMask = (1 << kSectorBits) - 1;
+constexpr int kCellNumbers = RaySummary::kZBands << kSectorBits,
+              kSectorMask = (1 << kSectorBits) - 1;
 
 // The band and the sector as floats clamped to their ranges before they are truncated: a
 // minimum and a maximum, written as the comparisons SSE's minps and maxps make (a NaN band
 // goes to 0), instead of a clamp in integers, which SSE2 does in four instructions.
 constexpr float kTopBand = RaySummary::kZBands - 0.5f, kTopSector = RaySummary::kPhiBands - 0.5f;
 
-double sector_azimuth(int sector, double within) { return azimuth_of((sector + within) * 4.0 / RaySummary::kPhiBands); }
+double sector_azimuth(int sector, double within) {
+    return azimuth_of((sector + within) * 4.0 / RaySummary::kPhiBands);
+}
 
 // What the cells of a sector share: the width of its azimuths and the direction of their middle
 // (a table of sectors, so that the reached cells cost no atan2 each).
 struct Sectors {
-    double width[RaySummary::kPhiBands], cos_middle[RaySummary::kPhiBands], sin_middle[RaySummary::kPhiBands];
+    double width[RaySummary::kPhiBands], cos_middle[RaySummary::kPhiBands],
+        sin_middle[RaySummary::kPhiBands];
 
     Sectors() {
         for (int sector = 0; sector < RaySummary::kPhiBands; ++sector) {
-            const double from = sector_azimuth(sector, 0), to = sector_azimuth(sector, 1), middle = 0.5 * (from + to);
-            width[sector] = to - from, cos_middle[sector] = std::cos(middle), sin_middle[sector] = std::sin(middle);
+            const double from = sector_azimuth(sector, 0), to = sector_azimuth(sector, 1),
+                         middle = 0.5 * (from + to);
+            width[sector] = to - from, cos_middle[sector] = std::cos(middle),
+            sin_middle[sector] = std::sin(middle);
         }
     }
-    double solid_angle(int cell) const { return 2.0 / RaySummary::kZBands * width[cell & kSectorMask]; }
+    double solid_angle(int cell) const {
+        return 2.0 / RaySummary::kZBands * width[cell & kSectorMask];
+    }
     Vec3f centre(int cell) const {
         const int band = cell >> kSectorBits, sector = cell & kSectorMask;
-        const double z = (band + 0.5) / RaySummary::kZBands * 2 - 1, s = std::sqrt(std::max(0.0, 1 - z * z));
+        const double z = (band + 0.5) / RaySummary::kZBands * 2 - 1,
+                     s = std::sqrt(std::max(0.0, 1 - z * z));
         return {float(s * cos_middle[sector]), float(s * sin_middle[sector]), float(z)};
     }
 };
@@ -86,13 +94,14 @@ RAYSET_ALWAYS_INLINE V4i coverage_cells(V4f x, V4f y, V4f z) {
     band = band > 0.0f ? band : 0.0f;
     band = band < kTopBand ? band : kTopBand;
     const V4f ax = (V4f)((V4i)x & INT32_MAX), ay = (V4f)((V4i)y & INT32_MAX);  // |x|, |y|
-    const V4i odd = (y >= 0) != (x >= 0);             // masks: -1 or 0
+    const V4i odd = (y >= 0) != (x >= 0);                                      // masks: -1 or 0
     const V4i quadrant = ((y < 0) & 2) | (odd & 1);
     const V4f sum = ax + ay, smallest = splat(std::numeric_limits<float>::min());
     const V4f part = (odd ? ax : ay) / (sum > smallest ? sum : smallest);
     V4f sector = (__builtin_convertvector(quadrant, V4f) + part) * float(RaySummary::kPhiBands / 4);
     sector = sector < kTopSector ? sector : kTopSector;
-    return __builtin_convertvector(band, V4i) << kSectorBits | __builtin_convertvector(sector, V4i);  // truncated
+    return __builtin_convertvector(band, V4i) << kSectorBits |
+           __builtin_convertvector(sector, V4i);  // truncated
 }
 
 // Sums kept in kLanes lanes: ray i of a block goes to lane i % kLanes (a block's last rays
@@ -126,13 +135,17 @@ public:
             const size_t block = std::min(kBlock, n - start);
 #if RAYSET_HAVE_AVX2_TARGET
             if (avx2_) {
-                if (wavelengths) add_block_avx2<true>(chunk, weight, start, block);
-                else add_block_avx2<false>(chunk, weight, start, block);
+                if (wavelengths)
+                    add_block_avx2<true>(chunk, weight, start, block);
+                else
+                    add_block_avx2<false>(chunk, weight, start, block);
                 continue;
             }
 #endif
-            if (wavelengths) add_block<true>(chunk, weight, start, block);
-            else add_block<false>(chunk, weight, start, block);
+            if (wavelengths)
+                add_block<true>(chunk, weight, start, block);
+            else
+                add_block<false>(chunk, weight, start, block);
         }
         if (spectral_luminous_ && !shared_efficacy_)
             for (size_t i = 0; i < n; ++i) {
@@ -161,10 +174,11 @@ private:
     static constexpr size_t kBlock = 512, kGroup = 64;
 
 #if RAYSET_HAVE_AVX2_TARGET
-    // add_block() compiled for AVX2 (converters/rays/simd.h): its three-operand forms and blends take
-    // about a quarter less time.
+    // add_block() compiled for AVX2 (converters/rays/simd.h): its three-operand forms and blends
+    // take about a quarter less time.
     template <bool kWavelength>
-    RAYSET_TARGET_AVX2 void add_block_avx2(const RayColumns& c, const float* weight, size_t start, size_t n) {
+    RAYSET_TARGET_AVX2 void add_block_avx2(const RayColumns& c, const float* weight, size_t start,
+                                           size_t n) {
         add_block<kWavelength>(c, weight, start, n);
     }
 #endif
@@ -172,9 +186,11 @@ private:
     // Fields 0-2 are the origin, 3 the wavelength (extremes and unknowns kept only if asked:
     // a register less in a loop that has few to spare).
     template <bool kWavelength>
-    RAYSET_ALWAYS_INLINE void add_block(const RayColumns& c, const float* weight, size_t start, size_t n) {
+    RAYSET_ALWAYS_INLINE void add_block(const RayColumns& c, const float* weight, size_t start,
+                                        size_t n) {
         constexpr int kFields = kWavelength ? 4 : 3;
-        const float* field[4] = {c.ox.data() + start, c.oy.data() + start, c.oz.data() + start, c.wavelength.data() + start};
+        const float* field[4] = {c.ox.data() + start, c.oy.data() + start, c.oz.data() + start,
+                                 c.wavelength.data() + start};
         const float *dx = c.dx.data() + start, *dy = c.dy.data() + start, *dz = c.dz.data() + start;
         weight += start;
         V4i unknown = {};
@@ -230,7 +246,8 @@ private:
                 tail[0][t] = dx[r], tail[1][t] = dy[r], tail[2][t] = dz[r];
             }
             for (size_t t = 0; t < n - i; t += 4) {
-                const V4i cell = coverage_cells(load4(tail[0] + t), load4(tail[1] + t), load4(tail[2] + t));
+                const V4i cell =
+                    coverage_cells(load4(tail[0] + t), load4(tail[1] + t), load4(tail[2] + t));
                 for (int l = 0; l < 4; ++l) seen[cell[l]] = 1;
             }
         }
@@ -244,7 +261,8 @@ private:
             mean_[0].v[0] += double(weight[i]) * dx[i], mean_[1].v[0] += double(weight[i]) * dy[i];
             mean_[2].v[0] += double(weight[i]) * dz[i];
         }
-        unknown_ += uint64_t(unknown[0]) + uint64_t(unknown[1]) + uint64_t(unknown[2]) + uint64_t(unknown[3]);
+        unknown_ += uint64_t(unknown[0]) + uint64_t(unknown[1]) + uint64_t(unknown[2]) +
+                    uint64_t(unknown[3]);
     }
 
     static float lowest(V4f v) { return std::min({v[0], v[1], v[2], v[3]}); }
@@ -272,19 +290,25 @@ void Accumulator::finish(const RayTotals& t, RaySummary& s) const {
     if (spectral_luminous_) {
         // One efficacy for every ray: the sum of radiant x efficacy is the efficacy times the
         // radiant total, which the reader has summed already.
-        if (!shared_efficacy_) s.luminous_from_spectrum = luminous_from_spectrum_;
-        else s.luminous_from_spectrum = std::isfinite(*shared_efficacy_) ? *shared_efficacy_ * t.radiant : 0;
+        if (!shared_efficacy_)
+            s.luminous_from_spectrum = luminous_from_spectrum_;
+        else
+            s.luminous_from_spectrum =
+                std::isfinite(*shared_efficacy_) ? *shared_efficacy_ * t.radiant : 0;
     }
     s.min_origin = {lowest(low_[0]), lowest(low_[1]), lowest(low_[2])};
     s.max_origin = {highest(high_[0]), highest(high_[1]), highest(high_[2])};
     if (header_.spectral == SpectralKind::per_ray_wavelength) s.unknown_wavelength_rays = unknown_;
     const float wmin = lowest(low_[3]), wmax = highest(high_[3]);
     if (wmin <= wmax) s.min_wavelength = wmin, s.max_wavelength = wmax;
-    if (header_.spectral == SpectralKind::single_wavelength) s.min_wavelength = s.max_wavelength = header_.single_wavelength;
+    if (header_.spectral == SpectralKind::single_wavelength)
+        s.min_wavelength = s.max_wavelength = header_.single_wavelength;
 
     const double mean[3] = {mean_[0].total(), mean_[1].total(), mean_[2].total()};
     double norm = std::sqrt(mean[0] * mean[0] + mean[1] * mean[1] + mean[2] * mean[2]);
-    Vec3f axis = norm > 0 ? Vec3f{float(mean[0] / norm), float(mean[1] / norm), float(mean[2] / norm)} : Vec3f{0, 0, 1};
+    Vec3f axis = norm > 0
+                     ? Vec3f{float(mean[0] / norm), float(mean[1] / norm), float(mean[2] / norm)}
+                     : Vec3f{0, 0, 1};
     s.mean_direction = axis;
     const Sectors sectors;
     double reached_solid_angle = 0;
@@ -293,7 +317,8 @@ void Accumulator::finish(const RayTotals& t, RaySummary& s) const {
         if (!reached_[c]) continue;
         reached_solid_angle += sectors.solid_angle(c);
         Vec3f v = sectors.centre(c);
-        min_cos = std::min(min_cos, double(v.x) * axis.x + double(v.y) * axis.y + double(v.z) * axis.z);
+        min_cos =
+            std::min(min_cos, double(v.x) * axis.x + double(v.y) * axis.y + double(v.z) * axis.z);
     }
     s.sphere_coverage = reached_solid_angle / (4 * kPi);
     s.max_angle_from_mean_deg = std::acos(std::clamp(min_cos, -1.0, 1.0)) * 180 / kPi;
@@ -301,12 +326,15 @@ void Accumulator::finish(const RayTotals& t, RaySummary& s) const {
 
 }  // namespace
 
-RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& progress, SummaryKernel kernel) {
+RaySummary summarise_rays(RayReader& reader, const std::function<void(double)>& progress,
+                          SummaryKernel kernel) {
     // One accumulator per part of the file (read on as many threads), merged in file order:
     // the sums do not depend on which thread read what.
     std::vector<std::unique_ptr<Accumulator>> parts;
-    for (size_t p = 0; p < reader.parts(); ++p) parts.push_back(std::make_unique<Accumulator>(reader.header(), kernel));
-    reader.read_in_parts([&](size_t part, const RayColumns& chunk) { parts[part]->add(chunk); }, progress);
+    for (size_t p = 0; p < reader.parts(); ++p)
+        parts.push_back(std::make_unique<Accumulator>(reader.header(), kernel));
+    reader.read_in_parts([&](size_t part, const RayColumns& chunk) { parts[part]->add(chunk); },
+                         progress);
     for (size_t p = 1; p < parts.size(); ++p) parts[0]->merge(*parts[p]);
     RaySummary s;
     parts[0]->finish(reader.totals(), s);

@@ -9,9 +9,10 @@ namespace rayset {
 
 struct RaySummary {
     uint64_t rays = 0;
-    double radiant = 0, luminous = 0;            // summed as read (after scaling)
-    double luminous_from_spectrum = std::nan(""); // radiant x V(lambda) where the spectrum is known
-    Vec3f min_origin, max_origin;                 // bounding box, header unit
+    double radiant = 0, luminous = 0;  // summed as read (after scaling)
+    double luminous_from_spectrum =
+        std::nan("");              // radiant x V(lambda) where the spectrum is known
+    Vec3f min_origin, max_origin;  // bounding box, header unit
     float min_wavelength = kUnknown, max_wavelength = kUnknown;
     uint64_t unknown_wavelength_rays = 0;
     // Flux-weighted mean direction, and the share of the sphere that directions reach, on a
@@ -21,7 +22,7 @@ struct RaySummary {
     static constexpr int kZBands = 100, kPhiBands = 200, kCoverageCells = kZBands * kPhiBands;
     Vec3f mean_direction;
     double max_angle_from_mean_deg = 0;
-    double sphere_coverage = 0;                   // 0..1
+    double sphere_coverage = 0;  // 0..1
     uint64_t zero_flux_rays = 0;
 };
 

@@ -44,7 +44,8 @@ private:
 
 }  // namespace
 
-RowCount count_rows(const std::string& path, uint64_t offset, uint64_t first_line, std::string_view end_marker) {
+RowCount count_rows(const std::string& path, uint64_t offset, uint64_t first_line,
+                    std::string_view end_marker) {
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) fail(path, std::string("cannot open: ") + std::strerror(errno));
     if (std::fseek(file.get(), static_cast<long>(offset), SEEK_SET) != 0)
@@ -57,7 +58,8 @@ RowCount count_rows(const std::string& path, uint64_t offset, uint64_t first_lin
     size_t got;
     while ((got = std::fread(block.data(), 1, block.size(), file.get())) > 0) {
         std::string_view rest(block.data(), got);
-        for (size_t nl; (nl = rest.find('\n')) != std::string_view::npos; rest.remove_prefix(nl + 1)) {
+        for (size_t nl; (nl = rest.find('\n')) != std::string_view::npos;
+             rest.remove_prefix(nl + 1)) {
             if (carry.empty()) {
                 classify.line(rest.substr(0, nl));
             } else {

@@ -29,7 +29,8 @@ namespace {
 // mirror) are left out: a few pixels 1e4 times brighter than the walls, whose sub-pixel
 // coverage noise would be the whole figure.
 double illumination(const RenderResult& r, int x, int y) {
-    return luminance_weight(r.layers[1].film.mean(x, y)) + luminance_weight(r.layers[2].film.mean(x, y));
+    return luminance_weight(r.layers[1].film.mean(x, y)) +
+           luminance_weight(r.layers[2].film.mean(x, y));
 }
 
 double relative_rmse(const RenderResult& a, const RenderResult& reference) {
@@ -48,7 +49,8 @@ double relative_rmse(const RenderResult& a, const RenderResult& reference) {
 
 int main(int argc, char** argv) {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: box_convergence SCENE INCLUDE_DIR [WIDTH HEIGHT REFERENCE_PASSES]\n");
+        std::fprintf(stderr,
+                     "usage: box_convergence SCENE INCLUDE_DIR [WIDTH HEIGHT REFERENCE_PASSES]\n");
         return 2;
     }
     ParseOptions options;
@@ -62,12 +64,15 @@ int main(int argc, char** argv) {
     settings.passes = reference_passes;
     const RenderResult reference = render(scene, settings);
     const double pixels = double(settings.width) * settings.height;
-    std::printf("%s at %d x %d; reference %d passes (%d samples per pixel each) in %.1f s: %.3g camera paths/s, %.3g photons/s, %.3g rays/s; "
-                "photon grid %.1f MiB, visible points %.1f MiB (largest pass)\n",
-                argv[1], settings.width, settings.height, reference.passes, reference.samples_per_pass, reference.seconds,
-                pixels * reference.passes * reference.samples_per_pass / reference.seconds, reference.photons / reference.seconds,
-                reference.rays / reference.seconds, reference.photon_bytes / 1048576.0,
-                reference.visible_point_bytes / 1048576.0);
+    std::printf(
+        "%s at %d x %d; reference %d passes (%d samples per pixel each) in %.1f s: %.3g camera "
+        "paths/s, %.3g photons/s, %.3g rays/s; "
+        "photon grid %.1f MiB, visible points %.1f MiB (largest pass)\n",
+        argv[1], settings.width, settings.height, reference.passes, reference.samples_per_pass,
+        reference.seconds,
+        pixels * reference.passes * reference.samples_per_pass / reference.seconds,
+        reference.photons / reference.seconds, reference.rays / reference.seconds,
+        reference.photon_bytes / 1048576.0, reference.visible_point_bytes / 1048576.0);
     std::printf("%8s %10s %12s %14s\n", "passes", "seconds", "rel. RMSE", "without ref noise");
     settings.seed = 2;  // independent of the reference
     bool reached = false;

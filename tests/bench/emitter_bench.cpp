@@ -2,8 +2,8 @@
 // 3 source sizes away), sample_Le (photon emission) and a camera ray's intersect + L, on a
 // model of the 39-chip cluster built from 1e6 synthetic rays at start-up.
 // Usage: emitter_bench [--benchmark_filter=...]
-#include "converters/rays/ray_stream.h"
 #include "converters/analytic/synth.h"
+#include "converters/rays/ray_stream.h"
 #include "core/random.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
@@ -20,7 +20,8 @@ using namespace rayset::lightmodel;
 
 const ComplexSource& cluster() {
     static std::unique_ptr<ComplexSource> source = [] {
-        const std::string path = (std::filesystem::temp_directory_path() / "rayset_emitter_bench.tm25ray").string();
+        const std::string path =
+            (std::filesystem::temp_directory_path() / "rayset_emitter_bench.tm25ray").string();
         auto truth = make_source("cluster", {});
         {
             auto out = create_rays(path, RayFormat::tm25, synth_header(*truth, 1000000, 1));
@@ -36,10 +37,12 @@ const ComplexSource& cluster() {
 void sample_Li(benchmark::State& state) {
     const ComplexSource& s = cluster();
     const Box b = s.bounds();
-    const Vec3 ref = 0.5 * (b.lower + b.upper) + Vec3{b.longest(), 0.5 * b.longest(), 3 * b.longest()};
+    const Vec3 ref =
+        0.5 * (b.lower + b.upper) + Vec3{b.longest(), 0.5 * b.longest(), 3 * b.longest()};
     Pcg32 rng(1);
     for (auto _ : state) {
-        auto li = s.sample_Li(ref, rng.uniform(), rng.uniform(), {rng.uniform(), rng.uniform(), rng.uniform()});
+        auto li = s.sample_Li(ref, rng.uniform(), rng.uniform(),
+                              {rng.uniform(), rng.uniform(), rng.uniform()});
         benchmark::DoNotOptimize(li);
     }
     state.SetItemsProcessed(state.iterations());
@@ -64,7 +67,8 @@ void camera_ray(benchmark::State& state) {
     const Box b = s.bounds();
     Pcg32 rng(3);
     for (auto _ : state) {
-        const Vec3 target{b.lower.x + rng.uniform() * (b.upper.x - b.lower.x), b.lower.y + rng.uniform() * (b.upper.y - b.lower.y), 0};
+        const Vec3 target{b.lower.x + rng.uniform() * (b.upper.x - b.lower.x),
+                          b.lower.y + rng.uniform() * (b.upper.y - b.lower.y), 0};
         const Vec3 eye{0, 0, 50};
         const Vec3 dir = normalized(target - eye);
         EmitterHit hit;

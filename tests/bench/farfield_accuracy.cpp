@@ -10,8 +10,8 @@
 // weighted mean of (estimate / closed form - 1)^2. Estimators: the histogram (smoothing
 // none), kernel density with the bandwidth chosen per direction (auto), and the fraction of
 // values whose closed form lies within 2 stated standard errors (95% if they are honest).
-#include "converters/photometry/farfield.h"
 #include "converters/analytic/synth.h"
+#include "converters/photometry/farfield.h"
 #include "converters/synth_test_support.h"
 
 #include <algorithm>
@@ -26,6 +26,13 @@
 using namespace rayset;
 
 namespace {
+
+// Radiant flux only: the luminous column is not needed here.
+SynthOptions radiant_only() {
+    SynthOptions options;
+    options.luminous = false;
+    return options;
+}
 
 struct Score {
     double rms = 0;       // relative, over the 99% region, weighted by solid angle
@@ -46,10 +53,12 @@ Score score(const analytic::Source& source, const FarField& f) {
     for (size_t h = 0; h + 1 < p.horizontal_deg.size(); ++h)
         for (size_t v = 0; v < p.vertical_deg.size(); ++v) {
             const size_t at = p.index(h, v);
-            nodes.push_back({test::closed_form_cell_mean(source, p, h, v), p.candela[at], std::sqrt(f.variance[at]), f.solid_angle[at]});
+            nodes.push_back({test::closed_form_cell_mean(source, p, h, v), p.candela[at],
+                             std::sqrt(f.variance[at]), f.solid_angle[at]});
             total += nodes.back().truth * nodes.back().omega;
         }
-    std::sort(nodes.begin(), nodes.end(), [](const Node& a, const Node& b) { return a.truth > b.truth; });
+    std::sort(nodes.begin(), nodes.end(),
+              [](const Node& a, const Node& b) { return a.truth > b.truth; });
     double flux = 0, weight = 0, square = 0, covered = 0, flux_square = 0;
     for (const Node& n : nodes) {
         if (flux >= 0.99 * total || n.truth <= 0) break;
@@ -71,8 +80,9 @@ Score score(const analytic::Source& source, const FarField& f) {
 
 Score run(const analytic::Source& source, uint64_t rays, FarFieldSmoothing smoothing) {
     test::MemoryEncoder out;
-    synthesize(source, rays, 11, out, SynthOptions{false});
-    auto reader = test::memory_reader(synth_header(source, rays, 11, SynthOptions{false}), std::move(out.rays));
+    synthesize(source, rays, 11, out, radiant_only());
+    auto reader = test::memory_reader(synth_header(source, rays, 11, radiant_only()),
+                                      std::move(out.rays));
     FarFieldOptions o;
     o.quantity = FarFieldQuantity::radiometric;
     o.smoothing = smoothing;
@@ -100,10 +110,12 @@ int main(int argc, char** argv) {
         for (uint64_t n : counts) {
             const Score plain = run(*source, n, FarFieldSmoothing::none);
             const Score smooth = run(*source, n, FarFieldSmoothing::automatic);
-            std::printf("%-14s %10llu | %7.3f%% %7.3f%% %5.1f%% | %7.3f%% %7.3f%% %5.1f%%  %6.2f  %8.1e  %+8.1e\n",
-                        label.c_str(), (unsigned long long)n, 100 * plain.rms, 100 * plain.flux_rms,
-                        100 * plain.covered, 100 * smooth.rms, 100 * smooth.flux_rms, 100 * smooth.covered,
-                        smooth.seconds, smooth.flux_error, smooth.flux_scale - 1);
+            std::printf(
+                "%-14s %10llu | %7.3f%% %7.3f%% %5.1f%% | %7.3f%% %7.3f%% %5.1f%%  %6.2f  %8.1e  "
+                "%+8.1e\n",
+                label.c_str(), (unsigned long long)n, 100 * plain.rms, 100 * plain.flux_rms,
+                100 * plain.covered, 100 * smooth.rms, 100 * smooth.flux_rms, 100 * smooth.covered,
+                smooth.seconds, smooth.flux_error, smooth.flux_scale - 1);
             std::fflush(stdout);
         }
     }

@@ -18,8 +18,8 @@
 #include <string>
 
 #include "converters/analytic/analytic_sources.h"
-#include "converters/rays/ray_stream.h"
 #include "converters/analytic/synth.h"
+#include "converters/rays/ray_stream.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
@@ -34,9 +34,12 @@ using namespace rayset::tracer;
 
 constexpr double kHeight = 20;  // mm
 
-struct Errors { double truth = 0, model = 0; };
+struct Errors {
+    double truth = 0, model = 0;
+};
 
-Errors map_errors(const ReceiverMap& map, const analytic::LambertianDisk& disk, const lightmodel::ComplexSource& model) {
+Errors map_errors(const ReceiverMap& map, const analytic::LambertianDisk& disk,
+                  const lightmodel::ComplexSource& model) {
     double truth_squares = 0, model_squares = 0;
     int cells = 0;
     for (int j = 0; j < map.irradiance.ny(); ++j)
@@ -69,24 +72,29 @@ int main(int argc, char** argv) {
         synthesize(disk, rays, 7, *out);
     }
     lightmodel::write_model(lightmodel::build_model(ray_file, {}), model_file);
-    const lightmodel::ComplexSource model(std::make_shared<lightmodel::LightModel>(lightmodel::read_model(model_file)));
+    const lightmodel::ComplexSource model(
+        std::make_shared<lightmodel::LightModel>(lightmodel::read_model(model_file)));
 
     auto scene_text = [&](const std::string& source) {
         return R"(global_settings { integrator "bidirectional" }
             plane { y, 0 pigment { rgb 0.5 } }
-            ray_source { ")" + source + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
-            illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0> resolution <64, 64> name "floor" })";
+            ray_source { ")" +
+               source + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
+            illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0>
+                resolution <64, 64> name "floor" })";
     };
     const RenderScene ours(parse_scene_text(scene_text(model_file), folder + "/ours.pov"));
     const RenderScene naive(parse_scene_text(scene_text(ray_file), folder + "/naive.pov"));
 
-    std::printf("disk 1 mm, 1 W, %llu rays, 20 mm above a 64 x 64 receiver (80 x 80 mm); relative RMS error of "
-                "primary illuminance over the cells\n",
-                static_cast<unsigned long long>(rays));
-    std::printf("%8s | %9s %9s %8s | %9s %9s %8s | %s\n", "seconds", "ours", "ours", "passes", "naive", "naive",
-                "passes", "naive / ours");
-    std::printf("%8s | %9s %9s %8s | %9s %9s %8s | %s\n", "", "vs truth", "vs model", "", "vs truth", "vs model", "",
-                "(vs truth)");
+    std::printf(
+        "disk 1 mm, 1 W, %llu rays, 20 mm above a 64 x 64 receiver (80 x 80 mm); relative RMS "
+        "error of "
+        "primary illuminance over the cells\n",
+        static_cast<unsigned long long>(rays));
+    std::printf("%8s | %9s %9s %8s | %9s %9s %8s | %s\n", "seconds", "ours", "ours", "passes",
+                "naive", "naive", "passes", "naive / ours");
+    std::printf("%8s | %9s %9s %8s | %9s %9s %8s | %s\n", "", "vs truth", "vs model", "",
+                "vs truth", "vs model", "", "(vs truth)");
     for (double seconds = 1; seconds <= max_seconds; seconds *= 2) {
         RenderSettings settings;
         settings.render_image = false, settings.time_limit = seconds, settings.seed = 3;
@@ -95,8 +103,8 @@ int main(int argc, char** argv) {
         const RenderResult b = render(naive, settings);
         const Errors ea = map_errors(a.layers[1].receivers.at(0), disk, model);
         const Errors eb = map_errors(b.layers[1].receivers.at(0), disk, model);
-        std::printf("%8.0f | %9.4f %9.4f %8d | %9.4f %9.4f %8d | %.1f\n", seconds, ea.truth, ea.model, a.passes, eb.truth,
-                    eb.model, b.passes, eb.truth / ea.truth);
+        std::printf("%8.0f | %9.4f %9.4f %8d | %9.4f %9.4f %8d | %.1f\n", seconds, ea.truth,
+                    ea.model, a.passes, eb.truth, eb.model, b.passes, eb.truth / ea.truth);
         std::fflush(stdout);
     }
     std::system(("rm -rf '" + folder + "'").c_str());

@@ -20,12 +20,14 @@ int main(int argc, char** argv) {
         auto reader = rayset::open_rays(argv[argc - 1]);
         if (sequential) {
             rayset::RayChunk chunk;
-            while (reader->read(chunk)) {}
+            while (reader->read(chunk)) {
+            }
         } else {
             reader->read_in_parts([](size_t, const rayset::RayColumns&) {});
         }
         const rayset::RayTotals& totals = reader->totals();
-        std::printf("%llu rays, %.9g W, %.9g lm\n", static_cast<unsigned long long>(totals.rays), totals.radiant, totals.luminous);
+        std::printf("%llu rays, %.9g W, %.9g lm\n", static_cast<unsigned long long>(totals.rays),
+                    totals.radiant, totals.luminous);
     } catch (const rayset::Error& e) {
         std::fprintf(stderr, "read_rays: %s\n", e.what());
         return 1;

@@ -15,10 +15,12 @@ namespace {
 std::vector<std::unique_ptr<Source>> all_sources() {
     std::vector<std::unique_ptr<Source>> s;
     s.push_back(std::make_unique<LambertianDisk>(LambertianDisk::with_flux(1.5, 1.0)));
-    s.push_back(std::make_unique<LambertianRectangle>(LambertianRectangle::with_flux(3.0, 1.0, 1.0)));
+    s.push_back(
+        std::make_unique<LambertianRectangle>(LambertianRectangle::with_flux(3.0, 1.0, 1.0)));
     s.push_back(std::make_unique<LambertianSphere>(LambertianSphere::with_flux(1.0, 1.0)));
     s.push_back(std::make_unique<CosineLobe>(CosineLobe::with_flux(4.0, 1.0)));
-    s.push_back(std::make_unique<ChipCluster>(ChipCluster::Layout{}, std::vector<double>{0.02, 0.04},
+    s.push_back(std::make_unique<ChipCluster>(ChipCluster::Layout{},
+                                              std::vector<double>{0.02, 0.04},
                                               std::vector<double>{630, 530, 460}));
     return s;
 }
@@ -36,7 +38,8 @@ std::vector<Receiver> receivers() {
 }
 
 bool hits(const Ray& ray, const Receiver& r, Vec3 e1, Vec3 e2) {
-    const Vec3 o{ray.origin.x, ray.origin.y, ray.origin.z}, d{ray.direction.x, ray.direction.y, ray.direction.z};
+    const Vec3 o{ray.origin.x, ray.origin.y, ray.origin.z},
+        d{ray.direction.x, ray.direction.y, ray.direction.z};
     const double facing = dot(d, r.normal);
     if (!(facing < 0)) return false;  // light arrives against the receiver's normal
     const double t = dot(r.centre - o, r.normal) / facing;
@@ -51,7 +54,8 @@ TEST(AnalyticSampling, RaysDeliverTheExactIrradianceToNearReceivers) {
     // Bernstein's bound: the family passes with probability >= 99.82% if the sampling is right.
     const uint64_t n = 1000000;
     std::vector<std::unique_ptr<Source>> sources = all_sources();
-    sources.push_back(std::make_unique<LambertianDisk>(LambertianDisk::with_flux(1.5, 1.0, {}, 30)));
+    sources.push_back(
+        std::make_unique<LambertianDisk>(LambertianDisk::with_flux(1.5, 1.0, {}, 30)));
     for (const auto& source : sources) {
         const std::vector<Receiver> rs = receivers();
         std::vector<Vec3> e1(rs.size()), e2(rs.size());
@@ -66,12 +70,15 @@ TEST(AnalyticSampling, RaysDeliverTheExactIrradianceToNearReceivers) {
             const Receiver& r = rs[k];
             auto row = [&](double u) {
                 return test::integrate(
-                    [&](double v) { return source->irradiance(r.centre + u * e1[k] + v * e2[k], r.normal); }, -r.side / 2,
-                    r.side / 2, 1e-12);
+                    [&](double v) {
+                        return source->irradiance(r.centre + u * e1[k] + v * e2[k], r.normal);
+                    },
+                    -r.side / 2, r.side / 2, 1e-12);
             };
             const double flux = test::integrate(row, -r.side / 2, r.side / 2, 1e-12);
             const double p = flux / source->total_flux();
-            ASSERT_GT(p, 1e-3) << source->name() << " receiver " << k << ": the check needs light on it";
+            ASSERT_GT(p, 1e-3) << source->name() << " receiver " << k
+                               << ": the check needs light on it";
             EXPECT_NEAR(counts[k], n * p, test::bernstein_bound(double(n), p, 1e-4))
                 << source->name() << " receiver " << k << " expected fraction " << p;
         }
@@ -93,7 +100,8 @@ TEST(AnalyticSampling, RadianceIntegratesToTotalFlux) {
             Vec3 point, surface_normal;
             double area;
             if (source->name() == "sphere") {
-                const double mu = 2 * rng.uniform() - 1, phi = 2 * kPi * rng.uniform(), s = std::sqrt(1 - mu * mu);
+                const double mu = 2 * rng.uniform() - 1, phi = 2 * kPi * rng.uniform(),
+                             s = std::sqrt(1 - mu * mu);
                 surface_normal = {s * std::cos(phi), s * std::sin(phi), mu};
                 point = surface_normal;  // radius 1
                 area = 4 * kPi;
@@ -103,15 +111,18 @@ TEST(AnalyticSampling, RadianceIntegratesToTotalFlux) {
                 surface_normal = {0, 0, 1};
                 area = 4 * half * half;
             }
-            const double mu = 2 * rng.uniform() - 1, phi = 2 * kPi * rng.uniform(), s = std::sqrt(1 - mu * mu);
+            const double mu = 2 * rng.uniform() - 1, phi = 2 * kPi * rng.uniform(),
+                         s = std::sqrt(1 - mu * mu);
             const Vec3 direction{s * std::cos(phi), s * std::sin(phi), mu};
-            const double value = source->radiance(point, direction) * std::abs(dot(direction, surface_normal)) * area * 4 * kPi;
+            const double value = source->radiance(point, direction) *
+                                 std::abs(dot(direction, surface_normal)) * area * 4 * kPi;
             sum += value;
             square += value * value;
         }
         const double mean = sum / n, error = std::sqrt((square / n - mean * mean) / n);
         EXPECT_NEAR(mean, source->total_flux(), 4.5 * error) << source->name();
-        EXPECT_LT(error, 0.02 * source->total_flux()) << source->name() << ": the check is too weak";
+        EXPECT_LT(error, 0.02 * source->total_flux())
+            << source->name() << ": the check is too weak";
     }
     EXPECT_TRUE(std::isnan(CosineLobe(2, 1).radiance({0, 0, 0}, {0, 0, 1})));
 }
@@ -132,7 +143,8 @@ TEST(AnalyticSampling, LobeDirectionsFollowCosinePower) {
         }
         for (int k = 0; k < 3; ++k) {
             const double p = 1 - std::pow(std::cos(angles[k]), exponent + 1);
-            EXPECT_NEAR(counts[k], n * p, test::bernstein_bound(double(n), p, 1e-4)) << "n=" << exponent;
+            EXPECT_NEAR(counts[k], n * p, test::bernstein_bound(double(n), p, 1e-4))
+                << "n=" << exponent;
         }
     }
 }
@@ -142,7 +154,8 @@ TEST(AnalyticSampling, RaysStartOnTheEmitterAndLeaveItsFront) {
     for (const auto& source : all_sources()) {
         for (int i = 0; i < 20000; ++i) {
             const Ray ray = source->sample_ray(rng);
-            const Vec3 o{ray.origin.x, ray.origin.y, ray.origin.z}, d{ray.direction.x, ray.direction.y, ray.direction.z};
+            const Vec3 o{ray.origin.x, ray.origin.y, ray.origin.z},
+                d{ray.direction.x, ray.direction.y, ray.direction.z};
             ASSERT_NEAR(length(d), 1.0, 1e-6);
             if (source->name() == "lobe") {
                 ASSERT_EQ(length(o), 0.0);
@@ -157,7 +170,8 @@ TEST(AnalyticSampling, RaysStartOnTheEmitterAndLeaveItsFront) {
     const Vec3 n = tilted.normal();
     for (int i = 0; i < 20000; ++i) {
         const Ray ray = tilted.sample_ray(rng);
-        const Vec3 o{ray.origin.x, ray.origin.y, ray.origin.z}, d{ray.direction.x, ray.direction.y, ray.direction.z};
+        const Vec3 o{ray.origin.x, ray.origin.y, ray.origin.z},
+            d{ray.direction.x, ray.direction.y, ray.direction.z};
         ASSERT_NEAR(dot(o, n), 0.0, 1e-6) << "ray " << i;  // in the disk's plane
         ASSERT_LE(length(o), 1.5 * (1 + 1e-6)) << "ray " << i;
         ASSERT_GT(dot(d, n), 0.0) << "ray " << i;  // out of its front

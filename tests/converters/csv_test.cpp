@@ -4,9 +4,9 @@
 #include "converters/rays/io.h"
 #include "support/test_support.h"
 
+#include <gtest/gtest.h>
 #include <cmath>
 #include <cstring>
-#include <gtest/gtest.h>
 #include <random>
 
 namespace rayset {
@@ -84,10 +84,12 @@ RayHeader full_header() {
     h.min_wavelength = 380.5f;
     h.max_wavelength = 779.25f;
     h.spectral_tables = {{{400, 500, 600}, {0.1f, 1, 0.3f}}, {{450, 550}, {1, 1.0f / 3}}};
-    h.extras = {{ExtraKind::stokes_s1, "S1"}, {ExtraKind::additional, "a,b"}, {ExtraKind::additional, "x"}};
+    h.extras = {
+        {ExtraKind::stokes_s1, "S1"}, {ExtraKind::additional, "a,b"}, {ExtraKind::additional, "x"}};
     h.creation_method = -1;
     h.creation_date = "2016-10-13";
-    h.text = {"name", "maker", "", "creator\\with backslash", "Rigo 801", "", "25 C", "two\nlines", "ref"};
+    h.text = {"name", "maker",      "",   "creator\\with backslash", "Rigo 801", "",
+              "25 C", "two\nlines", "ref"};
     h.additional_text = "more\r\ntext";
     h.description = "desc";
     h.far_field = true;
@@ -169,7 +171,8 @@ TEST(Csv, RoundTripKeepsRaysAndMetadataBitExact) {
         expect_same_float(a.radiant, b.radiant, at);
         expect_same_float(a.luminous, b.luminous, at);
         EXPECT_EQ(a.spectrum, b.spectrum) << at;
-        for (size_t j = 0; j < 3; ++j) expect_same_float(chunk.extra[i * 3 + j], back.extra[i * 3 + j], at);
+        for (size_t j = 0; j < 3; ++j)
+            expect_same_float(chunk.extra[i * 3 + j], back.extra[i * 3 + j], at);
     }
 }
 
@@ -186,7 +189,8 @@ TEST(Csv, DefaultHeaderRoundTrip) {
     enc->write(chunk);
     enc->finish();
     EXPECT_EQ(test::read_file(path),
-              "# rayset CSV ray data\n# unit: mm\n# spectral: none\nx,y,z,kx,ky,kz,luminous_lm\n0,0,0,0,0,1,3\n");
+              "# rayset CSV ray data\n# unit: mm\n# spectral: "
+              "none\nx,y,z,kx,ky,kz,luminous_lm\n0,0,0,0,0,1,3\n");
     auto d = open_csv(path);
     EXPECT_EQ(d->header().spectral, SpectralKind::none);
     EXPECT_TRUE(std::isnan(d->header().stated_luminous));
@@ -194,7 +198,8 @@ TEST(Csv, DefaultHeaderRoundTrip) {
 }
 
 // ---------------------------------------------------------------------------------------------
-void expect_csv_error(const std::string& path, const std::string& text, const std::vector<std::string>& parts) {
+void expect_csv_error(const std::string& path, const std::string& text,
+                      const std::vector<std::string>& parts) {
     write_file(path, text);
     try {
         auto d = open_csv(path);
@@ -205,7 +210,9 @@ void expect_csv_error(const std::string& path, const std::string& text, const st
     } catch (const Error& e) {
         const std::string message = e.what();
         EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
-        for (const std::string& part : parts) EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+        for (const std::string& part : parts)
+            EXPECT_NE(message.find(part), std::string::npos)
+                << "'" << part << "' not in: " << message;
     }
 }
 
@@ -215,30 +222,42 @@ const std::string kRow = "0,0,0,0,0,1,1\n";
 TEST(CsvErrors, RowsAndValues) {
     ScratchDir dir;
     const std::string path = dir.file("bad.csv");
-    expect_csv_error(path, kColumns + kRow + "0,0,0,0,0,1\n", {"line 3:", "expected 7 comma-separated values", "found 6"});
-    expect_csv_error(path, "# unit: m\n" + kColumns + kRow + "0,0,abc,0,0,1,1\n", {"line 4, column 5:", "'abc' is not a number"});
+    expect_csv_error(path, kColumns + kRow + "0,0,0,0,0,1\n",
+                     {"line 3:", "expected 7 comma-separated values", "found 6"});
+    expect_csv_error(path, "# unit: m\n" + kColumns + kRow + "0,0,abc,0,0,1,1\n",
+                     {"line 4, column 5:", "'abc' is not a number"});
     expect_csv_error(path, kColumns + "0,0,,0,0,1,1\n", {"line 2, column 5:", "empty value"});
-    expect_csv_error(path, "x,y,z,kx,ky,kz,radiant_W,spectrum\n# spectral_table: 1 1\n", {"line 1:", "per_ray_table but 0 spectral_table lines"});
-    expect_csv_error(path, "# spectral_table: 400 1\nx,y,z,kx,ky,kz,radiant_W,spectrum\n0,0,0,0,0,1,1,0.5\n",
-                     {"line 3, column 15:", "spectrum index '0.5' is not a whole number"});
+    expect_csv_error(path, "x,y,z,kx,ky,kz,radiant_W,spectrum\n# spectral_table: 1 1\n",
+                     {"line 1:", "per_ray_table but 0 spectral_table lines"});
+    expect_csv_error(
+        path, "# spectral_table: 400 1\nx,y,z,kx,ky,kz,radiant_W,spectrum\n0,0,0,0,0,1,1,0.5\n",
+        {"line 3, column 15:", "spectrum index '0.5' is not a whole number"});
 }
 
 TEST(CsvErrors, HeaderAndMetadata) {
     ScratchDir dir;
     const std::string path = dir.file("bad.csv");
-    expect_csv_error(path, "# unti: m\n" + kColumns, {"line 1, column 3:", "unknown metadata key 'unti'"});
-    expect_csv_error(path, "# unit: furlong\n" + kColumns, {"line 1, column 9:", "unit 'furlong' is not a length unit"});
-    expect_csv_error(path, "# unit: m\n# unit: mm\n" + kColumns, {"line 2, column 3:", "unit is given a second time (first on line 1)"});
-    expect_csv_error(path, "# description: a\\tb\n" + kColumns, {"line 1, column 16:", "description 'a\\tb' is not valid text"});
-    expect_csv_error(path, "# data_origin: 1 2\n" + kColumns, {"line 1, column 16:", "three finite numbers"});
+    expect_csv_error(path, "# unti: m\n" + kColumns,
+                     {"line 1, column 3:", "unknown metadata key 'unti'"});
+    expect_csv_error(path, "# unit: furlong\n" + kColumns,
+                     {"line 1, column 9:", "unit 'furlong' is not a length unit"});
+    expect_csv_error(path, "# unit: m\n# unit: mm\n" + kColumns,
+                     {"line 2, column 3:", "unit is given a second time (first on line 1)"});
+    expect_csv_error(path, "# description: a\\tb\n" + kColumns,
+                     {"line 1, column 16:", "description 'a\\tb' is not valid text"});
+    expect_csv_error(path, "# data_origin: 1 2\n" + kColumns,
+                     {"line 1, column 16:", "three finite numbers"});
     expect_csv_error(path, "# only comments\n", {"line 1:", "no column line"});
     expect_csv_error(path, "", {"the file is empty"});
     expect_csv_error(path, "x,y,kz\n", {"line 1, column 5:", "must start with x,y,z,kx,ky,kz"});
-    expect_csv_error(path, "x,y,z,kx,ky,kz,radiant_W,radiant_W\n", {"line 1, column 26:", "'radiant_W' appears twice"});
-    expect_csv_error(path, "x,y,z,kx,ky,kz,foo\n", {"line 1:", "no radiant_W or luminous_lm column"});
+    expect_csv_error(path, "x,y,z,kx,ky,kz,radiant_W,radiant_W\n",
+                     {"line 1, column 26:", "'radiant_W' appears twice"});
+    expect_csv_error(path, "x,y,z,kx,ky,kz,foo\n",
+                     {"line 1:", "no radiant_W or luminous_lm column"});
     expect_csv_error(path, "# spectral: none\nx,y,z,kx,ky,kz,radiant_W,wavelength_nm\n",
                      {"line 2:", "spectral kind none does not take a wavelength_nm column"});
-    expect_csv_error(path, "# spectral: single_wavelength\n" + kColumns, {"line 2:", "needs a positive single_wavelength_nm"});
+    expect_csv_error(path, "# spectral: single_wavelength\n" + kColumns,
+                     {"line 2:", "needs a positive single_wavelength_nm"});
 }
 
 Head head_of(const std::string& text) { return Head(text.begin(), text.end()); }
@@ -246,7 +265,8 @@ Head head_of(const std::string& text) { return Head(text.begin(), text.end()); }
 TEST(Csv, Sniff) {
     EXPECT_TRUE(sniff_csv(head_of("x,y,z,kx,ky,kz,radiant_W\n1,2"), 30));
     EXPECT_TRUE(sniff_csv(head_of("# free\n\n# unit: mm\r\nx,y,z,kx,ky,kz"), 40));
-    EXPECT_TRUE(sniff_csv(head_of("# rayset CSV ray data\n# description: " + std::string(5000, 'a')), 6000));
+    EXPECT_TRUE(sniff_csv(
+        head_of("# rayset CSV ray data\n# description: " + std::string(5000, 'a')), 6000));
     EXPECT_FALSE(sniff_csv(head_of("# LightTools 8.7\nlt_rdf_version: 2.0\n"), 40));
     EXPECT_FALSE(sniff_csv(head_of("a,b,c\n"), 6));
     EXPECT_FALSE(sniff_csv(head_of("LTRF\x02"), 5));

@@ -32,7 +32,8 @@ Photometry table(std::vector<double> horizontal, std::vector<double> vertical) {
     p.vertical_deg = std::move(vertical);
     for (double h : p.horizontal_deg)
         for (double v : p.vertical_deg)
-            p.candela.push_back(100 + 80 * std::cos(v * kDeg) + 30 * std::sin(h * kDeg * 1.3 + 0.4) * std::sin(v * kDeg));
+            p.candela.push_back(100 + 80 * std::cos(v * kDeg) +
+                                30 * std::sin(h * kDeg * 1.3 + 0.4) * std::sin(v * kDeg));
     return p;
 }
 
@@ -58,7 +59,8 @@ TEST(IntensityDistribution, InterpolatesLikePhotometryIntensity) {
         const IntensityDistribution d(p, name);
         for (int i = 0; i < 20000; ++i) {
             const double c = 720 * rng.uniform() - 360, g = 180 * rng.uniform();
-            ASSERT_NEAR(d.intensity(c, g), p.intensity(c, g), 1e-12 * 200) << name << " C " << c << " gamma " << g;
+            ASSERT_NEAR(d.intensity(c, g), p.intensity(c, g), 1e-12 * 200)
+                << name << " C " << c << " gamma " << g;
         }
     }
 }
@@ -80,12 +82,15 @@ TEST(IntensityDistribution, TotalFluxIsTheExactIntegral) {
         double flux = 0;
         for (size_t a = 0; a + 1 < c_cuts.size(); ++a)
             for (size_t b = 0; b + 1 < p.vertical_deg.size(); ++b)
-                flux += test::integrate(
-                    [&](double c) {
-                        return test::integrate([&](double g) { return p.intensity(c, g) * std::sin(g * kDeg); },
-                                               p.vertical_deg[b], p.vertical_deg[b + 1], 1e-12);
-                    },
-                    c_cuts[a], c_cuts[a + 1], 1e-11) * kDeg * kDeg;
+                flux +=
+                    test::integrate(
+                        [&](double c) {
+                            return test::integrate(
+                                [&](double g) { return p.intensity(c, g) * std::sin(g * kDeg); },
+                                p.vertical_deg[b], p.vertical_deg[b + 1], 1e-12);
+                        },
+                        c_cuts[a], c_cuts[a + 1], 1e-11) *
+                    kDeg * kDeg;
         EXPECT_NEAR(IntensityDistribution(p, name).total_flux(), flux, 1e-10 * flux) << name;
     }
 }
@@ -94,25 +99,34 @@ TEST(IntensityDistribution, RefusesWhatItCannotSample) {
     Photometry b = table(steps(-90, 90, 45), steps(-90, 90, 45));
     b.type = PhotometricType::B;
     EXPECT_EQ(error_of([&] { IntensityDistribution(b, "flood.ies"); }),
-              "flood.ies: type B photometry cannot be turned into rays: only type C is supported (convert the file to type C first)");
+              "flood.ies: type B photometry cannot be turned into rays: only type C is supported "
+              "(convert the file to type C first)");
     b.type = PhotometricType::A;
     EXPECT_EQ(error_of([&] { IntensityDistribution(b, "a.ies"); }),
-              "a.ies: type A photometry cannot be turned into rays: only type C is supported (convert the file to type C first)");
+              "a.ies: type A photometry cannot be turned into rays: only type C is supported "
+              "(convert the file to type C first)");
     Photometry negative = table({0}, {0, 90});
     negative.candela[1] = -3;
-    EXPECT_EQ(error_of([&] { IntensityDistribution(negative, "n.ies"); }), "n.ies: candela value -3 is not a number >= 0");
+    EXPECT_EQ(error_of([&] { IntensityDistribution(negative, "n.ies"); }),
+              "n.ies: candela value -3 is not a number >= 0");
     Photometry nan = table({0}, {0, 90});
     nan.candela[0] = std::nan("");
-    EXPECT_EQ(error_of([&] { IntensityDistribution(nan, "nan.ies"); }), "nan.ies: candela value nan is not a number >= 0");
+    EXPECT_EQ(error_of([&] { IntensityDistribution(nan, "nan.ies"); }),
+              "nan.ies: candela value nan is not a number >= 0");
     Photometry dark = table({0, 90}, {0, 90});
     std::fill(dark.candela.begin(), dark.candela.end(), 0.0);
-    EXPECT_EQ(error_of([&] { IntensityDistribution(dark, "dark.ies"); }),
-              "dark.ies: the intensity table is zero everywhere: there is no light to turn into rays");
+    EXPECT_EQ(
+        error_of([&] { IntensityDistribution(dark, "dark.ies"); }),
+        "dark.ies: the intensity table is zero everywhere: there is no light to turn into rays");
     EXPECT_EQ(error_of([&] { IntensityDistribution(table({0}, {0}), "one.ies"); }),
               "one.ies: rays need at least two vertical angles and one horizontal angle");
-    EXPECT_EQ(error_of([&] { IntensityDistribution(table({0}, {0, 190}), "v.ies"); }),
+    EXPECT_EQ(error_of([&] {
+                  IntensityDistribution(table({0}, {0, 190}), "v.ies");
+              }),
               "v.ies: vertical angle 190 is not ascending within 0..180 degrees");
-    EXPECT_EQ(error_of([&] { IntensityDistribution(table({0, 200, 400}, {0, 90}), "h.ies"); }),
+    EXPECT_EQ(error_of([&] {
+                  IntensityDistribution(table({0, 200, 400}, {0, 90}), "h.ies");
+              }),
               "h.ies: the horizontal angles span more than 360 degrees");
 }
 
@@ -154,8 +168,10 @@ TEST(Emit, FarFieldOfTheRaysReproducesEveryTable) {
             EXPECT_EQ(c.outside, 0u) << name;
             EXPECT_EQ(c.beyond_bound, 0u) << name << ": worst deviation / bound " << c.worst_ratio;
             EXPECT_LT(c.chi_square, c.critical) << name << " dof " << c.dof;
-            std::printf("[ figures  ] %s (%s): worst/bound %.3f, chi-square %.1f, dof %zu, critical %.1f\n", name.c_str(),
-                        axis == PolarAxis::plus_z ? "+z" : "-z", c.worst_ratio, c.chi_square, c.dof, c.critical);
+            std::printf(
+                "[ figures  ] %s (%s): worst/bound %.3f, chi-square %.1f, dof %zu, critical %.1f\n",
+                name.c_str(), axis == PolarAxis::plus_z ? "+z" : "-z", c.worst_ratio, c.chi_square,
+                c.dof, c.critical);
         }
     }
 }
@@ -181,7 +197,8 @@ TEST(Emit, TheCheckRejectsRaysOfAnotherTable) {
     std::vector<double> fraction(expected.size());
     for (size_t k = 0; k < expected.size(); ++k) fraction[k] = expected[k] / total;
     size_t fractional = 0;
-    const auto counts = test::cell_counts(f, f.flux, float(IntensityDistribution(p, "p").total_flux() / double(n)), fractional);
+    const auto counts = test::cell_counts(
+        f, f.flux, float(IntensityDistribution(p, "p").total_flux() / double(n)), fractional);
     const test::CountCheck c = test::check_counts(fraction, counts, double(n));
     EXPECT_GT(c.chi_square, c.critical);  // measured 6985 against 5210 (dof 4885)
 }
@@ -214,7 +231,7 @@ TEST(Emit, OriginsFillTheEmitterShape) {
     }
     EXPECT_LE(max_x, 100.0);  // length 0.2 m along C0-C180 = x
     EXPECT_GT(max_x, 99.5);
-    EXPECT_LE(max_y, 50.0);   // width 0.1 m along C90-C270 = y
+    EXPECT_LE(max_y, 50.0);  // width 0.1 m along C90-C270 = y
     EXPECT_GT(max_y, 49.5);
     p.round = true;
     for (const Ray& r : origins(o)) {
@@ -224,9 +241,11 @@ TEST(Emit, OriginsFillTheEmitterShape) {
     o.shape = EmitterShape::rectangle;
     o.size_x_mm = 0;
     o.size_y_mm = 1;
-    EXPECT_EQ(error_of([&] { origins(o); }), "photometry: the emitter size x must be a positive number of mm, not 0");
+    EXPECT_EQ(error_of([&] { origins(o); }),
+              "photometry: the emitter size x must be a positive number of mm, not 0");
     test::MemoryEncoder out;
-    EXPECT_EQ(error_of([&] { emit_rays(p, 0, 1, out, {}); }), "photometry: the ray count must be at least 1");
+    EXPECT_EQ(error_of([&] { emit_rays(p, 0, 1, out, {}); }),
+              "photometry: the ray count must be at least 1");
 }
 
 TEST(Emit, HeaderAndRadiometricTables) {
@@ -240,7 +259,8 @@ TEST(Emit, HeaderAndRadiometricTables) {
     EXPECT_EQ(h.unit, LengthUnit::mm);
     EXPECT_EQ(h.text[0], "test luminaire");
     EXPECT_EQ(h.text[1], "maker");
-    EXPECT_EQ(h.text[7], "rays from the far field of photometry: point, gamma 0 along +z, rays=500 seed=9");
+    EXPECT_EQ(h.text[7],
+              "rays from the far field of photometry: point, gamma 0 along +z, rays=500 seed=9");
     p.keywords["_RADIOMETRIC"] = "candela values are radiant intensities in W/sr";
     const RayHeader r = emit_header(p, 500, 9);
     EXPECT_TRUE(r.has_radiant);

@@ -97,7 +97,8 @@ TEST(LightToolsBinary, StatedTotalKeptWhenRaysAgree) {
     RayHeader h = make_header(false, false, LengthUnit::mm);
     h.stated_radiant = sum * (1 + 5e-5);  // within the 1e-4 rounding agreement
     write_rays(*create_lighttools_binary(path, h), rays);
-    EXPECT_EQ(open_lighttools_binary(path)->header().stated_radiant, double(float(h.stated_radiant)));
+    EXPECT_EQ(open_lighttools_binary(path)->header().stated_radiant,
+              double(float(h.stated_radiant)));
 }
 
 TEST(LightToolsBinary, SingleWavelengthWrittenPerRay) {
@@ -132,17 +133,22 @@ TEST(LightToolsBinary, WriterRejectsRaysWithoutFluxOrWavelength) {
         create_lighttools_binary(dir.file("noflux.ray"), none);
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("noflux.ray: cannot write LightTools ray data: the rays carry neither"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find(
+                      "noflux.ray: cannot write LightTools ray data: the rays carry neither"),
+                  std::string::npos)
             << e.what();
     }
     std::vector<Ray> rays = make_rays(3, true, false);
     rays[2].wavelength = kUnknown;
-    auto e = create_lighttools_binary(dir.file("nowl.ray"), make_header(true, false, LengthUnit::mm));
+    auto e =
+        create_lighttools_binary(dir.file("nowl.ray"), make_header(true, false, LengthUnit::mm));
     try {
         write_rays(*e, rays);
         FAIL() << "no error";
     } catch (const Error& err) {
-        EXPECT_NE(std::string(err.what()).find("nowl.ray: ray 3: wavelength nan nm cannot be written"), std::string::npos)
+        EXPECT_NE(
+            std::string(err.what()).find("nowl.ray: ray 3: wavelength nan nm cannot be written"),
+            std::string::npos)
             << err.what();
     }
 }
@@ -152,7 +158,8 @@ TEST(LightToolsBinaryErrors, MissingEndMarker) {
     ScratchDir dir;
     const std::string path = dir.file("noend.ray");
     write_file(path, binary_file(0, 0, 0, 1, 1, kTwoRays7, false) + "LTRFENX");
-    expect_open_error(open_lighttools_binary, path, {"byte 100:", "does not end with the end marker LTRFEND"});
+    expect_open_error(open_lighttools_binary, path,
+                      {"byte 100:", "does not end with the end marker LTRFEND"});
 }
 
 TEST(LightToolsBinaryErrors, NotWholeRecords) {
@@ -161,7 +168,8 @@ TEST(LightToolsBinaryErrors, NotWholeRecords) {
     std::vector<float> values = kTwoRays7;
     values.pop_back();  // 13 floats: 52 bytes, not a multiple of 28
     write_file(path, binary_file(0, 0, 0, 1, 1, values));
-    expect_open_error(open_lighttools_binary, path, {"byte 44:", "52 bytes", "not a whole number of 28-byte ray records"});
+    expect_open_error(open_lighttools_binary, path,
+                      {"byte 44:", "52 bytes", "not a whole number of 28-byte ray records"});
 }
 
 TEST(LightToolsBinaryErrors, BadHeaderFields) {

@@ -6,9 +6,9 @@
 #include "converters/rays/io.h"
 #include "support/test_support.h"
 
+#include <gtest/gtest.h>
 #include <cmath>
 #include <cstring>
-#include <gtest/gtest.h>
 #include <random>
 
 namespace rayset::lighttools_test {
@@ -37,7 +37,8 @@ inline std::vector<Ray> make_rays(size_t n, bool wavelength, bool photometric) {
     std::uniform_int_distribution<int> exponent(-30, 30);
     std::vector<Ray> rays(n);
     for (Ray& r : rays) {
-        r.origin = {std::ldexp(unit(rng), exponent(rng)), std::ldexp(unit(rng), exponent(rng)), unit(rng)};
+        r.origin = {std::ldexp(unit(rng), exponent(rng)), std::ldexp(unit(rng), exponent(rng)),
+                    unit(rng)};
         float x = unit(rng), y = unit(rng), z = unit(rng);
         float len = std::sqrt(x * x + y * y + z * z);
         r.direction = {x / len, y / len, z / len};
@@ -73,20 +74,24 @@ inline void write_rays(RayEncoder& encoder, const std::vector<Ray>& rays, size_t
 inline void expect_same_rays(const std::vector<Ray>& a, const std::vector<Ray>& b) {
     ASSERT_EQ(a.size(), b.size());
     for (size_t i = 0; i < a.size(); ++i) {
-        const float fa[9] = {a[i].origin.x, a[i].origin.y, a[i].origin.z, a[i].direction.x, a[i].direction.y,
-                             a[i].direction.z, a[i].radiant, a[i].luminous, a[i].wavelength};
-        const float fb[9] = {b[i].origin.x, b[i].origin.y, b[i].origin.z, b[i].direction.x, b[i].direction.y,
-                             b[i].direction.z, b[i].radiant, b[i].luminous, b[i].wavelength};
+        const float fa[9] = {a[i].origin.x,    a[i].origin.y,    a[i].origin.z,
+                             a[i].direction.x, a[i].direction.y, a[i].direction.z,
+                             a[i].radiant,     a[i].luminous,    a[i].wavelength};
+        const float fb[9] = {b[i].origin.x,    b[i].origin.y,    b[i].origin.z,
+                             b[i].direction.x, b[i].direction.y, b[i].direction.z,
+                             b[i].radiant,     b[i].luminous,    b[i].wavelength};
         for (int j = 0; j < 9; ++j) {
             if (std::isnan(fa[j]) && std::isnan(fb[j])) continue;  // "not carried" on both sides
-            ASSERT_EQ(bits(fa[j]), bits(fb[j])) << "ray " << i << " value " << j << ": " << fa[j] << " vs " << fb[j];
+            ASSERT_EQ(bits(fa[j]), bits(fb[j]))
+                << "ray " << i << " value " << j << ": " << fa[j] << " vs " << fb[j];
         }
     }
 }
 
 // A binary file assembled byte by byte, independently of the writer.
-inline std::string binary_file(uint32_t data_type, uint32_t far_field, uint32_t colour, uint32_t unit, float total,
-                               const std::vector<float>& values, bool trailer = true) {
+inline std::string binary_file(uint32_t data_type, uint32_t far_field, uint32_t colour,
+                               uint32_t unit, float total, const std::vector<float>& values,
+                               bool trailer = true) {
     std::string bytes = "LTRF";
     auto put = [&](const void* p, size_t n) { bytes.append(static_cast<const char*>(p), n); };
     const uint32_t header[6] = {2, 0, data_type, far_field, colour, unit};
@@ -98,11 +103,12 @@ inline std::string binary_file(uint32_t data_type, uint32_t far_field, uint32_t 
     return bytes;
 }
 
-inline const std::vector<float> kTwoRays7 = {1, 2, 3, 0, 0, 1, 0.25f, -4, 5, 6, 0.6f, 0.8f, 0, 0.75f};
+inline const std::vector<float> kTwoRays7 = {1,  2, 3, 0,    0,    1, 0.25f,
+                                             -4, 5, 6, 0.6f, 0.8f, 0, 0.75f};
 
 // Opens and reads the whole file, expecting an Error that starts with the path and holds `parts`.
-inline void expect_open_error(std::unique_ptr<RayDecoder> (*open)(const std::string&), const std::string& path,
-                              const std::vector<std::string>& parts) {
+inline void expect_open_error(std::unique_ptr<RayDecoder> (*open)(const std::string&),
+                              const std::string& path, const std::vector<std::string>& parts) {
     try {
         auto d = open(path);
         RayChunk chunk;
@@ -112,7 +118,9 @@ inline void expect_open_error(std::unique_ptr<RayDecoder> (*open)(const std::str
     } catch (const Error& e) {
         const std::string message = e.what();
         EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
-        for (const std::string& part : parts) EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+        for (const std::string& part : parts)
+            EXPECT_NE(message.find(part), std::string::npos)
+                << "'" << part << "' not in: " << message;
     }
 }
 

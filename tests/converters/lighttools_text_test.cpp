@@ -53,8 +53,10 @@ TEST(LightToolsText, ReadsHandWrittenFileWithBlankLinesAndLf) {
     ScratchDir dir;
     const std::string path = dir.file("hand.txt");
     write_file(path,
-               "# LightTools 9\n# note\nlt_rdf_version: 2.0\nlt_datatype: luminous_flux\nlt_far_field_data: no\n"
-               "lt_color_info: none\nlt_length_units: inches\nlt_data_origin: 1 2 3\nlt_luminous_flux: 50\n"
+               "# LightTools 9\n# note\nlt_rdf_version: 2.0\nlt_datatype: "
+               "luminous_flux\nlt_far_field_data: no\n"
+               "lt_color_info: none\nlt_length_units: inches\nlt_data_origin: 1 2 "
+               "3\nlt_luminous_flux: 50\n"
                "lt_startofdata\n1 2 3 0 0 1 2\n\n  -1 -2 -3 0 1 0 3e-016  \nlt_endofdata\n\n");
     auto d = open_lighttools_text(path);
     const RayHeader& h = d->header();
@@ -73,14 +75,16 @@ TEST(LightToolsText, ReadsHandWrittenFileWithBlankLinesAndLf) {
 const char* kTextHeader =
     "# LightTools 2024.03 \r\n# Ray Data Export File\r\nlt_rdf_version: 2.0\r\ndataname: x\r\n"
     "lt_datatype: radiant_power\r\nlt_far_field_data: no\r\nlt_color_info: wavelength\r\n"
-    "lt_length_units: millimeters\r\nlt_data_origin: 0 0 0\r\nlt_radiant_flux: 0.5\r\nlt_startofdata\r\n";
+    "lt_length_units: millimeters\r\nlt_data_origin: 0 0 0\r\nlt_radiant_flux: "
+    "0.5\r\nlt_startofdata\r\n";
 const char* kTextRow = "  0.1 0.2 0.3 0 0 1 0.25 550\r\n";  // line 12
 
 TEST(LightToolsTextErrors, Truncated) {
     ScratchDir dir;
     const std::string path = dir.file("cut.txt");
     write_file(path, std::string(kTextHeader) + kTextRow + kTextRow + "  0.1 0.2 0.");
-    expect_open_error(open_lighttools_text, path, {"line 14:", "ends without lt_endofdata", "truncated"});
+    expect_open_error(open_lighttools_text, path,
+                      {"line 14:", "ends without lt_endofdata", "truncated"});
 }
 
 TEST(LightToolsTextErrors, RowWithSixNumbers) {
@@ -93,7 +97,8 @@ TEST(LightToolsTextErrors, RowWithSixNumbers) {
 TEST(LightToolsTextErrors, NotANumber) {
     ScratchDir dir;
     const std::string path = dir.file("abc.txt");
-    write_file(path, std::string(kTextHeader) + kTextRow + kTextRow + "1 2 abc 0 0 1 1 500\r\nlt_endofdata\r\n");
+    write_file(path, std::string(kTextHeader) + kTextRow + kTextRow +
+                         "1 2 abc 0 0 1 1 500\r\nlt_endofdata\r\n");
     expect_open_error(open_lighttools_text, path, {"line 14, column 5:", "'abc' is not a number"});
 }
 
@@ -103,11 +108,15 @@ TEST(LightToolsTextErrors, MissingStartOfData) {
     header.erase(header.find("lt_startofdata"));
     const std::string path = dir.file("nostart.txt");
     write_file(path, header + kTextRow + "lt_endofdata\r\n");
-    expect_open_error(open_lighttools_text, path, {"line 11:", "expected 'key: value' or lt_startofdata", "is lt_startofdata missing?"});
+    expect_open_error(
+        open_lighttools_text, path,
+        {"line 11:", "expected 'key: value' or lt_startofdata", "is lt_startofdata missing?"});
     write_file(path, header);
-    expect_open_error(open_lighttools_text, path, {"line 10:", "ends inside the header, before lt_startofdata", "truncated"});
+    expect_open_error(open_lighttools_text, path,
+                      {"line 10:", "ends inside the header, before lt_startofdata", "truncated"});
     write_file(path, header.substr(0, header.find("lt_datatype") + 5));
-    expect_open_error(open_lighttools_text, path, {"line 5:", "ends inside the header", "truncated"});
+    expect_open_error(open_lighttools_text, path,
+                      {"line 5:", "ends inside the header", "truncated"});
 }
 
 TEST(LightToolsTextErrors, BadKeys) {
@@ -119,25 +128,36 @@ TEST(LightToolsTextErrors, BadKeys) {
         write_file(path, text);
     };
     with("radiant_power", "joules");
-    expect_open_error(open_lighttools_text, path, {"line 5, column 14:", "unknown lt_datatype 'joules'"});
+    expect_open_error(open_lighttools_text, path,
+                      {"line 5, column 14:", "unknown lt_datatype 'joules'"});
     with("millimeters", "furlongs");
-    expect_open_error(open_lighttools_text, path, {"line 8, column 18:", "unknown lt_length_units 'furlongs'"});
+    expect_open_error(open_lighttools_text, path,
+                      {"line 8, column 18:", "unknown lt_length_units 'furlongs'"});
     with("lt_far_field_data: no", "lt_far_field_data: yes");
-    expect_open_error(open_lighttools_text, path, {"line 6, column 20:", "far-field", "not supported"});
+    expect_open_error(open_lighttools_text, path,
+                      {"line 6, column 20:", "far-field", "not supported"});
     with("lt_color_info: wavelength", "lt_color_info: tristimulus");
-    expect_open_error(open_lighttools_text, path, {"line 7, column 16:", "'tristimulus' is not supported"});
+    expect_open_error(open_lighttools_text, path,
+                      {"line 7, column 16:", "'tristimulus' is not supported"});
     with("lt_radiant_flux: 0.5", "lt_radiant_flux: lots");
-    expect_open_error(open_lighttools_text, path, {"line 10, column 18:", "lt_radiant_flux 'lots' is not a non-negative number"});
+    expect_open_error(
+        open_lighttools_text, path,
+        {"line 10, column 18:", "lt_radiant_flux 'lots' is not a non-negative number"});
     with("lt_radiant_flux: 0.5\r\n", "");
-    expect_open_error(open_lighttools_text, path, {"line 10:", "no lt_radiant_flux line before lt_startofdata: the relative ray fluxes cannot be scaled"});
+    expect_open_error(open_lighttools_text, path,
+                      {"line 10:",
+                       "no lt_radiant_flux line before lt_startofdata: the relative ray fluxes "
+                       "cannot be scaled"});
     with("lt_rdf_version: 2.0", "lt_rdf_version: 3.0");
     expect_open_error(open_lighttools_text, path, {"line 3, column 17:", "'3.0' is not supported"});
     with("dataname: x", "lt_polarization: yes");
     expect_open_error(open_lighttools_text, path, {"line 4:", "unknown key lt_polarization"});
     with("dataname: x", "lt_datatype: radiant_power");
-    expect_open_error(open_lighttools_text, path, {"line 5:", "lt_datatype is given a second time (first on line 4)"});
+    expect_open_error(open_lighttools_text, path,
+                      {"line 5:", "lt_datatype is given a second time (first on line 4)"});
     with("lt_endofdata", "lt_endofdata\r\n0 0 0 0 0 1 1 500");
-    expect_open_error(open_lighttools_text, path, {"line 14:", "unexpected text after lt_endofdata"});
+    expect_open_error(open_lighttools_text, path,
+                      {"line 14:", "unexpected text after lt_endofdata"});
 }
 
 // ---------------------------------------------------------------------------------------------

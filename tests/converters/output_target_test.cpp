@@ -7,12 +7,12 @@
 #include "converters/rays/io.h"
 #include "support/test_support.h"
 
-#include <cerrno>
 #include <fcntl.h>
-#include <filesystem>
 #include <sys/stat.h>
-#include <thread>
 #include <unistd.h>
+#include <cerrno>
+#include <filesystem>
+#include <thread>
 
 namespace {
 
@@ -27,12 +27,13 @@ public:
     explicit Fifo(std::string path) : path_(std::move(path)) {
         if (::mkfifo(path_.c_str(), 0600) != 0) throw std::runtime_error("mkfifo failed");
         read_end_ = ::open(path_.c_str(), O_RDONLY | O_NONBLOCK);  // does not wait for a writer
-        keeper_ = ::open(path_.c_str(), O_WRONLY);                // a writer until finish()
+        keeper_ = ::open(path_.c_str(), O_WRONLY);                 // a writer until finish()
         if (read_end_ < 0 || keeper_ < 0) throw std::runtime_error("cannot open the FIFO");
         ::fcntl(read_end_, F_SETFL, ::fcntl(read_end_, F_GETFL) & ~O_NONBLOCK);
         reader_ = std::thread([this] {
             char buffer[4096];
-            for (ssize_t got; (got = ::read(read_end_, buffer, sizeof buffer)) > 0;) received_.append(buffer, size_t(got));
+            for (ssize_t got; (got = ::read(read_end_, buffer, sizeof buffer)) > 0;)
+                received_.append(buffer, size_t(got));
         });
     }
     ~Fifo() { finish(); }
@@ -183,8 +184,11 @@ TEST(WriteAtomically, AnOutputLeftEmptyReplacesNothing) {
 TEST(RayconvOutput, ConvertsIntoAPipeWhatItWritesToAFile) {
     test::ScratchDir dir;
     const std::string rays = dir.file("disk.tm25ray"), csv = dir.file("disk.csv");
-    auto run = [](const std::string& args) { return test::run_command(std::string(RAYCONV_EXE) + " " + args); };
-    ASSERT_EQ(run("synth disk radius=1 flux=1 wavelength=550 --rays 2000 --seed 3 -o " + rays).status, 0);
+    auto run = [](const std::string& args) {
+        return test::run_command(std::string(RAYCONV_EXE) + " " + args);
+    };
+    ASSERT_EQ(
+        run("synth disk radius=1 flux=1 wavelength=550 --rays 2000 --seed 3 -o " + rays).status, 0);
     ASSERT_EQ(run("convert " + rays + " " + csv).status, 0);
     Fifo fifo(dir.file("pipe"));
     const auto result = run("convert " + rays + " " + fifo.path() + " --to csv");

@@ -38,12 +38,19 @@ TEST(PhotometryFlux, IsotropicSourceGivesFourPiTimesIntensityOnAnyGridAndSymmetr
     const double I = 7.25, expected = 4 * pi * I;
     auto constant = [&](double, double) { return I; };
     std::vector<double> uneven_v = {0, 1, 3, 7.5, 20, 45, 46, 90, 91, 135, 170, 179.5, 180};
-    EXPECT_NEAR(grid(PhotometricType::C, {0}, steps(0, 180, 0.5), constant).total_flux(), expected, 1e-9 * expected);
-    EXPECT_NEAR(grid(PhotometricType::C, steps(0, 90, 7.5), uneven_v, constant).total_flux(), expected, 1e-9 * expected);
-    EXPECT_NEAR(grid(PhotometricType::C, {0, 5, 15, 25, 40, 90, 180}, uneven_v, constant).total_flux(), expected, 1e-9 * expected);
-    EXPECT_NEAR(grid(PhotometricType::C, steps(90, 270, 10), uneven_v, constant).total_flux(), expected, 1e-9 * expected);
-    EXPECT_NEAR(grid(PhotometricType::C, steps(0, 360, 15), uneven_v, constant).total_flux(), expected, 1e-9 * expected);
-    EXPECT_NEAR(grid(PhotometricType::C, steps(0, 345, 15), uneven_v, constant).total_flux(), expected, 1e-9 * expected);
+    EXPECT_NEAR(grid(PhotometricType::C, {0}, steps(0, 180, 0.5), constant).total_flux(), expected,
+                1e-9 * expected);
+    EXPECT_NEAR(grid(PhotometricType::C, steps(0, 90, 7.5), uneven_v, constant).total_flux(),
+                expected, 1e-9 * expected);
+    EXPECT_NEAR(
+        grid(PhotometricType::C, {0, 5, 15, 25, 40, 90, 180}, uneven_v, constant).total_flux(),
+        expected, 1e-9 * expected);
+    EXPECT_NEAR(grid(PhotometricType::C, steps(90, 270, 10), uneven_v, constant).total_flux(),
+                expected, 1e-9 * expected);
+    EXPECT_NEAR(grid(PhotometricType::C, steps(0, 360, 15), uneven_v, constant).total_flux(),
+                expected, 1e-9 * expected);
+    EXPECT_NEAR(grid(PhotometricType::C, steps(0, 345, 15), uneven_v, constant).total_flux(),
+                expected, 1e-9 * expected);
 }
 
 TEST(PhotometryFlux, LowerHemisphereOnlyGivesTwoPiTimesIntensity) {
@@ -53,7 +60,8 @@ TEST(PhotometryFlux, LowerHemisphereOnlyGivesTwoPiTimesIntensity) {
     EXPECT_EQ(p.intensity(0, 90), I);
     EXPECT_EQ(p.intensity(0, 90.5), 0.0);  // not measured above the horizon: nothing there
     EXPECT_EQ(p.intensity(33, 120), 0.0);
-    auto upper = grid(PhotometricType::C, {0}, steps(90, 180, 5), [&](double, double) { return I; });
+    auto upper =
+        grid(PhotometricType::C, {0}, steps(90, 180, 5), [&](double, double) { return I; });
     EXPECT_EQ(upper.intensity(0, 60), 0.0);
     EXPECT_EQ(upper.intensity(0, 150), I);
     EXPECT_NEAR(upper.total_flux(), 2 * pi * I, 1e-12 * I);
@@ -63,7 +71,9 @@ TEST(PhotometryFlux, LowerHemisphereOnlyGivesTwoPiTimesIntensity) {
 // [g - d/2, g + d/2] weighs 2 sin g sin(d/2), so the quadrature sums to (closed form of the sum)
 //   Q(d) = 2 pi (1 - cos(d/2)) + pi cos d / cos(d/2) = pi (1 - d^2/8 + O(d^4)),
 // against the exact flux pi I0.
-double cosine_lobe_quadrature(double d) { return 2 * pi * (1 - std::cos(d / 2)) + pi * std::cos(d) / std::cos(d / 2); }
+double cosine_lobe_quadrature(double d) {
+    return 2 * pi * (1 - std::cos(d / 2)) + pi * std::cos(d) / std::cos(d / 2);
+}
 
 TEST(PhotometryFlux, CosineLobeMatchesTheDerivedQuadratureAndPiWithinItsError) {
     const double I0 = 1000;
@@ -81,14 +91,16 @@ TEST(PhotometryFlux, CosineLobeMatchesTheDerivedQuadratureAndPiWithinItsError) {
 }
 
 TEST(PhotometryFlux, TypeBCosineBeamGivesPi) {
-    // Type B: latitude H toward the polar (lateral) axis, plane angle V around it. The cosine of the
-    // angle from the beam axis is cos H cos V; its flux over the front hemisphere is pi I0.
+    // Type B: latitude H toward the polar (lateral) axis, plane angle V around it. The cosine of
+    // the angle from the beam axis is cos H cos V; its flux over the front hemisphere is pi I0.
     const double I0 = 500;
     auto beam = [&](double h, double v) { return I0 * std::cos(h * deg) * std::cos(v * deg); };
     for (double step : {5.0, 1.0}) {
         double d = step * deg;
-        double full = grid(PhotometricType::B, steps(-90, 90, step), steps(-90, 90, step), beam).total_flux();
-        double half = grid(PhotometricType::B, steps(0, 90, step), steps(-90, 90, step), beam).total_flux();
+        double full =
+            grid(PhotometricType::B, steps(-90, 90, step), steps(-90, 90, step), beam).total_flux();
+        double half =
+            grid(PhotometricType::B, steps(0, 90, step), steps(-90, 90, step), beam).total_flux();
         EXPECT_NEAR(full, half, 1e-12 * full);  // 0..90 is mirrored to -90..90
         // Uniform step d: the latitude bands sum cos^2 H x 2 sin(d/2) to pi sin(d/2) / d and the
         // plane widths sum cos V x d to d cot(d/2), so the quadrature gives pi I0 cos(d/2), within
@@ -96,7 +108,8 @@ TEST(PhotometryFlux, TypeBCosineBeamGivesPi) {
         EXPECT_NEAR(full, pi * I0 * std::cos(d / 2), 1e-12 * I0) << "step " << step;
         EXPECT_NEAR(full, pi * I0, pi * I0 * d * d / 8) << "step " << step;
         double constant = grid(PhotometricType::B, steps(-90, 90, step), steps(-90, 90, step),
-                               [](double, double) { return 2.0; }).total_flux();
+                               [](double, double) { return 2.0; })
+                              .total_flux();
         EXPECT_NEAR(constant, 2 * pi * 2.0, 1e-12);  // the front hemisphere, exactly
     }
 }
@@ -153,7 +166,8 @@ TEST(PhotometryIntensity, AClosingC360PlaneIsC0Again) {
 }
 
 TEST(PhotometryIntensity, BilinearBetweenGridAngles) {
-    auto p = grid(PhotometricType::C, {0, 10, 20}, {0, 10, 20}, [](double h, double v) { return 1 + 2 * h + 3 * v + 0.5 * h * v; });
+    auto p = grid(PhotometricType::C, {0, 10, 20}, {0, 10, 20},
+                  [](double h, double v) { return 1 + 2 * h + 3 * v + 0.5 * h * v; });
     // Bilinear interpolation reproduces a bilinear function exactly inside a cell.
     double h = 13.5, v = 4.25;
     EXPECT_NEAR(p.intensity(h, v), 1 + 2 * h + 3 * v + 0.5 * h * v, 1e-12);
@@ -168,14 +182,17 @@ TEST(PhotometryIntensity, TypeBLateralSymmetryAndRange) {
 }
 
 TEST(PhotometryFlux, MaxCandelaAndBadGrids) {
-    auto p = grid(PhotometricType::C, {0}, {0, 90}, [](double, double v) { return v == 0 ? 12.5 : 3; });
+    auto p =
+        grid(PhotometricType::C, {0}, {0, 90}, [](double, double v) { return v == 0 ? 12.5 : 3; });
     EXPECT_EQ(p.max_candela(), 12.5);
     p.candela.pop_back();
     try {
         p.total_flux();
         FAIL() << "no error for a candela count that does not match the angles";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("1 candela values for 2 x 1 angles"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("1 candela values for 2 x 1 angles"),
+                  std::string::npos)
+            << e.what();
     }
 }
 

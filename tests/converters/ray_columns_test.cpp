@@ -38,11 +38,14 @@ TEST(RayColumns, ToRaysKeepsEveryFieldOfEveryRay) {
         EXPECT_EQ(chunk.extra, columns.extra);
         for (size_t i = 0; i < n; ++i) {
             const Ray want = columns.ray(i), got = chunk.rays[i];
-            const float w[9] = {want.origin.x, want.origin.y, want.origin.z, want.direction.x, want.direction.y, want.direction.z,
-                                want.radiant, want.luminous, want.wavelength};
-            const float g[9] = {got.origin.x, got.origin.y, got.origin.z, got.direction.x, got.direction.y, got.direction.z,
-                                got.radiant, got.luminous, got.wavelength};
-            for (int f = 0; f < 9; ++f) ASSERT_TRUE(same_bits(w[f], g[f])) << "n " << n << " ray " << i << " field " << f;
+            const float w[9] = {want.origin.x,    want.origin.y,    want.origin.z,
+                                want.direction.x, want.direction.y, want.direction.z,
+                                want.radiant,     want.luminous,    want.wavelength};
+            const float g[9] = {got.origin.x,    got.origin.y,    got.origin.z,
+                                got.direction.x, got.direction.y, got.direction.z,
+                                got.radiant,     got.luminous,    got.wavelength};
+            for (int f = 0; f < 9; ++f)
+                ASSERT_TRUE(same_bits(w[f], g[f])) << "n " << n << " ray " << i << " field " << f;
             ASSERT_EQ(got.spectrum, want.spectrum) << "n " << n << " ray " << i;
         }
     }

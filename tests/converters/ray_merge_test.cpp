@@ -1,5 +1,5 @@
-#include "converters/rays/ray_ops.h"
 #include "converters/colour/spectrum.h"
+#include "converters/rays/ray_ops.h"
 
 #include "ray_ops_test_support.h"
 #include "support/test_support.h"
@@ -44,10 +44,12 @@ bool contains(const std::vector<std::string>& lines, const std::string& part) {
 
 TEST(Merge, BlueAndYellowBecomeOneFileWithATableIndexPerRay) {
     ScratchDir dir;
-    const auto blue = numbered_rays(700, true, false, 1), yellow = numbered_rays(300, true, false, 2);
+    const auto blue = numbered_rays(700, true, false, 1),
+               yellow = numbered_rays(300, true, false, 2);
     write_rays(dir.file("blue.tm25ray"), RayFormat::tm25, table_header(kBlue), blue);
     write_rays(dir.file("yellow.tm25ray"), RayFormat::tm25, table_header(kYellow), yellow);
-    RayOpReport report = merge_rays({dir.file("blue.tm25ray"), dir.file("yellow.tm25ray")}, dir.file("white.tm25ray"), RayFormat::tm25);
+    RayOpReport report = merge_rays({dir.file("blue.tm25ray"), dir.file("yellow.tm25ray")},
+                                    dir.file("white.tm25ray"), RayFormat::tm25);
     EXPECT_TRUE(report.warnings.empty()) << report.warnings[0];
 
     // Read back through TM-25: the merged file is a valid one.
@@ -70,14 +72,18 @@ TEST(Merge, BlueAndYellowBecomeOneFileWithATableIndexPerRay) {
     const double lb = luminous_sum(b), ly = luminous_sum(y);
     EXPECT_GT(ly, 3 * lb);  // the tables differ: a mix-up of indices would show
     EXPECT_NEAR(luminous_sum(white), lb + ly, 1e-9 * (lb + ly));
-    EXPECT_NEAR(white.header.stated_radiant, b.totals.radiant + y.totals.radiant, 1e-6);  // the header's f32
+    EXPECT_NEAR(white.header.stated_radiant, b.totals.radiant + y.totals.radiant,
+                1e-6);  // the header's f32
 }
 
 TEST(Merge, EqualTablesStayOneSharedTable) {
     ScratchDir dir;
-    write_rays(dir.file("a.tm25ray"), RayFormat::tm25, table_header(kBlue), numbered_rays(10, true, false, 1));
-    write_rays(dir.file("b.tm25ray"), RayFormat::tm25, table_header(kBlue), numbered_rays(20, true, false, 2));
-    merge_rays({dir.file("a.tm25ray"), dir.file("b.tm25ray")}, dir.file("ab.tm25ray"), RayFormat::tm25);
+    write_rays(dir.file("a.tm25ray"), RayFormat::tm25, table_header(kBlue),
+               numbered_rays(10, true, false, 1));
+    write_rays(dir.file("b.tm25ray"), RayFormat::tm25, table_header(kBlue),
+               numbered_rays(20, true, false, 2));
+    merge_rays({dir.file("a.tm25ray"), dir.file("b.tm25ray")}, dir.file("ab.tm25ray"),
+               RayFormat::tm25);
     auto ab = read_rays(dir.file("ab.tm25ray"));
     EXPECT_EQ(ab.rays.size(), 30u);
     EXPECT_EQ(ab.header.spectral, SpectralKind::shared_table);
@@ -94,7 +100,8 @@ TEST(Merge, SingleWavelengthsBecomePerRayWavelengthsUnlessEqual) {
     write_rays(dir.file("a2.tm25ray"), RayFormat::tm25, h, numbered_rays(2, true, false, 3));
     h.single_wavelength = 600;
     write_rays(dir.file("b.tm25ray"), RayFormat::tm25, h, numbered_rays(3, true, false, 2));
-    merge_rays({dir.file("a.tm25ray"), dir.file("b.tm25ray")}, dir.file("ab.tm25ray"), RayFormat::tm25);
+    merge_rays({dir.file("a.tm25ray"), dir.file("b.tm25ray")}, dir.file("ab.tm25ray"),
+               RayFormat::tm25);
     auto ab = read_rays(dir.file("ab.tm25ray"));
     EXPECT_EQ(ab.header.spectral, SpectralKind::per_ray_wavelength);
     ASSERT_EQ(ab.rays.size(), 7u);
@@ -102,7 +109,8 @@ TEST(Merge, SingleWavelengthsBecomePerRayWavelengthsUnlessEqual) {
     EXPECT_EQ(ab.header.min_wavelength, 450.0f);
     EXPECT_EQ(ab.header.max_wavelength, 600.0f);
 
-    merge_rays({dir.file("a.tm25ray"), dir.file("a2.tm25ray")}, dir.file("aa.tm25ray"), RayFormat::tm25);
+    merge_rays({dir.file("a.tm25ray"), dir.file("a2.tm25ray")}, dir.file("aa.tm25ray"),
+               RayFormat::tm25);
     auto aa = read_rays(dir.file("aa.tm25ray"));
     EXPECT_EQ(aa.header.spectral, SpectralKind::single_wavelength);
     EXPECT_EQ(aa.header.single_wavelength, 450.0f);
@@ -125,7 +133,8 @@ TEST(Merge, LengthUnitsAreUnified) {
 
     MergeOptions in_metres;
     in_metres.unit = LengthUnit::m;
-    merge_rays({dir.file("a.csv"), dir.file("b.csv")}, dir.file("m.csv"), RayFormat::csv, in_metres);
+    merge_rays({dir.file("a.csv"), dir.file("b.csv")}, dir.file("m.csv"), RayFormat::csv,
+               in_metres);
     auto m = read_rays(dir.file("m.csv"));
     EXPECT_EQ(m.header.unit, LengthUnit::m);
     EXPECT_EQ(m.rays[3].origin.y, float(double(a[3].origin.y) / 1000));
@@ -141,8 +150,10 @@ TEST(Merge, MissingColumnsAreDerivedWhereTheSpectrumAllowsElseDropped) {
     const auto a = numbered_rays(6, false, true, 1), b = numbered_rays(4, true, false, 2);
     write_rays(dir.file("a.tm25ray"), RayFormat::tm25, lum, a);
     write_rays(dir.file("b.tm25ray"), RayFormat::tm25, table_header(kYellow), b);
-    RayOpReport report = merge_rays({dir.file("a.tm25ray"), dir.file("b.tm25ray")}, dir.file("ab.tm25ray"), RayFormat::tm25);
-    EXPECT_TRUE(contains(report.warnings, "spectral data dropped")) << ::testing::PrintToString(report.warnings);
+    RayOpReport report = merge_rays({dir.file("a.tm25ray"), dir.file("b.tm25ray")},
+                                    dir.file("ab.tm25ray"), RayFormat::tm25);
+    EXPECT_TRUE(contains(report.warnings, "spectral data dropped"))
+        << ::testing::PrintToString(report.warnings);
     EXPECT_TRUE(contains(report.warnings, "radiant flux of " + dir.file("b.tm25ray") + " dropped"));
     auto ab = read_rays(dir.file("ab.tm25ray"));
     EXPECT_FALSE(ab.header.has_radiant);
@@ -150,7 +161,8 @@ TEST(Merge, MissingColumnsAreDerivedWhereTheSpectrumAllowsElseDropped) {
     EXPECT_EQ(ab.header.spectral, SpectralKind::none);
     const double efficacy = luminous_efficacy(kYellow);
     for (size_t i = 0; i < 6; ++i) EXPECT_EQ(ab.rays[i].luminous, a[i].luminous);
-    for (size_t i = 0; i < 4; ++i) EXPECT_FLOAT_EQ(ab.rays[6 + i].luminous, float(b[i].radiant * efficacy));
+    for (size_t i = 0; i < 4; ++i)
+        EXPECT_FLOAT_EQ(ab.rays[6 + i].luminous, float(b[i].radiant * efficacy));
 }
 
 TEST(Merge, NoCommonFluxIsAnError) {
@@ -161,12 +173,17 @@ TEST(Merge, NoCommonFluxIsAnError) {
     write_rays(dir.file("w.tm25ray"), RayFormat::tm25, rad, numbered_rays(3, true, false));
     write_rays(dir.file("lm.tm25ray"), RayFormat::tm25, lum, numbered_rays(3, false, true));
     try {
-        merge_rays({dir.file("w.tm25ray"), dir.file("lm.tm25ray")}, dir.file("o.tm25ray"), RayFormat::tm25);
+        merge_rays({dir.file("w.tm25ray"), dir.file("lm.tm25ray")}, dir.file("o.tm25ray"),
+                   RayFormat::tm25);
         ADD_FAILURE() << "merged";
     } catch (const Error& e) {
         const std::string m = e.what();
-        EXPECT_NE(m.find("no flux column (radiant or luminous) is known for every input"), std::string::npos) << m;
-        EXPECT_NE(m.find(dir.file("lm.tm25ray") + " carries luminous flux without spectral data"), std::string::npos) << m;
+        EXPECT_NE(m.find("no flux column (radiant or luminous) is known for every input"),
+                  std::string::npos)
+            << m;
+        EXPECT_NE(m.find(dir.file("lm.tm25ray") + " carries luminous flux without spectral data"),
+                  std::string::npos)
+            << m;
     }
     EXPECT_FALSE(std::filesystem::exists(dir.file("o.tm25ray")));
 }
@@ -195,8 +212,10 @@ TEST(Merge, ExtraColumnsAreUnitedWithNaNWhereMissing) {
     write_rays(dir.file("plain.csv"), RayFormat::csv, h, numbered_rays(2, true, false));
     h.extras = {{ExtraKind::additional, "temperature"}};
     write_rays(dir.file("warm.csv"), RayFormat::csv, h, numbered_rays(2, true, false), {25, 26});
-    RayOpReport report = merge_rays({dir.file("plain.csv"), dir.file("warm.csv")}, dir.file("o.csv"), RayFormat::csv);
-    EXPECT_TRUE(contains(report.warnings, dir.file("plain.csv") + " has no extra column 'temperature'"));
+    RayOpReport report = merge_rays({dir.file("plain.csv"), dir.file("warm.csv")},
+                                    dir.file("o.csv"), RayFormat::csv);
+    EXPECT_TRUE(
+        contains(report.warnings, dir.file("plain.csv") + " has no extra column 'temperature'"));
     auto o = read_rays(dir.file("o.csv"));
     ASSERT_EQ(o.header.extras.size(), 1u);
     ASSERT_EQ(o.extra.size(), 4u);

@@ -55,14 +55,16 @@ TEST(Subsample, KeepsExactlyTheCountAndTheTotalFlux) {
     ScratchDir dir;
     const auto rays = numbered_rays(10000, true, true);
     write_rays(dir.file("in.tm25ray"), RayFormat::tm25, flux_header(true, true), rays);
-    RayOpReport report = subsample_rays(dir.file("in.tm25ray"), dir.file("out.tm25ray"), RayFormat::tm25, {1234, 0, 7});
+    RayOpReport report = subsample_rays(dir.file("in.tm25ray"), dir.file("out.tm25ray"),
+                                        RayFormat::tm25, {1234, 0, 7});
     auto out = read_rays(dir.file("out.tm25ray"));
     ASSERT_EQ(out.rays.size(), 1234u);
     EXPECT_EQ(report.totals.rays, 1234u);
     const double radiant_in = sum_radiant(rays), luminous_in = sum_luminous(rays);
     EXPECT_NEAR(sum_radiant(out.rays), radiant_in, kF32Rounding * radiant_in);
     EXPECT_NEAR(sum_luminous(out.rays), luminous_in, kF32Rounding * luminous_in);
-    EXPECT_NEAR(out.header.stated_radiant, radiant_in, 1e-6 * radiant_in);  // the header holds an f32
+    EXPECT_NEAR(out.header.stated_radiant, radiant_in,
+                1e-6 * radiant_in);  // the header holds an f32
 }
 
 TEST(Subsample, KeptRaysAreAnOrderedSubsetScaledByOneFactor) {
@@ -95,7 +97,8 @@ TEST(Subsample, KeptRaysAreAnOrderedSubsetScaledByOneFactor) {
 TEST(Subsample, KeptRaysAreUniformOverTheFile) {
     ScratchDir dir;
     const size_t n = 100000, k = 10000;
-    write_rays(dir.file("in.tm25ray"), RayFormat::tm25, flux_header(true, false), numbered_rays(n, true, false));
+    write_rays(dir.file("in.tm25ray"), RayFormat::tm25, flux_header(true, false),
+               numbered_rays(n, true, false));
     subsample_rays(dir.file("in.tm25ray"), dir.file("out.tm25ray"), RayFormat::tm25, {k, 0, 2024});
     auto out = read_rays(dir.file("out.tm25ray"));
     ASSERT_EQ(out.rays.size(), k);
@@ -105,7 +108,8 @@ TEST(Subsample, KeptRaysAreUniformOverTheFile) {
     for (double c : decile) chi2 += (c - 1000) * (c - 1000) / 1000;
     EXPECT_LT(chi2, 27.88);
     // And a different seed keeps a different subset.
-    subsample_rays(dir.file("in.tm25ray"), dir.file("other.tm25ray"), RayFormat::tm25, {k, 0, 2025});
+    subsample_rays(dir.file("in.tm25ray"), dir.file("other.tm25ray"), RayFormat::tm25,
+                   {k, 0, 2025});
     auto other = read_rays(dir.file("other.tm25ray"));
     size_t differing = 0;
     for (size_t i = 0; i < k; ++i) differing += other.rays[i].origin.x != out.rays[i].origin.x;
@@ -114,7 +118,8 @@ TEST(Subsample, KeptRaysAreUniformOverTheFile) {
 
 TEST(Subsample, FractionKeepsTheRoundedShareAndTheSameSeedTheSameRays) {
     ScratchDir dir;
-    write_rays(dir.file("in.tm25ray"), RayFormat::tm25, flux_header(true, false), numbered_rays(999, true, false));
+    write_rays(dir.file("in.tm25ray"), RayFormat::tm25, flux_header(true, false),
+               numbered_rays(999, true, false));
     subsample_rays(dir.file("in.tm25ray"), dir.file("a.tm25ray"), RayFormat::tm25, {0, 0.25, 5});
     subsample_rays(dir.file("in.tm25ray"), dir.file("b.tm25ray"), RayFormat::tm25, {0, 0.25, 5});
     EXPECT_EQ(read_rays(dir.file("a.tm25ray")).rays.size(), 250u);  // round(249.75)
@@ -135,7 +140,9 @@ TEST(Subsample, BadRequestsNameTheFileAndTheProblem) {
     ScratchDir dir;
     const std::string in = dir.file("in.tm25ray");
     write_rays(in, RayFormat::tm25, flux_header(true, false), numbered_rays(10, true, false));
-    std::string m = expect_error([&] { subsample_rays(in, dir.file("o"), RayFormat::tm25, {11, 0, 1}); });
+    std::string m = expect_error([&] {
+        subsample_rays(in, dir.file("o"), RayFormat::tm25, {11, 0, 1});
+    });
     EXPECT_NE(m.find(in), std::string::npos) << m;
     EXPECT_NE(m.find("11 rays asked for, but the file holds only 10"), std::string::npos) << m;
     m = expect_error([&] { subsample_rays(in, dir.file("o"), RayFormat::tm25, {0, 1.5, 1}); });
@@ -162,7 +169,8 @@ TEST(Subsample, KeptRaysWithoutFluxAreAnError) {
             EXPECT_EQ(out.rays[0].radiant, rays[0].radiant);
             ++kept;
         } catch (const Error& e) {
-            EXPECT_NE(std::string(e.what()).find("carry no radiant flux"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("carry no radiant flux"), std::string::npos)
+                << e.what();
             EXPECT_NE(std::string(e.what()).find(in), std::string::npos) << e.what();
             ++failed;
         }
@@ -177,7 +185,8 @@ TEST(Transform, AxisAngleRotationHasTheRightSenseAndComposes) {
     Matrix3 quarter = rotation_about_axis({0, 0, 2}, 90);  // x -> y, right-handed
     EXPECT_NEAR(quarter[0], 0, 1e-15);
     EXPECT_NEAR(quarter[3], 1, 1e-15);
-    Matrix3 twice = multiply(rotation_about_axis({1, 2, 3}, 30), rotation_about_axis({1, 2, 3}, 30));
+    Matrix3 twice =
+        multiply(rotation_about_axis({1, 2, 3}, 30), rotation_about_axis({1, 2, 3}, 30));
     Matrix3 once = rotation_about_axis({1, 2, 3}, 60);
     for (int i = 0; i < 9; ++i) EXPECT_NEAR(twice[i], once[i], 1e-12);
     Matrix3 back = multiply(transpose(once), once);
@@ -190,7 +199,8 @@ TEST(Transform, RotationThenInverseIsTheIdentityAndKeepsUnitDirections) {
     const auto rays = numbered_rays(2000, true, false);
     write_rays(dir.file("in.tm25ray"), RayFormat::tm25, flux_header(true, false), rays);
     RayTransform t;
-    t.rotation = multiply(rotation_about_axis({0.3, -1, 0.2}, 37.5), rotation_about_axis({1, 0, 0}, -71));
+    t.rotation =
+        multiply(rotation_about_axis({0.3, -1, 0.2}, 37.5), rotation_about_axis({1, 0, 0}, -71));
     transform_rays(dir.file("in.tm25ray"), dir.file("rot.tm25ray"), RayFormat::tm25, t);
     auto rotated = read_rays(dir.file("rot.tm25ray"));
     RayTransform inverse;
@@ -201,15 +211,21 @@ TEST(Transform, RotationThenInverseIsTheIdentityAndKeepsUnitDirections) {
     double worst_norm = 0, worst_direction = 0, worst_origin = 0, moved = 0;
     for (size_t i = 0; i < rays.size(); ++i) {
         const Vec3f& d = rotated.rays[i].direction;
-        worst_norm = std::max(worst_norm, std::abs(std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z) - 1));
+        worst_norm = std::max(
+            worst_norm,
+            std::abs(std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z) - 1));
         const Ray &a = rays[i], &b = back.rays[i];
-        worst_direction = std::max({worst_direction, std::abs(double(a.direction.x) - b.direction.x),
-                                    std::abs(double(a.direction.y) - b.direction.y), std::abs(double(a.direction.z) - b.direction.z)});
+        worst_direction =
+            std::max({worst_direction, std::abs(double(a.direction.x) - b.direction.x),
+                      std::abs(double(a.direction.y) - b.direction.y),
+                      std::abs(double(a.direction.z) - b.direction.z)});
         // Origins reach 2000 mm: 1e-6 relative to their length (two f32 roundings: 1.2e-7).
-        const double size = std::max(1.0, std::sqrt(double(a.origin.x) * a.origin.x + double(a.origin.y) * a.origin.y +
-                                                     double(a.origin.z) * a.origin.z));
+        const double size = std::max(
+            1.0, std::sqrt(double(a.origin.x) * a.origin.x + double(a.origin.y) * a.origin.y +
+                           double(a.origin.z) * a.origin.z));
         worst_origin = std::max({worst_origin, std::abs(double(a.origin.x) - b.origin.x) / size,
-                                 std::abs(double(a.origin.y) - b.origin.y) / size, std::abs(double(a.origin.z) - b.origin.z) / size});
+                                 std::abs(double(a.origin.y) - b.origin.y) / size,
+                                 std::abs(double(a.origin.z) - b.origin.z) / size});
         moved = std::max(moved, std::abs(double(a.direction.z) - rotated.rays[i].direction.z));
         EXPECT_EQ(b.radiant, a.radiant);
     }
@@ -229,7 +245,9 @@ TEST(Transform, TranslationMovesTheBoundingBoxExactly) {
     transform_rays(dir.file("in.tm25ray"), dir.file("out.tm25ray"), RayFormat::tm25, t);
     auto out = read_rays(dir.file("out.tm25ray"));
     auto box = [](const std::vector<Ray>& rs, float Vec3f::*axis) {
-        auto [lo, hi] = std::minmax_element(rs.begin(), rs.end(), [&](const Ray& a, const Ray& b) { return a.origin.*axis < b.origin.*axis; });
+        auto [lo, hi] = std::minmax_element(rs.begin(), rs.end(), [&](const Ray& a, const Ray& b) {
+            return a.origin.*axis < b.origin.*axis;
+        });
         return std::pair<float, float>{lo->origin.*axis, hi->origin.*axis};
     };
     const double shift[3] = {5, -20, 1.25};
@@ -239,7 +257,8 @@ TEST(Transform, TranslationMovesTheBoundingBoxExactly) {
         EXPECT_EQ(after.first, float(before.first + shift[a]));
         EXPECT_EQ(after.second, float(before.second + shift[a]));
     }
-    for (size_t i = 0; i < rays.size(); ++i) EXPECT_TRUE(same_bits(out.rays[i].direction, rays[i].direction));
+    for (size_t i = 0; i < rays.size(); ++i)
+        EXPECT_TRUE(same_bits(out.rays[i].direction, rays[i].direction));
 }
 
 TEST(Transform, UnitChangeMillimetresToMetresAndBack) {
@@ -250,7 +269,8 @@ TEST(Transform, UnitChangeMillimetresToMetresAndBack) {
     write_rays(dir.file("in.csv"), RayFormat::csv, h, rays);
     RayTransform to_m;
     to_m.unit = LengthUnit::m;
-    RayOpReport report = transform_rays(dir.file("in.csv"), dir.file("m.csv"), RayFormat::csv, to_m);
+    RayOpReport report =
+        transform_rays(dir.file("in.csv"), dir.file("m.csv"), RayFormat::csv, to_m);
     EXPECT_EQ(report.header.unit, LengthUnit::m);
     auto metres = read_rays(dir.file("m.csv"));
     EXPECT_EQ(metres.header.unit, LengthUnit::m);
@@ -302,7 +322,10 @@ TEST(Transform, ScaleRotationAndTranslationMoveTheDataOriginButNotThePlacement) 
 
 TEST(Transform, PolarisationEllipseAxisRotatesWithTheRay) {
     RayHeader h = flux_header(true, false);
-    h.extras = {{ExtraKind::stokes_s1, "S1"}, {ExtraKind::ellipse_x, "ex"}, {ExtraKind::ellipse_y, "ey"}, {ExtraKind::ellipse_z, "ez"}};
+    h.extras = {{ExtraKind::stokes_s1, "S1"},
+                {ExtraKind::ellipse_x, "ex"},
+                {ExtraKind::ellipse_y, "ey"},
+                {ExtraKind::ellipse_z, "ez"}};
     RayTransform t;
     t.rotation = rotation_about_axis({1, 0, 0}, 90);  // y -> z
     RayTransformer transformer(t, h, "mem");

@@ -19,7 +19,8 @@ inline std::vector<Ray> numbered_rays(size_t n, bool radiant, bool luminous, uin
     for (size_t i = 0; i < n; ++i) {
         Ray& r = rays[i];
         r.origin = {float(i), float(rng.uniform() * 6 - 3), float(rng.uniform() * 0.5)};
-        const double z = 2 * rng.uniform() - 1, phi = 6.283185307179586 * rng.uniform(), s = std::sqrt(1 - z * z);
+        const double z = 2 * rng.uniform() - 1, phi = 6.283185307179586 * rng.uniform(),
+                     s = std::sqrt(1 - z * z);
         r.direction = {float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)};
         if (radiant) r.radiant = float(1e-3 * (1 + i % 7));
         if (luminous) r.luminous = float(0.25 * (1 + i % 5));
@@ -27,8 +28,8 @@ inline std::vector<Ray> numbered_rays(size_t n, bool radiant, bool luminous, uin
     return rays;
 }
 
-inline void write_rays(const std::string& path, RayFormat format, RayHeader header, const std::vector<Ray>& rays,
-                       const std::vector<float>& extra = {}) {
+inline void write_rays(const std::string& path, RayFormat format, RayHeader header,
+                       const std::vector<Ray>& rays, const std::vector<float>& extra = {}) {
     header.ray_count = rays.size();
     auto out = create_rays(path, format, header);
     RayChunk chunk;

@@ -95,8 +95,8 @@ ReadToError read_to_error(RayReader& reader) {
 }
 
 std::string bad_direction_message(const std::string& path, size_t bad) {
-    return path + ": byte " + std::to_string(kDataStart + bad * kRecord) + ": ray " + std::to_string(bad + 1) +
-           ": direction (0, 0, nan) is not a finite number";
+    return path + ": byte " + std::to_string(kDataStart + bad * kRecord) + ": ray " +
+           std::to_string(bad + 1) + ": direction (0, 0, nan) is not a finite number";
 }
 
 TEST(RayReader, HandsOutEveryRayInOrderWithTheirTotals) {
@@ -138,7 +138,8 @@ TEST(RayReader, AWavelengthOfZeroIsRefused) {
     auto reader = open_rays(path, chunks_of(1000));
     const ReadToError read = read_to_error(*reader);
     EXPECT_EQ(read.handed_out, 1000u);
-    EXPECT_NE(read.message.find(": ray 1501: wavelength 0 nm is not a positive number"), std::string::npos)
+    EXPECT_NE(read.message.find(": ray 1501: wavelength 0 nm is not a positive number"),
+              std::string::npos)
         << read.message;
 }
 
@@ -164,7 +165,8 @@ TEST(RayReader, DecodingOnSeveralThreadsReportsTheFirstBadRay) {
         auto reader = open_rays(path, chunks_of(100));
         ASSERT_GT(reader->parts(), 1u);
         const ReadToError read = read_to_error(*reader);
-        EXPECT_EQ(read.handed_out, 9000u) << "attempt " << attempt;  // the chunks before the bad ray's
+        EXPECT_EQ(read.handed_out, 9000u)
+            << "attempt " << attempt;  // the chunks before the bad ray's
         EXPECT_EQ(read.message, bad_direction_message(path, first_bad)) << "attempt " << attempt;
         RayChunk chunk;
         EXPECT_THROW(reader->read(chunk), Error);
@@ -195,7 +197,8 @@ void read_all_in_parts(RayReader& reader, Visits& visits) {
         bool right = true;
         for (size_t i = 0; i < chunk.size(); ++i) {
             const uint64_t index = chunk.first_index + i;
-            right &= chunk.ox[i] == float(index) && chunk.radiant[i] == flux_of(index) && chunk.dz[i] == 1.0f;
+            right &= chunk.ox[i] == float(index) && chunk.radiant[i] == flux_of(index) &&
+                     chunk.dz[i] == 1.0f;
         }
         std::lock_guard<std::mutex> lock(visits.mutex);
         visits.chunks.at(part).emplace_back(chunk.first_index, chunk.size());
@@ -230,7 +233,8 @@ TEST(RayReaderInParts, VisitsEveryRayOnceInConsecutivePartsWithTheTotalsOfRead) 
     // read() over the same file gives the same totals.
     auto sequential = open_rays(path, chunks_of(100));
     RayChunk chunk;
-    while (sequential->read(chunk)) {}
+    while (sequential->read(chunk)) {
+    }
     EXPECT_EQ(sequential->totals().radiant, reader->totals().radiant);
     EXPECT_EQ(sequential->totals().rays, reader->totals().rays);
 }

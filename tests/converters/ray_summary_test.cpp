@@ -1,9 +1,9 @@
 // The one-pass summary behind `rayconv info`, on analytic sources whose answers are known.
 #include <gtest/gtest.h>
 
+#include "converters/analytic/synth.h"
 #include "converters/rays/ray_summary.h"
 #include "converters/rays/simd.h"
-#include "converters/analytic/synth.h"
 #include "ray_ops_test_support.h"
 #include "support/test_support.h"
 
@@ -13,7 +13,8 @@ namespace {
 
 using namespace rayset;
 
-std::string write_source(const std::string& name, const SourceParameters& parameters, uint64_t rays, test::ScratchDir& dir) {
+std::string write_source(const std::string& name, const SourceParameters& parameters, uint64_t rays,
+                         test::ScratchDir& dir) {
     auto source = make_source(name, parameters);
     const std::string path = dir.file(name + ".tm25ray");
     SynthOptions radiant_only;  // luminous flux must then come from the spectrum
@@ -23,8 +24,8 @@ std::string write_source(const std::string& name, const SourceParameters& parame
     return path;
 }
 
-RaySummary summarise_source(const std::string& name, const SourceParameters& parameters, uint64_t rays,
-                            test::ScratchDir& dir) {
+RaySummary summarise_source(const std::string& name, const SourceParameters& parameters,
+                            uint64_t rays, test::ScratchDir& dir) {
     auto reader = open_rays(write_source(name, parameters, rays, dir));
     return summarise_rays(*reader);
 }
@@ -111,9 +112,14 @@ TEST(RaySummary, PartsReadOnSeveralThreadsGiveTheSummaryOfOnePart) {
             }
     const double norm = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
     const double u_f = std::ldexp(1.0, -24);
-    const double axis_bound = 2 * 9 * u_f * std::sqrt(abs_sum[0] * abs_sum[0] + abs_sum[1] * abs_sum[1] + abs_sum[2] * abs_sum[2]) / norm + u_f;
+    const double axis_bound =
+        2 * 9 * u_f *
+            std::sqrt(abs_sum[0] * abs_sum[0] + abs_sum[1] * abs_sum[1] + abs_sum[2] * abs_sum[2]) /
+            norm +
+        u_f;
     for (const RaySummary* s : {&a, &b})
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR((&s->mean_direction.x)[k], m[k] / norm, axis_bound) << k;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR((&s->mean_direction.x)[k], m[k] / norm, axis_bound) << k;
     // The widest angle is measured from the axis to the same cell centres, so the two differ by
     // at most the angle between their axes.
     // (atan2 of the cross and dot products: exact for tiny angles, where acos is not).
@@ -124,7 +130,8 @@ TEST(RaySummary, PartsReadOnSeveralThreadsGiveTheSummaryOfOnePart) {
     EXPECT_NEAR(a.max_angle_from_mean_deg, b.max_angle_from_mean_deg, axes_deg + 1e-9);
     const double bound = 2 * 300000 * std::ldexp(1.0, -53);
     EXPECT_NEAR(a.radiant, b.radiant, bound * a.radiant);
-    EXPECT_NEAR(a.luminous_from_spectrum, b.luminous_from_spectrum, bound * a.luminous_from_spectrum);
+    EXPECT_NEAR(a.luminous_from_spectrum, b.luminous_from_spectrum,
+                bound * a.luminous_from_spectrum);
 }
 
 // The summary's AVX2 kernel (where the CPU has it) against the portable one: the same IEEE
@@ -133,17 +140,23 @@ TEST(RaySummary, PartsReadOnSeveralThreadsGiveTheSummaryOfOnePart) {
 // the quadrant diagonals, z = +-1, and a ray count that leaves a tail of 5 past a multiple of 8.
 TEST(RaySummary, FastestKernelGivesThePortableKernelsFigures) {
     // Without AVX2 both are the portable kernel, and the comparison could not fail.
-    if (!cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2: the fastest kernel is the portable one";
+    if (!cpu_has_avx2())
+        GTEST_SKIP() << "this CPU has no AVX2: the fastest kernel is the portable one";
     test::ScratchDir dir;
     std::vector<Ray> rays = test::numbered_rays(20000 + 5, true, false);
-    const float h = float(std::sqrt(0.5)), edges[][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},  {0, -1, 0}, {0, 0, 1},
-                                                       {0, 0, -1}, {-0.f, 1, 0}, {1, -0.f, 0}, {-1, -0.f, 0}, {-0.f, -1, 0},
-                                                       {h, h, 0},  {-h, h, 0}, {-h, -h, 0}, {h, -h, 0}, {-0.5f, 6.1e-17f, -0.8660254f}};
+    const float h = float(std::sqrt(0.5)),
+                edges[][3] = {{1, 0, 0},     {-1, 0, 0},   {0, 1, 0},
+                              {0, -1, 0},    {0, 0, 1},    {0, 0, -1},
+                              {-0.f, 1, 0},  {1, -0.f, 0}, {-1, -0.f, 0},
+                              {-0.f, -1, 0}, {h, h, 0},    {-h, h, 0},
+                              {-h, -h, 0},   {h, -h, 0},   {-0.5f, 6.1e-17f, -0.8660254f}};
     for (size_t e = 0; e < std::size(edges); ++e) {
         rays[e * 997].direction = {edges[e][0], edges[e][1], edges[e][2]};  // spread over blocks
-        rays[rays.size() - 1 - e % 5].direction = {edges[e][0], edges[e][1], edges[e][2]};  // and the tail
+        rays[rays.size() - 1 - e % 5].direction = {edges[e][0], edges[e][1],
+                                                   edges[e][2]};  // and the tail
     }
-    for (size_t i = 0; i < rays.size(); i += 3) rays[i].wavelength = float(380 + i % 400);  // some unknown
+    for (size_t i = 0; i < rays.size(); i += 3)
+        rays[i].wavelength = float(380 + i % 400);  // some unknown
     RayHeader header;
     header.has_radiant = true;
     header.spectral = SpectralKind::per_ray_wavelength;
@@ -152,7 +165,8 @@ TEST(RaySummary, FastestKernelGivesThePortableKernelsFigures) {
     RayReadOptions options;
     options.chunk_size = 100;  // 8 parts
     auto fastest = open_rays(path, options), portable = open_rays(path, options);
-    const RaySummary a = summarise_rays(*fastest), b = summarise_rays(*portable, {}, SummaryKernel::portable);
+    const RaySummary a = summarise_rays(*fastest),
+                     b = summarise_rays(*portable, {}, SummaryKernel::portable);
     EXPECT_EQ(a.unknown_wavelength_rays, b.unknown_wavelength_rays);
     EXPECT_EQ(a.unknown_wavelength_rays, rays.size() - (rays.size() + 2) / 3);
     EXPECT_EQ(a.min_wavelength, b.min_wavelength);

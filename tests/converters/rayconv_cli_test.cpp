@@ -18,7 +18,8 @@ using rayset::test::ScratchDir;
 using rayset::test::write_file;
 
 // A minimal TM-25 file made byte by byte (independent of our encoder): radiant flux column only.
-std::string tm25_bytes(const std::vector<std::array<float, 7>>& rays, float stated_watts, uint64_t count_in_header) {
+std::string tm25_bytes(const std::vector<std::array<float, 7>>& rays, float stated_watts,
+                       uint64_t count_in_header) {
     std::string b(256 + 32 + 9 * 4000, '\0');
     std::memcpy(&b[0], "TM25", 4);
     int32_t version = 2013;
@@ -42,16 +43,20 @@ std::string rayconv(const std::string& args) { return std::string(RAYCONV_EXE) +
 class RayconvCli : public ::testing::Test {
 protected:
     ScratchDir dir;
-    std::vector<std::array<float, 7>> good{{0, 0, 0, 0, 0, 1, 0.5f}, {1, 0, 0, 0, 0.6f, 0.8f, 0.5f}};
+    std::vector<std::array<float, 7>> good{{0, 0, 0, 0, 0, 1, 0.5f},
+                                           {1, 0, 0, 0, 0.6f, 0.8f, 0.5f}};
 
     // Runs a conversion expected to fail; checks the message mentions every `expected` piece and
     // that an output file that existed before is byte-identical afterwards.
-    void expect_failure(const std::string& input, const std::vector<std::string>& expected, const std::string& extra = "") {
+    void expect_failure(const std::string& input, const std::vector<std::string>& expected,
+                        const std::string& extra = "") {
         const std::string out = dir.file("out.csv");
         write_file(out, "precious user data");
         auto result = run_command(rayconv("convert " + input + " " + out + " " + extra));
         EXPECT_EQ(result.status, 1) << result.output;
-        for (const auto& piece : expected) EXPECT_NE(result.output.find(piece), std::string::npos) << "missing '" << piece << "' in: " << result.output;
+        for (const auto& piece : expected)
+            EXPECT_NE(result.output.find(piece), std::string::npos)
+                << "missing '" << piece << "' in: " << result.output;
         EXPECT_EQ(read_file(out), "precious user data");
         int leftovers = 0;  // no temporary file left beside it
         for (const auto& e : std::filesystem::directory_iterator(dir.path()))
@@ -150,7 +155,8 @@ TEST_F(RayconvCli, StatedTotalThatDisagreesIsReported) {
     EXPECT_NE(kept.output.find("header states 5"), std::string::npos) << kept.output;
     auto scaled = run_command(rayconv("info --json --trust header " + in));
     ASSERT_EQ(scaled.status, 0) << scaled.output;
-    EXPECT_NE(scaled.output.find("\"radiant\": 5.0"), std::string::npos) << scaled.output;  // flux_scale
+    EXPECT_NE(scaled.output.find("\"radiant\": 5.0"), std::string::npos)
+        << scaled.output;  // flux_scale
 }
 
 TEST_F(RayconvCli, MissingInputAndHelp) {

@@ -61,7 +61,8 @@ TEST(LuminousEfficacy, IntegratesTheProductOfTwoLinearFunctionsExactly) {
     // A box 500..510 nm spanning ten 1 nm pieces: the mean of V over it, i.e. the trapezoid
     // sum of the knots, each of which photopic_efficiency returns.
     double sum = 0;
-    for (int w = 500; w < 510; ++w) sum += (photopic_efficiency(w) + photopic_efficiency(w + 1)) / 2;
+    for (int w = 500; w < 510; ++w)
+        sum += (photopic_efficiency(w) + photopic_efficiency(w + 1)) / 2;
     SpectralTable box{{500, 505, 510}, {2, 2, 2}};
     EXPECT_NEAR(luminous_efficacy(box), kKm * sum / 10, 1e-9);
 }

@@ -1,7 +1,7 @@
 // SPEOS binary .ray: round trips, the totals the writer states, strict detection, bad sizes and
 // headers.
-#include "converters/formats/codecs.h"
 #include "converters/colour/spectrum.h"
+#include "converters/formats/codecs.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +15,8 @@ namespace {
 
 using test::ScratchDir;
 
-template <class F> std::string error_of(F&& f) {
+template <class F>
+std::string error_of(F&& f) {
     try {
         f();
     } catch (const Error& e) {
@@ -26,7 +27,8 @@ template <class F> std::string error_of(F&& f) {
 }
 
 void expect_mentions(const std::string& message, std::initializer_list<std::string> parts) {
-    for (const auto& p : parts) EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
+    for (const auto& p : parts)
+        EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
 }
 
 uint32_t bits(float f) {
@@ -98,7 +100,8 @@ TEST(Speos, RoundTripIsBitExactIncludingWavelengths) {
     const std::string path = dir.file("out.ray");
     write_speos(path, h, rays);
     EXPECT_EQ(test::read_file(path).size(), 28u + 32u * rays.size());
-    EXPECT_EQ(header_floats(path), (std::vector<float>{float(h.stated_radiant), 2, 2, 2, 2, 2, 123.5f}));
+    EXPECT_EQ(header_floats(path),
+              (std::vector<float>{float(h.stated_radiant), 2, 2, 2, 2, 2, 123.5f}));
 
     auto decoder = open_speos(path);
     const RayHeader& r = decoder->header();
@@ -148,7 +151,8 @@ TEST(Speos, LuminousTotalFollowsPhotopicEfficiencyWhenNotStated) {
 TEST(Speos, ReaderScalesWeightsToTheRadiantTotal) {
     ScratchDir dir;
     const std::string path = dir.file("w.ray");
-    test::write_file(path, speos_bytes({2, 2, 2, 2, 2, 2, 1366}, {0, 0, 0, 0, 0, 1, 555, 1, /**/ 0, 0, 0, 0, 0, 1, 555, 3}));
+    test::write_file(path, speos_bytes({2, 2, 2, 2, 2, 2, 1366},
+                                       {0, 0, 0, 0, 0, 1, 555, 1, /**/ 0, 0, 0, 0, 0, 1, 555, 3}));
     auto reader = open_rays(path);
     EXPECT_EQ(reader->file_header().format, RayFormat::speos);
     RayChunk chunk;
@@ -163,16 +167,19 @@ TEST(Speos, WriterRefusesRaysItCannotHold) {
     RayHeader luminous_only;
     luminous_only.has_luminous = true;
     luminous_only.spectral = SpectralKind::per_ray_wavelength;
-    expect_mentions(error_of([&] { create_speos(dir.file("a.ray"), luminous_only); }), {"a.ray", "no radiant flux"});
+    expect_mentions(error_of([&] { create_speos(dir.file("a.ray"), luminous_only); }),
+                    {"a.ray", "no radiant flux"});
     RayHeader no_wavelength;
     no_wavelength.has_radiant = true;
-    expect_mentions(error_of([&] { create_speos(dir.file("b.ray"), no_wavelength); }), {"b.ray", "needs a wavelength"});
+    expect_mentions(error_of([&] { create_speos(dir.file("b.ray"), no_wavelength); }),
+                    {"b.ray", "needs a wavelength"});
     RayHeader h;
     h.has_radiant = true;
     h.spectral = SpectralKind::per_ray_wavelength;
     auto rays = sample_rays(3);
     rays[1].wavelength = kUnknown;
-    expect_mentions(error_of([&] { write_speos(dir.file("c.ray"), h, rays); }), {"c.ray", "ray 2", "wavelength"});
+    expect_mentions(error_of([&] { write_speos(dir.file("c.ray"), h, rays); }),
+                    {"c.ray", "ray 2", "wavelength"});
     EXPECT_FALSE(std::filesystem::exists(dir.file("c.ray")));
 }
 
@@ -201,10 +208,18 @@ TEST(Speos, BadInputNamesFileAndOffset) {
     const std::vector<float> ray = {0, 0, 0, 0, 0, 1, 550, 1};
     const Case cases[] = {
         {"short", speos_bytes({1, 2, 2}, {}), {"byte 12:", "12 bytes", "28-byte"}},
-        {"size not 28 + 32k", speos_bytes({1, 2, 2, 2, 2, 2, 600, 0, 0}, ray), {"byte 60:", "68 bytes", "8 bytes left over"}},
-        {"constant", speos_bytes({1, 2, 2, 3, 2, 2, 600}, ray), {"byte 12:", "value 4 is 3", "2.0"}},
-        {"radiant total", speos_bytes({-1, 2, 2, 2, 2, 2, 600}, ray), {"byte 0:", "radiant total -1"}},
-        {"luminous total", speos_bytes({1, 2, 2, 2, 2, 2, NAN}, ray), {"byte 24:", "luminous total nan"}},
+        {"size not 28 + 32k",
+         speos_bytes({1, 2, 2, 2, 2, 2, 600, 0, 0}, ray),
+         {"byte 60:", "68 bytes", "8 bytes left over"}},
+        {"constant",
+         speos_bytes({1, 2, 2, 3, 2, 2, 600}, ray),
+         {"byte 12:", "value 4 is 3", "2.0"}},
+        {"radiant total",
+         speos_bytes({-1, 2, 2, 2, 2, 2, 600}, ray),
+         {"byte 0:", "radiant total -1"}},
+        {"luminous total",
+         speos_bytes({1, 2, 2, 2, 2, 2, NAN}, ray),
+         {"byte 24:", "luminous total nan"}},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);

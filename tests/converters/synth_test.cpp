@@ -1,8 +1,8 @@
 // The random generator, building sources from text, and synthesising ray files.
 #include "converters/analytic/synth.h"
 
-#include "converters/rays/io.h"
 #include "converters/colour/spectrum.h"
+#include "converters/rays/io.h"
 #include "core/random.h"
 #include "support/test_support.h"
 #include "synth_test_support.h"
@@ -20,7 +20,8 @@ using test::MemoryEncoder;
 TEST(Pcg32, MatchesTheReferenceImplementation) {
     // pcg32_srandom_r(&rng, 42, 54) in O'Neill's pcg32-demo (pcg-random.org) prints these.
     Pcg32 rng(42, 54);
-    for (uint32_t expected : {0xa15c02b7u, 0x7b47f409u, 0xba1d3330u, 0x83d2f293u, 0xbfa4784bu, 0xcbed606eu})
+    for (uint32_t expected :
+         {0xa15c02b7u, 0x7b47f409u, 0xba1d3330u, 0x83d2f293u, 0xbfa4784bu, 0xcbed606eu})
         EXPECT_EQ(rng.next_u32(), expected);
 }
 
@@ -64,7 +65,8 @@ std::string error_of(const std::function<void()>& f) {
 }
 
 TEST(SynthSources, BuildFromNameAndParameters) {
-    auto disk = make_source("disk", parse_source_parameters({"radius=2", "tilt=60", "flux=3", "wavelength=450"}));
+    auto disk = make_source(
+        "disk", parse_source_parameters({"radius=2", "tilt=60", "flux=3", "wavelength=450"}));
     EXPECT_EQ(disk->name(), "disk");
     EXPECT_DOUBLE_EQ(disk->total_flux(), 3.0);
     // I0 = flux / pi for Lambert, along the normal (sin 60, 0, cos 60); half of it along z.
@@ -82,7 +84,8 @@ TEST(SynthSources, BuildFromNameAndParameters) {
     EXPECT_EQ(again->total_flux(), disk->total_flux());
     EXPECT_EQ(again->parameters(), text);
 
-    auto rect = make_source("rectangle", parse_source_parameters({"size_x=2", "size_y=0.5", "radiance=0.1"}));
+    auto rect = make_source("rectangle",
+                            parse_source_parameters({"size_x=2", "size_y=0.5", "radiance=0.1"}));
     EXPECT_DOUBLE_EQ(rect->total_flux(), kPi * 0.1 * 1.0);
     auto sphere = make_source("sphere", {});
     EXPECT_DOUBLE_EQ(sphere->total_flux(), 1.0);
@@ -94,8 +97,8 @@ TEST(SynthSources, BuildFromNameAndParameters) {
     ASSERT_EQ(chips.size(), 39u);  // 1 + 6 + 12 + 20
     EXPECT_DOUBLE_EQ(cluster->total_flux(), 1.0);
     EXPECT_EQ(chips[0].x, 0.0);
-    EXPECT_NEAR(std::hypot(chips[1].x, chips[1].y), 2.0, 1e-12);     // ring 1 at the pitch
-    EXPECT_NEAR(std::hypot(chips[38].x, chips[38].y), 6.0, 1e-12);   // ring 3 at 3 pitches
+    EXPECT_NEAR(std::hypot(chips[1].x, chips[1].y), 2.0, 1e-12);    // ring 1 at the pitch
+    EXPECT_NEAR(std::hypot(chips[38].x, chips[38].y), 6.0, 1e-12);  // ring 3 at 3 pitches
     EXPECT_EQ(chips[0].wavelength_nm, 630);
     EXPECT_EQ(chips[1].wavelength_nm, 530);
     EXPECT_EQ(chips[5].wavelength_nm, 460);
@@ -107,29 +110,59 @@ TEST(SynthSources, BuildFromNameAndParameters) {
 TEST(SynthSources, BadNamesKeysAndValuesAreClearErrors) {
     EXPECT_EQ(error_of([] { make_source("cone", {}); }),
               "synth: unknown source 'cone' (known: disk, rectangle, sphere, lobe, cluster)");
-    EXPECT_EQ(error_of([] { make_source("disk", {{"radus", "1"}}); }),
-              "synth disk: unknown parameter 'radus' (known: radius, tilt, flux, radiance, wavelength, spectrum)");
-    EXPECT_EQ(error_of([] { make_source("disk", {{"tilt", "95"}}); }),
+    EXPECT_EQ(error_of([] {
+                  make_source("disk", {{"radus", "1"}});
+              }),
+              "synth disk: unknown parameter 'radus' (known: radius, tilt, flux, radiance, "
+              "wavelength, spectrum)");
+    EXPECT_EQ(error_of([] {
+                  make_source("disk", {{"tilt", "95"}});
+              }),
               "disk: tilt must be a number of degrees from -90 to 90, not 95");
-    EXPECT_EQ(error_of([] { make_source("disk", {{"radius", "2mm"}}); }),
+    EXPECT_EQ(error_of([] {
+                  make_source("disk", {{"radius", "2mm"}});
+              }),
               "synth disk: parameter 'radius' must be a finite number, not '2mm'");
-    EXPECT_EQ(error_of([] { make_source("disk", {{"radius", "nan"}}); }),
+    EXPECT_EQ(error_of([] {
+                  make_source("disk", {{"radius", "nan"}});
+              }),
               "synth disk: parameter 'radius' must be a finite number, not 'nan'");
-    EXPECT_EQ(error_of([] { make_source("disk", {{"radius", "-1"}}); }), "disk: radius must be a positive number of mm, not -1");
-    EXPECT_EQ(error_of([] { make_source("sphere", {{"flux", "1"}, {"radiance", "2"}}); }),
+    EXPECT_EQ(error_of([] {
+                  make_source("disk", {{"radius", "-1"}});
+              }),
+              "disk: radius must be a positive number of mm, not -1");
+    EXPECT_EQ(error_of([] {
+                  make_source("sphere", {{"flux", "1"}, {"radiance", "2"}});
+              }),
               "synth sphere: give either 'flux' or 'radiance', not both");
-    EXPECT_EQ(error_of([] { make_source("lobe", {{"n", "-0.5"}}); }), "lobe: exponent n must be a number >= 0, not -0.5");
-    EXPECT_EQ(error_of([] { make_source("cluster", {{"rings", "1,6.5"}}); }),
+    EXPECT_EQ(error_of([] {
+                  make_source("lobe", {{"n", "-0.5"}});
+              }),
+              "lobe: exponent n must be a number >= 0, not -0.5");
+    EXPECT_EQ(error_of([] {
+                  make_source("cluster", {{"rings", "1,6.5"}});
+              }),
               "synth cluster: rings must be whole numbers of chips, not 6.5");
-    EXPECT_EQ(error_of([] { make_source("cluster", {{"rings", "3"}}); }),
+    EXPECT_EQ(error_of([] {
+                  make_source("cluster", {{"rings", "3"}});
+              }),
               "cluster: ring 1 has radius 0, so it holds one chip or none, not 3");
-    EXPECT_EQ(error_of([] { make_source("cluster", {{"pitch", "1.2"}}); }),
+    EXPECT_EQ(error_of([] {
+                  make_source("cluster", {{"pitch", "1.2"}});
+              }),
               "cluster: chips 9 and 10 overlap; use a larger pitch or a smaller chip");
-    EXPECT_EQ(error_of([] { make_source("cluster", {{"wavelength", "530,,460"}}); }),
+    EXPECT_EQ(error_of([] {
+                  make_source("cluster", {{"wavelength", "530,,460"}});
+              }),
               "synth cluster: parameter 'wavelength' must be a finite number, not ''");
-    EXPECT_EQ(error_of([] { parse_source_parameters({"radius"}); }), "synth: expected key=value, not 'radius'");
-    EXPECT_EQ(error_of([] { parse_source_parameters({"=1"}); }), "synth: expected key=value, not '=1'");
-    EXPECT_EQ(error_of([] { parse_source_parameters({"flux=1", "flux=2"}); }), "synth: parameter 'flux' is given twice");
+    EXPECT_EQ(error_of([] { parse_source_parameters({"radius"}); }),
+              "synth: expected key=value, not 'radius'");
+    EXPECT_EQ(error_of([] { parse_source_parameters({"=1"}); }),
+              "synth: expected key=value, not '=1'");
+    EXPECT_EQ(error_of([] {
+                  parse_source_parameters({"flux=1", "flux=2"});
+              }),
+              "synth: parameter 'flux' is given twice");
 }
 
 TEST(SynthSources, SpectrumFiles) {
@@ -144,22 +177,30 @@ TEST(SynthSources, SpectrumFiles) {
     EXPECT_EQ(h.spectral_tables[0].wavelength, (std::vector<float>{450, 500, 550}));
     EXPECT_EQ(h.spectral_tables[0].weight, (std::vector<float>{0.5f, 1, 0.25f}));
     EXPECT_NEAR(disk->luminous_flux(), luminous_efficacy(h.spectral_tables[0]), 1e-12);
-    EXPECT_EQ(disk->parameters(), "radius=1 radiance=" + format_double(1 / (kPi * kPi)) + " spectrum=" + good);
+    EXPECT_EQ(disk->parameters(),
+              "radius=1 radiance=" + format_double(1 / (kPi * kPi)) + " spectrum=" + good);
 
     auto bad = [&](const std::string& name, const std::string& content) {
         const std::string path = dir.file(name);
         test::write_file(path, content);
         return error_of([&] { read_spectrum_file(path); });
     };
-    EXPECT_EQ(bad("a.txt", "450 1\n460 x\n"),
-              dir.file("a.txt") + ": line 2: expected two numbers, wavelength (nm) and relative power, not '460 x'");
+    EXPECT_EQ(
+        bad("a.txt", "450 1\n460 x\n"),
+        dir.file("a.txt") +
+            ": line 2: expected two numbers, wavelength (nm) and relative power, not '460 x'");
     EXPECT_EQ(bad("b.txt", "450 1\n440 1\n"),
-              dir.file("b.txt") + ": line 2: wavelength 440 nm does not ascend (the line before has 450 nm)");
-    EXPECT_EQ(bad("c.txt", "450 1\n460 -1\n"), dir.file("c.txt") + ": line 2: relative power -1 is not a number >= 0");
+              dir.file("b.txt") +
+                  ": line 2: wavelength 440 nm does not ascend (the line before has 450 nm)");
+    EXPECT_EQ(bad("c.txt", "450 1\n460 -1\n"),
+              dir.file("c.txt") + ": line 2: relative power -1 is not a number >= 0");
     EXPECT_EQ(bad("d.txt", "450 1\n"),
-              dir.file("d.txt") + ": a spectrum needs at least two rows of wavelength (nm) and relative power");
-    EXPECT_EQ(bad("e.txt", "450 0\n460 0\n"), dir.file("e.txt") + ": every relative power is zero: the spectrum carries no light");
-    EXPECT_EQ(bad("f.txt", "inf 1\n460 1\n"), dir.file("f.txt") + ": line 1: wavelength inf nm is not a positive number");
+              dir.file("d.txt") +
+                  ": a spectrum needs at least two rows of wavelength (nm) and relative power");
+    EXPECT_EQ(bad("e.txt", "450 0\n460 0\n"),
+              dir.file("e.txt") + ": every relative power is zero: the spectrum carries no light");
+    EXPECT_EQ(bad("f.txt", "inf 1\n460 1\n"),
+              dir.file("f.txt") + ": line 1: wavelength inf nm is not a positive number");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -196,7 +237,8 @@ TEST(Synthesize, EqualFluxRaysDeterministicForASeed) {
 }
 
 TEST(Synthesize, HeaderDescribesTheRays) {
-    const auto disk = make_source("disk", {{"radius", "1.5"}, {"flux", "2"}, {"wavelength", "450"}});
+    const auto disk =
+        make_source("disk", {{"radius", "1.5"}, {"flux", "2"}, {"wavelength", "450"}});
     const RayHeader h = synth_header(*disk, 1000, 42);
     EXPECT_EQ(h.unit, LengthUnit::mm);
     EXPECT_EQ(h.ray_count, 1000u);
@@ -216,7 +258,7 @@ TEST(Synthesize, HeaderDescribesTheRays) {
     EXPECT_EQ(hc.min_wavelength, 460.0f);
     EXPECT_EQ(hc.max_wavelength, 630.0f);
     EXPECT_TRUE(std::isnan(hc.stated_luminous));  // depends on which chips the rays drew
-    EXPECT_DOUBLE_EQ(hc.stated_radiant, 1.0);  // 39 shares of 1/39 W
+    EXPECT_DOUBLE_EQ(hc.stated_radiant, 1.0);     // 39 shares of 1/39 W
     const RayHeader plain = synth_header(*cluster, 10, 1, SynthOptions{false, 1, {}});
     EXPECT_FALSE(plain.has_luminous);
 }
@@ -233,11 +275,13 @@ TEST(Synthesize, ClusterRaysCarryTheirChipsWavelengths) {
     for (const Ray& r : out.rays) {
         counts[r.wavelength] += 1;
         luminous += r.luminous;
-        ASSERT_EQ(r.luminous, float(r.radiant * kMaxLuminousEfficacy * photopic_efficiency(r.wavelength)));
+        ASSERT_EQ(r.luminous,
+                  float(r.radiant * kMaxLuminousEfficacy * photopic_efficiency(r.wavelength)));
     }
     ASSERT_EQ(counts.size(), 3u);
     for (const auto& [wavelength, count] : counts)
-        EXPECT_NEAR(count, n / 3.0, test::bernstein_bound(double(n), 1.0 / 3, 1e-4)) << wavelength << " nm";
+        EXPECT_NEAR(count, n / 3.0, test::bernstein_bound(double(n), 1.0 / 3, 1e-4))
+            << wavelength << " nm";
     // The luminous total is a sum of per-colour shares, so within the colours' statistics.
     EXPECT_NEAR(luminous / cluster->luminous_flux(), 1.0, 0.02);
 }
@@ -261,7 +305,9 @@ TEST(Synthesize, WritesAReadableTm25File) {
     while (reader->read(chunk))
         for (const Ray& r : chunk.rays) {
             const Ray& m = memory.rays[i++];
-            ASSERT_TRUE(r.origin == m.origin && r.direction == m.direction && r.radiant == m.radiant) << "ray " << i;
+            ASSERT_TRUE(r.origin == m.origin && r.direction == m.direction &&
+                        r.radiant == m.radiant)
+                << "ray " << i;
         }
     EXPECT_EQ(i, n);
     EXPECT_NEAR(reader->totals().radiant, 0.5, 0.5 * 1e-7);
@@ -270,7 +316,8 @@ TEST(Synthesize, WritesAReadableTm25File) {
 
 TEST(Synthesize, RefusesZeroRays) {
     MemoryEncoder out;
-    EXPECT_EQ(error_of([&] { synthesize(*make_source("disk", {}), 0, 1, out); }), "synth: the ray count must be at least 1");
+    EXPECT_EQ(error_of([&] { synthesize(*make_source("disk", {}), 0, 1, out); }),
+              "synth: the ray count must be at least 1");
 }
 
 }  // namespace

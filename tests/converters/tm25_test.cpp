@@ -1,15 +1,15 @@
 // TM-25 codec: write -> read round trips for every flag combination the format allows, the
 // byte layout the encoder writes checked against formats.md offsets, and bad files.
 #include "converters/formats/codecs.h"
-#include "converters/rays/io.h"
 #include "converters/formats/tm25_layout.h"
+#include "converters/rays/io.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <algorithm>
 #include <functional>
 #include <numeric>
 #include <random>
@@ -25,13 +25,15 @@ uint32_t bits(float f) {
     return u;
 }
 
-template <class T> T peek(const std::string& bytes, size_t at) {
+template <class T>
+T peek(const std::string& bytes, size_t at) {
     T value;
     std::memcpy(&value, bytes.data() + at, sizeof(T));
     return value;
 }
 
-template <class T> void poke(const std::string& path, size_t at, T value) {
+template <class T>
+void poke(const std::string& path, size_t at, T value) {
     std::string bytes = test::read_file(path);
     std::memcpy(bytes.data() + at, &value, sizeof(T));
     test::write_file(path, bytes);
@@ -52,7 +54,8 @@ RayChunk make_rays(const RayHeader& h, size_t n, uint64_t first, std::mt19937& r
         if (h.has_radiant) r.radiant = 1e-5f * (1 + u(rng));
         if (h.has_luminous) r.luminous = 2e-3f * (1 + u(rng));
         if (h.spectral == SpectralKind::per_ray_wavelength) r.wavelength = 580 + 200 * u(rng);
-        if (h.spectral == SpectralKind::per_ray_table) r.spectrum = static_cast<int32_t>(rng() % h.spectral_tables.size());
+        if (h.spectral == SpectralKind::per_ray_table)
+            r.spectrum = static_cast<int32_t>(rng() % h.spectral_tables.size());
         chunk.rays.push_back(r);
         for (size_t e = 0; e < h.extras.size(); ++e) chunk.extra.push_back(u(rng) * 100);
     }
@@ -62,7 +65,8 @@ RayChunk make_rays(const RayHeader& h, size_t n, uint64_t first, std::mt19937& r
 SpectralTable table(std::vector<float> wavelength) {
     SpectralTable t;
     t.wavelength = wavelength;
-    for (size_t k = 0; k < wavelength.size(); ++k) t.weight.push_back(0.25f * static_cast<float>(k % 5));
+    for (size_t k = 0; k < wavelength.size(); ++k)
+        t.weight.push_back(0.25f * static_cast<float>(k % 5));
     return t;
 }
 
@@ -73,13 +77,14 @@ RayHeader base_header() {
     h.stated_luminous = 42.5;
     h.creation_method = 1;
     h.creation_date = "2024-05-06 07:08:09";
-    h.text = {"LED µ-chip", "Maker Ω GmbH", "", "rayset test", "Goniometer 𝜆", "", "25 °C, 350 mA", "", "ref"};
+    h.text = {"LED µ-chip", "Maker Ω GmbH",  "", "rayset test", "Goniometer 𝜆",
+              "",           "25 °C, 350 mA", "", "ref"};
     return h;
 }
 
 // Writes `rays` rays in three uneven chunks; returns what the encoder dropped.
-std::vector<std::string> write_file_of(const std::string& path, const RayHeader& h, std::vector<RayChunk>& written,
-                                       size_t rays = 1000) {
+std::vector<std::string> write_file_of(const std::string& path, const RayHeader& h,
+                                       std::vector<RayChunk>& written, size_t rays = 1000) {
     std::mt19937 rng(1234);
     auto encoder = create_tm25(path, h);
     written.clear();
@@ -99,12 +104,14 @@ std::vector<std::string> write_file_of(const std::string& path, const RayHeader&
 std::vector<size_t> decoded_order(const std::vector<ExtraColumn>& written) {
     std::vector<size_t> order(written.size());
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return written[a].kind < written[b].kind; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return written[a].kind < written[b].kind; });
     return order;
 }
 
 // Reads every ray in chunks of 333 and checks them bit for bit against what was written.
-void expect_rays_equal(RayDecoder& decoder, const std::vector<RayChunk>& written, const RayHeader& h) {
+void expect_rays_equal(RayDecoder& decoder, const std::vector<RayChunk>& written,
+                       const RayHeader& h) {
     std::vector<Ray> want;
     std::vector<float> want_extra;
     for (const auto& c : written) {
@@ -133,7 +140,9 @@ void expect_rays_equal(RayDecoder& decoder, const std::vector<RayChunk>& written
             ASSERT_EQ(bits(a.wavelength), bits(b.wavelength));
             ASSERT_EQ(a.spectrum, table_index ? b.spectrum : -1);
             for (size_t e = 0; e < extras; ++e)
-                ASSERT_EQ(bits(chunk.extra[i * extras + e]), bits(want_extra[got * extras + order[e]])) << "extra " << e;
+                ASSERT_EQ(bits(chunk.extra[i * extras + e]),
+                          bits(want_extra[got * extras + order[e]]))
+                    << "extra " << e;
         }
     }
     EXPECT_EQ(got, want.size());
@@ -177,14 +186,27 @@ struct Case {
 std::vector<Case> cases() {
     return {
         {"radiant", [](RayHeader&) {}, {1, 1, 1, 0, 0, 0, 0, 0}, 36288},
-        {"luminous", [](RayHeader& h) { h.has_radiant = false, h.has_luminous = true; }, {1, 1, 0, 0, 1, 0, 0, 0}, 36288},
-        {"both_fluxes", [](RayHeader& h) { h.has_luminous = true; }, {1, 1, 1, 0, 1, 0, 0, 0}, 36288},
+        {"luminous",
+         [](RayHeader& h) { h.has_radiant = false, h.has_luminous = true; },
+         {1, 1, 0, 0, 1, 0, 0, 0},
+         36288},
+        {"both_fluxes",
+         [](RayHeader& h) { h.has_luminous = true; },
+         {1, 1, 1, 0, 1, 0, 0, 0},
+         36288},
         {"single_wavelength",
-         [](RayHeader& h) { h.spectral = SpectralKind::single_wavelength, h.single_wavelength = 455.5f; },
-         {1, 1, 1, 0, 0, 0, 0, 0}, 36288},
+         [](RayHeader& h) {
+             h.spectral = SpectralKind::single_wavelength, h.single_wavelength = 455.5f;
+         },
+         {1, 1, 1, 0, 0, 0, 0, 0},
+         36288},
         {"per_ray_wavelength",
-         [](RayHeader& h) { h.spectral = SpectralKind::per_ray_wavelength, h.min_wavelength = 380, h.max_wavelength = 780; },
-         {1, 1, 1, 1, 0, 0, 0, 0}, 36288},
+         [](RayHeader& h) {
+             h.spectral = SpectralKind::per_ray_wavelength, h.min_wavelength = 380,
+             h.max_wavelength = 780;
+         },
+         {1, 1, 1, 1, 0, 0, 0, 0},
+         36288},
         // 76 points: 4 + 608 = 612 bytes padded to 640, as in the OSRAM files.
         {"shared_table",
          [](RayHeader& h) {
@@ -193,14 +215,17 @@ std::vector<Case> cases() {
              h.spectral = SpectralKind::shared_table;
              h.spectral_tables = {table(w)};
          },
-         {1, 1, 1, 0, 0, 0, 0, 0}, 36928},
+         {1, 1, 1, 0, 0, 0, 0, 0},
+         36928},
         // 3 tables: 28 + 20 + 44 = 92 bytes padded to 96.
         {"per_ray_table",
          [](RayHeader& h) {
              h.spectral = SpectralKind::per_ray_table;
-             h.spectral_tables = {table({450, 460, 470}), table({600, 610}), table({380, 400, 420, 440, 460})};
+             h.spectral_tables = {table({450, 460, 470}), table({600, 610}),
+                                  table({380, 400, 420, 440, 460})};
          },
-         {1, 1, 1, 0, 0, 0, 0, 1}, 36384},
+         {1, 1, 1, 0, 0, 0, 0, 1},
+         36384},
         // Stokes + 2 labelled columns (1024 bytes) + 9 code points of text (padded to 64 bytes).
         {"stokes_additional",
          [](RayHeader& h) {
@@ -209,13 +234,15 @@ std::vector<Case> cases() {
              h.extras.push_back({ExtraKind::additional, "Ωmega"});
              h.additional_text = "µ-notes 1";
          },
-         {1, 1, 1, 0, 0, 1, 0, 0}, 36288 + 1024 + 64},
+         {1, 1, 1, 0, 0, 1, 0, 0},
+         36288 + 1024 + 64},
         {"tristimulus",
          [](RayHeader& h) {
              h.has_radiant = false, h.has_luminous = true;
              h.extras = {{ExtraKind::tristimulus_x, ""}, {ExtraKind::tristimulus_z, ""}};
          },
-         {1, 1, 0, 0, 1, 0, 1, 0}, 36288},
+         {1, 1, 0, 0, 1, 0, 1, 0},
+         36288},
         // Everything at once that may go together: per-ray tables, Stokes, an additional column.
         {"all_radiant_columns",
          [](RayHeader& h) {
@@ -225,7 +252,8 @@ std::vector<Case> cases() {
              for (int k = 0; k < 6; ++k) h.extras.push_back({static_cast<ExtraKind>(k), ""});
              h.additional_text = "exactly8";
          },
-         {1, 1, 1, 0, 0, 1, 0, 1}, 36288 + 32 + 512 + 32},
+         {1, 1, 1, 0, 0, 1, 0, 1},
+         36288 + 32 + 512 + 32},
     };
 }
 
@@ -241,16 +269,18 @@ TEST(Tm25, RoundTripEveryFlagCombination) {
 
         // The bytes, read against formats.md offsets rather than through the decoder.
         std::string bytes = test::read_file(path);
-        int columns = 6 + c.flags[2] + c.flags[3] + c.flags[4] + 6 * c.flags[5] + 2 * c.flags[6] + c.flags[7];
+        int columns =
+            6 + c.flags[2] + c.flags[3] + c.flags[4] + 6 * c.flags[5] + 2 * c.flags[6] + c.flags[7];
         for (const auto& e : h.extras) columns += e.kind == ExtraKind::additional;
         ASSERT_EQ(bytes.size(), c.data_start + 1000u * 4 * columns);
         EXPECT_EQ(bytes.substr(0, 4), "TM25");
         EXPECT_EQ(peek<int32_t>(bytes, 4), 2013);
         EXPECT_EQ(peek<uint64_t>(bytes, 20), 1000u);
-        for (int f = 0; f < 8; ++f) EXPECT_EQ(peek<int32_t>(bytes, 256 + 4 * f), c.flags[f]) << "flag " << f;
-        EXPECT_EQ(peek<char32_t>(bytes, 288 + 4 * 4), U'µ');       // name "LED µ-chip"
-        EXPECT_EQ(peek<char32_t>(bytes, 4288 + 4 * 6), U'Ω');      // manufacturer "Maker Ω GmbH"
-        EXPECT_EQ(peek<char32_t>(bytes, 16288 + 4 * 11), U'𝜆');    // equipment "Goniometer 𝜆"
+        for (int f = 0; f < 8; ++f)
+            EXPECT_EQ(peek<int32_t>(bytes, 256 + 4 * f), c.flags[f]) << "flag " << f;
+        EXPECT_EQ(peek<char32_t>(bytes, 288 + 4 * 4), U'µ');     // name "LED µ-chip"
+        EXPECT_EQ(peek<char32_t>(bytes, 4288 + 4 * 6), U'Ω');    // manufacturer "Maker Ω GmbH"
+        EXPECT_EQ(peek<char32_t>(bytes, 16288 + 4 * 11), U'𝜆');  // equipment "Goniometer 𝜆"
 
         auto decoder = open_tm25(path);
         const RayHeader& got = decoder->header();
@@ -381,7 +411,8 @@ TEST(Tm25, Utf32ConversionCoversEveryEncodingLength) {
     EXPECT_EQ(tm25::utf8_to_utf32(utf8, back), std::string::npos);
     EXPECT_EQ(back, points);
     // Overlong, surrogate, past U+10FFFF, cut short, stray continuation byte.
-    for (const char* bad : {"ab\xC0\x80", "ab\xED\xA0\x80", "ab\xF4\x90\x80\x80", "ab\xE2\x82", "ab\x80"})
+    for (const char* bad :
+         {"ab\xC0\x80", "ab\xED\xA0\x80", "ab\xF4\x90\x80\x80", "ab\xE2\x82", "ab\x80"})
         EXPECT_EQ(tm25::utf8_to_utf32(bad, back), 2u) << bad;
     const std::u32string surrogate = {0x41, 0xDC00};
     EXPECT_EQ(tm25::utf32_to_utf8(surrogate.data(), 2, utf8), 1u);

@@ -14,7 +14,8 @@ namespace {
 
 using test::ScratchDir;
 
-template <class F> std::string error_of(F&& f) {
+template <class F>
+std::string error_of(F&& f) {
     try {
         f();
     } catch (const Error& e) {
@@ -25,7 +26,8 @@ template <class F> std::string error_of(F&& f) {
 }
 
 void expect_mentions(const std::string& message, std::initializer_list<std::string> parts) {
-    for (const auto& p : parts) EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
+    for (const auto& p : parts)
+        EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
 }
 
 uint32_t bits(float f) {
@@ -180,7 +182,8 @@ TEST(ZemaxBinary, SpectralRoundTripKeepsWavelengthsToAFloatRounding) {
     ScratchDir dir;
     const auto rays = sample_rays(200, true);
     const std::string path = dir.file("out.sdf");
-    auto encoder = create_zemax_binary(path, radiant_header(rays, SpectralKind::per_ray_wavelength));
+    auto encoder =
+        create_zemax_binary(path, radiant_header(rays, SpectralKind::per_ray_wavelength));
     write_all(*encoder, rays);
     auto decoder = open_zemax_binary(path);
     EXPECT_EQ(decoder->header().spectral, SpectralKind::per_ray_wavelength);
@@ -236,7 +239,8 @@ TEST(ZemaxBinary, SingleWavelengthGoesInTheHeaderAndLumensSetFluxType1) {
     EXPECT_EQ(r.spectral, SpectralKind::single_wavelength);
     EXPECT_EQ(r.single_wavelength, 550.0f);
     const auto back = read_all(*decoder);
-    for (size_t i = 0; i < rays.size(); ++i) EXPECT_EQ(bits(back[i].luminous), bits(rays[i].luminous));
+    for (size_t i = 0; i < rays.size(); ++i)
+        EXPECT_EQ(bits(back[i].luminous), bits(rays[i].luminous));
 }
 
 TEST(ZemaxBinary, WriterReportsWhatZemaxCannotHoldAndConvertsMicrometres) {
@@ -339,10 +343,12 @@ TEST(ZemaxBinary, UnfinishedWriterLeavesNoFile) {
 TEST(ZemaxBinary, WriterRefusesRaysWithoutFluxOrWavelength) {
     ScratchDir dir;
     RayHeader none;
-    expect_mentions(error_of([&] { create_zemax_binary(dir.file("a.dat"), none); }), {"a.dat", "neither radiant nor luminous"});
+    expect_mentions(error_of([&] { create_zemax_binary(dir.file("a.dat"), none); }),
+                    {"a.dat", "neither radiant nor luminous"});
     auto rays = sample_rays(3, true);
     rays[2].wavelength = kUnknown;
-    auto encoder = create_zemax_binary(dir.file("b.sdf"), radiant_header(rays, SpectralKind::per_ray_wavelength));
+    auto encoder = create_zemax_binary(dir.file("b.sdf"),
+                                       radiant_header(rays, SpectralKind::per_ray_wavelength));
     expect_mentions(error_of([&] { write_all(*encoder, rays); }), {"b.sdf", "ray 3", "wavelength"});
 }
 
@@ -362,18 +368,33 @@ ZemaxFile two_rays() {
 
 TEST(ZemaxBinary, BadInputNamesFileAndOffset) {
     const BadCase cases[] = {
-        {"identifier", [](ZemaxFile& f) { f.identifier = 1011; }, {"byte 0:", "identifier 1011", "1010"}},
-        {"short header", [](ZemaxFile& f) { f.records.clear(), f.count = 0, f.cut = 100; }, {"byte 0:", "208-byte", "truncated"}},
-        {"count larger than file", [](ZemaxFile& f) { f.count = 5; }, {"byte 4:", "5 rays", "140 bytes", "264 bytes", "56 bytes"}},
-        {"truncated record", [](ZemaxFile& f) { f.cut = 10; }, {"byte 236:", "ray 2", "18 of its 28", "254 bytes"}},
-        {"trailing bytes", [](ZemaxFile& f) { f.count = 1; }, {"byte 236:", "28 bytes follow", "room for 1 more"}},
+        {"identifier",
+         [](ZemaxFile& f) { f.identifier = 1011; },
+         {"byte 0:", "identifier 1011", "1010"}},
+        {"short header",
+         [](ZemaxFile& f) { f.records.clear(), f.count = 0, f.cut = 100; },
+         {"byte 0:", "208-byte", "truncated"}},
+        {"count larger than file",
+         [](ZemaxFile& f) { f.count = 5; },
+         {"byte 4:", "5 rays", "140 bytes", "264 bytes", "56 bytes"}},
+        {"truncated record",
+         [](ZemaxFile& f) { f.cut = 10; },
+         {"byte 236:", "ray 2", "18 of its 28", "254 bytes"}},
+        {"trailing bytes",
+         [](ZemaxFile& f) { f.count = 1; },
+         {"byte 236:", "28 bytes follow", "room for 1 more"}},
         {"units", [](ZemaxFile& f) { f.units = 7; }, {"byte 136:", "units code 7"}},
         {"ray format", [](ZemaxFile& f) { f.ray_format = 1; }, {"byte 192:", "ray format 1"}},
         {"flux type", [](ZemaxFile& f) { f.flux_type = 2; }, {"byte 196:", "flux type 2"}},
-        {"lumens with spectral", [](ZemaxFile& f) { f.flux_type = 1, f.ray_format = 2, f.records.resize(16); },
+        {"lumens with spectral",
+         [](ZemaxFile& f) { f.flux_type = 1, f.ray_format = 2, f.records.resize(16); },
          {"byte 196:", "lumens", "ray format 2"}},
-        {"wavelength", [](ZemaxFile& f) { f.wavelength_um = -0.5f; }, {"byte 116:", "wavelength -0.5"}},
-        {"source flux", [](ZemaxFile& f) { f.source_flux = INFINITY; }, {"byte 108:", "source flux inf"}},
+        {"wavelength",
+         [](ZemaxFile& f) { f.wavelength_um = -0.5f; },
+         {"byte 116:", "wavelength -0.5"}},
+        {"source flux",
+         [](ZemaxFile& f) { f.source_flux = INFINITY; },
+         {"byte 108:", "source flux inf"}},
     };
     for (const BadCase& c : cases) {
         SCOPED_TRACE(c.name);

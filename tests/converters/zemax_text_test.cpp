@@ -15,7 +15,8 @@ namespace {
 
 using test::ScratchDir;
 
-template <class F> std::string error_of(F&& f) {
+template <class F>
+std::string error_of(F&& f) {
     try {
         f();
     } catch (const Error& e) {
@@ -26,7 +27,8 @@ template <class F> std::string error_of(F&& f) {
 }
 
 void expect_mentions(const std::string& message, std::initializer_list<std::string> parts) {
-    for (const auto& p : parts) EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
+    for (const auto& p : parts)
+        EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
 }
 
 uint32_t bits(float f) {
@@ -60,7 +62,8 @@ std::vector<Ray> sample_rays(size_t n, bool wavelength) {
     return rays;
 }
 
-std::string write_rays(const ScratchDir& dir, const std::vector<Ray>& rays, SpectralKind spectral, uint64_t announced) {
+std::string write_rays(const ScratchDir& dir, const std::vector<Ray>& rays, SpectralKind spectral,
+                       uint64_t announced) {
     RayHeader h;
     h.has_radiant = true;
     h.spectral = spectral;
@@ -131,10 +134,11 @@ TEST(ZemaxText, CountIsPatchedToTheRaysWritten) {
 TEST(ZemaxText, ToleratesWhitespaceAndHandMadeFirstLines) {
     ScratchDir dir;
     const std::string path = dir.file("hand.txt");
-    test::write_file(path, "\r\n 2.000000\t1.000000 0.000000 0.000000 0.000000 0 0 0\r\n"
-                           "1 2 3\t0 0 1  0.5\t0.55\r\n"
-                           "\r\n"
-                           "  -1e-3 +2 3 1 0 0 2.5e2 0.6  \r\n\r\n");
+    test::write_file(path,
+                     "\r\n 2.000000\t1.000000 0.000000 0.000000 0.000000 0 0 0\r\n"
+                     "1 2 3\t0 0 1  0.5\t0.55\r\n"
+                     "\r\n"
+                     "  -1e-3 +2 3 1 0 0 2.5e2 0.6  \r\n\r\n");
     auto decoder = open_zemax_text(path);
     EXPECT_EQ(decoder->header().unit, LengthUnit::inch);
     EXPECT_EQ(decoder->header().spectral, SpectralKind::per_ray_wavelength);
@@ -163,13 +167,13 @@ TEST(ZemaxText, SniffsOnlyZemaxText) {
     const std::string good = "2 4 0 0\n0 0 0 0 0 1 1\n0 0 0 0 0 1 1\n";
     EXPECT_TRUE(sniff_zemax_text(head(good), good.size()));
     const std::string bad[] = {
-        "# LightTools\n",                     // another format
+        "# LightTools\n",                        // another format
         "x,y,z,kx,ky,kz,flux\n0,0,0,0,0,1,1\n",  // CSV
-        "2 4 0 0 1\n0 0 0 0 0 1 1\n",         // padding that is not 0
-        "2 9 0 0\n0 0 0 0 0 1 1\n",           // unit code 9
-        "2 4 1 0\n0 0 0 0 0 1 1\n",           // ray format 1
-        "2 4 0 0\n0 0 0 0 0 1\n",             // a 6-column ray
-        "380 0.001\n",                        // a spectrum
+        "2 4 0 0 1\n0 0 0 0 0 1 1\n",            // padding that is not 0
+        "2 9 0 0\n0 0 0 0 0 1 1\n",              // unit code 9
+        "2 4 1 0\n0 0 0 0 0 1 1\n",              // ray format 1
+        "2 4 0 0\n0 0 0 0 0 1\n",                // a 6-column ray
+        "380 0.001\n",                           // a spectrum
     };
     for (const auto& b : bad) EXPECT_FALSE(sniff_zemax_text(head(b), b.size())) << b;
 }
@@ -196,9 +200,11 @@ TEST(ZemaxText, BadInputNamesFileLineAndColumn) {
         {"2 4 0 1\n0 0 0 0 0 1 1 0.5\n", {"line 2:", "8 columns", "lumens"}},
         {"2 4 0 0\n0 0 0 0 0 1\n", {"line 2:", "6 columns"}},
         {"2 4 0 0\n0 0 0 0 0 1 1\n0 0 0 0 0 1 1 1\n", {"line 3:", "8 columns, expected 7"}},
-        {"2 4 0 0\n0 0 0 0 0 1 1\n0 0 abc 0 0 1 1\n", {"line 3, column 5:", "column 3 (z) 'abc' is not a number"}},
+        {"2 4 0 0\n0 0 0 0 0 1 1\n0 0 abc 0 0 1 1\n",
+         {"line 3, column 5:", "column 3 (z) 'abc' is not a number"}},
         {"2 4 0 0\n0 0 0 0 0 1 1\n0 0 0 0 0 1 1,5\n", {"line 3, column 13:", "(flux) '1,5'"}},
-        {"2 4 0 0\n0 0 0 0 0 1 1\n0 0 0 0 0 1 nan\n", {"line 3, column 13:", "not a finite number"}},
+        {"2 4 0 0\n0 0 0 0 0 1 1\n0 0 0 0 0 1 nan\n",
+         {"line 3, column 13:", "not a finite number"}},
         {"2 4 0 0\n0 0 0 0 0 1 1\n0 1e39 0 0 0 1 1\n", {"line 3, column 3:", "out of float range"}},
         {"3 4 0 0\n0 0 0 0 0 1 1\n\n0 0 0 0 0 1 1\n", {"line 4:", "ends after 2 rays", "states 3"}},
         {"1 4 0 0\n0 0 0 0 0 1 1\n0 0 0 0 0 1 1\n", {"line 3:", "more rays", "states"}},

@@ -21,10 +21,13 @@ namespace rayset::lightmodel {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 Vec3 random_in_box(Pcg32& rng, Vec3 lower, Vec3 upper) {
-    return {lower.x + rng.uniform() * (upper.x - lower.x), lower.y + rng.uniform() * (upper.y - lower.y),
+    return {lower.x + rng.uniform() * (upper.x - lower.x),
+            lower.y + rng.uniform() * (upper.y - lower.y),
             lower.z + rng.uniform() * (upper.z - lower.z)};
 }
 
@@ -80,7 +83,8 @@ TEST(BodyDensityLattice, CountsWeightsAndGridTransform) {
     EXPECT_EQ(grid->getName(), "density");
     for (int i = 0; i < 100; ++i) {
         const Vec3 p = points[size_t(i)];
-        const openvdb::Coord ijk = grid->transform().worldToIndexCellCentered(openvdb::Vec3d(p.x, p.y, p.z));
+        const openvdb::Coord ijk =
+            grid->transform().worldToIndexCellCentered(openvdb::Vec3d(p.x, p.y, p.z));
         const Coord c = frame.cell_of(p);
         EXPECT_EQ(ijk, openvdb::Coord(c[0], c[1], c[2]));
         EXPECT_EQ(grid->tree().getValue(ijk), float(expected[size_t(frame.linear(c))]));
@@ -111,7 +115,8 @@ TEST(BodyDensityLattice, BoundaryCellsOfASolidBoxAreItsSurfaceCells) {
             for (int y = lo[1]; y <= hi[1]; ++y)
                 for (int x = lo[0]; x <= hi[0]; ++x)
                     for (int k = 0; k < 3; ++k)
-                        points.push_back(random_in_box(rng, {x + 0.01, y + 0.01, z + 0.01}, {x + 0.99, y + 0.99, z + 0.99}));
+                        points.push_back(random_in_box(rng, {x + 0.01, y + 0.01, z + 0.01},
+                                                       {x + 0.99, y + 0.99, z + 0.99}));
         return points;
     };
     DensityLattice inner(frame);
@@ -120,11 +125,13 @@ TEST(BodyDensityLattice, BoundaryCellsOfASolidBoxAreItsSurfaceCells) {
     const auto cells = inner.boundary_cells();
     EXPECT_EQ(cells.size(), size_t(144 - 4 * 4 * 2));
     for (const Coord& c : cells) {
-        const bool on_surface = c[0] == 2 || c[0] == 7 || c[1] == 1 || c[1] == 6 || c[2] == 1 || c[2] == 4;
+        const bool on_surface =
+            c[0] == 2 || c[0] == 7 || c[1] == 1 || c[1] == 6 || c[2] == 1 || c[2] == 4;
         EXPECT_TRUE(on_surface) << c[0] << " " << c[1] << " " << c[2];
     }
-    EXPECT_TRUE(std::is_sorted(cells.begin(), cells.end(),
-                               [&](const Coord& a, const Coord& b) { return frame.linear(a) < frame.linear(b); }));
+    EXPECT_TRUE(std::is_sorted(cells.begin(), cells.end(), [&](const Coord& a, const Coord& b) {
+        return frame.linear(a) < frame.linear(b);
+    }));
 
     DensityLattice whole(frame);
     whole.add(fill({0, 0, 0}, {9, 7, 5}));
@@ -135,7 +142,8 @@ TEST(BodyDensityLattice, EveryCellOfAFlatLayerIsABoundaryCell) {
     const LatticeFrame frame = frame_over({0, 0, 0}, {10, 8, 6}, 10);
     Pcg32 rng(5);
     std::vector<Vec3> points;
-    for (int i = 0; i < 5000; ++i) points.push_back(random_in_box(rng, {1.001, 2.001, 3.5}, {8.999, 5.999, 3.5}));
+    for (int i = 0; i < 5000; ++i)
+        points.push_back(random_in_box(rng, {1.001, 2.001, 3.5}, {8.999, 5.999, 3.5}));
     DensityLattice lattice(frame);
     lattice.add(points);
     EXPECT_EQ(lattice.occupied_cell_count(), 8u * 4u);
@@ -159,9 +167,10 @@ TEST(BodyDensityLattice, ParallelBuildByMergingThreadLatticesMatchesSerial) {
 
     start = Clock::now();
     tbb::enumerable_thread_specific<DensityLattice> locals([&] { return DensityLattice(frame); });
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 65536), [&](const tbb::blocked_range<size_t>& r) {
-        locals.local().add(points.data() + r.begin(), r.size());
-    });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 65536),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                          locals.local().add(points.data() + r.begin(), r.size());
+                      });
     DensityLattice merged(frame);
     for (DensityLattice& local : locals) merged.merge(local);
     const double parallel_s = seconds_since(start);
@@ -169,10 +178,12 @@ TEST(BodyDensityLattice, ParallelBuildByMergingThreadLatticesMatchesSerial) {
     start = Clock::now();
     const auto boundary = serial.boundary_cells();
     const double boundary_s = seconds_since(start);
-    std::printf("[ density ] %zu points: serial add %.1f ns/point, %zu thread lattices + merge %.1f ns/point; "
-                "%llu occupied cells, boundary cells in %.1f ms\n",
-                n, 1e9 * serial_s / n, locals.size(), 1e9 * parallel_s / n,
-                (unsigned long long)serial.occupied_cell_count(), 1e3 * boundary_s);
+    std::printf(
+        "[ density ] %zu points: serial add %.1f ns/point, %zu thread lattices + merge %.1f "
+        "ns/point; "
+        "%llu occupied cells, boundary cells in %.1f ms\n",
+        n, 1e9 * serial_s / n, locals.size(), 1e9 * parallel_s / n,
+        (unsigned long long)serial.occupied_cell_count(), 1e3 * boundary_s);
     EXPECT_EQ(merged.total(), double(n));
     EXPECT_EQ(merged.occupied_cell_count(), serial.occupied_cell_count());
     for (const Coord& c : boundary) EXPECT_EQ(merged.count(c), serial.count(c));
@@ -186,7 +197,10 @@ double coverage(const std::vector<Sphere>& spheres, const std::vector<Vec3>& sam
     for (const Vec3& p : samples)
         for (const Sphere& s : spheres) {
             const double dx = p.x - s.x, dy = p.y - s.y, dz = p.z - s.z;
-            if (dx * dx + dy * dy + dz * dz <= double(s.r) * s.r) { ++covered; break; }
+            if (dx * dx + dy * dy + dz * dz <= double(s.r) * s.r) {
+                ++covered;
+                break;
+            }
         }
     return double(covered) / double(samples.size());
 }
@@ -206,7 +220,9 @@ TEST(BodySphereFit, SpheresCoverTheirSamples) {
         const Vec3 tilt{rng.uniform() - 0.5, rng.uniform() - 0.5, 1};
         for (Vec3& p : samples) {
             p = random_in_box(rng, lower, lower + Vec3{h, h, h});
-            if (trial % 2) p.z = lower.z + 0.5 * h + 0.3 * (tilt.x * (p.x - lower.x) + tilt.y * (p.y - lower.y));
+            if (trial % 2)
+                p.z =
+                    lower.z + 0.5 * h + 0.3 * (tilt.x * (p.x - lower.x) + tilt.y * (p.y - lower.y));
         }
         const auto start = Clock::now();
         const auto spheres = fit_cell_spheres(lower, h, samples, k);
@@ -216,8 +232,10 @@ TEST(BodySphereFit, SpheresCoverTheirSamples) {
         EXPECT_LE(spheres.size(), size_t(k));
         worst = std::min(worst, coverage(spheres, samples));
     }
-    std::printf("[ fit ] worst coverage of a cell's samples %.4f; %.0f us per cell (1..64 samples, K 1..16)\n",
-                worst, 1e6 * seconds / double(cells));
+    std::printf(
+        "[ fit ] worst coverage of a cell's samples %.4f; %.0f us per cell (1..64 samples, K "
+        "1..16)\n",
+        worst, 1e6 * seconds / double(cells));
     EXPECT_GE(worst, 0.99);
 }
 
@@ -239,8 +257,10 @@ TEST(BodySphereFit, AFlatLayerGivesAThinLayerOfSpheres) {
         worst = std::min(worst, coverage(spheres, samples));
         EXPECT_EQ(spheres.size(), 16u);
     }
-    std::printf("[ fit ] flat layer, 64 samples, K = 16: thickness at most %.3f h, coverage %.4f, %.0f us per cell\n",
-                thickest / h, worst, 1e6 * seconds / trials);
+    std::printf(
+        "[ fit ] flat layer, 64 samples, K = 16: thickness at most %.3f h, coverage %.4f, %.0f us "
+        "per cell\n",
+        thickest / h, worst, 1e6 * seconds / trials);
     EXPECT_LT(thickest, h / 3);
     EXPECT_GE(worst, 0.99);
 }
@@ -257,13 +277,15 @@ TEST(BodySphereFit, AFlatLayerOfSpheresLeavesAlmostNoHoles) {
         for (int cx = -1; cx <= 1; ++cx)
             for (int cy = -1; cy <= 1; ++cy) {
                 std::vector<Vec3> samples(64);
-                for (Vec3& p : samples) p = {(cx + rng.uniform()) * h, (cy + rng.uniform()) * h, z0};
+                for (Vec3& p : samples)
+                    p = {(cx + rng.uniform()) * h, (cy + rng.uniform()) * h, z0};
                 const auto cell = fit_cell_spheres({cx * h, cy * h, 0}, h, samples, 16);
                 spheres.insert(spheres.end(), cell.begin(), cell.end());
             }
         std::vector<Vec3> grid;
         for (int i = 0; i < 100; ++i)
-            for (int j = 0; j < 100; ++j) grid.push_back({(i + 0.5) / 100 * h, (j + 0.5) / 100 * h, z0});
+            for (int j = 0; j < 100; ++j)
+                grid.push_back({(i + 0.5) / 100 * h, (j + 0.5) / 100 * h, z0});
         covered += coverage(spheres, grid) / blocks;
     }
     std::printf("[ fit ] flat layer: %.4f of the surface inside the spheres\n", covered);
@@ -287,8 +309,9 @@ TEST(BodySphereFit, CeresFindsTheMinimumOfTheStatedSpread) {
     auto spheres = fit_cell_spheres({0, 0, 0}, 1, samples, 1, options);
     ASSERT_EQ(spheres.size(), 1u);
     Vec3 centre{spheres[0].x, spheres[0].y, spheres[0].z};
-    std::printf("[ fit ] spread minimum, converged: centre off by %.2e L, radius %.5f (expected %.5f)\n",
-                length(centre - expected) / big_l, spheres[0].r, big_l - c);
+    std::printf(
+        "[ fit ] spread minimum, converged: centre off by %.2e L, radius %.5f (expected %.5f)\n",
+        length(centre - expected) / big_l, spheres[0].r, big_l - c);
     EXPECT_LT(length(centre - expected), 1e-4 * big_l);
     EXPECT_NEAR(spheres[0].r, big_l - c, 1e-4 * big_l);
     EXPECT_EQ(coverage(spheres, samples), 1.0);
@@ -398,7 +421,8 @@ struct RandomBody {
         Pcg32 rng(seed);
         for (int i = 0; i < count; ++i) {
             const Vec3 c = random_in_box(rng, {0, 0, 0}, {10, 10, 10});
-            spheres.push_back({float(c.x), float(c.y), float(c.z), float(0.1 + 0.9 * rng.uniform())});
+            spheres.push_back(
+                {float(c.x), float(c.y), float(c.z), float(0.1 + 0.9 * rng.uniform())});
         }
     }
 };
@@ -414,7 +438,8 @@ TEST(BodySphereBody, CrossedSpheresAgreeWithBruteForce) {
     for (int i = 0; i < 3000; ++i) {
         const Vec3 o = random_in_box(rng, {-2, -2, -2}, {12, 12, 12});
         const Vec3 d = normalized(random_in_box(rng, {-1, -1, -1}, {1, 1, 1}));
-        const double tmax = i % 4 == 0 ? std::numeric_limits<double>::infinity() : 15 * rng.uniform();
+        const double tmax =
+            i % 4 == 0 ? std::numeric_limits<double>::infinity() : 15 * rng.uniform();
         body.crossed_spheres(o, d, tmax, crossed);
         EXPECT_TRUE(std::is_sorted(crossed.begin(), crossed.end()));
         EXPECT_TRUE(std::adjacent_find(crossed.begin(), crossed.end()) == crossed.end());
@@ -424,13 +449,17 @@ TEST(BodySphereBody, CrossedSpheresAgreeWithBruteForce) {
             const double t = std::clamp(dot(c - o, d), 0.0, tmax);
             const Vec3 e = o + t * d - c;
             const double r2 = double(s.r) * s.r, d2 = dot(e, e);
-            if (std::abs(d2 - r2) < 1e-4 * r2) { ++borderline; continue; }
+            if (std::abs(d2 - r2) < 1e-4 * r2) {
+                ++borderline;
+                continue;
+            }
             const bool listed = std::binary_search(crossed.begin(), crossed.end(), k);
             EXPECT_EQ(listed, d2 < r2) << "ray " << i << " sphere " << k;
             total += d2 < r2;
         }
     }
-    std::printf("[ body ] crossed_spheres: %zu crossings checked, %zu borderline pairs skipped\n", total, borderline);
+    std::printf("[ body ] crossed_spheres: %zu crossings checked, %zu borderline pairs skipped\n",
+                total, borderline);
     EXPECT_GT(total, 1000u);
 }
 
@@ -479,7 +508,8 @@ TEST(BodySphereBody, IntersectFindsTheFirstEntryIntoTheUnion) {
         ++checked;
         from_inside += origin_inside;
     }
-    std::printf("[ body ] intersect: %d hits checked, %d of them from inside the body\n", checked, from_inside);
+    std::printf("[ body ] intersect: %d hits checked, %d of them from inside the body\n", checked,
+                from_inside);
     EXPECT_GT(checked, 1000);
     EXPECT_GT(from_inside, 100);
 }
@@ -495,7 +525,8 @@ struct Silhouette {
 // Orthographic rays along -w over a square of half-width 1.1 mm; truth: the ellipse
 // (a / cos theta)^2 + b^2 <= 1 that the unit disk in z = 0 projects to.
 Silhouette silhouette_iou(const SphereBody& body, double theta, double pixel) {
-    const Vec3 w{std::sin(theta), 0, std::cos(theta)}, u{std::cos(theta), 0, -std::sin(theta)}, v{0, 1, 0};
+    const Vec3 w{std::sin(theta), 0, std::cos(theta)}, u{std::cos(theta), 0, -std::sin(theta)},
+        v{0, 1, 0};
     const int n = int(std::ceil(2.2 / pixel));
     std::vector<uint8_t> both(size_t(n) * n), either(size_t(n) * n), truth(size_t(n) * n);
     tbb::parallel_for(0, n, [&](int row) {
@@ -511,7 +542,8 @@ Silhouette silhouette_iou(const SphereBody& body, double theta, double pixel) {
         }
     });
     size_t intersection = 0, uni = 0, t = 0;
-    for (size_t i = 0; i < both.size(); ++i) intersection += both[i], uni += either[i], t += truth[i];
+    for (size_t i = 0; i < both.size(); ++i)
+        intersection += both[i], uni += either[i], t += truth[i];
     return {double(intersection) / double(uni), t};
 }
 
@@ -546,8 +578,10 @@ TEST(BodyEndToEnd, LambertianDiskSilhouetteMatchesTheTrueDisk) {
         if (it == slot.end()) continue;
         auto& s = samples[it->second];
         const uint64_t index = seen[it->second]++;
-        if (s.size() < kSamples) s.push_back(p);
-        else if (const uint64_t j = reservoir_rng.below(uint32_t(index + 1)); j < kSamples) s[j] = p;
+        if (s.size() < kSamples)
+            s.push_back(p);
+        else if (const uint64_t j = reservoir_rng.below(uint32_t(index + 1)); j < kSamples)
+            s[j] = p;
     }
     const double sampling_s = seconds_since(start);
 
@@ -573,15 +607,20 @@ TEST(BodyEndToEnd, LambertianDiskSilhouetteMatchesTheTrueDisk) {
     const Silhouette face_on = silhouette_iou(body, 0, pixel);
     const Silhouette oblique = silhouette_iou(body, kPi / 3, pixel);
     const double render_s = seconds_since(start);
-    std::printf("[ disk ] %zu rays, resolution %d (%d x %d x %d cells), %zu occupied, %zu boundary cells, "
-                "reference count %.0f, %zu spheres\n",
-                rays, frame.resolution(), frame.dims()[0], frame.dims()[1], frame.dims()[2],
-                size_t(density.occupied_cell_count()), boundary.size(), reference, spheres.size());
-    std::printf("[ disk ] density+boundary %.2f s, reservoir %.2f s, fit %.2f s (%.0f us per cell on %s), "
-                "Embree %.3f s, 2 silhouettes %.2f s\n",
-                density_s, sampling_s, fit_s, 1e6 * fit_s / double(boundary.size()), "2 threads", embree_s, render_s);
-    std::printf("[ disk ] silhouette IoU face-on %.4f (%zu true pixels), at 60 degrees %.4f (%zu true pixels)\n",
-                face_on.iou, face_on.true_pixels, oblique.iou, oblique.true_pixels);
+    std::printf(
+        "[ disk ] %zu rays, resolution %d (%d x %d x %d cells), %zu occupied, %zu boundary cells, "
+        "reference count %.0f, %zu spheres\n",
+        rays, frame.resolution(), frame.dims()[0], frame.dims()[1], frame.dims()[2],
+        size_t(density.occupied_cell_count()), boundary.size(), reference, spheres.size());
+    std::printf(
+        "[ disk ] density+boundary %.2f s, reservoir %.2f s, fit %.2f s (%.0f us per cell on %s), "
+        "Embree %.3f s, 2 silhouettes %.2f s\n",
+        density_s, sampling_s, fit_s, 1e6 * fit_s / double(boundary.size()), "2 threads", embree_s,
+        render_s);
+    std::printf(
+        "[ disk ] silhouette IoU face-on %.4f (%zu true pixels), at 60 degrees %.4f (%zu true "
+        "pixels)\n",
+        face_on.iou, face_on.true_pixels, oblique.iou, oblique.true_pixels);
     EXPECT_GE(face_on.iou, 0.95);
     EXPECT_GE(oblique.iou, 0.95);
 }

@@ -14,9 +14,13 @@ namespace {
 TEST(Colour, MatchingFunctionsFollowTheCieTables) {
     // CIE 1931 2-degree values (CIE 15:2004 table) at a few wavelengths; the analytic fit is
     // stated to be within a few hundredths of the peak values.
-    struct Row { double nm, x, y, z; };
-    const Row table[] = {{450, 0.3362, 0.0380, 1.7721}, {500, 0.0049, 0.3230, 0.2720},
-                         {550, 0.4334, 0.9950, 0.0087}, {600, 1.0622, 0.6310, 0.0008},
+    struct Row {
+        double nm, x, y, z;
+    };
+    const Row table[] = {{450, 0.3362, 0.0380, 1.7721},
+                         {500, 0.0049, 0.3230, 0.2720},
+                         {550, 0.4334, 0.9950, 0.0087},
+                         {600, 1.0622, 0.6310, 0.0008},
                          {650, 0.2835, 0.1070, 0.0000}};
     for (const Row& r : table) {
         const Xyz c = colour_matching(r.nm);
@@ -26,7 +30,8 @@ TEST(Colour, MatchingFunctionsFollowTheCieTables) {
     }
     // y-bar is V(lambda): the fit against the table the photometry uses, every nanometre.
     double worst = 0;
-    for (int nm = 380; nm <= 780; ++nm) worst = std::max(worst, std::fabs(colour_matching(nm).y - photopic_efficiency(nm)));
+    for (int nm = 380; nm <= 780; ++nm)
+        worst = std::max(worst, std::fabs(colour_matching(nm).y - photopic_efficiency(nm)));
     EXPECT_LT(worst, 0.03);
 }
 
@@ -63,10 +68,13 @@ TEST(Colour, SpectralColoursKeepTheirLuminanceAndHue) {
     for (int b = 0; b < bins.count; ++b) {
         const double efficacy = kMaxLuminousEfficacy * photopic_efficiency(bins.centre(b));
         const Rgb c = colour_per_flux(bin_colour_matching(bins, b), efficacy);
-        EXPECT_NEAR(luminance(c), efficacy / kRgbLumensPerWatt, 1e-9 * (1 + efficacy)) << bins.centre(b);
+        EXPECT_NEAR(luminance(c), efficacy / kRgbLumensPerWatt, 1e-9 * (1 + efficacy))
+            << bins.centre(b);
         EXPECT_GE(std::min({c.red, c.green, c.blue}), -1e-12) << bins.centre(b);
     }
-    auto colour_at = [&](double nm) { return colour_per_flux(bin_colour_matching(bins, bins.bin_of(nm)), 1); };
+    auto colour_at = [&](double nm) {
+        return colour_per_flux(bin_colour_matching(bins, bins.bin_of(nm)), 1);
+    };
     const Rgb red = colour_at(630), green = colour_at(530), blue = colour_at(460);
     EXPECT_GT(red.red, 5 * red.green);
     EXPECT_GT(red.red, 5 * red.blue);

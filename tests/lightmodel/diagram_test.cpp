@@ -12,16 +12,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <memory>
-#include <utility>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace rayset::lightmodel {
 namespace {
-
 
 double distance(Vec3 a, Vec3 b) { return length(a - b); }
 
@@ -53,7 +52,8 @@ TEST(DirectionMap, RoundTripOfRandomDirections) {
 }
 
 TEST(DirectionMap, RoundTripNearPolesEdgesAndEquator) {
-    std::vector<Vec3> directions = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0},
+    std::vector<Vec3> directions = {{0, 0, 1},       {0, 0, -1},       {1, 0, 0},
+                                    {-1, 0, 0},      {0, 1, 0},        {0, -1, 0},
                                     {-0.0, -0.0, 1}, {-0.0, -0.0, -1}, {1, -0.0, -0.0}};
     for (int k = 1; k <= 16; ++k) {
         const double gap = std::pow(10.0, -k);  // 1 - |z|
@@ -102,15 +102,19 @@ TEST(DirectionMap, PreservesArea) {
     // fraction is binomial; a 5 sigma bound fails a correct map with probability 5.7e-7 per cap
     // (seed fixed, so the outcome is in fact deterministic). Caps straddle the poles, the
     // equator and the folded edges of the lower hemisphere.
-    struct Cap { Vec3 axis; double half_angle_deg; };
-    const std::vector<Cap> caps = {{{0, 0, 1}, 30},   {{0, 0, -1}, 60},  {{1, 0, 0}, 45},
-                                   {{1, 1, -1}, 20},  {{1, 0, -1}, 50},  {{-0.3, 0.2, -1}, 10},
+    struct Cap {
+        Vec3 axis;
+        double half_angle_deg;
+    };
+    const std::vector<Cap> caps = {{{0, 0, 1}, 30},     {{0, 0, -1}, 60}, {{1, 0, 0}, 45},
+                                   {{1, 1, -1}, 20},    {{1, 0, -1}, 50}, {{-0.3, 0.2, -1}, 10},
                                    {{0.2, -1, 0.1}, 80}};
     const int samples = 1000000;
     std::vector<Vec3> directions;
     directions.reserve(samples);
     Pcg32 rng(13);
-    for (int k = 0; k < samples; ++k) directions.push_back(square_to_direction({rng.uniform(), rng.uniform()}));
+    for (int k = 0; k < samples; ++k)
+        directions.push_back(square_to_direction({rng.uniform(), rng.uniform()}));
     for (const Cap& cap : caps) {
         const Vec3 axis = normalized(cap.axis);
         const double cos_alpha = std::cos(cap.half_angle_deg * kPi / 180);
@@ -119,7 +123,8 @@ TEST(DirectionMap, PreservesArea) {
         const double expected = (1 - cos_alpha) / 2;
         const double sigma = std::sqrt(expected * (1 - expected) / samples);
         EXPECT_NEAR(double(inside) / samples, expected, 5 * sigma)
-            << "cap around " << axis.x << " " << axis.y << " " << axis.z << ", " << cap.half_angle_deg << " deg";
+            << "cap around " << axis.x << " " << axis.y << " " << axis.z << ", "
+            << cap.half_angle_deg << " deg";
     }
 }
 
@@ -132,7 +137,8 @@ TEST(DirectionMap, ContinuousAcrossFoldedEdges) {
     // equal-area property), so L = 6.138. e = 1e-6 and 1e-3 are checked; 6.2 leaves the
     // second-order terms of the larger step.
     const double gram_mean = 16 + kPi * kPi / 2, gram_half_difference = kPi * kPi / 2;
-    const double lipschitz = std::sqrt(gram_mean + std::sqrt(gram_half_difference * gram_half_difference + 256));
+    const double lipschitz =
+        std::sqrt(gram_mean + std::sqrt(gram_half_difference * gram_half_difference + 256));
     ASSERT_NEAR(lipschitz, 6.138, 1e-3);
     Pcg32 rng(14);
     for (double e : {1e-6, 1e-3}) {
@@ -151,12 +157,14 @@ TEST(DirectionMap, ContinuousAcrossFoldedEdges) {
                 const Vec2 folded = wrap_square(outside);
                 ASSERT_TRUE(folded.x >= 0 && folded.x <= 1 && folded.y >= 0 && folded.y <= 1);
                 const Vec2 inside{p.x - e * outward[s].x, p.y - e * outward[s].y};
-                worst_ratio = std::max({worst_ratio, distance(square_to_direction(folded), on_edge) / e,
-                                        distance(square_to_direction(inside), on_edge) / e});
+                worst_ratio =
+                    std::max({worst_ratio, distance(square_to_direction(folded), on_edge) / e,
+                              distance(square_to_direction(inside), on_edge) / e});
             }
         }
         EXPECT_LT(worst_ratio, 6.2) << "e = " << e;
-        std::printf("[fold] e = %g: worst step ratio %.3f (Lipschitz bound %.3f)\n", e, worst_ratio, lipschitz);
+        std::printf("[fold] e = %g: worst step ratio %.3f (Lipschitz bound %.3f)\n", e, worst_ratio,
+                    lipschitz);
         EXPECT_GT(worst_ratio, 0.5) << "e = " << e;  // the step did move the direction
     }
     // The corners all meet at -z, and a diagonal step out of a corner folds into the opposite one.
@@ -199,7 +207,8 @@ GoniometricDiagram structured_diagram(int bands, int sectors) {
     GoniometricDiagram diagram(bands, sectors);
     const auto lobe = analytic::CosineLobe::with_flux(4, 1);
     Pcg32 rng(21);
-    for (int k = 0; k < 100000; ++k) diagram.accumulate(to_vec3(lobe.sample_ray(rng).direction), 1.0);
+    for (int k = 0; k < 100000; ++k)
+        diagram.accumulate(to_vec3(lobe.sample_ray(rng).direction), 1.0);
     for (int k = 0; k < 30000; ++k) {
         const Vec3 w = uniform_direction(rng);
         if (w.z < 0 && w.x < -0.5) continue;
@@ -218,7 +227,8 @@ double integral_in_u_phi(const GoniometricDiagram& diagram, int m_u, int m_phi) 
     for (int a = 0; a < m_u; ++a) {
         const double u = -1 + (a + 0.5) * 2 / m_u;
         double row = 0;
-        for (int b = 0; b < m_phi; ++b) row += diagram.pdf(direction_at(u, (b + 0.5) * 2 * kPi / m_phi));
+        for (int b = 0; b < m_phi; ++b)
+            row += diagram.pdf(direction_at(u, (b + 0.5) * 2 * kPi / m_phi));
         sum += row;
     }
     return sum * 4 * kPi / (double(m_u) * m_phi);
@@ -230,7 +240,8 @@ double integral_on_square(const GoniometricDiagram& diagram, int m) {
     double sum = 0;
     for (int j = 0; j < m; ++j) {
         double row = 0;
-        for (int i = 0; i < m; ++i) row += diagram.pdf(square_to_direction({(i + 0.5) / m, (j + 0.5) / m}));
+        for (int i = 0; i < m; ++i)
+            row += diagram.pdf(square_to_direction({(i + 0.5) / m, (j + 0.5) / m}));
         sum += row;
     }
     return sum * kSquareToSolidAngle / (double(m) * m);
@@ -244,7 +255,8 @@ std::vector<double> square_bin_probabilities(const GoniometricDiagram& diagram, 
     for (int j = 0; j < fine; ++j)
         for (int i = 0; i < fine; ++i) {
             const Vec3 w = square_to_direction({(i + 0.5) / fine, (j + 0.5) / fine});
-            probability[size_t(j / sub) * m + i / sub] += diagram.pdf(w) * kSquareToSolidAngle / (double(fine) * fine);
+            probability[size_t(j / sub) * m + i / sub] +=
+                diagram.pdf(w) * kSquareToSolidAngle / (double(fine) * fine);
         }
     return probability;
 }
@@ -272,7 +284,8 @@ GoniometricDiagram noiseless_diagram(int bands, int sectors, Antiderivative F) {
     for (int k = 0; k < bands; ++k) {
         const double u0 = -1 + 2.0 * k / bands, u1 = -1 + 2.0 * (k + 1) / bands;
         for (int j = 0; j < sectors; ++j)
-            diagram.accumulate(direction_at(0.5 * (u0 + u1), (j + 0.5) * 2 * kPi / sectors), (F(u1) - F(u0)) / sectors);
+            diagram.accumulate(direction_at(0.5 * (u0 + u1), (j + 0.5) * 2 * kPi / sectors),
+                               (F(u1) - F(u0)) / sectors);
     }
     diagram.finalize();
     return diagram;
@@ -299,7 +312,8 @@ TEST(DiagramBuild, GridAndCells) {
     EXPECT_EQ(diagram.cell_of({1, 0, 0}), 24 * 16);
     EXPECT_EQ(diagram.cell_of({1, 0, -1e-300}), 23 * 16);
     EXPECT_EQ(diagram.cell_of({1, -1e-300, 0}), 24 * 16 + 15);  // phi just under 2 pi
-    for (int bad : {0, 1, 3, 47, -2}) EXPECT_THROW(GoniometricDiagram(bad, 16), std::invalid_argument);
+    for (int bad : {0, 1, 3, 47, -2})
+        EXPECT_THROW(GoniometricDiagram(bad, 16), std::invalid_argument);
     EXPECT_THROW(GoniometricDiagram(48, 0), std::invalid_argument);
 }
 
@@ -353,11 +367,13 @@ TEST(DiagramDensity, UniformCellsGiveTheUniformDensity) {
     // Every rule (interpolation, extrapolation to the poles and the horizon) keeps a constant.
     GoniometricDiagram diagram(8, 5);
     for (int k = 0; k < 8; ++k)
-        for (int j = 0; j < 5; ++j) diagram.accumulate(direction_at(-1 + (k + 0.5) / 4, (j + 0.5) * 2 * kPi / 5), 2.5);
+        for (int j = 0; j < 5; ++j)
+            diagram.accumulate(direction_at(-1 + (k + 0.5) / 4, (j + 0.5) * 2 * kPi / 5), 2.5);
     diagram.finalize();
     EXPECT_DOUBLE_EQ(diagram.total_weight(), 40 * 2.5);
     Pcg32 rng(22);
-    for (int k = 0; k < 1000; ++k) EXPECT_NEAR(diagram.pdf(uniform_direction(rng)), 1 / (4 * kPi), 1e-15);
+    for (int k = 0; k < 1000; ++k)
+        EXPECT_NEAR(diagram.pdf(uniform_direction(rng)), 1 / (4 * kPi), 1e-15);
     for (const Vec3 w : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, Vec3{1, 0, 0}, Vec3{0, -1, 0}})
         EXPECT_NEAR(diagram.pdf(w), 1 / (4 * kPi), 1e-15);
 }
@@ -405,7 +421,8 @@ TEST(DiagramDensity, BinAverageIsTheCellMean) {
         for (int b = 0; b < 8; ++b)
             for (int a = 0; a < 8; ++a)
                 mean += diagram.pdf(direction_at(-1 + (band + (a + 0.5) / 8) * 2 / 40,
-                                                 (sector + (b + 0.5) / 8) * 2 * kPi / 16)) / 64;
+                                                 (sector + (b + 0.5) / 8) * 2 * kPi / 16)) /
+                        64;
         EXPECT_NEAR(diagram.bin_average(cell), mean, 1e-12 * std::max(1.0, mean)) << cell;
         weighted_sum += diagram.bin_average(cell) * diagram.cell_solid_angle();
     }
@@ -419,26 +436,33 @@ TEST(DiagramDensity, ContinuousExceptWhereTheHorizonCutsTheLight) {
     for (int k = 0; k < 2000; ++k) {
         // Across phi = 0 = 2 pi.
         const double u = 2 * rng.uniform() - 1;
-        EXPECT_NEAR(diagram.pdf(direction_at(u, 1e-12)), diagram.pdf(direction_at(u, 2 * kPi - 1e-12)), 1e-9);
+        EXPECT_NEAR(diagram.pdf(direction_at(u, 1e-12)),
+                    diagram.pdf(direction_at(u, 2 * kPi - 1e-12)), 1e-9);
         // At the poles, the same value from every azimuth.
         const double phi = 2 * kPi * rng.uniform();
         EXPECT_NEAR(diagram.pdf(direction_at(1 - 1e-13, phi)), diagram.pdf({0, 0, 1}), 1e-10);
         EXPECT_NEAR(diagram.pdf(direction_at(-1 + 1e-13, phi)), diagram.pdf({0, 0, -1}), 1e-10);
         // Across a row of centres and a column of centres.
-        const double centre_u = -1 + (int(rng.below(40)) + 0.5) / 20, centre_phi = (int(rng.below(16)) + 0.5) * kPi / 8;
-        EXPECT_NEAR(diagram.pdf(direction_at(centre_u - 1e-12, phi)), diagram.pdf(direction_at(centre_u + 1e-12, phi)), 1e-9);
-        EXPECT_NEAR(diagram.pdf(direction_at(u, centre_phi - 1e-12)), diagram.pdf(direction_at(u, centre_phi + 1e-12)), 1e-9);
+        const double centre_u = -1 + (int(rng.below(40)) + 0.5) / 20,
+                     centre_phi = (int(rng.below(16)) + 0.5) * kPi / 8;
+        EXPECT_NEAR(diagram.pdf(direction_at(centre_u - 1e-12, phi)),
+                    diagram.pdf(direction_at(centre_u + 1e-12, phi)), 1e-9);
+        EXPECT_NEAR(diagram.pdf(direction_at(u, centre_phi - 1e-12)),
+                    diagram.pdf(direction_at(u, centre_phi + 1e-12)), 1e-9);
     }
     // Where both sides of the horizon hold light (x > -0.5 here), it is an ordinary line.
     for (int k = 0; k < 16; ++k) {
         const double phi = (k - 2.5) * 2 * kPi / 48;  // -37.5 to +37.5 degrees
-        EXPECT_NEAR(diagram.pdf(direction_at(1e-15, phi)), diagram.pdf(direction_at(-1e-15, phi)), 1e-9) << phi;
+        EXPECT_NEAR(diagram.pdf(direction_at(1e-15, phi)), diagram.pdf(direction_at(-1e-15, phi)),
+                    1e-9)
+            << phi;
     }
     // Where the side below is dark (x < -0.5), the lobe's density stops at the horizon.
     double largest_jump = 0;
     for (int k = 0; k < 64; ++k) {
         const double phi = (k + 0.5) * 2 * kPi / 64;
-        largest_jump = std::max(largest_jump, std::abs(diagram.pdf(direction_at(1e-15, phi)) - diagram.pdf(direction_at(-1e-15, phi))));
+        largest_jump = std::max(largest_jump, std::abs(diagram.pdf(direction_at(1e-15, phi)) -
+                                                       diagram.pdf(direction_at(-1e-15, phi))));
     }
     EXPECT_GT(largest_jump, 1e-3);
 }
@@ -468,7 +492,8 @@ TEST(DiagramSampling, ChiSquareAgainstPdf) {
     const std::vector<double> probability = square_bin_probabilities(diagram, m);
     std::vector<double> observed(probability.size(), 0.0);
     Pcg32 rng(27);
-    for (int k = 0; k < samples; ++k) observed[square_bin_of(diagram.sample({rng.uniform(), rng.uniform()}).direction, m)] += 1;
+    for (int k = 0; k < samples; ++k)
+        observed[square_bin_of(diagram.sample({rng.uniform(), rng.uniform()}).direction, m)] += 1;
 
     double chi2 = 0, pooled_expected = 0, pooled_observed = 0;
     int bins = 0;
@@ -485,11 +510,13 @@ TEST(DiagramSampling, ChiSquareAgainstPdf) {
         }
     }
     if (pooled_expected >= 5) {
-        chi2 += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
+        chi2 += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) /
+                pooled_expected;
         ++bins;
     }
     const double threshold = chi_square_quantile(bins - 1, 3.0902);
-    std::printf("[chi-square] %d bins, chi2 = %.1f, threshold (alpha 1e-3) = %.1f\n", bins, chi2, threshold);
+    std::printf("[chi-square] %d bins, chi2 = %.1f, threshold (alpha 1e-3) = %.1f\n", bins, chi2,
+                threshold);
     EXPECT_GT(bins, 300);
     EXPECT_LT(chi2, threshold);
 }
@@ -515,7 +542,8 @@ TEST(DiagramStorage, SerialiseRoundTrip) {
     }
     EXPECT_THROW(GoniometricDiagram::deserialize({}), std::invalid_argument);
     EXPECT_THROW(GoniometricDiagram::deserialize({48, 16, 1, 0.5f}), std::invalid_argument);
-    EXPECT_THROW(GoniometricDiagram::deserialize({3, 1, 1, 0.5f, 0.5f, 0.5f}), std::invalid_argument);  // odd bands
+    EXPECT_THROW(GoniometricDiagram::deserialize({3, 1, 1, 0.5f, 0.5f, 0.5f}),
+                 std::invalid_argument);  // odd bands
     EXPECT_THROW(GoniometricDiagram::deserialize({2, 1, 1, 0.5f, -0.5f}), std::invalid_argument);
     EXPECT_NO_THROW(GoniometricDiagram::deserialize({2, 1, 1, 0.5f, 0.5f}));
     GoniometricDiagram loaded_copy = loaded;
@@ -545,7 +573,8 @@ FluxRegion flux_region(const analytic::Source& source) {
             const Vec3 w = square_to_direction({(i + 0.5) / m, (j + 0.5) / m});
             all.push_back({source.intensity(w) / source.total_flux(), w});
         }
-    std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::sort(all.begin(), all.end(),
+              [](const auto& a, const auto& b) { return a.first > b.first; });
     double total = 0;
     for (const auto& a : all) total += a.first;
     double cumulative = 0, level = 0;
@@ -556,7 +585,8 @@ FluxRegion flux_region(const analytic::Source& source) {
     }
     FluxRegion region;
     for (const auto& a : all)
-        if (a.first >= level) region.directions.push_back(a.second), region.truth.push_back(a.first);
+        if (a.first >= level)
+            region.directions.push_back(a.second), region.truth.push_back(a.first);
     return region;
 }
 
@@ -573,19 +603,24 @@ struct FarFieldCase {
     const char* name;
     std::shared_ptr<analytic::Source> source;
     double (*antiderivative)(double u);  // of 2 pi D(u), for the noiseless diagram
-    bool linear_in_u;                     // D linear in u on each side of the horizon
+    bool linear_in_u;                    // D linear in u on each side of the horizon
 };
 
 std::vector<FarFieldCase> far_field_cases() {
-    return {{"lambertian disk", std::make_shared<analytic::LambertianDisk>(analytic::LambertianDisk::with_flux(1, 1)),
-             [](double u) { return u > 0 ? u * u : 0.0; }, true},
-            {"lambertian sphere", std::make_shared<analytic::LambertianSphere>(analytic::LambertianSphere::with_flux(1, 1)),
-             [](double u) { return (u + 1) / 2; }, true},
-            {"cos^4 lobe", std::make_shared<analytic::CosineLobe>(analytic::CosineLobe::with_flux(4, 1)),
-             [](double u) { return u > 0 ? std::pow(u, 5) : 0.0; }, false},
-            {"chip cluster", std::make_shared<analytic::ChipCluster>(analytic::ChipCluster::Layout{}, std::vector<double>{1.0},
-                                                                     std::vector<double>{555.0}),
-             [](double u) { return u > 0 ? u * u : 0.0; }, true}};
+    return {
+        {"lambertian disk",
+         std::make_shared<analytic::LambertianDisk>(analytic::LambertianDisk::with_flux(1, 1)),
+         [](double u) { return u > 0 ? u * u : 0.0; }, true},
+        {"lambertian sphere",
+         std::make_shared<analytic::LambertianSphere>(analytic::LambertianSphere::with_flux(1, 1)),
+         [](double u) { return (u + 1) / 2; }, true},
+        {"cos^4 lobe",
+         std::make_shared<analytic::CosineLobe>(analytic::CosineLobe::with_flux(4, 1)),
+         [](double u) { return u > 0 ? std::pow(u, 5) : 0.0; }, false},
+        {"chip cluster",
+         std::make_shared<analytic::ChipCluster>(
+             analytic::ChipCluster::Layout{}, std::vector<double>{1.0}, std::vector<double>{555.0}),
+         [](double u) { return u > 0 ? u * u : 0.0; }, true}};
 }
 
 TEST(DiagramFarField, AccuracyAtOneMillionRays) {
@@ -600,8 +635,11 @@ TEST(DiagramFarField, AccuracyAtOneMillionRays) {
     // 3.3% after the bilinear blend). Its RMS over the 10 sets has mean 1.58% and spread 0.19%,
     // so one set exceeds 2% with probability ~1-2% (normal tail at 2.2 sigma); the 4 sets here
     // all pass. The alternatives (the lead's 48 x 16, 40 x 16, 32 x 12) are printed only.
-    const std::pair<int, int> grids[] = {{GoniometricDiagram::kDefaultBands, GoniometricDiagram::kDefaultSectors},
-                                         {48, 16}, {40, 16}, {32, 12}};
+    const std::pair<int, int> grids[] = {
+        {GoniometricDiagram::kDefaultBands, GoniometricDiagram::kDefaultSectors},
+        {48, 16},
+        {40, 16},
+        {32, 12}};
     for (const FarFieldCase& c : far_field_cases()) {
         const FluxRegion region = flux_region(*c.source);
         for (uint64_t seed = 1000; seed < 1004; ++seed) {
@@ -616,9 +654,13 @@ TEST(DiagramFarField, AccuracyAtOneMillionRays) {
                 diagrams[g].finalize();
                 const auto [bands, sectors] = grids[g];
                 const double error = rms_relative_error(diagrams[g], region);
-                const double bias = rms_relative_error(noiseless_diagram(bands, sectors, c.antiderivative), region);
-                std::printf("[far field] %-17s seed %d, %2d x %2d: RMS relative error %.4f (bias %.4f) over %zu "
-                            "directions\n", c.name, int(seed), bands, sectors, error, bias, region.directions.size());
+                const double bias =
+                    rms_relative_error(noiseless_diagram(bands, sectors, c.antiderivative), region);
+                std::printf(
+                    "[far field] %-17s seed %d, %2d x %2d: RMS relative error %.4f (bias %.4f) "
+                    "over %zu "
+                    "directions\n",
+                    c.name, int(seed), bands, sectors, error, bias, region.directions.size());
                 if (g == 0) {
                     EXPECT_LT(error, 0.02) << c.name << ", seed " << seed;
                     // The sources linear in u are reproduced exactly (only rounding remains).
@@ -640,8 +682,10 @@ TEST(DiagramFarField, BiasIsSecondOrderInTheBandWidth) {
     const FluxRegion region = flux_region(*lobe.source);
     double previous = 0;
     for (int bands : {20, 40, 80}) {
-        const double bias = rms_relative_error(noiseless_diagram(bands, 12, lobe.antiderivative), region);
-        std::printf("[far field] cos^4 lobe noiseless, %2d x 12: RMS relative error %.5f\n", bands, bias);
+        const double bias =
+            rms_relative_error(noiseless_diagram(bands, 12, lobe.antiderivative), region);
+        std::printf("[far field] cos^4 lobe noiseless, %2d x 12: RMS relative error %.5f\n", bands,
+                    bias);
         if (previous > 0) {
             EXPECT_GT(previous / bias, 3.0) << bands << " bands";
         }
@@ -662,7 +706,8 @@ TEST(DiagramEstimate, LambertianCellsAboutTheirOwnNormals) {
     for (int k = 0; k < 400000; ++k) {
         const int cell = k % 2;
         const double r = std::sqrt(rng.uniform()), phi = 2 * kPi * rng.uniform();
-        const double a = r * std::cos(phi), b = r * std::sin(phi), c = std::sqrt(std::max(0.0, 1 - r * r));
+        const double a = r * std::cos(phi), b = r * std::sin(phi),
+                     c = std::sqrt(std::max(0.0, 1 - r * r));
         const Vec3 w = cell == 0 ? Vec3{a, b, c} : Vec3{c, a, b};
         estimate.add(size_t(cell), w, 0.5);
     }
@@ -682,9 +727,10 @@ TEST(DiagramEstimate, LambertianCellsAboutTheirOwnNormals) {
             if (cosine <= -0.5) behind = std::max(behind, d.pdf(w));
         }
         const double rms = std::sqrt(square / front);
-        std::printf("[ figures  ] smoothed Lambertian cell about %s: %d x %d grid, RMS error within 60 deg "
-                    "%.4f, largest density 30 deg or more behind %.2g\n",
-                    k == 0 ? "+x" : "+z", d.bands(), d.sectors(), rms, behind);
+        std::printf(
+            "[ figures  ] smoothed Lambertian cell about %s: %d x %d grid, RMS error within 60 deg "
+            "%.4f, largest density 30 deg or more behind %.2g\n",
+            k == 0 ? "+x" : "+z", d.bands(), d.sectors(), rms, behind);
         EXPECT_LT(rms, 0.015);
         EXPECT_EQ(behind, 0);
     }

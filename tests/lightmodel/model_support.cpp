@@ -1,7 +1,7 @@
 #include "lightmodel/model_support.h"
 
-#include "converters/rays/ray_stream.h"
 #include "converters/analytic/synth.h"
+#include "converters/rays/ray_stream.h"
 
 #include <mutex>
 
@@ -13,8 +13,10 @@ std::unique_ptr<analytic::Source> make_truth(const std::string& name) {
     using namespace analytic;
     Spectrum spectrum;
     spectrum.wavelength_nm = 555;
-    if (name == "disk" || name == "disk4m") return std::make_unique<LambertianDisk>(LambertianDisk::with_flux(1, 1, spectrum));
-    if (name == "sphere") return std::make_unique<LambertianSphere>(LambertianSphere::with_flux(1, 1, spectrum));
+    if (name == "disk" || name == "disk4m")
+        return std::make_unique<LambertianDisk>(LambertianDisk::with_flux(1, 1, spectrum));
+    if (name == "sphere")
+        return std::make_unique<LambertianSphere>(LambertianSphere::with_flux(1, 1, spectrum));
     if (name == "lobe") return std::make_unique<CosineLobe>(CosineLobe::with_flux(4, 1, spectrum));
     return std::make_unique<ChipCluster>(ChipCluster::Layout{}, std::vector<double>{1.0 / 39},
                                          std::vector<double>{460, 530, 620});

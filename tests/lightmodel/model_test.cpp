@@ -3,8 +3,8 @@
 // illuminance. Every random draw has a fixed seed; each bound says the confidence it gives.
 #include "lightmodel/model_support.h"
 
-#include "converters/rays/ray_stream.h"
 #include "converters/colour/spectrum.h"
+#include "converters/rays/ray_stream.h"
 #include "core/random.h"
 #include "lightmodel/direction_map.h"
 #include "lightmodel/model_file.h"
@@ -40,7 +40,8 @@ TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
             EXPECT_NEAR(b.model->source.luminous / lm, 1, 1e-6) << name;
         }
         write_model(*b.model, dir.file(std::string(name) + ".vdb"));
-        const lightmodel::LightModel back = lightmodel::read_model(dir.file(std::string(name) + ".vdb"));
+        const lightmodel::LightModel back =
+            lightmodel::read_model(dir.file(std::string(name) + ".vdb"));
         EXPECT_NEAR(back.total_flux() / b.ray_flux, 1, 1e-12) << name;
         EXPECT_EQ(back.voxels.size(), b.model->voxels.size()) << name;
         EXPECT_EQ(back.spheres.size(), b.model->spheres.size()) << name;
@@ -59,8 +60,9 @@ TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
         EXPECT_TRUE(back.source.luminous == m.source.luminous ||
                     (std::isnan(back.source.luminous) && std::isnan(m.source.luminous)));
         EXPECT_EQ(back.flux_unit, m.flux_unit);
-        for (auto frame : {&lightmodel::LightModel::density_frame, &lightmodel::LightModel::flux_frame,
-                           &lightmodel::LightModel::intensity_frame}) {
+        for (auto frame :
+             {&lightmodel::LightModel::density_frame, &lightmodel::LightModel::flux_frame,
+              &lightmodel::LightModel::intensity_frame}) {
             EXPECT_EQ((back.*frame).resolution(), (m.*frame).resolution());
             EXPECT_EQ((back.*frame).cell_size(), (m.*frame).cell_size());
             EXPECT_EQ((back.*frame).dims(), (m.*frame).dims());
@@ -68,9 +70,11 @@ TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
         EXPECT_EQ(back.bins.first_nm, m.bins.first_nm);
         EXPECT_EQ(back.bins.count, m.bins.count);
         EXPECT_EQ(back.options.smooth_diagrams, m.options.smooth_diagrams);
-        std::printf("[ figures  ] %s: %zu flux cells, %zu voxels, %zu boundary voxels, %zu spheres, %zu diagrams\n", name,
-                    b.model->flux_cells.size(), b.model->voxels.size(), b.model->boundary_voxels.size(),
-                    b.model->spheres.size(), b.model->diagrams.size());
+        std::printf(
+            "[ figures  ] %s: %zu flux cells, %zu voxels, %zu boundary voxels, %zu spheres, %zu "
+            "diagrams\n",
+            name, b.model->flux_cells.size(), b.model->voxels.size(),
+            b.model->boundary_voxels.size(), b.model->spheres.size(), b.model->diagrams.size());
     }
     // Every build option, each away from its default, survives the file.
     lightmodel::LightModel changed = *built_source("disk").model;
@@ -94,15 +98,16 @@ TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
     EXPECT_EQ(o.seed, p.seed);
 }
 
-// Phi = integral over the volume and the sphere of eps(x, w) = Phi pdf_position(x) pdf_direction(w),
-// estimated with points uniform in the lattice box and uniform directions, independent of
-// the model's own sampling: checks that pdf_Le's two factors each integrate to 1. The bound is
-// 4 standard errors (a normal two-sided 99.99% interval).
+// Phi = integral over the volume and the sphere of eps(x, w) = Phi pdf_position(x)
+// pdf_direction(w), estimated with points uniform in the lattice box and uniform directions,
+// independent of the model's own sampling: checks that pdf_Le's two factors each integrate to 1.
+// The bound is 4 standard errors (a normal two-sided 99.99% interval).
 TEST(Model, MonteCarloFluxFromEmissionDensities) {
     for (const char* name : {"disk", "sphere", "cluster"}) {
         const BuiltSource& b = built_source(name);
         const lightmodel::LatticeFrame& f = b.model->density_frame;
-        const Vec3 size{f.dims()[0] * f.cell_size(), f.dims()[1] * f.cell_size(), f.dims()[2] * f.cell_size()};
+        const Vec3 size{f.dims()[0] * f.cell_size(), f.dims()[1] * f.cell_size(),
+                        f.dims()[2] * f.cell_size()};
         const double box_volume = size.x * size.y * size.z;
         Pcg32 rng(11);
         const int n = 2000000;
@@ -118,15 +123,16 @@ TEST(Model, MonteCarloFluxFromEmissionDensities) {
             sum2 += v * v;
         }
         const double mean = sum / n, error = std::sqrt((sum2 / n - mean * mean) / n);
-        std::printf("[ figures  ] %s: MC flux %.5f +- %.5f W, model %.5f W\n", name, mean, error, b.source->phi());
+        std::printf("[ figures  ] %s: MC flux %.5f +- %.5f W, model %.5f W\n", name, mean, error,
+                    b.source->phi());
         EXPECT_NEAR(mean, b.source->phi(), 4 * error) << name;
     }
 }
 
 // sample_Le returns the densities pdf_Le gives at its own sample, and its directions follow
 // them: chi-square over 24 x 24 equal-area bins of the octahedral square (a grid unrelated to the
-// diagrams' cos(theta) x phi grid), expected counts by integrating the model's intensity over each bin on a
-// 8 x 8 sub-grid; 99.9% critical value (Wilson-Hilferty).
+// diagrams' cos(theta) x phi grid), expected counts by integrating the model's intensity over each
+// bin on a 8 x 8 sub-grid; 99.9% critical value (Wilson-Hilferty).
 TEST(Model, SampleLeDirectionsFollowPdfLe) {
     for (const char* name : kSources) {
         const BuiltSource& b = built_source(name);
@@ -134,9 +140,11 @@ TEST(Model, SampleLeDirectionsFollowPdfLe) {
         std::vector<double> expected(bins * bins, 0);
         for (int j = 0; j < bins * sub; ++j)
             for (int i = 0; i < bins * sub; ++i) {
-                const Vec3 w = lightmodel::square_to_direction({(i + 0.5) / (bins * sub), (j + 0.5) / (bins * sub)});
-                expected[size_t((j / sub) * bins + i / sub)] +=
-                    b.source->intensity(w) / b.source->phi() * 4 * kPi / double(bins * sub * bins * sub);
+                const Vec3 w = lightmodel::square_to_direction(
+                    {(i + 0.5) / (bins * sub), (j + 0.5) / (bins * sub)});
+                expected[size_t((j / sub) * bins + i / sub)] += b.source->intensity(w) /
+                                                                b.source->phi() * 4 * kPi /
+                                                                double(bins * sub * bins * sub);
             }
         Pcg32 rng(5);
         const int n = 1000000;
@@ -149,11 +157,13 @@ TEST(Model, SampleLeDirectionsFollowPdfLe) {
             if (s < 2000) {
                 double pp = 0, pd = 0;
                 b.source->pdf_Le(le.origin, le.direction, pp, pd);
-                worst_pdf_mismatch = std::max({worst_pdf_mismatch, std::abs(pp / le.pdf_position - 1),
-                                               std::abs(pd / le.pdf_direction - 1)});
+                worst_pdf_mismatch =
+                    std::max({worst_pdf_mismatch, std::abs(pp / le.pdf_position - 1),
+                              std::abs(pd / le.pdf_direction - 1)});
             }
             const Vec2 p = lightmodel::direction_to_square(le.direction);
-            count[size_t(std::min(int(p.y * bins), bins - 1) * bins + std::min(int(p.x * bins), bins - 1))] += 1;
+            count[size_t(std::min(int(p.y * bins), bins - 1) * bins +
+                         std::min(int(p.x * bins), bins - 1))] += 1;
         }
         EXPECT_LT(worst_pdf_mismatch, 1e-6) << name;
         double chi2 = 0, pooled_e = 0, pooled_c = 0;
@@ -173,7 +183,8 @@ TEST(Model, SampleLeDirectionsFollowPdfLe) {
             ++dof;
         }
         const double critical = chi_square_critical(dof, 3.0902);
-        std::printf("[ figures  ] %s: sample_Le chi-square %.1f, dof %d, critical %.1f\n", name, chi2, dof, critical);
+        std::printf("[ figures  ] %s: sample_Le chi-square %.1f, dof %d, critical %.1f\n", name,
+                    chi2, dof, critical);
         EXPECT_LT(chi2, critical) << name;
     }
 }
@@ -194,7 +205,8 @@ TEST(Model, SampleLiDirectionsFollowPdfLi) {
         const Vec3 axis = normalized(centre - ref);
         Vec3 e1, e2;
         orthonormal_basis(axis, e1, e2);
-        const double cos_max = std::cos(std::asin(std::min(1.0, 0.9 * size / length(centre - ref))));
+        const double cos_max =
+            std::cos(std::asin(std::min(1.0, 0.9 * size / length(centre - ref))));
         const int nu = 12, nphi = 16, sub = 48;
         auto direction = [&](double u, double phi) {
             const double s = std::sqrt(std::max(0.0, 1 - u * u));
@@ -216,7 +228,8 @@ TEST(Model, SampleLiDirectionsFollowPdfLi) {
         const int n = 400000;
         std::vector<double> count(nu * nphi, 0);
         for (int s = 0; s < n; ++s) {
-            const lightmodel::VolumeSample p = volume.sample_point(rng.uniform(), rng.uniform(), rand3(rng));
+            const lightmodel::VolumeSample p =
+                volume.sample_point(rng.uniform(), rng.uniform(), rand3(rng));
             const Vec3 w = normalized(p.point - ref);
             const double u = dot(w, axis);
             if (u < cos_max) continue;
@@ -235,7 +248,8 @@ TEST(Model, SampleLiDirectionsFollowPdfLi) {
             ++dof;
         }
         const double critical = chi_square_critical(dof, 3.0902);
-        std::printf("[ figures  ] %s: sample_Li chi-square %.1f, dof %d, critical %.1f\n", name, chi2, dof, critical);
+        std::printf("[ figures  ] %s: sample_Li chi-square %.1f, dof %d, critical %.1f\n", name,
+                    chi2, dof, critical);
         EXPECT_LT(chi2, critical) << name;
     }
 }
@@ -255,7 +269,8 @@ TEST(Model, FarFieldIntensityMatchesTheAnalyticSource) {
                 truth_model.emplace_back(truth, b.source->intensity(w));
                 total += truth;
             }
-        std::sort(truth_model.begin(), truth_model.end(), [](auto& a, auto& c) { return a.first > c.first; });
+        std::sort(truth_model.begin(), truth_model.end(),
+                  [](auto& a, auto& c) { return a.first > c.first; });
         double carried = 0, sum2 = 0;
         size_t used = 0;
         for (const auto& [truth, model] : truth_model) {
@@ -265,7 +280,9 @@ TEST(Model, FarFieldIntensityMatchesTheAnalyticSource) {
             ++used;
         }
         const double rms = std::sqrt(sum2 / double(used));
-        std::printf("[ figures  ] %s: far-field RMS relative error %.4f over %zu of %d directions\n", name, rms, used, n * n);
+        std::printf(
+            "[ figures  ] %s: far-field RMS relative error %.4f over %zu of %d directions\n", name,
+            rms, used, n * n);
         EXPECT_LT(rms, 0.02) << name;
     }
 }
@@ -288,7 +305,8 @@ TEST(Model, DirectVisibilityOfTheDisk) {
         double luminance_sum = 0;
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
-                const double a = -half + 2 * half * (i + 0.5) / n, c = -half + 2 * half * (j + 0.5) / n;
+                const double a = -half + 2 * half * (i + 0.5) / n,
+                             c = -half + 2 * half * (j + 0.5) / n;
                 const Vec3 origin = 10.0 * view + a * e1 + c * e2;
                 const Vec3 dir = -view;
                 // The true disk: where the ray meets z = 0.
@@ -305,8 +323,9 @@ TEST(Model, DirectVisibilityOfTheDisk) {
                 }
             }
         const double iou = double(both) / either, mean = luminance_sum / inside_truth;
-        std::printf("[ figures  ] disk at %.0f deg: IoU %.4f, mean luminance / true radiance %.4f\n", tilt_deg, iou,
-                    mean / radiance);
+        std::printf(
+            "[ figures  ] disk at %.0f deg: IoU %.4f, mean luminance / true radiance %.4f\n",
+            tilt_deg, iou, mean / radiance);
         EXPECT_GE(iou, 0.95) << tilt_deg;
         EXPECT_NEAR(mean / radiance, 1, 0.03) << tilt_deg;
     }
@@ -316,7 +335,8 @@ struct Estimate {
     double mean = 0, error = 0;
 };
 
-Estimate light_sampling(const lightmodel::ComplexSource& s, Vec3 x, Vec3 normal, int n, uint64_t seed) {
+Estimate light_sampling(const lightmodel::ComplexSource& s, Vec3 x, Vec3 normal, int n,
+                        uint64_t seed) {
     Pcg32 rng(seed);
     double sum = 0, sum2 = 0;
     for (int i = 0; i < n; ++i) {
@@ -332,14 +352,16 @@ Estimate light_sampling(const lightmodel::ComplexSource& s, Vec3 x, Vec3 normal,
 }
 
 // BSDF sampling of a Lambertian receiver: cosine-weighted directions, E = pi * mean(L of hits).
-Estimate bsdf_sampling(const lightmodel::ComplexSource& s, Vec3 x, Vec3 normal, int n, uint64_t seed) {
+Estimate bsdf_sampling(const lightmodel::ComplexSource& s, Vec3 x, Vec3 normal, int n,
+                       uint64_t seed) {
     Vec3 e1, e2;
     orthonormal_basis(normal, e1, e2);
     Pcg32 rng(seed);
     double sum = 0, sum2 = 0;
     for (int i = 0; i < n; ++i) {
         const double r = std::sqrt(rng.uniform()), phi = 2 * kPi * rng.uniform();
-        const Vec3 w = r * std::cos(phi) * e1 + r * std::sin(phi) * e2 + std::sqrt(std::max(0.0, 1 - r * r)) * normal;
+        const Vec3 w = r * std::cos(phi) * e1 + r * std::sin(phi) * e2 +
+                       std::sqrt(std::max(0.0, 1 - r * r)) * normal;
         lightmodel::EmitterHit hit;
         double v = 0;
         if (s.intersect(x, w, 1e9, hit)) v = kPi * s.L(x, w, hit);
@@ -369,12 +391,17 @@ TEST(Model, IlluminanceByLightAndBsdfSampling) {
             // Seeds differ per case, so the cases are independent draws.
             const uint64_t seed = uint64_t(100 * sizes + off_axis_deg);
             const Estimate light = light_sampling(*b.source, x, normal, 200000, seed);
-            const Estimate bsdf = bsdf_sampling(*b.source, x, normal, sizes > 3 ? 2000000 : 400000, seed + 1);
+            const Estimate bsdf =
+                bsdf_sampling(*b.source, x, normal, sizes > 3 ? 2000000 : 400000, seed + 1);
             const double rel = light.mean / truth - 1;
-            std::printf("[ figures  ] disk E at %4.0f sizes, %2.0f deg: light %+.4f (+-%.4f), bsdf %+.4f (+-%.4f) rel. to "
-                        "analytic\n",
-                        sizes, off_axis_deg, rel, light.error / truth, bsdf.mean / truth - 1, bsdf.error / truth);
-            EXPECT_LT(std::abs(rel), sizes < 5 ? 0.05 : 0.01) << sizes << " sizes, " << off_axis_deg << " deg";
+            std::printf(
+                "[ figures  ] disk E at %4.0f sizes, %2.0f deg: light %+.4f (+-%.4f), bsdf %+.4f "
+                "(+-%.4f) rel. to "
+                "analytic\n",
+                sizes, off_axis_deg, rel, light.error / truth, bsdf.mean / truth - 1,
+                bsdf.error / truth);
+            EXPECT_LT(std::abs(rel), sizes < 5 ? 0.05 : 0.01)
+                << sizes << " sizes, " << off_axis_deg << " deg";
             EXPECT_LT(std::abs(light.mean - bsdf.mean), 4 * std::hypot(light.error, bsdf.error))
                 << sizes << " sizes, " << off_axis_deg << " deg";
         }
@@ -400,14 +427,16 @@ TEST(Model, NaiveRaySetIsInvisibleAndHasANoiseFloor) {
         const Vec3 p = o + t * d;
         return (p.x * p.x + p.y * p.y) <= r * r;
     };
-    const double truth = b.truth->irradiance(centre, {0, 0, -1}) * b.ray_flux / b.truth->total_flux();
+    const double truth =
+        b.truth->irradiance(centre, {0, 0, -1}) * b.ray_flux / b.truth->total_flux();
     double rays_sum = 0;
     {
         auto reader = open_rays(b.ray_file);
         RayChunk chunk;
         while (reader->read(chunk))
             for (const Ray& ray : chunk.rays)
-                if (lands({ray.origin.x, ray.origin.y, ray.origin.z}, {ray.direction.x, ray.direction.y, ray.direction.z}))
+                if (lands({ray.origin.x, ray.origin.y, ray.origin.z},
+                          {ray.direction.x, ray.direction.y, ray.direction.z}))
                     rays_sum += ray.radiant;
     }
     const double e_rays = rays_sum / area;
@@ -422,12 +451,15 @@ TEST(Model, NaiveRaySetIsInvisibleAndHasANoiseFloor) {
             sum += v;
             sum2 += v * v;
         }
-        const double mean = sum / double(n), error = std::sqrt((sum2 / double(n) - mean * mean) / double(n));
-        const Estimate model = light_sampling(*b.source, centre, {0, 0, -1}, int(std::min(target, 1000000L)), 31);
-        std::printf("[ figures  ] naive, %8ld photons: E error %+.4f (+-%.4f); the ray set's own %+.4f; "
-                    "model light sampling (%ld samples) %+.4f (+-%.4f)\n",
-                    n, mean / truth - 1, error / truth, e_rays / truth - 1, std::min(target, 1000000L),
-                    model.mean / truth - 1, model.error / truth);
+        const double mean = sum / double(n),
+                     error = std::sqrt((sum2 / double(n) - mean * mean) / double(n));
+        const Estimate model =
+            light_sampling(*b.source, centre, {0, 0, -1}, int(std::min(target, 1000000L)), 31);
+        std::printf(
+            "[ figures  ] naive, %8ld photons: E error %+.4f (+-%.4f); the ray set's own %+.4f; "
+            "model light sampling (%ld samples) %+.4f (+-%.4f)\n",
+            n, mean / truth - 1, error / truth, e_rays / truth - 1, std::min(target, 1000000L),
+            model.mean / truth - 1, model.error / truth);
         if (target == 10000000L) {
             EXPECT_NEAR(mean, e_rays, 4 * error);
         }

@@ -17,10 +17,10 @@
 namespace rayset::test {
 namespace {
 
-
 TEST(OsramModel, BuildsKeepsItsFluxAndFarField) {
     RAYSET_REQUIRE_SHARED_DATA();
-    const std::string file = shared_data("rayfiles/rayfile_LERTDUW_S2WP_blue_100k_20161013_IES_TM25.TM25RAY");
+    const std::string file =
+        shared_data("rayfiles/rayfile_LERTDUW_S2WP_blue_100k_20161013_IES_TM25.TM25RAY");
     ScratchDir dir;
     auto model = std::make_shared<lightmodel::LightModel>(lightmodel::build_model(file, {}));
     lightmodel::write_model(*model, dir.file("blue.vdb"));
@@ -45,12 +45,14 @@ TEST(OsramModel, BuildsKeepsItsFluxAndFarField) {
         for (size_t i = 0; i + 1 < planes; ++i) {
             const size_t k = i * grid.gamma_count() + j;
             if (rays.variance[k] <= 0 || rays.flux[k] / rays.total_flux < 1e-3) continue;
-            const double c0 = (i * 10.0 - 5) * kPi / 180, g0 = std::cos(grid.gamma_low(j) * kPi / 180),
+            const double c0 = (i * 10.0 - 5) * kPi / 180,
+                         g0 = std::cos(grid.gamma_low(j) * kPi / 180),
                          g1 = std::cos(grid.gamma_high(j) * kPi / 180);
             double mean = 0;
             for (int a = 0; a < 8; ++a)
                 for (int b = 0; b < 8; ++b) {
-                    const double u = g0 + (g1 - g0) * (a + 0.5) / 8, c = c0 + 10 * kPi / 180 * (b + 0.5) / 8;
+                    const double u = g0 + (g1 - g0) * (a + 0.5) / 8,
+                                 c = c0 + 10 * kPi / 180 * (b + 0.5) / 8;
                     const double s = std::sqrt(std::max(0.0, 1 - u * u));
                     mean += source.intensity({s * std::cos(c), s * std::sin(c), u}) / 64;
                 }
@@ -60,13 +62,16 @@ TEST(OsramModel, BuildsKeepsItsFluxAndFarField) {
             beyond += std::abs(z) > 4;
             ++cells;
         }
-    std::printf("[ figures  ] OSRAM blue: %llu rays, %zu spheres, %zu flux cells, %zu diagrams; model %ju bytes, ray "
-                "file %ju bytes (%.1f%%); far field: %d cells, chi-square/cells %.2f, %d beyond 4 sigma\n",
-                (unsigned long long)model->source.rays, model->spheres.size(), model->flux_cells.size(),
-                model->diagrams.size(), (uintmax_t)std::filesystem::file_size(dir.file("blue.vdb")),
-                (uintmax_t)std::filesystem::file_size(file),
-                100.0 * double(std::filesystem::file_size(dir.file("blue.vdb"))) / double(std::filesystem::file_size(file)),
-                cells, chi2 / cells, beyond);
+    std::printf(
+        "[ figures  ] OSRAM blue: %llu rays, %zu spheres, %zu flux cells, %zu diagrams; model %ju "
+        "bytes, ray "
+        "file %ju bytes (%.1f%%); far field: %d cells, chi-square/cells %.2f, %d beyond 4 sigma\n",
+        (unsigned long long)model->source.rays, model->spheres.size(), model->flux_cells.size(),
+        model->diagrams.size(), (uintmax_t)std::filesystem::file_size(dir.file("blue.vdb")),
+        (uintmax_t)std::filesystem::file_size(file),
+        100.0 * double(std::filesystem::file_size(dir.file("blue.vdb"))) /
+            double(std::filesystem::file_size(file)),
+        cells, chi2 / cells, beyond);
     // The model's diagrams are made of the same rays, so the model cannot be further from them
     // than their own noise unless it distorts them: chi-square per cell below 1 on average
     // (an independent estimate would give 2), and no cell beyond 4 standard deviations.

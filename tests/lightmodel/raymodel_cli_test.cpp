@@ -13,10 +13,15 @@ namespace {
 TEST(RaymodelCli, BuildsAModelWhoseInfoGivesTheRayFilesFlux) {
     ScratchDir dir;
     const std::string rays = dir.file("disk.tm25ray"), model = dir.file("disk.vdb");
-    ASSERT_EQ(run_command(std::string(RAYCONV_EXE) + " synth disk radius=1 flux=2 --rays 200000 --seed 3 -o " + rays).status, 0);
-    const CommandResult build = run_command(std::string(RAYMODEL_EXE) + " build " + rays + " -o " + model + " --threads 2");
+    ASSERT_EQ(run_command(std::string(RAYCONV_EXE) +
+                          " synth disk radius=1 flux=2 --rays 200000 --seed 3 -o " + rays)
+                  .status,
+              0);
+    const CommandResult build =
+        run_command(std::string(RAYMODEL_EXE) + " build " + rays + " -o " + model + " --threads 2");
     ASSERT_EQ(build.status, 0) << build.output;
-    const CommandResult info = run_command(std::string(RAYMODEL_EXE) + " info " + model + " --json");
+    const CommandResult info =
+        run_command(std::string(RAYMODEL_EXE) + " info " + model + " --json");
     ASSERT_EQ(info.status, 0) << info.output;
     const auto j = nlohmann::json::parse(info.output);
     EXPECT_NEAR(j["total_flux"].get<double>(), 2, 2e-6);  // the rays' float fluxes sum to 2 W
@@ -29,11 +34,13 @@ TEST(RaymodelCli, RefusesWhatIsNotARayFileAndLeavesNoModel) {
     ScratchDir dir;
     const std::string bad = dir.file("bad.tm25ray"), model = dir.file("bad.vdb");
     write_file(bad, "this is not a ray file\n");
-    const CommandResult r = run_command(std::string(RAYMODEL_EXE) + " build " + bad + " -o " + model);
+    const CommandResult r =
+        run_command(std::string(RAYMODEL_EXE) + " build " + bad + " -o " + model);
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.output.find("bad.tm25ray"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(model));
-    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))  // no hidden temporary left
+    for (const auto& entry :
+         std::filesystem::directory_iterator(dir.path()))  // no hidden temporary left
         EXPECT_NE(entry.path().filename().string().rfind('.', 0), 0u) << entry.path();
 }
 

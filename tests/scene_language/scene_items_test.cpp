@@ -20,7 +20,6 @@ using namespace scene_test;
 
 Camera camera_of(const std::string& body) { return parse("camera { " + body + " }").camera; }
 
-
 // ---------------------------------------------------------------- camera
 
 TEST(SceneItemsCamera, DefaultsAsPovRay) {

@@ -1,13 +1,13 @@
 #include "support/test_support.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <array>
 #include <atomic>
 #include <cstdio>
 #include <fstream>
 #include <random>
 #include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -28,7 +28,9 @@ ScratchDir::~ScratchDir() {
 
 bool have_shared_data() { return fs::is_directory(RAYSET_SHARED_DATA); }
 
-std::string shared_data(const std::string& relative) { return (fs::path(RAYSET_SHARED_DATA) / relative).string(); }
+std::string shared_data(const std::string& relative) {
+    return (fs::path(RAYSET_SHARED_DATA) / relative).string();
+}
 
 CommandResult run_command(const std::string& command_line) {
     CommandResult result;
@@ -37,7 +39,8 @@ CommandResult run_command(const std::string& command_line) {
     if (!pipe) return result;
     std::array<char, 4096> buffer;
     size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+        result.output.append(buffer.data(), n);
     int status = ::pclose(pipe);
     result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;

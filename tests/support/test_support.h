@@ -24,7 +24,10 @@ std::string shared_data(const std::string& relative);
 bool have_shared_data();
 
 // Runs a command line through the shell; returns its exit status and captures stdout+stderr.
-struct CommandResult { int status = -1; std::string output; };
+struct CommandResult {
+    int status = -1;
+    std::string output;
+};
 CommandResult run_command(const std::string& command_line);
 
 // Writes bytes to a file (for hand-made bad inputs).
@@ -34,8 +37,8 @@ std::string read_file(const std::string& path);
 }  // namespace rayset::test
 
 // Skips the current test when the shared real data is absent.
-#define RAYSET_REQUIRE_SHARED_DATA()                                                         \
-    do {                                                                                     \
-        if (!::rayset::test::have_shared_data())                                             \
-            GTEST_SKIP() << "../shared/data not found: real-data test skipped";              \
+#define RAYSET_REQUIRE_SHARED_DATA()                                            \
+    do {                                                                        \
+        if (!::rayset::test::have_shared_data())                                \
+            GTEST_SKIP() << "../shared/data not found: real-data test skipped"; \
     } while (0)

@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "converters/analytic/analytic_sources.h"
-#include "converters/rays/ray_stream.h"
-#include "converters/colour/spectrum.h"
 #include "converters/analytic/synth.h"
+#include "converters/colour/spectrum.h"
+#include "converters/rays/ray_stream.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
@@ -26,14 +26,16 @@ namespace {
 struct Led {
     double wavelength_nm, flux;  // W
     uint64_t seed;
-    std::string model;           // .vdb
+    std::string model;  // .vdb
     std::shared_ptr<lightmodel::LightModel> light_model;
     analytic::LambertianDisk disk() const {
         analytic::Spectrum s;
         s.wavelength_nm = wavelength_nm;
         return analytic::LambertianDisk::with_flux(1, flux, s);
     }
-    double efficacy() const { return kMaxLuminousEfficacy * photopic_efficiency(wavelength_nm); }  // lm/W
+    double efficacy() const {
+        return kMaxLuminousEfficacy * photopic_efficiency(wavelength_nm);
+    }  // lm/W
 };
 
 TEST(BidirectionalMixed, WhiteLedFromTwoRayFilesPlusAPointLight) {
@@ -42,12 +44,14 @@ TEST(BidirectionalMixed, WhiteLedFromTwoRayFilesPlusAPointLight) {
     for (Led& led : leds) {
         const std::string rays = scratch.file(std::to_string(int(led.wavelength_nm)) + ".tm25ray");
         {
-            auto out = create_rays(rays, RayFormat::tm25, synth_header(led.disk(), 1000000, led.seed));
+            auto out =
+                create_rays(rays, RayFormat::tm25, synth_header(led.disk(), 1000000, led.seed));
             synthesize(led.disk(), 1000000, led.seed, *out);
         }
         led.model = scratch.file(std::to_string(int(led.wavelength_nm)) + ".vdb");
         lightmodel::write_model(lightmodel::build_model(rays, {}), led.model);
-        led.light_model = std::make_shared<lightmodel::LightModel>(lightmodel::read_model(led.model));
+        led.light_model =
+            std::make_shared<lightmodel::LightModel>(lightmodel::read_model(led.model));
     }
     // Both disks 20 mm above a black floor facing down (rotate 90 x: +z -> -y), the point
     // light 30 mm up and 25 mm aside, radiant intensity 1e-4 W/sr per channel (68.3 mcd).
@@ -56,14 +60,19 @@ TEST(BidirectionalMixed, WhiteLedFromTwoRayFilesPlusAPointLight) {
     const std::string scene = R"(
         global_settings { integrator "bidirectional" }
         plane { y, 0 pigment { rgb 0 } }
-        ray_source { ")" + leds[0].model + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
-        ray_source { ")" + leds[1].model + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
+        ray_source { ")" + leds[0].model +
+                              R"(" rotate <90, 0, 0> translate <0, 20, 0> }
+        ray_source { ")" + leds[1].model +
+                              R"(" rotate <90, 0, 0> translate <0, 20, 0> }
         light_source { <25, 30, 0> color rgb 1e-4 }
-        illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0> resolution <4, 4> name "floor" }
+        illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0>
+            resolution <4, 4> name "floor" }
     )";
     RenderSettings settings;
-    settings.render_image = false, settings.passes = 4096, settings.seed = 5, settings.photons_per_pass = 64;
-    const RenderResult r = render(RenderScene(parse_scene_text(scene, scratch.file("mixed.pov"))), settings);
+    settings.render_image = false, settings.passes = 4096, settings.seed = 5,
+    settings.photons_per_pass = 64;
+    const RenderResult r =
+        render(RenderScene(parse_scene_text(scene, scratch.file("mixed.pov"))), settings);
     const ReceiverMap& map = r.receivers.at(0);  // every layer and the point light
     double worst = 0;
     for (int j = 0; j < map.irradiance.ny(); ++j)
@@ -76,7 +85,8 @@ TEST(BidirectionalMixed, WhiteLedFromTwoRayFilesPlusAPointLight) {
             for (const Led& led : leds) {
                 const lightmodel::ComplexSource model(led.light_model);
                 const analytic::LambertianDisk disk = led.disk();
-                lux += 1e6 * disk.irradiance(q, {0, 0, -1}) * led.efficacy() * model.intensity(w) / disk.intensity(w);
+                lux += 1e6 * disk.irradiance(q, {0, 0, -1}) * led.efficacy() * model.intensity(w) /
+                       disk.intensity(w);
             }
             const Vec3 to_lamp = lamp - p;
             const double d2 = dot(to_lamp, to_lamp) * 1e-6;  // m^2
@@ -87,7 +97,8 @@ TEST(BidirectionalMixed, WhiteLedFromTwoRayFilesPlusAPointLight) {
             EXPECT_LT(se, 0.0025 * lux) << i << "," << j;  // the 1% below is then 4 se or more
             EXPECT_NEAR(measured, lux, 0.01 * lux) << "cell " << i << "," << j << " se " << se;
         }
-    std::printf("blue + yellow ray files + point light: worst cell %.4f off the closed forms\n", worst);
+    std::printf("blue + yellow ray files + point light: worst cell %.4f off the closed forms\n",
+                worst);
     // Colour: the blue file's light reaches the blue channel, and the yellow file's (580 nm,
     // ten times the blue's luminous flux) makes the sum redder than it is blue.
     const Rgb centre = map.irradiance.mean(1, 1) + map.irradiance.mean(2, 2);
@@ -104,7 +115,8 @@ TEST(BidirectionalMixed, LuminousOnlyFileGivesTheSameLux) {
     analytic::Spectrum spectrum;
     spectrum.wavelength_nm = 555;
     const auto disk = analytic::LambertianDisk::with_flux(1, 1, spectrum);
-    const std::string both = scratch.file("both.tm25ray"), luminous = scratch.file("luminous.tm25ray");
+    const std::string both = scratch.file("both.tm25ray"),
+                      luminous = scratch.file("luminous.tm25ray");
     {
         auto out = create_rays(both, RayFormat::tm25, synth_header(disk, 200000, 3));
         synthesize(disk, 200000, 3, *out);
@@ -124,17 +136,22 @@ TEST(BidirectionalMixed, LuminousOnlyFileGivesTheSameLux) {
         const std::string scene = R"(
             global_settings { integrator "bidirectional" }
             plane { y, 0 pigment { rgb 0 } }
-            ray_source { ")" + file + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
-            illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0> resolution <3, 3> name "floor" }
+            ray_source { ")" + file +
+                                  R"(" rotate <90, 0, 0> translate <0, 20, 0> }
+            illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0>
+                resolution <3, 3> name "floor" }
         )";
         RenderSettings settings;
-        settings.render_image = false, settings.passes = 64, settings.seed = 8, settings.photons_per_pass = 64;
-        return render(RenderScene(parse_scene_text(scene, scratch.file("s.pov"))), settings).receivers.at(0);
+        settings.render_image = false, settings.passes = 64, settings.seed = 8,
+        settings.photons_per_pass = 64;
+        return render(RenderScene(parse_scene_text(scene, scratch.file("s.pov"))), settings)
+            .receivers.at(0);
     };
     const ReceiverMap a = lux(both), b = lux(luminous);
     for (int j = 0; j < 3; ++j)
         for (int i = 0; i < 3; ++i) {
-            const double ea = a.irradiance.photometric_mean(i, j), eb = b.irradiance.photometric_mean(i, j);
+            const double ea = a.irradiance.photometric_mean(i, j),
+                         eb = b.irradiance.photometric_mean(i, j);
             EXPECT_GT(ea, 0);
             EXPECT_NEAR(eb, ea, 1e-6 * ea) << i << "," << j;
             const Rgb ca = a.irradiance.mean(i, j), cb = b.irradiance.mean(i, j);

@@ -20,15 +20,19 @@ TEST(BidirectionalPhotonGrid, GatherVisitsEachPhotonWithinTheRadiusOnce) {
     }
     const double radius = 3;
     const PhotonGrid grid(photons, radius);
-    std::vector<Vec3> points{{0, 0, 0}, {0, 50, 0}, {50, 0, 0}, {0, -50, 0}, {3, 3, -3}, {-3, 0, 3}};
-    for (int i = 0; i < 500; ++i) points.push_back({100 * rng.uniform() - 50, 100 * rng.uniform() - 50, 100 * rng.uniform() - 50});
+    std::vector<Vec3> points{{0, 0, 0},   {0, 50, 0}, {50, 0, 0},
+                             {0, -50, 0}, {3, 3, -3}, {-3, 0, 3}};
+    for (int i = 0; i < 500; ++i)
+        points.push_back(
+            {100 * rng.uniform() - 50, 100 * rng.uniform() - 50, 100 * rng.uniform() - 50});
     for (const Vec3& p : points) {
         std::vector<int> visits(photons.size(), 0);
         grid.for_each_near(p, [&](const Photon& photon) { ++visits[size_t(photon.power.red)]; });
         for (size_t i = 0; i < photons.size(); ++i) {
             const Vec3 d = photons[i].position - p;
             const int expected = dot(d, d) <= radius * radius ? 1 : 0;
-            ASSERT_EQ(visits[i], expected) << "photon " << i << " at point " << p.x << "," << p.y << "," << p.z;
+            ASSERT_EQ(visits[i], expected)
+                << "photon " << i << " at point " << p.x << "," << p.y << "," << p.z;
         }
     }
 }

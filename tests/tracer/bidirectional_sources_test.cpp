@@ -25,7 +25,6 @@
 namespace rayset::tracer {
 namespace {
 
-
 constexpr double kDiskRadius = 1, kDiskFlux = 1;  // mm, W
 
 const analytic::LambertianDisk& disk_truth() {
@@ -50,7 +49,8 @@ const DiskFiles& disk_files() {
         f->model = f->scratch.file("disk.vdb");
         const uint64_t rays = 1000000, seed = 7;
         {
-            auto out = create_rays(f->rays, RayFormat::tm25, synth_header(disk_truth(), rays, seed));
+            auto out =
+                create_rays(f->rays, RayFormat::tm25, synth_header(disk_truth(), rays, seed));
             synthesize(disk_truth(), rays, seed, *out);
         }
         lightmodel::write_model(lightmodel::build_model(f->rays, {}), f->model);
@@ -60,7 +60,9 @@ const DiskFiles& disk_files() {
 }
 
 // Scenes are placed in the scratch folder: a scene may only name files under its own folder.
-SceneDescription parse(const std::string& text) { return parse_scene_text(text, disk_files().scratch.file("test.pov")); }
+SceneDescription parse(const std::string& text) {
+    return parse_scene_text(text, disk_files().scratch.file("test.pov"));
+}
 
 RenderResult render_text(const std::string& text, const RenderSettings& settings) {
     const RenderScene scene(parse(text));
@@ -82,12 +84,15 @@ TEST(BidirectionalDisk, PrimaryIlluminanceMatchesClosedForm) {
     const std::string scene = R"(
         global_settings { integrator "bidirectional" }
         plane { y, 0 pigment { rgb 0 } }
-        ray_source { ")" + disk_files().model + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
-        illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0> resolution <4, 4> name "floor" }
+        ray_source { ")" + disk_files().model +
+                              R"(" rotate <90, 0, 0> translate <0, 20, 0> }
+        illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0>
+            resolution <4, 4> name "floor" }
     )";
     RenderSettings settings;
     // A black floor reflects nothing: photons only cost time here.
-    settings.render_image = false, settings.passes = 4096, settings.seed = 3, settings.photons_per_pass = 64;
+    settings.render_image = false, settings.passes = 4096, settings.seed = 3,
+    settings.photons_per_pass = 64;
     const RenderResult r = render_text(scene, settings);
     ASSERT_EQ(r.layers.size(), 3u);
     const lightmodel::ComplexSource model(
@@ -108,16 +113,20 @@ TEST(BidirectionalDisk, PrimaryIlluminanceMatchesClosedForm) {
             worst_model = std::max(worst_model, std::fabs(measured / model_truth - 1));
             sum_squares += relative * relative, ++cells;
             EXPECT_LT(se, 0.0025 * truth) << "cell " << i << "," << j;  // 1% is then 4 se or more
-            EXPECT_NEAR(measured, model_truth, 0.01 * model_truth) << "cell " << i << "," << j << " se " << se;
+            EXPECT_NEAR(measured, model_truth, 0.01 * model_truth)
+                << "cell " << i << "," << j << " se " << se;
         }
     const double rms = std::sqrt(sum_squares / cells);
-    std::printf("primary illuminance over %d cells 24-47 mm from the disk: against the closed form worst %.4f, "
-                "RMS %.4f; against the closed form x the model's far field worst %.4f\n",
-                cells, worst, rms, worst_model);
+    std::printf(
+        "primary illuminance over %d cells 24-47 mm from the disk: against the closed form worst "
+        "%.4f, "
+        "RMS %.4f; against the closed form x the model's far field worst %.4f\n",
+        cells, worst, rms, worst_model);
     EXPECT_LT(rms, 0.02);
     // A black floor reflects nothing: no secondary light, and the combined map is the primary.
     EXPECT_EQ(r.layers[2].receivers.at(0).irradiance.mean(1, 1).green, 0);
-    EXPECT_DOUBLE_EQ(r.receivers.at(0).irradiance.mean(1, 1).green, primary.irradiance.mean(1, 1).green);
+    EXPECT_DOUBLE_EQ(r.receivers.at(0).irradiance.mean(1, 1).green,
+                     primary.irradiance.mean(1, 1).green);
 }
 
 TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
@@ -128,7 +137,8 @@ TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
     const std::string scene = R"(
         global_settings { integrator "bidirectional" }
         camera { location <0, 0, 30> direction <0, 0, -1> right <1, 0, 0> up <0, 1, 0> angle 6 }
-        ray_source { ")" + disk_files().model + R"(" }
+        ray_source { ")" + disk_files().model +
+                              R"(" }
     )";
     const SceneDescription description = parse(scene);
     const RenderScene render_scene(description);
@@ -143,21 +153,24 @@ TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
     int inner = 0;
     for (int y = 0; y < settings.height; ++y)
         for (int x = 0; x < settings.width; ++x) {
-            const double s = (x + 0.5) / settings.width - 0.5, t = 0.5 - (y + 0.5) / settings.height;
+            const double s = (x + 0.5) / settings.width - 0.5,
+                         t = 0.5 - (y + 0.5) / settings.height;
             const Vec3 d = c.direction + s * c.right + t * c.up;
             const double distance = length(d), cos_theta = focal / distance;
             const double solid_angle = pixel_area * focal / (distance * distance * distance);
             const double L = luminance_weight(direct.mean(x, y));  // W/(m^2 sr)
             irradiance += L * solid_angle * cos_theta;
             // Where the pixel's footprint on the disk plane lies within 0.7 radii of the centre.
-            const double footprint = D * std::sqrt(s * s * dot(c.right, c.right) + t * t * dot(c.up, c.up)) / focal;
+            const double footprint =
+                D * std::sqrt(s * s * dot(c.right, c.right) + t * t * dot(c.up, c.up)) / focal;
             if (footprint < 0.7 * kDiskRadius) inner_sum += L, ++inner;
         }
     const double radiance_truth = 1e6 * kDiskFlux / (kPi * kPi * kDiskRadius * kDiskRadius);
     const double irradiance_truth = 1e6 * kDiskFlux / (kPi * D * D);
-    std::printf("disk seen by the camera: mean radiance %.6g W/(m^2 sr) over %d pixels (truth %.6g), "
-                "image irradiance %.6g W/m^2 (truth %.6g)\n",
-                inner_sum / inner, inner, radiance_truth, irradiance, irradiance_truth);
+    std::printf(
+        "disk seen by the camera: mean radiance %.6g W/(m^2 sr) over %d pixels (truth %.6g), "
+        "image irradiance %.6g W/m^2 (truth %.6g)\n",
+        inner_sum / inner, inner, radiance_truth, irradiance, irradiance_truth);
     ASSERT_GT(inner, 100);
     EXPECT_NEAR(inner_sum / inner, radiance_truth, 0.02 * radiance_truth);
     EXPECT_NEAR(irradiance, irradiance_truth, 0.02 * irradiance_truth);
@@ -181,7 +194,8 @@ TEST(BidirectionalDisk, CameraSeesTheDiskInAMirror) {
         global_settings { integrator "bidirectional" }
         camera { location <0, 0, -30> direction <0, 0, 1> right <1, 0, 0> up <0, 1, 0> angle 4 }
         plane { z, 15 pigment { rgb 0 } finish { reflection 1 diffuse 0 ambient 0 } }
-        ray_source { ")" + disk_files().model + R"(" }
+        ray_source { ")" + disk_files().model +
+                              R"(" }
     )";
     const SceneDescription description = parse(scene);
     const RenderScene render_scene(description);
@@ -194,14 +208,18 @@ TEST(BidirectionalDisk, CameraSeesTheDiskInAMirror) {
     double irradiance = 0;
     for (int y = 0; y < settings.height; ++y)
         for (int x = 0; x < settings.width; ++x) {
-            const double s = (x + 0.5) / settings.width - 0.5, t = 0.5 - (y + 0.5) / settings.height;
+            const double s = (x + 0.5) / settings.width - 0.5,
+                         t = 0.5 - (y + 0.5) / settings.height;
             const double distance = length(c.direction + s * c.right + t * c.up);
-            irradiance += luminance_weight(r.layers[0].film.mean(x, y)) * pixel_area * focal * focal / std::pow(distance, 4);
+            irradiance += luminance_weight(r.layers[0].film.mean(x, y)) * pixel_area * focal *
+                          focal / std::pow(distance, 4);
         }
     const lightmodel::ComplexSource model(
         std::make_shared<lightmodel::LightModel>(lightmodel::read_model(disk_files().model)));
     const double truth = 1e6 * model.intensity({0, 0, 1}) / (60 * 60);
-    std::printf("disk in a mirror: image irradiance %.6g W/m^2, model's axial intensity / 60^2 %.6g\n", irradiance, truth);
+    std::printf(
+        "disk in a mirror: image irradiance %.6g W/m^2, model's axial intensity / 60^2 %.6g\n",
+        irradiance, truth);
     EXPECT_NEAR(irradiance, truth, 0.01 * truth);
     EXPECT_EQ(r.layers[1].film.mean(32, 32).green, 0);  // the black mirror has no smooth lobe
 }
@@ -223,10 +241,13 @@ TEST(BidirectionalDisk, ClosedWhiteBoxConservesEnergy) {
     const RenderResult r = render_text(closed_box(albedo, disk_files().model), settings);
     const double primary = test::wall_average(r.layers[1].receivers).mean;
     const double secondary = test::wall_average(r.layers[2].receivers).mean;
-    const double primary_truth = kDiskFlux / area, secondary_truth = kDiskFlux * albedo / ((1 - albedo) * area);
-    std::printf("closed box: primary %.5g W/m^2 (truth %.5g), secondary %.5g W/m^2 (truth %.5g), "
-                "combined %.5g, final radius %.3g mm\n",
-                primary, primary_truth, secondary, secondary_truth, test::wall_average(r.receivers).mean, r.photon_radius);
+    const double primary_truth = kDiskFlux / area,
+                 secondary_truth = kDiskFlux * albedo / ((1 - albedo) * area);
+    std::printf(
+        "closed box: primary %.5g W/m^2 (truth %.5g), secondary %.5g W/m^2 (truth %.5g), "
+        "combined %.5g, final radius %.3g mm\n",
+        primary, primary_truth, secondary, secondary_truth, test::wall_average(r.receivers).mean,
+        r.photon_radius);
     EXPECT_NEAR(primary, primary_truth, 0.01 * primary_truth);
     EXPECT_NEAR(secondary, secondary_truth, 0.02 * secondary_truth);
 }
@@ -241,9 +262,12 @@ TEST(BidirectionalDisk, NaiveRaySetConservesEnergyToo) {
     const RenderResult r = render_text(closed_box(albedo, disk_files().rays), settings);
     const double primary = test::wall_average(r.layers[1].receivers).mean;
     const double secondary = test::wall_average(r.layers[2].receivers).mean;
-    const double primary_truth = kDiskFlux / area, secondary_truth = kDiskFlux * albedo / ((1 - albedo) * area);
-    std::printf("closed box, naive rays: primary %.5g W/m^2 (truth %.5g), secondary %.5g W/m^2 (truth %.5g)\n",
-                primary, primary_truth, secondary, secondary_truth);
+    const double primary_truth = kDiskFlux / area,
+                 secondary_truth = kDiskFlux * albedo / ((1 - albedo) * area);
+    std::printf(
+        "closed box, naive rays: primary %.5g W/m^2 (truth %.5g), secondary %.5g W/m^2 (truth "
+        "%.5g)\n",
+        primary, primary_truth, secondary, secondary_truth);
     EXPECT_NEAR(primary, primary_truth, 0.01 * primary_truth);
     EXPECT_NEAR(secondary, secondary_truth, 0.02 * secondary_truth);
 }
@@ -269,24 +293,30 @@ TEST(BidirectionalSquare, AgreesWithThePathTracersAreaLight) {
     }
     const std::string walls = R"(
         box { <-50, -50, -50>, <50, 50, 50> pigment { rgb 1 } finish { diffuse 0.5 ambient 0 } }
-        illuminance_receiver { <-50, -50, -50>, <0, 0, 100>, <100, 0, 0> resolution <5, 5> name "floor" }
-        illuminance_receiver { <-50, 50, -50>, <100, 0, 0>, <0, 0, 100> resolution <5, 5> name "ceiling" }
-        illuminance_receiver { <50, -50, -50>, <0, 0, 100>, <0, 100, 0> resolution <5, 5> name "right" }
+        illuminance_receiver { <-50, -50, -50>, <0, 0, 100>, <100, 0, 0>
+            resolution <5, 5> name "floor" }
+        illuminance_receiver { <-50, 50, -50>, <100, 0, 0>, <0, 0, 100>
+            resolution <5, 5> name "ceiling" }
+        illuminance_receiver { <50, -50, -50>, <0, 0, 100>, <0, 100, 0>
+            resolution <5, 5> name "right" }
     )";
     RenderSettings settings;
     settings.render_image = false, settings.seed = 21;
     settings.passes = 64, settings.photons_per_pass = 100000, settings.photon_radius = 3;
-    const RenderResult model = render(
-        RenderScene(parse_scene_text("global_settings { integrator \"bidirectional\" }" + walls +
-                                         "ray_source { \"" + rays + "\" rotate <90, 0, 0> translate <0, 40, 0> }",
-                                     scratch.file("model.pov"))),
-        settings);
+    const RenderResult model =
+        render(RenderScene(parse_scene_text("global_settings { integrator \"bidirectional\" }" +
+                                                walls + "ray_source { \"" + rays +
+                                                "\" rotate <90, 0, 0> translate <0, 40, 0> }",
+                                            scratch.file("model.pov"))),
+               settings);
     settings.passes = 512;
-    const RenderResult path = render(
-        RenderScene(parse_scene_text(walls + R"(light_source { <0, 40, 0> color rgb 0.318309886183791
-            area_light <10, 0, 0>, <0, 0, 10>, 2, 2 spotlight point_at <0, 0, 0> radius -90 falloff 90 tightness 1 })",
-                                     scratch.file("path.pov"))),
-        settings);
+    const RenderResult path =
+        render(RenderScene(
+                   parse_scene_text(walls + R"(light_source { <0, 40, 0> color rgb 0.318309886183791
+            area_light <10, 0, 0>, <0, 0, 10>, 2, 2
+                spotlight point_at <0, 0, 0> radius -90 falloff 90 tightness 1 })",
+                                    scratch.file("path.pov"))),
+               settings);
     double sum_squares = 0, worst_z = 0;
     int cells = 0;
     for (size_t k = 0; k < model.receivers.size(); ++k) {
@@ -295,16 +325,21 @@ TEST(BidirectionalSquare, AgreesWithThePathTracersAreaLight) {
         for (int j = 0; j < a.ny(); ++j)
             for (int i = 0; i < a.nx(); ++i) {
                 const double ea = a.photometric_mean(i, j), eb = b.photometric_mean(i, j);
-                const double joint = std::hypot(a.photometric_standard_error(i, j), b.photometric_standard_error(i, j));
+                const double joint = std::hypot(a.photometric_standard_error(i, j),
+                                                b.photometric_standard_error(i, j));
                 sum_squares += (ea / eb - 1) * (ea / eb - 1), ++cells;
                 worst_z = std::max(worst_z, std::fabs(ea - eb) / joint);
                 // z = 4.5 of the joint standard error (6.8e-6 two-sided per cell), plus 1% for
                 // the model's far-field noise (1.2% RMS per direction, docs/light-model.md).
-                EXPECT_NEAR(ea, eb, 4.5 * joint + 0.01 * eb) << model.receivers[k].receiver.name << " " << i << "," << j;
+                EXPECT_NEAR(ea, eb, 4.5 * joint + 0.01 * eb)
+                    << model.receivers[k].receiver.name << " " << i << "," << j;
             }
     }
-    std::printf("square through the model vs area light: relative RMS difference %.4f over %d cells, worst %.2f "
-                "joint standard errors\n", std::sqrt(sum_squares / cells), cells, worst_z);
+    std::printf(
+        "square through the model vs area light: relative RMS difference %.4f over %d cells, worst "
+        "%.2f "
+        "joint standard errors\n",
+        std::sqrt(sum_squares / cells), cells, worst_z);
 }
 
 }  // namespace

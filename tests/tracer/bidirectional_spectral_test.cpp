@@ -13,9 +13,9 @@
 #include <gtest/gtest.h>
 
 #include "converters/analytic/analytic_sources.h"
-#include "converters/rays/ray_stream.h"
-#include "converters/colour/spectrum.h"
 #include "converters/analytic/synth.h"
+#include "converters/colour/spectrum.h"
+#include "converters/rays/ray_stream.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/emission_spectrum.h"
 #include "lightmodel/model_build.h"
@@ -36,8 +36,10 @@ TEST(SpectralUpsampling, FittedSpectraGiveTheirColourBackWithinBounds) {
     // the squared colour error is below 1e-14 (each channel within 1e-7), and its worst here is
     // 6.4e-8 (printed). The bound is 10x that stopping point, for another compiler or libm
     // taking other Levenberg-Marquardt steps; a fit that stops short of it fails.
-    const Rgb colours[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0},{0.8, 0.2, 0.1}, {0.1, 0.6, 0.3}, {0.2, 0.3, 0.9}, {0.5, 0.5, 0.2}, {0.9, 0.8, 0.1},
-                           {0.05, 0.04, 0.06}, {0.16, 0.32, 0.72}, {0.7, 0.1, 0.6}, {0.3, 0.9, 0.9}};
+    const Rgb colours[] = {{1, 0, 0},       {0, 1, 0},          {0, 0, 1},          {1, 1, 0},
+                           {0.8, 0.2, 0.1}, {0.1, 0.6, 0.3},    {0.2, 0.3, 0.9},    {0.5, 0.5, 0.2},
+                           {0.9, 0.8, 0.1}, {0.05, 0.04, 0.06}, {0.16, 0.32, 0.72}, {0.7, 0.1, 0.6},
+                           {0.3, 0.9, 0.9}};
     double worst = 0;
     for (const Rgb& c : colours) {
         const ReflectanceSpectrum s = upsample_reflectance(c);
@@ -78,7 +80,8 @@ TEST(SpectralFilm, ConversionKeepsLuminanceAndWhite) {
         sum += to_rgb(v, w);
     }
     const Rgb mean = (1.0 / n) * sum;
-    std::printf("D65 of luminance 1 through hero sampling: RGB %.4f %.4f %.4f\n", mean.red, mean.green, mean.blue);
+    std::printf("D65 of luminance 1 through hero sampling: RGB %.4f %.4f %.4f\n", mean.red,
+                mean.green, mean.blue);
     EXPECT_NEAR(luminance_weight(mean), 1, 1e-3);
     EXPECT_NEAR(mean.red, 1, 0.02);
     EXPECT_NEAR(mean.green, 1, 0.02);
@@ -95,7 +98,8 @@ struct LineDisk {
     std::string rays, model;
     double luminous_weight;  // luminance weight of the whole disk: lm / 683
 };
-LineDisk line_disk(const test::ScratchDir& scratch, double nm, double flux, uint64_t rays, uint64_t seed) {
+LineDisk line_disk(const test::ScratchDir& scratch, double nm, double flux, uint64_t rays,
+                   uint64_t seed) {
     LineDisk d;
     const std::string name = "disk" + std::to_string(int(nm));
     d.rays = scratch.file(name + ".tm25ray");
@@ -113,10 +117,11 @@ LineDisk line_disk(const test::ScratchDir& scratch, double nm, double flux, uint
 }
 
 // The closed box of tracer_support.h (its closed forms are there), 10 x 10 cells a wall.
-std::string coloured_box(const std::string& pigment, double diffuse, const std::vector<std::string>& sources,
-                         bool spectral) {
+std::string coloured_box(const std::string& pigment, double diffuse,
+                         const std::vector<std::string>& sources, bool spectral) {
     test::ClosedBox box;
-    box.pigment = pigment, box.diffuse = diffuse, box.cells = 10, box.spectral = spectral, box.sources = sources;
+    box.pigment = pigment, box.diffuse = diffuse, box.cells = 10, box.spectral = spectral,
+    box.sources = sources;
     return test::closed_box_scene(box);
 }
 
@@ -125,12 +130,14 @@ struct BoxResult {
 };
 // `primary_only`: many cheap passes with few photons (the light model's primary light is light
 // sampled at the receivers; the photons only make the secondary light).
-BoxResult render_box(const test::ScratchDir& scratch, const std::string& text, bool naive, uint64_t seed,
-                     bool primary_only = false) {
+BoxResult render_box(const test::ScratchDir& scratch, const std::string& text, bool naive,
+                     uint64_t seed, bool primary_only = false) {
     RenderSettings settings;
     settings.render_image = false, settings.passes = primary_only ? 256 : 8, settings.seed = seed;
-    settings.photons_per_pass = primary_only ? 64 : 200000, settings.photon_radius = 2, settings.naive_sources = naive;
-    const RenderResult r = render(RenderScene(parse_scene_text(text, scratch.file("box.pov"))), settings);
+    settings.photons_per_pass = primary_only ? 64 : 200000, settings.photon_radius = 2,
+    settings.naive_sources = naive;
+    const RenderResult r =
+        render(RenderScene(parse_scene_text(text, scratch.file("box.pov"))), settings);
     return {test::wall_average(r.layers[1].receivers), test::wall_average(r.layers[2].receivers)};
 }
 
@@ -152,8 +159,10 @@ TEST(SpectralSource, RadianceSpectrumHasTheLuminanceOfTheColour) {
     // equals the luminance of the RGB radiance to 1e-6 (the shapes are normalised by the
     // exact bin means of the interpolated V).
     test::ScratchDir scratch;
-    const LineDisk blue = line_disk(scratch, 460, 1, 100000, 3), yellow = line_disk(scratch, 580, 2, 100000, 4);
-    auto grey_model = std::make_shared<lightmodel::LightModel>(lightmodel::read_model(yellow.model));
+    const LineDisk blue = line_disk(scratch, 460, 1, 100000, 3),
+                   yellow = line_disk(scratch, 580, 2, 100000, 4);
+    auto grey_model =
+        std::make_shared<lightmodel::LightModel>(lightmodel::read_model(yellow.model));
     std::fill(grey_model->spectra.begin(), grey_model->spectra.end(), 0.f);
     std::vector<std::shared_ptr<const lightmodel::LightModel>> models = {
         std::make_shared<lightmodel::LightModel>(lightmodel::read_model(blue.model)),
@@ -169,7 +178,8 @@ TEST(SpectralSource, RadianceSpectrumHasTheLuminanceOfTheColour) {
                 for (int i = 0; i < 4; ++i) q.nm[i] = first + i + 0.5;
                 source.L_spectral(origin, dir, {}, q);
                 for (int i = 0; i < 4; ++i)
-                    if (q.nm[i] < kLambdaMax) spectral_luminance += photopic_efficiency(q.nm[i]) * q.value[i];
+                    if (q.nm[i] < kLambdaMax)
+                        spectral_luminance += photopic_efficiency(q.nm[i]) * q.value[i];
             }
             ASSERT_GT(rgb_luminance, 0);
             EXPECT_NEAR(spectral_luminance, rgb_luminance, 1e-6 * rgb_luminance);
@@ -193,15 +203,21 @@ TEST(SpectralBox, GreyWorldGivesTheSameLuxAsRgb) {
     // bounds of that RGB test.
     test::ScratchDir scratch;
     const LineDisk disk = line_disk(scratch, 555, 1, 300000, 7);
-    const double primary_truth = 1e6 * disk.luminous_weight / (test::kClosedBoxArea * 1e6), secondary_truth = primary_truth;
-    const BoxResult rgb = render_box(scratch, coloured_box("1", 0.5, {disk.model}, false), false, 9);
-    const BoxResult spectral = render_box(scratch, coloured_box("1", 0.5, {disk.model}, true), false, 9);
+    const double primary_truth = 1e6 * disk.luminous_weight / (test::kClosedBoxArea * 1e6),
+                 secondary_truth = primary_truth;
+    const BoxResult rgb =
+        render_box(scratch, coloured_box("1", 0.5, {disk.model}, false), false, 9);
+    const BoxResult spectral =
+        render_box(scratch, coloured_box("1", 0.5, {disk.model}, true), false, 9);
     const double joint = std::hypot(rgb.primary.standard_error, spectral.primary.standard_error);
-    std::printf("grey box: primary RGB %.5g (se %.2g) spectral %.5g (se %.2g), difference %.2f joint se, truth %.5g; "
-                "secondary RGB %.5g spectral %.5g (se %.2g) truth %.5g W/m^2 (x 683 lx)\n",
-                rgb.primary.mean, rgb.primary.standard_error, spectral.primary.mean, spectral.primary.standard_error,
-                (spectral.primary.mean - rgb.primary.mean) / joint, primary_truth, rgb.secondary.mean,
-                spectral.secondary.mean, spectral.secondary.standard_error, secondary_truth);
+    std::printf(
+        "grey box: primary RGB %.5g (se %.2g) spectral %.5g (se %.2g), difference %.2f joint se, "
+        "truth %.5g; "
+        "secondary RGB %.5g spectral %.5g (se %.2g) truth %.5g W/m^2 (x 683 lx)\n",
+        rgb.primary.mean, rgb.primary.standard_error, spectral.primary.mean,
+        spectral.primary.standard_error, (spectral.primary.mean - rgb.primary.mean) / joint,
+        primary_truth, rgb.secondary.mean, spectral.secondary.mean,
+        spectral.secondary.standard_error, secondary_truth);
     EXPECT_NEAR(spectral.primary.mean, rgb.primary.mean, 4.5 * joint);
     EXPECT_NEAR(spectral.secondary.mean, secondary_truth, 0.02 * secondary_truth);
     EXPECT_NEAR(spectral.secondary.mean, rgb.secondary.mean, 0.02 * secondary_truth);
@@ -212,23 +228,30 @@ TEST(SpectralBox, NarrowBandSourcesSeeTheReflectanceAtTheirWavelengths) {
     const std::string pigment = "<0.2, 0.4, 0.9>";
     const double diffuse = 0.8;
     const ReflectanceSpectrum a = upsample_reflectance({0.16, 0.32, 0.72});
-    const LineDisk blue = line_disk(scratch, 460, 1, 300000, 7), yellow = line_disk(scratch, 580, 1, 300000, 8);
+    const LineDisk blue = line_disk(scratch, 460, 1, 300000, 7),
+                   yellow = line_disk(scratch, 580, 1, 300000, 8);
 
     // 1. The 460 nm disk as its stored rays (naive model): each photon carries 460 nm exactly,
     //    so the walls reflect a(460).
     const double a460 = a(460), primary_blue = blue.luminous_weight / test::kClosedBoxArea;
-    const BoxResult naive = render_box(scratch, coloured_box(pigment, diffuse, {blue.rays}, true), true, 11);
+    const BoxResult naive =
+        render_box(scratch, coloured_box(pigment, diffuse, {blue.rays}, true), true, 11);
     const double naive_truth = primary_blue * a460 / (1 - a460);
     // 2. The same disk through its light model: the model keeps 10 nm bins, so its light is
     //    spread over 460-470 nm.
-    const BoxResult model = render_box(scratch, coloured_box(pigment, diffuse, {blue.model}, true), false, 12);
+    const BoxResult model =
+        render_box(scratch, coloured_box(pigment, diffuse, {blue.model}, true), false, 12);
     const double model_truth = primary_blue * series_over_bin(a, 460);
     // 3. RGB transport of the same scene: another answer, the metamerism of RGB rendering.
-    const BoxResult rgb = render_box(scratch, coloured_box(pigment, diffuse, {blue.model}, false), false, 12);
-    std::printf("460 nm in a <0.16, 0.32, 0.72> box, a(460) = %.4f: primary %.5g (truth %.5g); secondary naive "
-                "%.5g (se %.2g, truth %.5g), model %.5g (se %.2g, truth %.5g), RGB transport %.5g W/m^2\n",
-                a460, model.primary.mean, primary_blue, naive.secondary.mean, naive.secondary.standard_error,
-                naive_truth, model.secondary.mean, model.secondary.standard_error, model_truth, rgb.secondary.mean);
+    const BoxResult rgb =
+        render_box(scratch, coloured_box(pigment, diffuse, {blue.model}, false), false, 12);
+    std::printf(
+        "460 nm in a <0.16, 0.32, 0.72> box, a(460) = %.4f: primary %.5g (truth %.5g); secondary "
+        "naive "
+        "%.5g (se %.2g, truth %.5g), model %.5g (se %.2g, truth %.5g), RGB transport %.5g W/m^2\n",
+        a460, model.primary.mean, primary_blue, naive.secondary.mean,
+        naive.secondary.standard_error, naive_truth, model.secondary.mean,
+        model.secondary.standard_error, model_truth, rgb.secondary.mean);
     EXPECT_NEAR(model.primary.mean, primary_blue, 0.01 * primary_blue);
     EXPECT_NEAR(naive.primary.mean, primary_blue, 0.01 * primary_blue);
     EXPECT_NEAR(naive.secondary.mean, naive_truth, 0.02 * naive_truth);
@@ -241,14 +264,18 @@ TEST(SpectralBox, NarrowBandSourcesSeeTheReflectanceAtTheirWavelengths) {
     // two-line primary light noisier (about 1.7% over the 8 passes above): many cheap passes.
     const BoxResult two_primary = render_box(scratch, two_lines, false, 14, true);
     const double primary_two = primary_blue + yellow.luminous_weight / test::kClosedBoxArea;
-    const double two_truth = primary_blue * series_over_bin(a, 460) +
-                             yellow.luminous_weight / test::kClosedBoxArea * series_over_bin(a, 580);
-    const BoxResult two_rgb =
-        render_box(scratch, coloured_box(pigment, diffuse, {blue.model, yellow.model}, false), false, 13);
-    std::printf("460 + 580 nm, a(580) = %.4f: primary %.5g (se %.2g, RGB transport %.5g, truth %.5g); secondary "
-                "%.5g (se %.2g, truth %.5g), RGB transport %.5g W/m^2\n",
-                a(580), two_primary.primary.mean, two_primary.primary.standard_error, two_rgb.primary.mean, primary_two,
-                two.secondary.mean, two.secondary.standard_error, two_truth, two_rgb.secondary.mean);
+    const double two_truth = primary_blue * series_over_bin(a, 460) + yellow.luminous_weight /
+                                                                          test::kClosedBoxArea *
+                                                                          series_over_bin(a, 580);
+    const BoxResult two_rgb = render_box(
+        scratch, coloured_box(pigment, diffuse, {blue.model, yellow.model}, false), false, 13);
+    std::printf(
+        "460 + 580 nm, a(580) = %.4f: primary %.5g (se %.2g, RGB transport %.5g, truth %.5g); "
+        "secondary "
+        "%.5g (se %.2g, truth %.5g), RGB transport %.5g W/m^2\n",
+        a(580), two_primary.primary.mean, two_primary.primary.standard_error, two_rgb.primary.mean,
+        primary_two, two.secondary.mean, two.secondary.standard_error, two_truth,
+        two_rgb.secondary.mean);
     EXPECT_NEAR(two_primary.primary.mean, primary_two, 0.01 * primary_two);
     EXPECT_NEAR(two.secondary.mean, two_truth, 0.02 * two_truth);
 }

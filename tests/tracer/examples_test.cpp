@@ -22,7 +22,8 @@ std::vector<Rgb> lit_components(const Film& film) {
     std::vector<int> label(size_t(w) * h, -1);
     std::vector<Rgb> components;
     for (int start = 0; start < w * h; ++start) {
-        if (label[size_t(start)] >= 0 || !(max_component(film.mean(start % w, start / w)) > 0)) continue;
+        if (label[size_t(start)] >= 0 || !(max_component(film.mean(start % w, start / w)) > 0))
+            continue;
         Rgb sum;
         std::vector<int> stack{start};
         label[size_t(start)] = int(components.size());
@@ -49,10 +50,14 @@ TEST(Examples, LedBoxShowsThe39ChipsApartInTheirColours) {
     // The cluster as scripts/example.sh makes it, with fewer rays (2e5; the model's lattice
     // cells are then 0.33 mm against chips of 1 mm and gaps of about 1 mm).
     test::ScratchDir scratch;
-    const auto cluster = make_source("cluster", {{"rings", "1,6,12,20"}, {"chip", "1"}, {"pitch", "2"}, {"flux", "1"},
+    const auto cluster = make_source("cluster", {{"rings", "1,6,12,20"},
+                                                 {"chip", "1"},
+                                                 {"pitch", "2"},
+                                                 {"flux", "1"},
                                                  {"wavelength", "630,530,460"}});
     {
-        auto out = create_rays(scratch.file("cluster.tm25ray"), RayFormat::tm25, synth_header(*cluster, 200000, 1));
+        auto out = create_rays(scratch.file("cluster.tm25ray"), RayFormat::tm25,
+                               synth_header(*cluster, 200000, 1));
         synthesize(*cluster, 200000, 1, *out);
     }
     ParseOptions options;
@@ -65,7 +70,8 @@ TEST(Examples, LedBoxShowsThe39ChipsApartInTheirColours) {
     std::vector<Rgb> chips = lit_components(r.layers[0].film);
     // The chips and, through the mirror ball, their reflection: the 39 largest spots are the
     // chips seen directly (the ball's image is a few pixels).
-    std::sort(chips.begin(), chips.end(), [](Rgb a, Rgb b) { return luminance_weight(a) > luminance_weight(b); });
+    std::sort(chips.begin(), chips.end(),
+              [](Rgb a, Rgb b) { return luminance_weight(a) > luminance_weight(b); });
     ASSERT_GE(chips.size(), 39u);
     int red = 0, green = 0, blue = 0;
     for (size_t k = 0; k < 39; ++k) {
@@ -78,8 +84,8 @@ TEST(Examples, LedBoxShowsThe39ChipsApartInTheirColours) {
     EXPECT_EQ(red, 13);
     EXPECT_EQ(green, 13);
     EXPECT_EQ(blue, 13);
-    std::printf("direct visibility: %zu lit spots; the 39 brightest: %d red, %d green, %d blue\n", chips.size(), red,
-                green, blue);
+    std::printf("direct visibility: %zu lit spots; the 39 brightest: %d red, %d green, %d blue\n",
+                chips.size(), red, green, blue);
 }
 
 TEST(Examples, OsramDomeParses) {

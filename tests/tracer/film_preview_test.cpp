@@ -12,7 +12,10 @@ namespace rayset::tracer {
 namespace {
 
 // sRGB encoding (IEC 61966-2-1) of a linear value in [0, 1], as an 8-bit code.
-int srgb_code(double v) { return int(std::lround(255 * (v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055))); }
+int srgb_code(double v) {
+    return int(
+        std::lround(255 * (v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055)));
+}
 
 TEST(FilmPreview, AutomaticExposureIgnoresBlackPixels) {
     // 100 x 100 pixels, black but for 200 grey pixels of radiance 1..200 (2% of the image).
@@ -22,10 +25,10 @@ TEST(FilmPreview, AutomaticExposureIgnoresBlackPixels) {
     const std::vector<uint8_t> rgb = tone_map_srgb(film, 0);
     // Of the 200 lit values the 99th percentile is the 199th smallest, 199: exposure 1/199.
     auto code = [&](int k) { return int(rgb[size_t(3 * k)]); };
-    EXPECT_EQ(code(198), 255);                        // 199 / 199
-    EXPECT_EQ(code(99), srgb_code(100.0 / 199));      // a mid value keeps its place
+    EXPECT_EQ(code(198), 255);                    // 199 / 199
+    EXPECT_EQ(code(99), srgb_code(100.0 / 199));  // a mid value keeps its place
     EXPECT_EQ(code(0), srgb_code(1.0 / 199));
-    EXPECT_EQ(code(5000), 0);                         // black stays black
+    EXPECT_EQ(code(5000), 0);  // black stays black
     // An explicit exposure is used as given.
     EXPECT_EQ(int(tone_map_srgb(film, 1.0 / 50)[3 * 24]), srgb_code(25.0 / 50));
 }

@@ -22,9 +22,9 @@ namespace fs = std::filesystem;
 // colors.inc or shapes.inc without including it. POV-Ray 3.7.0.10 fails the same way without it
 // and loads them with it (checked).
 const std::map<std::string, std::string> kNeedsFirst = {
-    {"stdcam.inc", "colors.inc"},   {"skies.inc", "colors.inc"},   {"stones.inc", "colors.inc"},
-    {"stones1.inc", "colors.inc"},  {"stones2.inc", "colors.inc"}, {"stoneold.inc", "colors.inc"},
-    {"shapes2.inc", "shapes.inc"},  {"shapesq.inc", "shapes.inc"},
+    {"stdcam.inc", "colors.inc"},  {"skies.inc", "colors.inc"},   {"stones.inc", "colors.inc"},
+    {"stones1.inc", "colors.inc"}, {"stones2.inc", "colors.inc"}, {"stoneold.inc", "colors.inc"},
+    {"shapes2.inc", "shapes.inc"}, {"shapesq.inc", "shapes.inc"},
 };
 
 // Include files that add objects to the scene with features the renderer does not render yet:
@@ -37,24 +37,27 @@ std::vector<std::string> include_files() {
     std::vector<std::string> names;
     for (const std::string& folder : default_include_paths())
         for (const auto& entry : fs::directory_iterator(folder))
-            if (entry.path().extension() == ".inc") names.push_back(entry.path().filename().string());
+            if (entry.path().extension() == ".inc")
+                names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
 
 TEST(PovRayIncludes, EachLoadsInASceneThatRendersOnePass) {
     const std::vector<std::string> names = include_files();
-    if (names.empty()) GTEST_SKIP() << "POV-Ray's include folder is not installed (scripts/install-deps.sh)";
+    if (names.empty())
+        GTEST_SKIP() << "POV-Ray's include folder is not installed (scripts/install-deps.sh)";
     EXPECT_GE(names.size(), 39u);  // POV-Ray 3.7's 39
     test::ScratchDir dir;
     int rendered = 0;
     for (const std::string& name : names) {
         const auto first = kNeedsFirst.find(name);
-        const std::string text = "#version 3.7;\n" +
-                                 (first == kNeedsFirst.end() ? "" : "#include \"" + first->second + "\"\n") +
-                                 "#include \"" + name + "\"\n" +
-                                 "camera { location <0, 1, -3> look_at 0 }\n"
-                                 "light_source { <2, 4, -3> rgb 1 }\n";
+        const std::string text =
+            "#version 3.7;\n" +
+            (first == kNeedsFirst.end() ? "" : "#include \"" + first->second + "\"\n") +
+            "#include \"" + name + "\"\n" +
+            "camera { location <0, 1, -3> look_at 0 }\n"
+            "light_source { <2, 4, -3> rgb 1 }\n";
         test::write_file(dir.file("scene.pov"), text);
         SceneDescription description;
         try {
@@ -73,14 +76,18 @@ TEST(PovRayIncludes, EachLoadsInASceneThatRendersOnePass) {
             settings.progress = false;
             render(scene, settings);
             ++rendered;
-            EXPECT_EQ(refused, kRefusedByTheRenderer.end()) << name << " renders now: take it off the list";
+            EXPECT_EQ(refused, kRefusedByTheRenderer.end())
+                << name << " renders now: take it off the list";
         } catch (const Error& e) {
-            if (refused == kRefusedByTheRenderer.end()) ADD_FAILURE() << name << ": " << e.what();
-            else EXPECT_EQ(std::string(e.what()).rfind(refused->second, 0), 0u) << name << ": " << e.what();
+            if (refused == kRefusedByTheRenderer.end())
+                ADD_FAILURE() << name << ": " << e.what();
+            else
+                EXPECT_EQ(std::string(e.what()).rfind(refused->second, 0), 0u)
+                    << name << ": " << e.what();
         }
     }
-    std::printf("%zu include files load; %d render, the rest are refused naming the feature\n", names.size(),
-                rendered);
+    std::printf("%zu include files load; %d render, the rest are refused naming the feature\n",
+                names.size(), rendered);
 }
 
 }  // namespace

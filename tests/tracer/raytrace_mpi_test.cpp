@@ -31,7 +31,8 @@ constexpr int kPasses = 7, kWidth = 40, kHeight = 30, kSeed = 5;
 
 std::string cornell_with_receiver(const test::ScratchDir&) {
     return test::read_file(kCornell) +
-           "illuminance_receiver { <5, 0.01, 5>, <0, 0, 45>, <45, 0, 0> resolution <4, 3> name \"floor\" }\n";
+           "illuminance_receiver { <5, 0.01, 5>, <0, 0, 45>, <45, 0, 0> resolution <4, 3> name "
+           "\"floor\" }\n";
 }
 
 // A Lambertian disk of 2e4 rays (its model built at load by every rank) in a closed grey box,
@@ -48,7 +49,8 @@ std::string bidirectional_box(const test::ScratchDir& dir) {
         camera { location <0, 0, -45> direction <0, 0, 1> right <1, 0, 0> up <0, 1, 0> angle 90 }
         box { <-50, -50, -50>, <50, 50, 50> pigment { rgb 1 } finish { diffuse 0.5 ambient 0 } }
         light_source { <20, 40, 0> color rgb 0.0001 }
-        illuminance_receiver { <-50, -49.9, -50>, <0, 0, 100>, <100, 0, 0> resolution <3, 3> name "floor" }
+        illuminance_receiver { <-50, -49.9, -50>, <0, 0, 100>, <100, 0, 0>
+            resolution <3, 3> name "floor" }
         ray_source { "disk.tm25ray" rotate <90, 0, 0> translate <0, 20, 0> }
     )";
 }
@@ -56,9 +58,11 @@ std::string bidirectional_box(const test::ScratchDir& dir) {
 // raytrace on `processes` processes (1: no mpirun) in `dir`, its state kept in out.checkpoint.
 void raytrace(const test::ScratchDir& dir, int processes, const std::string& more = "") {
     std::string line = "cd '" + dir.path().string() + "' && ";
-    if (processes > 1) line += "mpirun --allow-run-as-root --oversubscribe -n " + std::to_string(processes) + " ";
-    line += "'" + kRaytrace + "' scene.pov +W" + std::to_string(kWidth) + " +H" + std::to_string(kHeight) +
-            " -o out.exr --no-png --seed " + std::to_string(kSeed) + " --threads 1 -q --keep-checkpoint " + more;
+    if (processes > 1)
+        line += "mpirun --allow-run-as-root --oversubscribe -n " + std::to_string(processes) + " ";
+    line += "'" + kRaytrace + "' scene.pov +W" + std::to_string(kWidth) + " +H" +
+            std::to_string(kHeight) + " -o out.exr --no-png --seed " + std::to_string(kSeed) +
+            " --threads 1 -q --keep-checkpoint " + more;
     const test::CommandResult run = test::run_command(line + " 2>&1");
     ASSERT_EQ(run.status, 0) << line << "\n" << run.output;
 }
@@ -74,11 +78,13 @@ RenderResult state(const test::ScratchDir& dir) {
 template <class F>
 void for_each_grid_pair(const RenderResult& a, const RenderResult& b, F&& f) {
     f(a.film, b.film, "film");
-    for (size_t r = 0; r < a.receivers.size(); ++r) f(a.receivers[r].irradiance, b.receivers[r].irradiance, "receiver");
+    for (size_t r = 0; r < a.receivers.size(); ++r)
+        f(a.receivers[r].irradiance, b.receivers[r].irradiance, "receiver");
     for (size_t l = 0; l < a.layers.size(); ++l) {
         f(a.layers[l].film, b.layers[l].film, a.layers[l].name);
         for (size_t r = 0; r < a.layers[l].receivers.size(); ++r)
-            f(a.layers[l].receivers[r].irradiance, b.layers[l].receivers[r].irradiance, a.layers[l].name + " receiver");
+            f(a.layers[l].receivers[r].irradiance, b.layers[l].receivers[r].irradiance,
+              a.layers[l].name + " receiver");
     }
 }
 
@@ -96,22 +102,24 @@ double compare(const RenderResult& a, const RenderResult& b, double relative) {
         EXPECT_LE(std::abs(x - y), relative * std::abs(x)) << what << ": " << x << " and " << y;
         if (x != 0) largest = std::max(largest, std::abs(x - y) / std::abs(x));
     };
-    for_each_grid_pair(a, b, [&](const SampleGrid& g, const SampleGrid& h, const std::string& what) {
-        ASSERT_EQ(g.sums().size(), h.sums().size()) << what;
-        EXPECT_EQ(g.samples(), h.samples()) << what;
-        for (size_t i = 0; i < g.sums().size(); ++i) {
-            close(g.sums()[i].red, h.sums()[i].red, what);
-            close(g.sums()[i].green, h.sums()[i].green, what);
-            close(g.sums()[i].blue, h.sums()[i].blue, what);
-            close(g.photometric_squares()[i], h.photometric_squares()[i], what);
-        }
-    });
+    for_each_grid_pair(a, b,
+                       [&](const SampleGrid& g, const SampleGrid& h, const std::string& what) {
+                           ASSERT_EQ(g.sums().size(), h.sums().size()) << what;
+                           EXPECT_EQ(g.samples(), h.samples()) << what;
+                           for (size_t i = 0; i < g.sums().size(); ++i) {
+                               close(g.sums()[i].red, h.sums()[i].red, what);
+                               close(g.sums()[i].green, h.sums()[i].green, what);
+                               close(g.sums()[i].blue, h.sums()[i].blue, what);
+                               close(g.photometric_squares()[i], h.photometric_squares()[i], what);
+                           }
+                       });
     return largest;
 }
 
 void expect_two_ranks_render_as_one(std::string (*scene)(const test::ScratchDir&)) {
     test::ScratchDir one, two, again, resumed;
-    for (const test::ScratchDir* dir : {&one, &two, &again, &resumed}) test::write_file(dir->file("scene.pov"), scene(*dir));
+    for (const test::ScratchDir* dir : {&one, &two, &again, &resumed})
+        test::write_file(dir->file("scene.pov"), scene(*dir));
     const std::string passes = "--passes " + std::to_string(kPasses);
     raytrace(one, 1, passes);
     raytrace(two, 2, passes);
@@ -126,8 +134,10 @@ void expect_two_ranks_render_as_one(std::string (*scene)(const test::ScratchDir&
     const double largest = compare(single, state(two), bound);
     compare(state(two), state(again), 0);
     const double largest_resumed = compare(single, state(resumed), bound);
-    std::printf("%s: 2 ranks against 1 process, largest relative difference %.3g (resumed %.3g), bound %.3g\n",
-                single.layers.empty() ? "path" : "bidirectional", largest, largest_resumed, bound);
+    std::printf(
+        "%s: 2 ranks against 1 process, largest relative difference %.3g (resumed %.3g), bound "
+        "%.3g\n",
+        single.layers.empty() ? "path" : "bidirectional", largest, largest_resumed, bound);
 }
 
 TEST(RaytraceMpi, TwoRanksRenderThePathTracersPassesOfOneProcess) {

@@ -32,8 +32,18 @@ const std::string kRaytrace = std::string(RAYSET_BINARY_DIR) + "/tracer/raytrace
 const std::string kCornell = (fs::path(__FILE__).parent_path() / "scenes" / "cornell.pov").string();
 
 std::vector<std::string> arguments(int passes, int seed = 3, int width = 48) {
-    return {"scene.pov", "+W" + std::to_string(width), "+H36", "-o", "out.exr", "--passes", std::to_string(passes),
-            "--seed", std::to_string(seed), "-q", "--checkpoint-interval", "0"};
+    return {"scene.pov",
+            "+W" + std::to_string(width),
+            "+H36",
+            "-o",
+            "out.exr",
+            "--passes",
+            std::to_string(passes),
+            "--seed",
+            std::to_string(seed),
+            "-q",
+            "--checkpoint-interval",
+            "0"};
 }
 // Enough passes that the render is still running when the test signals it (about 2 s on
 // one core).
@@ -45,7 +55,8 @@ test::CommandResult raytrace(const std::vector<std::string>& arguments, const st
     return test::run_command(line);
 }
 
-std::vector<std::string> with(std::vector<std::string> arguments, const std::vector<std::string>& more) {
+std::vector<std::string> with(std::vector<std::string> arguments,
+                              const std::vector<std::string>& more) {
     arguments.insert(arguments.end(), more.begin(), more.end());
     return arguments;
 }
@@ -55,8 +66,9 @@ struct RenderFolder {
     test::ScratchDir dir;
     RenderFolder() {
         test::write_file(dir.file("scene.pov"),
-                         test::read_file(kCornell) + "illuminance_receiver { <5, 0.01, 5>, <0, 0, 45>, <45, 0, 0> "
-                                                     "resolution <4, 3> name \"floor\" }\n");
+                         test::read_file(kCornell) +
+                             "illuminance_receiver { <5, 0.01, 5>, <0, 0, 45>, <45, 0, 0> "
+                             "resolution <4, 3> name \"floor\" }\n");
     }
     std::string folder() const { return dir.path().string(); }
     std::map<std::string, std::string> files() const {
@@ -69,8 +81,8 @@ struct RenderFolder {
 
 // Starts raytrace in `folder`, output to `folder`/log; waits for `file` to appear there, sends
 // `signal`, and returns the exit status (128 + signal for a process the signal killed).
-int interrupt_when_present(const std::vector<std::string>& arguments, const std::string& folder, const std::string& file,
-                           int signal) {
+int interrupt_when_present(const std::vector<std::string>& arguments, const std::string& folder,
+                           const std::string& file, int signal) {
     std::vector<std::string> words = with({kRaytrace}, arguments);
     std::vector<char*> argv;
     for (std::string& w : words) argv.push_back(w.data());
@@ -87,7 +99,8 @@ int interrupt_when_present(const std::vector<std::string>& arguments, const std:
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     while (!fs::exists(folder + "/" + file)) {
         if (waitpid(pid, &status, WNOHANG) == pid) {
-            ADD_FAILURE() << "raytrace ended before " << file << " appeared:\n" << test::read_file(log);
+            ADD_FAILURE() << "raytrace ended before " << file << " appeared:\n"
+                          << test::read_file(log);
             return -1;
         }
         if (std::chrono::steady_clock::now() > deadline) signal = SIGKILL;
@@ -95,21 +108,25 @@ int interrupt_when_present(const std::vector<std::string>& arguments, const std:
     }
     kill(pid, signal);
     waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
+    return WIFEXITED(status)     ? WEXITSTATUS(status)
+           : WIFSIGNALED(status) ? 128 + WTERMSIG(status)
+                                 : -1;
 }
 
 // Passes recorded in an EXR, after reading every pixel (an incomplete file throws).
 int exr_samples(const std::string& path) {
     Imf::InputFile file(path.c_str());
     const auto window = file.header().dataWindow();
-    std::vector<float> values(size_t(window.max.x - window.min.x + 1) * (window.max.y - window.min.y + 1));
+    std::vector<float> values(size_t(window.max.x - window.min.x + 1) *
+                              (window.max.y - window.min.y + 1));
     Imf::FrameBuffer frame;
     frame.insert("Y", Imf::Slice(Imf::FLOAT, (char*)values.data(), sizeof(float),
                                  sizeof(float) * size_t(window.max.x - window.min.x + 1)));
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
     for (const char* key : {"rayset_samples_per_pixel", "rayset_samples_per_cell"})
-        if (const auto* a = file.header().findTypedAttribute<Imf::StringAttribute>(key)) return std::stoi(a->value());
+        if (const auto* a = file.header().findTypedAttribute<Imf::StringAttribute>(key))
+            return std::stoi(a->value());
     return -1;
 }
 
@@ -143,15 +160,18 @@ TEST(RaytraceResume, InterruptedRendersResumeToTheUninterruptedFiles) {
             EXPECT_NE(test::read_file(f.dir.file("log")).find("--resume"), std::string::npos);
             for (const char* exr : {"out.exr", "out.floor.exr"})
                 EXPECT_EQ(exr_samples(f.dir.file(exr)), stopped.passes) << exr;
-            EXPECT_EQ(test::read_file(f.dir.file("out.png")).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+            EXPECT_EQ(test::read_file(f.dir.file("out.png")).substr(0, 8),
+                      std::string("\x89PNG\r\n\x1a\n", 8));
         }
-        const auto resumed = raytrace(with(kArguments, {"--resume", "--keep-checkpoint"}), f.folder());
+        const auto resumed =
+            raytrace(with(kArguments, {"--resume", "--keep-checkpoint"}), f.folder());
         ASSERT_EQ(resumed.status, 0) << resumed.output;
         const RenderResult state = read_tool_checkpoint(f);
         EXPECT_EQ(state.passes, expected_state.passes);
         EXPECT_EQ(state.rays, expected_state.rays);
         for (const char* file : {"out.exr", "out.png", "out.floor.exr", "out.floor.csv"})
-            EXPECT_TRUE(test::read_file(f.dir.file(file)) == expected.at(file)) << file << " differs";
+            EXPECT_TRUE(test::read_file(f.dir.file(file)) == expected.at(file))
+                << file << " differs";
         // Without --keep-checkpoint a completed render removes it.
         ASSERT_EQ(raytrace(with(kArguments, {"--resume"}), f.folder()).status, 0);
         EXPECT_FALSE(fs::exists(f.dir.file("out.checkpoint")));
@@ -166,7 +186,8 @@ TEST(RaytraceResume, BadCheckpointsAreRefusedAndNothingChanges) {
     const std::string scene = test::read_file(f.dir.file("scene.pov"));
     const std::vector<std::string> resume = with(arguments(4), {"--resume"});
 
-    auto expect_refused = [&](const std::vector<std::string>& arguments, const std::string& message) {
+    auto expect_refused = [&](const std::vector<std::string>& arguments,
+                              const std::string& message) {
         const auto before = f.files();
         const auto r = raytrace(arguments, f.folder());
         EXPECT_EQ(r.status, 1) << r.output;
@@ -187,10 +208,12 @@ TEST(RaytraceResume, BadCheckpointsAreRefusedAndNothingChanges) {
     expect_refused(resume, "out.checkpoint: not a raytrace checkpoint");
 
     test::write_file(f.dir.file("out.checkpoint"), good);
-    test::write_file(f.dir.file("scene.pov"), scene + "sphere { <27, 10, 20>, 5 pigment { rgb 1 } }\n");
+    test::write_file(f.dir.file("scene.pov"),
+                     scene + "sphere { <27, 10, 20>, 5 pigment { rgb 1 } }\n");
     expect_refused(resume, "the scene, an included file or a data file changed");
     test::write_file(f.dir.file("scene.pov"), scene);
-    expect_refused(with(arguments(4, 4, 40), {"--resume"}), "it has\n  width 48 (this render: 40)\n  seed 3 (this render: 4)");
+    expect_refused(with(arguments(4, 4, 40), {"--resume"}),
+                   "it has\n  width 48 (this render: 40)\n  seed 3 (this render: 4)");
 
     fs::remove(f.dir.file("out.checkpoint"));
     expect_refused(resume, "out.checkpoint: no checkpoint to resume from");
@@ -205,7 +228,8 @@ TEST(RaytraceResume, BadCheckpointsAreRefusedAndNothingChanges) {
 TEST(RaytraceResume, HelpDescribesStopAndResume) {
     const auto r = test::run_command("'" + kRaytrace + "' --help");
     EXPECT_EQ(r.status, 0);
-    for (const char* text : {"Stop and resume", "OUT.checkpoint", "--resume", "--keep-checkpoint", "--checkpoint-interval"})
+    for (const char* text : {"Stop and resume", "OUT.checkpoint", "--resume", "--keep-checkpoint",
+                             "--checkpoint-interval"})
         EXPECT_NE(r.output.find(text), std::string::npos) << text;
 }
 

@@ -19,7 +19,8 @@
 namespace rayset::tracer {
 namespace {
 
-const std::string kScenes = (std::filesystem::path(__FILE__).parent_path() / "scenes").string() + "/";
+const std::string kScenes =
+    (std::filesystem::path(__FILE__).parent_path() / "scenes").string() + "/";
 
 TEST(RenderCornell, RendersFiniteNonBlackImage) {
     const RenderScene scene(parse_scene_file(kScenes + "cornell.pov"));
@@ -74,7 +75,8 @@ TEST(RenderCornell, DeterministicForSeedAndIndependentOfThreads) {
 TEST(RenderCornell, TimeBudgetStopsBetweenPasses) {
     const RenderScene scene(parse_scene_file(kScenes + "cornell.pov"));
     RenderSettings settings;
-    settings.width = 16, settings.height = 12, settings.time_limit = 0.3;  // passes 0: until the time is up
+    settings.width = 16, settings.height = 12,
+    settings.time_limit = 0.3;  // passes 0: until the time is up
     const RenderResult r = render(scene, settings);
     EXPECT_GE(r.passes, 2);
     EXPECT_EQ(r.film.samples(), r.passes);
@@ -108,13 +110,15 @@ bool read_ppm(const std::string& path, int& width, int& height, std::vector<uint
 
 TEST(RenderCornell, FramingAgreesWithPovRay) {
     if (test::run_command("command -v povray").status != 0)
-        GTEST_SKIP() << "povray is not installed (Debian package povray; scripts/install-deps.sh installs it): "
+        GTEST_SKIP() << "povray is not installed (Debian package povray; scripts/install-deps.sh "
+                        "installs it): "
                         "framing comparison against POV-Ray skipped";
     const int width = 160, height = 120;
     test::ScratchDir dir;
     const std::string mask = kScenes + "cornell_mask.pov";
-    const test::CommandResult pov = test::run_command(
-        "cd '" + dir.path().string() + "' && povray +I'" + mask + "' +W160 +H120 +Opov.ppm +FP -D -GA");
+    const test::CommandResult pov =
+        test::run_command("cd '" + dir.path().string() + "' && povray +I'" + mask +
+                          "' +W160 +H120 +Opov.ppm +FP -D -GA");
     ASSERT_EQ(pov.status, 0) << pov.output;
     int w = 0, h = 0;
     std::vector<uint8_t> reference;
@@ -128,7 +132,8 @@ TEST(RenderCornell, FramingAgreesWithPovRay) {
     int agree = 0;
     for (int i = 0; i < width * height; ++i) {
         Rgb ours{};
-        if (ids[i] >= 0) ours = scene.description().objects[ids[i]].appearance.texture->pigment.colour.rgb();
+        if (ids[i] >= 0)
+            ours = scene.description().objects[ids[i]].appearance.texture->pigment.colour.rgb();
         const bool same = std::lround(255 * ours.red) == reference[3 * i] &&
                           std::lround(255 * ours.green) == reference[3 * i + 1] &&
                           std::lround(255 * ours.blue) == reference[3 * i + 2];

@@ -18,7 +18,8 @@ Material material_of(const std::string& object) {
 }
 
 TEST(RenderMaterial, PovRayTextureMapping) {
-    Material m = material_of("sphere { 0, 1 pigment { rgb <0.5, 0.25, 1> } finish { diffuse 0.8 } }");
+    Material m =
+        material_of("sphere { 0, 1 pigment { rgb <0.5, 0.25, 1> } finish { diffuse 0.8 } }");
     EXPECT_DOUBLE_EQ(m.diffuse.red, 0.4);
     EXPECT_DOUBLE_EQ(m.diffuse.green, 0.2);
     EXPECT_DOUBLE_EQ(m.diffuse.blue, 0.8);
@@ -83,7 +84,7 @@ TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
 
 TEST(RenderMaterial, FresnelAtNormalIncidence) {
     EXPECT_NEAR(fresnel_dielectric(1, 1.5), 0.04, 1e-12);  // ((n - 1) / (n + 1))^2
-    EXPECT_EQ(fresnel_dielectric(0.1, 1 / 1.5), 1.0);     // beyond the critical angle
+    EXPECT_EQ(fresnel_dielectric(0.1, 1 / 1.5), 1.0);      // beyond the critical angle
 }
 
 // The mean of the sampled weights f cos / pdf is the directional albedo; a second estimate

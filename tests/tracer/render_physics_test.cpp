@@ -48,7 +48,8 @@ TEST(RenderFurnace, EmittingWhiteSphereConvergesToGeometricSeries) {
     const RenderResult r = render_text(R"(
         camera { location <0,0,0> look_at <0,0,1> }
         sphere { <0,0,0>, 100 pigment { rgb 1 } finish { diffuse 0.8 emission 0.5 ambient 0 } }
-    )", settings);
+    )",
+                                       settings);
     double mean = 0, se = 0;
     image_mean(r.film, mean, se);
     const double expected = emitted / (1 - albedo);
@@ -67,7 +68,8 @@ TEST(RenderFurnace, PointLightInWhiteSphereMatchesClosedForm) {
         camera { location <0,0,0> look_at <0,0,1> }
         light_source { <0,0,0> color rgb 3 }
         sphere { <0,0,0>, 200 pigment { rgb 1 } finish { diffuse 0.6 ambient 0 } }
-    )", settings);
+    )",
+                                       settings);
     double mean = 0, se = 0;
     image_mean(r.film, mean, se);
     const double expected = albedo * intensity / (kPi * radius_m * radius_m * (1 - albedo));
@@ -84,7 +86,8 @@ TEST(RenderFurnace, EllipsoidFurnaceHoldsToo) {
         camera { location <10,0,0> look_at <0,0,1> }
         sphere { <0,0,0>, 100 scale <3, 1, 0.5> rotate <10, 20, 30>
                  pigment { rgb 1 } finish { diffuse 0.5 emission 1 ambient 0 } }
-    )", settings);
+    )",
+                                       settings);
     double mean = 0, se = 0;
     image_mean(r.film, mean, se);
     EXPECT_LT(se, 0.01 * 2.0);
@@ -99,9 +102,11 @@ TEST(RenderFurnace, MirrorLobeAndGlassKeepTheBalance) {
     settings.width = 32, settings.height = 24, settings.passes = 64, settings.seed = 8;
     const RenderResult r = render_text(R"(
         camera { location <0,0,-50> look_at <0,0,0> angle 40 }
-        sphere { <0,0,0>, 100 pigment { rgb 1 } finish { diffuse 0.5 reflection 0.3 emission 1 ambient 0 } }
+        sphere { <0,0,0>, 100 pigment { rgb 1 }
+            finish { diffuse 0.5 reflection 0.3 emission 1 ambient 0 } }
         sphere { <0,0,0>, 20 pigment { rgbf <1,1,1,1> } interior { ior 1.5 } }
-    )", settings);
+    )",
+                                       settings);
     double mean = 0, se = 0;
     image_mean(r.film, mean, se);
     EXPECT_LT(se, 0.01 * 5.0);
@@ -119,8 +124,10 @@ TEST(RenderPointLight, ReceiverOnPlaneRecordsInverseSquareCosine) {
     const RenderResult r = render_text(R"(
         light_source { <100, 1000, -50> color rgb 2 }
         plane { y, 0 pigment { rgb 0.7 } finish { diffuse 1 } }
-        illuminance_receiver { <-1000, 0, -1000>, <0, 0, 2000>, <2000, 0, 0> resolution <9, 7> name "floor" }
-    )", settings);
+        illuminance_receiver { <-1000, 0, -1000>, <0, 0, 2000>, <2000, 0, 0>
+            resolution <9, 7> name "floor" }
+    )",
+                                       settings);
     ASSERT_EQ(r.receivers.size(), 1u);
     const ReceiverMap& map = r.receivers[0];
     for (int j = 0; j < 7; ++j)
@@ -146,13 +153,15 @@ TEST(RenderPointLight, CameraSeesAPlaneWithLambertsLuminance) {
     RenderSettings settings;
     settings.width = settings.height = 8, settings.passes = 16, settings.seed = 2;
     const double expected = 0.7 / kPi * 2 / (1.0 * 1.0);
-    for (const char* surface : {"plane { z, 0 pigment { rgb 0.7 } finish { diffuse 1 } }",
-                                "plane { -z, 0 pigment { rgb 0.7 } finish { diffuse 1 } }",
-                                "box { <-100, -100, 0>, <100, 100, 10> pigment { rgb 0.7 } finish { diffuse 1 } }"}) {
+    for (const char* surface :
+         {"plane { z, 0 pigment { rgb 0.7 } finish { diffuse 1 } }",
+          "plane { -z, 0 pigment { rgb 0.7 } finish { diffuse 1 } }",
+          "box { <-100, -100, 0>, <100, 100, 10> pigment { rgb 0.7 } finish { diffuse 1 } }"}) {
         const RenderResult r = render_text(std::string(R"(
             camera { location <0, 0, -500> look_at <0, 0, 0> angle 1 }
             light_source { <0, 0, -1000> color rgb 2 }
-        )") + surface, settings);
+        )") + surface,
+                                           settings);
         double mean = 0, standard_error = 0;
         image_mean(r.film, mean, standard_error);
         EXPECT_NEAR(mean, expected, kZ * standard_error + 6e-5 * expected) << surface;
@@ -168,8 +177,10 @@ TEST(RenderPointLight, SpotlightFollowsPovRayFalloff) {
     const RenderResult r = render_text(R"(
         light_source { <0, 1000, 0> color rgb 1 spotlight radius 10 falloff 20 point_at <0, 0, 0> }
         illuminance_receiver { <-5, 0, -5>, <0, 0, 10>, <10, 0, 0> resolution <1, 1> name "centre" }
-        illuminance_receiver { <995, 0, -5>, <0, 0, 10>, <10, 0, 0> resolution <1, 1> name "outside" }
-    )", settings);
+        illuminance_receiver { <995, 0, -5>, <0, 0, 10>, <10, 0, 0>
+            resolution <1, 1> name "outside" }
+    )",
+                                       settings);
     EXPECT_NEAR(r.receivers[0].irradiance.photometric_mean(0, 0), 683.0, 1e-9 * 683);
     EXPECT_EQ(r.receivers[1].irradiance.photometric_mean(0, 0), 0.0);
 }
@@ -182,18 +193,24 @@ TEST(RenderPointLight, SceneUnitAndFadeFollowTheStatedConventions) {
     auto lux_at = [](const std::string& unit, const std::string& fade) {
         RenderSettings settings;
         settings.render_image = false, settings.passes = 1;
-        const RenderResult r = render_text("global_settings { length_unit \"" + unit + "\" }\n"
-                                           "light_source { <0, 2, 0> color rgb 1 " + fade + " }\n"
-                                           "illuminance_receiver { <-0.001, 0, -0.001>, <0, 0, 0.002>, <0.002, 0, 0> "
-                                           "resolution <1, 1> }",
-                                           settings);
+        const RenderResult r = render_text(
+            "global_settings { length_unit \"" + unit +
+                "\" }\n"
+                "light_source { <0, 2, 0> color rgb 1 " +
+                fade +
+                " }\n"
+                "illuminance_receiver { <-0.001, 0, -0.001>, <0, 0, 0.002>, <0.002, 0, 0> "
+                "resolution <1, 1> }",
+            settings);
         return r.receivers[0].irradiance.photometric_mean(0, 0);
     };
     EXPECT_NEAR(lux_at("m", ""), 683 * 0.25, 1e-9 * 683);
     EXPECT_NEAR(lux_at("cm", ""), 683 / 0.0004, 1e-9 * 683 / 0.0004);
     const double fade_far_field = 683 * 2 * 0.5 * 0.5 / (2 * 2);
-    EXPECT_NEAR(lux_at("m", "fade_distance 0.5 fade_power 2"), fade_far_field, 1e-9 * fade_far_field);
-    EXPECT_NEAR(lux_at("mm", "fade_distance 0.5 fade_power 2"), fade_far_field, 1e-9 * fade_far_field);
+    EXPECT_NEAR(lux_at("m", "fade_distance 0.5 fade_power 2"), fade_far_field,
+                1e-9 * fade_far_field);
+    EXPECT_NEAR(lux_at("mm", "fade_distance 0.5 fade_power 2"), fade_far_field,
+                1e-9 * fade_far_field);
 }
 
 TEST(RenderAreaLight, LambertianRectangleMatchesContourIntegral) {
@@ -208,19 +225,24 @@ TEST(RenderAreaLight, LambertianRectangleMatchesContourIntegral) {
         light_source { <0, 500, 0> color rgb 1
             area_light <200, 0, 0>, <0, 0, 100>, 4, 4
             spotlight radius -90 falloff 90 tightness 1 point_at <0, 0, 0> }
-        illuminance_receiver { <-600, 0, -600>, <0, 0, 1200>, <1200, 0, 0> resolution <6, 6> name "floor" }
-    )", settings);
+        illuminance_receiver { <-600, 0, -600>, <0, 0, 1200>, <1200, 0, 0>
+            resolution <6, 6> name "floor" }
+    )",
+                                       settings);
     const ReceiverMap& map = r.receivers[0];
     const double radiance = 1.0 / (200 * 100);  // W/(mm^2 sr)
-    const std::vector<Vec3> light{{-100, 500, -50}, {100, 500, -50}, {100, 500, 50}, {-100, 500, 50}};
+    const std::vector<Vec3> light{
+        {-100, 500, -50}, {100, 500, -50}, {100, 500, 50}, {-100, 500, 50}};
     // z = 5 with 36 cells: family-wise two-sided normal tail 36 * 5.7e-7 = 2e-5.
     for (int j = 0; j < 6; ++j)
         for (int i = 0; i < 6; ++i) {
-            const double exact_w_mm2 = analytic::polygon_irradiance(radiance, light, map.cell_centre(i, j), {0, 1, 0});
+            const double exact_w_mm2 =
+                analytic::polygon_irradiance(radiance, light, map.cell_centre(i, j), {0, 1, 0});
             const double expected = 683 * exact_w_mm2 * 1e6;
             const double se = map.irradiance.photometric_standard_error(i, j);
             EXPECT_LT(se, 0.05 * expected) << "cell " << i << "," << j;
-            EXPECT_NEAR(map.irradiance.photometric_mean(i, j), expected, 5 * se) << "cell " << i << "," << j;
+            EXPECT_NEAR(map.irradiance.photometric_mean(i, j), expected, 5 * se)
+                << "cell " << i << "," << j;
         }
 }
 
@@ -234,12 +256,15 @@ TEST(RenderAreaLight, TwoSidedRectangleEmitsHalfItsPowerEachWay) {
         light_source { <0, 0, 0> color rgb 1 area_light <100, 0, 0>, <0, 0, 100>, 2, 2 }
         illuminance_receiver { <-1, -400, -1>, <0, 0, 2>, <2, 0, 0> resolution <1, 1> name "below" }
         illuminance_receiver { <-1, 400, -1>, <2, 0, 0>, <0, 0, 2> resolution <1, 1> name "above" }
-    )", settings);
+    )",
+                                       settings);
     const double radiance = 4 * kPi / (2 * kPi * 100 * 100);
     const std::vector<Vec3> facing_down{{-50, 0, -50}, {50, 0, -50}, {50, 0, 50}, {-50, 0, 50}};
     const std::vector<Vec3> facing_up{{-50, 0, -50}, {-50, 0, 50}, {50, 0, 50}, {50, 0, -50}};
-    const double below = 683e6 * analytic::polygon_irradiance(radiance, facing_down, {0, -400, 0}, {0, 1, 0});
-    const double above = 683e6 * analytic::polygon_irradiance(radiance, facing_up, {0, 400, 0}, {0, -1, 0});
+    const double below =
+        683e6 * analytic::polygon_irradiance(radiance, facing_down, {0, -400, 0}, {0, 1, 0});
+    const double above =
+        683e6 * analytic::polygon_irradiance(radiance, facing_up, {0, 400, 0}, {0, -1, 0});
     EXPECT_NEAR(below, above, 1e-12 * below);
     for (const ReceiverMap& map : r.receivers) {
         const double se = map.irradiance.photometric_standard_error(0, 0);

@@ -28,7 +28,8 @@ const std::string kCornell = (fs::path(__FILE__).parent_path() / "scenes" / "cor
 // Cornell box with an illuminance receiver on its floor (facing up).
 std::string cornell_with_receiver() {
     return test::read_file(kCornell) +
-           "illuminance_receiver { <5, 0.01, 5>, <0, 0, 45>, <45, 0, 0> resolution <4, 3> name \"floor\" }\n";
+           "illuminance_receiver { <5, 0.01, 5>, <0, 0, 45>, <45, 0, 0> resolution <4, 3> name "
+           "\"floor\" }\n";
 }
 
 // A Lambertian disk (1e5 rays; its light model stored as .vdb) hanging in a closed box of
@@ -49,8 +50,10 @@ std::string bidirectional_box(const test::ScratchDir& dir) {
         camera { location <0, 0, -45> direction <0, 0, 1> right <1, 0, 0> up <0, 1, 0> angle 90 }
         box { <-50, -50, -50>, <50, 50, 50> pigment { rgb 1 } finish { diffuse 0.5 ambient 0 } }
         light_source { <20, 40, 0> color rgb 0.0001 }
-        illuminance_receiver { <-50, -49.9, -50>, <0, 0, 100>, <100, 0, 0> resolution <3, 3> name "floor" }
-        ray_source { ")" + model + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
+        illuminance_receiver { <-50, -49.9, -50>, <0, 0, 100>, <100, 0, 0>
+            resolution <3, 3> name "floor" }
+        ray_source { ")" +
+           model + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
     )";
 }
 
@@ -58,7 +61,8 @@ void expect_same_bits(const SampleGrid& a, const SampleGrid& b, const std::strin
     ASSERT_EQ(a.nx(), b.nx()) << what;
     ASSERT_EQ(a.ny(), b.ny()) << what;
     EXPECT_EQ(a.samples(), b.samples()) << what;
-    EXPECT_EQ(std::memcmp(a.sums().data(), b.sums().data(), a.sums().size() * sizeof(Rgb)), 0) << what << " sums";
+    EXPECT_EQ(std::memcmp(a.sums().data(), b.sums().data(), a.sums().size() * sizeof(Rgb)), 0)
+        << what << " sums";
     EXPECT_EQ(std::memcmp(a.photometric_squares().data(), b.photometric_squares().data(),
                           a.photometric_squares().size() * sizeof(double)),
               0)
@@ -74,13 +78,14 @@ void expect_same_state(const RenderResult& a, const RenderResult& b) {
     EXPECT_EQ(a.visible_point_bytes, b.visible_point_bytes);
     expect_same_bits(a.film, b.film, "image");
     ASSERT_EQ(a.receivers.size(), b.receivers.size());
-    for (size_t i = 0; i < a.receivers.size(); ++i) expect_same_bits(a.receivers[i].irradiance, b.receivers[i].irradiance, "receiver");
+    for (size_t i = 0; i < a.receivers.size(); ++i)
+        expect_same_bits(a.receivers[i].irradiance, b.receivers[i].irradiance, "receiver");
     ASSERT_EQ(a.layers.size(), b.layers.size());
     for (size_t l = 0; l < a.layers.size(); ++l) {
         expect_same_bits(a.layers[l].film, b.layers[l].film, a.layers[l].name);
         for (size_t i = 0; i < a.layers[l].receivers.size(); ++i)
-            expect_same_bits(a.layers[l].receivers[i].irradiance, b.layers[l].receivers[i].irradiance,
-                             a.layers[l].name + " receiver");
+            expect_same_bits(a.layers[l].receivers[i].irradiance,
+                             b.layers[l].receivers[i].irradiance, a.layers[l].name + " receiver");
     }
 }
 
@@ -101,12 +106,15 @@ RenderResult check_resume(const std::string& scene_text, RenderSettings settings
     const RenderResult part = render(scene, first);
     EXPECT_EQ(part.passes, k);
     // Not the same yet: the test would show nothing otherwise.
-    EXPECT_NE(std::memcmp(part.film.sums().data(), whole.film.sums().data(), part.film.sums().size() * sizeof(Rgb)), 0);
+    EXPECT_NE(std::memcmp(part.film.sums().data(), whole.film.sums().data(),
+                          part.film.sums().size() * sizeof(Rgb)),
+              0);
     EXPECT_LT(part.rays, whole.rays);
 
     const CheckpointIdentity identity = checkpoint_identity(description, settings);
     write_checkpoint(dir.file("scene.checkpoint"), identity, part);
-    RenderResult loaded = read_checkpoint(dir.file("scene.checkpoint"), identity, blank_render(description, settings));
+    RenderResult loaded = read_checkpoint(dir.file("scene.checkpoint"), identity,
+                                          blank_render(description, settings));
     expect_same_state(loaded, part);
     EXPECT_EQ(loaded.seconds, part.seconds);
     const RenderResult resumed = render(scene, settings, std::move(loaded));
@@ -142,7 +150,8 @@ TEST(RenderResume, BidirectionalIntegratorContinuesBitForBit) {
     const std::string scene = bidirectional_box(dir);
     RenderSettings settings;
     settings.width = 24, settings.height = 18, settings.seed = 4, settings.photons_per_pass = 5000;
-    const RenderResult r = check_resume(scene, settings, 1, 4, dir);  // after pass 1: the default radius is set
+    const RenderResult r =
+        check_resume(scene, settings, 1, 4, dir);  // after pass 1: the default radius is set
     check_resume(scene, settings, 3, 4, dir);
     // Every kind of light is in the accumulators compared.
     for (const RenderLayer& layer : r.layers) {

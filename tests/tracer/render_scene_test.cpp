@@ -59,7 +59,7 @@ TEST(RenderScene, RotatedBoxHasOutwardNormals) {
     EXPECT_NEAR(h.t, 10 - std::sqrt(2.0), 1e-5);
     const SurfaceHit side = s.hit({-10, 0.3, 10}, {1, 0, 0});
     EXPECT_NEAR(side.t, 10 - std::sqrt(2.0), 1e-5);
-    EXPECT_LT(side.normal.x, 0);  // outward, toward the ray's origin
+    EXPECT_LT(side.normal.x, 0);                  // outward, toward the ray's origin
     for (double a : {0.3, 1.1, 2.0, 3.7, 5.0}) {  // rays from far outside, all around
         const Vec3 o{20 * std::cos(a), 0.2, 10 + 20 * std::sin(a)};
         const SurfaceHit g = s.hit(o, Vec3{0, 0, 10} - o);
@@ -93,7 +93,8 @@ TEST(RenderScene, MeshInstancesShareOnePrototype) {
     EXPECT_NEAR(b.t, 10, 1e-5);
     expect_vec(b.normal, {std::copysign(1.0, b.normal.x), 0, 0}, 1e-6);
     const auto& d = s.scene.description();
-    EXPECT_EQ(std::get<MeshShape>(d.objects[0].shape).mesh, std::get<MeshShape>(d.objects[1].shape).mesh);
+    EXPECT_EQ(std::get<MeshShape>(d.objects[0].shape).mesh,
+              std::get<MeshShape>(d.objects[1].shape).mesh);
 }
 
 TEST(RenderScene, Mesh2NormalsAreInterpolated) {
@@ -116,7 +117,8 @@ TEST(RenderScene, ObjMeshFileLoads) {
     test::write_file(dir.file("scene.pov"), "mesh_file { \"quad.obj\" translate <0, 0, 3> }\n");
     const RenderScene scene(parse_scene_file(dir.file("scene.pov")));
     SurfaceHit h;
-    ASSERT_TRUE(scene.intersect({0.9, 0.9, 0}, {0, 0, 1}, 0, kInf, RayKind::camera, h));  // second triangle
+    ASSERT_TRUE(
+        scene.intersect({0.9, 0.9, 0}, {0, 0, 1}, 0, kInf, RayKind::camera, h));  // second triangle
     EXPECT_NEAR(h.t, 3, 1e-6);
     ASSERT_TRUE(scene.intersect({-0.9, -0.9, 0}, {0, 0, 1}, 0, kInf, RayKind::camera, h));
     EXPECT_FALSE(scene.intersect({1.1, 0, 0}, {0, 0, 1}, 0, kInf, RayKind::camera, h));
@@ -131,7 +133,8 @@ TEST(RenderScene, ModifiersHideObjectsFromTheirRays) {
     EXPECT_EQ(s.hit({0, 0, 0}, {0, 0, 1}, RayKind::camera).object, 0);
     EXPECT_EQ(s.hit({0, 0, 0}, {0, 0, 1}, RayKind::shadow).object, 1);
     EXPECT_EQ(s.hit({0, 0, 7}, {0, 0, 1}, RayKind::camera).object, 2);
-    EXPECT_FALSE(s.scene.occluded({0, 0, 0}, {0, 0, 1}, 0, 8.5));  // only the no_shadow sphere before 8.5
+    EXPECT_FALSE(
+        s.scene.occluded({0, 0, 0}, {0, 0, 1}, 0, 8.5));  // only the no_shadow sphere before 8.5
     EXPECT_TRUE(s.scene.occluded({0, 0, 0}, {0, 0, 1}, 0, 9.5));
 }
 
@@ -156,9 +159,11 @@ std::string render_error(const std::string& text) {
 }
 
 TEST(RenderLights, UnsupportedFadeAndShadowlessAreErrors) {
-    EXPECT_EQ(render_error("light_source { <0,0,0> color 1 fade_distance 2 fade_power 1 }"),
-              "not supported: fade_power 1 (only 2, read as the inverse-square law) at test.pov:1:1");
-    EXPECT_NE(render_error("light_source { <0,0,0> color 1 shadowless }").find("shadowless"), std::string::npos);
+    EXPECT_EQ(
+        render_error("light_source { <0,0,0> color 1 fade_distance 2 fade_power 1 }"),
+        "not supported: fade_power 1 (only 2, read as the inverse-square law) at test.pov:1:1");
+    EXPECT_NE(render_error("light_source { <0,0,0> color 1 shadowless }").find("shadowless"),
+              std::string::npos);
 }
 
 // What the renderer does not render is refused with its place in the file; POV-Ray's hints
@@ -182,11 +187,12 @@ TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
     EXPECT_EQ(render_error("global_settings { assumed_gamma srgb }"),
               "not supported: assumed_gamma srgb (colours are read as linear: only 1.0) at "
               "test.pov:1:19");
-    EXPECT_EQ(render_error("global_settings { assumed_gamma 1 ambient_light 0.3 adc_bailout 0.1\n"
-                    "  max_trace_level 3 max_intersections 10 number_of_waves 3 noise_generator 1\n"
-                    "  charset utf8 irid_wavelength 0.5 mm_per_unit 1 radiosity { count 50 }\n"
-                    "  photons { count 1000 } subsurface { } }\n"
-                    "camera { perspective location -5*z angle 60 }"),
+    EXPECT_EQ(render_error(
+                  "global_settings { assumed_gamma 1 ambient_light 0.3 adc_bailout 0.1\n"
+                  "  max_trace_level 3 max_intersections 10 number_of_waves 3 noise_generator 1\n"
+                  "  charset utf8 irid_wavelength 0.5 mm_per_unit 1 radiosity { count 50 }\n"
+                  "  photons { count 1000 } subsurface { } }\n"
+                  "camera { perspective location -5*z angle 60 }"),
               "no error");
 }
 
@@ -195,23 +201,30 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
         return "not supported: " + feature + " at test.pov:" + at;
     };
     EXPECT_EQ(render_error("sphere { 0, 1 }\n  cylinder { 0, y, 1 }"), refused("cylinder", "2:3"));
-    EXPECT_EQ(render_error("difference { box { -1, 1 } sphere { 0, 2 } }"), refused("difference", "1:1"));
-    EXPECT_EQ(render_error("union { sphere { 0, 1 } sphere { x, 1 } inverse }"), refused("union", "1:1"));
-    EXPECT_EQ(render_error("sphere { 0, 1 clipped_by { plane { y, 0 } } }"), refused("clipped_by", "1:1"));
-    EXPECT_EQ(render_error("sphere { 0, 1 bounded_by { box { -1, 1 } } }"), refused("bounded_by", "1:1"));
+    EXPECT_EQ(render_error("difference { box { -1, 1 } sphere { 0, 2 } }"),
+              refused("difference", "1:1"));
+    EXPECT_EQ(render_error("union { sphere { 0, 1 } sphere { x, 1 } inverse }"),
+              refused("union", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 1 clipped_by { plane { y, 0 } } }"),
+              refused("clipped_by", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 1 bounded_by { box { -1, 1 } } }"),
+              refused("bounded_by", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 inverse }"), refused("inverse", "1:1"));
-    EXPECT_EQ(render_error("sphere { 0, 1 double_illuminate }"), refused("double_illuminate", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 1 double_illuminate }"),
+              refused("double_illuminate", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 no_radiosity }"), refused("no_radiosity", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 uv_mapping }"), refused("uv_mapping", "1:1"));
-    EXPECT_EQ(render_error("sphere { 0, 0 }"), refused("sphere of radius 0 (only positive radii)", "1:1"));
+    EXPECT_EQ(render_error("sphere { 0, 0 }"),
+              refused("sphere of radius 0 (only positive radii)", "1:1"));
     EXPECT_EQ(render_error("light_group { box { 0, 1 } }"),
               refused("light_group (at test.pov:1:1)", "1:15"));
     EXPECT_EQ(render_error("#declare T = texture { pigment { rgb 1 } }\n"
-                    "mesh { triangle { 0, x, y texture { T } } }"),
+                           "mesh { triangle { 0, x, y texture { T } } }"),
               refused("mesh triangle textures", "2:1"));
     EXPECT_EQ(render_error("mesh { smooth_triangle { 0, y, x, y, z, y } triangle { 0, x, -z } }"),
               refused("mesh mixing smooth and flat triangles", "1:1"));
-    EXPECT_EQ(render_error("light_source { 0, 1 cylinder }"), refused("cylinder light_source", "1:1"));
+    EXPECT_EQ(render_error("light_source { 0, 1 cylinder }"),
+              refused("cylinder light_source", "1:1"));
     EXPECT_EQ(render_error("light_source { 0, 1 parallel point_at -y }"),
               refused("parallel light_source", "1:1"));
     EXPECT_EQ(render_error("light_source { 0, 1 projected_through { sphere { 0, 1 } } }"),
@@ -220,8 +233,9 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
               refused("light_group (at test.pov:1:1)", "1:15"));
     // Photon and radiosity hints change nothing a path tracer computes; a looks_like object is
     // an object without shadow.
-    EXPECT_EQ(render_error("sphere { 0, 1 photons { target } radiosity { importance 0.5 } hollow }"),
-              "no error");
+    EXPECT_EQ(
+        render_error("sphere { 0, 1 photons { target } radiosity { importance 0.5 } hollow }"),
+        "no error");
     EXPECT_EQ(render_error("light_source { 0, 1 looks_like { sphere { 0, 0.1 } } }"), "no error");
 }
 

@@ -2,7 +2,8 @@
 // colour is an illuminant spectrum, the upsampled colour x the luminance-normalised D65. A grey
 // point light gives exactly the RGB mode's lux in expectation (I cos / d^2); a coloured one over
 // a coloured floor gives the closed forms with the upsampled spectra, integrated here at
-// 0.01 nm; an emitting grey furnace and a coloured background likewise. Seeds are fixed; every statistical bound is kZ standard errors of the estimate.
+// 0.01 nm; an emitting grey furnace and a coloured background likewise. Seeds are fixed; every
+// statistical bound is kZ standard errors of the estimate.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -29,16 +30,18 @@ RenderResult render_text(const std::string& text, RenderSettings settings) {
     return render(scene, settings);
 }
 
-std::string with_mode(const std::string& scene, bool spectral, const std::string& integrator = "bidirectional") {
-    return "global_settings { integrator \"" + integrator + "\" spectral " + (spectral ? "on" : "off") + " }\n" +
-           scene;
+std::string with_mode(const std::string& scene, bool spectral,
+                      const std::string& integrator = "bidirectional") {
+    return "global_settings { integrator \"" + integrator + "\" spectral " +
+           (spectral ? "on" : "off") + " }\n" + scene;
 }
 
 // The integral over 360-830 nm of V(lambda) x f(lambda), 0.01 nm midpoints.
 template <class F>
 double luminance_integral(F f) {
     double sum = 0;
-    for (double nm = kLambdaMin + 0.005; nm < kLambdaMax; nm += 0.01) sum += photopic_efficiency(nm) * f(nm) * 0.01;
+    for (double nm = kLambdaMin + 0.005; nm < kLambdaMax; nm += 0.01)
+        sum += photopic_efficiency(nm) * f(nm) * 0.01;
     return sum;
 }
 
@@ -61,7 +64,8 @@ TEST(SpectralLights, D65IsLuminanceNormalised) {
 const char* kFloorScene = R"(
     light_source { <100, 1000, -50> color rgb %s }
     plane { y, 0 pigment { rgb %s } finish { diffuse 1 } }
-    illuminance_receiver { <-1000, 0, -1000>, <0, 0, 2000>, <2000, 0, 0> resolution <9, 7> name "floor" }
+    illuminance_receiver { <-1000, 0, -1000>, <0, 0, 2000>, <2000, 0, 0>
+        resolution <9, 7> name "floor" }
 )";
 
 std::string floor_scene(const std::string& light, const std::string& floor) {
@@ -104,13 +108,16 @@ TEST(SpectralLights, GreyPointLightGivesTheRgbLuxAndInverseSquareCosine) {
                 EXPECT_GT(se, 0) << integrator;
                 EXPECT_NEAR(b.irradiance.photometric_mean(i, j), expected, kZ * se)
                     << integrator << " cell " << i << "," << j;
-                worst_sigma = std::max(worst_sigma, std::abs(b.irradiance.photometric_mean(i, j) - expected) / se);
+                worst_sigma = std::max(
+                    worst_sigma, std::abs(b.irradiance.photometric_mean(i, j) - expected) / se);
             }
-        std::printf("%s, grey point light: centre cell RGB %.6g lx, spectral %.6g lx (se %.2g), truth %.6g lx; "
-                    "worst cell %.2f standard errors\n",
-                    integrator, a.irradiance.photometric_mean(4, 3), b.irradiance.photometric_mean(4, 3),
-                    b.irradiance.photometric_standard_error(4, 3), 683 * 2 * inverse_square_cosine(a, 4, 3),
-                    worst_sigma);
+        std::printf(
+            "%s, grey point light: centre cell RGB %.6g lx, spectral %.6g lx (se %.2g), truth %.6g "
+            "lx; "
+            "worst cell %.2f standard errors\n",
+            integrator, a.irradiance.photometric_mean(4, 3), b.irradiance.photometric_mean(4, 3),
+            b.irradiance.photometric_standard_error(4, 3), 683 * 2 * inverse_square_cosine(a, 4, 3),
+            worst_sigma);
     }
 }
 
@@ -122,7 +129,8 @@ TEST(SpectralLights, ColouredPointLightOnColouredFloorGivesTheUpsampledClosedFor
     //    the light's axis: cos / d^2 varies by 3e-5 over the view): 683 x integral of
     //    V x rho(lambda) x I(lambda) / (pi h^2), rho the floor's upsampled reflectance.
     const Rgb light_colour{2, 1.2, 0.4}, floor_colour{0.2, 0.6, 0.3};
-    const double light_luminance = luminance_integral([&](double nm) { return illuminant(light_colour, nm); });
+    const double light_luminance =
+        luminance_integral([&](double nm) { return illuminant(light_colour, nm); });
     const ReflectanceSpectrum rho = upsample_reflectance(floor_colour);
     const double reflected_luminance =
         luminance_integral([&](double nm) { return rho(nm) * illuminant(light_colour, nm); });
@@ -142,11 +150,13 @@ TEST(SpectralLights, ColouredPointLightOnColouredFloorGivesTheUpsampledClosedFor
                 << "cell " << i << "," << j;
         }
     const double centre_expected = 683 * light_luminance * inverse_square_cosine(map, 4, 3);
-    std::printf("orange point light: centre cell spectral %.6g lx (se %.2g), closed form %.6g lx, RGB mode %.6g lx "
-                "(%+.3f%%)\n",
-                map.irradiance.photometric_mean(4, 3), map.irradiance.photometric_standard_error(4, 3), centre_expected,
-                683 * rgb_light_luminance * inverse_square_cosine(map, 4, 3),
-                100 * (rgb_light_luminance / light_luminance - 1));
+    std::printf(
+        "orange point light: centre cell spectral %.6g lx (se %.2g), closed form %.6g lx, RGB mode "
+        "%.6g lx "
+        "(%+.3f%%)\n",
+        map.irradiance.photometric_mean(4, 3), map.irradiance.photometric_standard_error(4, 3),
+        centre_expected, 683 * rgb_light_luminance * inverse_square_cosine(map, 4, 3),
+        100 * (rgb_light_luminance / light_luminance - 1));
 
     // The floor's luminance: pixels straight below the light (a slab's face at z = 0 facing the
     // light at z = -1000, camera between them) are independent, identically distributed to 3e-5.
@@ -166,10 +176,13 @@ TEST(SpectralLights, ColouredPointLightOnColouredFloorGivesTheUpsampledClosedFor
             sum += v, squares += v * v;
         }
     const double mean = sum / n, se = std::sqrt(std::max(0.0, squares / n - mean * mean) / (n - 1));
-    const double expected = 683 * reflected_luminance / kPi, rgb_mode = 683 * rgb_reflected_luminance / kPi;
-    std::printf("green floor under it: spectral %.6g cd/m^2 (se %.2g), closed form %.6g cd/m^2, RGB mode %.6g "
-                "cd/m^2 (%+.3f%%)\n",
-                mean, se, expected, rgb_mode, 100 * (rgb_mode / expected - 1));
+    const double expected = 683 * reflected_luminance / kPi,
+                 rgb_mode = 683 * rgb_reflected_luminance / kPi;
+    std::printf(
+        "green floor under it: spectral %.6g cd/m^2 (se %.2g), closed form %.6g cd/m^2, RGB mode "
+        "%.6g "
+        "cd/m^2 (%+.3f%%)\n",
+        mean, se, expected, rgb_mode, 100 * (rgb_mode / expected - 1));
     EXPECT_GT(se, 0);
     EXPECT_NEAR(mean, expected, kZ * se + 3e-5 * expected);
 }
@@ -196,8 +209,11 @@ TEST(SpectralLights, EmittingFurnaceAndBackgroundAreIlluminantSpectra) {
     settings.width = settings.height = 16, settings.passes = 8, settings.seed = 4;
     const RenderResult furnace = render_text(with_mode(R"(
         camera { location <0,0,-50> look_at <0,0,0> angle 40 }
-        sphere { <0,0,0>, 100 pigment { rgb 1 } finish { diffuse 0.5 reflection 0.3 emission 1 ambient 0 } }
-    )", true), settings);
+        sphere { <0,0,0>, 100 pigment { rgb 1 }
+            finish { diffuse 0.5 reflection 0.3 emission 1 ambient 0 } }
+    )",
+                                                       true),
+                                             settings);
     double mean = 0, se = 0;
     image_luminance(furnace.film, mean, se);
     std::printf("spectral furnace: %.6g cd/m^2 (se %.2g), closed form %.6g\n", mean, se, 683 * 5.0);
@@ -206,14 +222,18 @@ TEST(SpectralLights, EmittingFurnaceAndBackgroundAreIlluminantSpectra) {
 
     // A coloured background seen directly: 683 x integral of V x its illuminant spectrum.
     const Rgb sky{0.2, 0.4, 0.9};
-    const double sky_luminance = 683 * luminance_integral([&](double nm) { return illuminant(sky, nm); });
+    const double sky_luminance =
+        683 * luminance_integral([&](double nm) { return illuminant(sky, nm); });
     const RenderResult background = render_text(with_mode(R"(
         camera { location <0,0,-50> look_at <0,0,0> angle 40 }
         background { rgb <0.2, 0.4, 0.9> }
-    )", true), settings);
+    )",
+                                                          true),
+                                                settings);
     image_luminance(background.film, mean, se);
-    std::printf("spectral background: %.6g cd/m^2 (se %.2g), closed form %.6g, RGB mode %.6g (%+.3f%%)\n", mean, se,
-                sky_luminance, photometric(sky), 100 * (photometric(sky) / sky_luminance - 1));
+    std::printf(
+        "spectral background: %.6g cd/m^2 (se %.2g), closed form %.6g, RGB mode %.6g (%+.3f%%)\n",
+        mean, se, sky_luminance, photometric(sky), 100 * (photometric(sky) / sky_luminance - 1));
     EXPECT_GT(se, 0);
     EXPECT_NEAR(mean, sky_luminance, kZ * se);
 }

@@ -20,10 +20,10 @@
 #include <vtkXMLMultiBlockDataReader.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <functional>
 #include <map>
 #include <numeric>
@@ -69,7 +69,8 @@ int connected_components(vtkPolyData* spheres) {
     const double cell = 2 * largest;
     std::map<std::tuple<long, long, long>, std::vector<vtkIdType>> grid;
     auto key = [&](const double* p, int dx, int dy, int dz) {
-        return std::make_tuple(long(std::floor(p[0] / cell)) + dx, long(std::floor(p[1] / cell)) + dy,
+        return std::make_tuple(long(std::floor(p[0] / cell)) + dx,
+                               long(std::floor(p[1] / cell)) + dy,
                                long(std::floor(p[2] / cell)) + dz);
     };
     for (vtkIdType i = 0; i < n; ++i) grid[key(spheres->GetPoint(i), 0, 0, 0)].push_back(i);
@@ -91,9 +92,11 @@ int connected_components(vtkPolyData* spheres) {
                         if (j <= i) continue;
                         double q[3];
                         spheres->GetPoint(j, q);
-                        const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                        const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) +
+                                                   (p[1] - q[1]) * (p[1] - q[1]) +
                                                    (p[2] - q[2]) * (p[2] - q[2]));
-                        if (d <= radius->GetComponent(i, 0) + radius->GetComponent(j, 0)) parent[root(i)] = root(j);
+                        if (d <= radius->GetComponent(i, 0) + radius->GetComponent(j, 0))
+                            parent[root(i)] = root(j);
                     }
                 }
     }
@@ -120,7 +123,8 @@ TEST(ClusterModelViews, SpheresPngShowsTheBodyAndItsScalarBar) {
     options.width = 800, options.height = 600, options.offscreen = true;
     viz::Scene scene = viz::build_scene(input, nullptr, viz::View::spheres, {}, options);
     viz::write_png(scene, dir.file("spheres.png"));
-    // The scalar bar's colour strip lies in x 0.86..0.98, y 0.1..0.9 of the window (view_style.cpp).
+    // The scalar bar's colour strip lies in x 0.86..0.98, y 0.1..0.9 of the window
+    // (view_style.cpp).
     const double bar[4] = {0.86, 0.98, 0.1, 0.9};
     const test::PngStatistics s = test::png_statistics(dir.file("spheres.png"), bar);
     EXPECT_EQ(s.width, 800);
@@ -129,7 +133,8 @@ TEST(ClusterModelViews, SpheresPngShowsTheBodyAndItsScalarBar) {
     EXPECT_GT(s.foreground, 0.03 * s.width * s.height);
     // The bar is a colour gradient: many distinct colours there, not just text.
     EXPECT_GT(s.region_foreground, 0.3 * 0.12 * 0.8 * 0.5 * s.width * s.height);
-    RecordProperty("foreground_fraction", std::to_string(double(s.foreground) / (s.width * s.height)));
+    RecordProperty("foreground_fraction",
+                   std::to_string(double(s.foreground) / (s.width * s.height)));
     RecordProperty("bar_colours", s.region_colours);
     EXPECT_GT(s.region_colours, 50);
 }
@@ -137,10 +142,13 @@ TEST(ClusterModelViews, SpheresPngShowsTheBodyAndItsScalarBar) {
 TEST(ClusterModelViews, CentreCellDiagramIsTheLambertianLobe) {
     const auto& model = *test::built_source("cluster").model;
     // The cluster is flat (one layer of cells in z); the centre chip is in the middle cell.
-    const lightmodel::Coord centre{model.intensity_frame.dims()[0] / 2, model.intensity_frame.dims()[1] / 2, 0};
+    const lightmodel::Coord centre{model.intensity_frame.dims()[0] / 2,
+                                   model.intensity_frame.dims()[1] / 2, 0};
     ASSERT_EQ(centre, (lightmodel::Coord{2, 2, 0}));
-    auto diagram = read_polydata(fmt::format("{}/diagram_{}_{}_{}.vtp", export_dir(), centre[0], centre[1], centre[2]));
-    ASSERT_EQ(diagram->GetNumberOfPoints(), 2 + 89 * 72);  // 90 rings, 72 sectors (diagram_surface.h)
+    auto diagram = read_polydata(
+        fmt::format("{}/diagram_{}_{}_{}.vtp", export_dir(), centre[0], centre[1], centre[2]));
+    ASSERT_EQ(diagram->GetNumberOfPoints(),
+              2 + 89 * 72);  // 90 rings, 72 sectors (diagram_surface.h)
     const double cell_flux = viz::field_values(diagram, "cell_flux").at(0);
     const double ray_flux = 1e-6;  // 1 W over 1e6 equal rays
     const double rays = cell_flux / ray_flux;
@@ -161,20 +169,24 @@ TEST(ClusterModelViews, CentreCellDiagramIsTheLambertianLobe) {
     RecordProperty("pole_ratio", std::to_string(radius_z / expected));
     RecordProperty("pole_bound", std::to_string(4 * sigma));
     RecordProperty("cell_rays", std::to_string(rays));
-    EXPECT_NEAR(radius_z / expected, 1, 4 * sigma) << "radius along +z " << radius_z << ", Phi_k/pi " << expected
-                                                   << ", rays " << rays;
+    EXPECT_NEAR(radius_z / expected, 1, 4 * sigma)
+        << "radius along +z " << radius_z << ", Phi_k/pi " << expected << ", rays " << rays;
 
     // The lobe's shape: ring means at theta = 30 and 60 degrees (rings 15 and 30 of 90) against
     // cos(theta). Each interpolates between neighbouring bands of 12 cells holding about
-    // 2 u du = 2 cos(theta) / 40 of the rays; sigma of a band mean is 1 / sqrt(that count), 4 sigma.
+    // 2 u du = 2 cos(theta) / 40 of the rays; sigma of a band mean is 1 / sqrt(that count), 4
+    // sigma.
     vtkDataArray* intensity = diagram->GetPointData()->GetArray("intensity");
     for (int ring : {15, 30}) {
         const double theta = kPi * ring / 90;
         double mean = 0;
-        for (int i = 0; i < 72; ++i) mean += intensity->GetComponent(1 + (ring - 1) * 72 + i, 0) / 72;
+        for (int i = 0; i < 72; ++i)
+            mean += intensity->GetComponent(1 + (ring - 1) * 72 + i, 0) / 72;
         const double band_rays = rays * 2 * std::cos(theta) / 40;
-        RecordProperty("ring_" + std::to_string(ring), std::to_string(mean / (expected * std::cos(theta))));
-        EXPECT_NEAR(mean / (expected * std::cos(theta)), 1, 4 / std::sqrt(band_rays)) << "theta " << theta;
+        RecordProperty("ring_" + std::to_string(ring),
+                       std::to_string(mean / (expected * std::cos(theta))));
+        EXPECT_NEAR(mean / (expected * std::cos(theta)), 1, 4 / std::sqrt(band_rays))
+            << "theta " << theta;
     }
 }
 
@@ -225,7 +237,8 @@ TEST(ClusterModelViews, ExportedFilesReadBackAsTheModel) {
     EXPECT_EQ(range[1], *std::max_element(model.voxel_density.begin(), model.voxel_density.end()));
     // The voxel at the model's first voxel holds its count (same index order as the lattice).
     const auto& v0 = model.voxels.front();
-    EXPECT_EQ(counts->GetComponent(density->ComputePointId(const_cast<int*>(v0.data())), 0), model.voxel_density.front());
+    EXPECT_EQ(counts->GetComponent(density->ComputePointId(const_cast<int*>(v0.data())), 0),
+              model.voxel_density.front());
 
     auto flux = read_image(export_dir() + "/flux.vti");
     vtkDataArray* cell_flux = flux->GetPointData()->GetArray("flux");
@@ -238,14 +251,16 @@ TEST(ClusterModelViews, ExportedFilesReadBackAsTheModel) {
     }
     EXPECT_EQ(lit, long(model.flux_cells.size()));
     EXPECT_NEAR(flux_total, model.total_flux(), 1e-12 * model.total_flux());
-    EXPECT_NEAR(flux_total, 1.0, 1e-6);  // the synthetic cluster's 1 W, to float rounding of the rays
+    EXPECT_NEAR(flux_total, 1.0,
+                1e-6);  // the synthetic cluster's 1 W, to float rounding of the rays
 
     auto spheres = read_polydata(export_dir() + "/spheres.vtp");
     EXPECT_EQ(spheres->GetNumberOfPoints(), vtkIdType(model.spheres.size()));
     double radii[2];
     spheres->GetPointData()->GetArray("radius")->GetRange(radii);
-    const auto [smallest, largest] = std::minmax_element(model.spheres.begin(), model.spheres.end(),
-                                                         [](const auto& a, const auto& b) { return a.r < b.r; });
+    const auto [smallest, largest] =
+        std::minmax_element(model.spheres.begin(), model.spheres.end(),
+                            [](const auto& a, const auto& b) { return a.r < b.r; });
     EXPECT_EQ(radii[0], smallest->r);
     EXPECT_EQ(radii[1], largest->r);
 

@@ -33,9 +33,12 @@ void write_rgb_exr(const std::string& path, int w, int h, const char* units) {
             b[size_t(y) * w + x] = 100;
         }
     Imf::FrameBuffer buffer;
-    buffer.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(r.data()), sizeof(float), sizeof(float) * w));
-    buffer.insert("G", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(g.data()), sizeof(float), sizeof(float) * w));
-    buffer.insert("B", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(b.data()), sizeof(float), sizeof(float) * w));
+    buffer.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(r.data()), sizeof(float),
+                                  sizeof(float) * w));
+    buffer.insert("G", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(g.data()), sizeof(float),
+                                  sizeof(float) * w));
+    buffer.insert("B", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(b.data()), sizeof(float),
+                                  sizeof(float) * w));
     Imf::OutputFile file(path.c_str(), header);
     file.setFrameBuffer(buffer);
     file.writePixels(h);
@@ -76,5 +79,5 @@ TEST(ImageView, RendersWithItsScaleBar) {
     const double bar[4] = {0.86, 0.98, 0.1, 0.9};
     const test::PngStatistics s = test::png_statistics(dir.file("image.png"), bar);
     EXPECT_GT(s.foreground, 0.2 * s.width * s.height);  // the image fills much of the window
-    EXPECT_GT(s.region_colours, 50);                     // the bar's gradient
+    EXPECT_GT(s.region_colours, 50);                    // the bar's gradient
 }

@@ -10,13 +10,13 @@
 #include "viz/viz_support.h"
 #include "viz/vtk_arrays.h"
 
-#include <nlohmann/json.hpp>
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
 #include <vtkXMLPolyDataReader.h>
+#include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <fmt/format.h>
+#include <cmath>
 
 namespace {
 
@@ -30,7 +30,8 @@ double max_of(vtkPolyData* data, const char* name) {
     return range[1];
 }
 
-void expect_rendered(viz::Input& first, viz::Input* second, viz::View view, const std::string& png) {
+void expect_rendered(viz::Input& first, viz::Input* second, viz::View view,
+                     const std::string& png) {
     viz::SceneOptions options;
     options.width = 640, options.height = 480, options.offscreen = true;
     viz::Scene scene = viz::build_scene(first, second, view, {}, options);
@@ -50,9 +51,11 @@ TEST(PhotometryViews, OsramBluePolarMaximumIsRayconvInfoMaximum) {
     const std::string blue = test::shared_data(kBlue);
     test::ScratchDir dir;
     // The independent route: rayconv farfield -> IES -> rayconv info --json.
-    const auto farfield = test::run_command(fmt::format("'{}' farfield '{}' -o '{}'", RAYCONV_EXE, blue, dir.file("blue.ies")));
+    const auto farfield = test::run_command(
+        fmt::format("'{}' farfield '{}' -o '{}'", RAYCONV_EXE, blue, dir.file("blue.ies")));
     ASSERT_EQ(farfield.status, 0) << farfield.output;
-    const auto info = test::run_command(fmt::format("'{}' info '{}' --json", RAYCONV_EXE, dir.file("blue.ies")));
+    const auto info =
+        test::run_command(fmt::format("'{}' info '{}' --json", RAYCONV_EXE, dir.file("blue.ies")));
     ASSERT_EQ(info.status, 0) << info.output;
     const double reported = nlohmann::json::parse(info.output)["max_intensity_cd"].get<double>();
 
@@ -91,7 +94,8 @@ TEST(PhotometryViews, PolarCurvesFollowTheTable) {
     const double deg = M_PI / 180;
     for (double h : p.horizontal_deg)
         for (double v : p.vertical_deg)
-            p.candela.push_back(std::max(0.0, 100 * std::cos(v * deg) + 20 * std::sin(v * deg) * std::cos(h * deg)));
+            p.candela.push_back(std::max(
+                0.0, 100 * std::cos(v * deg) + 20 * std::sin(v * deg) * std::cos(h * deg)));
     t.max_intensity = p.max_candela();
     auto curves = viz::polar_curves(t);
     ASSERT_EQ(curves->GetNumberOfCells(), 2);  // the maximum lies in C0: no third plane

@@ -36,7 +36,8 @@ PngStatistics png_statistics(const std::string& path, const double region[4]) {
     const int channels = image->GetNumberOfScalarComponents();
     auto pixel = [&](int x, int y) {
         const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer(x, y, 0));
-        return (uint32_t(p[0]) << 16) | (uint32_t(p[channels > 1 ? 1 : 0]) << 8) | p[channels > 2 ? 2 : 0];
+        return (uint32_t(p[0]) << 16) | (uint32_t(p[channels > 1 ? 1 : 0]) << 8) |
+               p[channels > 2 ? 2 : 0];
     };
     const uint32_t background = pixel(0, s.height - 1);
     std::set<uint32_t> colours;

@@ -14,7 +14,8 @@
 #include "core/error.h"
 #include "tracer/film/staged_files.h"
 
-static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "checkpoints are written in the host's byte order");
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+              "checkpoints are written in the host's byte order");
 
 namespace rayset::tracer {
 
@@ -76,9 +77,11 @@ public:
     }
     // A grid stored as `expected` is laid out (the same scene and settings).
     SampleGrid get_grid(const SampleGrid& expected, const std::string& what) {
-        const int nx = int(get<uint32_t>()), ny = int(get<uint32_t>()), samples = int(get<uint32_t>());
+        const int nx = int(get<uint32_t>()), ny = int(get<uint32_t>()),
+                  samples = int(get<uint32_t>());
         if (nx != expected.nx() || ny != expected.ny())
-            fail(fmt::format("{} has {} x {} cells, this render {} x {}", what, nx, ny, expected.nx(), expected.ny()));
+            fail(fmt::format("{} has {} x {} cells, this render {} x {}", what, nx, ny,
+                             expected.nx(), expected.ny()));
         std::vector<Rgb> sums(size_t(nx) * ny);
         std::vector<double> squares(sums.size());
         for (Rgb& s : sums) s.red = get<double>(), s.green = get<double>(), s.blue = get<double>();
@@ -89,11 +92,13 @@ public:
         film = get_grid(film, what + "image");
         const uint32_t count = get<uint32_t>();
         if (count != receivers.size())
-            fail(fmt::format("{} receivers in the checkpoint, {} in the scene", count, receivers.size()));
+            fail(fmt::format("{} receivers in the checkpoint, {} in the scene", count,
+                             receivers.size()));
         for (ReceiverMap& map : receivers) {
             const std::string name = get_string();
             if (name != map.receiver.name)
-                fail(fmt::format("receiver '{}' in the checkpoint where the scene has '{}'", name, map.receiver.name));
+                fail(fmt::format("receiver '{}' in the checkpoint where the scene has '{}'", name,
+                                 map.receiver.name));
             map.irradiance = get_grid(map.irradiance, what + "receiver " + name);
         }
     }
@@ -105,7 +110,8 @@ public:
 
 private:
     const char* take(size_t size) {
-        if (size > bytes_.size() - position_) throw Error(fmt::format("{}: truncated checkpoint", path_));
+        if (size > bytes_.size() - position_)
+            throw Error(fmt::format("{}: truncated checkpoint", path_));
         const char* at = bytes_.data() + position_;
         position_ += size;
         return at;
@@ -116,8 +122,10 @@ private:
 };
 
 void put_identity(Writer& out, const CheckpointIdentity& id) {
-    out.put(id.scene), out.put(id.scene_hash), out.put(uint32_t(id.width)), out.put(uint32_t(id.height));
-    out.put(id.seed), out.put(id.integrator), out.put(uint8_t(id.render_image)), out.put(uint32_t(id.photons_per_pass));
+    out.put(id.scene), out.put(id.scene_hash), out.put(uint32_t(id.width)),
+        out.put(uint32_t(id.height));
+    out.put(id.seed), out.put(id.integrator), out.put(uint8_t(id.render_image)),
+        out.put(uint32_t(id.photons_per_pass));
     out.put(id.photon_radius), out.put(uint8_t(id.naive_sources));
 }
 
@@ -125,22 +133,25 @@ CheckpointIdentity get_identity(Reader& in) {
     CheckpointIdentity id;
     id.scene = in.get_string(), id.scene_hash = in.get<uint64_t>();
     id.width = int(in.get<uint32_t>()), id.height = int(in.get<uint32_t>());
-    id.seed = in.get<uint64_t>(), id.integrator = in.get_string(), id.render_image = in.get<uint8_t>() != 0;
+    id.seed = in.get<uint64_t>(), id.integrator = in.get_string(),
+    id.render_image = in.get<uint8_t>() != 0;
     id.photons_per_pass = int(in.get<uint32_t>()), id.photon_radius = in.get<double>();
     id.naive_sources = in.get<uint8_t>() != 0;
     return id;
 }
 
 // "seed 7 (this render: 0)" for every field that differs.
-std::vector<std::string> differences(const CheckpointIdentity& stored, const CheckpointIdentity& now) {
+std::vector<std::string> differences(const CheckpointIdentity& stored,
+                                     const CheckpointIdentity& now) {
     std::vector<std::string> d;
     auto compare = [&](const char* what, const auto& a, const auto& b) {
         if (a != b) d.push_back(fmt::format("{} {} (this render: {})", what, a, b));
     };
     if (stored.scene_hash != now.scene_hash)
-        d.push_back(fmt::format("scene {} with content hash {:016x} (this render: {} with hash {:016x}; the scene, "
-                                "an included file or a data file changed)",
-                                stored.scene, stored.scene_hash, now.scene, now.scene_hash));
+        d.push_back(fmt::format(
+            "scene {} with content hash {:016x} (this render: {} with hash {:016x}; the scene, "
+            "an included file or a data file changed)",
+            stored.scene, stored.scene_hash, now.scene, now.scene_hash));
     compare("width", stored.width, now.width);
     compare("height", stored.height, now.height);
     compare("seed", stored.seed, now.seed);
@@ -167,7 +178,8 @@ uint64_t scene_content_hash(const SceneDescription& scene) {
     for (const std::string& file : scene.files) {
         std::ifstream in(file, std::ios::binary);
         if (!in) throw Error(fmt::format("{}: cannot read the scene file to identify it", file));
-        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::string text((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
         const uint64_t size = text.size();
         hash.add(&size, sizeof size);
         hash.add(text);
@@ -176,18 +188,22 @@ uint64_t scene_content_hash(const SceneDescription& scene) {
     std::vector<std::string> data;
     for (const RaySource& source : scene.ray_sources) data.push_back(source.path);
     for (const ObjectInstance& object : scene.objects)
-        if (const auto* mesh = std::get_if<MeshFileShape>(&object.shape)) data.push_back(mesh->path);
+        if (const auto* mesh = std::get_if<MeshFileShape>(&object.shape))
+            data.push_back(mesh->path);
     for (const std::string& file : data) {
         std::error_code error;
         const uint64_t size = std::filesystem::file_size(file, error);
-        if (error) throw Error(fmt::format("{}: cannot read the size of the data file to identify it", file));
+        if (error)
+            throw Error(
+                fmt::format("{}: cannot read the size of the data file to identify it", file));
         hash.add(file);
         hash.add(&size, sizeof size);
     }
     return hash.value;
 }
 
-CheckpointIdentity checkpoint_identity(const SceneDescription& scene, const RenderSettings& settings) {
+CheckpointIdentity checkpoint_identity(const SceneDescription& scene,
+                                       const RenderSettings& settings) {
     CheckpointIdentity id;
     id.scene = scene.files.empty() ? std::string() : scene.files.front();
     id.scene_hash = scene_content_hash(scene);
@@ -204,16 +220,20 @@ CheckpointIdentity checkpoint_identity(const SceneDescription& scene, const Rend
     return id;
 }
 
-void write_checkpoint(const std::string& path, const CheckpointIdentity& identity, const RenderResult& state) {
+void write_checkpoint(const std::string& path, const CheckpointIdentity& identity,
+                      const RenderResult& state) {
     Writer out;
     for (char c : kMagic) out.put(c);
     out.put(kCheckpointVersion);
     put_identity(out, identity);
-    out.put(uint32_t(state.passes)), out.put(state.seconds), out.put(state.rays), out.put(state.photons);
-    out.put(state.photon_radius), out.put(uint64_t(state.photon_bytes)), out.put(uint64_t(state.visible_point_bytes));
+    out.put(uint32_t(state.passes)), out.put(state.seconds), out.put(state.rays),
+        out.put(state.photons);
+    out.put(state.photon_radius), out.put(uint64_t(state.photon_bytes)),
+        out.put(uint64_t(state.visible_point_bytes));
     out.put(state.film, state.receivers);
     out.put(uint32_t(state.layers.size()));
-    for (const RenderLayer& layer : state.layers) out.put(layer.name), out.put(layer.film, layer.receivers);
+    for (const RenderLayer& layer : state.layers)
+        out.put(layer.name), out.put(layer.film, layer.receivers);
     Fnv1a hash;
     hash.add(out.bytes());
     out.put(hash.value);
@@ -225,11 +245,13 @@ void write_checkpoint(const std::string& path, const CheckpointIdentity& identit
     bool ok = std::fwrite(out.bytes().data(), 1, out.bytes().size(), file) == out.bytes().size();
     // On disk before the rename, so that even a crash of the machine leaves a whole file.
     ok = std::fflush(file) == 0 && fsync(fileno(file)) == 0 && ok;
-    if (std::fclose(file) != 0 || !ok) throw Error(fmt::format("{}: cannot write the checkpoint", path));
+    if (std::fclose(file) != 0 || !ok)
+        throw Error(fmt::format("{}: cannot write the checkpoint", path));
     files.commit();
 }
 
-RenderResult read_checkpoint(const std::string& path, const CheckpointIdentity& expected, RenderResult blank) {
+RenderResult read_checkpoint(const std::string& path, const CheckpointIdentity& expected,
+                             RenderResult blank) {
     const std::string bytes = read_whole_file(path);
     if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
         throw Error(fmt::format("{}: not a raytrace checkpoint", path));
@@ -237,36 +259,45 @@ RenderResult read_checkpoint(const std::string& path, const CheckpointIdentity& 
     in.skip(sizeof kMagic);
     const uint32_t version = in.get<uint32_t>();
     if (version != kCheckpointVersion)
-        throw Error(fmt::format("{}: checkpoint format version {}; this raytrace reads version {} only (render "
-                                "afresh, without --resume)", path, version, kCheckpointVersion));
-    if (bytes.size() < sizeof kMagic + 4 + 8) throw Error(fmt::format("{}: truncated checkpoint", path));
+        throw Error(fmt::format(
+            "{}: checkpoint format version {}; this raytrace reads version {} only (render "
+            "afresh, without --resume)",
+            path, version, kCheckpointVersion));
+    if (bytes.size() < sizeof kMagic + 4 + 8)
+        throw Error(fmt::format("{}: truncated checkpoint", path));
     Fnv1a hash;
     hash.add(bytes.data(), bytes.size() - 8);
     uint64_t stored_hash;
     std::memcpy(&stored_hash, bytes.data() + bytes.size() - 8, 8);
     if (hash.value != stored_hash)
-        throw Error(fmt::format("{}: truncated or corrupt checkpoint (its checksum does not match)", path));
+        throw Error(
+            fmt::format("{}: truncated or corrupt checkpoint (its checksum does not match)", path));
 
     const std::vector<std::string> differ = differences(get_identity(in), expected);
     if (!differ.empty()) {
         std::string list;
         for (const std::string& d : differ) list += "\n  " + d;
-        throw Error(fmt::format("{}: the checkpoint was made for another render; it has{}\nRender afresh without "
-                                "--resume (the checkpoint is then replaced), or resume with the settings above.",
-                                path, list));
+        throw Error(fmt::format(
+            "{}: the checkpoint was made for another render; it has{}\nRender afresh without "
+            "--resume (the checkpoint is then replaced), or resume with the settings above.",
+            path, list));
     }
     RenderResult state = std::move(blank);
     state.passes = int(in.get<uint32_t>());
-    state.seconds = in.get<double>(), state.rays = in.get<uint64_t>(), state.photons = in.get<uint64_t>();
+    state.seconds = in.get<double>(), state.rays = in.get<uint64_t>(),
+    state.photons = in.get<uint64_t>();
     state.photon_radius = in.get<double>();
-    state.photon_bytes = size_t(in.get<uint64_t>()), state.visible_point_bytes = size_t(in.get<uint64_t>());
+    state.photon_bytes = size_t(in.get<uint64_t>()),
+    state.visible_point_bytes = size_t(in.get<uint64_t>());
     in.get_grids(state.film, state.receivers, "");
     const uint32_t layers = in.get<uint32_t>();
     if (layers != state.layers.size())
-        in.fail(fmt::format("{} light layers in the checkpoint, {} in this render", layers, state.layers.size()));
+        in.fail(fmt::format("{} light layers in the checkpoint, {} in this render", layers,
+                            state.layers.size()));
     for (RenderLayer& layer : state.layers) {
         const std::string name = in.get_string();
-        if (name != layer.name) in.fail(fmt::format("layer '{}' where this render has '{}'", name, layer.name));
+        if (name != layer.name)
+            in.fail(fmt::format("layer '{}' where this render has '{}'", name, layer.name));
         in.get_grids(layer.film, layer.receivers, "layer " + name + " ");
     }
     in.get<uint64_t>();  // the checksum

@@ -32,7 +32,7 @@ struct CheckpointIdentity {
     uint64_t scene_hash = 0;  // scene_content_hash()
     int width = 0, height = 0;
     uint64_t seed = 0;
-    std::string integrator;    // "bidirectional spectral" with --spectral
+    std::string integrator;  // "bidirectional spectral" with --spectral
     bool render_image = true;
     int photons_per_pass = 0;  // as set: 0 is the renderer's default
     double photon_radius = 0;  // as set
@@ -43,14 +43,17 @@ struct CheckpointIdentity {
 // and size of each data file it names (mesh_file, ray_source): an edited scene no longer
 // matches its checkpoint. Throws rayset::Error when a file cannot be read.
 uint64_t scene_content_hash(const SceneDescription& scene);
-CheckpointIdentity checkpoint_identity(const SceneDescription& scene, const RenderSettings& settings);
+CheckpointIdentity checkpoint_identity(const SceneDescription& scene,
+                                       const RenderSettings& settings);
 
-void write_checkpoint(const std::string& path, const CheckpointIdentity& identity, const RenderResult& state);
+void write_checkpoint(const std::string& path, const CheckpointIdentity& identity,
+                      const RenderResult& state);
 
 // The state stored in `path`, laid out as `blank` (blank_render of the same scene and
 // settings). Throws rayset::Error, with a message naming the file and what is wrong (not a
 // checkpoint, another format version, truncated or corrupt, or each identity field that
 // differs from `expected`), and changes no file.
-RenderResult read_checkpoint(const std::string& path, const CheckpointIdentity& expected, RenderResult blank);
+RenderResult read_checkpoint(const std::string& path, const CheckpointIdentity& expected,
+                             RenderResult blank);
 
 }  // namespace rayset::tracer

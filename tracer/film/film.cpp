@@ -13,9 +13,10 @@ namespace rayset::tracer {
 SampleGrid SampleGrid::restored(int nx, int ny, int samples, std::vector<Rgb> sums,
                                 std::vector<double> photometric_squares) {
     const size_t cells = size_t(nx) * ny;
-    if (nx < 1 || ny < 1 || samples < 0 || sums.size() != cells || photometric_squares.size() != cells)
-        throw Error(fmt::format("sample grid of {} x {} cells with {} sums and {} squares", nx, ny, sums.size(),
-                                photometric_squares.size()));
+    if (nx < 1 || ny < 1 || samples < 0 || sums.size() != cells ||
+        photometric_squares.size() != cells)
+        throw Error(fmt::format("sample grid of {} x {} cells with {} sums and {} squares", nx, ny,
+                                sums.size(), photometric_squares.size()));
     SampleGrid grid(nx, ny);
     grid.samples_ = samples;
     grid.sum_ = std::move(sums);

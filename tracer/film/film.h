@@ -14,10 +14,12 @@ namespace rayset::tracer {
 // Per-cell sums of samples: the mean and the standard error of the mean's photometric value.
 class SampleGrid {
 public:
-    SampleGrid(int nx, int ny) : nx_(nx), ny_(ny), sum_(size_t(nx) * ny), photometric_squares_(size_t(nx) * ny) {}
+    SampleGrid(int nx, int ny)
+        : nx_(nx), ny_(ny), sum_(size_t(nx) * ny), photometric_squares_(size_t(nx) * ny) {}
     // A grid continuing from stored sums (checkpoint.h): adding to it gives the very bits an
     // uninterrupted grid would hold. Throws rayset::Error when the sizes disagree.
-    static SampleGrid restored(int nx, int ny, int samples, std::vector<Rgb> sums, std::vector<double> photometric_squares);
+    static SampleGrid restored(int nx, int ny, int samples, std::vector<Rgb> sums,
+                               std::vector<double> photometric_squares);
     int nx() const { return nx_; }
     int ny() const { return ny_; }
     int samples() const { return samples_; }
@@ -56,7 +58,8 @@ struct ReceiverMap {
     SampleGrid irradiance;         // W/m^2 per channel; photometric value in lux
     explicit ReceiverMap(const IlluminanceReceiver& r) : receiver(r), irradiance(r.nx, r.ny) {}
     Vec3 cell_centre(int i, int j) const {
-        return receiver.corner + ((i + 0.5) / receiver.nx) * receiver.edge1 + ((j + 0.5) / receiver.ny) * receiver.edge2;
+        return receiver.corner + ((i + 0.5) / receiver.nx) * receiver.edge1 +
+               ((j + 0.5) / receiver.ny) * receiver.edge2;
     }
     // Unit normal of the side the receiver records light from: cross(edge1, edge2).
     Vec3 front_normal() const { return normalized(cross(receiver.edge1, receiver.edge2)); }

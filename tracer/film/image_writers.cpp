@@ -18,7 +18,8 @@
 
 namespace rayset::tracer {
 
-void write_exr(const std::string& path, int width, int height, const std::vector<ExrChannel>& channels,
+void write_exr(const std::string& path, int width, int height,
+               const std::vector<ExrChannel>& channels,
                const std::vector<std::pair<std::string, std::string>>& attributes) {
     try {
         Imf::Header header(width, height);
@@ -26,7 +27,8 @@ void write_exr(const std::string& path, int width, int height, const std::vector
         Imf::FrameBuffer frame;
         for (const ExrChannel& c : channels) {
             header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
-            frame.insert(c.name, Imf::Slice(Imf::FLOAT, (char*)c.values.data(), sizeof(float), sizeof(float) * size_t(width)));
+            frame.insert(c.name, Imf::Slice(Imf::FLOAT, (char*)c.values.data(), sizeof(float),
+                                            sizeof(float) * size_t(width)));
         }
         Imf::OutputFile file(path.c_str(), header);
         file.setFrameBuffer(frame);
@@ -48,11 +50,12 @@ bool write_png_rows(std::FILE* file, int width, int height, const uint8_t* rgb) 
         return false;
     }
     png_init_io(png, file);
-    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_write_info(png, info);
-    for (int y = 0; y < height; ++y) png_write_row(png, const_cast<uint8_t*>(rgb + size_t(y) * width * 3));
+    for (int y = 0; y < height; ++y)
+        png_write_row(png, const_cast<uint8_t*>(rgb + size_t(y) * width * 3));
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
     return true;
@@ -68,7 +71,8 @@ void write_png(const std::string& path, int width, int height, const std::vector
     std::FILE* file = std::fopen(path.c_str(), "wb");
     if (!file) throw Error(fmt::format("{}: cannot create the PNG file", path));
     const bool ok = write_png_rows(file, width, height, rgb.data());
-    if (std::fclose(file) != 0 || !ok) throw Error(fmt::format("{}: cannot write the PNG file", path));
+    if (std::fclose(file) != 0 || !ok)
+        throw Error(fmt::format("{}: cannot write the PNG file", path));
 }
 
 std::vector<uint8_t> tone_map_srgb(const Film& film, double exposure) {
@@ -83,7 +87,8 @@ std::vector<uint8_t> tone_map_srgb(const Film& film, double exposure) {
                 if (const double v = max_component(film.mean(x, y)); v > 0) brightest.push_back(v);
         exposure = 1;
         if (!brightest.empty()) {
-            const size_t k = std::min(brightest.size() - 1, size_t(0.99 * double(brightest.size())));
+            const size_t k =
+                std::min(brightest.size() - 1, size_t(0.99 * double(brightest.size())));
             std::nth_element(brightest.begin(), brightest.begin() + k, brightest.end());
             exposure = 1 / brightest[k];
         }

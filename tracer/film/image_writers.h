@@ -17,7 +17,8 @@ struct ExrChannel {
 };
 
 // `attributes`: string attributes stored in the header (units, what the channels mean).
-void write_exr(const std::string& path, int width, int height, const std::vector<ExrChannel>& channels,
+void write_exr(const std::string& path, int width, int height,
+               const std::vector<ExrChannel>& channels,
                const std::vector<std::pair<std::string, std::string>>& attributes = {});
 
 // 8-bit RGB, rows from the top, tagged sRGB.

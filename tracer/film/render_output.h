@@ -18,7 +18,8 @@ struct OutputRequest {
 };
 
 // Returns the paths written. Throws rayset::Error, leaving no file behind, if any write fails.
-std::vector<std::string> write_render_outputs(const Film* film, const std::vector<ReceiverMap>& receivers,
+std::vector<std::string> write_render_outputs(const Film* film,
+                                              const std::vector<ReceiverMap>& receivers,
                                               const OutputRequest& request);
 
 // The CSV text of a receiver map: one row per cell (see tracer/render/README.md).

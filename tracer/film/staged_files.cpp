@@ -21,9 +21,11 @@ StagedFiles::~StagedFiles() {
 std::string StagedFiles::stage(const std::string& target) {
     const fs::path path(target);
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    if (!fs::is_directory(folder)) throw Error(fmt::format("{}: the output folder does not exist", target));
+    if (!fs::is_directory(folder))
+        throw Error(fmt::format("{}: the output folder does not exist", target));
     const std::string temporary =
-        (folder / fmt::format(".{}.{}-{}.tmp", path.filename().string(), getpid(), staged_.size())).string();
+        (folder / fmt::format(".{}.{}-{}.tmp", path.filename().string(), getpid(), staged_.size()))
+            .string();
     staged_.emplace_back(temporary, target);
     targets_.push_back(target);
     return temporary;

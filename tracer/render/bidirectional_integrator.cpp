@@ -36,14 +36,16 @@ lightmodel::BinnedSpectrum camera_density(const RaySourceSet& sources) {
 Rgb reflected(const Bsdf& bsdf, const Material&, const Photon& p, double cos_i) {
     return (1 / cos_i) * bsdf.eval(p.wi) * p.power;
 }
-Rgb reflected(const Bsdf& bsdf, const Material& material, const PhotonOf<SampledSpectrum>& p, double cos_i) {
+Rgb reflected(const Bsdf& bsdf, const Material& material, const PhotonOf<SampledSpectrum>& p,
+              double cos_i) {
     double diffuse_factor, glossy_factor;
     bsdf.smooth_factors(p.wi, diffuse_factor, glossy_factor);
     if (!(diffuse_factor > 0)) return {};
     SampledSpectrum f;
     for (int i = 0; i < kWavelengths; ++i) {
         const double nm = p.wavelengths.nm[i];
-        f.v[i] = diffuse_factor * material.spectra.diffuse(nm) + (glossy_factor > 0 ? glossy_factor * material.spectra.glossy(nm) : 0);
+        f.v[i] = diffuse_factor * material.spectra.diffuse(nm) +
+                 (glossy_factor > 0 ? glossy_factor * material.spectra.glossy(nm) : 0);
     }
     return to_rgb((1 / cos_i) * f * p.power, p.wavelengths);
 }
@@ -52,19 +54,24 @@ Rgb photon_rgb(const Photon& p) { return p.power; }
 Rgb photon_rgb(const PhotonOf<SampledSpectrum>& p) { return to_rgb(p.power, p.wavelengths); }
 
 WavelengthsFor<Rgb> wavelengths_of(const PhotonWavelengths<Rgb>&) { return {}; }
-const SampledWavelengths& wavelengths_of(const PhotonWavelengths<SampledSpectrum>& p) { return p.wavelengths; }
+const SampledWavelengths& wavelengths_of(const PhotonWavelengths<SampledSpectrum>& p) {
+    return p.wavelengths;
+}
 
 }  // namespace
 
 template <class Q>
-BidirectionalIntegratorOf<Q>::BidirectionalIntegratorOf(const RenderScene& scene, const RaySourceSet& sources)
+BidirectionalIntegratorOf<Q>::BidirectionalIntegratorOf(const RenderScene& scene,
+                                                        const RaySourceSet& sources)
     : scene_(scene), sources_(sources) {
-    if constexpr (std::is_same_v<Q, SampledSpectrum>) camera_wavelength_density_ = camera_density(sources);
+    if constexpr (std::is_same_v<Q, SampledSpectrum>)
+        camera_wavelength_density_ = camera_density(sources);
 }
 
 template <class Q>
 Q BidirectionalIntegratorOf<Q>::sample_sources(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
-                                               const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const {
+                                               const Wavelengths& wavelengths, Pcg32& rng,
+                                               uint64_t& rays) const {
     if (sources_.empty()) return {};
     double u_cell = rng.uniform();
     const size_t j = sources_.choose(u_cell);
@@ -75,31 +82,38 @@ Q BidirectionalIntegratorOf<Q>::sample_sources(const BsdfOf<Q>& bsdf, Vec3 point
     const Q f = bsdf.eval(ls->wi);
     if (is_black(f) || is_black(ls->Li)) return {};
     ++rays;
-    if (scene_.occluded(scene_.offset(point, normal, ls->wi), ls->wi, 0, ls->distance - scene_.epsilon())) return {};
+    if (scene_.occluded(scene_.offset(point, normal, ls->wi), ls->wi, 0,
+                        ls->distance - scene_.epsilon()))
+        return {};
     const double pdf_light = sources_.probability(j) * ls->pdf;
     const double weight = power_heuristic(pdf_light, bsdf.pdf(ls->wi));
     return (weight / pdf_light) * ls->Li * f;
 }
 
 template <class Q>
-Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, Vec3 ref,
-                                               const Wavelengths& wavelengths, uint64_t& rays) const {
+Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf,
+                                               Vec3 ref, const Wavelengths& wavelengths,
+                                               uint64_t& rays) const {
     SurfaceHit hit;
     ++rays;
-    const double t_block = scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit) ? hit.t : kInfinity;
+    const double t_block = scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit)
+                               ? hit.t
+                               : kInfinity;
     Q sum{};
     for (size_t j = 0; j < sources_.size(); ++j) {
         double t = 0;
         if (!sources_[j].intersect(origin, direction, t_block, t)) continue;
         const double pdf_light = sources_.probability(j) * sources_[j].pdf_Li(ref, direction);
-        sum += power_heuristic(bsdf_pdf, pdf_light) * sources_[j].radiance(origin, direction, wavelengths);
+        sum += power_heuristic(bsdf_pdf, pdf_light) *
+               sources_[j].radiance(origin, direction, wavelengths);
     }
     return sum;
 }
 
 template <class Q>
-CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng,
-                                                       uint64_t& rays, std::vector<Point>& visible) const {
+CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 direction, uint32_t pixel,
+                                                       Pcg32& rng, uint64_t& rays,
+                                                       std::vector<Point>& visible) const {
     const Wavelengths wavelengths = sample_wavelengths<Q>(camera_wavelength_density_, rng);
     Q direct_visibility{}, primary{};
     Q beta = constant_value<Q>(1);
@@ -119,20 +133,24 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
         const Vec3 wo = -direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         if (bsdf.has_smooth_lobes()) {
-            primary += beta * sample_sources(bsdf, hit.point, bsdf.facing_normal(), wavelengths, rng, rays);
+            primary += beta * sample_sources(bsdf, hit.point, bsdf.facing_normal(), wavelengths,
+                                             rng, rays);
             Point vp;
-            vp.point = hit.point, vp.normal = hit.normal, vp.shading_normal = hit.shading_normal, vp.wo = wo;
+            vp.point = hit.point, vp.normal = hit.normal, vp.shading_normal = hit.shading_normal,
+            vp.wo = wo;
             vp.object = hit.object, vp.beta = beta, vp.pixel = pixel;
             if constexpr (std::is_same_v<Q, SampledSpectrum>) vp.wavelengths = wavelengths;
             visible.push_back(vp);
         }
         BsdfSampleOf<Q> s;
-        const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
+        const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
+                     u2 = rng.uniform_float();
         if (!bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight)) break;
         const Vec3 next_origin = scene_.offset(hit.point, hit.normal, s.wi);
         if (!s.delta) {
             // The smooth lobe ends the camera path: what lies beyond is the photons' part.
-            primary += beta * s.weight * bodies_crossed(next_origin, s.wi, s.pdf, hit.point, wavelengths, rays);
+            primary += beta * s.weight *
+                       bodies_crossed(next_origin, s.wi, s.pdf, hit.point, wavelengths, rays);
             break;
         }
         beta *= s.weight;
@@ -149,20 +167,23 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
 }
 
 template <class Q>
-Rgb BidirectionalIntegratorOf<Q>::receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
+Rgb BidirectionalIntegratorOf<Q>::receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng,
+                                                   uint64_t& rays) const {
     return white_lambertian_irradiance<Q>(
         normal, camera_wavelength_density_, rng,
         [&](const BsdfOf<Q>& bsdf, const Wavelengths& wavelengths) {
             return sample_sources(bsdf, point, normal, wavelengths, rng, rays);
         },
         [&](const BsdfSampleOf<Q>& s, const Wavelengths& wavelengths) {
-            return s.weight * bodies_crossed(scene_.offset(point, normal, s.wi), s.wi, s.pdf, point, wavelengths, rays);
+            return s.weight * bodies_crossed(scene_.offset(point, normal, s.wi), s.wi, s.pdf, point,
+                                             wavelengths, rays);
         });
 }
 
 template <class Q>
-std::vector<typename BidirectionalIntegratorOf<Q>::Photon> BidirectionalIntegratorOf<Q>::trace_photons(
-    uint64_t first, uint64_t count, uint64_t emitted, uint64_t seed, uint64_t& rays) const {
+std::vector<typename BidirectionalIntegratorOf<Q>::Photon>
+BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint64_t emitted,
+                                            uint64_t seed, uint64_t& rays) const {
     std::vector<Photon> photons;
     if (sources_.empty()) return photons;
     const bool keep_direct = sources_.naive();
@@ -189,14 +210,17 @@ std::vector<typename BidirectionalIntegratorOf<Q>::Photon> BidirectionalIntegrat
             SurfaceHit hit;
             ++rays;
             if (!scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit)) break;
-            const BsdfOf<Q> bsdf(scene_.material(hit.object), hit.normal, hit.shading_normal, -direction, wavelengths);
+            const BsdfOf<Q> bsdf(scene_.material(hit.object), hit.normal, hit.shading_normal,
+                                 -direction, wavelengths);
             if (bsdf.has_smooth_lobes() && (scattered || keep_direct)) {
-                photon.position = hit.point, photon.wi = -direction, photon.normal = bsdf.facing_normal();
+                photon.position = hit.point, photon.wi = -direction,
+                photon.normal = bsdf.facing_normal();
                 photon.power = power, photon.direct = !scattered;
                 photons.push_back(photon);
             }
             BsdfSampleOf<Q> s;
-            const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
+            const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
+                         u2 = rng.uniform_float();
             if (!bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight)) break;
             const Q next = power * s.weight;
             // Roulette keeps the surviving photons' power near the emitted one.
@@ -212,7 +236,8 @@ std::vector<typename BidirectionalIntegratorOf<Q>::Photon> BidirectionalIntegrat
 }
 
 template <class Q>
-void BidirectionalIntegratorOf<Q>::gather(const Point& vp, const Grid& grid, Rgb& direct, Rgb& scattered) const {
+void BidirectionalIntegratorOf<Q>::gather(const Point& vp, const Grid& grid, Rgb& direct,
+                                          Rgb& scattered) const {
     const Material& material = scene_.material(vp.object);
     const Bsdf bsdf(material, vp.normal, vp.shading_normal, vp.wo);
     const Vec3 n = bsdf.facing_normal();
@@ -232,8 +257,8 @@ void BidirectionalIntegratorOf<Q>::gather(const Point& vp, const Grid& grid, Rgb
 }
 
 template <class Q>
-void BidirectionalIntegratorOf<Q>::gather_irradiance(Vec3 point, Vec3 normal, const Grid& grid, Rgb& direct,
-                                                     Rgb& scattered) const {
+void BidirectionalIntegratorOf<Q>::gather_irradiance(Vec3 point, Vec3 normal, const Grid& grid,
+                                                     Rgb& direct, Rgb& scattered) const {
     Rgb sum_direct, sum_scattered;
     grid.for_each_near(point, [&](const Photon& p) {
         if (dot(p.normal, normal) < kSameSurfaceCos || dot(p.wi, normal) <= 0) return;

@@ -57,16 +57,16 @@ public:
     BidirectionalIntegratorOf(const RenderScene& scene, const RaySourceSet& sources);
 
     // Camera pass of one camera ray; visible points are appended to `visible` with `pixel`.
-    CameraSample camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng, uint64_t& rays,
-                             std::vector<Point>& visible) const;
+    CameraSample camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng,
+                             uint64_t& rays, std::vector<Point>& visible) const;
     // Primary irradiance of the sources at a virtual receiver point (pi x the radiance a white
     // Lambertian surface there would reflect), from the side `normal` points into.
     Rgb receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
 
     // Photons [first, first + count) of a pass of `emitted` photons; each photon i draws from
     // stream i of `seed`, so the result does not depend on how the range is split.
-    std::vector<Photon> trace_photons(uint64_t first, uint64_t count, uint64_t emitted, uint64_t seed,
-                                      uint64_t& rays) const;
+    std::vector<Photon> trace_photons(uint64_t first, uint64_t count, uint64_t emitted,
+                                      uint64_t seed, uint64_t& rays) const;
 
     // Radiance the photons near a visible point reflect toward its wo (density estimation over
     // a disk of the grid's radius), split into photons that came straight from a source and
@@ -77,18 +77,19 @@ public:
     void gather(const Point& vp, const Grid& grid, Rgb& direct, Rgb& scattered) const;
     // Irradiance at a receiver point from photons that landed on a surface there facing the
     // same way, split the same way.
-    void gather_irradiance(Vec3 point, Vec3 normal, const Grid& grid, Rgb& direct, Rgb& scattered) const;
+    void gather_irradiance(Vec3 point, Vec3 normal, const Grid& grid, Rgb& direct,
+                           Rgb& scattered) const;
 
     static constexpr int kMaxDepth = 256;
     static constexpr int kRouletteDepth = 3;
 
 private:
-    Q sample_sources(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths, Pcg32& rng,
-                     uint64_t& rays) const;
+    Q sample_sources(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
+                     Pcg32& rng, uint64_t& rays) const;
     // Radiance of every body a BSDF-sampled ray meets before the first surface, each weighted
     // against light sampling of its source.
-    Q bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, Vec3 ref, const Wavelengths& wavelengths,
-                     uint64_t& rays) const;
+    Q bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, Vec3 ref,
+                     const Wavelengths& wavelengths, uint64_t& rays) const;
 
     const RenderScene& scene_;
     const RaySourceSet& sources_;
@@ -100,7 +101,8 @@ using BidirectionalIntegrator = BidirectionalIntegratorOf<Rgb>;
 // camera pass, then a photon pass and density estimation at the pass's visible points, the
 // gather radius shrinking from pass to pass; lights, emitting surfaces and the background by
 // the path tracer alongside. RGB or spectral transport.
-std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene, const RenderSettings& settings,
+std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene,
+                                                          const RenderSettings& settings,
                                                           const RenderResult& start);
 // Its light components: direct visibility of the sources' bodies, primary light (straight
 // from a source to the first smooth surface), secondary light (scattered before).

@@ -24,7 +24,8 @@ namespace {
 constexpr double kAlpha = 2.0 / 3.0;
 constexpr uint64_t kPhotonBlock = 4096;
 constexpr uint64_t kMinimumPhotons = 65536;
-constexpr uint64_t kPhotonSeedSalt = 0x6A09E667F3BCC909ULL;  // photon streams apart from camera streams
+constexpr uint64_t kPhotonSeedSalt =
+    0x6A09E667F3BCC909ULL;  // photon streams apart from camera streams
 
 // Lights, emitting surfaces and the background are the path tracer's (in the transport Q of the
 // pass); skip it when there are none.
@@ -39,7 +40,8 @@ bool has_ordinary_light(const RenderScene& scene) {
 enum Component { kDirectVisibility, kPrimary, kSecondary, kOrdinary };
 
 template <class Point>
-double default_radius(const std::vector<std::vector<Point>>& points, const std::vector<ReceiverMap>& receivers) {
+double default_radius(const std::vector<std::vector<Point>>& points,
+                      const std::vector<ReceiverMap>& receivers) {
     // The extent of the middle 90% of the points along each axis: a floor plane seen to its
     // horizon must not make the radius (and so every gather) as wide as the floor.
     std::vector<double> coordinates[3];
@@ -73,7 +75,9 @@ int camera_samples_per_pass(uint64_t photons_per_pass, size_t camera_points) {
 }
 
 // The radius after `passes_done` passes, the last of them gathered with `radius`.
-double shrunk_radius(double radius, int passes_done) { return radius * std::sqrt((passes_done + kAlpha) / (passes_done + 1)); }
+double shrunk_radius(double radius, int passes_done) {
+    return radius * std::sqrt((passes_done + kAlpha) / (passes_done + 1));
+}
 
 template <class Q>
 class BidirectionalPasses : public Integrator {
@@ -82,23 +86,30 @@ public:
     using Photon = PhotonOf<Q>;
     using Grid = PhotonGridOf<Photon>;
 
-    BidirectionalPasses(const RenderScene& scene, const RenderSettings& settings, const RenderResult& start);
+    BidirectionalPasses(const RenderScene& scene, const RenderSettings& settings,
+                        const RenderResult& start);
     int samples_per_pass() const override { return samples_; }
     void begin_pass(int, const SamplePoints& points) override {
         visible_.assign(size_t(points.tiles()), {});
         receivers_ = points.receivers;
     }
-    void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng, uint64_t& rays) const override;
-    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng, uint64_t& rays) const override;
-    void end_pass(int pass, const SamplePoints& points, PassValues& values, std::atomic<uint64_t>& rays,
-                  StopFlag stop) override;
+    void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+                       uint64_t& rays) const override;
+    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+                         uint64_t& rays) const override;
+    void end_pass(int pass, const SamplePoints& points, PassValues& values,
+                  std::atomic<uint64_t>& rays, StopFlag stop) override;
     void pass_completed(RenderResult& result) override;
-    bool first_pass_sets_outcome() const override { return !sources_.empty() && !(base_radius_ > 0); }
+    bool first_pass_sets_outcome() const override {
+        return !sources_.empty() && !(base_radius_ > 0);
+    }
     std::vector<double> first_pass_outcome() override {
         if (!(base_radius_ > 0)) base_radius_ = default_radius(visible_, *receivers_);
         return {base_radius_};
     }
-    void set_first_pass_outcome(const std::vector<double>& outcome) override { base_radius_ = outcome.at(0); }
+    void set_first_pass_outcome(const std::vector<double>& outcome) override {
+        base_radius_ = outcome.at(0);
+    }
 
 private:
     // The gather radius of a pass: shrinking pass after pass from that of pass base_pass_.
@@ -122,7 +133,8 @@ private:
 };
 
 template <class Q>
-BidirectionalPasses<Q>::BidirectionalPasses(const RenderScene& scene, const RenderSettings& settings,
+BidirectionalPasses<Q>::BidirectionalPasses(const RenderScene& scene,
+                                            const RenderSettings& settings,
                                             const RenderResult& start)
     : sources_(scene.description(), settings.naive_sources),
       integrator_(scene, sources_),
@@ -130,7 +142,8 @@ BidirectionalPasses<Q>::BidirectionalPasses(const RenderScene& scene, const Rend
       ordinary_(has_ordinary_light(scene)),
       seed_(settings.seed) {
     size_t points = settings.render_image ? size_t(settings.width) * settings.height : 0;
-    for (const IlluminanceReceiver& r : scene.description().receivers) points += size_t(r.nx) * r.ny;
+    for (const IlluminanceReceiver& r : scene.description().receivers)
+        points += size_t(r.nx) * r.ny;
     photons_per_pass_ = settings.photons_per_pass > 0 ? uint64_t(settings.photons_per_pass)
                                                       : std::max<uint64_t>(kMinimumPhotons, points);
     // Camera work balanced against photon work: a small image or a receiver-only render takes
@@ -139,7 +152,8 @@ BidirectionalPasses<Q>::BidirectionalPasses(const RenderScene& scene, const Rend
     samples_ = camera_samples_per_pass(photons_per_pass_, points);
     // A continued render goes on from the radius its last pass used.
     base_pass_ = start.passes;
-    base_radius_ = start.passes > 0 ? shrunk_radius(start.photon_radius, start.passes) : settings.photon_radius;
+    base_radius_ = start.passes > 0 ? shrunk_radius(start.photon_radius, start.passes)
+                                    : settings.photon_radius;
 }
 
 template <class Q>
@@ -154,17 +168,18 @@ void BidirectionalPasses<Q>::camera_sample(const CameraRay& ray, const SampleSin
                                            uint64_t& rays) const {
     std::vector<Point>& visible = visible_[size_t(sink.tile)];
     const size_t first_point = visible.size();
-    const CameraSample s =
-        integrator_.camera_path(ray.origin, ray.direction, uint32_t(sink.index), rng, rays, visible);
-    for (size_t v = first_point; v < visible.size(); ++v) visible[v].beta = sink.weight * visible[v].beta;
+    const CameraSample s = integrator_.camera_path(ray.origin, ray.direction, uint32_t(sink.index),
+                                                   rng, rays, visible);
+    for (size_t v = first_point; v < visible.size(); ++v)
+        visible[v].beta = sink.weight * visible[v].beta;
     sink.add(kDirectVisibility, s.direct_visibility);
     sink.add(kPrimary, s.primary);
     if (ordinary_) sink.add(kOrdinary, path_.radiance(ray.origin, ray.direction, rng, rays));
 }
 
 template <class Q>
-void BidirectionalPasses<Q>::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
-                                             uint64_t& rays) const {
+void BidirectionalPasses<Q>::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink,
+                                             Pcg32& rng, uint64_t& rays) const {
     sink.add(kPrimary, integrator_.receiver_primary(point, normal, rng, rays));
     if (ordinary_) sink.add(kOrdinary, path_.irradiance(point, normal, rng, rays));
 }
@@ -194,8 +209,10 @@ std::vector<typename BidirectionalPasses<Q>::Photon> BidirectionalPasses<Q>::tra
     tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
         if (stopped(stop)) return;
         uint64_t counted = 0;
-        const uint64_t first = b * kPhotonBlock, count = std::min(kPhotonBlock, photons_per_pass_ - first);
-        traced[b] = integrator_.trace_photons(first, count, photons_per_pass_, photon_seed, counted);
+        const uint64_t first = b * kPhotonBlock,
+                       count = std::min(kPhotonBlock, photons_per_pass_ - first);
+        traced[b] =
+            integrator_.trace_photons(first, count, photons_per_pass_, photon_seed, counted);
         rays += counted;
     });
     std::vector<Photon> photons;
@@ -205,7 +222,8 @@ std::vector<typename BidirectionalPasses<Q>::Photon> BidirectionalPasses<Q>::tra
 
 // Density estimation at the visible points and receiver cells.
 template <class Q>
-void BidirectionalPasses<Q>::gather(const SamplePoints& points, const Grid& grid, PassValues& values) const {
+void BidirectionalPasses<Q>::gather(const SamplePoints& points, const Grid& grid,
+                                    PassValues& values) const {
     std::vector<Rgb>& primary = values.components[kPrimary];
     std::vector<Rgb>& secondary = values.components[kSecondary];
     tbb::parallel_for(size_t(0), visible_.size(), [&](size_t t) {
@@ -223,7 +241,8 @@ void BidirectionalPasses<Q>::gather(const SamplePoints& points, const Grid& grid
         tbb::parallel_for(0, nx * map.receiver.ny, [&](int k) {
             const size_t c = points.pixels() + points.receiver_first[r] + size_t(k);
             Rgb direct, scattered;
-            integrator_.gather_irradiance(map.cell_centre(k % nx, k / nx), normal, grid, direct, scattered);
+            integrator_.gather_irradiance(map.cell_centre(k % nx, k / nx), normal, grid, direct,
+                                          scattered);
             primary[c] += direct;
             secondary[c] += scattered;
         });
@@ -245,9 +264,11 @@ const std::vector<std::string>& bidirectional_layers() {
     return names;
 }
 
-std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene, const RenderSettings& settings,
+std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene,
+                                                          const RenderSettings& settings,
                                                           const RenderResult& start) {
-    if (spectral_transport(scene, settings)) return std::make_unique<BidirectionalPasses<SampledSpectrum>>(scene, settings, start);
+    if (spectral_transport(scene, settings))
+        return std::make_unique<BidirectionalPasses<SampledSpectrum>>(scene, settings, start);
     return std::make_unique<BidirectionalPasses<Rgb>>(scene, settings, start);
 }
 

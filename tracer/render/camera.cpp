@@ -29,7 +29,8 @@ const char* projection_name(CameraProjection projection) {
 void check_camera_renderable(const Camera& camera) {
     if (camera.projection != CameraProjection::perspective)
         throw Error(fmt::format("not supported: {} camera (only perspective) at {}",
-                                projection_name(camera.projection), camera.projection_location.str()));
+                                projection_name(camera.projection),
+                                camera.projection_location.str()));
     if (camera.focal_blur.aperture != 0)
         throw Error(fmt::format("not supported: focal blur (camera aperture {}) at {}",
                                 camera.focal_blur.aperture, camera.focal_blur_location.str()));

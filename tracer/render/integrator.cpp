@@ -13,7 +13,8 @@ namespace {
 struct IntegratorEntry {
     const char* name;
     std::vector<std::string> layers;
-    std::unique_ptr<Integrator> (*make)(const RenderScene&, const RenderSettings&, const RenderResult&);
+    std::unique_ptr<Integrator> (*make)(const RenderScene&, const RenderSettings&,
+                                        const RenderResult&);
 };
 
 const std::vector<IntegratorEntry>& integrators() {
@@ -32,7 +33,8 @@ const IntegratorEntry& integrator_named(const std::string& name) {
 
 }  // namespace
 
-SamplePoints::SamplePoints(const RenderSettings& settings, const std::vector<ReceiverMap>& receivers)
+SamplePoints::SamplePoints(const RenderSettings& settings,
+                           const std::vector<ReceiverMap>& receivers)
     : width(settings.render_image ? settings.width : 0),
       height(settings.render_image ? settings.height : 0),
       tile_size(settings.tile_size),
@@ -49,7 +51,8 @@ size_t SamplePoints::cells() const {
     return receiver_first.back() + size_t(last.nx()) * last.ny();
 }
 
-PassValues::PassValues(int components, size_t points) : components(size_t(components), std::vector<Rgb>(points)) {}
+PassValues::PassValues(int components, size_t points)
+    : components(size_t(components), std::vector<Rgb>(points)) {}
 
 Rgb PassValues::total(size_t i) const {
     Rgb sum = components[0][i];
@@ -57,12 +60,15 @@ Rgb PassValues::total(size_t i) const {
     return sum;
 }
 
-std::unique_ptr<Integrator> make_integrator(const RenderScene& scene, const RenderSettings& settings,
+std::unique_ptr<Integrator> make_integrator(const RenderScene& scene,
+                                            const RenderSettings& settings,
                                             const RenderResult& start) {
     return integrator_named(scene.description().global.integrator).make(scene, settings, start);
 }
 
-std::vector<std::string> integrator_layers(const std::string& name) { return integrator_named(name).layers; }
+std::vector<std::string> integrator_layers(const std::string& name) {
+    return integrator_named(name).layers;
+}
 
 bool spectral_transport(const RenderScene& scene, const RenderSettings& settings) {
     return settings.spectral || scene.description().global.spectral;

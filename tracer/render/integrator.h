@@ -58,7 +58,9 @@ struct SampleSink {
     size_t index;
     int tile;
     double weight;
-    void add(int component, Rgb value) const { values.components[size_t(component)][index] += weight * value; }
+    void add(int component, Rgb value) const {
+        values.components[size_t(component)][index] += weight * value;
+    }
 };
 
 // Once true, the pass under way is abandoned (RenderControl::stop).
@@ -104,7 +106,8 @@ public:
 
 // The integrators by the name global_settings { integrator NAME } gives: "path" (the
 // default) or "bidirectional". `start`: the state a continued render goes on from.
-std::unique_ptr<Integrator> make_integrator(const RenderScene& scene, const RenderSettings& settings,
+std::unique_ptr<Integrator> make_integrator(const RenderScene& scene,
+                                            const RenderSettings& settings,
                                             const RenderResult& start);
 // The light components the integrator of that name keeps apart, each written out as a layer
 // (its own image and receiver maps); known before the scene is built (checkpoints).

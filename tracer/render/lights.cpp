@@ -11,7 +11,6 @@
 
 namespace rayset::tracer {
 
-
 namespace {
 
 constexpr double kDegree = kPi / 180;
@@ -33,7 +32,8 @@ double effective_solid_angle(const PointEmitter& light) {
     for (int i = 0; i <= n; ++i) {
         const double mu = double(i) / n;
         const double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
-        sum += w * light.spot_factor(mu * light.axis + std::sqrt(1 - mu * mu) * Frame(light.axis).s);
+        sum +=
+            w * light.spot_factor(mu * light.axis + std::sqrt(1 - mu * mu) * Frame(light.axis).s);
     }
     return 2 * kPi * sum / (3.0 * n);
 }
@@ -49,7 +49,8 @@ double PointEmitter::spot_factor(Vec3 direction) const {
     return factor;
 }
 
-bool RectEmitter::crossed(Vec3 origin, Vec3 direction, double t_max, double& t, double& cos_light) const {
+bool RectEmitter::crossed(Vec3 origin, Vec3 direction, double t_max, double& t,
+                          double& cos_light) const {
     const double denom = dot(direction, normal);
     if (denom == 0 || (!two_sided && denom > 0)) return false;
     t = dot(centre - origin, normal) / denom;
@@ -64,16 +65,20 @@ LightSet::LightSet(const std::vector<LightSource>& lights, const SceneUnits& uni
     std::vector<double> point_powers, rect_powers;
     for (const LightSource& source : lights) {
         const std::string where = source.location.str();
-        if (source.shadowless) throw Error(fmt::format("not supported: shadowless light_source (not physical) at {}", where));
+        if (source.shadowless)
+            throw Error(
+                fmt::format("not supported: shadowless light_source (not physical) at {}", where));
         if (source.area_light && (source.circular || source.orient))
-            throw Error(fmt::format("not supported: circular/orient area_light (only rectangles) at {}", where));
+            throw Error(fmt::format(
+                "not supported: circular/orient area_light (only rectangles) at {}", where));
         Rgb intensity = source.colour;
         // POV-Ray's fade 2 / (1 + (d/d0)^2) tends to 2 d0^2 / d^2: read as inverse-square with the
         // same far-field value. Other fade powers have no physical reading.
         if (source.fade_distance > 0 && source.fade_power > 0) {
             if (source.fade_power != 2)
-                throw Error(fmt::format("not supported: fade_power {} (only 2, read as the inverse-square law) at {}",
-                                        source.fade_power, where));
+                throw Error(fmt::format(
+                    "not supported: fade_power {} (only 2, read as the inverse-square law) at {}",
+                    source.fade_power, where));
             const double d0 = source.fade_distance * units.metres_per_unit;
             intensity = (2 * d0 * d0) * intensity;
         }
@@ -84,7 +89,8 @@ LightSet::LightSet(const std::vector<LightSource>& lights, const SceneUnits& uni
         point.spot = source.spotlight;
         if (point.spot) {
             const Vec3 axis = source.point_at - source.position;
-            if (length(axis) == 0) throw Error(fmt::format("spotlight point_at equals its location at {}", where));
+            if (length(axis) == 0)
+                throw Error(fmt::format("spotlight point_at equals its location at {}", where));
             point.axis = normalized(axis);
             point.cos_radius = std::cos(source.radius * kDegree);
             point.cos_falloff = std::cos(source.falloff * kDegree);
@@ -122,8 +128,10 @@ LightSet::LightSet(const std::vector<LightSource>& lights, const SceneUnits& uni
         for (double a : {-0.5, 0.5})
             for (double b : {-0.5, 0.5}) {
                 const Vec3 c = r.centre + a * r.edge1 + b * r.edge2;
-                rects_low_ = {std::min(rects_low_.x, c.x), std::min(rects_low_.y, c.y), std::min(rects_low_.z, c.z)};
-                rects_high_ = {std::max(rects_high_.x, c.x), std::max(rects_high_.y, c.y), std::max(rects_high_.z, c.z)};
+                rects_low_ = {std::min(rects_low_.x, c.x), std::min(rects_low_.y, c.y),
+                              std::min(rects_low_.z, c.z)};
+                rects_high_ = {std::max(rects_high_.x, c.x), std::max(rects_high_.y, c.y),
+                               std::max(rects_high_.z, c.z)};
             }
     // Widened once here: the box test runs for every ray the path tracer casts.
     for (int k = 0; k < 3; ++k) {
@@ -135,7 +143,8 @@ LightSet::LightSet(const std::vector<LightSource>& lights, const SceneUnits& uni
     for (double p : point_powers) cdf_.push_back(total_power_ += p);
     for (double p : rect_powers) cdf_.push_back(total_power_ += p);
     for (size_t i = 0; i < cdf_.size(); ++i)
-        probability_.push_back(total_power_ > 0 ? (cdf_[i] - (i ? cdf_[i - 1] : 0)) / total_power_ : 0);
+        probability_.push_back(total_power_ > 0 ? (cdf_[i] - (i ? cdf_[i - 1] : 0)) / total_power_
+                                                : 0);
 }
 
 size_t LightSet::choose(double u_select) const {
@@ -190,7 +199,8 @@ namespace {
 // Slab test of a ray against a box (already widened: the box of coplanar rectangles is flat).
 bool crosses_box(Vec3 origin, Vec3 direction, double t_max, Vec3 low, Vec3 high) {
     double t0 = 0, t1 = t_max;
-    const double o[3] = {origin.x, origin.y, origin.z}, d[3] = {direction.x, direction.y, direction.z};
+    const double o[3] = {origin.x, origin.y, origin.z},
+                 d[3] = {direction.x, direction.y, direction.z};
     const double lo[3] = {low.x, low.y, low.z}, hi[3] = {high.x, high.y, high.z};
     // A ray outside a slab and heading away from it misses the box: decided by signs alone,
     // before any division. For a unit direction the slab test below says the same (both its
@@ -216,15 +226,18 @@ bool crosses_box(Vec3 origin, Vec3 direction, double t_max, Vec3 low, Vec3 high)
 }  // namespace
 
 template <class Q>
-Q LightSet::crossed(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf, const WavelengthsFor<Q>& wavelengths) const {
+Q LightSet::crossed(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
+                    const WavelengthsFor<Q>& wavelengths) const {
     Q sum{};
-    if (rects_.empty() || !crosses_box(origin, direction, t_max, rects_low_, rects_high_)) return sum;
+    if (rects_.empty() || !crosses_box(origin, direction, t_max, rects_low_, rects_high_))
+        return sum;
     for (size_t k = 0; k < rects_.size(); ++k) {
         double t = 0, cos_light = 0;
         if (!rects_[k].crossed(origin, direction, t_max, t, cos_light)) continue;
         double weight = 1;
         if (bsdf_pdf >= 0) {
-            const double light_pdf = selection_probability(points_.size() + k) * t * t / (rects_[k].area * cos_light);
+            const double light_pdf =
+                selection_probability(points_.size() + k) * t * t / (rects_[k].area * cos_light);
             weight = power_heuristic(bsdf_pdf, light_pdf);
         }
         sum += weight * emitted(rects_[k].radiance, rects_[k].radiance_spectrum, wavelengths);
@@ -232,11 +245,13 @@ Q LightSet::crossed(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf, 
     return sum;
 }
 
-Rgb LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf, NoWavelengths w) const {
+Rgb LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
+                               NoWavelengths w) const {
     return crossed<Rgb>(origin, direction, t_max, bsdf_pdf, w);
 }
 
-SampledSpectrum LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
+SampledSpectrum LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max,
+                                           double bsdf_pdf,
                                            const SampledWavelengths& wavelengths) const {
     return crossed<SampledSpectrum>(origin, direction, t_max, bsdf_pdf, wavelengths);
 }

@@ -13,10 +13,10 @@ namespace rayset::tracer {
 
 struct PointEmitter {
     Vec3 position;
-    Rgb intensity;  // W/sr along the axis (spot) or in every direction
+    Rgb intensity;                          // W/sr along the axis (spot) or in every direction
     IlluminantSpectrum intensity_spectrum;  // the same for spectral transport
     bool spot = false;
-    Vec3 axis;      // unit, toward point_at
+    Vec3 axis;  // unit, toward point_at
     double cos_radius = 0, cos_falloff = 0, tightness = 0;
     // POV-Ray's spotlight factor (Attenuate_Light) for a unit direction leaving the light.
     double spot_factor(Vec3 direction) const;
@@ -24,10 +24,10 @@ struct PointEmitter {
 
 struct RectEmitter {
     Vec3 centre, edge1, edge2;
-    Vec3 normal;      // unit; the emitting side (both sides when two_sided)
+    Vec3 normal;  // unit; the emitting side (both sides when two_sided)
     bool two_sided = false;
     double area = 0;
-    Rgb radiance;     // renderer units, W/(unit^2 sr)
+    Rgb radiance;                          // renderer units, W/(unit^2 sr)
     IlluminantSpectrum radiance_spectrum;  // the same for spectral transport
     Vec3 dual1, dual2;  // dot(q, dual_k) is q's coordinate along edge_k, for q in the plane
     // Distance along (origin, unit direction) to the rectangle in (0, t_max), if crossed from an
@@ -36,11 +36,11 @@ struct RectEmitter {
 };
 
 struct LightSample {
-    Vec3 direction;       // unit, from the shaded point toward the light
+    Vec3 direction;  // unit, from the shaded point toward the light
     double distance = 0;
-    Rgb radiance;         // arriving radiance (area) or intensity / d^2 (point): divide by pdf
-    double pdf = 0;       // solid-angle pdf including the choice of the light; 1 for points
-    bool delta = false;   // point emitter: no MIS
+    Rgb radiance;        // arriving radiance (area) or intensity / d^2 (point): divide by pdf
+    double pdf = 0;      // solid-angle pdf including the choice of the light; 1 for points
+    bool delta = false;  // point emitter: no MIS
     // For spectral transport: the radiance is spectrum_factor x the light's spectrum.
     const IlluminantSpectrum* spectrum = nullptr;
     double spectrum_factor = 0;
@@ -66,13 +66,15 @@ public:
     // against `bsdf_pdf` (pass bsdf_pdf < 0 for rays no light sampling could have made:
     // camera rays and delta bounces, weight 1).
     // Spectral transport passes the path's wavelengths.
-    Rgb crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf, NoWavelengths = {}) const;
+    Rgb crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
+                         NoWavelengths = {}) const;
     SampledSpectrum crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
                                      const SampledWavelengths& wavelengths) const;
 
 private:
     template <class Q>
-    Q crossed(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf, const WavelengthsFor<Q>& wavelengths) const;
+    Q crossed(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
+              const WavelengthsFor<Q>& wavelengths) const;
     double selection_probability(size_t light_index) const { return probability_[light_index]; }
     size_t choose(double u_select) const;  // index into cdf_, proportional to power
 
@@ -80,7 +82,8 @@ private:
     std::vector<RectEmitter> rects_;
     std::vector<double> cdf_;          // over points_ then rects_
     std::vector<double> probability_;  // of choosing each light
-    Vec3 rects_low_, rects_high_;  // box around every rectangle, widened a little: most rays miss it at once
+    Vec3 rects_low_,
+        rects_high_;  // box around every rectangle, widened a little: most rays miss it at once
     double total_power_ = 0;
 };
 

@@ -9,7 +9,6 @@
 
 namespace rayset::tracer {
 
-
 namespace {
 
 Rgb clamp01(Rgb a) {
@@ -33,7 +32,8 @@ void conserve_energy(Material& m) {
     fix(m.diffuse.red, m.glossy.red, m.mirror_max.red, m.transmission.red);
     fix(m.diffuse.green, m.glossy.green, m.mirror_max.green, m.transmission.green);
     fix(m.diffuse.blue, m.glossy.blue, m.mirror_max.blue, m.transmission.blue);
-    m.mirror_min = Rgb{std::min(m.mirror_min.red, m.mirror_max.red), std::min(m.mirror_min.green, m.mirror_max.green),
+    m.mirror_min = Rgb{std::min(m.mirror_min.red, m.mirror_max.red),
+                       std::min(m.mirror_min.green, m.mirror_max.green),
                        std::min(m.mirror_min.blue, m.mirror_max.blue)};
 }
 
@@ -114,7 +114,8 @@ Material material_from_pov(const ObjectInstance& object, double emission_scale) 
     // POV-Ray's `specular` is a Blinn highlight of exponent 1/roughness; a Phong lobe about the
     // mirror direction with a quarter of that exponent has nearly the same width.
     double amount = 0, exponent = 0;
-    if (f.specular > 0) amount += f.specular, exponent = std::max(exponent, 0.25 / std::max(f.roughness, 1e-6));
+    if (f.specular > 0)
+        amount += f.specular, exponent = std::max(exponent, 0.25 / std::max(f.roughness, 1e-6));
     if (f.phong > 0) amount += f.phong, exponent = std::max(exponent, f.phong_size);
     const Rgb white{1, 1, 1};
     m.glossy = amount * ((1 - f.metallic) * white + f.metallic * pigment);
@@ -127,8 +128,9 @@ Material material_from_pov(const ObjectInstance& object, double emission_scale) 
     m.emission = emission_scale * (f.emission * pigment);
     m.emission_spectrum = IlluminantSpectrum(m.emission);
     conserve_energy(m);
-    m.spectra = {upsample_reflectance(m.diffuse), upsample_reflectance(m.glossy), upsample_reflectance(m.mirror_min),
-                 upsample_reflectance(m.mirror_max), upsample_reflectance(m.transmission)};
+    m.spectra = {upsample_reflectance(m.diffuse), upsample_reflectance(m.glossy),
+                 upsample_reflectance(m.mirror_min), upsample_reflectance(m.mirror_max),
+                 upsample_reflectance(m.transmission)};
     return m;
 }
 
@@ -143,8 +145,9 @@ LobeColours<SampledSpectrum> lobe_colours(const Material& m, const SampledWavele
         for (int i = 0; i < kWavelengths; ++i) s.v[i] = spectrum(w.nm[i]);
         return s;
     };
-    return {at(m.diffuse, m.spectra.diffuse), at(m.glossy, m.spectra.glossy), at(m.mirror_min, m.spectra.mirror_min),
-            at(m.mirror_max, m.spectra.mirror_max), at(m.transmission, m.spectra.transmission)};
+    return {at(m.diffuse, m.spectra.diffuse), at(m.glossy, m.spectra.glossy),
+            at(m.mirror_min, m.spectra.mirror_min), at(m.mirror_max, m.spectra.mirror_max),
+            at(m.transmission, m.spectra.transmission)};
 }
 
 double fresnel_dielectric(double cos_i, double eta) {
@@ -157,7 +160,8 @@ double fresnel_dielectric(double cos_i, double eta) {
 }
 
 template <class Q>
-BsdfOf<Q>::BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo, const WavelengthsFor<Q>& wavelengths)
+BsdfOf<Q>::BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo,
+                  const WavelengthsFor<Q>& wavelengths)
     : m_(material), c_(lobe_colours(material, wavelengths)), wo_(wo) {
     entering_ = dot(wo, normal) >= 0;
     n_ = entering_ ? normal : -normal;
@@ -166,19 +170,22 @@ BsdfOf<Q>::BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Ve
     // Lobes are picked in proportion to their average albedo; the channel sums give the same
     // ratios with one division instead of eight (this runs at every hit).
     auto sum = [](Rgb a) { return a.red + a.green + a.blue; };
-    const double d = sum(m_.diffuse), g = sum(m_.glossy), r = is_black(m_.mirror_max) ? 0 : sum(mirror_weight_rgb()),
+    const double d = sum(m_.diffuse), g = sum(m_.glossy),
+                 r = is_black(m_.mirror_max) ? 0 : sum(mirror_weight_rgb()),
                  t = sum(m_.transmission);
     const double total = d + g + r + t;
     if (total > 0) {
         const double inverse = 1 / total;
-        p_diffuse_ = d * inverse, p_glossy_ = g * inverse, p_mirror_ = r * inverse, p_dielectric_ = t * inverse;
+        p_diffuse_ = d * inverse, p_glossy_ = g * inverse, p_mirror_ = r * inverse,
+        p_dielectric_ = t * inverse;
     }
 }
 
 template <class Q>
 double BsdfOf<Q>::mirror_fraction() const {
     const double c = std::max(0.0, dot(wo_, n_));
-    return m_.mirror_fresnel ? fresnel_dielectric(c, m_.ior > 1 ? m_.ior : 1.5) : std::pow(1 - c, m_.mirror_falloff);
+    return m_.mirror_fresnel ? fresnel_dielectric(c, m_.ior > 1 ? m_.ior : 1.5)
+                             : std::pow(1 - c, m_.mirror_falloff);
 }
 
 template <class Q>
@@ -199,7 +206,9 @@ void BsdfOf<Q>::smooth_factors(Vec3 wi, double& diffuse_factor, double& glossy_f
     diffuse_factor = cos_i / kPi;
     if (p_glossy_ > 0) {
         const double c = dot(wi, reflect(wo_, ns_));
-        if (c > 0) glossy_factor = cos_i * (m_.glossy_exponent + 2) / (2 * kPi) * std::pow(c, m_.glossy_exponent);
+        if (c > 0)
+            glossy_factor =
+                cos_i * (m_.glossy_exponent + 2) / (2 * kPi) * std::pow(c, m_.glossy_exponent);
     }
 }
 
@@ -220,14 +229,16 @@ double BsdfOf<Q>::pdf(Vec3 wi) const {
     double p = p_diffuse_ * cos_i / kPi;
     if (p_glossy_ > 0) {
         const double c = dot(wi, reflect(wo_, ns_));
-        if (c > 0) p += p_glossy_ * (m_.glossy_exponent + 1) / (2 * kPi) * std::pow(c, m_.glossy_exponent);
+        if (c > 0)
+            p += p_glossy_ * (m_.glossy_exponent + 1) / (2 * kPi) * std::pow(c, m_.glossy_exponent);
     }
     return p;
 }
 
 template <class Q>
 bool BsdfOf<Q>::sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out) const {
-    if (u_lobe < p_diffuse_ && p_glossy_ == 0) {  // diffuse alone: f cos / pdf is the albedo over p_diffuse
+    if (u_lobe < p_diffuse_ &&
+        p_glossy_ == 0) {  // diffuse alone: f cos / pdf is the albedo over p_diffuse
         out.wi = normalized(Frame(ns_).to_world(cosine_hemisphere(u1, u2)));
         const double cos_i = dot(out.wi, ns_);
         out.delta = false;
@@ -237,7 +248,8 @@ bool BsdfOf<Q>::sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out
         return true;
     }
     if (u_lobe < p_diffuse_ + p_glossy_) {
-        const Vec3 local = u_lobe < p_diffuse_ ? cosine_hemisphere(u1, u2) : phong_lobe(m_.glossy_exponent, u1, u2);
+        const Vec3 local = u_lobe < p_diffuse_ ? cosine_hemisphere(u1, u2)
+                                               : phong_lobe(m_.glossy_exponent, u1, u2);
         out.wi = normalized(Frame(u_lobe < p_diffuse_ ? ns_ : reflect(wo_, ns_)).to_world(local));
         out.pdf = pdf(out.wi);
         out.delta = false;

@@ -11,15 +11,15 @@
 namespace rayset::tracer {
 
 struct Material {
-    Rgb diffuse;               // Lambertian albedo
-    Rgb glossy;                // albedo of the normalised Phong lobe about the mirror direction
+    Rgb diffuse;  // Lambertian albedo
+    Rgb glossy;   // albedo of the normalised Phong lobe about the mirror direction
     double glossy_exponent = 40;
     Rgb mirror_min, mirror_max;  // perfect mirror: weight at normal and at grazing incidence
     double mirror_falloff = 1;
     bool mirror_fresnel = false;
-    Rgb transmission;          // smooth dielectric lobe (Fresnel reflection + refraction)
+    Rgb transmission;  // smooth dielectric lobe (Fresnel reflection + refraction)
     double ior = 1;
-    Rgb emission;              // emitted radiance, renderer units (both sides)
+    Rgb emission;                          // emitted radiance, renderer units (both sides)
     IlluminantSpectrum emission_spectrum;  // the same for spectral transport
     // The reflectances above as spectra, for spectral transport (rgb_upsampling.h).
     struct Spectra {
@@ -46,8 +46,8 @@ Material material_from_pov(const ObjectInstance& object, double emission_scale);
 template <class Q>
 struct BsdfSampleOf {
     Vec3 wi;
-    Q weight;          // f |cos| / pdf, lobe choice included
-    double pdf = 0;    // solid-angle pdf of the non-delta lobes (0 for a delta lobe)
+    Q weight;        // f |cos| / pdf, lobe choice included
+    double pdf = 0;  // solid-angle pdf of the non-delta lobes (0 for a delta lobe)
     bool delta = false;
 };
 

@@ -9,33 +9,41 @@
 
 namespace rayset::tracer {
 
-std::shared_ptr<const TriangleMesh> load_mesh_file(const MeshFileShape& shape, const std::string& where) {
+std::shared_ptr<const TriangleMesh> load_mesh_file(const MeshFileShape& shape,
+                                                   const std::string& where) {
     if (shape.format != "obj")
-        throw Error(fmt::format("not supported: mesh_file of format '{}' (only .obj is read) at {}", shape.format, where));
+        throw Error(fmt::format("not supported: mesh_file of format '{}' (only .obj is read) at {}",
+                                shape.format, where));
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
     config.mtl_search_path = "";  // materials come from the scene, not from .mtl files
     tinyobj::ObjReader reader;
     if (!reader.ParseFromFile(shape.path, config))
-        throw Error(fmt::format("{}: cannot read OBJ mesh: {} (mesh_file at {})", shape.path, reader.Error(), where));
+        throw Error(fmt::format("{}: cannot read OBJ mesh: {} (mesh_file at {})", shape.path,
+                                reader.Error(), where));
     auto mesh = std::make_shared<TriangleMesh>();
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
     for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
-        mesh->vertices.push_back({attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]});
+        mesh->vertices.push_back(
+            {attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]});
     for (size_t i = 0; i + 2 < attrib.normals.size(); i += 3)
         mesh->normals.push_back({attrib.normals[i], attrib.normals[i + 1], attrib.normals[i + 2]});
     bool every_corner_has_normal = !mesh->normals.empty();
     for (const tinyobj::shape_t& part : reader.GetShapes()) {
         const auto& indices = part.mesh.indices;
         for (size_t f = 0; f + 2 < indices.size(); f += 3) {
-            mesh->faces.push_back({indices[f].vertex_index, indices[f + 1].vertex_index, indices[f + 2].vertex_index});
-            mesh->normal_faces.push_back({indices[f].normal_index, indices[f + 1].normal_index, indices[f + 2].normal_index});
+            mesh->faces.push_back({indices[f].vertex_index, indices[f + 1].vertex_index,
+                                   indices[f + 2].vertex_index});
+            mesh->normal_faces.push_back({indices[f].normal_index, indices[f + 1].normal_index,
+                                          indices[f + 2].normal_index});
             for (int k = 0; k < 3; ++k) every_corner_has_normal &= indices[f + k].normal_index >= 0;
         }
     }
     if (!every_corner_has_normal) mesh->normals.clear(), mesh->normal_faces.clear();
-    if (mesh->faces.empty()) throw Error(fmt::format("{}: the OBJ file has no faces (mesh_file at {})", shape.path, where));
+    if (mesh->faces.empty())
+        throw Error(
+            fmt::format("{}: the OBJ file has no faces (mesh_file at {})", shape.path, where));
     return mesh;
 }
 

@@ -10,6 +10,7 @@
 namespace rayset::tracer {
 
 // Throws rayset::Error naming the file and, for the scene, `where` (the mesh_file statement).
-std::shared_ptr<const TriangleMesh> load_mesh_file(const MeshFileShape& shape, const std::string& where);
+std::shared_ptr<const TriangleMesh> load_mesh_file(const MeshFileShape& shape,
+                                                   const std::string& where);
 
 }  // namespace rayset::tracer

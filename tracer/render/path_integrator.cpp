@@ -27,7 +27,8 @@ lightmodel::BinnedSpectrum ordinary_light_density() {
 template <class Q>
 PathIntegratorOf<Q>::PathIntegratorOf(const RenderScene& scene) : scene_(scene) {
     for (const ObjectInstance& o : scene.description().objects) no_shadow_.push_back(o.no_shadow);
-    if constexpr (std::is_same_v<Q, SampledSpectrum>) wavelength_density_ = ordinary_light_density();
+    if constexpr (std::is_same_v<Q, SampledSpectrum>)
+        wavelength_density_ = ordinary_light_density();
 }
 
 template <class Q>
@@ -59,8 +60,8 @@ Rgb PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_
 }
 
 template <class Q>
-Q PathIntegratorOf<Q>::direct(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
-                              Pcg32& rng, uint64_t& rays) const {
+Q PathIntegratorOf<Q>::direct(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
+                              const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const {
     return unless_occluded(sample_light(bsdf, point, normal, wavelengths, rng), rays);
 }
 
@@ -112,15 +113,17 @@ template <class Q>
                 ++rays;
                 t_block = scene_.nearest_shadow_caster(s.origin, s.direction, 0, kInfinity);
             }
-            sum += s.beta * lights.crossed_radiance(s.origin, s.direction, t_block + scene_.epsilon(), s.bsdf_pdf,
-                                                    wavelengths);
+            sum +=
+                s.beta * lights.crossed_radiance(s.origin, s.direction, t_block + scene_.epsilon(),
+                                                 s.bsdf_pdf, wavelengths);
         }
         if (!found) {
             sum += s.beta * emitted(scene_.background(), scene_.background_spectrum(), wavelengths);
             break;
         }
         const Material& material = scene_.material(hit.object);
-        if (!is_black(material.emission)) sum += s.beta * emitted(material.emission, material.emission_spectrum, wavelengths);
+        if (!is_black(material.emission))
+            sum += s.beta * emitted(material.emission, material.emission_spectrum, wavelengths);
         const Vec3 wo = -s.direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         const bool light_sampled = bsdf.has_smooth_lobes() && !lights.empty();
@@ -129,7 +132,8 @@ template <class Q>
             shadow = sample_light(bsdf, hit.point, bsdf.facing_normal(), wavelengths, rng);
 
         // The BSDF sample before the shadow ray (it does not depend on it; see ShadowQuery).
-        const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
+        const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
+                     u2 = rng.uniform_float();
         const bool sampled = bsdf.sample(u_lobe, u1, u2, sample);
         if (light_sampled) sum += s.beta * unless_occluded(shadow, rays);
         if (s.depth + 1 >= kMaxDepth || !sampled || is_black(sample.weight)) break;
@@ -156,10 +160,12 @@ template <class Q>
 class PathTracing : public Integrator {
 public:
     explicit PathTracing(const RenderScene& scene) : path_(scene) {}
-    void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng, uint64_t& rays) const override {
+    void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+                       uint64_t& rays) const override {
         sink.add(0, path_.radiance(ray.origin, ray.direction, rng, rays));
     }
-    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng, uint64_t& rays) const override {
+    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+                         uint64_t& rays) const override {
         sink.add(0, path_.irradiance(point, normal, rng, rays));
     }
 
@@ -169,9 +175,11 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene, const RenderSettings& settings,
+std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene,
+                                                 const RenderSettings& settings,
                                                  const RenderResult&) {
-    if (spectral_transport(scene, settings)) return std::make_unique<PathTracing<SampledSpectrum>>(scene);
+    if (spectral_transport(scene, settings))
+        return std::make_unique<PathTracing<SampledSpectrum>>(scene);
     return std::make_unique<PathTracing<Rgb>>(scene);
 }
 

@@ -33,8 +33,8 @@ public:
     // surface there would reflect, estimated with the same path tracer.
     Rgb irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
 
-    static constexpr int kMaxDepth = 256;      // a cap far beyond what Russian roulette lets live
-    static constexpr int kRouletteDepth = 3;   // bounces before Russian roulette starts
+    static constexpr int kMaxDepth = 256;     // a cap far beyond what Russian roulette lets live
+    static constexpr int kRouletteDepth = 3;  // bounces before Russian roulette starts
 
 private:
     struct PathState {
@@ -48,8 +48,8 @@ private:
     // more than some of the arithmetic per bounce).
     Q trace(PathState& state, const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const;
     // Next-event estimation at a surface point (one light sample, MIS-weighted for area lights).
-    Q direct(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths, Pcg32& rng,
-             uint64_t& rays) const;
+    Q direct(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
+             Pcg32& rng, uint64_t& rays) const;
     // direct() in two halves: the light sample with what it brings if unoccluded, then its
     // shadow ray. The bounce loop samples the BSDF in between, so that the two chains of
     // square roots and divisions overlap instead of waiting on each other.
@@ -64,14 +64,16 @@ private:
     Q unless_occluded(const ShadowQuery& query, uint64_t& rays) const;
 
     const RenderScene& scene_;
-    std::vector<uint8_t> no_shadow_;  // per object: read on every hit, kept apart from the big ObjectInstance
+    std::vector<uint8_t>
+        no_shadow_;  // per object: read on every hit, kept apart from the big ObjectInstance
     lightmodel::BinnedSpectrum wavelength_density_;  // spectral only
 };
 using PathIntegrator = PathIntegratorOf<Rgb>;
 
 // The path tracer as the renderer's integrator: one radiance sample per camera ray, one
 // irradiance sample per receiver sample, no layers; RGB or spectral transport.
-std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene, const RenderSettings& settings,
+std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene,
+                                                 const RenderSettings& settings,
                                                  const RenderResult& start);
 
 }  // namespace rayset::tracer

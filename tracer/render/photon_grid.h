@@ -14,15 +14,19 @@
 namespace rayset::tracer {
 
 // The photon's wavelengths when spectral (a base, so that RGB photons hold nothing more).
-template <class Q> struct PhotonWavelengths {};
-template <> struct PhotonWavelengths<SampledSpectrum> { SampledWavelengths wavelengths; };
+template <class Q>
+struct PhotonWavelengths {};
+template <>
+struct PhotonWavelengths<SampledSpectrum> {
+    SampledWavelengths wavelengths;
+};
 
 template <class Q>
 struct PhotonOf : PhotonWavelengths<Q> {
     Vec3 position;
-    Vec3 wi;      // unit, toward where the photon came from
-    Vec3 normal;  // unit surface normal on the side the photon arrived at
-    Q power;      // W (per nm at its wavelengths when spectral)
+    Vec3 wi;              // unit, toward where the photon came from
+    Vec3 normal;          // unit surface normal on the side the photon arrived at
+    Q power;              // W (per nm at its wavelengths when spectral)
     bool direct = false;  // no scattering since the source (only the naive model keeps these)
 };
 using Photon = PhotonOf<Rgb>;
@@ -35,7 +39,9 @@ public:
 
     double radius() const { return radius_; }
     size_t size() const { return photons_.size(); }
-    size_t memory_bytes() const { return photons_.size() * sizeof(Photon) + start_.size() * sizeof(uint32_t); }
+    size_t memory_bytes() const {
+        return photons_.size() * sizeof(Photon) + start_.size() * sizeof(uint32_t);
+    }
 
     // Calls f(photon) for every photon within the radius of p.
     template <class F>
@@ -65,7 +71,8 @@ private:
     size_t hash(int64_t x, int64_t y, int64_t z) const {
         // Teschner et al. 2003's spatial hash; distinct cells may share a slot (the distance
         // test above keeps gathers exact).
-        const uint64_t h = uint64_t(x) * 73856093ULL ^ uint64_t(y) * 19349663ULL ^ uint64_t(z) * 83492791ULL;
+        const uint64_t h =
+            uint64_t(x) * 73856093ULL ^ uint64_t(y) * 19349663ULL ^ uint64_t(z) * 83492791ULL;
         return size_t(h % table_size_);
     }
 

@@ -34,7 +34,8 @@ const Processes& Processes::world() { return mutable_world(); }
 
 void Processes::broadcast(std::vector<int64_t>& values) const {
     if (size_ == 1) return;
-    check(MPI_Bcast(values.data(), int(values.size()), MPI_INT64_T, 0, MPI_COMM_WORLD), "broadcast");
+    check(MPI_Bcast(values.data(), int(values.size()), MPI_INT64_T, 0, MPI_COMM_WORLD),
+          "broadcast");
 }
 
 void Processes::broadcast(std::vector<double>& values) const {
@@ -57,13 +58,14 @@ void Processes::sum_at_root(std::vector<double>& values) const {
     std::vector<double> received(size_ > 1 ? values.size() : 0);
     for (int step = 1; step < size_; step *= 2) {
         if (rank_ % (2 * step) == step) {
-            check(MPI_Send(values.data(), int(values.size()), MPI_DOUBLE, rank_ - step, kTag, MPI_COMM_WORLD),
+            check(MPI_Send(values.data(), int(values.size()), MPI_DOUBLE, rank_ - step, kTag,
+                           MPI_COMM_WORLD),
                   "send");
             return;
         }
         if (rank_ + step < size_) {
-            check(MPI_Recv(received.data(), int(received.size()), MPI_DOUBLE, rank_ + step, kTag, MPI_COMM_WORLD,
-                           MPI_STATUS_IGNORE),
+            check(MPI_Recv(received.data(), int(received.size()), MPI_DOUBLE, rank_ + step, kTag,
+                           MPI_COMM_WORLD, MPI_STATUS_IGNORE),
                   "receive");
             for (size_t i = 0; i < values.size(); ++i) values[i] += received[i];
         }

@@ -10,7 +10,6 @@
 
 namespace rayset::tracer {
 
-
 namespace {
 
 bool skipped(const LeafTable& leaf, const QuadricPrim& prim, const RTCIntersectContext* context) {
@@ -52,7 +51,8 @@ void quadric_bounds(const RTCBoundsFunctionArguments* args) {
         b.lower_x = b.lower_y = b.lower_z = std::numeric_limits<float>::max();
         b.upper_x = b.upper_y = b.upper_z = -std::numeric_limits<float>::max();
         for (int i = 0; i < 8; ++i) {
-            const Vec3 p = unit_to_world.point({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.});
+            const Vec3 p =
+                unit_to_world.point({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.});
             b.lower_x = std::min(b.lower_x, std::nextafter(float(p.x), -1e30f));
             b.lower_y = std::min(b.lower_y, std::nextafter(float(p.y), -1e30f));
             b.lower_z = std::min(b.lower_z, std::nextafter(float(p.z), -1e30f));
@@ -103,12 +103,14 @@ void quadric_occluded(const RTCOccludedFunctionNArguments* args) {
     auto* ray = reinterpret_cast<RTCRay*>(args->ray);
     const Vec3 o{ray->org_x, ray->org_y, ray->org_z}, d{ray->dir_x, ray->dir_y, ray->dir_z};
     double t = 0;
-    if (quadric_hit(prim, o, d, ray->tnear, ray->tfar, t)) ray->tfar = -std::numeric_limits<float>::infinity();
+    if (quadric_hit(prim, o, d, ray->tnear, ray->tfar, t))
+        ray->tfar = -std::numeric_limits<float>::infinity();
 }
 
 }  // namespace
 
-void add_quadric_geometry(RTCDevice device, RTCScene scene, GeometryTables& tables, LeafTable& leaf) {
+void add_quadric_geometry(RTCDevice device, RTCScene scene, GeometryTables& tables,
+                          LeafTable& leaf) {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(geometry, unsigned(leaf.quadrics.size()));
     rtcSetGeometryUserData(geometry, &leaf);

@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "converters/rays/ray_stream.h"
 #include "converters/colour/spectrum.h"
+#include "converters/rays/ray_stream.h"
 #include "core/error.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
@@ -25,7 +25,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 double conformal_scale(const Matrix4& m) {
     const Vec3 a = m.vector({1, 0, 0}), b = m.vector({0, 1, 0}), c = m.vector({0, 0, 1});
     const double s = length(a), tolerance = 1e-6 * s;
-    if (!(s > 0) || std::fabs(length(b) - s) > tolerance || std::fabs(length(c) - s) > tolerance) return 0;
+    if (!(s > 0) || std::fabs(length(b) - s) > tolerance || std::fabs(length(c) - s) > tolerance)
+        return 0;
     if (std::fabs(dot(a, b)) > tolerance * s || std::fabs(dot(a, c)) > tolerance * s ||
         std::fabs(dot(b, c)) > tolerance * s)
         return 0;
@@ -46,16 +47,20 @@ SampledSpectrum spectrum_of(const lightmodel::SpectralQuery& query) {
 }
 
 bool ends_with(const std::string& s, const std::string& suffix) {
-    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return s.size() >= suffix.size() &&
+           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace
 
-PlacedRaySource::PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emitter, const Matrix4& to_world)
+PlacedRaySource::PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emitter,
+                                 const Matrix4& to_world)
     : emitter_(std::move(emitter)), to_world_(to_world), to_local_(to_world.inverse()) {
     k_ = conformal_scale(to_world);
     if (!(k_ > 0))
-        throw Error("ray_source: the transform must keep angles (rotations, translations and one uniform scale)");
+        throw Error(
+            "ray_source: the transform must keep angles (rotations, translations and one uniform "
+            "scale)");
     power_ = luminance_weight(emitter_->phi_colour());
     radiance_scale_ = 1 / (k_ * k_);
 }
@@ -68,7 +73,9 @@ PlacedRaySource::Local PlacedRaySource::to_local(Vec3 origin, Vec3 direction) co
 bool PlacedRaySource::intersect(Vec3 origin, Vec3 direction, double t_max, double& t) const {
     const Local l = to_local(origin, direction);
     lightmodel::EmitterHit hit;
-    if (!emitter_->intersect(l.origin, l.direction, t_max < kInfinity ? t_max * l.scale : kInfinity, hit)) return false;
+    if (!emitter_->intersect(l.origin, l.direction, t_max < kInfinity ? t_max * l.scale : kInfinity,
+                             hit))
+        return false;
     t = hit.t / l.scale;
     return true;
 }
@@ -78,16 +85,17 @@ Rgb PlacedRaySource::radiance(Vec3 origin, Vec3 direction, NoWavelengths) const 
     return radiance_scale_ * emitter_->L_colour(l.origin, l.direction, lightmodel::EmitterHit{});
 }
 
-SampledSpectrum PlacedRaySource::radiance(Vec3 origin, Vec3 direction, const SampledWavelengths& wavelengths) const {
+SampledSpectrum PlacedRaySource::radiance(Vec3 origin, Vec3 direction,
+                                          const SampledWavelengths& wavelengths) const {
     const Local l = to_local(origin, direction);
     lightmodel::SpectralQuery query = spectral_query(wavelengths);
     emitter_->L_spectral(l.origin, l.direction, lightmodel::EmitterHit{}, query);
     return radiance_scale_ * spectrum_of(query);
 }
 
-std::optional<SourceLiSampleOf<SampledSpectrum>> PlacedRaySource::sample_Li(Vec3 ref, double u_cell, double u_voxel,
-                                                                             Vec3 u_point,
-                                                                             const SampledWavelengths& wavelengths) const {
+std::optional<SourceLiSampleOf<SampledSpectrum>> PlacedRaySource::sample_Li(
+    Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
+    const SampledWavelengths& wavelengths) const {
     lightmodel::SpectralQuery query = spectral_query(wavelengths);
     const auto s = emitter_->sample_Li(to_local_.point(ref), u_cell, u_voxel, u_point, {}, &query);
     if (!s) return std::nullopt;
@@ -99,8 +107,8 @@ std::optional<SourceLiSampleOf<SampledSpectrum>> PlacedRaySource::sample_Li(Vec3
     return out;
 }
 
-std::optional<SourceLiSample> PlacedRaySource::sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
-                                                         NoWavelengths) const {
+std::optional<SourceLiSample> PlacedRaySource::sample_Li(Vec3 ref, double u_cell, double u_voxel,
+                                                         Vec3 u_point, NoWavelengths) const {
     const auto s = emitter_->sample_Li(to_local_.point(ref), u_cell, u_voxel, u_point);
     if (!s) return std::nullopt;
     SourceLiSample out;
@@ -117,10 +125,12 @@ double PlacedRaySource::pdf_Li(Vec3 ref, Vec3 wi) const {
 
 SourcePhoton PlacedRaySource::sample_Le(const double u[7]) const {
     const lightmodel::LeSample s = emitter_->sample_Le(u);
-    return {to_world_.point(s.origin), normalized(to_world_.vector(s.direction)), s.flux_colour, {}};
+    return {
+        to_world_.point(s.origin), normalized(to_world_.vector(s.direction)), s.flux_colour, {}};
 }
 
-SourcePhotonOf<SampledSpectrum> PlacedRaySource::sample_Le(const double u[7], double u_wavelength) const {
+SourcePhotonOf<SampledSpectrum> PlacedRaySource::sample_Le(const double u[7],
+                                                           double u_wavelength) const {
     const lightmodel::LeSample s = emitter_->sample_Le(u);
     SourcePhotonOf<SampledSpectrum> out;
     out.origin = to_world_.point(s.origin);
@@ -128,7 +138,8 @@ SourcePhotonOf<SampledSpectrum> PlacedRaySource::sample_Le(const double u[7], do
     const double luminance = lightmodel::luminance(s.flux_colour);
     if (s.spectrum && !s.spectrum->is_zero()) {
         out.wavelengths = SampledWavelengths::sample(*s.spectrum, u_wavelength);
-        for (int i = 0; i < kWavelengths; ++i) out.flux.v[i] = luminance * (*s.spectrum)(out.wavelengths.nm[i]);
+        for (int i = 0; i < kWavelengths; ++i)
+            out.flux.v[i] = luminance * (*s.spectrum)(out.wavelengths.nm[i]);
     } else if (!s.spectrum) {
         // One wavelength: its flux is what makes the photon's luminance (zero where V is).
         out.wavelengths = SampledWavelengths::single(s.wavelength_nm);
@@ -145,14 +156,18 @@ RaySourceSet::RaySourceSet(const SceneDescription& scene, bool naive) : naive_(n
         const Matrix4 to_world = r.source_to_world * mm_to_unit;
         if (naive) {
             if (ends_with(r.path, ".vdb"))
-                throw Error(fmt::format("{}: the naive model emits the stored rays; name the ray file, not a .vdb model",
-                                        r.path));
+                throw Error(
+                    fmt::format("{}: the naive model emits the stored rays; name the ray file, not "
+                                "a .vdb model",
+                                r.path));
             add(PlacedRaySource(std::make_shared<lightmodel::NaiveRaySource>(r.path), to_world));
             continue;
         }
         auto model = std::make_shared<lightmodel::LightModel>(
-            ends_with(r.path, ".vdb") ? lightmodel::read_model(r.path) : lightmodel::build_model(r.path, {}));
-        add(PlacedRaySource(std::make_shared<lightmodel::ComplexSource>(std::move(model)), to_world));
+            ends_with(r.path, ".vdb") ? lightmodel::read_model(r.path)
+                                      : lightmodel::build_model(r.path, {}));
+        add(PlacedRaySource(std::make_shared<lightmodel::ComplexSource>(std::move(model)),
+                            to_world));
     }
 }
 
@@ -171,7 +186,8 @@ void RaySourceSet::add(PlacedRaySource source) {
 }
 
 size_t RaySourceSet::choose(double& u) const {
-    const size_t i = std::min(size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()), cdf_.size() - 1);
+    const size_t i = std::min(size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()),
+                              cdf_.size() - 1);
     const double low = i ? cdf_[i - 1] : 0;
     u = std::min(std::nextafter(1.0, 0.0), (u - low) / std::max(1e-300, cdf_[i] - low));
     return i;

@@ -64,11 +64,13 @@ public:
     // Radiance arriving at `origin` from the body along `direction` (call after intersect),
     // as RGB or at a path's wavelengths.
     Rgb radiance(Vec3 origin, Vec3 direction, NoWavelengths = {}) const;
-    SampledSpectrum radiance(Vec3 origin, Vec3 direction, const SampledWavelengths& wavelengths) const;
+    SampledSpectrum radiance(Vec3 origin, Vec3 direction,
+                             const SampledWavelengths& wavelengths) const;
     std::optional<SourceLiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
                                             NoWavelengths = {}) const;
-    std::optional<SourceLiSampleOf<SampledSpectrum>> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
-                                                               const SampledWavelengths& wavelengths) const;
+    std::optional<SourceLiSampleOf<SampledSpectrum>> sample_Li(
+        Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
+        const SampledWavelengths& wavelengths) const;
     double pdf_Li(Vec3 ref, Vec3 wi) const;
     // A photon; spectral photons draw their wavelengths from the emitted light's spectrum by
     // `u_wavelength` (hero sampling, spectrum.h), or carry a ray's single wavelength.
@@ -78,12 +80,15 @@ public:
     lightmodel::BinnedSpectrum spectrum() const { return emitter_->phi_spectrum(); }
 
 private:
-    struct Local { Vec3 origin, direction; double scale; };  // scale: model mm per scene unit of t
+    struct Local {
+        Vec3 origin, direction;
+        double scale;
+    };  // scale: model mm per scene unit of t
     Local to_local(Vec3 origin, Vec3 direction) const;
 
     std::shared_ptr<const lightmodel::Emitter> emitter_;
     Matrix4 to_world_, to_local_;
-    double k_ = 1;           // scene units per model mm
+    double k_ = 1;  // scene units per model mm
     double power_ = 0;
     double radiance_scale_ = 1;  // per mm^2 -> per unit^2
 };

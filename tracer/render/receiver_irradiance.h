@@ -21,14 +21,16 @@ namespace rayset::tracer {
 // Random numbers: the wavelength, sample_light's, then the lobe and direction (3 floats),
 // then follow_bsdf_sample's.
 template <class Q, class SampleLight, class FollowBsdfSample>
-Rgb white_lambertian_irradiance(Vec3 normal, const lightmodel::BinnedSpectrum& wavelength_density, Pcg32& rng,
-                                SampleLight&& sample_light, FollowBsdfSample&& follow_bsdf_sample) {
+Rgb white_lambertian_irradiance(Vec3 normal, const lightmodel::BinnedSpectrum& wavelength_density,
+                                Pcg32& rng, SampleLight&& sample_light,
+                                FollowBsdfSample&& follow_bsdf_sample) {
     const WavelengthsFor<Q> wavelengths = sample_wavelengths<Q>(wavelength_density, rng);
     const BsdfOf<Q> bsdf(white_lambertian(), normal, normal, normal, wavelengths);
     Q reflected = sample_light(bsdf, wavelengths);
     BsdfSampleOf<Q> s;
     const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
-    if (bsdf.sample(u_lobe, u1, u2, s) && !is_black(s.weight)) reflected += follow_bsdf_sample(s, wavelengths);
+    if (bsdf.sample(u_lobe, u1, u2, s) && !is_black(s.weight))
+        reflected += follow_bsdf_sample(s, wavelengths);
     return kPi * to_rgb(reflected, wavelengths);
 }
 

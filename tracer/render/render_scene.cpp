@@ -29,7 +29,9 @@ RTCRayHit make_ray(Vec3 o, Vec3 d, double t_near, double t_far) {
     rh.ray.org_x = float(o.x), rh.ray.org_y = float(o.y), rh.ray.org_z = float(o.z);
     rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
     rh.ray.tnear = float(t_near);
-    rh.ray.tfar = t_far >= double(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity() : float(t_far);
+    rh.ray.tfar = t_far >= double(std::numeric_limits<float>::max())
+                      ? std::numeric_limits<float>::infinity()
+                      : float(t_far);
     rh.ray.time = 0;
     rh.ray.mask = ~0u;
     rh.ray.id = 0;
@@ -40,12 +42,18 @@ RTCRayHit make_ray(Vec3 o, Vec3 d, double t_near, double t_far) {
 }
 
 RecordedRay record_of(const RTCRay& ray, uint8_t skip, bool shadow) {
-    return {{ray.org_x, ray.org_y, ray.org_z}, {ray.dir_x, ray.dir_y, ray.dir_z}, ray.tnear, ray.tfar, skip, shadow};
+    return {{ray.org_x, ray.org_y, ray.org_z},
+            {ray.dir_x, ray.dir_y, ray.dir_z},
+            ray.tnear,
+            ray.tfar,
+            skip,
+            shadow};
 }
 
 void check_device(RTCDevice device, const char* what) {
     const RTCError error = rtcGetDeviceError(device);
-    if (error != RTC_ERROR_NONE) throw Error(fmt::format("Embree failed while {} (error code {})", what, int(error)));
+    if (error != RTC_ERROR_NONE)
+        throw Error(fmt::format("Embree failed while {} (error code {})", what, int(error)));
 }
 
 [[noreturn]] void refuse(const std::string& feature, const SourceLocation& where) {
@@ -61,7 +69,8 @@ void refuse_unrendered(const LightSource& light) {
     if (light.parallel) refuse("parallel light_source", light.location);
     if (!light.projected_through.empty()) refuse("projected_through", light.location);
     if (light.light_group)
-        refuse(fmt::format("light_group (at {})", light.light_group->location.str()), light.location);
+        refuse(fmt::format("light_group (at {})", light.light_group->location.str()),
+               light.location);
 }
 
 // What the renderer does not render is refused, never ignored (README.md, "Scene items"). The
@@ -91,7 +100,8 @@ RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
     units_.metres_per_unit = scene.global.millimetres_per_unit / 1000;
     const double to_internal = 1 / units_.per_square_metre();
     lights_ = LightSet(scene.lights, units_);
-    for (const ObjectInstance& o : scene.objects) materials_.push_back(material_from_pov(o, to_internal));
+    for (const ObjectInstance& o : scene.objects)
+        materials_.push_back(material_from_pov(o, to_internal));
     background_ = to_internal * scene.background.rgb();
     background_spectrum_ = IlluminantSpectrum(background_);
 
@@ -118,7 +128,8 @@ Vec3 RenderScene::offset(Vec3 point, Vec3 normal, Vec3 direction) const {
     return point + (dot(direction, normal) >= 0 ? e : -e) * normal;
 }
 
-bool RenderScene::intersect(Vec3 origin, Vec3 direction, double t_near, double t_far, RayKind kind, SurfaceHit& hit) const {
+bool RenderScene::intersect(Vec3 origin, Vec3 direction, double t_near, double t_far, RayKind kind,
+                            SurfaceHit& hit) const {
     TraceContext context;
     rtcInitIntersectContext(&context.embree);
     context.skip = skip_flags(kind);
@@ -132,7 +143,8 @@ bool RenderScene::intersect(Vec3 origin, Vec3 direction, double t_near, double t
     return true;
 }
 
-double RenderScene::nearest_shadow_caster(Vec3 origin, Vec3 direction, double t_near, double t_far) const {
+double RenderScene::nearest_shadow_caster(Vec3 origin, Vec3 direction, double t_near,
+                                          double t_far) const {
     SurfaceHit hit;
     return intersect(origin, direction, t_near, t_far, RayKind::shadow, hit) ? hit.t : t_far;
 }

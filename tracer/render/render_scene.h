@@ -35,8 +35,8 @@ struct GeometryTables;
 struct RecordedRay {
     float origin[3], direction[3];
     float t_near, t_far;
-    uint8_t skip;   // ObjectFlag bits the ray ignored
-    bool shadow;    // an occlusion query
+    uint8_t skip;  // ObjectFlag bits the ray ignored
+    bool shadow;   // an occlusion query
 };
 
 class RenderScene {
@@ -51,12 +51,15 @@ public:
     const Material& material(int object) const { return materials_[object]; }
     const SceneUnits& units() const { return units_; }
     Rgb background() const { return background_; }  // renderer units
-    const IlluminantSpectrum& background_spectrum() const { return background_spectrum_; }  // spectral transport
+    const IlluminantSpectrum& background_spectrum() const {
+        return background_spectrum_;
+    }  // spectral transport
     // Offset that moves a ray origin off the surface it starts on (scene units).
     double epsilon() const { return epsilon_; }
 
     // Nearest surface along (origin, unit direction) in (t_near, t_far) that this kind of ray sees.
-    bool intersect(Vec3 origin, Vec3 direction, double t_near, double t_far, RayKind kind, SurfaceHit& hit) const;
+    bool intersect(Vec3 origin, Vec3 direction, double t_near, double t_far, RayKind kind,
+                   SurfaceHit& hit) const;
     // Distance to the nearest shadow-casting surface (t_far when none).
     double nearest_shadow_caster(Vec3 origin, Vec3 direction, double t_near, double t_far) const;
     bool occluded(Vec3 origin, Vec3 direction, double t_near, double t_far) const;
@@ -65,7 +68,8 @@ public:
     // thread only); bare_embree_rays_per_second() replays such rays through rtcIntersect1 /
     // rtcOccluded1 alone on `threads` threads and returns the rate.
     void record_rays(std::vector<RecordedRay>* sink) { recorder_ = sink; }
-    double bare_embree_rays_per_second(const std::vector<RecordedRay>& rays, int threads, int repeats) const;
+    double bare_embree_rays_per_second(const std::vector<RecordedRay>& rays, int threads,
+                                       int repeats) const;
     // Offsets a point off a surface along its normal, toward the side `direction` leaves to.
     Vec3 offset(Vec3 point, Vec3 normal, Vec3 direction) const;
 

@@ -58,7 +58,8 @@ public:
             receiver_samples(values, seed, rays);
         });
         between();
-        if (!stopped(stop_)) arena.execute([&] { integrator_.end_pass(pass, points_, values, rays, stop_); });
+        if (!stopped(stop_))
+            arena.execute([&] { integrator_.end_pass(pass, points_, values, rays, stop_); });
         if (stopped(stop_)) return std::nullopt;  // the pass may be incomplete: abandoned
         return values;
     }
@@ -67,15 +68,21 @@ public:
     void add(const PassValues& values, RenderResult& result) const {
         for (size_t p = 0; p < points_.pixels(); ++p) {
             const int x = int(p % size_t(points_.width)), y = int(p / size_t(points_.width));
-            add_point(values, p, result.film, [&](size_t l) -> SampleGrid& { return result.layers[l].film; }, x, y);
+            add_point(
+                values, p, result.film,
+                [&](size_t l) -> SampleGrid& { return result.layers[l].film; }, x, y);
         }
         for (size_t r = 0; r < result.receivers.size(); ++r) {
-            const int nx = result.receivers[r].irradiance.nx(), ny = result.receivers[r].irradiance.ny();
+            const int nx = result.receivers[r].irradiance.nx(),
+                      ny = result.receivers[r].irradiance.ny();
             const size_t first = points_.pixels() + points_.receiver_first[r];
             for (int k = 0; k < nx * ny; ++k)
-                add_point(values, first + size_t(k), result.receivers[r].irradiance,
-                          [&](size_t l) -> SampleGrid& { return result.layers[l].receivers[r].irradiance; },
-                          k % nx, k / nx);
+                add_point(
+                    values, first + size_t(k), result.receivers[r].irradiance,
+                    [&](size_t l) -> SampleGrid& {
+                        return result.layers[l].receivers[r].irradiance;
+                    },
+                    k % nx, k / nx);
         }
         if (points_.pixels() > 0) {
             result.film.finish_pass();
@@ -88,31 +95,35 @@ public:
 
 private:
     template <class LayerGrid>
-    void add_point(const PassValues& values, size_t i, SampleGrid& total, LayerGrid&& layer, int x, int y) const {
+    void add_point(const PassValues& values, size_t i, SampleGrid& total, LayerGrid&& layer, int x,
+                   int y) const {
         for (size_t l = 0; l + 1 < values.components.size(); ++l)
             layer(l).add(x, y, to_si_ * values.components[l][i]);
         total.add(x, y, to_si_ * values.total(i));
     }
 
     void camera_samples(PassValues& values, uint64_t seed, std::atomic<uint64_t>& rays) const {
-        const int w = points_.width, h = points_.height, tile = points_.tile_size, tiles_x = points_.tiles_x();
-        tbb::parallel_for(tbb::blocked_range<int>(0, points_.tiles()), [&](const tbb::blocked_range<int>& range) {
-            uint64_t counted = 0;
-            for (int t = range.begin(); t != range.end() && !stopped(stop_); ++t) {
-                const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
-                for (int y = y0; y < std::min(h, y0 + tile); ++y)
-                    for (int x = x0; x < std::min(w, x0 + tile); ++x) {
-                        const size_t p = size_t(y) * w + x;
-                        Pcg32 rng(seed, p);
-                        const SampleSink sink{values, p, t, weight_};
-                        for (int k = 0; k < samples_; ++k) {
-                            const double px = x + rng.uniform_float(), py = y + rng.uniform_float();
-                            integrator_.camera_sample(camera_.ray(px, py), sink, rng, counted);
+        const int w = points_.width, h = points_.height, tile = points_.tile_size,
+                  tiles_x = points_.tiles_x();
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, points_.tiles()), [&](const tbb::blocked_range<int>& range) {
+                uint64_t counted = 0;
+                for (int t = range.begin(); t != range.end() && !stopped(stop_); ++t) {
+                    const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
+                    for (int y = y0; y < std::min(h, y0 + tile); ++y)
+                        for (int x = x0; x < std::min(w, x0 + tile); ++x) {
+                            const size_t p = size_t(y) * w + x;
+                            Pcg32 rng(seed, p);
+                            const SampleSink sink{values, p, t, weight_};
+                            for (int k = 0; k < samples_; ++k) {
+                                const double px = x + rng.uniform_float(),
+                                             py = y + rng.uniform_float();
+                                integrator_.camera_sample(camera_.ray(px, py), sink, rng, counted);
+                            }
                         }
-                    }
-            }
-            rays += counted;
-        });
+                }
+                rays += counted;
+            });
     }
 
     void receiver_samples(PassValues& values, uint64_t seed, std::atomic<uint64_t>& rays) const {
@@ -121,18 +132,20 @@ private:
             const int nx = map.irradiance.nx(), ny = map.irradiance.ny();
             const Vec3 normal = map.front_normal();
             const size_t first = points_.receiver_first[r];
-            tbb::parallel_for(tbb::blocked_range<int>(0, nx * ny), [&](const tbb::blocked_range<int>& range) {
-                if (stopped(stop_)) return;
-                uint64_t counted = 0;
-                for (int k = range.begin(); k != range.end(); ++k) {
-                    const size_t c = first + size_t(k);
-                    Pcg32 rng(seed, points_.first_cell_stream + c);
-                    const SampleSink sink{values, points_.pixels() + c, -1, weight_};
-                    const Vec3 point = map.cell_centre(k % nx, k / nx);
-                    for (int n = 0; n < samples_; ++n) integrator_.receiver_sample(point, normal, sink, rng, counted);
-                }
-                rays += counted;
-            });
+            tbb::parallel_for(
+                tbb::blocked_range<int>(0, nx * ny), [&](const tbb::blocked_range<int>& range) {
+                    if (stopped(stop_)) return;
+                    uint64_t counted = 0;
+                    for (int k = range.begin(); k != range.end(); ++k) {
+                        const size_t c = first + size_t(k);
+                        Pcg32 rng(seed, points_.first_cell_stream + c);
+                        const SampleSink sink{values, points_.pixels() + c, -1, weight_};
+                        const Vec3 point = map.cell_centre(k % nx, k / nx);
+                        for (int n = 0; n < samples_; ++n)
+                            integrator_.receiver_sample(point, normal, sink, rng, counted);
+                    }
+                    rays += counted;
+                });
         }
     }
 
@@ -145,12 +158,16 @@ private:
     const StopFlag stop_;
 };
 
-bool same_layout(const SampleGrid& a, const SampleGrid& b) { return a.nx() == b.nx() && a.ny() == b.ny(); }
+bool same_layout(const SampleGrid& a, const SampleGrid& b) {
+    return a.nx() == b.nx() && a.ny() == b.ny();
+}
 
 bool same_layout(const std::vector<ReceiverMap>& a, const std::vector<ReceiverMap>& b) {
     if (a.size() != b.size()) return false;
     for (size_t i = 0; i < a.size(); ++i)
-        if (a[i].receiver.name != b[i].receiver.name || !same_layout(a[i].irradiance, b[i].irradiance)) return false;
+        if (a[i].receiver.name != b[i].receiver.name ||
+            !same_layout(a[i].irradiance, b[i].irradiance))
+            return false;
     return true;
 }
 
@@ -162,7 +179,9 @@ RenderResult blank_render(const SceneDescription& scene, const RenderSettings& s
         for (const IlluminanceReceiver& r : scene.receivers) maps.emplace_back(r);
         return maps;
     };
-    const auto blank_film = [&] { return settings.render_image ? Film(settings.width, settings.height) : Film(1, 1); };
+    const auto blank_film = [&] {
+        return settings.render_image ? Film(settings.width, settings.height) : Film(1, 1);
+    };
     RenderResult result;
     result.film = blank_film();
     result.receivers = blank_maps();
@@ -171,15 +190,21 @@ RenderResult blank_render(const SceneDescription& scene, const RenderSettings& s
     return result;
 }
 
-RenderResult starting_state(const RenderScene& scene, const RenderSettings& settings, RenderResult start) {
+RenderResult starting_state(const RenderScene& scene, const RenderSettings& settings,
+                            RenderResult start) {
     RenderResult blank = blank_render(scene.description(), settings);
     if (start.passes == 0) return blank;
-    bool fits = same_layout(start.film, blank.film) && same_layout(start.receivers, blank.receivers) &&
+    bool fits = same_layout(start.film, blank.film) &&
+                same_layout(start.receivers, blank.receivers) &&
                 start.layers.size() == blank.layers.size();
     for (size_t i = 0; fits && i < blank.layers.size(); ++i)
-        fits = start.layers[i].name == blank.layers[i].name && same_layout(start.layers[i].film, blank.layers[i].film) &&
+        fits = start.layers[i].name == blank.layers[i].name &&
+               same_layout(start.layers[i].film, blank.layers[i].film) &&
                same_layout(start.layers[i].receivers, blank.layers[i].receivers);
-    if (!fits) throw Error("the render to continue has another image size, receivers or layers than this scene and settings");
+    if (!fits)
+        throw Error(
+            "the render to continue has another image size, receivers or layers than this scene "
+            "and settings");
     return start;
 }
 
@@ -193,7 +218,8 @@ PassBudget::PassBudget(const RenderSettings& settings, double seconds_before)
       start_(std::chrono::steady_clock::now()) {}
 
 double PassBudget::elapsed() const {
-    return seconds_before_ + std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    return seconds_before_ +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
 bool PassBudget::allows_another(int passes_done) const {
@@ -272,7 +298,8 @@ Round next_round(const Processes& processes, const PassBudget& budget, const Int
 RenderResult render(const RenderScene& scene, const RenderSettings& settings, RenderResult start,
                     const RenderControl& control) {
     const Processes& processes = Processes::world();
-    RenderResult result = starting_state(scene, settings, processes.is_root() ? std::move(start) : RenderResult{});
+    RenderResult result =
+        starting_state(scene, settings, processes.is_root() ? std::move(start) : RenderResult{});
     share_start(processes, result);
     const std::unique_ptr<Integrator> integrator = make_integrator(scene, settings, result);
     result.samples_per_pass = integrator->samples_per_pass();
@@ -282,7 +309,8 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings, Re
     tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
     ProgressBar progress("rendering", settings.progress && processes.is_root());
     // Rounds of passes: process r renders pass (passes done) + r.
-    for (Round round; (round = next_round(processes, budget, *integrator, result, control)).passes > 0;) {
+    for (Round round;
+         (round = next_round(processes, budget, *integrator, result, control)).passes > 0;) {
         const bool renders = processes.rank() < round.passes;
         const bool sets_outcome = result.passes == 0 && integrator->first_pass_sets_outcome();
         std::atomic<uint64_t> rays{0};
@@ -296,8 +324,11 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings, Re
             integrator->set_first_pass_outcome(outcome);
         };
         std::optional<PassValues> pass;
-        if (renders) pass = driver.render_pass(arena, result.passes + processes.rank(), components, rays, share_outcome);
-        else share_outcome();
+        if (renders)
+            pass = driver.render_pass(arena, result.passes + processes.rank(), components, rays,
+                                      share_outcome);
+        else
+            share_outcome();
         if (!processes.all(!renders || pass)) break;  // stopped somewhere: the round is dropped
         if (pass) driver.add(*pass, result);
         for (int p = 0; p < round.passes; ++p) ++result.passes, integrator->pass_completed(result);
@@ -305,14 +336,16 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings, Re
         result.seconds = budget.elapsed();
         if (round.report && processes.size() == 1) control.after_pass(result);
         if (round.report && processes.size() > 1) {
-            const RenderResult state = combined(processes, result, blank_render(scene.description(), settings));
+            const RenderResult state =
+                combined(processes, result, blank_render(scene.description(), settings));
             if (processes.is_root()) control.after_pass(state);
         }
         progress.update(budget.fraction_done(result.passes));
     }
     progress.done();
     result.seconds = budget.elapsed();
-    if (processes.size() > 1) result = combined(processes, result, blank_render(scene.description(), settings));
+    if (processes.size() > 1)
+        result = combined(processes, result, blank_render(scene.description(), settings));
     return result;
 }
 
@@ -323,7 +356,8 @@ std::vector<int> object_id_image(const RenderScene& scene, int width, int height
         for (int x = 0; x < width; ++x) {
             const CameraRay ray = camera.ray(x + 0.5, y + 0.5);
             SurfaceHit hit;
-            if (scene.intersect(ray.origin, ray.direction, 0, std::numeric_limits<double>::infinity(), RayKind::camera, hit))
+            if (scene.intersect(ray.origin, ray.direction, 0,
+                                std::numeric_limits<double>::infinity(), RayKind::camera, hit))
                 ids[size_t(y) * width + x] = hit.object;
         }
     return ids;

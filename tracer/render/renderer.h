@@ -23,18 +23,20 @@ struct RenderSettings {
     int passes = 0;                 // 0: until time_limit, or kDefaultPasses without one
     double time_limit = 0;          // seconds, checked between passes; 0: none
     uint64_t seed = 0;
-    int threads = 0;                // 0: every core
-    bool render_image = true;       // false: receivers only
-    bool progress = false;          // progress bar on stderr (when it is a terminal)
+    int threads = 0;           // 0: every core
+    bool render_image = true;  // false: receivers only
+    bool progress = false;     // progress bar on stderr (when it is a terminal)
     int tile_size = 16;
     static constexpr int kDefaultPasses = 16;
     // Bidirectional integrator (bidirectional_passes.cpp).
-    int photons_per_pass = 0;   // 0: the camera samples of a pass (pixels + receiver cells), at least 65536;
-                                // a pass takes photons / (pixels + cells) samples per pixel and cell, at least 1
-    double photon_radius = 0;   // gather radius of the first pass, scene units; 0: 1/100 of the
-                                // diagonal of the box of the middle 90% (per axis) of the first pass's visible points
-    bool naive_sources = false; // ray sources as their stored rays (the paper's Figure 1)
-    bool spectral = false;      // spectral transport (spectrum.h); also global_settings { spectral on }
+    int photons_per_pass =
+        0;  // 0: the camera samples of a pass (pixels + receiver cells), at least 65536;
+            // a pass takes photons / (pixels + cells) samples per pixel and cell, at least 1
+    double photon_radius =
+        0;  // gather radius of the first pass, scene units; 0: 1/100 of the
+            // diagonal of the box of the middle 90% (per axis) of the first pass's visible points
+    bool naive_sources = false;  // ray sources as their stored rays (the paper's Figure 1)
+    bool spectral = false;  // spectral transport (spectrum.h); also global_settings { spectral on }
 };
 
 // One light component of a bidirectional render, as its own image and receiver maps.
@@ -56,7 +58,8 @@ struct RenderResult {
     std::vector<RenderLayer> layers;
     uint64_t photons = 0;
     double photon_radius = 0;
-    size_t photon_bytes = 0, visible_point_bytes = 0;  // the photon grid and visible points, largest pass
+    size_t photon_bytes = 0,
+           visible_point_bytes = 0;  // the photon grid and visible points, largest pass
 };
 
 // What a render is told besides its settings, for checkpoints and interruption.
@@ -83,8 +86,8 @@ RenderResult blank_render(const SceneDescription& scene, const RenderSettings& s
 // `start`: a state to continue (from a checkpoint of the same scene and settings, or a render
 // stopped earlier); with start.passes == 0 the render starts afresh. Pass budgets count
 // start's passes and seconds: a continued render ends where an uninterrupted one would.
-RenderResult render(const RenderScene& scene, const RenderSettings& settings, RenderResult start = {},
-                    const RenderControl& control = {});
+RenderResult render(const RenderScene& scene, const RenderSettings& settings,
+                    RenderResult start = {}, const RenderControl& control = {});
 
 // The budget of a render: `passes`, else passes until `time_limit`, else
 // kDefaultPasses; checked between passes. The clock starts at construction, from
@@ -106,7 +109,8 @@ private:
 
 // `start` if it continues a render (after checking it has the layout of blank_render),
 // else the blank state.
-RenderResult starting_state(const RenderScene& scene, const RenderSettings& settings, RenderResult start);
+RenderResult starting_state(const RenderScene& scene, const RenderSettings& settings,
+                            RenderResult start);
 inline bool stop_requested(const RenderControl& control) {
     return control.stop && control.stop->load(std::memory_order_relaxed);
 }

@@ -66,7 +66,8 @@ void colour_and_jacobian(const double c[3], double rgb[3], double jacobian[3][3]
 // Solves a 3x3 system by Cramer's rule; false if singular.
 bool solve3(const double a[3][3], const double b[3], double x[3]) {
     auto det = [](const double m[3][3]) {
-        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+               m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     };
     const double d = det(a);
@@ -110,7 +111,8 @@ void refine(double c[3], const double target[3], int iterations) {
         for (int attempt = 0; attempt < 20 && !improved; ++attempt) {
             double damped[3][3], step[3];
             for (int a = 0; a < 3; ++a)
-                for (int b = 0; b < 3; ++b) damped[a][b] = jtj[a][b] + (a == b ? lambda * (jtj[a][a] + 1e-12) : 0);
+                for (int b = 0; b < 3; ++b)
+                    damped[a][b] = jtj[a][b] + (a == b ? lambda * (jtj[a][a] + 1e-12) : 0);
             if (solve3(damped, jtr, step)) {
                 const double next[3] = {c[0] + step[0], c[1] + step[1], c[2] + step[2]};
                 if (squared_error(next, target) < error) {
@@ -127,7 +129,8 @@ void refine(double c[3], const double target[3], int iterations) {
 }
 
 ReflectanceSpectrum fit(const double target[3]) {
-    if (target[0] == target[1] && target[1] == target[2]) return ReflectanceSpectrum::constant(target[0]);
+    if (target[0] == target[1] && target[1] == target[2])
+        return ReflectanceSpectrum::constant(target[0]);
     // Continuation from the colour's grey (a constant, c0 = c1 = 0) to the colour itself.
     const double grey = std::clamp((target[0] + target[1] + target[2]) / 3, 1e-3, 1 - 1e-3);
     double c[3] = {0, 0, (grey - 0.5) / std::sqrt(grey * (1 - grey))};  // S(c2) = grey
@@ -198,7 +201,8 @@ double IlluminantSpectrum::operator()(double nm) const {
     return scale_ > 0 ? scale_ * shape_(nm) * d65(nm) : 0;
 }
 
-SampledSpectrum emitted(const Rgb& colour, const IlluminantSpectrum& spectrum, const SampledWavelengths& w) {
+SampledSpectrum emitted(const Rgb& colour, const IlluminantSpectrum& spectrum,
+                        const SampledWavelengths& w) {
     SampledSpectrum s;
     if (is_black(colour)) return s;
     for (int i = 0; i < kWavelengths; ++i) s.v[i] = spectrum(w.nm[i]);

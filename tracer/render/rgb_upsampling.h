@@ -44,7 +44,7 @@ Rgb reflected_colour(const ReflectanceSpectrum& spectrum);
 // coloured one has its colour's luminance up to the fit (reflected_colour).
 class IlluminantSpectrum {
 public:
-    IlluminantSpectrum() = default;  // black
+    IlluminantSpectrum() = default;           // black
     explicit IlluminantSpectrum(Rgb colour);  // negative channels read as 0
 
     double operator()(double nm) const;
@@ -57,6 +57,7 @@ private:
 // An emission in the quantity a path carries: the RGB triple, or its spectrum at the path's
 // wavelengths.
 inline Rgb emitted(const Rgb& colour, const IlluminantSpectrum&, NoWavelengths) { return colour; }
-SampledSpectrum emitted(const Rgb& colour, const IlluminantSpectrum& spectrum, const SampledWavelengths& wavelengths);
+SampledSpectrum emitted(const Rgb& colour, const IlluminantSpectrum& spectrum,
+                        const SampledWavelengths& wavelengths);
 
 }  // namespace rayset::tracer

@@ -9,7 +9,6 @@
 
 namespace rayset::tracer {
 
-
 // An orthonormal frame around a unit normal: local (x, y, z) with z the normal.
 struct Frame {
     Vec3 s, t, n;
@@ -29,7 +28,8 @@ inline Vec3 cosine_hemisphere(double u1, double u2) {
 // Direction about +z with pdf (n + 1) / (2 pi) cos^n(alpha).
 inline Vec3 phong_lobe(double exponent, double u1, double u2) {
     const double cos_alpha = std::pow(u1, 1 / (exponent + 1));
-    const double sin_alpha = std::sqrt(std::max(0.0, 1 - cos_alpha * cos_alpha)), phi = 2 * kPi * u2;
+    const double sin_alpha = std::sqrt(std::max(0.0, 1 - cos_alpha * cos_alpha)),
+                 phi = 2 * kPi * u2;
     return {sin_alpha * std::cos(phi), sin_alpha * std::sin(phi), cos_alpha};
 }
 

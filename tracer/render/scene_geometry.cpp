@@ -16,7 +16,6 @@
 
 namespace rayset::tracer {
 
-
 namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
@@ -52,10 +51,12 @@ void refuse_unrendered(const ObjectInstance& o) {
 }
 
 uint8_t flags_of(const ObjectInstance& o) {
-    return uint8_t((o.no_shadow ? kNoShadow : 0) | (o.no_image ? kNoImage : 0) | (o.no_reflection ? kNoReflection : 0));
+    return uint8_t((o.no_shadow ? kNoShadow : 0) | (o.no_image ? kNoImage : 0) |
+                   (o.no_reflection ? kNoReflection : 0));
 }
 
-// Rejects candidate hits on objects the ray skips (installed only on geometry holding such objects).
+// Rejects candidate hits on objects the ray skips (installed only on geometry holding such
+// objects).
 void skip_filter(const RTCFilterFunctionNArguments* args) {
     const auto* context = reinterpret_cast<const TraceContext*>(args->context);
     if (!context->skip) return;
@@ -89,16 +90,20 @@ struct TriangleSoup {
     std::vector<unsigned> indices;
     void add(Vec3 a, Vec3 b, Vec3 c) {
         const unsigned base = unsigned(vertices.size() / 3);
-        for (Vec3 p : {a, b, c}) vertices.insert(vertices.end(), {float(p.x), float(p.y), float(p.z)});
+        for (Vec3 p : {a, b, c})
+            vertices.insert(vertices.end(), {float(p.x), float(p.y), float(p.z)});
         indices.insert(indices.end(), {base, base + 1, base + 2});
     }
 };
 
-RTCGeometry triangle_geometry(RTCDevice device, const TriangleSoup& soup, LeafTable* leaf, bool filtered) {
+RTCGeometry triangle_geometry(RTCDevice device, const TriangleSoup& soup, LeafTable* leaf,
+                              bool filtered) {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     const size_t nv = soup.vertices.size() / 3, nt = soup.indices.size() / 3;
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nv));
-    auto* i = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), nt));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nv));
+    auto* i = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), nt));
     std::copy(soup.vertices.begin(), soup.vertices.end(), v);
     std::copy(soup.indices.begin(), soup.indices.end(), i);
     rtcSetGeometryUserData(geometry, leaf);
@@ -113,11 +118,15 @@ RTCGeometry triangle_geometry(RTCDevice device, const TriangleSoup& soup, LeafTa
 class GeometryBuilder {
 public:
     GeometryBuilder(RTCDevice device, RTCScene scene, const SceneDescription& d)
-        : device_(device), scene_(scene), description_(d), tables_(std::make_unique<GeometryTables>()) {}
+        : device_(device),
+          scene_(scene),
+          description_(d),
+          tables_(std::make_unique<GeometryTables>()) {}
 
     std::unique_ptr<GeometryTables> build() {
         for (const ObjectInstance& o : description_.objects) refuse_unrendered(o);
-        for (const ObjectInstance& o : description_.objects) tables_->object_flags.push_back(flags_of(o));
+        for (const ObjectInstance& o : description_.objects)
+            tables_->object_flags.push_back(flags_of(o));
         LeafTable& plain = new_leaf();
         LeafTable& flagged = new_leaf();
         LeafTable& quadrics = new_leaf();
@@ -125,9 +134,11 @@ public:
         for (int k = 0; k < int(description_.objects.size()); ++k) {
             const ObjectInstance& o = description_.objects[k];
             const bool is_flagged = tables_->object_flags[k] != 0;
-            add_object(k, o, is_flagged ? flagged : plain, is_flagged ? flagged_soup : plain_soup, quadrics);
+            add_object(k, o, is_flagged ? flagged : plain, is_flagged ? flagged_soup : plain_soup,
+                       quadrics);
         }
-        const double extent = std::max({bounds_.hi.x - bounds_.lo.x, bounds_.hi.y - bounds_.lo.y, bounds_.hi.z - bounds_.lo.z, 0.0});
+        const double extent = std::max({bounds_.hi.x - bounds_.lo.x, bounds_.hi.y - bounds_.lo.y,
+                                        bounds_.hi.z - bounds_.lo.z, 0.0});
         tables_->extent = extent > 0 && std::isfinite(extent) ? extent : 1;
         attach_triangles(plain, plain_soup, false);
         attach_triangles(flagged, flagged_soup, true);
@@ -136,10 +147,13 @@ public:
             Box3 placed = bounds_;
             placed.add(description_.camera.location);
             for (const LightSource& l : description_.lights) placed.add(l.position);
-            for (const IlluminanceReceiver& r : description_.receivers) placed.add(r.corner), placed.add(r.corner + r.edge1 + r.edge2);
-            const double reach = std::max({std::abs(placed.lo.x), std::abs(placed.lo.y), std::abs(placed.lo.z),
-                                           std::abs(placed.hi.x), std::abs(placed.hi.y), std::abs(placed.hi.z)});
-            quadrics.plane_extent = float(1e5 * std::max(tables_->extent, std::isfinite(reach) ? reach : 1.0));
+            for (const IlluminanceReceiver& r : description_.receivers)
+                placed.add(r.corner), placed.add(r.corner + r.edge1 + r.edge2);
+            const double reach =
+                std::max({std::abs(placed.lo.x), std::abs(placed.lo.y), std::abs(placed.lo.z),
+                          std::abs(placed.hi.x), std::abs(placed.hi.y), std::abs(placed.hi.z)});
+            quadrics.plane_extent =
+                float(1e5 * std::max(tables_->extent, std::isfinite(reach) ? reach : 1.0));
             add_quadric_geometry(device_, scene_, *tables_, quadrics);
         }
         attach_instances();
@@ -153,7 +167,8 @@ private:
         return *tables_->leaves.back();
     }
 
-    void add_triangle(int object, const Matrix4& m, const Matrix4& inverse, Vec3 a, Vec3 b, Vec3 c, LeafTable& leaf, TriangleSoup& soup) {
+    void add_triangle(int object, const Matrix4& m, const Matrix4& inverse, Vec3 a, Vec3 b, Vec3 c,
+                      LeafTable& leaf, TriangleSoup& soup) {
         const Vec3 n = cross(b - a, c - a);  // object space; transformed as a normal
         const Vec3 world_n{inverse(0, 0) * n.x + inverse(1, 0) * n.y + inverse(2, 0) * n.z,
                            inverse(0, 1) * n.x + inverse(1, 1) * n.y + inverse(2, 1) * n.z,
@@ -165,27 +180,35 @@ private:
         leaf.prim_normal.push_back(unit_or_up(world_n));
     }
 
-    void add_box(int object, const BoxShape& box, const Matrix4& m, const Matrix4& inverse, LeafTable& leaf, TriangleSoup& soup) {
+    void add_box(int object, const BoxShape& box, const Matrix4& m, const Matrix4& inverse,
+                 LeafTable& leaf, TriangleSoup& soup) {
         const Vec3 lo = box.minimum, hi = box.maximum;
-        auto corner = [&](int i) { return Vec3{i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z}; };
+        auto corner = [&](int i) {
+            return Vec3{i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z};
+        };
         // Faces as corner indices, counter-clockwise seen from outside in a right-handed reading
         // of the numbers, so cross(b - a, c - a) points out of the box.
-        static const int faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+        static const int faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                        {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
         for (const auto& f : faces) {
             add_triangle(object, m, inverse, corner(f[0]), corner(f[1]), corner(f[2]), leaf, soup);
             add_triangle(object, m, inverse, corner(f[0]), corner(f[2]), corner(f[3]), leaf, soup);
         }
     }
 
-    void add_object(int k, const ObjectInstance& o, LeafTable& leaf, TriangleSoup& soup, LeafTable& quadrics) {
+    void add_object(int k, const ObjectInstance& o, LeafTable& leaf, TriangleSoup& soup,
+                    LeafTable& quadrics) {
         const Matrix4& m = o.object_to_world;
         const Matrix4 inverse = m.inverse();
         if (const auto* sphere = std::get_if<SphereShape>(&o.shape)) {
             QuadricPrim prim;
             prim.object = k;
-            const Matrix4 unit_to_world = m * translation(sphere->centre) * scaling({sphere->radius, sphere->radius, sphere->radius});
+            const Matrix4 unit_to_world = m * translation(sphere->centre) *
+                                          scaling({sphere->radius, sphere->radius, sphere->radius});
             prim.world_to_unit = unit_to_world.inverse();
-            for (int i = 0; i < 8; ++i) bounds_.add(unit_to_world.point({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.}));
+            for (int i = 0; i < 8; ++i)
+                bounds_.add(
+                    unit_to_world.point({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.}));
             quadrics.quadrics.push_back(prim);
         } else if (const auto* plane = std::get_if<PlaneShape>(&o.shape)) {
             QuadricPrim prim;
@@ -207,7 +230,8 @@ private:
         }
     }
 
-    void add_instance(int object, const std::shared_ptr<const TriangleMesh>& mesh, const Matrix4& m, const Matrix4& inverse) {
+    void add_instance(int object, const std::shared_ptr<const TriangleMesh>& mesh, const Matrix4& m,
+                      const Matrix4& inverse) {
         for (const Vec3& v : mesh->vertices) bounds_.add(m.point(v));
         pending_.push_back({object, m, inverse, mesh});
     }
@@ -223,7 +247,8 @@ private:
     void attach_instances() {
         std::map<const TriangleMesh*, std::pair<RTCScene, const LeafTable*>> prototypes;
         std::map<const TriangleMesh*, bool> any_flagged;
-        for (const Pending& p : pending_) any_flagged[p.mesh.get()] |= tables_->object_flags[p.object] != 0;
+        for (const Pending& p : pending_)
+            any_flagged[p.mesh.get()] |= tables_->object_flags[p.object] != 0;
         for (const Pending& p : pending_) {
             auto& proto = prototypes[p.mesh.get()];
             if (!proto.first) proto = build_prototype(p.mesh, any_flagged[p.mesh.get()]);
@@ -235,12 +260,14 @@ private:
             rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
             rtcCommitGeometry(instance);
             tables_->instances.push_back({p.object, p.m, p.inverse, proto.second});
-            record(rtcAttachGeometry(scene_, instance), nullptr, int(tables_->instances.size()) - 1);
+            record(rtcAttachGeometry(scene_, instance), nullptr,
+                   int(tables_->instances.size()) - 1);
             rtcReleaseGeometry(instance);
         }
     }
 
-    std::pair<RTCScene, const LeafTable*> build_prototype(const std::shared_ptr<const TriangleMesh>& mesh, bool filtered) {
+    std::pair<RTCScene, const LeafTable*> build_prototype(
+        const std::shared_ptr<const TriangleMesh>& mesh, bool filtered) {
         LeafTable& leaf = new_leaf();
         leaf.mesh = mesh;
         TriangleSoup soup;
@@ -283,13 +310,15 @@ private:
 };
 
 Vec3 transpose_times(const Matrix4& m, Vec3 v) {
-    return {m(0, 0) * v.x + m(1, 0) * v.y + m(2, 0) * v.z, m(0, 1) * v.x + m(1, 1) * v.y + m(2, 1) * v.z,
+    return {m(0, 0) * v.x + m(1, 0) * v.y + m(2, 0) * v.z,
+            m(0, 1) * v.x + m(1, 1) * v.y + m(2, 1) * v.z,
             m(0, 2) * v.x + m(1, 2) * v.y + m(2, 2) * v.z};
 }
 
 }  // namespace
 
-std::unique_ptr<GeometryTables> build_geometry(RTCDevice device, RTCScene scene, const SceneDescription& description) {
+std::unique_ptr<GeometryTables> build_geometry(RTCDevice device, RTCScene scene,
+                                               const SceneDescription& description) {
     return GeometryBuilder(device, scene, description).build();
 }
 
@@ -299,12 +328,15 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
         const InstanceRecord& instance = tables.instances[tables.instance_of_geometry[instance_id]];
         const LeafTable& leaf = *instance.prototype;
         hit.object = instance.object;
-        hit.normal = unit_or_up(transpose_times(instance.world_to_object, leaf.prim_normal[h.primID]));
+        hit.normal =
+            unit_or_up(transpose_times(instance.world_to_object, leaf.prim_normal[h.primID]));
         hit.shading_normal = hit.normal;
         const TriangleMesh& mesh = *leaf.mesh;
         if (!mesh.normals.empty()) {
-            const auto& corners = mesh.normal_faces.empty() ? mesh.faces[h.primID] : mesh.normal_faces[h.primID];
-            const Vec3 n = (1 - h.u - h.v) * mesh.normals[corners[0]] + double(h.u) * mesh.normals[corners[1]] +
+            const auto& corners =
+                mesh.normal_faces.empty() ? mesh.faces[h.primID] : mesh.normal_faces[h.primID];
+            const Vec3 n = (1 - h.u - h.v) * mesh.normals[corners[0]] +
+                           double(h.u) * mesh.normals[corners[1]] +
                            double(h.v) * mesh.normals[corners[2]];
             hit.shading_normal = unit_or_up(transpose_times(instance.world_to_object, n));
         }
@@ -321,8 +353,12 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
     // Embree hands t back in float: at a distance t the point may miss the plane by t x 6e-8,
     // more than the offset of a scene whose only geometry is an infinite plane (extent 1), and
     // its shadow rays would then start behind the plane. Put the point back on the plane.
-    if (!prim.sphere) hit.point = hit.point - (dot(prim.normal, hit.point) - prim.distance) * prim.normal;
-    hit.normal = prim.sphere ? unit_or_up(transpose_times(prim.world_to_unit, prim.world_to_unit.point(hit.point))) : prim.normal;
+    if (!prim.sphere)
+        hit.point = hit.point - (dot(prim.normal, hit.point) - prim.distance) * prim.normal;
+    hit.normal =
+        prim.sphere
+            ? unit_or_up(transpose_times(prim.world_to_unit, prim.world_to_unit.point(hit.point)))
+            : prim.normal;
     hit.shading_normal = hit.normal;
 }
 

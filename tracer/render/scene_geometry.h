@@ -34,11 +34,12 @@ struct GeometryTables;
 // One Embree leaf geometry: world triangles, a mesh prototype or the quadrics.
 struct LeafTable {
     const GeometryTables* tables = nullptr;
-    std::vector<int> prim_object;     // top-level triangles: object of each primitive
-    std::vector<Vec3> prim_normal;    // triangles: unit normal (world, or object space for prototypes)
+    std::vector<int> prim_object;  // top-level triangles: object of each primitive
+    std::vector<Vec3>
+        prim_normal;  // triangles: unit normal (world, or object space for prototypes)
     std::shared_ptr<const TriangleMesh> mesh;  // prototypes: for interpolated normals
     std::vector<QuadricPrim> quadrics;
-    float plane_extent = 1e6f;        // half-size of the box a plane's bounds span
+    float plane_extent = 1e6f;  // half-size of the box a plane's bounds span
 };
 
 struct InstanceRecord {
@@ -48,18 +49,20 @@ struct InstanceRecord {
 };
 
 struct GeometryTables {
-    std::vector<uint8_t> object_flags;                 // per object
-    std::vector<std::unique_ptr<LeafTable>> leaves;    // ownership
-    std::vector<RTCScene> prototypes;                  // released with the tables
-    std::vector<const LeafTable*> leaf_of_geometry;    // top-level geomID -> leaf (or null)
-    std::vector<int> instance_of_geometry;             // top-level geomID -> instances index (or -1)
+    std::vector<uint8_t> object_flags;               // per object
+    std::vector<std::unique_ptr<LeafTable>> leaves;  // ownership
+    std::vector<RTCScene> prototypes;                // released with the tables
+    std::vector<const LeafTable*> leaf_of_geometry;  // top-level geomID -> leaf (or null)
+    std::vector<int> instance_of_geometry;           // top-level geomID -> instances index (or -1)
     std::vector<InstanceRecord> instances;
-    double extent = 1;                                 // size of the finite geometry's box
+    double extent = 1;  // size of the finite geometry's box
 };
 
 // Fills `scene` with the description's objects; returns the tables hits are resolved with.
-std::unique_ptr<GeometryTables> build_geometry(RTCDevice device, RTCScene scene, const SceneDescription& description);
-void add_quadric_geometry(RTCDevice device, RTCScene scene, GeometryTables& tables, LeafTable& leaf);
+std::unique_ptr<GeometryTables> build_geometry(RTCDevice device, RTCScene scene,
+                                               const SceneDescription& description);
+void add_quadric_geometry(RTCDevice device, RTCScene scene, GeometryTables& tables,
+                          LeafTable& leaf);
 // Fills the hit's object, normal and shading normal from an Embree hit (point and t set).
 void resolve_hit(const GeometryTables& tables, const RTCHit& embree_hit, SurfaceHit& hit);
 

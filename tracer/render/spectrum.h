@@ -25,7 +25,8 @@
 namespace rayset::tracer {
 
 inline constexpr int kWavelengths = 4;
-inline constexpr double kLambdaMin = lightmodel::kSpectrumFirstNm, kLambdaMax = lightmodel::kSpectrumLastNm;
+inline constexpr double kLambdaMin = lightmodel::kSpectrumFirstNm,
+                        kLambdaMax = lightmodel::kSpectrumLastNm;
 
 // Values at a path's four wavelengths.
 struct SampledSpectrum {
@@ -51,16 +52,29 @@ inline SampledSpectrum operator*(double s, SampledSpectrum a) {
     for (double& x : a.v) x *= s;
     return a;
 }
-inline SampledSpectrum& operator+=(SampledSpectrum& a, const SampledSpectrum& b) { return a = a + b; }
-inline SampledSpectrum& operator*=(SampledSpectrum& a, const SampledSpectrum& b) { return a = a * b; }
-inline double max_component(const SampledSpectrum& a) { return *std::max_element(a.v, a.v + kWavelengths); }
+inline SampledSpectrum& operator+=(SampledSpectrum& a, const SampledSpectrum& b) {
+    return a = a + b;
+}
+inline SampledSpectrum& operator*=(SampledSpectrum& a, const SampledSpectrum& b) {
+    return a = a * b;
+}
+inline double max_component(const SampledSpectrum& a) {
+    return *std::max_element(a.v, a.v + kWavelengths);
+}
 inline bool is_black(const SampledSpectrum& a) {
     return std::all_of(a.v, a.v + kWavelengths, [](double x) { return x <= 0; });
 }
 
-template <class Q> Q constant_value(double c);
-template <> inline Rgb constant_value<Rgb>(double c) { return {c, c, c}; }
-template <> inline SampledSpectrum constant_value<SampledSpectrum>(double c) { return SampledSpectrum(c); }
+template <class Q>
+Q constant_value(double c);
+template <>
+inline Rgb constant_value<Rgb>(double c) {
+    return {c, c, c};
+}
+template <>
+inline SampledSpectrum constant_value<SampledSpectrum>(double c) {
+    return SampledSpectrum(c);
+}
 
 // The four wavelengths of a path (floats: photons store them) and the hero density at each.
 // A ray of one known wavelength (a delta, the naive ray set) has it first with density 1 and
@@ -78,15 +92,24 @@ struct SampledWavelengths {
 // A hero-wavelength density for paths carrying light of spectral shape `light` (per
 // lightmodel bin, any scale): light x (x-bar + y-bar + z-bar), the film's weights; uniform
 // where that is zero everywhere.
-lightmodel::BinnedSpectrum film_wavelength_density(const std::array<double, lightmodel::kSpectrumBins>& light);
+lightmodel::BinnedSpectrum film_wavelength_density(
+    const std::array<double, lightmodel::kSpectrumBins>& light);
 
 // RGB transport carries no wavelengths; overloads on this type keep one code path for both.
 struct NoWavelengths {};
 
-template <class Q> struct WavelengthsOf;
-template <> struct WavelengthsOf<Rgb> { using type = NoWavelengths; };
-template <> struct WavelengthsOf<SampledSpectrum> { using type = SampledWavelengths; };
-template <class Q> using WavelengthsFor = typename WavelengthsOf<Q>::type;
+template <class Q>
+struct WavelengthsOf;
+template <>
+struct WavelengthsOf<Rgb> {
+    using type = NoWavelengths;
+};
+template <>
+struct WavelengthsOf<SampledSpectrum> {
+    using type = SampledWavelengths;
+};
+template <class Q>
+using WavelengthsFor = typename WavelengthsOf<Q>::type;
 
 // A path's wavelengths, hero drawn from `density`; RGB transport draws nothing.
 template <class Q>

@@ -7,10 +7,10 @@
 // offsets) the departure is kept and said in a comment.
 #include "tracer/scene_language/internal_functions.h"
 
-#include "core/geometry.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include "core/geometry.h"
 
 namespace rayset::tracer {
 namespace {

@@ -19,7 +19,6 @@
 namespace rayset::tracer {
 namespace {
 
-
 double fraction(double v) { return v - std::floor(v); }
 
 // The point in the pattern's own space: every warp undone from the last written to the

@@ -12,7 +12,6 @@
 
 namespace rayset::tracer {
 
-
 struct Matrix4 {
     // Row-major storage of the column-vector matrix: m[4 * row + column].
     std::array<double, 16> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};

@@ -27,7 +27,8 @@ Rays read_all(const std::string& path, RayReadOptions options = {}) {
     Rays out;
     out.header = reader->header();
     RayChunk chunk;
-    while (reader->read(chunk)) out.rays.insert(out.rays.end(), chunk.rays.begin(), chunk.rays.end());
+    while (reader->read(chunk))
+        out.rays.insert(out.rays.end(), chunk.rays.begin(), chunk.rays.end());
     return out;
 }
 
@@ -54,16 +55,20 @@ const char* kFiles[] = {
     "rayfiles/test_08_sdf_reference.ray",
 };
 
-const RayFormat kTargets[] = {RayFormat::tm25, RayFormat::lighttools_binary, RayFormat::lighttools_text,
-                              RayFormat::zemax_binary, RayFormat::zemax_text, RayFormat::speos, RayFormat::csv};
+const RayFormat kTargets[] = {
+    RayFormat::tm25,         RayFormat::lighttools_binary, RayFormat::lighttools_text,
+    RayFormat::zemax_binary, RayFormat::zemax_text,        RayFormat::speos,
+    RayFormat::csv};
 
 // Formats storing wavelength in micrometres round it once each way.
-bool wavelength_in_um(RayFormat f) { return f == RayFormat::zemax_binary || f == RayFormat::zemax_text; }
+bool wavelength_in_um(RayFormat f) {
+    return f == RayFormat::zemax_binary || f == RayFormat::zemax_text;
+}
 
 // Compares what both headers say the rays carry; `via` is the format the rays went through.
 void expect_same_fields(const Rays& original, const Rays& back, RayFormat via) {
     const double to_mm = millimetres_per(original.header.unit);
-            EXPECT_EQ(back.rays.size(), original.rays.size());
+    EXPECT_EQ(back.rays.size(), original.rays.size());
     const double back_to_mm = millimetres_per(back.header.unit);
     const bool same_unit = back.header.unit == original.header.unit;
     const bool radiant = original.header.has_radiant && back.header.has_radiant;
@@ -74,23 +79,34 @@ void expect_same_fields(const Rays& original, const Rays& back, RayFormat via) {
         const Ray& b = back.rays[i];
         if (same_unit) {
             EXPECT_TRUE(same_bits(a.origin.x, b.origin.x) && same_bits(a.origin.y, b.origin.y) &&
-                        same_bits(a.origin.z, b.origin.z)) << "ray " << i;
+                        same_bits(a.origin.z, b.origin.z))
+                << "ray " << i;
         } else {  // converted to the target's unit: one f32 rounding
             const float* pa = &a.origin.x;
             const float* pb = &b.origin.x;
             for (int k = 0; k < 3; ++k)
-                EXPECT_NEAR(pb[k] * back_to_mm, pa[k] * to_mm, 1e-6 * std::abs(pa[k] * to_mm) + 1e-12) << "ray " << i;
+                EXPECT_NEAR(pb[k] * back_to_mm, pa[k] * to_mm,
+                            1e-6 * std::abs(pa[k] * to_mm) + 1e-12)
+                    << "ray " << i;
         }
-        EXPECT_TRUE(same_bits(a.direction.x, b.direction.x) && same_bits(a.direction.y, b.direction.y) &&
-                    same_bits(a.direction.z, b.direction.z)) << "ray " << i;
+        EXPECT_TRUE(same_bits(a.direction.x, b.direction.x) &&
+                    same_bits(a.direction.y, b.direction.y) &&
+                    same_bits(a.direction.z, b.direction.z))
+            << "ray " << i;
         if (radiant) {
-            EXPECT_TRUE(same_bits(a.radiant, b.radiant)) << "ray " << i << ": " << a.radiant << " vs " << b.radiant;
+            EXPECT_TRUE(same_bits(a.radiant, b.radiant))
+                << "ray " << i << ": " << a.radiant << " vs " << b.radiant;
         }
         if (luminous) {
-            EXPECT_TRUE(same_bits(a.luminous, b.luminous)) << "ray " << i << ": " << a.luminous << " vs " << b.luminous;
+            EXPECT_TRUE(same_bits(a.luminous, b.luminous))
+                << "ray " << i << ": " << a.luminous << " vs " << b.luminous;
         }
-        const float wa = original.header.spectral == SpectralKind::single_wavelength ? original.header.single_wavelength : a.wavelength;
-        const float wb = back.header.spectral == SpectralKind::single_wavelength ? back.header.single_wavelength : b.wavelength;
+        const float wa = original.header.spectral == SpectralKind::single_wavelength
+                             ? original.header.single_wavelength
+                             : a.wavelength;
+        const float wb = back.header.spectral == SpectralKind::single_wavelength
+                             ? back.header.single_wavelength
+                             : b.wavelength;
         if (!std::isnan(wa) && !std::isnan(wb)) {
             if (lossy_wavelength) {
                 EXPECT_NEAR(wb, wa, 1e-6 * wa) << "ray " << i;

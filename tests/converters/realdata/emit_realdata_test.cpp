@@ -3,9 +3,9 @@
 // measured LED ray file points along +z, as LED ray files do.
 #include "converters/photometry/emit.h"
 #include "converters/photometry/farfield.h"
+#include "converters/synth_test_support.h"
 #include "support/statistics.h"
 #include "support/test_support.h"
-#include "converters/synth_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -43,7 +43,8 @@ RoundTrip round_trip(const std::string& name) {
     const FarField f = far_field(*reader, far_options);
     write_photometry(ies, f.photometry, PhotometryFormat::ies);
     const Photometry back = read_photometry(ies);
-    EXPECT_EQ(back.candela, f.photometry.candela) << name << ": the IES file holds the far field exactly";
+    EXPECT_EQ(back.candela, f.photometry.candela)
+        << name << ": the IES file holds the far field exactly";
     EXPECT_TRUE(reader->warnings().empty()) << name;
 
     r.exact_total = IntensityDistribution(p, name).total_flux();
@@ -72,9 +73,12 @@ void expect_round_trip(const std::string& name) {
     EXPECT_EQ(c.outside, 0u) << name << ": light where the table has none";
     EXPECT_EQ(c.beyond_bound, 0u) << name << ": worst deviation / bound " << c.worst_ratio;
     EXPECT_LT(c.chi_square, c.critical) << name << " dof " << c.dof;
-    std::printf("[ figures  ] %s: %zu cells, worst/bound %.3f, chi-square %.3f, dof %zu, critical %.1f; flux %.6g lm "
-                "(zonal sum of the table %.6g lm)\n",
-                name.c_str(), c.bins, c.worst_ratio, c.chi_square, c.dof, c.critical, r.exact_total, r.zonal_total);
+    std::printf(
+        "[ figures  ] %s: %zu cells, worst/bound %.3f, chi-square %.3f, dof %zu, critical %.1f; "
+        "flux %.6g lm "
+        "(zonal sum of the table %.6g lm)\n",
+        name.c_str(), c.bins, c.worst_ratio, c.chi_square, c.dof, c.critical, r.exact_total,
+        r.zonal_total);
 }
 
 TEST(EmitRealData, RoundTrip1) {
@@ -104,7 +108,8 @@ TEST(EmitRealData, RoundTripAbsoluteLed) {
 
 TEST(EmitRealData, RoundTripLuxeon) {
     RAYSET_REQUIRE_SHARED_DATA();
-    expect_round_trip("S01.01.02.354_MAXWELL-8-T4_LUXEON_5050_Square_with_glass-MEASURED_IESNA.ies");
+    expect_round_trip(
+        "S01.01.02.354_MAXWELL-8-T4_LUXEON_5050_Square_with_glass-MEASURED_IESNA.ies");
 }
 
 TEST(EmitRealData, TypeBIsRefusedWithAClearError) {
@@ -118,8 +123,10 @@ TEST(EmitRealData, TypeBIsRefusedWithAClearError) {
         emit_rays(p, 10, 1, out, options);
         FAIL() << "type B accepted";
     } catch (const Error& e) {
-        EXPECT_STREQ(e.what(), "flood_2.1.IES: type B photometry cannot be turned into rays: only type C is supported "
-                               "(convert the file to type C first)");
+        EXPECT_STREQ(
+            e.what(),
+            "flood_2.1.IES: type B photometry cannot be turned into rays: only type C is supported "
+            "(convert the file to type C first)");
     }
 }
 
@@ -128,7 +135,8 @@ TEST(FarFieldRealData, OsramLedEmitsAlongPlusZ) {
     // light must be in the +z hemisphere with the peak near gamma 0 when gamma is measured
     // from +z, and the far field must carry the file's 1.68 W exactly.
     RAYSET_REQUIRE_SHARED_DATA();
-    auto reader = open_rays(test::shared_data("rayfiles/rayfile_LERTDUW_S2WP_blue_100k_20161013_IES_TM25.TM25RAY"));
+    auto reader = open_rays(
+        test::shared_data("rayfiles/rayfile_LERTDUW_S2WP_blue_100k_20161013_IES_TM25.TM25RAY"));
     FarFieldOptions options;
     options.quantity = FarFieldQuantity::radiometric;
     const FarField f = far_field(*reader, options);
@@ -143,8 +151,10 @@ TEST(FarFieldRealData, OsramLedEmitsAlongPlusZ) {
     const double fraction = upper / f.total_flux;
     EXPECT_GT(fraction, 0.99);
     EXPECT_LE(f.max_gamma_deg, 30.0);
-    std::printf("[ figures  ] OSRAM LERTDUW: %.5f of the flux at gamma < 88.75 deg from +z, peak %.4g W/sr at C %g gamma %g\n",
-                fraction, f.max_intensity, f.max_c_deg, f.max_gamma_deg);
+    std::printf(
+        "[ figures  ] OSRAM LERTDUW: %.5f of the flux at gamma < 88.75 deg from +z, peak %.4g W/sr "
+        "at C %g gamma %g\n",
+        fraction, f.max_intensity, f.max_c_deg, f.max_gamma_deg);
 }
 
 const char* kOsramBlue = "rayfiles/rayfile_LERTDUW_S2WP_blue_100k_20161013_IES_TM25.TM25RAY";
@@ -161,7 +171,8 @@ FarField smoothed_far_field(const std::string& path) {
 double maximum_against_neighbours(const FarField& f) {
     const Photometry& p = f.photometry;
     const int nc = int(p.horizontal_deg.size()) - 1;
-    const int hm = int(std::lround(f.max_c_deg / 5)) % nc, vm = int(std::lround(f.max_gamma_deg / 2.5));
+    const int hm = int(std::lround(f.max_c_deg / 5)) % nc,
+              vm = int(std::lround(f.max_gamma_deg / 2.5));
     EXPECT_GE(vm, 1);  // the neighbours below are those of a cell off the pole
     const size_t peak = p.index(size_t(hm), size_t(vm));
     double farthest = 0;
@@ -182,14 +193,18 @@ TEST(FarFieldRealData, OsramBlueSmoothedPoleAndMaximum) {
     RAYSET_REQUIRE_SHARED_DATA();
     const FarField f = smoothed_far_field(test::shared_data(kOsramBlue));
     const Photometry& p = f.photometry;
-    for (size_t h = 1; h < p.horizontal_deg.size(); ++h) EXPECT_EQ(p.candela[p.index(h, 0)], p.candela[p.index(0, 0)]);
+    for (size_t h = 1; h < p.horizontal_deg.size(); ++h)
+        EXPECT_EQ(p.candela[p.index(h, 0)], p.candela[p.index(0, 0)]);
     const double smoothed = maximum_against_neighbours(f);
     auto reader = open_rays(test::shared_data(kOsramBlue));
     const double binned = maximum_against_neighbours(far_field(*reader));
-    std::printf("[ figures  ] OSRAM blue smoothed: maximum %.4f +- %.4f cd at C %g gamma %g; gamma 0 %.4f cd in every "
-                "plane; neighbours within %.2f joint standard errors (binned: %.2f)\n",
-                f.max_intensity, std::sqrt(f.variance[p.index(size_t(f.max_c_deg / 5), size_t(f.max_gamma_deg / 2.5))]),
-                f.max_c_deg, f.max_gamma_deg, p.candela[p.index(0, 0)], smoothed, binned);
+    std::printf(
+        "[ figures  ] OSRAM blue smoothed: maximum %.4f +- %.4f cd at C %g gamma %g; gamma 0 %.4f "
+        "cd in every "
+        "plane; neighbours within %.2f joint standard errors (binned: %.2f)\n",
+        f.max_intensity,
+        std::sqrt(f.variance[p.index(size_t(f.max_c_deg / 5), size_t(f.max_gamma_deg / 2.5))]),
+        f.max_c_deg, f.max_gamma_deg, p.candela[p.index(0, 0)], smoothed, binned);
     EXPECT_LE(smoothed, 2);
     EXPECT_GT(binned, 2);
 }
@@ -225,7 +240,8 @@ TEST(FarFieldRealData, OsramBlueHalvesAgreeWithinTheirErrors) {
     const double deg = M_PI / 180;
     auto direction = [&](size_t h, size_t v) {
         const double c = p.horizontal_deg[h] * deg, g = p.vertical_deg[v] * deg;
-        return std::array<double, 3>{std::sin(g) * std::cos(c), std::sin(g) * std::sin(c), std::cos(g)};
+        return std::array<double, 3>{std::sin(g) * std::cos(c), std::sin(g) * std::sin(c),
+                                     std::cos(g)};
     };
     struct Chosen {
         std::array<double, 3> w;
@@ -251,9 +267,11 @@ TEST(FarFieldRealData, OsramBlueHalvesAgreeWithinTheirErrors) {
             chi2 += z2;
         }
     const double critical = test::chi_square_critical(double(chosen.size()), 3.0902);
-    std::printf("[ figures  ] OSRAM blue halves: chi-square %.1f over %zu directions 4 bandwidths apart (99.9%% "
-                "critical %.1f); mean squared z over all %zu cells up to gamma 85: %.2f\n",
-                chi2, chosen.size(), critical, all, all_z2 / double(all));
+    std::printf(
+        "[ figures  ] OSRAM blue halves: chi-square %.1f over %zu directions 4 bandwidths apart "
+        "(99.9%% "
+        "critical %.1f); mean squared z over all %zu cells up to gamma 85: %.2f\n",
+        chi2, chosen.size(), critical, all, all_z2 / double(all));
     ASSERT_GE(chosen.size(), 5u);
     EXPECT_LT(chi2, critical);
 }

@@ -5,11 +5,11 @@
 #include "converters/rays/ray_stream.h"
 #include "support/test_support.h"
 
+#include <gtest/gtest.h>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <gtest/gtest.h>
 
 namespace rayset {
 namespace {
@@ -37,8 +37,14 @@ std::vector<Ray> read_all(RayReader& reader) {
 }
 
 std::array<float, 8> values(const Ray& r, bool photometric) {
-    return {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z,
-            photometric ? r.luminous : r.radiant, r.wavelength};
+    return {r.origin.x,
+            r.origin.y,
+            r.origin.z,
+            r.direction.x,
+            r.direction.y,
+            r.direction.z,
+            photometric ? r.luminous : r.radiant,
+            r.wavelength};
 }
 
 // LightTools text exports print every float with 7 significant digits ("%.7g"): the value a text
@@ -90,8 +96,10 @@ TEST(LightToolsRealData, ThreeRaysPowerOnlyFigures) {
 
 TEST(LightToolsRealData, ThreeRaysWavelengthMatchesPowerOnly) {
     RAYSET_REQUIRE_SHARED_DATA();
-    auto power = open_lighttools_binary(shared_data("rayfiles/RayFileConverter_ThreeRays_PowerOnly.1.ray"));
-    auto colour = open_lighttools_binary(shared_data("rayfiles/RayFileConverter_ThreeRays_Wavelength.1.ray"));
+    auto power =
+        open_lighttools_binary(shared_data("rayfiles/RayFileConverter_ThreeRays_PowerOnly.1.ray"));
+    auto colour =
+        open_lighttools_binary(shared_data("rayfiles/RayFileConverter_ThreeRays_Wavelength.1.ray"));
     EXPECT_EQ(colour->header().spectral, SpectralKind::per_ray_wavelength);
     EXPECT_EQ(colour->header().ray_count, 3u);  // (147 - 44 - 7) / 32
     EXPECT_EQ(colour->header().stated_radiant, power->header().stated_radiant);
@@ -107,9 +115,11 @@ TEST(LightToolsRealData, ThreeRaysWavelengthMatchesPowerOnly) {
 
 TEST(LightToolsRealData, BinaryAndTextExportsGiveTheSameRays) {
     RAYSET_REQUIRE_SHARED_DATA();
-    const std::string text_path = shared_data("rayfiles/RayFileConverter_ThreeRays_Wavelength.1.txt");
+    const std::string text_path =
+        shared_data("rayfiles/RayFileConverter_ThreeRays_Wavelength.1.txt");
     EXPECT_EQ(detect_ray_format(text_path), RayFormat::lighttools_text);
-    auto b = open_lighttools_binary(shared_data("rayfiles/RayFileConverter_ThreeRays_Wavelength.1.ray"));
+    auto b =
+        open_lighttools_binary(shared_data("rayfiles/RayFileConverter_ThreeRays_Wavelength.1.ray"));
     auto t = open_lighttools_text(text_path);
     const RayHeader &hb = b->header(), &ht = t->header();
     EXPECT_TRUE(t->flux_is_relative());
@@ -125,7 +135,8 @@ TEST(LightToolsRealData, BinaryAndTextExportsGiveTheSameRays) {
     ASSERT_EQ(rt.size(), 3u);
     for (size_t i = 0; i < 3; ++i) {
         auto vb = values(rb[i], false), vt = values(rt[i], false);
-        for (size_t j = 0; j < 8; ++j) EXPECT_EQ(bits(vt[j]), bits(printed_7g(vb[j]))) << "ray " << i << " value " << j;
+        for (size_t j = 0; j < 8; ++j)
+            EXPECT_EQ(bits(vt[j]), bits(printed_7g(vb[j]))) << "ray " << i << " value " << j;
     }
 }
 
@@ -145,9 +156,11 @@ TEST(LightToolsRealData, Cyl10kTextFigures) {
     double sum = 0;
     std::vector<Ray> rays = read_all(*d);
     for (const Ray& r : rays) sum += r.luminous;
-    EXPECT_NEAR(sum, 10000, 1e-2);  // 10000 values of 7 digits each: rounding errors of ~1e-7 relative
-    EXPECT_EQ(rays[0].origin, (Vec3f{-5.912486f, 7.240707e-16f, 1.935107f}));  // first row of the file
-    EXPECT_EQ(rays[9999].luminous, 1.21945f);                                   // last row
+    EXPECT_NEAR(sum, 10000,
+                1e-2);  // 10000 values of 7 digits each: rounding errors of ~1e-7 relative
+    EXPECT_EQ(rays[0].origin,
+              (Vec3f{-5.912486f, 7.240707e-16f, 1.935107f}));  // first row of the file
+    EXPECT_EQ(rays[9999].luminous, 1.21945f);                  // last row
 }
 
 // The TM-25 export of the same LightTools source: same rays, fluxes on another scale.
@@ -164,7 +177,8 @@ TEST(LightToolsRealData, Cyl10kTextMatchesTm25Export) {
     EXPECT_NEAR(tm25->totals().luminous, 1.0, 1e-6);
     for (size_t i = 0; i < rt.size(); ++i) {
         auto vt = values(rt[i], true), vm = values(rm[i], true);
-        for (size_t j = 0; j < 6; ++j) ASSERT_EQ(bits(vt[j]), bits(printed_7g(vm[j]))) << "ray " << i << " value " << j;
+        for (size_t j = 0; j < 6; ++j)
+            ASSERT_EQ(bits(vt[j]), bits(printed_7g(vm[j]))) << "ray " << i << " value " << j;
         // 7 printed digits: at most 5e-7 relative, plus f32 rounding of the scaled values.
         ASSERT_NEAR(vt[6] / vm[6], 1.0, 1e-6) << "ray " << i;
     }
@@ -177,12 +191,14 @@ TEST(LightToolsRealData, RealRaysSurviveEveryWriter) {
     const struct {
         const char* file;
         bool photometric;
-    } sources[] = {{"rayfiles/RayFileConverter_ThreeRays_Wavelength.1.ray", false}, {"rayfiles/Cyl10k.1.ray", true}};
+    } sources[] = {{"rayfiles/RayFileConverter_ThreeRays_Wavelength.1.ray", false},
+                   {"rayfiles/Cyl10k.1.ray", true}};
     for (const auto& source : sources) {
         auto original = open_rays(shared_data(source.file));
         const RayHeader header = original->header();
         std::vector<Ray> rays = read_all(*original);
-        for (RayFormat format : {RayFormat::lighttools_binary, RayFormat::lighttools_text, RayFormat::csv}) {
+        for (RayFormat format :
+             {RayFormat::lighttools_binary, RayFormat::lighttools_text, RayFormat::csv}) {
             SCOPED_TRACE(std::string(source.file) + " as " + to_string(format));
             const std::string out = dir.file(std::string("copy.") + to_string(format));
             auto in = open_rays(shared_data(source.file));

@@ -1,5 +1,6 @@
 // The 14 real IES and EULUMDAT files: figures read off the files by hand, total flux against the
-// lumens the files state, and round trips IES -> IES, LDT -> LDT, IES -> LDT -> IES, LDT -> IES -> LDT.
+// lumens the files state, and round trips IES -> IES, LDT -> LDT, IES -> LDT -> IES, LDT -> IES ->
+// LDT.
 #include "converters/photometry/eulumdat.h"
 #include "converters/photometry/ies.h"
 #include "converters/photometry/photometry.h"
@@ -17,11 +18,15 @@ namespace {
 using test::shared_data;
 
 constexpr double pi = 3.14159265358979323846;
-const std::string luxeon = "S01.01.02.354_MAXWELL-8-T4_LUXEON_5050_Square_with_glass-MEASURED_IESNA.ies";
+const std::string luxeon =
+    "S01.01.02.354_MAXWELL-8-T4_LUXEON_5050_Square_with_glass-MEASURED_IESNA.ies";
 const std::string ledvance = "4058075580602_FL_MAX_LUM_600W_757_SYM_60_WAL.ldt";
-const std::vector<std::string> ies_files = {"1.IES", "2.IES", "3.IES", "7.IES", "flood_2.1.IES", "ABSOLUTE_LED.ies",
-                                            luxeon, "TILT_TEST_SYNTHETIC.ies"};
-const std::vector<std::string> ldt_files = {"0-0-0.ldt", "0-2-0.ldt", "0-3-0.ldt", "0-4-0.ldt", "1-1-0.ldt", ledvance};
+const std::vector<std::string> ies_files = {"1.IES",         "2.IES",
+                                            "3.IES",         "7.IES",
+                                            "flood_2.1.IES", "ABSOLUTE_LED.ies",
+                                            luxeon,          "TILT_TEST_SYNTHETIC.ies"};
+const std::vector<std::string> ldt_files = {"0-0-0.ldt", "0-2-0.ldt", "0-3-0.ldt",
+                                            "0-4-0.ldt", "1-1-0.ldt", ledvance};
 
 std::string path_of(const std::string& name) { return shared_data("photometry/" + name); }
 
@@ -47,14 +52,18 @@ TEST(PhotometryRealData, QuadrantFeetAbsolute_1) {
     IesFile f = read_ies(path_of("1.IES"));
     EXPECT_EQ(f.version, IesVersion::lm63_2002);
     EXPECT_EQ(f.keywords.front().key, "TEST");
-    EXPECT_EQ(f.keywords[5].value, "FROSTED TRANSLUCENT PLASTIC DIFFUSER, SANDWICHED BETWEEN CAST\nMETAL HOUSING AND CAST METAL "
-                                   "HEAT SINK, DIFFUSER FROSTED SIDE\nIN, 4 WHITE CIRCUIT BOARD EACH WITH 48 LEDS, MOLDED "
-                                   "PLASTIC\nREFLECTOR WITH SPECULAR FINISH.");
+    EXPECT_EQ(
+        f.keywords[5].value,
+        "FROSTED TRANSLUCENT PLASTIC DIFFUSER, SANDWICHED BETWEEN CAST\nMETAL HOUSING AND CAST "
+        "METAL "
+        "HEAT SINK, DIFFUSER FROSTED SIDE\nIN, 4 WHITE CIRCUIT BOARD EACH WITH 48 LEDS, MOLDED "
+        "PLASTIC\nREFLECTOR WITH SPECULAR FINISH.");
     EXPECT_EQ(f.multiplier, 1.032007);
     Photometry p = ies_to_photometry(f);
     EXPECT_EQ(p.vertical_deg.size(), 74u);
     EXPECT_EQ(p.vertical_deg[27], 66);  // the extra angle between 65 and 67.5
-    EXPECT_EQ(p.horizontal_deg, (std::vector<double>{0, 5, 15, 25, 35, 45, 46, 55, 65, 75, 85, 90}));
+    EXPECT_EQ(p.horizontal_deg,
+              (std::vector<double>{0, 5, 15, 25, 35, 45, 46, 55, 65, 75, 85, 90}));
     EXPECT_EQ(p.lamp_count, 192);
     EXPECT_TRUE(std::isnan(p.rated_lumens));
     EXPECT_EQ(p.candela.front(), 389.0 * 1.032007);  // multiplier applied once
@@ -139,7 +148,8 @@ TEST(PhotometryRealData, TypeBFloodlight) {
     // ours within 0.3 %, so the 1 % is the lab's own rule; 2 % accepts it and still rejects the
     // swapped frame.
     EXPECT_NEAR(p.total_flux(), 10601, 0.02 * 10601);
-    EXPECT_THROW(write_photometry(testing::TempDir() + "/flood.ldt", p, PhotometryFormat::eulumdat), Error);
+    EXPECT_THROW(write_photometry(testing::TempDir() + "/flood.ldt", p, PhotometryFormat::eulumdat),
+                 Error);
 }
 
 TEST(PhotometryRealData, RelativePhotometryLm63_1995) {
@@ -189,8 +199,11 @@ TEST(PhotometryRealData, EulumdatTemplatesEveryIsym) {
         int isym;
         size_t planes;
         double first, last;
-    } cases[] = {{"0-0-0.ldt", 0, 24, 0, 345}, {"0-2-0.ldt", 2, 13, 0, 180}, {"0-3-0.ldt", 3, 13, 90, 270},
-                 {"0-4-0.ldt", 4, 7, 0, 90},   {"1-1-0.ldt", 1, 1, 0, 0}};
+    } cases[] = {{"0-0-0.ldt", 0, 24, 0, 345},
+                 {"0-2-0.ldt", 2, 13, 0, 180},
+                 {"0-3-0.ldt", 3, 13, 90, 270},
+                 {"0-4-0.ldt", 4, 7, 0, 90},
+                 {"1-1-0.ldt", 1, 1, 0, 0}};
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);
         EulumdatFile f = read_eulumdat(path_of(c.name));
@@ -270,7 +283,8 @@ TEST(PhotometryRealData, IesToIesIsExact) {
         write_ies(dir.file("f.ies"), f);
         IesFile g = read_ies(dir.file("f.ies"));
         ASSERT_EQ(g.keywords.size(), f.keywords.size());
-        for (size_t i = 0; i < f.keywords.size(); ++i) EXPECT_EQ(g.keywords[i].value, f.keywords[i].value);
+        for (size_t i = 0; i < f.keywords.size(); ++i)
+            EXPECT_EQ(g.keywords[i].value, f.keywords[i].value);
         EXPECT_EQ(g.version, f.version);
         EXPECT_EQ(g.tilt.multipliers, f.tilt.multipliers);
         EXPECT_EQ(g.candela, f.candela);
@@ -297,7 +311,8 @@ TEST(PhotometryRealData, IesToLdtToIesKeepsWhatBothHold) {
         if (p.type != PhotometricType::C) continue;  // EULUMDAT has no type B (checked above)
         SCOPED_TRACE(name);
         write_photometry(dir.file("x.ldt"), p, PhotometryFormat::eulumdat);
-        write_photometry(dir.file("x.ies"), read_photometry(dir.file("x.ldt")), PhotometryFormat::ies);
+        write_photometry(dir.file("x.ies"), read_photometry(dir.file("x.ldt")),
+                         PhotometryFormat::ies);
         Photometry q = read_photometry(dir.file("x.ies"));
         // cd -> cd/klm -> cd, m -> mm -> m: equal to rounding.
         expect_same_values(p, q, 1e-13);
@@ -306,7 +321,7 @@ TEST(PhotometryRealData, IesToLdtToIesKeepsWhatBothHold) {
             if (it == p.keywords.end()) continue;
             std::string expected = it->second;
             std::replace(expected.begin(), expected.end(), '\n', ' ');  // EULUMDAT text is one line
-            auto back = q.keywords.find(key);                           // an empty line maps to no keyword
+            auto back = q.keywords.find(key);  // an empty line maps to no keyword
             EXPECT_EQ(back == q.keywords.end() ? "" : back->second, expected) << key;
         }
     }
@@ -328,7 +343,8 @@ TEST(PhotometryRealData, LdtToLdtAndThroughIes) {
         write_photometry(dir.file("p.ldt"), p, PhotometryFormat::eulumdat);
         expect_same_values(p, read_photometry(dir.file("p.ldt")), 1e-13);
         write_photometry(dir.file("p.ies"), p, PhotometryFormat::ies);
-        write_photometry(dir.file("q.ldt"), read_photometry(dir.file("p.ies")), PhotometryFormat::eulumdat);
+        write_photometry(dir.file("q.ldt"), read_photometry(dir.file("p.ies")),
+                         PhotometryFormat::eulumdat);
         EulumdatFile c = read_eulumdat(dir.file("q.ldt"));
         EXPECT_EQ(c.company, a.company);
         EXPECT_EQ(c.luminaire_name, a.luminaire_name);
@@ -340,11 +356,13 @@ TEST(PhotometryRealData, LdtToLdtAndThroughIes) {
         EXPECT_EQ(c.gamma_angles_deg, a.gamma_angles_deg);
         EXPECT_EQ(c.luminaire_height_mm, a.luminaire_height_mm);
         // The templates hold 1 cd/klm everywhere: every plane equal, so the writer picks Isym 1.
-        bool uniform = std::all_of(a.intensities.begin(), a.intensities.end(), [&](double x) { return x == a.intensities[0]; });
+        bool uniform = std::all_of(a.intensities.begin(), a.intensities.end(),
+                                   [&](double x) { return x == a.intensities[0]; });
         EXPECT_EQ(c.isym, uniform ? 1 : a.isym);
         if (!uniform) {
             ASSERT_EQ(c.intensities.size(), a.intensities.size());
-            for (size_t i = 0; i < a.intensities.size(); ++i) EXPECT_NEAR(c.intensities[i], a.intensities[i], 1e-13 * a.intensities[i]);
+            for (size_t i = 0; i < a.intensities.size(); ++i)
+                EXPECT_NEAR(c.intensities[i], a.intensities[i], 1e-13 * a.intensities[i]);
         }
     }
 }

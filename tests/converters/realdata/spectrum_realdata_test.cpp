@@ -1,5 +1,5 @@
-#include "converters/rays/ray_stream.h"
 #include "converters/colour/spectrum.h"
+#include "converters/rays/ray_stream.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -18,7 +18,8 @@ namespace {
 // would fail it.
 TEST(SpectrumRealData, OsramBlueLuminousFluxFollowsFromItsSpectralTable) {
     RAYSET_REQUIRE_SHARED_DATA();
-    auto reader = open_rays(test::shared_data("rayfiles/rayfile_LERTDUW_S2WP_blue_100k_20161013_IES_TM25.TM25RAY"));
+    auto reader = open_rays(
+        test::shared_data("rayfiles/rayfile_LERTDUW_S2WP_blue_100k_20161013_IES_TM25.TM25RAY"));
     const RayHeader& file = reader->file_header();
     ASSERT_EQ(file.spectral, SpectralKind::shared_table);
     ASSERT_EQ(file.spectral_tables.size(), 1u);
@@ -36,7 +37,8 @@ TEST(SpectrumRealData, OsramBlueLuminousFluxFollowsFromItsSpectralTable) {
     double radiant = 0, luminous = 0;
     RayChunk chunk;
     while (reader->read(chunk))
-        for (const Ray& r : chunk.rays) radiant += weights.radiant(r), luminous += weights.luminous(r);
+        for (const Ray& r : chunk.rays)
+            radiant += weights.radiant(r), luminous += weights.luminous(r);
     EXPECT_NEAR(radiant, 1.68, 1.68 * 1e-6);
     EXPECT_NEAR(luminous / 54.644249, 1, 5e-6);
 }
@@ -44,14 +46,16 @@ TEST(SpectrumRealData, OsramBlueLuminousFluxFollowsFromItsSpectralTable) {
 // The synthetic point source is monochromatic at 500 nm: every ray's efficacy is Km V(500).
 TEST(SpectrumRealData, SingleWavelengthFileHasTheEfficacyOfItsLine) {
     RAYSET_REQUIRE_SHARED_DATA();
-    auto reader = open_rays(test::shared_data("rayfiles/CreatePointSourceRayFile_farfield.TM25ray"));
+    auto reader =
+        open_rays(test::shared_data("rayfiles/CreatePointSourceRayFile_farfield.TM25ray"));
     ASSERT_EQ(reader->header().spectral, SpectralKind::single_wavelength);
     EXPECT_EQ(reader->header().single_wavelength, 500.0f);
     PhotometricWeights weights(reader->header());
     RayChunk chunk;
     ASSERT_TRUE(reader->read(chunk));
     EXPECT_DOUBLE_EQ(weights.efficacy(chunk.rays[0]), kMaxLuminousEfficacy * 0.323);
-    EXPECT_DOUBLE_EQ(weights.luminous(chunk.rays[0]), chunk.rays[0].radiant * kMaxLuminousEfficacy * 0.323);
+    EXPECT_DOUBLE_EQ(weights.luminous(chunk.rays[0]),
+                     chunk.rays[0].radiant * kMaxLuminousEfficacy * 0.323);
 }
 
 // LightTools' simulated cylinder carries luminous flux only, no spectrum: its power is unknown.

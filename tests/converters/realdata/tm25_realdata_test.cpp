@@ -95,7 +95,8 @@ TEST(Tm25RealData, OsramBlueChip) {
     EXPECT_EQ(h.text[0], "LERTDUW_S2WP");
     EXPECT_EQ(h.text[1], "OSRAM Opto Semiconductors GmbH");
     EXPECT_EQ(h.text[4], "Rigo 801");
-    EXPECT_EQ(decoder->locate(0).str(), "byte 36928");  // 76-point table padded from 612 to 640 bytes
+    EXPECT_EQ(decoder->locate(0).str(),
+              "byte 36928");  // 76-point table padded from 612 to 640 bytes
 
     Scan s = scan(*decoder);
     EXPECT_EQ(s.rays, 100000u);
@@ -164,7 +165,8 @@ TEST(Tm25RealData, PointSourceWithInconsistentHeader) {
 
 TEST(Tm25RealData, EveryFileWritesBackByteIdentical) {
     RAYSET_REQUIRE_SHARED_DATA();
-    for (const char* file : {kOsram, kCyl10k, kFaberge, kPointSource}) EXPECT_EQ(first_difference_after_rewrite(file), -1) << file;
+    for (const char* file : {kOsram, kCyl10k, kFaberge, kPointSource})
+        EXPECT_EQ(first_difference_after_rewrite(file), -1) << file;
 }
 
 // The same through the generic reader and writer (what `rayconv` does for TM-25 -> TM-25).

@@ -86,8 +86,9 @@ TEST(ZemaxSpeosConversion, SdfToSpeosMatchesTheReferenceConversion) {
 TEST(ZemaxSpeosConversion, SpeosToSdfMatchesTheReferenceConversion) {
     RAYSET_REQUIRE_SHARED_DATA();
     test::ScratchDir dir;
-    const std::string ours = convert(dir, "test_08_ray.ray", RayFormat::zemax_binary,
-                                     {"stated luminous total (Zemax states one total: watts here)"});
+    const std::string ours =
+        convert(dir, "test_08_ray.ray", RayFormat::zemax_binary,
+                {"stated luminous total (Zemax states one total: watts here)"});
     const std::string theirs = rayfile("test_08_ray_reference.sdf");
     expect_same_rays(ours, theirs);
     const std::string a = test::read_file(ours), b = test::read_file(theirs);

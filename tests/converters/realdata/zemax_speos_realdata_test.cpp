@@ -4,9 +4,9 @@
 // "ray_content" is test_08_ray.ray (SPEOS), "dat_content" test_08_dat.DAT (Zemax flux only),
 // "sdf_content" test_08_sdf.sdf (Zemax spectral); the *_reference files are that project's
 // conversions of them and hold the same rays.
+#include "converters/colour/spectrum.h"
 #include "converters/formats/codecs.h"
 #include "converters/rays/io.h"
-#include "converters/colour/spectrum.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -32,12 +32,16 @@ struct Reference {
 };
 
 Reference reference(const std::string& key) {
-    const auto json = nlohmann::json::parse(test::read_file(rayfile("test_08_rayfile_reference_results.json")));
+    const auto json =
+        nlohmann::json::parse(test::read_file(rayfile("test_08_rayfile_reference_results.json")));
     const auto& a = json.at(key);
     Reference r{a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<uint64_t>(), {}};
     for (size_t i = 3; i + 8 <= a.size(); i += 8) {
         auto f = [&](size_t k) { return a.at(i + k).get<double>(); };
-        r.rays.push_back({{float(f(0)), float(f(1)), float(f(2))}, {float(f(3)), float(f(4)), float(f(5))}, f(6), f(7)});
+        r.rays.push_back({{float(f(0)), float(f(1)), float(f(2))},
+                          {float(f(3)), float(f(4)), float(f(5))},
+                          f(6),
+                          f(7)});
     }
     return r;
 }
@@ -59,7 +63,8 @@ std::vector<Ray> read_all(RayReader& reader) {
 // Positions and directions are f32 in both, so they must be equal; wavelengths go through the
 // um <-> nm conversion (one float rounding: 1e-6 relative); `nm` is the wavelength of rays
 // that carry none of their own (Zemax flux-only files).
-void expect_rays(const std::vector<Ray>& rays, const Reference& ref, bool luminous = false, float nm = kUnknown) {
+void expect_rays(const std::vector<Ray>& rays, const Reference& ref, bool luminous = false,
+                 float nm = kUnknown) {
     ASSERT_EQ(rays.size(), ref.count);
     ASSERT_EQ(ref.rays.size(), ref.count);
     for (size_t i = 0; i < rays.size(); ++i) {
@@ -79,7 +84,9 @@ constexpr double kLuminousConvention = 5e-6;
 TEST(SpeosRealData, ThreeFilesDecodeToTheReferenceValues) {
     RAYSET_REQUIRE_SHARED_DATA();
     const std::pair<const char*, const char*> files[] = {
-        {"test_08_ray.ray", "ray_content"}, {"test_08_dat_reference.ray", "dat_content"}, {"test_08_sdf_reference.ray", "sdf_content"}};
+        {"test_08_ray.ray", "ray_content"},
+        {"test_08_dat_reference.ray", "dat_content"},
+        {"test_08_sdf_reference.ray", "sdf_content"}};
     for (const auto& [name, key] : files) {
         SCOPED_TRACE(name);
         const Reference ref = reference(key);
@@ -108,7 +115,8 @@ TEST(ZemaxRealData, FluxOnlyDatDecodesToTheReferenceValues) {
     ASSERT_EQ(h.spectral, SpectralKind::single_wavelength);
     expect_rays(read_all(*decoder), ref, false, h.single_wavelength);
     // The reference's luminous figure is 1 W at the header's 550 nm through V(lambda).
-    const double lm = kMaxLuminousEfficacy * photopic_efficiency(h.single_wavelength) * h.stated_radiant;
+    const double lm =
+        kMaxLuminousEfficacy * photopic_efficiency(h.single_wavelength) * h.stated_radiant;
     EXPECT_NEAR(lm, ref.luminous, kLuminousConvention * ref.luminous);
 }
 
@@ -116,8 +124,8 @@ TEST(ZemaxRealData, FluxOnlyDatDecodesToTheReferenceValues) {
 // 0.486..0.656 W); it is read as written, and the reference decodes it the same way.
 TEST(ZemaxRealData, SpectralSdfFilesDecodeToTheReferenceValues) {
     RAYSET_REQUIRE_SHARED_DATA();
-    const std::pair<const char*, const char*> files[] = {{"test_08_sdf.sdf", "sdf_content"},
-                                                          {"test_08_ray_reference.sdf", "ray_content"}};
+    const std::pair<const char*, const char*> files[] = {
+        {"test_08_sdf.sdf", "sdf_content"}, {"test_08_ray_reference.sdf", "ray_content"}};
     for (const auto& [name, key] : files) {
         SCOPED_TRACE(name);
         const Reference ref = reference(key);
@@ -162,12 +170,14 @@ TEST(ZemaxRealData, LumensFileHoldsOneRayOfTheSourceFlux) {
 TEST(ZemaxRealData, ThreeRayZemaxFileMatchesItsLightToolsTwin) {
     RAYSET_REQUIRE_SHARED_DATA();
     auto zemax = open_zemax_binary(rayfile("RayFileConverter_ThreeRays_Wavelength_ZMX.ray"));
-    auto lighttools = open_lighttools_binary(rayfile("RayFileConverter_ThreeRays_Wavelength.1.ray"));
+    auto lighttools =
+        open_lighttools_binary(rayfile("RayFileConverter_ThreeRays_Wavelength.1.ray"));
     const RayHeader& h = zemax->header();
     EXPECT_EQ(h.description, "LT ray file");
     EXPECT_EQ(h.unit, LengthUnit::mm);
     EXPECT_EQ(h.ray_count, 3u);
-    EXPECT_EQ(h.spectral, SpectralKind::per_ray_wavelength);  // the header's NaN wavelength is ignored
+    EXPECT_EQ(h.spectral,
+              SpectralKind::per_ray_wavelength);  // the header's NaN wavelength is ignored
     EXPECT_EQ(h.stated_radiant, lighttools->header().stated_radiant);
     EXPECT_EQ(h.placement.scale, (Vec3f{1, 1, 1}));
     const auto z = read_all(*zemax), l = read_all(*lighttools);
@@ -209,7 +219,9 @@ TEST(ZemaxRealData, TextFilesReadWithTheirValues) {
         sum += p[i].radiant;
     }
     // The file states no total, so the rays keep their own: the sum of the printed fluxes.
-    EXPECT_NEAR(sum, 45.576770 + 12.103610 + 7.263157 + 4.487494 + 3.219967 + 12.181310 + 1.790850 + 49.274200 + 2.968579,
+    EXPECT_NEAR(sum,
+                45.576770 + 12.103610 + 7.263157 + 4.487494 + 3.219967 + 12.181310 + 1.790850 +
+                    49.274200 + 2.968579,
                 1e-5);
     EXPECT_EQ(plain->radiant_scale(), 1.0);
 }
