@@ -17,6 +17,7 @@
 #include "tracer/film/checkpoint.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
+#include "tracer/tracer_support.h"
 
 namespace rayset::tracer {
 namespace {
@@ -37,24 +38,9 @@ std::string cornell_with_receiver() {
 // the path tracer's ordinary light all enter the render.
 std::string bidirectional_box(const test::ScratchDir& dir) {
     const std::string rays = dir.file("disk.tm25ray"), model = dir.file("disk.vdb");
-    analytic::Spectrum spectrum;
-    spectrum.wavelength_nm = 555;
-    const auto disk = analytic::LambertianDisk::with_flux(1, 1, spectrum);
-    {
-        auto out = create_rays(rays, RayFormat::tm25, synth_header(disk, 100000, 7));
-        synthesize(disk, 100000, 7, *out);
-    }
+    test::write_disk_rays(rays, 100000);
     lightmodel::write_model(lightmodel::build_model(rays, {}), model);
-    return R"(
-        global_settings { integrator "bidirectional" }
-        camera { location <0, 0, -45> direction <0, 0, 1> right <1, 0, 0> up <0, 1, 0> angle 90 }
-        box { <-50, -50, -50>, <50, 50, 50> pigment { rgb 1 } finish { diffuse 0.5 ambient 0 } }
-        light_source { <20, 40, 0> color rgb 0.0001 }
-        illuminance_receiver { <-50, -49.9, -50>, <0, 0, 100>, <100, 0, 0>
-            resolution <3, 3> name "floor" }
-        ray_source { ")" +
-           model + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
-    )";
+    return test::disk_in_box_scene(model);
 }
 
 void expect_same_bits(const SampleGrid& a, const SampleGrid& b, const std::string& what) {

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "converters/analytic/analytic_sources.h"
+#include "converters/analytic/synth.h"
 #include "tracer/render/rgb.h"
 
 namespace rayset::test {
@@ -43,6 +45,27 @@ WallAverage wall_average(const std::vector<tracer::ReceiverMap>& maps) {
                 squares += se * se, ++cells;
             }
     return {sum / cells, std::sqrt(squares) / cells};
+}
+
+void write_disk_rays(const std::string& path, uint64_t rays) {
+    analytic::Spectrum spectrum;
+    spectrum.wavelength_nm = 555;
+    const auto disk = analytic::LambertianDisk::with_flux(1, 1, spectrum);
+    auto out = create_rays(path, RayFormat::tm25, synth_header(disk, rays, 7));
+    synthesize(disk, rays, 7, *out);
+}
+
+std::string disk_in_box_scene(const std::string& source) {
+    return R"(
+        global_settings { integrator "bidirectional" }
+        camera { location <0, 0, -45> direction <0, 0, 1> right <1, 0, 0> up <0, 1, 0> angle 90 }
+        box { <-50, -50, -50>, <50, 50, 50> pigment { rgb 1 } finish { diffuse 0.5 ambient 0 } }
+        light_source { <20, 40, 0> color rgb 0.0001 }
+        illuminance_receiver { <-50, -49.9, -50>, <0, 0, 100>, <100, 0, 0>
+            resolution <3, 3> name "floor" }
+        ray_source { ")" +
+           source + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
+    )";
 }
 
 }  // namespace rayset::test

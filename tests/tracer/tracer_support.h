@@ -3,6 +3,7 @@
 // and the wall average read from its receivers.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -34,5 +35,13 @@ struct WallAverage {
     double mean = 0, standard_error = 0;
 };
 WallAverage wall_average(const std::vector<tracer::ReceiverMap>& maps);
+
+// A Lambertian disk (radius 1 mm, 1 W at 555 nm) as `rays` rays of a TM-25 file (seed 7).
+void write_disk_rays(const std::string& path, uint64_t rays);
+// A closed grey box (side 100 mm, diffuse 0.5) seen from inside, a faint point light, a 3 x 3
+// receiver on its floor and the ray source `source` (a ray file or model, as the scene names
+// it) 20 mm above the centre emitting down; the bidirectional integrator. Primary and
+// secondary light, direct visibility and the path tracer's ordinary light all enter it.
+std::string disk_in_box_scene(const std::string& source);
 
 }  // namespace rayset::test
