@@ -6,6 +6,7 @@
 namespace rayset {
 
 inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kRadiansPerDegree = kPi / 180;
 
 struct Vec3 {
     double x = 0, y = 0, z = 0;

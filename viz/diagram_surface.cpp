@@ -1,4 +1,5 @@
 #include "viz/diagram_surface.h"
+#include "core/geometry.h"
 
 #include "core/error.h"
 #include "viz/vtk_arrays.h"
@@ -60,9 +61,9 @@ vtkSmartPointer<vtkPolyData> diagram_surface(const lightmodel::LightModel& model
     };
     add({0, 0, 1});
     for (int j = 1; j < rings; ++j) {
-        const double theta = M_PI * j / rings;
+        const double theta = kPi * j / rings;
         for (int i = 0; i < sectors; ++i) {
-            const double phi = 2 * M_PI * i / sectors;
+            const double phi = 2 * kPi * i / sectors;
             add({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
                  std::cos(theta)});
         }

@@ -1,4 +1,5 @@
 #include "viz/photometric_solid.h"
+#include "core/geometry.h"
 
 #include "viz/vtk_arrays.h"
 
@@ -16,7 +17,7 @@ vtkSmartPointer<vtkPolyData> photometric_solid(const IntensityTable& table, doub
                                                double gamma_step_deg) {
     const int nc = std::max(3, int(std::lround(360 / c_step_deg)));
     const int ng = std::max(2, int(std::lround(180 / gamma_step_deg)));
-    const double deg = M_PI / 180;
+    const double deg = kRadiansPerDegree;
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetDataTypeToDouble();  // exported values keep the table's precision
     auto intensity = named_doubles("intensity");

@@ -1,4 +1,5 @@
 #include "viz/polar_curves.h"
+#include "core/geometry.h"
 
 #include "viz/vtk_arrays.h"
 
@@ -35,7 +36,7 @@ std::vector<CurvePoint> curve_points(const Photometry& p, double c) {
 }
 
 vtkIdType insert_polar_point(vtkPoints* points, const CurvePoint& at, double value) {
-    const double deg = M_PI / 180;
+    const double deg = kRadiansPerDegree;
     return points->InsertNextPoint(at.side * value * std::sin(at.gamma * deg),
                                    -value * std::cos(at.gamma * deg), 0);
 }
@@ -111,7 +112,7 @@ double polar_ring_step(double max_intensity) {
 }
 
 vtkSmartPointer<vtkPolyData> polar_grid(double ring_step, int rings) {
-    const double deg = M_PI / 180;
+    const double deg = kRadiansPerDegree;
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetDataTypeToDouble();  // exported values keep the table's precision
     auto lines = vtkSmartPointer<vtkCellArray>::New();

@@ -1,4 +1,5 @@
 #include "viz/scene.h"
+#include "core/geometry.h"
 
 #include "converters/rays/io.h"
 #include "core/error.h"
@@ -42,7 +43,7 @@ void place_camera(vtkRenderer* renderer, const ViewHandles& handles,
     } else {
         // Camera direction from the focal point: azimuth about +z from +x, elevation above the
         // xy plane; +z stays up on the screen (LED sources emit along +z) except looking along it.
-        const double deg = M_PI / 180, az = t.azimuth * deg, el = t.elevation * deg;
+        const double deg = kRadiansPerDegree, az = t.azimuth * deg, el = t.elevation * deg;
         camera->SetPosition(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
         if (std::abs(std::cos(el)) < 1e-3)
             camera->SetViewUp(-std::sin(az), std::cos(az), 0);

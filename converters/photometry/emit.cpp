@@ -2,6 +2,7 @@
 
 #include "converters/rays/io.h"
 #include "core/error.h"
+#include "core/geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +10,6 @@
 namespace rayset {
 
 namespace {
-
-constexpr double kRadian = 3.14159265358979323846 / 180;
 
 bool radiometric(const Photometry& p) { return p.keywords.count("_RADIOMETRIC") != 0; }
 
@@ -117,9 +116,10 @@ void emit_rays(const Photometry& photometry, uint64_t ray_count, uint64_t seed, 
             distribution.sample(rng, c, gamma);
             Ray ray;
             ray.origin = origin(shape, rng);
-            const double sg = std::sin(gamma * kRadian);
-            ray.direction = {float(sg * std::cos(c * kRadian)), float(sg * std::sin(c * kRadian)),
-                             float(polar * std::cos(gamma * kRadian))};
+            const double sg = std::sin(gamma * kRadiansPerDegree);
+            ray.direction = {float(sg * std::cos(c * kRadiansPerDegree)),
+                             float(sg * std::sin(c * kRadiansPerDegree)),
+                             float(polar * std::cos(gamma * kRadiansPerDegree))};
             (radiant ? ray.radiant : ray.luminous) = flux;
             chunk.rays.push_back(ray);
         }

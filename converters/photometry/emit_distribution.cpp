@@ -11,8 +11,6 @@ namespace rayset {
 
 namespace {
 
-constexpr double kRadian = kPi / 180;
-
 double wrap_360(double a) {
     a = std::fmod(a, 360.0);
     return a < 0 ? a + 360 : a;
@@ -145,14 +143,15 @@ void IntensityDistribution::integrate_cells() {
     const size_t bands = gamma_.size() - 1;
     std::vector<double> w0(bands), w1(bands);
     for (size_t j = 0; j < bands; ++j) {
-        const double a = gamma_[j] * kRadian, b = gamma_[j + 1] * kRadian, d = b - a;
+        const double a = gamma_[j] * kRadiansPerDegree, b = gamma_[j + 1] * kRadiansPerDegree,
+                     d = b - a;
         const double mean_sin = (std::sin(b) - std::sin(a)) / d;
         w0[j] = std::cos(a) - mean_sin;
         w1[j] = mean_sin - std::cos(b);
         sin_max_.push_back(gamma_[j + 1] <= 90 ? std::sin(b) : gamma_[j] >= 90 ? std::sin(a) : 1.0);
     }
     for (size_t k = 0; k + 1 < c_.size(); ++k) {
-        const double dc = (c_[k + 1] - c_[k]) * kRadian;
+        const double dc = (c_[k + 1] - c_[k]) * kRadiansPerDegree;
         for (size_t j = 0; j < bands; ++j) {
             const double low = (value(k, j) + value(k + 1, j)) / 2;
             const double high = (value(k, j + 1) + value(k + 1, j + 1)) / 2;
@@ -192,7 +191,7 @@ void IntensityDistribution::sample(Pcg32& rng, double& c_deg, double& gamma_deg)
         const double s =
             linear_sample(rng.uniform(), (1 - t) * v00 + t * v01, (1 - t) * v10 + t * v11);
         const double gamma = gamma_[j] + t * (gamma_[j + 1] - gamma_[j]);
-        if (rng.uniform() * sin_max_[j] >= std::sin(gamma * kRadian)) continue;
+        if (rng.uniform() * sin_max_[j] >= std::sin(gamma * kRadiansPerDegree)) continue;
         gamma_deg = gamma;
         c_deg = wrap_360(c_[k] + s * (c_[k + 1] - c_[k]));
         return;

@@ -18,8 +18,6 @@ namespace rayset {
 
 namespace {
 
-constexpr double kRadian = kPi / 180;
-
 // A step divides `range` when the quotient is a whole number to rounding (2.5 into 180).
 size_t divisions(double range, double step, const char* what) {
     const double q = range / step;
@@ -48,16 +46,16 @@ double FarFieldGrid::gamma_high(size_t j) const {
 
 double FarFieldGrid::solid_angle(size_t j) const {
     // cos a - cos b = 2 sin((a+b)/2) sin((b-a)/2): no cancellation in the small polar cells.
-    const double a = gamma_low(j) * kRadian, b = gamma_high(j) * kRadian;
-    return c_step_ * kRadian * 2 * std::sin((a + b) / 2) * std::sin((b - a) / 2);
+    const double a = gamma_low(j) * kRadiansPerDegree, b = gamma_high(j) * kRadiansPerDegree;
+    return c_step_ * kRadiansPerDegree * 2 * std::sin((a + b) / 2) * std::sin((b - a) / 2);
 }
 
 void FarFieldGrid::locate(double x, double y, double z, PolarAxis axis, size_t& i,
                           size_t& j) const {
     const double polar = axis == PolarAxis::plus_z ? z : -z;
-    const double gamma = std::atan2(std::hypot(x, y), polar) / kRadian;
+    const double gamma = std::atan2(std::hypot(x, y), polar) / kRadiansPerDegree;
     j = std::min(size_t(std::floor(gamma / gamma_step_ + 0.5)), gamma_count_ - 1);
-    double c = std::atan2(y, x) / kRadian;
+    double c = std::atan2(y, x) / kRadiansPerDegree;
     if (c < 0) c += 360;
     i = size_t(std::floor(c / c_step_ + 0.5)) % c_count_;
 }
@@ -173,8 +171,8 @@ void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directi
     sigma.assign(nc * ng, 0);
     kind.assign(nc * ng, 0);
     auto at_node = [&](size_t i, size_t j) {
-        const double gamma = double(j) * grid.gamma_step_deg() * kRadian,
-                     c = double(i) * grid.c_step_deg() * kRadian;
+        const double gamma = double(j) * grid.gamma_step_deg() * kRadiansPerDegree,
+                     c = double(i) * grid.c_step_deg() * kRadiansPerDegree;
         const double x = std::sin(gamma) * std::cos(c), y = std::sin(gamma) * std::sin(c),
                      polar = std::cos(gamma);
         return options.smoothing == FarFieldSmoothing::fixed
@@ -186,10 +184,11 @@ void smoothed_values(const FarFieldGrid& grid, const DirectionHistogram& directi
     // cells' solid angles sum to the estimate's integral, as the histogram's sum to the rays' flux.
     auto estimate = [&](size_t i, size_t j) {
         DirectionHistogram::Estimate e = at_node(i, j);
-        const double g0 = grid.gamma_low(j) * kRadian, g1 = grid.gamma_high(j) * kRadian;
+        const double g0 = grid.gamma_low(j) * kRadiansPerDegree,
+                     g1 = grid.gamma_high(j) * kRadiansPerDegree;
         const bool cap = j == 0 || j + 1 == ng;
-        const double c_mid = cap ? kPi : double(i) * grid.c_step_deg() * kRadian;
-        const double c_half = cap ? kPi : grid.c_step_deg() * kRadian / 2;
+        const double c_mid = cap ? kPi : double(i) * grid.c_step_deg() * kRadiansPerDegree;
+        const double c_half = cap ? kPi : grid.c_step_deg() * kRadiansPerDegree / 2;
         const double mu0 = std::cos(g1), mu1 = std::cos(g0);
         const double node = 1 / std::sqrt(3.0);
         const int c_points = cap ? 4 : 2;

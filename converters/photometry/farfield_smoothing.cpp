@@ -13,7 +13,6 @@ namespace rayset {
 
 namespace {
 
-constexpr double kRadian = kPi / 180;
 // Kernels are cut where the wider of the two vMF densities has fallen to exp(-9) of its peak:
 // what lies beyond holds about 1e-4 of its weight.
 constexpr double kCutoffSigmas = 6;
@@ -54,8 +53,8 @@ DirectionHistogram::DirectionHistogram(const DirectionResolution& resolution)
 }
 
 void DirectionHistogram::add(double x, double y, double polar, double flux) {
-    const double gamma = std::atan2(std::hypot(x, y), polar) / kRadian;
-    double c = std::atan2(y, x) / kRadian;
+    const double gamma = std::atan2(std::hypot(x, y), polar) / kRadiansPerDegree;
+    double c = std::atan2(y, x) / kRadiansPerDegree;
     if (c < 0) c += 360;
     Level& level = levels_[0];
     const size_t row = std::min(size_t(gamma / level.step_deg), level.rows - 1);
@@ -126,7 +125,7 @@ void DirectionHistogram::visit_bins(const Level& level, double x, double y, doub
     const double cos_u = std::cos(gamma_u), sin_u = std::sin(gamma_u);
     double c_u = std::atan2(y, x);
     if (c_u < 0) c_u += 2 * kPi;
-    const double step = level.step_deg * kRadian;
+    const double step = level.step_deg * kRadiansPerDegree;
     const bool whole_circles = gamma_u - radius <= 0 || gamma_u + radius >= kPi;
 
     // The widest C half-angle of the cap at polar angle g: points (g, c) within `radius` of u
@@ -169,7 +168,7 @@ void DirectionHistogram::visit_bins(const Level& level, double x, double y, doub
 
 DirectionHistogram::Estimate DirectionHistogram::at(double x, double y, double polar,
                                                     double sigma_deg) const {
-    const double sigma = sigma_deg * kRadian;
+    const double sigma = sigma_deg * kRadiansPerDegree;
     const double kappa = 1 / (sigma * sigma);
     double sum = 0, square = 0;
     visit_bins(level_for(sigma_deg), x, y, polar, std::min(kCutoffSigmas * sigma, kPi),
@@ -185,7 +184,7 @@ DirectionHistogram::Estimate DirectionHistogram::at(double x, double y, double p
 
 DirectionHistogram::Estimate DirectionHistogram::local_fit(double x, double y, double polar,
                                                            double sigma_deg) const {
-    const double sigma = sigma_deg * kRadian, s2 = sigma * sigma;
+    const double sigma = sigma_deg * kRadiansPerDegree, s2 = sigma * sigma;
     // Coordinates of the tangent plane at u: the azimuthal equidistant map (angle from u along
     // the great circle), on an orthonormal basis e1, e2 of the plane.
     Vec3 e1, e2;
@@ -274,7 +273,7 @@ DirectionHistogram::Estimate DirectionHistogram::edge_fit(double x, double y, do
     // projection about u, p = v / (u.v) - u, it is (u.v) (a + b.p)_+ with a = c.u the intensity
     // here, and the solid angle is dOmega = (u.v)^3 dp: so the rays weighted by w(p) / (u.v)^4
     // measure the moments of the plane function (a + b.p)_+ under the Gaussian weight w, exactly.
-    const double sigma = sigma_deg * kRadian, s2 = sigma * sigma;
+    const double sigma = sigma_deg * kRadiansPerDegree, s2 = sigma * sigma;
     Vec3 e1, e2;
     orthonormal_basis({x, y, polar}, e1, e2);
     // Weighted flux m0, first and second moments m1, m2 of p; for the noise, the same moments of

@@ -27,8 +27,7 @@ int main(int argc, char** argv) {
     std::vector<double> sigmas = {1, 1.41, 2, 2.83, 4, 5.66, 8, 11.3, 16};
     std::vector<FarField> fields;
     for (double s : sigmas) {
-        auto reader =
-            test::memory_reader(synth_header(*source, n, 11, radiant_only()), out.rays);
+        auto reader = test::memory_reader(synth_header(*source, n, 11, radiant_only()), out.rays);
         FarFieldOptions o;
         o.quantity = FarFieldQuantity::radiometric;
         o.smoothing = FarFieldSmoothing::fixed;
@@ -41,7 +40,8 @@ int main(int argc, char** argv) {
     double total = 0;
     for (size_t h = 0; h < nh; ++h)
         for (size_t v = 0; v < nv; ++v) {
-            double c = p.horizontal_deg[h] * M_PI / 180, g = p.vertical_deg[v] * M_PI / 180;
+            double c = p.horizontal_deg[h] * kRadiansPerDegree,
+                   g = p.vertical_deg[v] * kRadiansPerDegree;
             truth[h * nv + v] = source->intensity({sin(g) * cos(c), sin(g) * sin(c), cos(g)});
             omega[h * nv + v] = fields[0].solid_angle[p.index(h, v)];
             total += truth[h * nv + v] * omega[h * nv + v];

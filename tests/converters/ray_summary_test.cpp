@@ -126,7 +126,7 @@ TEST(RaySummary, PartsReadOnSeveralThreadsGiveTheSummaryOfOnePart) {
     const double ax = a.mean_direction.x, ay = a.mean_direction.y, az = a.mean_direction.z;
     const double bx = b.mean_direction.x, by = b.mean_direction.y, bz = b.mean_direction.z;
     const double cross = std::hypot(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx);
-    const double axes_deg = std::atan2(cross, ax * bx + ay * by + az * bz) * 180 / M_PI;
+    const double axes_deg = std::atan2(cross, ax * bx + ay * by + az * bz) / kRadiansPerDegree;
     EXPECT_NEAR(a.max_angle_from_mean_deg, b.max_angle_from_mean_deg, axes_deg + 1e-9);
     const double bound = 2 * 300000 * std::ldexp(1.0, -53);
     EXPECT_NEAR(a.radiant, b.radiant, bound * a.radiant);

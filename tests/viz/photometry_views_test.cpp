@@ -91,7 +91,7 @@ TEST(PhotometryViews, PolarCurvesFollowTheTable) {
     Photometry& p = t.photometry;
     for (int v = 0; v <= 180; v += 5) p.vertical_deg.push_back(v);
     for (int h = 0; h <= 360; h += 15) p.horizontal_deg.push_back(h);
-    const double deg = M_PI / 180;
+    const double deg = kRadiansPerDegree;
     for (double h : p.horizontal_deg)
         for (double v : p.vertical_deg)
             p.candela.push_back(std::max(

@@ -13,8 +13,6 @@ namespace rayset::tracer {
 
 namespace {
 
-constexpr double kDegree = kPi / 180;
-
 // POV-Ray's cubic_spline: 0 below `low`, 1 from `high`, smoothstep between.
 double cubic_spline(double low, double high, double x) {
     if (x < low) return 0;
@@ -92,8 +90,8 @@ LightSet::LightSet(const std::vector<LightSource>& lights, const SceneUnits& uni
             if (length(axis) == 0)
                 throw Error(fmt::format("spotlight point_at equals its location at {}", where));
             point.axis = normalized(axis);
-            point.cos_radius = std::cos(source.radius * kDegree);
-            point.cos_falloff = std::cos(source.falloff * kDegree);
+            point.cos_radius = std::cos(source.radius * kRadiansPerDegree);
+            point.cos_falloff = std::cos(source.falloff * kRadiansPerDegree);
             point.tightness = source.tightness;
         }
         const double solid_angle = effective_solid_angle(point);

@@ -237,7 +237,7 @@ TEST(FarFieldRealData, OsramBlueHalvesAgreeWithinTheirErrors) {
     }
     const FarField a = smoothed_far_field(halves[0]), b = smoothed_far_field(halves[1]);
     const Photometry& p = a.photometry;
-    const double deg = M_PI / 180;
+    const double deg = kRadiansPerDegree;
     auto direction = [&](size_t h, size_t v) {
         const double c = p.horizontal_deg[h] * deg, g = p.vertical_deg[v] * deg;
         return std::array<double, 3>{std::sin(g) * std::cos(c), std::sin(g) * std::sin(c),
