@@ -274,7 +274,7 @@ TEST(BidirectionalDisk, NaiveRaySetConservesEnergyToo) {
 
 TEST(BidirectionalDisk, NaiveModelNeedsTheRayFile) {
     SceneDescription description = parse(closed_box(0.5, disk_files().model));
-    EXPECT_THROW(RaySourceSet(description, true), Error);
+    EXPECT_THROW(read_ray_sources(description, true), Error);
 }
 
 // A Lambertian square (10 mm, 1 W, 5e5 rays, seed 4) as a ray file through the model and as the

@@ -12,10 +12,11 @@ namespace rayset::test {
 std::string closed_box_scene(const ClosedBox& box) {
     char head[256];
     std::snprintf(head, sizeof head,
-                  "global_settings { integrator \"bidirectional\" spectral %s }\n"
+                  "global_settings { integrator \"%s\" spectral %s }\n"
                   "box { <-50, -50, -50>, <50, 50, 50> pigment { rgb %s } finish { diffuse %.17g "
                   "ambient 0 } }\n",
-                  box.spectral ? "on" : "off", box.pigment.c_str(), box.diffuse);
+                  box.integrator.c_str(), box.spectral ? "on" : "off", box.pigment.c_str(),
+                  box.diffuse);
     std::string text = head;
     // corner, edge1, edge2 with cross(edge1, edge2) pointing into the box
     const char* const walls[][4] = {{"floor", "<-50, -50, -50>", "<0, 0, 100>", "<100, 0, 0>"},
@@ -30,7 +31,7 @@ std::string closed_box_scene(const ClosedBox& box) {
                 " resolution <" + cells + ", " + cells + "> name \"" + w[0] + "\" }\n";
     for (const std::string& s : box.sources)
         text += "ray_source { \"" + s + "\" rotate <90, 0, 0> }\n";
-    return text;
+    return text + box.more;
 }
 
 WallAverage wall_average(const std::vector<tracer::ReceiverMap>& maps) {

@@ -14,7 +14,8 @@ namespace rayset::test {
 // A closed cube (side 100 mm, centred on the origin) of `pigment` (a POV-Ray colour: "1",
 // "<0.2, 0.4, 0.9>") and finish diffuse `diffuse`, an illuminance receiver of cells x cells on
 // each inner wall, facing in, and the ray sources at its centre turned to emit toward -y
-// (rotate <90, 0, 0>); the bidirectional integrator, spectral transport if `spectral`.
+// (rotate <90, 0, 0>), then `more` (lights); the integrator `integrator`, spectral transport if
+// `spectral`.
 // Every unit of light at wavelength l lands on a wall once (primary) and a / (1 - a) times more
 // after reflections (secondary), a = the walls' reflectance at l: the wall-averaged
 // irradiances are Phi / A and the sum over the light of Phi a / ((1 - a) A), A = kClosedBoxArea.
@@ -24,6 +25,8 @@ struct ClosedBox {
     int cells = 20;  // receiver cells along each edge of a wall
     bool spectral = false;
     std::vector<std::string> sources;  // ray files or light models
+    std::string more;
+    std::string integrator = "bidirectional";
 };
 std::string closed_box_scene(const ClosedBox& box);
 

@@ -18,20 +18,6 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // that light on a neighbouring wall near a corner is not spread onto this one.
 constexpr double kSameSurfaceCos = 0.9;
 
-// Camera wavelengths: camera paths carry only the ray sources' light (photons bring the
-// rest), so they are drawn in proportion to the sources' spectrum (by luminance) times the sum
-// of the colour matching functions, the film's weights; uniform when no source can be seen.
-lightmodel::BinnedSpectrum camera_density(const RaySourceSet& sources) {
-    std::array<double, lightmodel::kSpectrumBins> light{};
-    for (size_t j = 0; j < sources.size(); ++j) {
-        const lightmodel::BinnedSpectrum s = sources[j].spectrum();
-        if (s.is_zero()) continue;
-        for (int k = 0; k < lightmodel::kSpectrumBins; ++k)
-            light[size_t(k)] += sources.probability(j) * s.value(k) / s.integral();
-    }
-    return film_wavelength_density(light);
-}
-
 // The photon's light reflected toward a camera path, made RGB at the photon's wavelengths.
 Rgb reflected(const Bsdf& bsdf, const Material&, const Photon& p, double cos_i) {
     return (1 / cos_i) * bsdf.eval(p.wi) * p.power;
@@ -60,24 +46,23 @@ const SampledWavelengths& wavelengths_of(const PhotonWavelengths<SampledSpectrum
 
 }  // namespace
 
+// Camera wavelengths: camera paths carry only the lights' light (photons bring the rest), so
+// they are drawn from the lights' spectra (light.h: wavelength_density).
 template <class Q>
 BidirectionalIntegratorOf<Q>::BidirectionalIntegratorOf(const RenderScene& scene,
-                                                        const RaySourceSet& sources)
-    : scene_(scene), sources_(sources) {
+                                                        const LightSet& lights)
+    : scene_(scene), lights_(lights) {
+    for (const ObjectInstance& o : scene.description().objects) no_shadow_.push_back(o.no_shadow);
     if constexpr (std::is_same_v<Q, SampledSpectrum>)
-        camera_wavelength_density_ = camera_density(sources);
+        camera_wavelength_density_ = lights.wavelength_density();
 }
 
 template <class Q>
-Q BidirectionalIntegratorOf<Q>::sample_sources(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
-                                               const Wavelengths& wavelengths, Pcg32& rng,
-                                               uint64_t& rays) const {
-    if (sources_.empty()) return {};
-    double u_cell = rng.uniform();
-    const size_t j = sources_.choose(u_cell);
-    const double u_voxel = rng.uniform();
-    const Vec3 u_point{rng.uniform(), rng.uniform(), rng.uniform()};
-    const auto ls = sources_[j].sample_Li(point, u_cell, u_voxel, u_point, wavelengths);
+Q BidirectionalIntegratorOf<Q>::sample_lights(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
+                                              const Wavelengths& wavelengths, Pcg32& rng,
+                                              uint64_t& rays) const {
+    if (lights_.empty()) return {};
+    const auto ls = lights_.sample_Li<Q>(point, lights_.draw(rng), wavelengths);
     if (!ls) return {};
     const Q f = bsdf.eval(ls->wi);
     if (is_black(f) || is_black(ls->Li)) return {};
@@ -85,29 +70,30 @@ Q BidirectionalIntegratorOf<Q>::sample_sources(const BsdfOf<Q>& bsdf, Vec3 point
     if (scene_.occluded(scene_.offset(point, normal, ls->wi), ls->wi, 0,
                         ls->distance - scene_.epsilon()))
         return {};
-    const double pdf_light = sources_.probability(j) * ls->pdf;
-    const double weight = power_heuristic(pdf_light, bsdf.pdf(ls->wi));
-    return (weight / pdf_light) * ls->Li * f;
+    const double weight = ls->delta ? 1 : power_heuristic(ls->pdf, bsdf.pdf(ls->wi));
+    return (weight / ls->pdf) * ls->Li * f;
+}
+
+template <class Q>
+double BidirectionalIntegratorOf<Q>::body_horizon(Vec3 origin, Vec3 direction, bool found,
+                                                  const SurfaceHit& hit, uint64_t& rays) const {
+    if (!found) return kInfinity;
+    if (!no_shadow_[size_t(hit.object)]) return hit.t;
+    ++rays;
+    return scene_.nearest_shadow_caster(origin, direction, 0, kInfinity);
 }
 
 template <class Q>
 Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf,
-                                               Vec3 ref, const Wavelengths& wavelengths,
+                                               const Wavelengths& wavelengths,
                                                uint64_t& rays) const {
+    if (!lights_.has_bodies()) return {};
     SurfaceHit hit;
     ++rays;
-    const double t_block = scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit)
-                               ? hit.t
-                               : kInfinity;
-    Q sum{};
-    for (size_t j = 0; j < sources_.size(); ++j) {
-        double t = 0;
-        if (!sources_[j].intersect(origin, direction, t_block, t)) continue;
-        const double pdf_light = sources_.probability(j) * sources_[j].pdf_Li(ref, direction);
-        sum += power_heuristic(bsdf_pdf, pdf_light) *
-               sources_[j].radiance(origin, direction, wavelengths);
-    }
-    return sum;
+    const bool found = scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit);
+    return lights_.crossed_radiance<Q>(origin, direction,
+                                       body_horizon(origin, direction, found, hit, rays), bsdf_pdf,
+                                       wavelengths);
 }
 
 template <class Q>
@@ -122,19 +108,18 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
         SurfaceHit hit;
         ++rays;
         const bool found = scene_.intersect(origin, direction, 0, kInfinity, kind, hit);
-        const double t_block = found ? hit.t : kInfinity;
-        for (size_t j = 0; j < sources_.size(); ++j) {
-            double t = 0;
-            if (sources_[j].intersect(origin, direction, t_block, t))
-                direct_visibility += beta * sources_[j].radiance(origin, direction, wavelengths);
-        }
+        if (lights_.has_bodies())
+            direct_visibility +=
+                beta * lights_.crossed_radiance<Q>(
+                           origin, direction, body_horizon(origin, direction, found, hit, rays), -1,
+                           wavelengths);
         if (!found) break;
         const Material& material = scene_.material(hit.object);
         const Vec3 wo = -direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         if (bsdf.has_smooth_lobes()) {
-            primary += beta * sample_sources(bsdf, hit.point, bsdf.facing_normal(), wavelengths,
-                                             rng, rays);
+            primary +=
+                beta * sample_lights(bsdf, hit.point, bsdf.facing_normal(), wavelengths, rng, rays);
             Point vp;
             vp.point = hit.point, vp.normal = hit.normal, vp.shading_normal = hit.shading_normal,
             vp.wo = wo;
@@ -149,8 +134,8 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
         const Vec3 next_origin = scene_.offset(hit.point, hit.normal, s.wi);
         if (!s.delta) {
             // The smooth lobe ends the camera path: what lies beyond is the photons' part.
-            primary += beta * s.weight *
-                       bodies_crossed(next_origin, s.wi, s.pdf, hit.point, wavelengths, rays);
+            primary +=
+                beta * s.weight * bodies_crossed(next_origin, s.wi, s.pdf, wavelengths, rays);
             break;
         }
         beta *= s.weight;
@@ -172,10 +157,10 @@ Rgb BidirectionalIntegratorOf<Q>::receiver_primary(Vec3 point, Vec3 normal, Pcg3
     return white_lambertian_irradiance<Q>(
         normal, camera_wavelength_density_, rng,
         [&](const BsdfOf<Q>& bsdf, const Wavelengths& wavelengths) {
-            return sample_sources(bsdf, point, normal, wavelengths, rng, rays);
+            return sample_lights(bsdf, point, normal, wavelengths, rng, rays);
         },
         [&](const BsdfSampleOf<Q>& s, const Wavelengths& wavelengths) {
-            return s.weight * bodies_crossed(scene_.offset(point, normal, s.wi), s.wi, s.pdf, point,
+            return s.weight * bodies_crossed(scene_.offset(point, normal, s.wi), s.wi, s.pdf,
                                              wavelengths, rays);
         });
 }
@@ -185,25 +170,18 @@ std::vector<typename BidirectionalIntegratorOf<Q>::Photon>
 BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint64_t emitted,
                                             uint64_t seed, uint64_t& rays) const {
     std::vector<Photon> photons;
-    if (sources_.empty()) return photons;
-    const bool keep_direct = sources_.naive();
+    if (lights_.empty()) return photons;
     for (uint64_t i = first; i < first + count; ++i) {
         Pcg32 rng(seed, i);
         double u[7];
         for (double& v : u) v = rng.uniform();
-        const size_t j = sources_.choose(u[0]);
+        const double u_wavelength = std::is_same_v<Q, SampledSpectrum> ? rng.uniform() : 0;
+        const LightPhotonOf<Q> emission = lights_.sample_Le<Q>(u, u_wavelength, emitted);
         Photon photon;
-        const auto emission = [&] {
-            if constexpr (std::is_same_v<Q, SampledSpectrum>) {
-                auto e = sources_[j].sample_Le(u, rng.uniform());
-                photon.wavelengths = e.wavelengths;
-                return e;
-            } else {
-                return sources_[j].sample_Le(u);
-            }
-        }();
+        if constexpr (std::is_same_v<Q, SampledSpectrum>) photon.wavelengths = emission.wavelengths;
         const Wavelengths& wavelengths = wavelengths_of(photon);
-        Q power = (1 / (sources_.probability(j) * double(emitted))) * emission.flux;
+        const bool keep_direct = emission.counts_first_hit;
+        Q power = emission.flux;
         Vec3 origin = emission.origin, direction = emission.direction;
         bool scattered = false;
         for (int depth = 0; depth < kMaxDepth; ++depth) {

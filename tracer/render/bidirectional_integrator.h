@@ -1,16 +1,17 @@
-// The bidirectional integrator of issue 6 (paper eqs. 1-5) for scenes lit by ray sources:
+// The paper's bidirectional integrator (its eqs. 1-5) over every light of the scene (light.h:
+// ray sources and POV-Ray lights alike):
 //   camera pass  - camera rays through specular chains (mirror, glass); a ray that meets a
-//                  source body adds its radiance (direct visibility, eq. 2); at the first
-//                  vertex with a smooth lobe the primary light of the sources is estimated by
-//                  light sampling (eq. 3) and BSDF sampling (eq. 4) with the power heuristic,
-//                  and a visible point is kept for the photon pass;
-//   photon pass  - photons from every source (sample_Le), Russian roulette; a photon is
+//                  light's body adds its radiance (direct visibility, eq. 2); at the first
+//                  vertex with a smooth lobe the primary light is estimated by light sampling
+//                  (eq. 3) and BSDF sampling (eq. 4) with the power heuristic, and a visible
+//                  point is kept for the photon pass;
+//   photon pass  - photons from every light (sample_Le), Russian roulette; a photon is
 //                  stored only after at least one scattering (eq. 5: secondary light), so
 //                  the direct light the camera pass computed is not counted twice.
 // The naive ray set has no body and cannot be light sampled: its photons are stored from
 // the first hit as well and make its primary light.
-// Radiance and irradiance in renderer units (units.h); ray-source bodies are not geometry:
-// light passes through them, and a ray adds every body it meets before the first surface.
+// Radiance and irradiance in renderer units (units.h); light bodies are not geometry: light
+// passes through them, and a ray adds every body it meets before the first surface.
 #pragma once
 
 #include <cstdint>
@@ -20,8 +21,8 @@
 
 #include "core/random.h"
 #include "tracer/render/integrator.h"
+#include "tracer/render/light.h"
 #include "tracer/render/photon_grid.h"
-#include "tracer/render/ray_sources.h"
 #include "tracer/render/render_scene.h"
 
 namespace rayset::tracer {
@@ -43,9 +44,9 @@ struct CameraSample {
 };
 
 // Q: what paths carry, Rgb (the default) or SampledSpectrum (spectral transport, spectrum.h).
-// Spectral camera paths draw their hero wavelength from the sources' light spectrum times the
-// colour matching functions (camera paths carry only that light); photons from their own
-// light's spectrum.
+// Spectral camera paths draw their hero wavelength from the lights' spectrum times the colour
+// matching functions (camera paths carry only that light); photons from their own light's
+// spectrum.
 template <class Q>
 class BidirectionalIntegratorOf {
 public:
@@ -54,12 +55,13 @@ public:
     using Photon = PhotonOf<Q>;
     using Grid = PhotonGridOf<Photon>;
 
-    BidirectionalIntegratorOf(const RenderScene& scene, const RaySourceSet& sources);
+    // `lights` kept by reference.
+    BidirectionalIntegratorOf(const RenderScene& scene, const LightSet& lights);
 
     // Camera pass of one camera ray; visible points are appended to `visible` with `pixel`.
     CameraSample camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng,
                              uint64_t& rays, std::vector<Point>& visible) const;
-    // Primary irradiance of the sources at a virtual receiver point (pi x the radiance a white
+    // Primary irradiance of the lights at a virtual receiver point (pi x the radiance a white
     // Lambertian surface there would reflect), from the side `normal` points into.
     Rgb receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
 
@@ -69,7 +71,7 @@ public:
                                       uint64_t seed, uint64_t& rays) const;
 
     // Radiance the photons near a visible point reflect toward its wo (density estimation over
-    // a disk of the grid's radius), split into photons that came straight from a source and
+    // a disk of the grid's radius), split into photons that came straight from a light and
     // those that scattered before.
     // Spectral: each photon's light is reflected at its own wavelengths and made RGB there; the
     // camera-side throughput (through mirrors, glass) is made RGB by the camera path's own
@@ -84,28 +86,33 @@ public:
     static constexpr int kRouletteDepth = 3;
 
 private:
-    Q sample_sources(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
-                     Pcg32& rng, uint64_t& rays) const;
+    Q sample_lights(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
+                    Pcg32& rng, uint64_t& rays) const;
+    // Distance to where a ray stops collecting light bodies: the first surface that casts
+    // shadows (what light sampling's shadow rays test), given the first surface it sees.
+    double body_horizon(Vec3 origin, Vec3 direction, bool found, const SurfaceHit& hit,
+                        uint64_t& rays) const;
     // Radiance of every body a BSDF-sampled ray meets before the first surface, each weighted
-    // against light sampling of its source.
-    Q bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, Vec3 ref,
-                     const Wavelengths& wavelengths, uint64_t& rays) const;
+    // against light sampling of its light.
+    Q bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, const Wavelengths& wavelengths,
+                     uint64_t& rays) const;
 
     const RenderScene& scene_;
-    const RaySourceSet& sources_;
+    const LightSet& lights_;
+    std::vector<uint8_t> no_shadow_;                        // per object
     lightmodel::BinnedSpectrum camera_wavelength_density_;  // spectral only
 };
 using BidirectionalIntegrator = BidirectionalIntegratorOf<Rgb>;
 
 // The bidirectional integrator as the renderer's integrator (bidirectional_passes.cpp): its
 // camera pass, then a photon pass and density estimation at the pass's visible points, the
-// gather radius shrinking from pass to pass; lights, emitting surfaces and the background by
-// the path tracer alongside. RGB or spectral transport.
+// gather radius shrinking from pass to pass; emitting surfaces and the background (not lights:
+// found only where paths meet them) by the path tracer alongside. RGB or spectral transport.
 std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene,
                                                           const RenderSettings& settings,
                                                           const RenderResult& start);
-// Its light components: direct visibility of the sources' bodies, primary light (straight
-// from a source to the first smooth surface), secondary light (scattered before).
+// Its light components: direct visibility of the lights' bodies, primary light (straight
+// from a light to the first smooth surface), secondary light (scattered before).
 const std::vector<std::string>& bidirectional_layers();
 
 }  // namespace rayset::tracer

@@ -27,16 +27,17 @@ constexpr uint64_t kMinimumPhotons = 65536;
 constexpr uint64_t kPhotonSeedSalt =
     0x6A09E667F3BCC909ULL;  // photon streams apart from camera streams
 
-// Lights, emitting surfaces and the background are the path tracer's (in the transport Q of the
-// pass); skip it when there are none.
+// Emitting surfaces and the background are the path tracer's (in the transport Q of the pass);
+// skip it when there are none.
 bool has_ordinary_light(const RenderScene& scene) {
-    if (!scene.lights().empty() || !is_black(scene.background())) return true;
+    if (!is_black(scene.background())) return true;
     for (size_t i = 0; i < scene.description().objects.size(); ++i)
         if (!is_black(scene.material(int(i)).emission)) return true;
     return false;
 }
 
-// The pass values' components: the layers, then light of the path tracer.
+// The pass values' components: the layers, then the light of emitting surfaces and the
+// background (the path tracer's).
 enum Component { kDirectVisibility, kPrimary, kSecondary, kOrdinary };
 
 template <class Point>
@@ -101,7 +102,7 @@ public:
                   std::atomic<uint64_t>& rays, StopFlag stop) override;
     void pass_completed(RenderResult& result) override;
     bool first_pass_sets_outcome() const override {
-        return !sources_.empty() && !(base_radius_ > 0);
+        return !lights_.empty() && !(base_radius_ > 0);
     }
     std::vector<double> first_pass_outcome() override {
         if (!(base_radius_ > 0)) base_radius_ = default_radius(visible_, *receivers_);
@@ -117,7 +118,8 @@ private:
     std::vector<Photon> trace_photons(int pass, std::atomic<uint64_t>& rays, StopFlag stop) const;
     void gather(const SamplePoints& points, const Grid& grid, PassValues& values) const;
 
-    RaySourceSet sources_;
+    LightSet lights_;
+    LightSet no_lights_;  // the path tracer's alongside: emitting surfaces and background only
     BidirectionalIntegratorOf<Q> integrator_;
     PathIntegratorOf<Q> path_;
     bool ordinary_;
@@ -136,9 +138,9 @@ template <class Q>
 BidirectionalPasses<Q>::BidirectionalPasses(const RenderScene& scene,
                                             const RenderSettings& settings,
                                             const RenderResult& start)
-    : sources_(scene.description(), settings.naive_sources),
-      integrator_(scene, sources_),
-      path_(scene),
+    : lights_(scene.description(), scene.units(), settings.naive_sources),
+      integrator_(scene, lights_),
+      path_(scene, no_lights_),
       ordinary_(has_ordinary_light(scene)),
       seed_(settings.seed) {
     size_t points = settings.render_image ? size_t(settings.width) * settings.height : 0;
@@ -187,7 +189,7 @@ void BidirectionalPasses<Q>::receiver_sample(Vec3 point, Vec3 normal, const Samp
 template <class Q>
 void BidirectionalPasses<Q>::end_pass(int pass, const SamplePoints& points, PassValues& values,
                                       std::atomic<uint64_t>& rays, StopFlag stop) {
-    if (sources_.empty() || points.size() == 0 || stopped(stop)) return;
+    if (lights_.empty() || points.size() == 0 || stopped(stop)) return;
     if (!(base_radius_ > 0)) base_radius_ = default_radius(visible_, *points.receivers);
     std::vector<Photon> photons = trace_photons(pass, rays, stop);
     if (stopped(stop)) return;
@@ -251,7 +253,7 @@ void BidirectionalPasses<Q>::gather(const SamplePoints& points, const Grid& grid
 
 template <class Q>
 void BidirectionalPasses<Q>::pass_completed(RenderResult& result) {
-    result.photons += sources_.empty() ? 0 : photons_per_pass_;
+    result.photons += lights_.empty() ? 0 : photons_per_pass_;
     result.photon_radius = radius(result.passes - 1);
     result.photon_bytes = std::max(result.photon_bytes, photon_bytes_);
     result.visible_point_bytes = std::max(result.visible_point_bytes, visible_point_bytes_);

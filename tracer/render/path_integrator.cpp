@@ -5,6 +5,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "core/error.h"
 #include "tracer/render/receiver_irradiance.h"
 #include "tracer/render/renderer.h"
 
@@ -14,21 +15,14 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// D65 x the film's weights: ordinary lights are D65 times a smooth factor (grey ones exactly D65).
-lightmodel::BinnedSpectrum ordinary_light_density() {
-    const lightmodel::BinnedSpectrum d65 = lightmodel::d65_spectrum();
-    std::array<double, lightmodel::kSpectrumBins> light{};
-    for (int k = 0; k < lightmodel::kSpectrumBins; ++k) light[size_t(k)] = d65.value(k);
-    return film_wavelength_density(light);
-}
-
 }  // namespace
 
 template <class Q>
-PathIntegratorOf<Q>::PathIntegratorOf(const RenderScene& scene) : scene_(scene) {
+PathIntegratorOf<Q>::PathIntegratorOf(const RenderScene& scene, const LightSet& lights)
+    : scene_(scene), lights_(lights) {
     for (const ObjectInstance& o : scene.description().objects) no_shadow_.push_back(o.no_shadow);
     if constexpr (std::is_same_v<Q, SampledSpectrum>)
-        wavelength_density_ = ordinary_light_density();
+        wavelength_density_ = lights.wavelength_density();
 }
 
 template <class Q>
@@ -70,17 +64,16 @@ typename PathIntegratorOf<Q>::ShadowQuery PathIntegratorOf<Q>::sample_light(
     const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
     Pcg32& rng) const {
     ShadowQuery query;
-    const double u_select = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
-    LightSample light;
-    if (!scene_.lights().sample(point, u_select, u1, u2, light)) return query;
-    const Q f = bsdf.eval(light.direction);
-    if (is_black(f) || is_black(light.radiance)) return query;
+    const auto light = lights_.sample_Li<Q>(point, lights_.draw(rng), wavelengths);
+    if (!light) return query;
+    const Q f = bsdf.eval(light->wi);
+    if (is_black(f) || is_black(light->Li)) return query;
     query.cast = true;
-    query.origin = scene_.offset(point, normal, light.direction);
-    query.direction = light.direction;
-    query.t_far = light.distance - scene_.epsilon();
-    const double weight = light.delta ? 1 : power_heuristic(light.pdf, bsdf.pdf(light.direction));
-    query.contribution = (weight / light.pdf) * (f * arriving_radiance(light, wavelengths));
+    query.origin = scene_.offset(point, normal, light->wi);
+    query.direction = light->wi;
+    query.t_far = light->distance - scene_.epsilon();
+    const double weight = light->delta ? 1 : power_heuristic(light->pdf, bsdf.pdf(light->wi));
+    query.contribution = (weight / light->pdf) * (f * light->Li);
     return query;
 }
 
@@ -98,24 +91,24 @@ Q PathIntegratorOf<Q>::unless_occluded(const ShadowQuery& query, uint64_t& rays)
 template <class Q>
 [[gnu::flatten]] Q PathIntegratorOf<Q>::trace(PathState& s, const Wavelengths& wavelengths,
                                               Pcg32& rng, uint64_t& rays) const {
-    const LightSet& lights = scene_.lights();
+    const LightSet& lights = lights_;
     Q sum{};
     SurfaceHit hit;
     BsdfSampleOf<Q> sample;
     for (;; ++s.depth) {
         ++rays;
         const bool found = scene_.intersect(s.origin, s.direction, 0, kInfinity, s.kind, hit);
-        if (!lights.rects().empty()) {
-            // Area lights are not geometry: a ray collects one if it crosses it before the first
-            // surface that casts shadows, which is exactly what light sampling tests.
+        if (lights.has_bodies()) {
+            // Lights are not geometry: a ray collects one if it crosses its body before the
+            // first surface that casts shadows, which is exactly what light sampling tests.
             double t_block = found ? hit.t : kInfinity;
             if (found && no_shadow_[hit.object]) {
                 ++rays;
                 t_block = scene_.nearest_shadow_caster(s.origin, s.direction, 0, kInfinity);
             }
-            sum +=
-                s.beta * lights.crossed_radiance(s.origin, s.direction, t_block + scene_.epsilon(),
-                                                 s.bsdf_pdf, wavelengths);
+            sum += s.beta * lights.template crossed_radiance<Q>(s.origin, s.direction,
+                                                                t_block + scene_.epsilon(),
+                                                                s.bsdf_pdf, wavelengths);
         }
         if (!found) {
             sum += s.beta * emitted(scene_.background(), scene_.background_spectrum(), wavelengths);
@@ -159,7 +152,8 @@ namespace {
 template <class Q>
 class PathTracing : public Integrator {
 public:
-    explicit PathTracing(const RenderScene& scene) : path_(scene) {}
+    PathTracing(const RenderScene& scene, LightSet lights)
+        : lights_(std::move(lights)), path_(scene, lights_) {}
     void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
                        uint64_t& rays) const override {
         sink.add(0, path_.radiance(ray.origin, ray.direction, rng, rays));
@@ -170,6 +164,7 @@ public:
     }
 
 private:
+    LightSet lights_;
     PathIntegratorOf<Q> path_;
 };
 
@@ -178,9 +173,14 @@ private:
 std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene,
                                                  const RenderSettings& settings,
                                                  const RenderResult&) {
+    if (settings.naive_sources && !scene.description().ray_sources.empty())
+        throw Error(
+            "the naive ray set (--naive-sources) has no body and cannot be light sampled: only "
+            "photons carry its light; render it with integrator \"bidirectional\"");
+    LightSet lights(scene.description(), scene.units(), false);
     if (spectral_transport(scene, settings))
-        return std::make_unique<PathTracing<SampledSpectrum>>(scene);
-    return std::make_unique<PathTracing<Rgb>>(scene);
+        return std::make_unique<PathTracing<SampledSpectrum>>(scene, std::move(lights));
+    return std::make_unique<PathTracing<Rgb>>(scene, std::move(lights));
 }
 
 }  // namespace rayset::tracer

@@ -1,11 +1,13 @@
-// The reference integrator: unidirectional path tracing with next-event estimation, multiple
-// importance sampling (power heuristic) between light sampling and BSDF sampling for area
-// lights, and Russian roulette. Radiance and irradiance in renderer units (units.h).
+// The reference integrator: unidirectional path tracing with next-event estimation to every
+// light (light.h: POV-Ray lights and ray-file sources), multiple importance sampling (power
+// heuristic) between light sampling and BSDF sampling for lights with a body, and Russian
+// roulette. Emitting surfaces and the background are collected where paths meet them.
+// Radiance and irradiance in renderer units (units.h).
 //
 // Q: what paths carry, Rgb or SampledSpectrum (spectral transport, spectrum.h). Spectral paths
-// draw their own hero wavelength in proportion to D65 x (x-bar + y-bar + z-bar), the film's
-// weights on the renderer's white, and see lights, emitting surfaces and the background as
-// illuminant spectra (rgb_upsampling.h: IlluminantSpectrum).
+// draw their own hero wavelength in proportion to the lights' spectra times (x-bar + y-bar +
+// z-bar), the film's weights (D65 for POV-Ray lights), and see POV-Ray lights, emitting
+// surfaces and the background as illuminant spectra (rgb_upsampling.h: IlluminantSpectrum).
 #pragma once
 
 #include <cstdint>
@@ -14,6 +16,7 @@
 
 #include "core/random.h"
 #include "tracer/render/integrator.h"
+#include "tracer/render/light.h"
 #include "tracer/render/render_scene.h"
 
 namespace rayset::tracer {
@@ -23,7 +26,8 @@ class PathIntegratorOf {
 public:
     using Wavelengths = WavelengthsFor<Q>;
 
-    explicit PathIntegratorOf(const RenderScene& scene);
+    // `lights`: the lights it samples and meets (kept by reference).
+    PathIntegratorOf(const RenderScene& scene, const LightSet& lights);
 
     // Radiance arriving along a camera ray (origin, unit direction), linear sRGB whatever the
     // transport; `rays` counts every ray cast.
@@ -64,14 +68,17 @@ private:
     Q unless_occluded(const ShadowQuery& query, uint64_t& rays) const;
 
     const RenderScene& scene_;
+    const LightSet& lights_;
     std::vector<uint8_t>
         no_shadow_;  // per object: read on every hit, kept apart from the big ObjectInstance
     lightmodel::BinnedSpectrum wavelength_density_;  // spectral only
 };
 using PathIntegrator = PathIntegratorOf<Rgb>;
 
-// The path tracer as the renderer's integrator: one radiance sample per camera ray, one
-// irradiance sample per receiver sample, no layers; RGB or spectral transport.
+// The path tracer as the renderer's integrator over every light of the scene: one radiance
+// sample per camera ray, one irradiance sample per receiver sample, no layers; RGB or
+// spectral transport. Throws rayset::Error for the naive ray set (no body, no light sampling:
+// only photons can carry its light).
 std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene,
                                                  const RenderSettings& settings,
                                                  const RenderResult& start);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -54,8 +55,11 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }  // namespace
 
 PlacedRaySource::PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emitter,
-                                 const Matrix4& to_world)
-    : emitter_(std::move(emitter)), to_world_(to_world), to_local_(to_world.inverse()) {
+                                 const Matrix4& to_world, bool naive)
+    : emitter_(std::move(emitter)),
+      to_world_(to_world),
+      to_local_(to_world.inverse()),
+      naive_(naive) {
     k_ = conformal_scale(to_world);
     if (!(k_ > 0))
         throw Error(
@@ -70,7 +74,7 @@ PlacedRaySource::Local PlacedRaySource::to_local(Vec3 origin, Vec3 direction) co
     return {to_local_.point(origin), k_ * to_local_.vector(direction), 1 / k_};
 }
 
-bool PlacedRaySource::intersect(Vec3 origin, Vec3 direction, double t_max, double& t) const {
+bool PlacedRaySource::crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const {
     const Local l = to_local(origin, direction);
     lightmodel::EmitterHit hit;
     if (!emitter_->intersect(l.origin, l.direction, t_max < kInfinity ? t_max * l.scale : kInfinity,
@@ -80,76 +84,80 @@ bool PlacedRaySource::intersect(Vec3 origin, Vec3 direction, double t_max, doubl
     return true;
 }
 
-Rgb PlacedRaySource::radiance(Vec3 origin, Vec3 direction, NoWavelengths) const {
+template <class Q>
+Q PlacedRaySource::radiance(Vec3 origin, Vec3 direction,
+                            const WavelengthsFor<Q>& wavelengths) const {
     const Local l = to_local(origin, direction);
-    return radiance_scale_ * emitter_->L_colour(l.origin, l.direction, lightmodel::EmitterHit{});
+    if constexpr (std::is_same_v<Q, SampledSpectrum>) {
+        lightmodel::SpectralQuery query = spectral_query(wavelengths);
+        emitter_->L_spectral(l.origin, l.direction, lightmodel::EmitterHit{}, query);
+        return radiance_scale_ * spectrum_of(query);
+    } else {
+        return radiance_scale_ *
+               emitter_->L_colour(l.origin, l.direction, lightmodel::EmitterHit{});
+    }
 }
 
-SampledSpectrum PlacedRaySource::radiance(Vec3 origin, Vec3 direction,
-                                          const SampledWavelengths& wavelengths) const {
-    const Local l = to_local(origin, direction);
-    lightmodel::SpectralQuery query = spectral_query(wavelengths);
-    emitter_->L_spectral(l.origin, l.direction, lightmodel::EmitterHit{}, query);
-    return radiance_scale_ * spectrum_of(query);
-}
-
-std::optional<SourceLiSampleOf<SampledSpectrum>> PlacedRaySource::sample_Li(
-    Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
-    const SampledWavelengths& wavelengths) const {
-    lightmodel::SpectralQuery query = spectral_query(wavelengths);
-    const auto s = emitter_->sample_Li(to_local_.point(ref), u_cell, u_voxel, u_point, {}, &query);
+template <class Q>
+std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
+    Vec3 ref, const LightUniforms& u, double chosen, const WavelengthsFor<Q>& wavelengths) const {
+    const Vec3 u_point{u.u[1], u.u[2], u.u[3]};
+    std::optional<lightmodel::LiSample> s;
+    LightLiSampleOf<Q> out;
+    if constexpr (std::is_same_v<Q, SampledSpectrum>) {
+        lightmodel::SpectralQuery query = spectral_query(wavelengths);
+        s = emitter_->sample_Li(to_local_.point(ref), u.select, u.u[0], u_point, {}, &query);
+        out.Li = radiance_scale_ * spectrum_of(query);
+    } else {
+        s = emitter_->sample_Li(to_local_.point(ref), u.select, u.u[0], u_point);
+        if (s) out.Li = radiance_scale_ * s->Li_colour;
+    }
     if (!s) return std::nullopt;
-    SourceLiSampleOf<SampledSpectrum> out;
     out.wi = normalized(to_world_.vector(s->wi));
     out.distance = s->distance * k_;
-    out.Li = radiance_scale_ * spectrum_of(query);
-    out.pdf = s->pdf;
+    out.pdf = chosen * s->pdf;  // a conformal map keeps solid angles
     return out;
 }
 
-std::optional<SourceLiSample> PlacedRaySource::sample_Li(Vec3 ref, double u_cell, double u_voxel,
-                                                         Vec3 u_point, NoWavelengths) const {
-    const auto s = emitter_->sample_Li(to_local_.point(ref), u_cell, u_voxel, u_point);
-    if (!s) return std::nullopt;
-    SourceLiSample out;
-    out.wi = normalized(to_world_.vector(s->wi));
-    out.distance = s->distance * k_;
-    out.Li = radiance_scale_ * s->Li_colour;
-    out.pdf = s->pdf;  // a conformal map keeps solid angles
-    return out;
+double PlacedRaySource::pdf_Li(Vec3 ref, Vec3 wi, double, double chosen) const {
+    return chosen * emitter_->pdf_Li(to_local_.point(ref), k_ * to_local_.vector(wi));
 }
 
-double PlacedRaySource::pdf_Li(Vec3 ref, Vec3 wi) const {
-    return emitter_->pdf_Li(to_local_.point(ref), k_ * to_local_.vector(wi));
-}
-
-SourcePhoton PlacedRaySource::sample_Le(const double u[7]) const {
+template <class Q>
+LightPhotonOf<Q> PlacedRaySource::sample_Le(const double u[7], double u_wavelength) const {
     const lightmodel::LeSample s = emitter_->sample_Le(u);
-    return {
-        to_world_.point(s.origin), normalized(to_world_.vector(s.direction)), s.flux_colour, {}};
-}
-
-SourcePhotonOf<SampledSpectrum> PlacedRaySource::sample_Le(const double u[7],
-                                                           double u_wavelength) const {
-    const lightmodel::LeSample s = emitter_->sample_Le(u);
-    SourcePhotonOf<SampledSpectrum> out;
+    LightPhotonOf<Q> out;
     out.origin = to_world_.point(s.origin);
     out.direction = normalized(to_world_.vector(s.direction));
-    const double luminance = lightmodel::luminance(s.flux_colour);
-    if (s.spectrum && !s.spectrum->is_zero()) {
-        out.wavelengths = SampledWavelengths::sample(*s.spectrum, u_wavelength);
-        for (int i = 0; i < kWavelengths; ++i)
-            out.flux.v[i] = luminance * (*s.spectrum)(out.wavelengths.nm[i]);
-    } else if (!s.spectrum) {
-        // One wavelength: its flux is what makes the photon's luminance (zero where V is).
-        out.wavelengths = SampledWavelengths::single(s.wavelength_nm);
-        const double v = photopic_efficiency(s.wavelength_nm);
-        out.flux.v[0] = v > 0 ? luminance / v : 0;
+    if constexpr (std::is_same_v<Q, SampledSpectrum>) {
+        const double luminance = lightmodel::luminance(s.flux_colour);
+        if (s.spectrum && !s.spectrum->is_zero()) {
+            out.wavelengths = SampledWavelengths::sample(*s.spectrum, u_wavelength);
+            for (int i = 0; i < kWavelengths; ++i)
+                out.flux.v[i] = luminance * (*s.spectrum)(out.wavelengths.nm[i]);
+        } else if (!s.spectrum) {
+            // One wavelength: its flux is what makes the photon's luminance (zero where V is).
+            out.wavelengths = SampledWavelengths::single(s.wavelength_nm);
+            const double v = photopic_efficiency(s.wavelength_nm);
+            out.flux.v[0] = v > 0 ? luminance / v : 0;
+        }
+    } else {
+        out.flux = s.flux_colour;
     }
     return out;
 }
 
-RaySourceSet::RaySourceSet(const SceneDescription& scene, bool naive) : naive_(naive) {
+#define RAYSET_RAY_SOURCE_QUERIES(Q)                                                     \
+    template Q PlacedRaySource::radiance<Q>(Vec3, Vec3, const WavelengthsFor<Q>&) const; \
+    template std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li<Q>(            \
+        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;             \
+    template LightPhotonOf<Q> PlacedRaySource::sample_Le<Q>(const double[7], double) const;
+RAYSET_RAY_SOURCE_QUERIES(Rgb)
+RAYSET_RAY_SOURCE_QUERIES(SampledSpectrum)
+#undef RAYSET_RAY_SOURCE_QUERIES
+
+std::vector<PlacedRaySource> read_ray_sources(const SceneDescription& scene, bool naive) {
+    std::vector<PlacedRaySource> sources;
     const double units_per_mm = 1 / scene.global.millimetres_per_unit;
     const Matrix4 mm_to_unit = scaling({units_per_mm, units_per_mm, units_per_mm});
     for (const RaySource& r : scene.ray_sources) {
@@ -160,37 +168,17 @@ RaySourceSet::RaySourceSet(const SceneDescription& scene, bool naive) : naive_(n
                     fmt::format("{}: the naive model emits the stored rays; name the ray file, not "
                                 "a .vdb model",
                                 r.path));
-            add(PlacedRaySource(std::make_shared<lightmodel::NaiveRaySource>(r.path), to_world));
+            sources.emplace_back(std::make_shared<lightmodel::NaiveRaySource>(r.path), to_world,
+                                 true);
             continue;
         }
         auto model = std::make_shared<lightmodel::LightModel>(
             ends_with(r.path, ".vdb") ? lightmodel::read_model(r.path)
                                       : lightmodel::build_model(r.path, {}));
-        add(PlacedRaySource(std::make_shared<lightmodel::ComplexSource>(std::move(model)),
-                            to_world));
+        sources.emplace_back(std::make_shared<lightmodel::ComplexSource>(std::move(model)),
+                             to_world);
     }
-}
-
-void RaySourceSet::add(PlacedRaySource source) {
-    sources_.push_back(std::move(source));
-    total_power_ = 0;
-    for (const PlacedRaySource& s : sources_) total_power_ += s.power();
-    probability_.clear(), cdf_.clear();
-    double running = 0;
-    for (const PlacedRaySource& s : sources_) {
-        const double p = total_power_ > 0 ? s.power() / total_power_ : 1.0 / sources_.size();
-        probability_.push_back(p);
-        cdf_.push_back(running += p);
-    }
-    cdf_.back() = 1;
-}
-
-size_t RaySourceSet::choose(double& u) const {
-    const size_t i = std::min(size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()),
-                              cdf_.size() - 1);
-    const double low = i ? cdf_[i - 1] : 0;
-    u = std::min(std::nextafter(1.0, 0.0), (u - low) / std::max(1e-300, cdf_[i] - low));
-    return i;
+    return sources;
 }
 
 }  // namespace rayset::tracer

@@ -23,59 +23,44 @@
 #include <vector>
 
 #include "lightmodel/emitter.h"
+#include "tracer/render/light_samples.h"
 #include "tracer/render/rgb.h"
 #include "tracer/render/spectrum.h"
 #include "tracer/scene_language/scene_description.h"
 
 namespace rayset::tracer {
 
-template <class Q>
-struct SourceLiSampleOf {
-    Vec3 wi;              // unit, toward the source, scene frame
-    double distance = 0;  // to the body along wi (shadow ray length), scene units
-    Q Li;                 // renderer radiance units (per nm when spectral)
-    double pdf = 0;       // sr^-1, not including the choice of the source
-};
-using SourceLiSample = SourceLiSampleOf<Rgb>;
-
-template <class Q>
-struct SourcePhotonOf {
-    Vec3 origin, direction;  // scene frame, direction unit
-    Q flux;                  // W per channel (per nm when spectral), of this photon
-    WavelengthsFor<Q> wavelengths;
-};
-using SourcePhoton = SourcePhotonOf<Rgb>;
-
-// One ray source placed in the scene.
+// One ray source placed in the scene, answering the queries of the light interface (light.h).
 class PlacedRaySource {
 public:
     // `to_world`: model mm -> scene coordinates (source_to_world after the mm -> unit scale).
     // Throws rayset::Error when the transform does not keep angles (non-uniform scale or
     // shear): radiance and solid angles would no longer map one to one.
-    PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emitter, const Matrix4& to_world);
+    PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emitter, const Matrix4& to_world,
+                    bool naive = false);
 
     const lightmodel::Emitter& emitter() const { return *emitter_; }
     // Luminous flux / 683 (W at 555 nm): what the sources are chosen by.
     double power() const { return power_; }
     double units_per_mm() const { return k_; }
+    // The naive ray set: no body, no light sampling, only its rays as photons.
+    bool photons_only() const { return naive_; }
 
+    // u.select (the light's choice, rescaled) picks the flux cell, u.u[0] the voxel,
+    // u.u[1..3] the point in it.
+    template <class Q>
+    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                                                const WavelengthsFor<Q>& wavelengths) const;
     // The body along a scene ray (unit direction) before t_max; t in scene units.
-    bool intersect(Vec3 origin, Vec3 direction, double t_max, double& t) const;
-    // Radiance arriving at `origin` from the body along `direction` (call after intersect),
-    // as RGB or at a path's wavelengths.
-    Rgb radiance(Vec3 origin, Vec3 direction, NoWavelengths = {}) const;
-    SampledSpectrum radiance(Vec3 origin, Vec3 direction,
-                             const SampledWavelengths& wavelengths) const;
-    std::optional<SourceLiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
-                                            NoWavelengths = {}) const;
-    std::optional<SourceLiSampleOf<SampledSpectrum>> sample_Li(
-        Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
-        const SampledWavelengths& wavelengths) const;
-    double pdf_Li(Vec3 ref, Vec3 wi) const;
+    bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const;
+    double pdf_Li(Vec3 ref, Vec3 wi, double t, double chosen) const;
+    // Radiance arriving at `origin` from the body along `direction` (after crossed).
+    template <class Q>
+    Q radiance(Vec3 origin, Vec3 direction, const WavelengthsFor<Q>& wavelengths) const;
     // A photon; spectral photons draw their wavelengths from the emitted light's spectrum by
     // `u_wavelength` (hero sampling, spectrum.h), or carry a ray's single wavelength.
-    SourcePhoton sample_Le(const double u[7]) const;
-    SourcePhotonOf<SampledSpectrum> sample_Le(const double u[7], double u_wavelength) const;
+    template <class Q>
+    LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const;
     // The whole light's spectrum weighted by luminance (zero when a camera cannot see it).
     lightmodel::BinnedSpectrum spectrum() const { return emitter_->phi_spectrum(); }
 
@@ -91,31 +76,11 @@ private:
     double k_ = 1;  // scene units per model mm
     double power_ = 0;
     double radiance_scale_ = 1;  // per mm^2 -> per unit^2
-};
-
-// Every ray source of a scene, with the choice probabilities of light sampling and photon
-// emission (both in proportion to power).
-class RaySourceSet {
-public:
-    RaySourceSet() = default;
-    // Builds or reads each source's model; `naive`: the stored rays themselves instead.
-    RaySourceSet(const SceneDescription& scene, bool naive);
-    void add(PlacedRaySource source);
-
-    bool empty() const { return sources_.empty(); }
-    bool naive() const { return naive_; }
-    size_t size() const { return sources_.size(); }
-    const PlacedRaySource& operator[](size_t i) const { return sources_[i]; }
-    double probability(size_t i) const { return probability_[i]; }
-    double total_power() const { return total_power_; }
-    // Source chosen by u in [0, 1); `u` is rescaled to [0, 1) for reuse.
-    size_t choose(double& u) const;
-
-private:
-    std::vector<PlacedRaySource> sources_;
-    std::vector<double> probability_, cdf_;
-    double total_power_ = 0;
     bool naive_ = false;
 };
+
+// The scene's ray sources, each model built from its ray file or read from a .vdb model file;
+// `naive`: the stored rays themselves instead (ray files only).
+std::vector<PlacedRaySource> read_ray_sources(const SceneDescription& scene, bool naive);
 
 }  // namespace rayset::tracer

@@ -1,4 +1,4 @@
-// RenderScene: Embree device and scene, materials, lights, and the three ray queries.
+// RenderScene: Embree device and scene, materials, and the three ray queries.
 #include "tracer/render/render_scene.h"
 
 #include <cmath>
@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "tracer/render/camera.h"
+#include "tracer/render/povray_lights.h"
 #include "tracer/render/scene_geometry.h"
 
 namespace rayset::tracer {
@@ -60,7 +61,7 @@ void check_device(RTCDevice device, const char* what) {
     throw Error(fmt::format("not supported: {} at {}", feature, where.str()));
 }
 
-// The light features the renderer does not render (lights.cpp refuses its own: shadowless,
+// The light features the renderer does not render (povray_lights.cpp refuses its own: shadowless,
 // circular and orient area lights, fade powers other than 2). media_interaction,
 // media_attenuation and photon flags matter only with media and photon mapping, which a path
 // tracer does not use; area_illumination is what its area lights always do.
@@ -99,7 +100,7 @@ RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
     refuse_what_is_not_rendered(scene);
     units_.metres_per_unit = scene.global.millimetres_per_unit / 1000;
     const double to_internal = 1 / units_.per_square_metre();
-    lights_ = LightSet(scene.lights, units_);
+    read_povray_lights(scene.lights, units_);  // refuses, at load, what has no physical reading
     for (const ObjectInstance& o : scene.objects)
         materials_.push_back(material_from_pov(o, to_internal));
     background_ = to_internal * scene.background.rgb();

@@ -1,6 +1,7 @@
 // The scene as the renderer queries it: the SceneDescription's objects in Embree 3 (world
 // triangles for triangles and boxes, instanced prototypes for meshes, user geometry for spheres,
-// ellipsoids and planes), their materials, the lights and the unit conventions.
+// ellipsoids and planes), their materials and the unit conventions. The lights are the
+// integrators' (light.h).
 #pragma once
 
 #include <memory>
@@ -8,8 +9,8 @@
 
 #include <embree3/rtcore.h>
 
-#include "tracer/render/lights.h"
 #include "tracer/render/material.h"
+#include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/units.h"
 
 namespace rayset::tracer {
@@ -47,7 +48,6 @@ public:
     RenderScene& operator=(const RenderScene&) = delete;
 
     const SceneDescription& description() const { return description_; }
-    const LightSet& lights() const { return lights_; }
     const Material& material(int object) const { return materials_[object]; }
     const SceneUnits& units() const { return units_; }
     Rgb background() const { return background_; }  // renderer units
@@ -76,7 +76,6 @@ public:
 private:
     SceneDescription description_;
     SceneUnits units_;
-    LightSet lights_;
     std::vector<Material> materials_;
     Rgb background_;
     IlluminantSpectrum background_spectrum_;

@@ -1,0 +1,178 @@
+// The scene's lights behind one interface, chosen in proportion to power (see light.h).
+#include "tracer/render/light.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "tracer/render/sampling.h"
+
+namespace rayset::tracer {
+
+namespace {
+
+// Slab test of a ray against a box (already widened: the box of coplanar rectangles is flat).
+bool crosses_box(Vec3 origin, Vec3 direction, double t_max, Vec3 low, Vec3 high) {
+    double t0 = 0, t1 = t_max;
+    const double o[3] = {origin.x, origin.y, origin.z},
+                 d[3] = {direction.x, direction.y, direction.z};
+    const double lo[3] = {low.x, low.y, low.z}, hi[3] = {high.x, high.y, high.z};
+    // A ray outside a slab and heading away from it misses the box: decided by signs alone,
+    // before any division. For a unit direction the slab test below says the same (both its
+    // distances are negative), so this changes no outcome, only what those rays cost. A NaN
+    // t_max makes the slab test reject nothing: then neither does this.
+    bool away = false;
+    for (int k = 0; k < 3; ++k) away |= (o[k] < lo[k] && d[k] < 0) | (o[k] > hi[k] && d[k] > 0);
+    if (away && !std::isnan(t_max)) return false;
+    for (int k = 0; k < 3; ++k) {
+        const double inverse = 1 / d[k];
+        double near = (lo[k] - o[k]) * inverse, far = (hi[k] - o[k]) * inverse;
+        if (near > far) std::swap(near, far);
+        if (std::isnan(near)) {  // parallel to the slab: inside it or not
+            if (o[k] < lo[k] || o[k] > hi[k]) return false;
+            continue;
+        }
+        t0 = std::max(t0, near), t1 = std::min(t1, far);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+// The box around rectangles, widened once here: the box test runs for every ray a path casts.
+void rectangles_box(const std::vector<RectLight>& rects, Vec3& low, Vec3& high) {
+    low = {1e300, 1e300, 1e300}, high = {-1e300, -1e300, -1e300};
+    for (const RectLight& r : rects)
+        for (double a : {-0.5, 0.5})
+            for (double b : {-0.5, 0.5}) {
+                const Vec3 c = r.centre + a * r.edge1 + b * r.edge2;
+                low = {std::min(low.x, c.x), std::min(low.y, c.y), std::min(low.z, c.z)};
+                high = {std::max(high.x, c.x), std::max(high.y, c.y), std::max(high.z, c.z)};
+            }
+    for (int k = 0; k < 3; ++k) {
+        double& lo = k == 0 ? low.x : k == 1 ? low.y : low.z;
+        double& hi = k == 0 ? high.x : k == 1 ? high.y : high.z;
+        const double margin = 1e-9 * (std::abs(lo) + std::abs(hi) + (hi - lo)) + 1e-300;
+        lo -= margin, hi += margin;
+    }
+}
+
+}  // namespace
+
+lightmodel::BinnedSpectrum ordinary_light_density() {
+    const lightmodel::BinnedSpectrum d65 = lightmodel::d65_spectrum();
+    std::array<double, lightmodel::kSpectrumBins> light{};
+    for (int k = 0; k < lightmodel::kSpectrumBins; ++k) light[size_t(k)] = d65.value(k);
+    return film_wavelength_density(light);
+}
+
+LightSet::LightSet(std::vector<Light> lights) : lights_(std::move(lights)) {
+    for (size_t i = 0; i < lights_.size(); ++i) {
+        cdf_.push_back(total_power_ += lights_[i].power());
+        if (lights_[i].is_rectangle()) rectangles_.push_back(i);
+        if (lights_[i].is_ray_source()) {
+            has_ray_sources_ = true;
+            if (!lights_[i].photons_only()) ray_source_bodies_.push_back(i);
+        }
+    }
+    for (size_t i = 0; i < cdf_.size(); ++i)
+        probability_.push_back(total_power_ > 0 ? (cdf_[i] - (i ? cdf_[i - 1] : 0)) / total_power_
+                                                : 0);
+}
+
+LightSet::LightSet(const SceneDescription& scene, const SceneUnits& units, bool naive_sources) {
+    PovrayLights povray = read_povray_lights(scene.lights, units);
+    std::vector<Light> lights;
+    for (PointLight& l : povray.points) lights.emplace_back(std::move(l));
+    for (RectLight& l : povray.rects) lights.emplace_back(std::move(l));
+    for (PlacedRaySource& s : read_ray_sources(scene, naive_sources))
+        lights.emplace_back(std::move(s));
+    *this = LightSet(std::move(lights));
+    rectangles_box(povray.rects, rectangles_low_, rectangles_high_);
+}
+
+size_t LightSet::choose(double& u) const {
+    const double x = u * total_power_;
+    size_t i = 0;
+    if (cdf_.size() <= 16) {
+        // The index upper_bound finds, counted without branches: for a handful of lights this
+        // is faster than a binary search whose branches the processor cannot predict.
+        for (double c : cdf_) i += c <= x;
+    } else {
+        i = size_t(std::upper_bound(cdf_.begin(), cdf_.end(), x) - cdf_.begin());
+    }
+    i = std::min(i, cdf_.size() - 1);
+    const double low = i ? cdf_[i - 1] : 0;
+    u = std::min(std::nextafter(1.0, 0.0), (x - low) / std::max(1e-300, cdf_[i] - low));
+    return i;
+}
+
+LightUniforms LightSet::draw(Pcg32& rng) const {
+    LightUniforms u;
+    u.select = rng.uniform_float();
+    const int count = has_ray_sources_ ? 4 : 2;
+    for (int k = 0; k < count; ++k) u.u[k] = rng.uniform_float();
+    return u;
+}
+
+template <class Q>
+std::optional<LightLiSampleOf<Q>> LightSet::sample_Li(Vec3 ref, const LightUniforms& u,
+                                                      const WavelengthsFor<Q>& wavelengths) const {
+    if (!(total_power_ > 0)) return std::nullopt;
+    LightUniforms chosen = u;
+    const size_t i = choose(chosen.select);
+    return lights_[i].sample_Li<Q>(ref, chosen, probability_[i], wavelengths);
+}
+
+template <class Q>
+Q LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
+                             const WavelengthsFor<Q>& wavelengths) const {
+    Q sum{};
+    auto add = [&](size_t i) {
+        double t = 0;
+        if (!lights_[i].crossed(origin, direction, t_max, t)) return;
+        double weight = 1;
+        if (bsdf_pdf >= 0)
+            weight =
+                power_heuristic(bsdf_pdf, lights_[i].pdf_Li(origin, direction, t, probability_[i]));
+        sum += weight * lights_[i].radiance<Q>(origin, direction, wavelengths);
+    };
+    if (!rectangles_.empty() &&
+        crosses_box(origin, direction, t_max, rectangles_low_, rectangles_high_))
+        for (size_t i : rectangles_) add(i);
+    for (size_t i : ray_source_bodies_) add(i);
+    return sum;
+}
+
+template <class Q>
+LightPhotonOf<Q> LightSet::sample_Le(double u[7], double u_wavelength, uint64_t emitted) const {
+    if (!(total_power_ > 0)) return {};
+    const size_t i = choose(u[0]);
+    LightPhotonOf<Q> photon = lights_[i].sample_Le<Q>(u, u_wavelength);
+    photon.flux = (1 / (probability_[i] * double(emitted))) * photon.flux;
+    photon.counts_first_hit = lights_[i].photons_only();
+    return photon;
+}
+
+lightmodel::BinnedSpectrum LightSet::wavelength_density() const {
+    if (!has_ray_sources_) return ordinary_light_density();
+    std::array<double, lightmodel::kSpectrumBins> light{};
+    for (size_t j = 0; j < lights_.size(); ++j) {
+        const lightmodel::BinnedSpectrum s = lights_[j].spectrum();
+        if (s.is_zero()) continue;
+        for (int k = 0; k < lightmodel::kSpectrumBins; ++k)
+            light[size_t(k)] += probability_[j] * s.value(k) / s.integral();
+    }
+    return film_wavelength_density(light);
+}
+
+#define RAYSET_LIGHT_SET_QUERIES(Q)                                                                \
+    template std::optional<LightLiSampleOf<Q>> LightSet::sample_Li<Q>(                             \
+        Vec3, const LightUniforms&, const WavelengthsFor<Q>&) const;                               \
+    template Q LightSet::crossed_radiance<Q>(Vec3, Vec3, double, double, const WavelengthsFor<Q>&) \
+        const;                                                                                     \
+    template LightPhotonOf<Q> LightSet::sample_Le<Q>(double[7], double, uint64_t) const;
+RAYSET_LIGHT_SET_QUERIES(Rgb)
+RAYSET_LIGHT_SET_QUERIES(SampledSpectrum)
+#undef RAYSET_LIGHT_SET_QUERIES
+
+}  // namespace rayset::tracer

@@ -1,0 +1,141 @@
+// The light interface: every light the renderer knows (POV-Ray's point, spot and area lights,
+// and the scene's ray-file sources) behind one set of queries, so that both integrators choose,
+// sample, weigh and emit from all of them alike. After pbrt-v4's Light: a tagged union of the
+// light kinds dispatched without virtual calls, queries templated on what paths carry (Rgb, or
+// SampledSpectrum at a path's wavelengths) and taking canonical random numbers.
+//
+// Queries of one light, in the scene frame and the renderer's units (units.h):
+//   sample_Li   a direction toward the light from a reference point, the radiance arriving
+//               along it (intensity / d^2 for a point) and its solid-angle density;
+//   crossed     where a ray meets the light's body (area lights, ray-source bodies): lights are
+//               not geometry, a ray collects every body it crosses before the first surface;
+//   radiance    the radiance such a ray brings; pdf_Li the density sample_Li has for it;
+//   sample_Le   a photon: origin, direction and flux.
+// Densities include the probability `chosen` with which the light was picked, passed in.
+// Emitting surfaces and the background are not lights: paths collect them where they meet them.
+#pragma once
+
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "core/random.h"
+#include "tracer/render/povray_lights.h"
+#include "tracer/render/ray_sources.h"
+#include "tracer/render/spectrum.h"
+#include "tracer/render/units.h"
+
+namespace rayset::tracer {
+
+class Light {
+public:
+    template <class Kind>
+    explicit Light(Kind kind) : kind_(std::move(kind)) {}
+
+    // What lights are chosen by: W (a ray source's luminous flux / 683).
+    double power() const {
+        return std::visit([](const auto& l) { return l.power(); }, kind_);
+    }
+    // A ray source that is its stored rays (no body, no light sampling): its photons count
+    // from their first hit.
+    bool photons_only() const {
+        return std::visit([](const auto& l) { return l.photons_only(); }, kind_);
+    }
+    bool is_rectangle() const { return std::holds_alternative<RectLight>(kind_); }
+    bool is_ray_source() const { return std::holds_alternative<PlacedRaySource>(kind_); }
+
+    template <class Q>
+    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                                                const WavelengthsFor<Q>& wavelengths) const {
+        return std::visit(
+            [&](const auto& l) { return l.template sample_Li<Q>(ref, u, chosen, wavelengths); },
+            kind_);
+    }
+    bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const {
+        return std::visit([&](const auto& l) { return l.crossed(origin, direction, t_max, t); },
+                          kind_);
+    }
+    // For a ray from `ref` along `wi` that crossed the body at distance t.
+    double pdf_Li(Vec3 ref, Vec3 wi, double t, double chosen) const {
+        return std::visit([&](const auto& l) { return l.pdf_Li(ref, wi, t, chosen); }, kind_);
+    }
+    template <class Q>
+    Q radiance(Vec3 origin, Vec3 direction, const WavelengthsFor<Q>& wavelengths) const {
+        return std::visit(
+            [&](const auto& l) { return l.template radiance<Q>(origin, direction, wavelengths); },
+            kind_);
+    }
+    template <class Q>
+    LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const {
+        return std::visit([&](const auto& l) { return l.template sample_Le<Q>(u, u_wavelength); },
+                          kind_);
+    }
+    // The emitted light's spectral shape (any scale; zero when unknown), where paths that
+    // carry it are worth sampling.
+    lightmodel::BinnedSpectrum spectrum() const {
+        return std::visit([](const auto& l) { return l.spectrum(); }, kind_);
+    }
+
+private:
+    std::variant<PointLight, RectLight, PlacedRaySource> kind_;
+};
+
+// Every light of a scene, chosen in proportion to power for light sampling and for photons.
+class LightSet {
+public:
+    LightSet() = default;
+    explicit LightSet(std::vector<Light> lights);
+    // The scene's POV-Ray lights, then its ray sources (each model built from its ray file or
+    // read from a .vdb; with `naive_sources`, the stored rays themselves).
+    LightSet(const SceneDescription& scene, const SceneUnits& units, bool naive_sources);
+
+    bool empty() const { return lights_.empty(); }
+    size_t size() const { return lights_.size(); }
+    const Light& operator[](size_t i) const { return lights_[i]; }
+    double probability(size_t i) const { return probability_[i]; }
+    double total_power() const { return total_power_; }
+    bool has_bodies() const { return !rectangles_.empty() || !ray_source_bodies_.empty(); }
+    bool has_ray_sources() const { return has_ray_sources_; }
+
+    // The canonical numbers of one light sample (floats: 24 bits are ample for a choice among
+    // lights, cells and voxels and a point within a voxel).
+    LightUniforms draw(Pcg32& rng) const;
+    // A light chosen by u.select, then a sample of it; the pdf includes the choice.
+    template <class Q>
+    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u,
+                                                const WavelengthsFor<Q>& wavelengths) const;
+    // Radiance of every body a ray (origin, unit direction) crosses before t_max, each weighted
+    // by the power heuristic against light sampling from `origin`; pass bsdf_pdf < 0 for rays no
+    // light sampling could have made (camera rays, delta bounces): weight 1.
+    template <class Q>
+    Q crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
+                       const WavelengthsFor<Q>& wavelengths) const;
+    // A photon of a pass of `emitted`: a light chosen by u[0] (rescaled for the light's own
+    // use), its flux divided by the choice and by `emitted`; zero flux when no light shines.
+    template <class Q>
+    LightPhotonOf<Q> sample_Le(double u[7], double u_wavelength, uint64_t emitted) const;
+
+    // Where the wavelengths of paths that carry these lights' light are worth drawing:
+    // the lights' spectra mixed by power times the film's weights (D65 x the film's weights
+    // when only POV-Ray lights, whose spectra are D65 times a smooth factor, shine).
+    lightmodel::BinnedSpectrum wavelength_density() const;
+
+private:
+    size_t choose(double& u) const;  // rescales u to [0, 1) for reuse
+
+    std::vector<Light> lights_;
+    std::vector<double> cdf_;  // running sum of the lights' power
+    std::vector<double> probability_;
+    // Lights a ray can cross: rectangles (with a box around them all, widened a little: most
+    // rays miss it at once) and ray sources with a body.
+    std::vector<size_t> rectangles_, ray_source_bodies_;
+    Vec3 rectangles_low_, rectangles_high_;
+    double total_power_ = 0;
+    bool has_ray_sources_ = false;
+};
+
+// D65 x the film's weights: where the light of POV-Ray lights, emitting surfaces and the
+// background (D65 times a smooth factor, grey ones exactly D65) is worth sampling.
+lightmodel::BinnedSpectrum ordinary_light_density();
+
+}  // namespace rayset::tracer

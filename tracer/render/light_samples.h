@@ -1,0 +1,38 @@
+// The small records of the light interface (light.h): the canonical numbers of a light sample,
+// a light sample and a photon, for either transport (Q = Rgb or SampledSpectrum).
+#pragma once
+
+#include "tracer/render/spectrum.h"
+
+namespace rayset::tracer {
+
+// The canonical random numbers of one light sample, each in [0, 1): `select` picks the light and
+// is handed to it rescaled to [0, 1) (a ray source reuses it for its flux cell); a light uses as
+// many of `u` as it needs, in order (a rectangle 2, a ray source 4, a point none).
+struct LightUniforms {
+    static constexpr int kCount = 4;
+    double select = 0;
+    double u[kCount] = {};
+};
+
+template <class Q>
+struct LightLiSampleOf {
+    Vec3 wi;              // unit, from the reference point toward the light
+    double distance = 0;  // to the light along wi (the shadow ray's length), scene units
+    Q Li;                 // arriving radiance (a point light's intensity / d^2): divide by pdf
+    double pdf = 0;       // solid-angle density including the choice of the light; that choice
+                          // alone for a point light
+    bool delta = false;   // a point light: no other strategy can find it, no MIS
+};
+
+template <class Q>
+struct LightPhotonOf {
+    Vec3 origin, direction;  // scene frame, direction unit
+    Q flux;                  // W per channel (per nm when spectral), of this photon
+    WavelengthsFor<Q> wavelengths;
+    // Its light has no other estimate of its direct light (the naive ray set: no body, no
+    // light sampling), so the photon counts from its first hit.
+    bool counts_first_hit = false;
+};
+
+}  // namespace rayset::tracer

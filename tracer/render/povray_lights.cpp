@@ -1,0 +1,236 @@
+// POV-Ray lights as physical emitters (see povray_lights.h and README.md).
+#include "tracer/render/povray_lights.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "tracer/render/light_samples.h"
+#include "tracer/render/sampling.h"
+
+namespace rayset::tracer {
+
+namespace {
+
+// POV-Ray's cubic_spline: 0 below `low`, 1 from `high`, smoothstep between.
+double cubic_spline(double low, double high, double x) {
+    if (x < low) return 0;
+    if (x >= high) return 1;
+    const double s = (x - low) / (high - low);
+    return (3 - 2 * s) * s * s;
+}
+
+// Solid angle weighted by the spotlight factor: integral of spot_factor over the sphere
+// (Simpson's rule in cos(theta); 4 pi for a plain point light).
+double effective_solid_angle(const PointLight& light) {
+    if (!light.spot) return 4 * kPi;
+    const int n = 20000;
+    double sum = 0;
+    for (int i = 0; i <= n; ++i) {
+        const double mu = double(i) / n;
+        const double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+        sum +=
+            w * light.spot_factor(mu * light.axis + std::sqrt(1 - mu * mu) * Frame(light.axis).s);
+    }
+    return 2 * kPi * sum / (3.0 * n);
+}
+
+}  // namespace
+
+double PointLight::spot_factor(Vec3 direction) const {
+    if (!spot) return 1;
+    const double c = dot(direction, axis);
+    if (c <= 0) return 0;
+    double factor = std::pow(c, tightness);
+    if (cos_radius > 0 && c < cos_radius) factor *= cubic_spline(cos_falloff, cos_radius, c);
+    return factor;
+}
+
+bool RectLight::crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const {
+    const double denom = dot(direction, normal);
+    if (denom == 0 || (!two_sided && denom > 0)) return false;
+    t = dot(centre - origin, normal) / denom;
+    if (!(t > 0 && t < t_max)) return false;
+    const Vec3 q = origin + t * direction - centre;
+    return std::abs(dot(q, dual1)) <= 0.5 && std::abs(dot(q, dual2)) <= 0.5;
+}
+
+double RectLight::pdf_Li(Vec3, Vec3 wi, double t, double chosen) const {
+    return chosen * t * t / (area * std::abs(dot(wi, normal)));
+}
+
+template <class Q>
+std::optional<LightLiSampleOf<Q>> PointLight::sample_Li(
+    Vec3 ref, const LightUniforms&, double chosen, const WavelengthsFor<Q>& wavelengths) const {
+    const Vec3 d = position - ref;
+    LightLiSampleOf<Q> out;
+    out.distance = length(d);
+    if (out.distance == 0) return std::nullopt;
+    out.wi = (1 / out.distance) * d;
+    const double factor = spot_factor(-out.wi) / (out.distance * out.distance);
+    out.Li = factor * emitted(intensity, intensity_spectrum, wavelengths);
+    out.pdf = chosen;
+    out.delta = true;
+    return out;
+}
+
+template <class Q>
+std::optional<LightLiSampleOf<Q>> RectLight::sample_Li(Vec3 ref, const LightUniforms& u,
+                                                       double chosen,
+                                                       const WavelengthsFor<Q>& wavelengths) const {
+    const Vec3 q = centre + (u.u[0] - 0.5) * edge1 + (u.u[1] - 0.5) * edge2;
+    const Vec3 d = q - ref;
+    LightLiSampleOf<Q> out;
+    out.distance = length(d);
+    if (out.distance == 0) return std::nullopt;
+    out.wi = (1 / out.distance) * d;
+    double cos_light = -dot(out.wi, normal);
+    if (two_sided) cos_light = std::abs(cos_light);
+    if (cos_light <= 0) return std::nullopt;
+    out.Li = emitted(radiance_rgb, radiance_spectrum, wavelengths);
+    out.pdf = chosen * out.distance * out.distance / (area * cos_light);
+    return out;
+}
+
+namespace {
+
+// A photon's flux `watts` (per channel) of light with the spectrum `spectrum`, at wavelengths
+// drawn from D65 (the shape of every POV-Ray light's spectrum up to a smooth factor).
+template <class Q>
+void set_photon_flux(LightPhotonOf<Q>& photon, const Rgb& watts, const IlluminantSpectrum& spectrum,
+                     double u_wavelength) {
+    if constexpr (std::is_same_v<Q, SampledSpectrum>) {
+        static const lightmodel::BinnedSpectrum d65 = lightmodel::d65_spectrum();
+        photon.wavelengths = SampledWavelengths::sample(d65, u_wavelength);
+        photon.flux = emitted(watts, spectrum, photon.wavelengths);
+    } else {
+        photon.flux = watts;
+    }
+}
+
+}  // namespace
+
+template <class Q>
+LightPhotonOf<Q> PointLight::sample_Le(const double u[7], double u_wavelength) const {
+    // The spot factor is zero behind the light and, with a radius, outside the falloff cone.
+    const double cos_edge = !spot ? -1 : std::max(0.0, cos_radius > 0 ? cos_falloff : 0.0);
+    const double cos_theta = 1 - u[1] * (1 - cos_edge), phi = 2 * kPi * u[2];
+    const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
+    const Vec3 local{sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+    LightPhotonOf<Q> photon;
+    photon.origin = position;
+    photon.direction = spot ? normalized(Frame(axis).to_world(local)) : local;
+    const double solid_angle = 2 * kPi * (1 - cos_edge);
+    set_photon_flux(photon, (spot_factor(photon.direction) * solid_angle) * intensity,
+                    intensity_spectrum, u_wavelength);
+    return photon;
+}
+
+template <class Q>
+LightPhotonOf<Q> RectLight::sample_Le(const double u[7], double u_wavelength) const {
+    LightPhotonOf<Q> photon;
+    photon.origin = centre + (u[1] - 0.5) * edge1 + (u[2] - 0.5) * edge2;
+    const bool back = two_sided && u[0] < 0.5;
+    const Vec3 side = back ? -normal : normal;
+    photon.direction = normalized(Frame(side).to_world(cosine_hemisphere(u[3], u[4])));
+    // L cos dA dw over (cos / pi) / A, times the two sides' choice.
+    const double sides = two_sided ? 2 : 1;
+    set_photon_flux(photon, (sides * kPi * area) * radiance_rgb, radiance_spectrum, u_wavelength);
+    return photon;
+}
+
+lightmodel::BinnedSpectrum PointLight::spectrum() const { return lightmodel::d65_spectrum(); }
+lightmodel::BinnedSpectrum RectLight::spectrum() const { return lightmodel::d65_spectrum(); }
+
+namespace {
+
+PointLight point_light_of(const LightSource& source, const SceneUnits& units,
+                          const std::string& where) {
+    Rgb intensity = source.colour;
+    // POV-Ray's fade 2 / (1 + (d/d0)^2) tends to 2 d0^2 / d^2: read as inverse-square with the
+    // same far-field value. Other fade powers have no physical reading.
+    if (source.fade_distance > 0 && source.fade_power > 0) {
+        if (source.fade_power != 2)
+            throw Error(fmt::format(
+                "not supported: fade_power {} (only 2, read as the inverse-square law) at {}",
+                source.fade_power, where));
+        const double d0 = source.fade_distance * units.metres_per_unit;
+        intensity = (2 * d0 * d0) * intensity;
+    }
+    PointLight point;
+    point.position = source.position;
+    point.intensity = intensity;
+    point.intensity_spectrum = IlluminantSpectrum(intensity);
+    point.spot = source.spotlight;
+    if (point.spot) {
+        const Vec3 axis = source.point_at - source.position;
+        if (length(axis) == 0)
+            throw Error(fmt::format("spotlight point_at equals its location at {}", where));
+        point.axis = normalized(axis);
+        point.cos_radius = std::cos(source.radius * kRadiansPerDegree);
+        point.cos_falloff = std::cos(source.falloff * kRadiansPerDegree);
+        point.tightness = source.tightness;
+    }
+    point.emitted_power = average(intensity) * effective_solid_angle(point);
+    return point;
+}
+
+// The n1 x n2 POV-Ray lights of an area light share the colour, so together they emit the
+// power of `point`; the rectangle emits the same power, Lambertian.
+RectLight rect_light_of(const LightSource& source, const PointLight& point,
+                        const std::string& where) {
+    RectLight rect;
+    rect.centre = source.position;
+    rect.edge1 = source.axis1;
+    rect.edge2 = source.axis2;
+    const Vec3 n = cross(rect.edge1, rect.edge2);
+    rect.area = length(n);
+    if (rect.area == 0) throw Error(fmt::format("area_light axes span no area at {}", where));
+    rect.normal = (1 / rect.area) * n;
+    // q = a edge1 + b edge2 gives a = dot(q, cross(edge2, n)) / |n|^2, b likewise.
+    rect.dual1 = (1 / (rect.area * rect.area)) * cross(rect.edge2, n);
+    rect.dual2 = (1 / (rect.area * rect.area)) * cross(n, rect.edge1);
+    rect.two_sided = !point.spot;
+    if (point.spot && dot(rect.normal, point.axis) < 0) rect.normal = -rect.normal;
+    const double projected = (rect.two_sided ? 2 : 1) * kPi * rect.area;  // W per unit radiance
+    rect.emitted_power = point.emitted_power;
+    rect.radiance_rgb = (effective_solid_angle(point) / projected) * point.intensity;
+    rect.radiance_spectrum = IlluminantSpectrum(rect.radiance_rgb);
+    return rect;
+}
+
+}  // namespace
+
+PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const SceneUnits& units) {
+    PovrayLights out;
+    for (const LightSource& source : lights) {
+        const std::string where = source.location.str();
+        if (source.shadowless)
+            throw Error(
+                fmt::format("not supported: shadowless light_source (not physical) at {}", where));
+        if (source.area_light && (source.circular || source.orient))
+            throw Error(fmt::format(
+                "not supported: circular/orient area_light (only rectangles) at {}", where));
+        const PointLight point = point_light_of(source, units, where);
+        if (source.area_light)
+            out.rects.push_back(rect_light_of(source, point, where));
+        else
+            out.points.push_back(point);
+    }
+    return out;
+}
+
+#define RAYSET_POVRAY_LIGHT_QUERIES(Q)                                                 \
+    template std::optional<LightLiSampleOf<Q>> PointLight::sample_Li<Q>(               \
+        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;           \
+    template std::optional<LightLiSampleOf<Q>> RectLight::sample_Li<Q>(                \
+        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;           \
+    template LightPhotonOf<Q> PointLight::sample_Le<Q>(const double[7], double) const; \
+    template LightPhotonOf<Q> RectLight::sample_Le<Q>(const double[7], double) const;
+RAYSET_POVRAY_LIGHT_QUERIES(Rgb)
+RAYSET_POVRAY_LIGHT_QUERIES(SampledSpectrum)
+#undef RAYSET_POVRAY_LIGHT_QUERIES
+
+}  // namespace rayset::tracer

@@ -1,0 +1,86 @@
+// POV-Ray light sources read physically (the unit conventions are in README.md beside this
+// file): point and spot lights as point emitters of radiant intensity in W/sr, area lights as
+// Lambertian rectangles. Both kinds answer the queries of the light interface (light.h).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "tracer/render/light_samples.h"
+#include "tracer/render/rgb.h"
+#include "tracer/render/rgb_upsampling.h"
+#include "tracer/render/units.h"
+
+namespace rayset::tracer {
+
+// A point or spot light: radiant intensity `intensity` W/sr along the axis (spot) or in every
+// direction, inverse-square law.
+struct PointLight {
+    Vec3 position;
+    Rgb intensity;
+    IlluminantSpectrum intensity_spectrum;  // the same for spectral transport
+    bool spot = false;
+    Vec3 axis;  // unit, toward point_at
+    double cos_radius = 0, cos_falloff = 0, tightness = 0;
+    double emitted_power = 0;  // W, average over channels
+
+    // POV-Ray's spotlight factor (Attenuate_Light) for a unit direction leaving the light.
+    double spot_factor(Vec3 direction) const;
+
+    double power() const { return emitted_power; }
+    bool photons_only() const { return false; }
+    template <class Q>
+    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                                                const WavelengthsFor<Q>& wavelengths) const;
+    bool crossed(Vec3, Vec3, double, double&) const { return false; }
+    double pdf_Li(Vec3, Vec3, double, double) const { return 0; }
+    template <class Q>
+    Q radiance(Vec3, Vec3, const WavelengthsFor<Q>&) const {
+        return {};
+    }
+    // Directions uniform over the cone the spot factor is not zero in (the sphere for a point).
+    template <class Q>
+    LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const;
+    lightmodel::BinnedSpectrum spectrum() const;
+};
+
+// An area light: a Lambertian rectangle of radiance `radiance` (renderer units), one-sided
+// toward `normal` or two-sided.
+struct RectLight {
+    Vec3 centre, edge1, edge2;
+    Vec3 normal;  // unit; the emitting side (both sides when two_sided)
+    bool two_sided = false;
+    double area = 0;
+    Rgb radiance_rgb;                      // W/(unit^2 sr)
+    IlluminantSpectrum radiance_spectrum;  // the same for spectral transport
+    Vec3 dual1, dual2;         // dot(q, dual_k) is q's coordinate along edge_k, for q in the plane
+    double emitted_power = 0;  // W, average over channels
+
+    double power() const { return emitted_power; }
+    bool photons_only() const { return false; }
+    template <class Q>
+    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                                                const WavelengthsFor<Q>& wavelengths) const;
+    // Distance along (origin, unit direction) to the rectangle in (0, t_max), if crossed from
+    // an emitting side.
+    bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const;
+    double pdf_Li(Vec3 ref, Vec3 wi, double t, double chosen) const;
+    template <class Q>
+    Q radiance(Vec3, Vec3, const WavelengthsFor<Q>& wavelengths) const {
+        return emitted(radiance_rgb, radiance_spectrum, wavelengths);
+    }
+    // A uniform point, a cosine-distributed direction on an emitting side.
+    template <class Q>
+    LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const;
+    lightmodel::BinnedSpectrum spectrum() const;
+};
+
+struct PovrayLights {
+    std::vector<PointLight> points;
+    std::vector<RectLight> rects;
+};
+// The scene's light_source statements; throws rayset::Error, naming the statement, for what
+// has no physical reading (shadowless lights, fade powers other than 2, circular area lights).
+PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const SceneUnits& units);
+
+}  // namespace rayset::tracer
