@@ -9,7 +9,6 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 
 #include <gtest/gtest.h>
 
@@ -24,20 +23,13 @@
 namespace rayset::tracer {
 namespace {
 
-namespace fs = std::filesystem;
-
 const std::string kRaytrace = std::string(RAYSET_BINARY_DIR) + "/tracer/raytrace";
-const std::string kCornell = (fs::path(__FILE__).parent_path() / "scenes" / "cornell.pov").string();
 constexpr int kPasses = 7, kWidth = 40, kHeight = 30, kSeed = 5;
 
-std::string cornell_with_receiver(const test::ScratchDir&) {
-    return test::read_file(kCornell) +
-           "illuminance_receiver { <5, 0.01, 5>, <0, 0, 45>, <45, 0, 0> resolution <4, 3> name "
-           "\"floor\" }\n";
-}
+std::string cornell_with_receiver(const test::ScratchDir&) { return test::cornell_with_receiver(); }
 
 // A Lambertian disk of 2e4 rays (its model built at load by every rank) in a closed grey box,
-// with a faint point light: all three layers and the path tracer's ordinary light.
+// with a faint point light: all three layers.
 std::string bidirectional_box(const test::ScratchDir& dir) {
     const std::string rays = dir.file("disk.tm25ray");  // beside the scene, named relative to it
     test::write_disk_rays(rays, 20000);

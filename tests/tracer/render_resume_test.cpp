@@ -4,7 +4,6 @@
 // bidirectional integrators. The tool level is raytrace_resume_tool_test.cpp.
 #include <atomic>
 #include <cstring>
-#include <filesystem>
 
 #include <gtest/gtest.h>
 
@@ -22,20 +21,9 @@
 namespace rayset::tracer {
 namespace {
 
-namespace fs = std::filesystem;
-
-const std::string kCornell = (fs::path(__FILE__).parent_path() / "scenes" / "cornell.pov").string();
-
-// Cornell box with an illuminance receiver on its floor (facing up).
-std::string cornell_with_receiver() {
-    return test::read_file(kCornell) +
-           "illuminance_receiver { <5, 0.01, 5>, <0, 0, 45>, <45, 0, 0> resolution <4, 3> name "
-           "\"floor\" }\n";
-}
-
 // A Lambertian disk (1e5 rays; its light model stored as .vdb) hanging in a closed box of
-// albedo 0.5 with a faint point light: primary and secondary light, direct visibility and
-// the path tracer's ordinary light all enter the render.
+// albedo 0.5 with a faint point light: primary and secondary light and direct visibility
+// enter the render.
 std::string bidirectional_box(const test::ScratchDir& dir) {
     const std::string rays = dir.file("disk.tm25ray"), model = dir.file("disk.vdb");
     test::write_disk_rays(rays, 100000);
@@ -126,7 +114,7 @@ TEST(RenderResume, PathIntegratorContinuesBitForBit) {
     test::ScratchDir dir;
     RenderSettings settings;
     settings.width = 24, settings.height = 18, settings.seed = 11;
-    const RenderResult r = check_resume(cornell_with_receiver(), settings, 2, 5, dir);
+    const RenderResult r = check_resume(test::cornell_with_receiver(), settings, 2, 5, dir);
     EXPECT_GT(total_green(r.film), 0);
     EXPECT_GT(total_green(r.receivers.at(0).irradiance), 0);
 }
@@ -150,7 +138,7 @@ TEST(RenderResume, BidirectionalIntegratorContinuesBitForBit) {
 }
 
 TEST(RenderResume, ContinuedStateMustFitTheScene) {
-    const RenderScene scene(parse_scene_text(cornell_with_receiver(), "cornell.pov"));
+    const RenderScene scene(parse_scene_text(test::cornell_with_receiver(), "cornell.pov"));
     RenderSettings settings;
     settings.width = 8, settings.height = 6, settings.passes = 1;
     RenderResult small = render(scene, settings);

@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "converters/analytic/analytic_sources.h"
 #include "converters/analytic/synth.h"
+#include "support/test_support.h"
 #include "tracer/render/rgb.h"
 
 namespace rayset::test {
@@ -67,6 +69,13 @@ std::string disk_in_box_scene(const std::string& source) {
         ray_source { ")" +
            source + R"(" rotate <90, 0, 0> translate <0, 20, 0> }
     )";
+}
+
+std::string cornell_with_receiver() {
+    const auto cornell = std::filesystem::path(__FILE__).parent_path() / "scenes" / "cornell.pov";
+    return read_file(cornell.string()) +
+           "illuminance_receiver { <5, 0.01, 5>, <0, 0, 45>, <45, 0, 0> resolution <4, 3> name "
+           "\"floor\" }\n";
 }
 
 }  // namespace rayset::test

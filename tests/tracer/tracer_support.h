@@ -44,7 +44,11 @@ void write_disk_rays(const std::string& path, uint64_t rays);
 // A closed grey box (side 100 mm, diffuse 0.5) seen from inside, a faint point light, a 3 x 3
 // receiver on its floor and the ray source `source` (a ray file or model, as the scene names
 // it) 20 mm above the centre emitting down; the bidirectional integrator. Primary and
-// secondary light, direct visibility and the path tracer's ordinary light all enter it.
+// secondary light of both lights and direct visibility of the disk all enter it.
 std::string disk_in_box_scene(const std::string& source);
+
+// tests/tracer/scenes/cornell.pov (the path tracer, POV-Ray's area lights) with a 4 x 3
+// illuminance receiver on its floor, facing up.
+std::string cornell_with_receiver();
 
 }  // namespace rayset::test

@@ -190,24 +190,6 @@ RenderResult blank_render(const SceneDescription& scene, const RenderSettings& s
     return result;
 }
 
-RenderResult starting_state(const RenderScene& scene, const RenderSettings& settings,
-                            RenderResult start) {
-    RenderResult blank = blank_render(scene.description(), settings);
-    if (start.passes == 0) return blank;
-    bool fits = same_layout(start.film, blank.film) &&
-                same_layout(start.receivers, blank.receivers) &&
-                start.layers.size() == blank.layers.size();
-    for (size_t i = 0; fits && i < blank.layers.size(); ++i)
-        fits = start.layers[i].name == blank.layers[i].name &&
-               same_layout(start.layers[i].film, blank.layers[i].film) &&
-               same_layout(start.layers[i].receivers, blank.layers[i].receivers);
-    if (!fits)
-        throw Error(
-            "the render to continue has another image size, receivers or layers than this scene "
-            "and settings");
-    return start;
-}
-
 PassBudget::PassBudget(const RenderSettings& settings, double seconds_before)
     : time_limit_(settings.time_limit),
       passes_(settings.passes > 0       ? settings.passes
@@ -233,6 +215,26 @@ double PassBudget::fraction_done(int passes_done) const {
 }
 
 namespace {
+
+// `start` if it continues a render (after checking it has the layout of blank_render),
+// else the blank state.
+RenderResult starting_state(const RenderScene& scene, const RenderSettings& settings,
+                            RenderResult start) {
+    RenderResult blank = blank_render(scene.description(), settings);
+    if (start.passes == 0) return blank;
+    bool fits = same_layout(start.film, blank.film) &&
+                same_layout(start.receivers, blank.receivers) &&
+                start.layers.size() == blank.layers.size();
+    for (size_t i = 0; fits && i < blank.layers.size(); ++i)
+        fits = start.layers[i].name == blank.layers[i].name &&
+               same_layout(start.layers[i].film, blank.layers[i].film) &&
+               same_layout(start.layers[i].receivers, blank.layers[i].receivers);
+    if (!fits)
+        throw Error(
+            "the render to continue has another image size, receivers or layers than this scene "
+            "and settings");
+    return start;
+}
 
 // Every grid of a render, in one order on every process.
 template <class Result, class F>

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tracer/film/film.h"
+#include "tracer/render/integrator.h"
 #include "tracer/render/render_scene.h"
 
 namespace rayset::tracer {
@@ -107,13 +108,7 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
-// `start` if it continues a render (after checking it has the layout of blank_render),
-// else the blank state.
-RenderResult starting_state(const RenderScene& scene, const RenderSettings& settings,
-                            RenderResult start);
-inline bool stop_requested(const RenderControl& control) {
-    return control.stop && control.stop->load(std::memory_order_relaxed);
-}
+inline bool stop_requested(const RenderControl& control) { return stopped(control.stop); }
 
 // Seed of the random streams of one pass.
 uint64_t pass_seed(uint64_t seed, int pass);
