@@ -69,10 +69,8 @@ vtkSmartPointer<vtkActor> band_actor(vtkPolyData* bands, vtkIdType c, const doub
     return actor;
 }
 
-}  // namespace
-
-ViewHandles add_polar_view(vtkRenderer* renderer,
-                           const std::vector<const IntensityTable*>& tables) {
+// The rings of intensity, labelled, and the angles around them.
+void add_polar_axes(vtkRenderer* renderer, const std::vector<const IntensityTable*>& tables) {
     double maximum = 0;
     for (const auto* t : tables) maximum = std::max(maximum, t->max_intensity);
     const double step = polar_ring_step(maximum);
@@ -87,29 +85,32 @@ ViewHandles add_polar_view(vtkRenderer* renderer,
     add_world_label(renderer, "180\xC2\xB0", 0, outer, 1);
     add_world_label(renderer, "90\xC2\xB0", outer, 0, 0);
     add_world_label(renderer, "90\xC2\xB0", -outer, 0, 2);
+}
 
-    auto legend = vtkSmartPointer<vtkLegendBoxActor>::New();
-    std::vector<std::pair<vtkSmartPointer<vtkPolyData>, std::string>> entries;
+// Each plane's curve (and uncertainty band) in its own colour; returns the legend's entries.
+std::vector<std::string> add_polar_curves(vtkRenderer* renderer,
+                                          const std::vector<const IntensityTable*>& tables) {
+    std::vector<std::string> entries;
     int colour = 0;
     for (const auto* t : tables) {
         auto curves = polar_curves(*t);
         auto bands = polar_bands(*t);
         const auto planes = polar_planes(*t);
-        for (vtkIdType c = 0; c < curves->GetNumberOfCells(); ++c) {
+        for (vtkIdType c = 0; c < curves->GetNumberOfCells(); ++c, ++colour) {
             if (c < bands->GetNumberOfCells())
                 renderer->AddActor(band_actor(bands, c, kPlaneColours[colour % 6]));
-            // One polyline per plane, drawn in its own colour.
-            auto one = one_cell(curves, c);
-            const double* rgb = kPlaneColours[colour % 6];
-            renderer->AddActor(line_actor(one, rgb, 2.5));
+            renderer->AddActor(line_actor(one_cell(curves, c), kPlaneColours[colour % 6], 2.5));
             std::string name = fmt::format("C{:g}-C{:g}", planes[c], planes[c] + 180);
             if (c == 2) name += " (max)";
             if (tables.size() > 1) name = t->label + " " + name;
-            entries.emplace_back(one, name);
-            ++colour;
+            entries.push_back(name);
         }
     }
-    // A short horizontal line as each entry's symbol, in the entry's colour.
+    return entries;
+}
+
+// The legend: a short horizontal line in each entry's colour, then its name.
+void add_polar_legend(vtkRenderer* renderer, const std::vector<std::string>& entries) {
     auto symbol = vtkSmartPointer<vtkPolyData>::New();
     auto symbol_points = vtkSmartPointer<vtkPoints>::New();
     symbol_points->InsertNextPoint(0, 0, 0);
@@ -119,12 +120,11 @@ ViewHandles add_polar_view(vtkRenderer* renderer,
     symbol_line->InsertNextCell(2, ends);
     symbol->SetPoints(symbol_points);
     symbol->SetLines(symbol_line);
+    auto legend = vtkSmartPointer<vtkLegendBoxActor>::New();
     legend->SetNumberOfEntries(int(entries.size()));
-    colour = 0;
-    for (size_t e = 0; e < entries.size(); ++e, ++colour) {
-        double rgb[3] = {kPlaneColours[colour % 6][0], kPlaneColours[colour % 6][1],
-                         kPlaneColours[colour % 6][2]};
-        legend->SetEntry(int(e), symbol, entries[e].second.c_str(), rgb);
+    for (size_t e = 0; e < entries.size(); ++e) {
+        double rgb[3] = {kPlaneColours[e % 6][0], kPlaneColours[e % 6][1], kPlaneColours[e % 6][2]};
+        legend->SetEntry(int(e), symbol, entries[e].c_str(), rgb);
     }
     legend->GetEntryTextProperty()->SetColor(kText[0], kText[1], kText[2]);
     legend->GetEntryTextProperty()->SetFontSize(12);
@@ -134,7 +134,10 @@ ViewHandles add_polar_view(vtkRenderer* renderer,
     legend->GetPosition2Coordinate()->SetCoordinateSystemToNormalizedViewport();
     legend->GetPosition2Coordinate()->SetValue(0.28, 0.045 * entries.size());
     renderer->AddViewProp(legend);
+}
 
+// Each table's maximum (with its standard error when known).
+std::string polar_title(const std::vector<const IntensityTable*>& tables) {
     std::string title =
         tables.size() == 1 ? tables.front()->label + ": polar curves" : "polar curves";
     bool banded = false;
@@ -150,7 +153,16 @@ ViewHandles add_polar_view(vtkRenderer* renderer,
                              t->unit, t->max_c_deg, t->max_gamma_deg);
     }
     if (banded) title += fmt::format("\nbands: \xC2\xB1{:g} standard errors", kBandErrors);
-    add_title(renderer, title);
+    return title;
+}
+
+}  // namespace
+
+ViewHandles add_polar_view(vtkRenderer* renderer,
+                           const std::vector<const IntensityTable*>& tables) {
+    add_polar_axes(renderer, tables);
+    add_polar_legend(renderer, add_polar_curves(renderer, tables));
+    add_title(renderer, polar_title(tables));
     ViewHandles h;
     h.flat = true;
     return h;

@@ -195,27 +195,30 @@ void check_horizontal_range(NumberStream& s, const IesFile& f) {
     }
 }
 
-}  // namespace
-
-IesFile read_ies(const std::string& path) {
-    TextInput in(path);
-    IesFile f;
-    std::string tilt = read_header(in, f);
-    uint64_t tilt_line = in.line_number();
-    NumberStream s(in);
+// TILT=NONE, TILT=INCLUDE (its data follow) or TILT=<file beside this one>.
+void read_tilt(const std::string& path, const std::string& tilt, uint64_t tilt_line, TextInput& in,
+               NumberStream& s, IesTilt& out) {
     if (tilt == "NONE") {
-        f.tilt.kind = IesTilt::Kind::none;
+        out.kind = IesTilt::Kind::none;
     } else if (tilt == "INCLUDE") {
-        f.tilt.kind = IesTilt::Kind::include;
-        read_tilt_data(s, f.tilt, in.size());
+        out.kind = IesTilt::Kind::include;
+        read_tilt_data(s, out, in.size());
     } else {
         if (tilt.empty())
             in.fail_here("TILT= names nothing: expected TILT=NONE, TILT=INCLUDE or TILT=<file>");
-        f.tilt.kind = IesTilt::Kind::file;
-        f.tilt.file_name = tilt;
-        read_tilt_file(path, tilt_line, f.tilt);
+        out.kind = IesTilt::Kind::file;
+        out.file_name = tilt;
+        read_tilt_file(path, tilt_line, out);
     }
+}
 
+struct AngleCounts {
+    int vertical = 0, horizontal = 0;
+    uint64_t line = 0;  // where the file gives them
+};
+
+// The lamp and luminaire fields between TILT and the angles.
+AngleCounts read_lamp_fields(NumberStream& s, IesFile& f) {
     const int int_max = std::numeric_limits<int>::max();
     f.lamp_count = s.integer("number of lamps", 1, int_max);
     f.lumens_per_lamp = s.number("lumens per lamp");
@@ -226,9 +229,10 @@ IesFile read_ies(const std::string& path) {
     if (!(f.multiplier > 0))
         s.fail_here("candela multiplier is " + format_double(f.multiplier) +
                     ": expected a positive number");
-    int nv = s.integer("number of vertical angles", 1, int_max);
-    int nh = s.integer("number of horizontal angles", 1, int_max);
-    uint64_t counts_line = s.line();
+    AngleCounts counts;
+    counts.vertical = s.integer("number of vertical angles", 1, int_max);
+    counts.horizontal = s.integer("number of horizontal angles", 1, int_max);
+    counts.line = s.line();
     double type = s.number("photometric type");
     if (type != 1 && type != 2 && type != 3)
         s.fail_here("unknown photometric type " + format_double(type) +
@@ -251,32 +255,50 @@ IesFile read_ies(const std::string& path) {
     f.input_watts = s.number("input watts");
     if (f.input_watts < 0)
         s.fail_here("input watts is " + format_double(f.input_watts) + ": expected 0 or more");
+    return counts;
+}
 
-    uint64_t values = uint64_t(nv) * uint64_t(nh);
-    check_count(s, values + uint64_t(nv) + uint64_t(nh), in.size(),
-                "the angle counts (line " + std::to_string(counts_line) + ")");
+// The angles, then the candela values plane by plane, and nothing after them.
+void read_angles_and_candela(NumberStream& s, const AngleCounts& counts, uint64_t file_size,
+                             IesFile& f) {
+    const size_t nv = size_t(counts.vertical), nh = size_t(counts.horizontal);
+    const std::string counts_line = std::to_string(counts.line);
+    const uint64_t values = uint64_t(nv) * uint64_t(nh);
+    check_count(s, values + uint64_t(nv) + uint64_t(nh), file_size,
+                "the angle counts (line " + counts_line + ")");
     bool type_c = f.photometric_type == 1;
-    f.vertical_deg = s.angles(size_t(nv), "vertical angle", type_c ? 0 : -90, type_c ? 180 : 90);
-    f.horizontal_deg =
-        s.angles(size_t(nh), "horizontal angle", type_c ? 0 : -90, type_c ? 360 : 90);
+    f.vertical_deg = s.angles(nv, "vertical angle", type_c ? 0 : -90, type_c ? 180 : 90);
+    f.horizontal_deg = s.angles(nh, "horizontal angle", type_c ? 0 : -90, type_c ? 360 : 90);
     check_horizontal_range(s, f);
-
     f.candela.resize(size_t(values));
-    for (size_t h = 0; h < size_t(nh); ++h) {
-        for (size_t v = 0; v < size_t(nv); ++v) {
-            double& c = f.candela[h * size_t(nv) + v];
+    for (size_t h = 0; h < nh; ++h) {
+        for (size_t v = 0; v < nv; ++v) {
+            double& c = f.candela[h * nv + v];
             c = s.number("candela value " + ordinal(v) + " of " + std::to_string(nv) +
                          " for horizontal angle " + format_double(f.horizontal_deg[h]) +
-                         " (the counts on line " + std::to_string(counts_line) + " ask for " +
-                         std::to_string(nv) + " x " + std::to_string(nh) + ")");
+                         " (the counts on line " + counts_line + " ask for " + std::to_string(nv) +
+                         " x " + std::to_string(nh) + ")");
             if (c < 0) s.fail_here("candela value " + format_double(c) + " is negative");
         }
     }
     std::string extra;
     if (s.next(extra))
         s.fail_here("unexpected '" + extra + "' after the last of the " + std::to_string(values) +
-                    " candela values: the counts on line " + std::to_string(counts_line) +
+                    " candela values: the counts on line " + counts_line +
                     " do not match the data");
+}
+
+}  // namespace
+
+IesFile read_ies(const std::string& path) {
+    TextInput in(path);
+    IesFile f;
+    const std::string tilt = read_header(in, f);
+    const uint64_t tilt_line = in.line_number();
+    NumberStream s(in);
+    read_tilt(path, tilt, tilt_line, in, s, f.tilt);
+    const AngleCounts counts = read_lamp_fields(s, f);
+    read_angles_and_candela(s, counts, in.size(), f);
     return f;
 }
 
