@@ -81,14 +81,7 @@ TEST(BidirectionalDisk, PrimaryIlluminanceMatchesClosedForm) {
     // disk's, I_model(w) / I_disk(w), removes that noise (the near-field part, (r/d)^2 < 0.3%
     // here, stays): the integrator alone must then agree within 1% in every cell.
     const double H = 20;
-    const std::string scene = R"(
-        global_settings { integrator "bidirectional" }
-        plane { y, 0 pigment { rgb 0 } }
-        ray_source { ")" + disk_files().model +
-                              R"(" rotate <90, 0, 0> translate <0, 20, 0> }
-        illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0>
-            resolution <4, 4> name "floor" }
-    )";
+    const std::string scene = test::disk_over_black_floor(disk_files().model, "bidirectional");
     RenderSettings settings;
     // A black floor reflects nothing: photons only cost time here.
     settings.render_image = false, settings.passes = 4096, settings.seed = 3,

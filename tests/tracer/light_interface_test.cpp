@@ -47,21 +47,14 @@ RenderResult render_text(const std::string& text, const RenderSettings& settings
 }
 
 TEST(LightInterface, PathTracerLightsAFloorWithARayFileSourceInLux) {
-    // The disk H = 20 mm above a black floor, facing down (rotate 90 x: its +z to -y), so a
-    // floor point (x, 0, z) is the disk-frame point (x, z, H). The truth: the disk's closed form
+    // The disk H = 20 mm above a black floor (tracer_support). The truth: the disk's closed form
     // times the model's far field over the disk's (removing the 10^6-ray model's own noise, as
     // bidirectional_sources_test does); the path tracer alone must agree within 1% in every cell.
     const double H = 20;
-    const std::string scene = R"(
-        plane { y, 0 pigment { rgb 0 } }
-        ray_source { ")" + disk_model().model +
-                              R"(" rotate <90, 0, 0> translate <0, 20, 0> }
-        illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0>
-            resolution <4, 4> name "floor" }
-    )";
     RenderSettings settings;
     settings.render_image = false, settings.passes = 16384, settings.seed = 3;
-    const RenderResult r = render_text(scene, settings);
+    const RenderResult r =
+        render_text(test::disk_over_black_floor(disk_model().model, "path"), settings);
     ASSERT_TRUE(r.layers.empty());
     const lightmodel::ComplexSource model(disk_model().light_model);
     analytic::Spectrum spectrum;

@@ -71,6 +71,17 @@ std::string disk_in_box_scene(const std::string& source) {
     )";
 }
 
+std::string disk_over_black_floor(const std::string& source, const std::string& integrator) {
+    return "global_settings { integrator \"" + integrator + R"(" }
+        plane { y, 0 pigment { rgb 0 } }
+        ray_source { ")" +
+           source +
+           R"(" rotate <90, 0, 0> translate <0, 20, 0> }
+        illuminance_receiver { <-40, 0, -40>, <0, 0, 80>, <80, 0, 0>
+            resolution <4, 4> name "floor" }
+    )";
+}
+
 std::string cornell_with_receiver() {
     const auto cornell = std::filesystem::path(__FILE__).parent_path() / "scenes" / "cornell.pov";
     return read_file(cornell.string()) +

@@ -47,6 +47,11 @@ void write_disk_rays(const std::string& path, uint64_t rays);
 // secondary light of both lights and direct visibility of the disk all enter it.
 std::string disk_in_box_scene(const std::string& source);
 
+// The disk source `source` 20 mm above a black floor, facing down (rotate 90 x: its +z to -y, so
+// a floor point (x, 0, z) is the disk-frame point (x, z, 20)), with a 4 x 4 receiver over the
+// floor's 80 x 80 mm middle; the integrator `integrator`.
+std::string disk_over_black_floor(const std::string& source, const std::string& integrator);
+
 // tests/tracer/scenes/cornell.pov (the path tracer, POV-Ray's area lights) with a 4 x 3
 // illuminance receiver on its floor, facing up.
 std::string cornell_with_receiver();
