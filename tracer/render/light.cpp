@@ -5,38 +5,12 @@
 #include <array>
 #include <cmath>
 
+#include "tracer/render/ray_box.h"
 #include "tracer/render/sampling.h"
 
 namespace rayset::tracer {
 
 namespace {
-
-// Slab test of a ray against a box (already widened: the box of coplanar rectangles is flat).
-bool crosses_box(Vec3 origin, Vec3 direction, double t_max, Vec3 low, Vec3 high) {
-    double t0 = 0, t1 = t_max;
-    const double o[3] = {origin.x, origin.y, origin.z},
-                 d[3] = {direction.x, direction.y, direction.z};
-    const double lo[3] = {low.x, low.y, low.z}, hi[3] = {high.x, high.y, high.z};
-    // A ray outside a slab and heading away from it misses the box: decided by signs alone,
-    // before any division. For a unit direction the slab test below says the same (both its
-    // distances are negative), so this changes no outcome, only what those rays cost. A NaN
-    // t_max makes the slab test reject nothing: then neither does this.
-    bool away = false;
-    for (int k = 0; k < 3; ++k) away |= (o[k] < lo[k] && d[k] < 0) | (o[k] > hi[k] && d[k] > 0);
-    if (away && !std::isnan(t_max)) return false;
-    for (int k = 0; k < 3; ++k) {
-        const double inverse = 1 / d[k];
-        double near = (lo[k] - o[k]) * inverse, far = (hi[k] - o[k]) * inverse;
-        if (near > far) std::swap(near, far);
-        if (std::isnan(near)) {  // parallel to the slab: inside it or not
-            if (o[k] < lo[k] || o[k] > hi[k]) return false;
-            continue;
-        }
-        t0 = std::max(t0, near), t1 = std::min(t1, far);
-        if (t0 > t1) return false;
-    }
-    return true;
-}
 
 // The box around rectangles, widened once here: the box test runs for every ray a path casts.
 void rectangles_box(const std::vector<RectLight>& rects, Vec3& low, Vec3& high) {
@@ -48,12 +22,7 @@ void rectangles_box(const std::vector<RectLight>& rects, Vec3& low, Vec3& high) 
                 low = {std::min(low.x, c.x), std::min(low.y, c.y), std::min(low.z, c.z)};
                 high = {std::max(high.x, c.x), std::max(high.y, c.y), std::max(high.z, c.z)};
             }
-    for (int k = 0; k < 3; ++k) {
-        double& lo = k == 0 ? low.x : k == 1 ? low.y : low.z;
-        double& hi = k == 0 ? high.x : k == 1 ? high.y : high.z;
-        const double margin = 1e-9 * (std::abs(lo) + std::abs(hi) + (hi - lo)) + 1e-300;
-        lo -= margin, hi += margin;
-    }
+    widen_box(low, high);
 }
 
 }  // namespace
@@ -137,7 +106,7 @@ Q LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double b
         sum += weight * lights_[i].radiance<Q>(origin, direction, wavelengths);
     };
     if (!rectangles_.empty() &&
-        crosses_box(origin, direction, t_max, rectangles_low_, rectangles_high_))
+        ray_crosses_box(origin, direction, t_max, rectangles_low_, rectangles_high_))
         for (size_t i : rectangles_) add(i);
     for (size_t i : ray_source_bodies_) add(i);
     return sum;

@@ -15,6 +15,7 @@
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 #include "lightmodel/naive_source.h"
+#include "tracer/render/ray_box.h"
 
 namespace rayset::tracer {
 
@@ -67,6 +68,18 @@ PlacedRaySource::PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emit
             "scale)");
     power_ = luminance_weight(emitter_->phi_colour());
     radiance_scale_ = 1 / (k_ * k_);
+    const lightmodel::Box body = emitter_->bounds();
+    body_low_ = {1e300, 1e300, 1e300}, body_high_ = {-1e300, -1e300, -1e300};
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 c = to_world_.point({corner & 1 ? body.upper.x : body.lower.x,
+                                        corner & 2 ? body.upper.y : body.lower.y,
+                                        corner & 4 ? body.upper.z : body.lower.z});
+        body_low_ = {std::min(body_low_.x, c.x), std::min(body_low_.y, c.y),
+                     std::min(body_low_.z, c.z)};
+        body_high_ = {std::max(body_high_.x, c.x), std::max(body_high_.y, c.y),
+                      std::max(body_high_.z, c.z)};
+    }
+    widen_box(body_low_, body_high_);
 }
 
 PlacedRaySource::Local PlacedRaySource::to_local(Vec3 origin, Vec3 direction) const {
@@ -75,6 +88,7 @@ PlacedRaySource::Local PlacedRaySource::to_local(Vec3 origin, Vec3 direction) co
 }
 
 bool PlacedRaySource::crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const {
+    if (!ray_crosses_box(origin, direction, t_max, body_low_, body_high_)) return false;
     const Local l = to_local(origin, direction);
     lightmodel::EmitterHit hit;
     if (!emitter_->intersect(l.origin, l.direction, t_max < kInfinity ? t_max * l.scale : kInfinity,

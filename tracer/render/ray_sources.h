@@ -77,6 +77,8 @@ private:
     double power_ = 0;
     double radiance_scale_ = 1;  // per mm^2 -> per unit^2
     bool naive_ = false;
+    // The body's box in the scene frame, widened: most rays miss it, and then the body.
+    Vec3 body_low_, body_high_;
 };
 
 // The scene's ray sources, each model built from its ray file or read from a .vdb model file;
