@@ -52,7 +52,6 @@ template <class Q>
 BidirectionalIntegratorOf<Q>::BidirectionalIntegratorOf(const RenderScene& scene,
                                                         const LightSet& lights)
     : scene_(scene), lights_(lights) {
-    for (const ObjectInstance& o : scene.description().objects) no_shadow_.push_back(o.no_shadow);
     if constexpr (std::is_same_v<Q, SampledSpectrum>)
         camera_wavelength_density_ = lights.wavelength_density();
 }
@@ -75,15 +74,6 @@ Q BidirectionalIntegratorOf<Q>::sample_lights(const BsdfOf<Q>& bsdf, Vec3 point,
 }
 
 template <class Q>
-double BidirectionalIntegratorOf<Q>::body_horizon(Vec3 origin, Vec3 direction, bool found,
-                                                  const SurfaceHit& hit, uint64_t& rays) const {
-    if (!found) return kInfinity;
-    if (!no_shadow_[size_t(hit.object)]) return hit.t;
-    ++rays;
-    return scene_.nearest_shadow_caster(origin, direction, 0, kInfinity);
-}
-
-template <class Q>
 Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf,
                                                const Wavelengths& wavelengths,
                                                uint64_t& rays) const {
@@ -92,8 +82,8 @@ Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, doub
     ++rays;
     const bool found = scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit);
     return lights_.crossed_radiance<Q>(origin, direction,
-                                       body_horizon(origin, direction, found, hit, rays), bsdf_pdf,
-                                       wavelengths);
+                                       scene_.light_horizon(origin, direction, found, hit, rays),
+                                       bsdf_pdf, wavelengths);
 }
 
 template <class Q>
@@ -111,7 +101,8 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
         if (lights_.has_bodies())
             direct_visibility +=
                 beta * lights_.crossed_radiance<Q>(
-                           origin, direction, body_horizon(origin, direction, found, hit, rays), -1,
+                           origin, direction,
+                           scene_.light_horizon(origin, direction, found, hit, rays), -1,
                            wavelengths);
         if (!found) break;
         const Material& material = scene_.material(hit.object);

@@ -88,10 +88,6 @@ public:
 private:
     Q sample_lights(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
                     Pcg32& rng, uint64_t& rays) const;
-    // Distance to where a ray stops collecting light bodies: the first surface that casts
-    // shadows (what light sampling's shadow rays test), given the first surface it sees.
-    double body_horizon(Vec3 origin, Vec3 direction, bool found, const SurfaceHit& hit,
-                        uint64_t& rays) const;
     // Radiance of every body a BSDF-sampled ray meets before the first surface, each weighted
     // against light sampling of its light.
     Q bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, const Wavelengths& wavelengths,
@@ -99,7 +95,6 @@ private:
 
     const RenderScene& scene_;
     const LightSet& lights_;
-    std::vector<uint8_t> no_shadow_;                        // per object
     lightmodel::BinnedSpectrum camera_wavelength_density_;  // spectral only
 };
 using BidirectionalIntegrator = BidirectionalIntegratorOf<Rgb>;

@@ -12,17 +12,14 @@ namespace rayset::tracer {
 
 namespace {
 
-// The box around rectangles, widened once here: the box test runs for every ray a path casts.
-void rectangles_box(const std::vector<RectLight>& rects, Vec3& low, Vec3& high) {
-    low = {1e300, 1e300, 1e300}, high = {-1e300, -1e300, -1e300};
-    for (const RectLight& r : rects)
-        for (double a : {-0.5, 0.5})
-            for (double b : {-0.5, 0.5}) {
-                const Vec3 c = r.centre + a * r.edge1 + b * r.edge2;
-                low = {std::min(low.x, c.x), std::min(low.y, c.y), std::min(low.z, c.z)};
-                high = {std::max(high.x, c.x), std::max(high.y, c.y), std::max(high.z, c.z)};
-            }
-    widen_box(low, high);
+// Extends [low, high] by a rectangle's corners.
+void extend_by_corners(const RectLight& r, Vec3& low, Vec3& high) {
+    for (double a : {-0.5, 0.5})
+        for (double b : {-0.5, 0.5}) {
+            const Vec3 c = r.centre + a * r.edge1 + b * r.edge2;
+            low = {std::min(low.x, c.x), std::min(low.y, c.y), std::min(low.z, c.z)};
+            high = {std::max(high.x, c.x), std::max(high.y, c.y), std::max(high.z, c.z)};
+        }
 }
 
 }  // namespace
@@ -35,14 +32,20 @@ lightmodel::BinnedSpectrum ordinary_light_density() {
 }
 
 LightSet::LightSet(std::vector<Light> lights) : lights_(std::move(lights)) {
+    // The box around rectangles, widened once here: the box test runs for every ray a path casts.
+    rectangles_low_ = {1e300, 1e300, 1e300}, rectangles_high_ = {-1e300, -1e300, -1e300};
     for (size_t i = 0; i < lights_.size(); ++i) {
         cdf_.push_back(total_power_ += lights_[i].power());
-        if (lights_[i].is_rectangle()) rectangles_.push_back(i);
+        if (const RectLight* rect = lights_[i].rectangle()) {
+            rectangles_.push_back(i);
+            extend_by_corners(*rect, rectangles_low_, rectangles_high_);
+        }
         if (lights_[i].is_ray_source()) {
             has_ray_sources_ = true;
             if (!lights_[i].photons_only()) ray_source_bodies_.push_back(i);
         }
     }
+    widen_box(rectangles_low_, rectangles_high_);
     for (size_t i = 0; i < cdf_.size(); ++i)
         probability_.push_back(total_power_ > 0 ? (cdf_[i] - (i ? cdf_[i - 1] : 0)) / total_power_
                                                 : 0);
@@ -56,7 +59,6 @@ LightSet::LightSet(const SceneDescription& scene, const SceneUnits& units, bool 
     for (PlacedRaySource& s : read_ray_sources(scene, naive_sources))
         lights.emplace_back(std::move(s));
     *this = LightSet(std::move(lights));
-    rectangles_box(povray.rects, rectangles_low_, rectangles_high_);
 }
 
 size_t LightSet::choose(double& u) const {

@@ -41,7 +41,7 @@ public:
     bool photons_only() const {
         return std::visit([](const auto& l) { return l.photons_only(); }, kind_);
     }
-    bool is_rectangle() const { return std::holds_alternative<RectLight>(kind_); }
+    const RectLight* rectangle() const { return std::get_if<RectLight>(&kind_); }
     bool is_ray_source() const { return std::holds_alternative<PlacedRaySource>(kind_); }
 
     template <class Q>

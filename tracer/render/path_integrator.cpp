@@ -20,7 +20,6 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 template <class Q>
 PathIntegratorOf<Q>::PathIntegratorOf(const RenderScene& scene, const LightSet& lights)
     : scene_(scene), lights_(lights) {
-    for (const ObjectInstance& o : scene.description().objects) no_shadow_.push_back(o.no_shadow);
     if constexpr (std::is_same_v<Q, SampledSpectrum>)
         wavelength_density_ = lights.wavelength_density();
 }
@@ -101,11 +100,7 @@ template <class Q>
         if (lights.has_bodies()) {
             // Lights are not geometry: a ray collects one if it crosses its body before the
             // first surface that casts shadows, which is exactly what light sampling tests.
-            double t_block = found ? hit.t : kInfinity;
-            if (found && no_shadow_[hit.object]) {
-                ++rays;
-                t_block = scene_.nearest_shadow_caster(s.origin, s.direction, 0, kInfinity);
-            }
+            const double t_block = scene_.light_horizon(s.origin, s.direction, found, hit, rays);
             sum += s.beta * lights.template crossed_radiance<Q>(s.origin, s.direction,
                                                                 t_block + scene_.epsilon(),
                                                                 s.bsdf_pdf, wavelengths);

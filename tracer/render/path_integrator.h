@@ -69,8 +69,6 @@ private:
 
     const RenderScene& scene_;
     const LightSet& lights_;
-    std::vector<uint8_t>
-        no_shadow_;  // per object: read on every hit, kept apart from the big ObjectInstance
     lightmodel::BinnedSpectrum wavelength_density_;  // spectral only
 };
 using PathIntegrator = PathIntegratorOf<Rgb>;

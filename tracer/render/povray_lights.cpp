@@ -173,13 +173,12 @@ PointLight point_light_of(const LightSource& source, const SceneUnits& units,
         point.cos_falloff = std::cos(source.falloff * kRadiansPerDegree);
         point.tightness = source.tightness;
     }
-    point.emitted_power = average(intensity) * effective_solid_angle(point);
     return point;
 }
 
 // The n1 x n2 POV-Ray lights of an area light share the colour, so together they emit the
 // power of `point`; the rectangle emits the same power, Lambertian.
-RectLight rect_light_of(const LightSource& source, const PointLight& point,
+RectLight rect_light_of(const LightSource& source, const PointLight& point, double solid_angle,
                         const std::string& where) {
     RectLight rect;
     rect.centre = source.position;
@@ -196,7 +195,7 @@ RectLight rect_light_of(const LightSource& source, const PointLight& point,
     if (point.spot && dot(rect.normal, point.axis) < 0) rect.normal = -rect.normal;
     const double projected = (rect.two_sided ? 2 : 1) * kPi * rect.area;  // W per unit radiance
     rect.emitted_power = point.emitted_power;
-    rect.radiance_rgb = (effective_solid_angle(point) / projected) * point.intensity;
+    rect.radiance_rgb = (solid_angle / projected) * point.intensity;
     rect.radiance_spectrum = IlluminantSpectrum(rect.radiance_rgb);
     return rect;
 }
@@ -213,9 +212,11 @@ PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const Sc
         if (source.area_light && (source.circular || source.orient))
             throw Error(fmt::format(
                 "not supported: circular/orient area_light (only rectangles) at {}", where));
-        const PointLight point = point_light_of(source, units, where);
+        PointLight point = point_light_of(source, units, where);
+        const double solid_angle = effective_solid_angle(point);
+        point.emitted_power = average(point.intensity) * solid_angle;
         if (source.area_light)
-            out.rects.push_back(rect_light_of(source, point, where));
+            out.rects.push_back(rect_light_of(source, point, solid_angle, where));
         else
             out.points.push_back(point);
     }

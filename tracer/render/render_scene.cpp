@@ -101,8 +101,10 @@ RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
     units_.metres_per_unit = scene.global.millimetres_per_unit / 1000;
     const double to_internal = 1 / units_.per_square_metre();
     read_povray_lights(scene.lights, units_);  // refuses, at load, what has no physical reading
-    for (const ObjectInstance& o : scene.objects)
+    for (const ObjectInstance& o : scene.objects) {
         materials_.push_back(material_from_pov(o, to_internal));
+        no_shadow_.push_back(o.no_shadow);
+    }
     background_ = to_internal * scene.background.rgb();
     background_spectrum_ = IlluminantSpectrum(background_);
 

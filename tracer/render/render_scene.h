@@ -4,6 +4,8 @@
 // integrators' (light.h).
 #pragma once
 
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -63,6 +65,16 @@ public:
     // Distance to the nearest shadow-casting surface (t_far when none).
     double nearest_shadow_caster(Vec3 origin, Vec3 direction, double t_near, double t_far) const;
     bool occluded(Vec3 origin, Vec3 direction, double t_near, double t_far) const;
+    // Where a ray (origin, unit direction) stops collecting light bodies, given the first
+    // surface it sees (`found`, `hit`): that surface, or the first one behind it that casts
+    // shadows (what light sampling's shadow rays test). Counts the extra ray in `rays`.
+    double light_horizon(Vec3 origin, Vec3 direction, bool found, const SurfaceHit& hit,
+                         uint64_t& rays) const {
+        if (!found) return std::numeric_limits<double>::infinity();
+        if (!no_shadow_[size_t(hit.object)]) return hit.t;
+        ++rays;
+        return nearest_shadow_caster(origin, direction, 0, std::numeric_limits<double>::infinity());
+    }
 
     // Benchmark support: while `sink` is set, every query appends its ray to it (single
     // thread only); bare_embree_rays_per_second() replays such rays through rtcIntersect1 /
@@ -77,6 +89,7 @@ private:
     SceneDescription description_;
     SceneUnits units_;
     std::vector<Material> materials_;
+    std::vector<uint8_t> no_shadow_;  // per object: read on every hit, apart from the big objects
     Rgb background_;
     IlluminantSpectrum background_spectrum_;
     double epsilon_ = 1e-6;
