@@ -58,8 +58,8 @@ std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double
     BodyHit hit;
     if (!body_.intersect(ref, s.wi, kInfinity, hit)) return std::nullopt;
     s.distance = hit.t;
-    s.Li = volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour, spectral);
-    s.pdf = volume_.pdf_direction(ref, s.wi);
+    s.Li =
+        volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour, spectral, &s.pdf);
     if (!(s.pdf > 0)) return std::nullopt;
     return s;
 }

@@ -87,13 +87,19 @@ double EmissionVolume::cell_volume(uint32_t cell) const {
 
 double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
                                        const SpectralSelect& select, Rgb* colour,
-                                       SpectralQuery* spectral) const {
+                                       SpectralQuery* spectral, double* pdf) const {
     const Vec3 emitted = -dir;
-    double sum = 0;
+    double sum = 0, pdf_sum = 0;
     Rgb colour_sum;
+    // Neighbouring voxels mostly share an intensity cell: its diagram is evaluated once for them.
+    int32_t diagram = -1;
+    double d = 0;
     traverse(origin, dir, tmin, tmax, [&](uint32_t c, double t0, double t1) {
         const FluxCell& cell = model_.flux_cells[c];
-        const double d = model_.diagrams[size_t(cell.intensity_cell)].pdf(emitted);
+        if (cell.intensity_cell != diagram) {
+            diagram = cell.intensity_cell;
+            d = model_.diagrams[size_t(diagram)].pdf(emitted);
+        }
         const double per_flux = d / (cell_volume(c) * cell.visible_fraction) * (t1 - t0);
         sum += cell_flux(c, select) * per_flux;
         if (colour) colour_sum += (cell.flux * per_flux) * cell_colour_[c];
@@ -102,18 +108,22 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
             for (int i = 0; i < 4; ++i)
                 spectral->value[i] += weight * cell_spectrum_[c](spectral->nm[i]);
         }
+        if (pdf) pdf_sum += point_density(c) * (t1 * t1 * t1 - t0 * t0 * t0) / 3;
     });
     if (colour) *colour = colour_sum;
+    if (pdf) *pdf = pdf_sum;
     return sum;
 }
 
+double EmissionVolume::point_density(uint32_t cell) const {
+    return model_.flux_cells[cell].flux / cell_cdf_.back() / cell_volume(cell);
+}
+
 double EmissionVolume::pdf_direction(Vec3 origin, Vec3 dir) const {
-    const double total = cell_cdf_.empty() ? 0 : cell_cdf_.back();
     double sum = 0;
     traverse(origin, dir, 0, std::numeric_limits<double>::infinity(),
              [&](uint32_t c, double t0, double t1) {
-                 const double density = model_.flux_cells[c].flux / total / cell_volume(c);
-                 sum += density * (t1 * t1 * t1 - t0 * t0 * t0) / 3;
+                 sum += point_density(c) * (t1 * t1 * t1 - t0 * t0 * t0) / 3;
              });
     return sum;
 }
@@ -123,11 +133,10 @@ VolumeSample EmissionVolume::sample_point(double u_cell, double u_voxel, Vec3 u_
     const size_t c = std::min(
         size_t(std::upper_bound(cell_cdf_.begin(), cell_cdf_.end(), target) - cell_cdf_.begin()),
         cell_cdf_.size() - 1);
-    const FluxCell& cell = model_.flux_cells[c];
     VolumeSample s;
     s.point = sample_in_cell(uint32_t(c), u_voxel, u_point);
     s.flux_cell = uint32_t(c);
-    s.pdf_volume = cell.flux / cell_cdf_.back() / cell_volume(uint32_t(c));
+    s.pdf_volume = point_density(uint32_t(c));
     return s;
 }
 
@@ -152,8 +161,7 @@ int32_t EmissionVolume::cell_at(Vec3 point) const {
 
 double EmissionVolume::pdf_point(Vec3 point) const {
     const int32_t c = cell_at(point);
-    if (c < 0) return 0;
-    return model_.flux_cells[size_t(c)].flux / cell_cdf_.back() / cell_volume(uint32_t(c));
+    return c < 0 ? 0 : point_density(uint32_t(c));
 }
 
 }  // namespace rayset::lightmodel

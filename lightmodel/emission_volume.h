@@ -46,10 +46,12 @@ public:
     // Radiance arriving at `origin` from direction `dir`: the light the voxels on the segment
     // origin + t dir, t in [tmin, tmax], emit toward -dir. With `colour`, the same line
     // integral as a linear-sRGB triple (colour.h) is stored there too, and with `spectral` its
-    // values at the query's wavelengths (emission_spectrum.h), from one traversal.
+    // values at the query's wavelengths (emission_spectrum.h), and with `pdf` the solid-angle
+    // density at `origin` of the direction `dir` under sample_point() restricted to the segment
+    // (pdf_direction() for tmin 0 and tmax infinite), from one traversal.
     double radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
                            const SpectralSelect& select, Rgb* colour = nullptr,
-                           SpectralQuery* spectral = nullptr) const;
+                           SpectralQuery* spectral = nullptr, double* pdf = nullptr) const;
     // Colour of one unit of a cell's flux (colour.h), and the colour of the whole source.
     const Rgb& cell_colour(uint32_t cell) const { return cell_colour_[cell]; }
     Rgb total_colour() const;
@@ -71,6 +73,8 @@ public:
     // The flux cell of the occupied voxel holding `point`, -1 if none.
     int32_t cell_at(Vec3 point) const;
     double cell_volume(uint32_t cell) const;  // occupied volume, mm^3
+    // Density of sample_point() in the occupied voxels of `cell`, mm^-3.
+    double point_density(uint32_t cell) const;
 
     // Visits the occupied voxels the segment crosses: f(flux_cell, t0, t1), in order.
     template <class F>

@@ -27,12 +27,22 @@ constexpr double kMargin = 2;
 
 // The normalised von Mises-Fisher density on the unit sphere at cos(angle) t is
 // kappa / (2 pi (1 - exp(-2 kappa))) exp(kappa (t - 1)).
-// The twicing kernel 2 vMF(kappa) - vMF(kappa / 2), with one exponential.
-double twiced(double kappa, double t) {
-    const double half = std::exp(kappa / 2 * (t - 1));
-    return 2 * kappa / (2 * kPi * -std::expm1(-2 * kappa)) * half * half -
-           kappa / 2 / (2 * kPi * -std::expm1(-kappa)) * half;
-}
+// The twicing kernel 2 vMF(kappa) - vMF(kappa / 2): its normalisations once per kappa, then one
+// exponential per cosine.
+class TwicedKernel {
+public:
+    explicit TwicedKernel(double kappa)
+        : half_kappa_(kappa / 2),
+          narrow_(2 * kappa / (2 * kPi * -std::expm1(-2 * kappa))),
+          wide_(kappa / 2 / (2 * kPi * -std::expm1(-kappa))) {}
+    double operator()(double t) const {
+        const double half = std::exp(half_kappa_ * (t - 1));
+        return narrow_ * half * half - wide_ * half;
+    }
+
+private:
+    double half_kappa_, narrow_, wide_;
+};
 
 }  // namespace
 
@@ -169,16 +179,16 @@ void DirectionHistogram::visit_bins(const Level& level, double x, double y, doub
 DirectionHistogram::Estimate DirectionHistogram::at(double x, double y, double polar,
                                                     double sigma_deg) const {
     const double sigma = sigma_deg * kRadiansPerDegree;
-    const double kappa = 1 / (sigma * sigma);
+    const TwicedKernel twiced(1 / (sigma * sigma));
     double sum = 0, square = 0;
     visit_bins(level_for(sigma_deg), x, y, polar, std::min(kCutoffSigmas * sigma, kPi),
                [&](const Bin& bin, const std::array<double, 3>&, double t) {
-                   const double kernel = twiced(kappa, t);
+                   const double kernel = twiced(t);
                    sum += bin.flux * kernel;
                    square += bin.square * kernel * kernel;
                });
     const double mean_flux = rays_ > 0 ? total_flux_ / rays_ : 0;
-    const double peak = twiced(kappa, 1) * mean_flux;
+    const double peak = twiced(1) * mean_flux;
     return {sum, std::sqrt(square + peak * peak), sigma_deg};
 }
 

@@ -2,8 +2,19 @@
 
 #include "converters/analytic/synth.h"
 #include "converters/rays/ray_stream.h"
+#include "lightmodel/model_file.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <filesystem>
 #include <mutex>
+#include <stdexcept>
+#include <system_error>
+
+namespace fs = std::filesystem;
 
 namespace rayset::test {
 
@@ -22,7 +33,65 @@ std::unique_ptr<analytic::Source> make_truth(const std::string& name) {
                                          std::vector<double>{460, 530, 620});
 }
 
+// An exclusive lock on a file, shared by every process and thread that locks the same path
+// (flock), released when the object goes away.
+class FileLock {
+public:
+    explicit FileLock(const fs::path& path)
+        : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
+        if (fd_ < 0) throw std::system_error(errno, std::generic_category(), path.string());
+        while (::flock(fd_, LOCK_EX) != 0)
+            if (errno != EINTR) throw std::system_error(errno, std::generic_category(), "flock");
+    }
+    ~FileLock() { ::close(fd_); }
+    FileLock(const FileLock&) = delete;
+    FileLock& operator=(const FileLock&) = delete;
+
+private:
+    int fd_;
+};
+
+// test-cache/<test binary>/ in the build tree, and in it the folder of this binary's build,
+// named by the binary's size and modification time.
+fs::path binary_cache() {
+    const fs::path binary = fs::canonical("/proc/self/exe");
+    return fs::path(RAYSET_BINARY_DIR) / "test-cache" / binary.filename();
+}
+std::string build_stamp() {
+    const fs::path binary = fs::canonical("/proc/self/exe");
+    return std::to_string(fs::file_size(binary)) + "-" +
+           std::to_string(fs::last_write_time(binary).time_since_epoch().count());
+}
+
 }  // namespace
+
+ModelFiles synthesised_model(const std::string& folder, const std::string& key,
+                             const analytic::Source& source, uint64_t rays, uint64_t seed) {
+    const fs::path base = binary_cache(), cache = base / build_stamp();
+    const std::string stem = key + "-" + std::to_string(rays) + "-" + std::to_string(seed);
+    const fs::path rays_file = cache / (stem + ".tm25ray"), model_file = cache / (stem + ".vdb");
+    {
+        fs::create_directories(cache);
+        const FileLock lock(base / "lock");
+        for (const fs::directory_entry& older : fs::directory_iterator(base))
+            if (older.is_directory() && older.path() != cache) fs::remove_all(older.path());
+        // Both files are written atomically, the model last: a model there is a whole pair.
+        if (!fs::exists(model_file)) {
+            {
+                auto out =
+                    create_rays(rays_file.string(), RayFormat::tm25, synth_header(source, rays, seed));
+                synthesize(source, rays, seed, *out);
+            }
+            lightmodel::write_model(lightmodel::build_model(rays_file.string(), {}),
+                                    model_file.string());
+        }
+    }
+    const ModelFiles placed{(fs::path(folder) / (key + ".tm25ray")).string(),
+                            (fs::path(folder) / (key + ".vdb")).string()};
+    fs::copy_file(rays_file, placed.rays, fs::copy_options::overwrite_existing);
+    fs::copy_file(model_file, placed.model, fs::copy_options::overwrite_existing);
+    return placed;
+}
 
 const BuiltSource& built_source(const std::string& name) {
     static std::mutex mutex;
@@ -34,12 +103,9 @@ const BuiltSource& built_source(const std::string& name) {
 
     BuiltSource b;
     b.truth = make_truth(name);
-    b.ray_file = scratch.file(name + ".tm25ray");
-    const uint64_t rays = name == "disk4m" ? 4000000 : 1000000, seed = 7;
-    {
-        auto out = create_rays(b.ray_file, RayFormat::tm25, synth_header(*b.truth, rays, seed));
-        synthesize(*b.truth, rays, seed, *out);
-    }
+    const ModelFiles files = synthesised_model(scratch.path().string(), name, *b.truth,
+                                               name == "disk4m" ? 4000000 : 1000000, 7);
+    b.ray_file = files.rays;
     {
         auto reader = open_rays(b.ray_file);
         RayChunk chunk;
@@ -47,7 +113,7 @@ const BuiltSource& built_source(const std::string& name) {
         }
         b.ray_flux = reader->totals().radiant;
     }
-    b.model = std::make_shared<lightmodel::LightModel>(lightmodel::build_model(b.ray_file, {}));
+    b.model = std::make_shared<lightmodel::LightModel>(lightmodel::read_model(files.model));
     b.source = std::make_unique<lightmodel::ComplexSource>(b.model);
     return built.emplace(name, std::move(b)).first->second;
 }

@@ -16,6 +16,7 @@
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
+#include "lightmodel/model_support.h"
 #include "support/test_support.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
@@ -42,14 +43,10 @@ TEST(BidirectionalMixed, WhiteLedFromTwoRayFilesPlusAPointLight) {
     test::ScratchDir scratch;
     Led leds[2] = {{460, 0.3, 11, "", nullptr}, {580, 0.7, 12, "", nullptr}};
     for (Led& led : leds) {
-        const std::string rays = scratch.file(std::to_string(int(led.wavelength_nm)) + ".tm25ray");
-        {
-            auto out =
-                create_rays(rays, RayFormat::tm25, synth_header(led.disk(), 1000000, led.seed));
-            synthesize(led.disk(), 1000000, led.seed, *out);
-        }
-        led.model = scratch.file(std::to_string(int(led.wavelength_nm)) + ".vdb");
-        lightmodel::write_model(lightmodel::build_model(rays, {}), led.model);
+        const std::string key = "led" + std::to_string(int(led.wavelength_nm));
+        led.model = test::synthesised_model(scratch.path().string(), key, led.disk(), 1000000,
+                                            led.seed)
+                        .model;
         led.light_model =
             std::make_shared<lightmodel::LightModel>(lightmodel::read_model(led.model));
     }

@@ -36,32 +36,9 @@ const analytic::LambertianDisk& disk_truth() {
     return disk;
 }
 
-// The disk's ray file and its model stored as .vdb, made once per test binary (the build of a
-// million rays takes seconds); scenes name the .vdb so each render only reads it.
-struct DiskFiles {
-    test::ScratchDir scratch;
-    std::string rays, model;
-};
-const DiskFiles& disk_files() {
-    static const std::unique_ptr<DiskFiles> files = [] {
-        auto f = std::make_unique<DiskFiles>();
-        f->rays = f->scratch.file("disk.tm25ray");
-        f->model = f->scratch.file("disk.vdb");
-        const uint64_t rays = 1000000, seed = 7;
-        {
-            auto out =
-                create_rays(f->rays, RayFormat::tm25, synth_header(disk_truth(), rays, seed));
-            synthesize(disk_truth(), rays, seed, *out);
-        }
-        lightmodel::write_model(lightmodel::build_model(f->rays, {}), f->model);
-        return f;
-    }();
-    return *files;
-}
-
 // Scenes are placed in the scratch folder: a scene may only name files under its own folder.
 SceneDescription parse(const std::string& text) {
-    return parse_scene_text(text, disk_files().scratch.file("test.pov"));
+    return parse_scene_text(text, test::disk_files().scratch.file("test.pov"));
 }
 
 RenderResult render_text(const std::string& text, const RenderSettings& settings) {
@@ -81,7 +58,7 @@ TEST(BidirectionalDisk, PrimaryIlluminanceMatchesClosedForm) {
     // disk's, I_model(w) / I_disk(w), removes that noise (the near-field part, (r/d)^2 < 0.3%
     // here, stays): the integrator alone must then agree within 1% in every cell.
     const double H = 20;
-    const std::string scene = test::disk_over_black_floor(disk_files().model, "bidirectional");
+    const std::string scene = test::disk_over_black_floor(test::disk_files().model, "bidirectional");
     RenderSettings settings;
     // A black floor reflects nothing: photons only cost time here.
     settings.render_image = false, settings.passes = 4096, settings.seed = 3,
@@ -89,7 +66,7 @@ TEST(BidirectionalDisk, PrimaryIlluminanceMatchesClosedForm) {
     const RenderResult r = render_text(scene, settings);
     ASSERT_EQ(r.layers.size(), 3u);
     const lightmodel::ComplexSource model(
-        std::make_shared<lightmodel::LightModel>(lightmodel::read_model(disk_files().model)));
+        std::make_shared<lightmodel::LightModel>(lightmodel::read_model(test::disk_files().model)));
     const ReceiverMap& primary = r.layers[1].receivers.at(0);
     double worst = 0, worst_model = 0, sum_squares = 0;
     int cells = 0;
@@ -130,7 +107,7 @@ TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
     const std::string scene = R"(
         global_settings { integrator "bidirectional" }
         camera { location <0, 0, 30> direction <0, 0, -1> right <1, 0, 0> up <0, 1, 0> angle 6 }
-        ray_source { ")" + disk_files().model +
+        ray_source { ")" + test::disk_files().model +
                               R"(" }
     )";
     const SceneDescription description = parse(scene);
@@ -171,7 +148,7 @@ TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
     // near-field part (r/D)^2 is 0.1%), the image must agree more closely: what remains is the
     // model's coverage correction, measured with 512 lines per flux cell (a few 0.1%).
     const lightmodel::ComplexSource model(
-        std::make_shared<lightmodel::LightModel>(lightmodel::read_model(disk_files().model)));
+        std::make_shared<lightmodel::LightModel>(lightmodel::read_model(test::disk_files().model)));
     const double model_truth = 1e6 * model.intensity({0, 0, 1}) / (D * D);
     std::printf("  model's axial intensity / D^2: %.6g W/m^2\n", model_truth);
     EXPECT_NEAR(irradiance, model_truth, 0.01 * model_truth);
@@ -187,7 +164,7 @@ TEST(BidirectionalDisk, CameraSeesTheDiskInAMirror) {
         global_settings { integrator "bidirectional" }
         camera { location <0, 0, -30> direction <0, 0, 1> right <1, 0, 0> up <0, 1, 0> angle 4 }
         plane { z, 15 pigment { rgb 0 } finish { reflection 1 diffuse 0 ambient 0 } }
-        ray_source { ")" + disk_files().model +
+        ray_source { ")" + test::disk_files().model +
                               R"(" }
     )";
     const SceneDescription description = parse(scene);
@@ -208,7 +185,7 @@ TEST(BidirectionalDisk, CameraSeesTheDiskInAMirror) {
                           focal / std::pow(distance, 4);
         }
     const lightmodel::ComplexSource model(
-        std::make_shared<lightmodel::LightModel>(lightmodel::read_model(disk_files().model)));
+        std::make_shared<lightmodel::LightModel>(lightmodel::read_model(test::disk_files().model)));
     const double truth = 1e6 * model.intensity({0, 0, 1}) / (60 * 60);
     std::printf(
         "disk in a mirror: image irradiance %.6g W/m^2, model's axial intensity / 60^2 %.6g\n",
@@ -231,7 +208,7 @@ TEST(BidirectionalDisk, ClosedWhiteBoxConservesEnergy) {
     // Gather radius below half a cell (5 mm): no gather disk reaches past a wall's edge.
     settings.render_image = false, settings.passes = 8, settings.seed = 9;
     settings.photons_per_pass = 200000, settings.photon_radius = 2;
-    const RenderResult r = render_text(closed_box(albedo, disk_files().model), settings);
+    const RenderResult r = render_text(closed_box(albedo, test::disk_files().model), settings);
     const double primary = test::wall_average(r.layers[1].receivers).mean;
     const double secondary = test::wall_average(r.layers[2].receivers).mean;
     const double primary_truth = kDiskFlux / area,
@@ -252,7 +229,7 @@ TEST(BidirectionalDisk, NaiveRaySetConservesEnergyToo) {
     RenderSettings settings;
     settings.render_image = false, settings.passes = 8, settings.seed = 9;
     settings.photons_per_pass = 200000, settings.photon_radius = 2, settings.naive_sources = true;
-    const RenderResult r = render_text(closed_box(albedo, disk_files().rays), settings);
+    const RenderResult r = render_text(closed_box(albedo, test::disk_files().rays), settings);
     const double primary = test::wall_average(r.layers[1].receivers).mean;
     const double secondary = test::wall_average(r.layers[2].receivers).mean;
     const double primary_truth = kDiskFlux / area,
@@ -266,7 +243,7 @@ TEST(BidirectionalDisk, NaiveRaySetConservesEnergyToo) {
 }
 
 TEST(BidirectionalDisk, NaiveModelNeedsTheRayFile) {
-    SceneDescription description = parse(closed_box(0.5, disk_files().model));
+    SceneDescription description = parse(closed_box(0.5, test::disk_files().model));
     EXPECT_THROW(read_ray_sources(description, true), Error);
 }
 

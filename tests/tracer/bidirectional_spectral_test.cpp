@@ -20,6 +20,7 @@
 #include "lightmodel/emission_spectrum.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
+#include "lightmodel/model_support.h"
 #include "support/test_support.h"
 #include "tracer/render/renderer.h"
 #include "tracer/render/rgb_upsampling.h"
@@ -101,17 +102,13 @@ struct LineDisk {
 LineDisk line_disk(const test::ScratchDir& scratch, double nm, double flux, uint64_t rays,
                    uint64_t seed) {
     LineDisk d;
-    const std::string name = "disk" + std::to_string(int(nm));
-    d.rays = scratch.file(name + ".tm25ray");
-    d.model = scratch.file(name + ".vdb");
     analytic::Spectrum spectrum;
     spectrum.wavelength_nm = nm;
     const auto disk = analytic::LambertianDisk::with_flux(1, flux, spectrum);
-    {
-        auto out = create_rays(d.rays, RayFormat::tm25, synth_header(disk, rays, seed));
-        synthesize(disk, rays, seed, *out);
-    }
-    lightmodel::write_model(lightmodel::build_model(d.rays, {}), d.model);
+    const test::ModelFiles made = test::synthesised_model(
+        scratch.path().string(), "disk" + std::to_string(int(nm)) + "-" + std::to_string(flux),
+        disk, rays, seed);
+    d.rays = made.rays, d.model = made.model;
     d.luminous_weight = disk.luminous_flux() / kLumensPerWatt;
     return d;
 }

@@ -21,28 +21,14 @@
 namespace rayset::tracer {
 namespace {
 
-// The Lambertian disk of tracer_support (radius 1 mm, 1 W at 555 nm, 10^6 rays) and its model,
-// made once per test binary.
-struct DiskModel {
-    test::ScratchDir scratch;
-    std::string rays, model;
-    std::shared_ptr<lightmodel::LightModel> light_model;
-};
-const DiskModel& disk_model() {
-    static const std::unique_ptr<DiskModel> disk = [] {
-        auto d = std::make_unique<DiskModel>();
-        d->rays = d->scratch.file("disk.tm25ray");
-        d->model = d->scratch.file("disk.vdb");
-        test::write_disk_rays(d->rays, 1000000);
-        lightmodel::write_model(lightmodel::build_model(d->rays, {}), d->model);
-        d->light_model = std::make_shared<lightmodel::LightModel>(lightmodel::read_model(d->model));
-        return d;
-    }();
-    return *disk;
+std::shared_ptr<const lightmodel::LightModel> disk_light_model() {
+    static const auto model =
+        std::make_shared<const lightmodel::LightModel>(lightmodel::read_model(test::disk_files().model));
+    return model;
 }
 
 RenderResult render_text(const std::string& text, const RenderSettings& settings) {
-    return render(RenderScene(parse_scene_text(text, disk_model().scratch.file("test.pov"))),
+    return render(RenderScene(parse_scene_text(text, test::disk_files().scratch.file("test.pov"))),
                   settings);
 }
 
@@ -54,9 +40,9 @@ TEST(LightInterface, PathTracerLightsAFloorWithARayFileSourceInLux) {
     RenderSettings settings;
     settings.render_image = false, settings.passes = 16384, settings.seed = 3;
     const RenderResult r =
-        render_text(test::disk_over_black_floor(disk_model().model, "path"), settings);
+        render_text(test::disk_over_black_floor(test::disk_files().model, "path"), settings);
     ASSERT_TRUE(r.layers.empty());
-    const lightmodel::ComplexSource model(disk_model().light_model);
+    const lightmodel::ComplexSource model(disk_light_model());
     analytic::Spectrum spectrum;
     spectrum.wavelength_nm = 555;
     const auto disk = analytic::LambertianDisk::with_flux(1, 1, spectrum);
@@ -84,7 +70,7 @@ TEST(LightInterface, PathTracerConservesEnergyInAClosedBoxLitByARayFile) {
     const double albedo = 0.5, flux = 1, area = test::kClosedBoxArea;
     test::ClosedBox box;
     box.diffuse = albedo, box.integrator = "path";
-    box.sources = {disk_model().model};
+    box.sources = {test::disk_files().model};
     RenderSettings settings;
     settings.render_image = false, settings.passes = 64, settings.seed = 8;
     const RenderResult r = render_text(test::closed_box_scene(box), settings);
@@ -140,7 +126,7 @@ TEST(LightInterface, PathTracerRefusesTheNaiveRaySet) {
     RenderSettings settings;
     settings.render_image = false, settings.passes = 1, settings.naive_sources = true;
     const std::string scene = "plane { y, 0 pigment { rgb 1 } }\nray_source { \"" +
-                              disk_model().rays + "\" translate <0, 20, 0> }\n";
+                              test::disk_files().rays + "\" translate <0, 20, 0> }\n";
     try {
         render_text(scene, settings);
         FAIL() << "rendered the naive ray set with the path tracer";

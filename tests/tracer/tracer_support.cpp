@@ -3,9 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include "converters/analytic/analytic_sources.h"
 #include "converters/analytic/synth.h"
+#include "lightmodel/model_support.h"
 #include "support/test_support.h"
 #include "tracer/render/rgb.h"
 
@@ -50,12 +52,28 @@ WallAverage wall_average(const std::vector<tracer::ReceiverMap>& maps) {
     return {sum / cells, std::sqrt(squares) / cells};
 }
 
-void write_disk_rays(const std::string& path, uint64_t rays) {
+namespace {
+analytic::LambertianDisk disk_source() {
     analytic::Spectrum spectrum;
     spectrum.wavelength_nm = 555;
-    const auto disk = analytic::LambertianDisk::with_flux(1, 1, spectrum);
-    auto out = create_rays(path, RayFormat::tm25, synth_header(disk, rays, 7));
-    synthesize(disk, rays, 7, *out);
+    return analytic::LambertianDisk::with_flux(1, 1, spectrum);
+}
+}  // namespace
+
+void write_disk_rays(const std::string& path, uint64_t rays) {
+    auto out = create_rays(path, RayFormat::tm25, synth_header(disk_source(), rays, 7));
+    synthesize(disk_source(), rays, 7, *out);
+}
+
+const DiskFiles& disk_files() {
+    static const std::unique_ptr<DiskFiles> files = [] {
+        auto f = std::make_unique<DiskFiles>();
+        const ModelFiles made =
+            synthesised_model(f->scratch.path().string(), "disk", disk_source(), 1000000, 7);
+        f->rays = made.rays, f->model = made.model;
+        return f;
+    }();
+    return *files;
 }
 
 std::string disk_in_box_scene(const std::string& source) {

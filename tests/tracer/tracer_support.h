@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "support/test_support.h"
 #include "tracer/film/film.h"
 
 namespace rayset::test {
@@ -41,6 +42,13 @@ WallAverage wall_average(const std::vector<tracer::ReceiverMap>& maps);
 
 // A Lambertian disk (radius 1 mm, 1 W at 555 nm) as `rays` rays of a TM-25 file (seed 7).
 void write_disk_rays(const std::string& path, uint64_t rays);
+// That disk at 10^6 rays and its model (test::synthesised_model: made once per build of the
+// tests), in a scratch folder of this process where scenes naming them are parsed.
+struct DiskFiles {
+    ScratchDir scratch;
+    std::string rays, model;
+};
+const DiskFiles& disk_files();
 // A closed grey box (side 100 mm, diffuse 0.5) seen from inside, a faint point light, a 3 x 3
 // receiver on its floor and the ray source `source` (a ray file or model, as the scene names
 // it) 20 mm above the centre emitting down; the bidirectional integrator. Primary and

@@ -57,23 +57,6 @@ BidirectionalIntegratorOf<Q>::BidirectionalIntegratorOf(const RenderScene& scene
 }
 
 template <class Q>
-Q BidirectionalIntegratorOf<Q>::sample_lights(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
-                                              const Wavelengths& wavelengths, Pcg32& rng,
-                                              uint64_t& rays) const {
-    if (lights_.empty()) return {};
-    const auto ls = lights_.sample_Li<Q>(point, lights_.draw(rng), wavelengths);
-    if (!ls) return {};
-    const Q f = bsdf.eval(ls->wi);
-    if (is_black(f) || is_black(ls->Li)) return {};
-    ++rays;
-    if (scene_.occluded(scene_.offset(point, normal, ls->wi), ls->wi, 0,
-                        ls->distance - scene_.epsilon()))
-        return {};
-    const double weight = ls->delta ? 1 : power_heuristic(ls->pdf, bsdf.pdf(ls->wi));
-    return (weight / ls->pdf) * ls->Li * f;
-}
-
-template <class Q>
 Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf,
                                                const Wavelengths& wavelengths,
                                                uint64_t& rays) const {
@@ -110,7 +93,8 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         if (bsdf.has_smooth_lobes()) {
             primary +=
-                beta * sample_lights(bsdf, hit.point, bsdf.facing_normal(), wavelengths, rng, rays);
+                beta * direct_light(scene_, lights_, bsdf, hit.point, bsdf.facing_normal(),
+                                    wavelengths, rng, rays);
             Point vp;
             vp.point = hit.point, vp.normal = hit.normal, vp.shading_normal = hit.shading_normal,
             vp.wo = wo;
@@ -148,7 +132,7 @@ Rgb BidirectionalIntegratorOf<Q>::receiver_primary(Vec3 point, Vec3 normal, Pcg3
     return white_lambertian_irradiance<Q>(
         normal, camera_wavelength_density_, rng,
         [&](const BsdfOf<Q>& bsdf, const Wavelengths& wavelengths) {
-            return sample_lights(bsdf, point, normal, wavelengths, rng, rays);
+            return direct_light(scene_, lights_, bsdf, point, normal, wavelengths, rng, rays);
         },
         [&](const BsdfSampleOf<Q>& s, const Wavelengths& wavelengths) {
             return s.weight * bodies_crossed(scene_.offset(point, normal, s.wi), s.wi, s.pdf,

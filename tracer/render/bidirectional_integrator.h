@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/random.h"
+#include "tracer/render/direct_light.h"
 #include "tracer/render/integrator.h"
 #include "tracer/render/light.h"
 #include "tracer/render/photon_grid.h"
@@ -86,8 +87,6 @@ public:
     static constexpr int kRouletteDepth = 3;
 
 private:
-    Q sample_lights(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
-                    Pcg32& rng, uint64_t& rays) const;
     // Radiance of every body a BSDF-sampled ray meets before the first surface, each weighted
     // against light sampling of its light.
     Q bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, const Wavelengths& wavelengths,

@@ -217,7 +217,10 @@ std::vector<typename BidirectionalPasses<Q>::Photon> BidirectionalPasses<Q>::tra
             integrator_.trace_photons(first, count, photons_per_pass_, photon_seed, counted);
         rays += counted;
     });
+    size_t total = 0;
+    for (const auto& block : traced) total += block.size();
     std::vector<Photon> photons;
+    photons.reserve(total);
     for (auto& block : traced) photons.insert(photons.end(), block.begin(), block.end());
     return photons;
 }

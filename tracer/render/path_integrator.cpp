@@ -38,7 +38,7 @@ Rgb PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_
     return white_lambertian_irradiance<Q>(
         normal, wavelength_density_, rng,
         [&](const BsdfOf<Q>& bsdf, const Wavelengths& wavelengths) {
-            return direct(bsdf, point, normal, wavelengths, rng, rays);
+            return direct_light(scene_, lights_, bsdf, point, normal, wavelengths, rng, rays);
         },
         [&](const BsdfSampleOf<Q>& s, const Wavelengths& wavelengths) {
             PathState state;
@@ -50,38 +50,6 @@ Rgb PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_
             state.depth = 1;
             return trace(state, wavelengths, rng, rays);
         });
-}
-
-template <class Q>
-Q PathIntegratorOf<Q>::direct(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
-                              const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const {
-    return unless_occluded(sample_light(bsdf, point, normal, wavelengths, rng), rays);
-}
-
-template <class Q>
-typename PathIntegratorOf<Q>::ShadowQuery PathIntegratorOf<Q>::sample_light(
-    const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
-    Pcg32& rng) const {
-    ShadowQuery query;
-    const auto light = lights_.sample_Li<Q>(point, lights_.draw(rng), wavelengths);
-    if (!light) return query;
-    const Q f = bsdf.eval(light->wi);
-    if (is_black(f) || is_black(light->Li)) return query;
-    query.cast = true;
-    query.origin = scene_.offset(point, normal, light->wi);
-    query.direction = light->wi;
-    query.t_far = light->distance - scene_.epsilon();
-    const double weight = light->delta ? 1 : power_heuristic(light->pdf, bsdf.pdf(light->wi));
-    query.contribution = (weight / light->pdf) * (f * light->Li);
-    return query;
-}
-
-template <class Q>
-Q PathIntegratorOf<Q>::unless_occluded(const ShadowQuery& query, uint64_t& rays) const {
-    if (!query.cast) return {};
-    ++rays;
-    if (scene_.occluded(query.origin, query.direction, 0, query.t_far)) return {};
-    return query.contribution;
 }
 
 // Flattened: everything the bounce loop calls (ray queries, hit resolution, light sampling,
@@ -115,15 +83,16 @@ template <class Q>
         const Vec3 wo = -s.direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         const bool light_sampled = bsdf.has_smooth_lobes() && !lights.empty();
-        ShadowQuery shadow;
+        ShadowRayOf<Q> shadow;
         if (light_sampled)
-            shadow = sample_light(bsdf, hit.point, bsdf.facing_normal(), wavelengths, rng);
+            shadow = sample_direct_light(scene_, lights, bsdf, hit.point, bsdf.facing_normal(),
+                                         wavelengths, rng);
 
-        // The BSDF sample before the shadow ray (it does not depend on it; see ShadowQuery).
+        // The BSDF sample before the shadow ray (it does not depend on it; direct_light.h).
         const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
                      u2 = rng.uniform_float();
         const bool sampled = bsdf.sample(u_lobe, u1, u2, sample);
-        if (light_sampled) sum += s.beta * unless_occluded(shadow, rays);
+        if (light_sampled) sum += s.beta * unless_occluded(scene_, shadow, rays);
         if (s.depth + 1 >= kMaxDepth || !sampled || is_black(sample.weight)) break;
         s.beta *= sample.weight;
         s.bsdf_pdf = sample.delta ? -1 : sample.pdf;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/random.h"
+#include "tracer/render/direct_light.h"
 #include "tracer/render/integrator.h"
 #include "tracer/render/light.h"
 #include "tracer/render/render_scene.h"
@@ -51,22 +52,6 @@ private:
     // Follows the path from `state` (advanced in place: a by-value copy of this struct cost
     // more than some of the arithmetic per bounce).
     Q trace(PathState& state, const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const;
-    // Next-event estimation at a surface point (one light sample, MIS-weighted for area lights).
-    Q direct(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal, const Wavelengths& wavelengths,
-             Pcg32& rng, uint64_t& rays) const;
-    // direct() in two halves: the light sample with what it brings if unoccluded, then its
-    // shadow ray. The bounce loop samples the BSDF in between, so that the two chains of
-    // square roots and divisions overlap instead of waiting on each other.
-    struct ShadowQuery {
-        bool cast = false;  // false: the sample brings nothing, no shadow ray
-        Vec3 origin, direction;
-        double t_far = 0;
-        Q contribution{};
-    };
-    ShadowQuery sample_light(const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
-                             const Wavelengths& wavelengths, Pcg32& rng) const;
-    Q unless_occluded(const ShadowQuery& query, uint64_t& rays) const;
-
     const RenderScene& scene_;
     const LightSet& lights_;
     lightmodel::BinnedSpectrum wavelength_density_;  // spectral only

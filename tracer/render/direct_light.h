@@ -1,0 +1,67 @@
+// Next-event estimation at a surface point, as both integrators do it: one sample of the scene's
+// lights (LightSet: choice by power, then the light's own sampling), weighted by the power
+// heuristic against BSDF sampling for lights with a body, and the shadow ray that decides it.
+//
+// In two halves, so that a bounce loop can sample the BSDF in between and the two chains of
+// square roots and divisions overlap instead of waiting on each other.
+#pragma once
+
+#include <cstdint>
+
+#include "core/random.h"
+#include "tracer/render/light.h"
+#include "tracer/render/material.h"
+#include "tracer/render/render_scene.h"
+#include "tracer/render/sampling.h"
+
+namespace rayset::tracer {
+
+// A light sample's shadow ray and what it brings, f |cos| Li / pdf times its MIS weight, if
+// nothing blocks it.
+template <class Q>
+struct ShadowRayOf {
+    bool cast = false;  // false: the sample brings nothing, no shadow ray
+    Vec3 origin, direction;
+    double t_far = 0;
+    Q contribution{};
+};
+
+// One light sample for the BSDF `bsdf` at `point` (offset along `normal`); draws nothing from
+// `rng` when the scene has no light.
+template <class Q>
+ShadowRayOf<Q> sample_direct_light(const RenderScene& scene, const LightSet& lights,
+                                   const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
+                                   const WavelengthsFor<Q>& wavelengths, Pcg32& rng) {
+    ShadowRayOf<Q> shadow;
+    if (lights.empty()) return shadow;
+    const auto light = lights.sample_Li<Q>(point, lights.draw(rng), wavelengths);
+    if (!light) return shadow;
+    const Q f = bsdf.eval(light->wi);
+    if (is_black(f) || is_black(light->Li)) return shadow;
+    shadow.cast = true;
+    shadow.origin = scene.offset(point, normal, light->wi);
+    shadow.direction = light->wi;
+    shadow.t_far = light->distance - scene.epsilon();
+    const double weight = light->delta ? 1 : power_heuristic(light->pdf, bsdf.pdf(light->wi));
+    shadow.contribution = (weight / light->pdf) * (f * light->Li);
+    return shadow;
+}
+
+// The contribution of `shadow` unless the scene blocks its ray; `rays` counts the ray cast.
+template <class Q>
+Q unless_occluded(const RenderScene& scene, const ShadowRayOf<Q>& shadow, uint64_t& rays) {
+    if (!shadow.cast) return {};
+    ++rays;
+    if (scene.occluded(shadow.origin, shadow.direction, 0, shadow.t_far)) return {};
+    return shadow.contribution;
+}
+
+// Both halves at once.
+template <class Q>
+Q direct_light(const RenderScene& scene, const LightSet& lights, const BsdfOf<Q>& bsdf, Vec3 point,
+               Vec3 normal, const WavelengthsFor<Q>& wavelengths, Pcg32& rng, uint64_t& rays) {
+    return unless_occluded(
+        scene, sample_direct_light(scene, lights, bsdf, point, normal, wavelengths, rng), rays);
+}
+
+}  // namespace rayset::tracer
