@@ -22,11 +22,7 @@ PhotonGridOf<PhotonType>::PhotonGridOf(std::vector<Photon> photons, double radiu
     for (size_t i = 0; i < photons_.size(); ++i) order[fill[slot[i]]++] = uint32_t(i);
     // Store the photons in slot order: a gather then reads each slot's photons contiguously.
     std::vector<Photon> sorted(photons_.size());
-    positions_.resize(photons_.size());
-    for (size_t k = 0; k < order.size(); ++k) {
-        sorted[k] = photons_[order[k]];
-        positions_[k] = sorted[k].position;
-    }
+    for (size_t k = 0; k < order.size(); ++k) sorted[k] = photons_[order[k]];
     photons_ = std::move(sorted);
 }
 

@@ -40,8 +40,7 @@ public:
     double radius() const { return radius_; }
     size_t size() const { return photons_.size(); }
     size_t memory_bytes() const {
-        return photons_.size() * (sizeof(Photon) + sizeof(Vec3)) +
-               start_.size() * sizeof(uint32_t);
+        return photons_.size() * sizeof(Photon) + start_.size() * sizeof(uint32_t);
     }
 
     // Calls f(photon) for every photon within the radius of p.
@@ -60,8 +59,9 @@ public:
         for (int s = 0; s < n; ++s) {
             if (s > 0 && slots[s] == slots[s - 1]) continue;
             for (uint32_t k = start_[slots[s]]; k < start_[slots[s] + 1]; ++k) {
-                const Vec3 d = positions_[k] - p;
-                if (dot(d, d) <= r2) f(photons_[k]);
+                const Photon& photon = photons_[k];
+                const Vec3 d = photon.position - p;
+                if (dot(d, d) <= r2) f(photon);
             }
         }
     }
@@ -77,9 +77,6 @@ private:
     }
 
     std::vector<Photon> photons_;
-    // The photons' positions again, packed: most photons of the 27 cells lie outside the
-    // radius, and the test reads only these.
-    std::vector<Vec3> positions_;
     double radius_;
     size_t table_size_ = 1;
     std::vector<uint32_t> start_;  // photons of slot h: [start_[h], start_[h + 1])
