@@ -108,7 +108,7 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
             for (int i = 0; i < 4; ++i)
                 spectral->value[i] += weight * cell_spectrum_[c](spectral->nm[i]);
         }
-        if (pdf) pdf_sum += point_density(c) * (t1 * t1 * t1 - t0 * t0 * t0) / 3;
+        if (pdf) pdf_sum += direction_density(c, t0, t1);
     });
     if (colour) *colour = colour_sum;
     if (pdf) *pdf = pdf_sum;
@@ -119,12 +119,14 @@ double EmissionVolume::point_density(uint32_t cell) const {
     return model_.flux_cells[cell].flux / cell_cdf_.back() / cell_volume(cell);
 }
 
+double EmissionVolume::direction_density(uint32_t cell, double t0, double t1) const {
+    return point_density(cell) * (t1 * t1 * t1 - t0 * t0 * t0) / 3;
+}
+
 double EmissionVolume::pdf_direction(Vec3 origin, Vec3 dir) const {
     double sum = 0;
     traverse(origin, dir, 0, std::numeric_limits<double>::infinity(),
-             [&](uint32_t c, double t0, double t1) {
-                 sum += point_density(c) * (t1 * t1 * t1 - t0 * t0 * t0) / 3;
-             });
+             [&](uint32_t c, double t0, double t1) { sum += direction_density(c, t0, t1); });
     return sum;
 }
 

@@ -81,6 +81,10 @@ public:
     void traverse(Vec3 origin, Vec3 dir, double tmin, double tmax, F&& f) const;
 
 private:
+    // Solid-angle density, seen from a line's origin, that the voxels of `cell` between t0 and
+    // t1 along it give its direction under sample_point(): the integral of point_density t^2.
+    double direction_density(uint32_t cell, double t0, double t1) const;
+
     const LightModel& model_;
     std::vector<int32_t> voxel_cell_;  // dense density lattice -> flux cell, -1 empty
     std::vector<double> cell_cdf_;     // over flux cells, by flux

@@ -51,23 +51,23 @@ private:
     int fd_;
 };
 
-// test-cache/<test binary>/ in the build tree, and in it the folder of this binary's build,
-// named by the binary's size and modification time.
-fs::path binary_cache() {
+// test-cache/<test binary>/ in the build tree (`base`), and in it the folder of this binary's
+// build, named by the binary's size and modification time.
+struct CacheFolders {
+    fs::path base, build;
+};
+CacheFolders cache_folders() {
     const fs::path binary = fs::canonical("/proc/self/exe");
-    return fs::path(RAYSET_BINARY_DIR) / "test-cache" / binary.filename();
-}
-std::string build_stamp() {
-    const fs::path binary = fs::canonical("/proc/self/exe");
-    return std::to_string(fs::file_size(binary)) + "-" +
-           std::to_string(fs::last_write_time(binary).time_since_epoch().count());
+    const fs::path base = fs::path(RAYSET_BINARY_DIR) / "test-cache" / binary.filename();
+    return {base, base / (std::to_string(fs::file_size(binary)) + "-" +
+                          std::to_string(fs::last_write_time(binary).time_since_epoch().count()))};
 }
 
 }  // namespace
 
 ModelFiles synthesised_model(const std::string& folder, const std::string& key,
                              const analytic::Source& source, uint64_t rays, uint64_t seed) {
-    const fs::path base = binary_cache(), cache = base / build_stamp();
+    const auto [base, cache] = cache_folders();
     const std::string stem = key + "-" + std::to_string(rays) + "-" + std::to_string(seed);
     const fs::path rays_file = cache / (stem + ".tm25ray"), model_file = cache / (stem + ".vdb");
     {
@@ -78,8 +78,8 @@ ModelFiles synthesised_model(const std::string& folder, const std::string& key,
         // Both files are written atomically, the model last: a model there is a whole pair.
         if (!fs::exists(model_file)) {
             {
-                auto out =
-                    create_rays(rays_file.string(), RayFormat::tm25, synth_header(source, rays, seed));
+                auto out = create_rays(rays_file.string(), RayFormat::tm25,
+                                       synth_header(source, rays, seed));
                 synthesize(source, rays, seed, *out);
             }
             lightmodel::write_model(lightmodel::build_model(rays_file.string(), {}),

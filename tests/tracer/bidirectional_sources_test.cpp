@@ -27,12 +27,9 @@ namespace {
 
 constexpr double kDiskRadius = 1, kDiskFlux = 1;  // mm, W
 
+// The disk whose rays test::disk_files() holds.
 const analytic::LambertianDisk& disk_truth() {
-    static const analytic::LambertianDisk disk = [] {
-        analytic::Spectrum spectrum;
-        spectrum.wavelength_nm = 555;
-        return analytic::LambertianDisk::with_flux(kDiskRadius, kDiskFlux, spectrum);
-    }();
+    static const analytic::LambertianDisk disk = test::disk_source();
     return disk;
 }
 
@@ -58,7 +55,8 @@ TEST(BidirectionalDisk, PrimaryIlluminanceMatchesClosedForm) {
     // disk's, I_model(w) / I_disk(w), removes that noise (the near-field part, (r/d)^2 < 0.3%
     // here, stays): the integrator alone must then agree within 1% in every cell.
     const double H = 20;
-    const std::string scene = test::disk_over_black_floor(test::disk_files().model, "bidirectional");
+    const std::string scene =
+        test::disk_over_black_floor(test::disk_files().model, "bidirectional");
     RenderSettings settings;
     // A black floor reflects nothing: photons only cost time here.
     settings.render_image = false, settings.passes = 4096, settings.seed = 3,

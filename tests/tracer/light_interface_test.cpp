@@ -22,8 +22,8 @@ namespace rayset::tracer {
 namespace {
 
 std::shared_ptr<const lightmodel::LightModel> disk_light_model() {
-    static const auto model =
-        std::make_shared<const lightmodel::LightModel>(lightmodel::read_model(test::disk_files().model));
+    static const auto model = std::make_shared<const lightmodel::LightModel>(
+        lightmodel::read_model(test::disk_files().model));
     return model;
 }
 
@@ -43,9 +43,7 @@ TEST(LightInterface, PathTracerLightsAFloorWithARayFileSourceInLux) {
         render_text(test::disk_over_black_floor(test::disk_files().model, "path"), settings);
     ASSERT_TRUE(r.layers.empty());
     const lightmodel::ComplexSource model(disk_light_model());
-    analytic::Spectrum spectrum;
-    spectrum.wavelength_nm = 555;
-    const auto disk = analytic::LambertianDisk::with_flux(1, 1, spectrum);
+    const analytic::LambertianDisk disk = test::disk_source();
     const ReceiverMap& floor = r.receivers.at(0);
     double worst = 0;
     for (int j = 0; j < floor.irradiance.ny(); ++j)

@@ -52,13 +52,11 @@ WallAverage wall_average(const std::vector<tracer::ReceiverMap>& maps) {
     return {sum / cells, std::sqrt(squares) / cells};
 }
 
-namespace {
 analytic::LambertianDisk disk_source() {
     analytic::Spectrum spectrum;
     spectrum.wavelength_nm = 555;
     return analytic::LambertianDisk::with_flux(1, 1, spectrum);
 }
-}  // namespace
 
 void write_disk_rays(const std::string& path, uint64_t rays) {
     auto out = create_rays(path, RayFormat::tm25, synth_header(disk_source(), rays, 7));

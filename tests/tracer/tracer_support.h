@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "converters/analytic/analytic_sources.h"
 #include "support/test_support.h"
 #include "tracer/film/film.h"
 
@@ -40,7 +41,9 @@ struct WallAverage {
 };
 WallAverage wall_average(const std::vector<tracer::ReceiverMap>& maps);
 
-// A Lambertian disk (radius 1 mm, 1 W at 555 nm) as `rays` rays of a TM-25 file (seed 7).
+// A Lambertian disk (radius 1 mm, 1 W at 555 nm, facing +z), and it as `rays` rays of a TM-25
+// file (seed 7).
+analytic::LambertianDisk disk_source();
 void write_disk_rays(const std::string& path, uint64_t rays);
 // That disk at 10^6 rays and its model (test::synthesised_model: made once per build of the
 // tests), in a scratch folder of this process where scenes naming them are parsed.

@@ -82,7 +82,7 @@ template <class Q>
             sum += s.beta * emitted(material.emission, material.emission_spectrum, wavelengths);
         const Vec3 wo = -s.direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
-        const bool light_sampled = bsdf.has_smooth_lobes() && !lights.empty();
+        const bool light_sampled = bsdf.has_smooth_lobes();
         ShadowRayOf<Q> shadow;
         if (light_sampled)
             shadow = sample_direct_light(scene_, lights, bsdf, hit.point, bsdf.facing_normal(),
