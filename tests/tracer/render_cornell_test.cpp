@@ -7,14 +7,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <gtest/gtest.h>
 
 #include "support/test_support.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
+#include "tracer/tracer_support.h"
 
 namespace rayset::tracer {
 namespace {
@@ -84,47 +83,12 @@ TEST(RenderCornell, TimeBudgetStopsBetweenPasses) {
     EXPECT_LT(r.seconds, 10.0);  // far more than one 16 x 12 pass takes
 }
 
-// Reads a binary PPM (P6, maxval 255) as POV-Ray writes it with +FP (comment lines allowed).
-bool read_ppm(const std::string& path, int& width, int& height, std::vector<uint8_t>& rgb) {
-    std::ifstream in(path, std::ios::binary);
-    std::string magic;
-    in >> magic;
-    if (magic != "P6") return false;
-    int values[3], n = 0;
-    while (n < 3 && in) {
-        in >> std::ws;
-        if (in.peek() == '#') {
-            std::string comment;
-            std::getline(in, comment);
-            continue;
-        }
-        in >> values[n++];
-    }
-    in.get();
-    width = values[0], height = values[1];
-    if (values[2] != 255) return false;
-    rgb.resize(size_t(width) * height * 3);
-    in.read(reinterpret_cast<char*>(rgb.data()), std::streamsize(rgb.size()));
-    return bool(in);
-}
-
 TEST(RenderCornell, FramingAgreesWithPovRay) {
-    if (test::run_command("command -v povray").status != 0)
-        GTEST_SKIP() << "povray is not installed (Debian package povray; scripts/install-deps.sh "
-                        "installs it): "
-                        "framing comparison against POV-Ray skipped";
     const int width = 160, height = 120;
-    test::ScratchDir dir;
     const std::string mask = kScenes + "cornell_mask.pov";
-    const test::CommandResult pov =
-        test::run_command("cd '" + dir.path().string() + "' && povray +I'" + mask +
-                          "' +W160 +H120 +Opov.ppm +FP -D -GA");
-    ASSERT_EQ(pov.status, 0) << pov.output;
-    int w = 0, h = 0;
     std::vector<uint8_t> reference;
-    ASSERT_TRUE(read_ppm(dir.file("pov.ppm"), w, h, reference));
-    ASSERT_EQ(w, width);
-    ASSERT_EQ(h, height);
+    std::string message;
+    if (!test::povray_render(mask, width, height, reference, message)) GTEST_SKIP() << message;
 
     // Our side: the object each pixel's centre ray meets, shown in that object's flat colour.
     const RenderScene scene(parse_scene_file(mask));

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <stdexcept>
 
 #include "converters/analytic/analytic_sources.h"
 #include "converters/analytic/synth.h"
@@ -103,6 +105,53 @@ std::string cornell_with_receiver() {
     return read_file(cornell.string()) +
            "illuminance_receiver { <5, 0.01, 5>, <0, 0, 45>, <45, 0, 0> resolution <4, 3> name "
            "\"floor\" }\n";
+}
+
+namespace {
+
+// Reads a binary PPM (P6, maxval 255) as POV-Ray writes it with +FP (comment lines allowed).
+bool read_ppm(const std::string& path, int& width, int& height, std::vector<uint8_t>& rgb) {
+    std::ifstream in(path, std::ios::binary);
+    std::string magic;
+    in >> magic;
+    if (magic != "P6") return false;
+    int values[3], n = 0;
+    while (n < 3 && in) {
+        in >> std::ws;
+        if (in.peek() == '#') {
+            std::string comment;
+            std::getline(in, comment);
+            continue;
+        }
+        in >> values[n++];
+    }
+    in.get();
+    width = values[0], height = values[1];
+    if (values[2] != 255) return false;
+    rgb.resize(size_t(width) * height * 3);
+    in.read(reinterpret_cast<char*>(rgb.data()), std::streamsize(rgb.size()));
+    return bool(in);
+}
+
+}  // namespace
+
+bool povray_render(const std::string& scene, int width, int height, std::vector<uint8_t>& rgb,
+                   std::string& message) {
+    if (run_command("command -v povray").status != 0) {
+        message =
+            "povray is not installed (Debian package povray; scripts/install-deps.sh "
+            "installs it): comparison against POV-Ray skipped";
+        return false;
+    }
+    ScratchDir dir;
+    const CommandResult pov = run_command(
+        "cd '" + dir.path().string() + "' && povray +I'" + scene + "' +W" + std::to_string(width) +
+        " +H" + std::to_string(height) + " +Opov.ppm +FP -D -GA File_Gamma=1.0 2>&1");
+    int w = 0, h = 0;
+    if (pov.status != 0 || !read_ppm(dir.file("pov.ppm"), w, h, rgb) || w != width || h != height) {
+        throw std::runtime_error("povray failed on " + scene + ": " + pov.output);
+    }
+    return true;
 }
 
 }  // namespace rayset::test

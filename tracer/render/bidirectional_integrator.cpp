@@ -88,13 +88,13 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
                            scene_.light_horizon(origin, direction, found, hit, rays), -1,
                            wavelengths);
         if (!found) break;
-        const Material& material = scene_.material(hit.object);
+        Material scratch;
+        const Material& material = scene_.material(hit.object, hit.point, scratch);
         const Vec3 wo = -direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         if (bsdf.has_smooth_lobes()) {
-            primary +=
-                beta * direct_light(scene_, lights_, bsdf, hit.point, bsdf.facing_normal(),
-                                    wavelengths, rng, rays);
+            primary += beta * direct_light(scene_, lights_, bsdf, hit.point, bsdf.facing_normal(),
+                                           wavelengths, rng, rays);
             Point vp;
             vp.point = hit.point, vp.normal = hit.normal, vp.shading_normal = hit.shading_normal,
             vp.wo = wo;
@@ -163,8 +163,9 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
             SurfaceHit hit;
             ++rays;
             if (!scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit)) break;
-            const BsdfOf<Q> bsdf(scene_.material(hit.object), hit.normal, hit.shading_normal,
-                                 -direction, wavelengths);
+            Material scratch;
+            const BsdfOf<Q> bsdf(scene_.material(hit.object, hit.point, scratch), hit.normal,
+                                 hit.shading_normal, -direction, wavelengths);
             if (bsdf.has_smooth_lobes() && (scattered || keep_direct)) {
                 photon.position = hit.point, photon.wi = -direction,
                 photon.normal = bsdf.facing_normal();
@@ -191,7 +192,8 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
 template <class Q>
 void BidirectionalIntegratorOf<Q>::gather(const Point& vp, const Grid& grid, Rgb& direct,
                                           Rgb& scattered) const {
-    const Material& material = scene_.material(vp.object);
+    Material scratch;
+    const Material& material = scene_.material(vp.object, vp.point, scratch);
     const Bsdf bsdf(material, vp.normal, vp.shading_normal, vp.wo);
     const Vec3 n = bsdf.facing_normal();
     Rgb sum_direct, sum_scattered;

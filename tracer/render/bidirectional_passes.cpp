@@ -32,7 +32,7 @@ constexpr uint64_t kPhotonSeedSalt =
 bool has_ordinary_light(const RenderScene& scene) {
     if (!is_black(scene.background())) return true;
     for (size_t i = 0; i < scene.description().objects.size(); ++i)
-        if (!is_black(scene.material(int(i)).emission)) return true;
+        if (scene.emits(int(i))) return true;
     return false;
 }
 

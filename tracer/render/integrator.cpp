@@ -71,7 +71,13 @@ std::vector<std::string> integrator_layers(const std::string& name) {
 }
 
 bool spectral_transport(const RenderScene& scene, const RenderSettings& settings) {
-    return settings.spectral || scene.description().global.spectral;
+    const bool spectral = settings.spectral || scene.description().global.spectral;
+    // A colour fitted to a spectrum at every point a path meets would cost more than the path.
+    if (spectral && scene.has_patterned_pigments())
+        throw Error(
+            "not supported: patterned pigments in spectral transport (render in RGB: without "
+            "--spectral and without global_settings { spectral on })");
+    return spectral;
 }
 
 }  // namespace rayset::tracer

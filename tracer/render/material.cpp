@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "tracer/scene_language/grammar.h"
 
 namespace rayset::tracer {
 
@@ -52,15 +53,23 @@ public:
         if (texture.kind == Texture::Kind::patterned)
             fail(fmt::format("patterned textures ({})", pattern_name(texture.pattern->kind)),
                  texture.pattern->location);
-        const Pigment& pigment = texture.pigment;
-        if (pigment.pattern->kind != PatternKind::plain)
-            fail(fmt::format("pigment pattern '{}'", pattern_name(pigment.pattern->kind)),
-                 pigment.pattern->location);
+        check_pigment(texture.pigment);
         // A normal without a pattern perturbs nothing.
         if (texture.normal && texture.normal->pattern->kind != PatternKind::plain)
             fail(fmt::format("normal '{}'", pattern_name(texture.normal->pattern->kind)),
                  texture.normal->pattern->location);
         check_finish(*texture.finish);
+    }
+    // A patterned pigment is rendered where its colour is known exactly at every point
+    // (evaluate_pigment: no noise, turbulence, image or surface coordinates); probed at two
+    // points, and again at every point it is evaluated (ObjectMaterial::at).
+    void check_pigment(const Pigment& pigment) const {
+        if (pigment.pattern->kind == PatternKind::plain) return;
+        Colour colour;
+        if (!evaluate_pigment(pigment, {0, 0, 0}, colour) ||
+            !evaluate_pigment(pigment, {0.31, -0.72, 1.13}, colour))
+            fail(fmt::format("pigment pattern '{}'", pattern_name(pigment.pattern->kind)),
+                 pigment.pattern->location);
     }
     void check_finish(const Finish& f) const {
         struct Unrendered {
@@ -93,23 +102,14 @@ private:
     const ObjectInstance& object_;
 };
 
-}  // namespace
-
-Material material_from_pov(const ObjectInstance& object, double emission_scale) {
+// The physical material of a pigment colour under a finish (README.md beside this file).
+Material material_of(const Colour& c, const Finish& f, double ior, double emission_scale) {
     Material m;
-    const Refusal refusal(object);
-    if (object.appearance.texture) refusal.check_texture(*object.appearance.texture);
-    if (object.appearance.interior_texture)
-        refusal.fail("interior_texture", object.appearance.interior_texture->location);
-    if (object.appearance.interior) refusal.check_interior(*object.appearance.interior);
-    if (!object.appearance.texture) return m;  // POV-Ray renders an untextured object black
-    const Colour& c = object.appearance.texture->pigment.colour;
-    const Finish& f = *object.appearance.texture->finish;
     const Rgb pigment = clamp01(c.rgb());
     const double opacity = std::max(0.0, 1 - c.filter - c.transmit);
     m.diffuse = (opacity * f.diffuse) * pigment;
     m.transmission = clamp01(c.filter * pigment + Rgb{c.transmit, c.transmit, c.transmit});
-    m.ior = object.appearance.interior ? object.appearance.interior->ior : 1.0;
+    m.ior = ior;
 
     // POV-Ray's `specular` is a Blinn highlight of exponent 1/roughness; a Phong lobe about the
     // mirror direction with a quarter of that exponent has nearly the same width.
@@ -126,12 +126,48 @@ Material material_from_pov(const ObjectInstance& object, double emission_scale) 
     m.mirror_falloff = f.reflection_falloff;
     m.mirror_fresnel = f.reflection_fresnel;
     m.emission = emission_scale * (f.emission * pigment);
-    m.emission_spectrum = IlluminantSpectrum(m.emission);
     conserve_energy(m);
+    return m;
+}
+
+void add_spectra(Material& m) {
+    m.emission_spectrum = IlluminantSpectrum(m.emission);
     m.spectra = {upsample_reflectance(m.diffuse), upsample_reflectance(m.glossy),
                  upsample_reflectance(m.mirror_min), upsample_reflectance(m.mirror_max),
                  upsample_reflectance(m.transmission)};
-    return m;
+}
+
+}  // namespace
+
+ObjectMaterial::ObjectMaterial(const ObjectInstance& object, double emission_scale)
+    : emission_scale_(emission_scale) {
+    const Refusal refusal(object);
+    const ObjectAppearance& appearance = object.appearance;
+    if (appearance.texture) refusal.check_texture(*appearance.texture);
+    if (appearance.interior_texture)
+        refusal.fail("interior_texture", appearance.interior_texture->location);
+    if (appearance.interior) refusal.check_interior(*appearance.interior);
+    if (!appearance.texture) return;  // POV-Ray renders an untextured object black
+    ior_ = appearance.interior ? appearance.interior->ior : 1.0;
+    const Texture& texture = *appearance.texture;
+    if (texture.pigment.pattern->kind != PatternKind::plain) texture_ = appearance.texture;
+    // A patterned pigment's uniform material says what every point shares: whether it emits.
+    const Colour white{1, 1, 1, 0, 0};
+    uniform_ = material_of(texture_ ? white : texture.pigment.colour, *texture.finish, ior_,
+                           emission_scale);
+    add_spectra(uniform_);
+}
+
+const Material& ObjectMaterial::at(Vec3 point, Material& scratch) const {
+    if (!texture_) return uniform_;
+    Colour colour;
+    if (!evaluate_pigment(texture_->pigment, point, colour))
+        throw Error(fmt::format(
+            "not supported: pigment pattern '{}' at {} (its colour at ({}, {}, {}) is not known)",
+            pattern_name(texture_->pigment.pattern->kind),
+            texture_->pigment.pattern->location.str(), point.x, point.y, point.z));
+    scratch = material_of(colour, *texture_->finish, ior_, emission_scale_);
+    return scratch;
 }
 
 LobeColours<Rgb> lobe_colours(const Material& m, NoWavelengths) {

@@ -3,6 +3,8 @@
 // lobe, a perfect mirror and a smooth dielectric, mixed with weights that never sum above one.
 #pragma once
 
+#include <memory>
+
 #include "tracer/render/rgb.h"
 #include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/sampling.h"
@@ -40,8 +42,31 @@ LobeColours<SampledSpectrum> lobe_colours(const Material& m, const SampledWavele
 // irradiance receiver stands for.
 const Material& white_lambertian();
 
-// `emission_scale` converts W/(m^2 sr) to the renderer's radiance unit (see units.h).
-Material material_from_pov(const ObjectInstance& object, double emission_scale);
+// An object's material at its surface points: one material for a uniform pigment; for a
+// patterned pigment, the material of the pigment's colour at the point (world coordinates,
+// where the object's textures are placed) under the texture's finish. Patterns whose colour
+// is not known exactly everywhere (noise, turbulence, images) are refused.
+class ObjectMaterial {
+public:
+    // Refuses what the renderer does not render of the object's appearance (Error, "not
+    // supported: ..."). `emission_scale` converts W/(m^2 sr) to the renderer's radiance unit
+    // (units.h).
+    ObjectMaterial(const ObjectInstance& object, double emission_scale);
+
+    // The material at `point`: the uniform one, or one made in `scratch` (without the spectra
+    // of spectral transport, which refuses patterned pigments).
+    const Material& at(Vec3 point, Material& scratch) const;
+    bool patterned() const { return texture_ != nullptr; }
+    // Whether some point emits (a patterned pigment: where its colour is not black).
+    bool emits() const { return !is_black(uniform_.emission); }
+    // The uniform material (a patterned pigment's under a white pigment).
+    const Material& uniform() const { return uniform_; }
+
+private:
+    Material uniform_;
+    std::shared_ptr<const Texture> texture_;  // set for a patterned pigment
+    double ior_ = 1, emission_scale_ = 1;
+};
 
 template <class Q>
 struct BsdfSampleOf {

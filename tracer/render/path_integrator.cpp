@@ -62,6 +62,7 @@ template <class Q>
     Q sum{};
     SurfaceHit hit;
     BsdfSampleOf<Q> sample;
+    Material scratch;
     for (;; ++s.depth) {
         ++rays;
         const bool found = scene_.intersect(s.origin, s.direction, 0, kInfinity, s.kind, hit);
@@ -77,7 +78,7 @@ template <class Q>
             sum += s.beta * emitted(scene_.background(), scene_.background_spectrum(), wavelengths);
             break;
         }
-        const Material& material = scene_.material(hit.object);
+        const Material& material = scene_.material(hit.object, hit.point, scratch);
         if (!is_black(material.emission))
             sum += s.beta * emitted(material.emission, material.emission_spectrum, wavelengths);
         const Vec3 wo = -s.direction;

@@ -1,6 +1,7 @@
 // RenderScene: Embree device and scene, materials, and the three ray queries.
 #include "tracer/render/render_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -102,7 +103,7 @@ RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
     const double to_internal = 1 / units_.per_square_metre();
     read_povray_lights(scene.lights, units_);  // refuses, at load, what has no physical reading
     for (const ObjectInstance& o : scene.objects) {
-        materials_.push_back(material_from_pov(o, to_internal));
+        materials_.emplace_back(o, to_internal);
         no_shadow_.push_back(o.no_shadow);
     }
     background_ = to_internal * scene.background.rgb();
@@ -116,6 +117,11 @@ RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
     rtcCommitScene(scene_);
     check_device(device_, "building the scene");
     epsilon_ = 1e-5 * tables_->extent;
+}
+
+bool RenderScene::has_patterned_pigments() const {
+    return std::any_of(materials_.begin(), materials_.end(),
+                       [](const ObjectMaterial& m) { return m.patterned(); });
 }
 
 RenderScene::~RenderScene() {

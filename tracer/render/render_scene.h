@@ -50,7 +50,14 @@ public:
     RenderScene& operator=(const RenderScene&) = delete;
 
     const SceneDescription& description() const { return description_; }
-    const Material& material(int object) const { return materials_[object]; }
+    // The material of an object at a point of its surface (ObjectMaterial::at).
+    const Material& material(int object, Vec3 point, Material& scratch) const {
+        return materials_[size_t(object)].at(point, scratch);
+    }
+    // Whether some point of the object emits light.
+    bool emits(int object) const { return materials_[size_t(object)].emits(); }
+    // Whether some object's pigment is patterned (its material made point by point).
+    bool has_patterned_pigments() const;
     const SceneUnits& units() const { return units_; }
     Rgb background() const { return background_; }  // renderer units
     const IlluminantSpectrum& background_spectrum() const {
@@ -88,7 +95,7 @@ public:
 private:
     SceneDescription description_;
     SceneUnits units_;
-    std::vector<Material> materials_;
+    std::vector<ObjectMaterial> materials_;
     std::vector<uint8_t> no_shadow_;  // per object: read on every hit, apart from the big objects
     Rgb background_;
     IlluminantSpectrum background_spectrum_;

@@ -351,17 +351,23 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings, Re
     return result;
 }
 
-std::vector<int> object_id_image(const RenderScene& scene, int width, int height) {
+std::vector<SurfaceHit> centre_hits(const RenderScene& scene, int width, int height) {
     const PerspectiveCamera camera(scene.description().camera, width, height);
-    std::vector<int> ids(size_t(width) * height, -1);
+    std::vector<SurfaceHit> hits(size_t(width) * height);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const CameraRay ray = camera.ray(x + 0.5, y + 0.5);
-            SurfaceHit hit;
-            if (scene.intersect(ray.origin, ray.direction, 0,
-                                std::numeric_limits<double>::infinity(), RayKind::camera, hit))
-                ids[size_t(y) * width + x] = hit.object;
+            SurfaceHit& hit = hits[size_t(y) * width + x];
+            if (!scene.intersect(ray.origin, ray.direction, 0,
+                                 std::numeric_limits<double>::infinity(), RayKind::camera, hit))
+                hit.object = -1;
         }
+    return hits;
+}
+
+std::vector<int> object_id_image(const RenderScene& scene, int width, int height) {
+    std::vector<int> ids;
+    for (const SurfaceHit& hit : centre_hits(scene, width, height)) ids.push_back(hit.object);
     return ids;
 }
 

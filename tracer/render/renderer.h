@@ -113,8 +113,10 @@ inline bool stop_requested(const RenderControl& control) { return stopped(contro
 // Seed of the random streams of one pass.
 uint64_t pass_seed(uint64_t seed, int pass);
 
-// Index of the object each pixel's centre ray sees (-1: none), in the camera's frame; the
-// silhouette comparison against POV-Ray uses it.
+// The surface each pixel's centre ray sees (object -1: none), row by row from the top; the
+// comparisons against POV-Ray's renders (silhouettes, patterns) use it.
+std::vector<SurfaceHit> centre_hits(const RenderScene& scene, int width, int height);
+// The index of the object each pixel's centre ray sees (-1: none).
 std::vector<int> object_id_image(const RenderScene& scene, int width, int height);
 
 }  // namespace rayset::tracer
