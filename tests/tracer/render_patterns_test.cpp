@@ -1,8 +1,11 @@
-// Patterned pigments in the renderer: the colour a surface point gets is POV-Ray's. The scene
-// scenes/patterns.pov (twelve patterns with colour maps, lists, frequencies and transforms of
-// pigments and objects, on flat-lit boxes and a checkered floor) is rendered by POV-Ray itself
-// without anti-aliasing in linear 8-bit output; our side is the material each pixel's centre
-// ray meets, its emission being the pigment (finish { emission 1 diffuse 0 }).
+// Patterned pigments in the renderer: the colour a surface point gets, and the sky a ray that
+// leaves the scene sees, are POV-Ray's. The scenes are rendered by POV-Ray itself without
+// anti-aliasing in linear 8-bit output, and compared pixel by pixel with what each pixel's
+// centre ray meets here: scenes/patterns.pov (twelve patterns with colour maps, lists,
+// frequencies and transforms of pigments and objects, on flat-lit boxes and a checkered floor;
+// the material's emission is the pigment, finish { emission 1 diffuse 0 }) and scenes/sky.pov
+// (a sky_sphere of three layers with filter and transmit over a background, turned and scaled
+// by `emission`).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "tracer/render/camera.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
 #include "tracer/tracer_support.h"
@@ -20,6 +24,38 @@ namespace {
 
 const std::string kScenes =
     (std::filesystem::path(__FILE__).parent_path() / "scenes").string() + "/";
+
+// Within 2% of the value, and half a step of POV-Ray's 8-bit output.
+bool agrees(Rgb ours, const uint8_t* pov) {
+    auto close = [](double value, uint8_t reference) {
+        return std::abs(255 * value - reference) <=
+               0.02 * std::max(255 * value, double(reference)) + 0.5;
+    };
+    return close(ours.red, pov[0]) && close(ours.green, pov[1]) && close(ours.blue, pov[2]);
+}
+
+TEST(RenderPatterns, SkyAgreesWithPovRayPixelForPixel) {
+    const int width = 240, height = 180;
+    const std::string scene_file = kScenes + "sky.pov";
+    std::vector<uint8_t> reference;
+    std::string message;
+    if (!test::povray_render(scene_file, width, height, reference, message))
+        GTEST_SKIP() << message;
+
+    const RenderScene scene(parse_scene_file(scene_file));
+    const PerspectiveCamera camera(scene.description().camera, width, height);
+    const double to_colour = scene.units().per_square_metre();  // radiance -> POV-Ray colour
+    int agree = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const CameraRay ray = camera.ray(x + 0.5, y + 0.5);
+            const size_t i = size_t(y) * width + x;
+            agree += agrees(to_colour * scene.sky().radiance(ray.direction), &reference[3 * i]);
+        }
+    const double fraction = double(agree) / (width * height);
+    std::printf("sky colours agree on %d of %d pixels (%.4f)\n", agree, width * height, fraction);
+    EXPECT_GE(fraction, 0.98);
+}
 
 TEST(RenderPatterns, AgreeWithPovRayPixelForPixel) {
     const int width = 240, height = 180;
@@ -38,12 +74,7 @@ TEST(RenderPatterns, AgreeWithPovRayPixelForPixel) {
         Rgb ours{};
         if (hits[i].object >= 0)
             ours = to_pigment * scene.material(hits[i].object, hits[i].point, scratch).emission;
-        // Within 2% of the value, and half a step of POV-Ray's 8-bit output.
-        auto close = [](double value, uint8_t pov) {
-            return std::abs(255 * value - pov) <= 0.02 * std::max(255 * value, double(pov)) + 0.5;
-        };
-        agree += close(ours.red, reference[3 * i]) && close(ours.green, reference[3 * i + 1]) &&
-                 close(ours.blue, reference[3 * i + 2]);
+        agree += agrees(ours, &reference[3 * i]);
         patterned += hits[i].object >= 0;
     }
     const double fraction = double(agree) / double(hits.size());
@@ -84,7 +115,8 @@ TEST(RenderPatterns, SpectralTransportRefusesThem) {
         render(scene, settings);
         FAIL() << "rendered";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("not supported: patterned pigments in spectral"),
+        EXPECT_NE(std::string(e.what()).find(
+                      "not supported: patterned pigments or a sky_sphere in spectral"),
                   std::string::npos)
             << e.what();
     }

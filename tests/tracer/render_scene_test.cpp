@@ -179,8 +179,9 @@ TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
               "not supported: fog at test.pov:2:1");
     EXPECT_EQ(render_error("rainbow { direction z angle 42 width 5 }"),
               "not supported: rainbow at test.pov:1:1");
-    EXPECT_EQ(render_error("sky_sphere { pigment { rgb 1 } }"),
-              "not supported: sky_sphere at test.pov:1:1");
+    EXPECT_EQ(render_error("sky_sphere { pigment { rgb 1 } }"), "no error");
+    EXPECT_EQ(render_error("sky_sphere {\n pigment { bozo } }"),
+              "not supported: pigment pattern 'bozo' in sky_sphere at test.pov:2:12");
     EXPECT_EQ(render_error("global_settings { assumed_gamma 2.2 }"),
               "not supported: assumed_gamma 2.2 (colours are read as linear: only 1.0) at "
               "test.pov:1:19");

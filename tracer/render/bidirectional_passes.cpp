@@ -30,7 +30,7 @@ constexpr uint64_t kPhotonSeedSalt =
 // Emitting surfaces and the background are the path tracer's (in the transport Q of the pass);
 // skip it when there are none.
 bool has_ordinary_light(const RenderScene& scene) {
-    if (!is_black(scene.background())) return true;
+    if (!scene.sky().black()) return true;
     for (size_t i = 0; i < scene.description().objects.size(); ++i)
         if (scene.emits(int(i))) return true;
     return false;

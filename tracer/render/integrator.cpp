@@ -73,9 +73,10 @@ std::vector<std::string> integrator_layers(const std::string& name) {
 bool spectral_transport(const RenderScene& scene, const RenderSettings& settings) {
     const bool spectral = settings.spectral || scene.description().global.spectral;
     // A colour fitted to a spectrum at every point a path meets would cost more than the path.
-    if (spectral && scene.has_patterned_pigments())
+    if (spectral && scene.has_varying_colours())
         throw Error(
-            "not supported: patterned pigments in spectral transport (render in RGB: without "
+            "not supported: patterned pigments or a sky_sphere in spectral transport (render in "
+            "RGB: without "
             "--spectral and without global_settings { spectral on })");
     return spectral;
 }

@@ -75,7 +75,8 @@ template <class Q>
                                                                 s.bsdf_pdf, wavelengths);
         }
         if (!found) {
-            sum += s.beta * emitted(scene_.background(), scene_.background_spectrum(), wavelengths);
+            const Sky& sky = scene_.sky();
+            sum += s.beta * emitted(sky.radiance(s.direction), sky.spectrum(), wavelengths);
             break;
         }
         const Material& material = scene_.material(hit.object, hit.point, scratch);

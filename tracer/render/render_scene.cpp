@@ -84,7 +84,6 @@ void refuse_what_is_not_rendered(const SceneDescription& scene) {
     const Atmosphere& atmosphere = scene.atmosphere;
     if (!atmosphere.fogs.empty()) refuse("fog", atmosphere.fogs.front().location);
     if (!atmosphere.rainbows.empty()) refuse("rainbow", atmosphere.rainbows.front().location);
-    if (atmosphere.sky_sphere) refuse("sky_sphere", atmosphere.sky_sphere->location);
     if (!atmosphere.media.empty()) refuse("atmospheric media", atmosphere.media.front().location);
     const GlobalSettings& global = scene.global;
     const std::string linear = "(colours are read as linear: only 1.0)";
@@ -95,19 +94,23 @@ void refuse_what_is_not_rendered(const SceneDescription& scene) {
                global.assumed_gamma_location);
 }
 
+SceneUnits units_of(const SceneDescription& scene) {
+    SceneUnits units;
+    units.metres_per_unit = scene.global.millimetres_per_unit / 1000;
+    return units;
+}
+
 }  // namespace
 
-RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
+RenderScene::RenderScene(const SceneDescription& scene)
+    : description_(scene), units_(units_of(scene)), sky_(scene, 1 / units_.per_square_metre()) {
     refuse_what_is_not_rendered(scene);
-    units_.metres_per_unit = scene.global.millimetres_per_unit / 1000;
     const double to_internal = 1 / units_.per_square_metre();
     read_povray_lights(scene.lights, units_);  // refuses, at load, what has no physical reading
     for (const ObjectInstance& o : scene.objects) {
         materials_.emplace_back(o, to_internal);
         no_shadow_.push_back(o.no_shadow);
     }
-    background_ = to_internal * scene.background.rgb();
-    background_spectrum_ = IlluminantSpectrum(background_);
 
     device_ = rtcNewDevice(nullptr);
     if (!device_) throw Error("cannot create the Embree device");
@@ -119,9 +122,9 @@ RenderScene::RenderScene(const SceneDescription& scene) : description_(scene) {
     epsilon_ = 1e-5 * tables_->extent;
 }
 
-bool RenderScene::has_patterned_pigments() const {
-    return std::any_of(materials_.begin(), materials_.end(),
-                       [](const ObjectMaterial& m) { return m.patterned(); });
+bool RenderScene::has_varying_colours() const {
+    return !sky_.uniform() || std::any_of(materials_.begin(), materials_.end(),
+                                          [](const ObjectMaterial& m) { return m.patterned(); });
 }
 
 RenderScene::~RenderScene() {

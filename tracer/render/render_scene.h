@@ -13,6 +13,7 @@
 
 #include "tracer/render/material.h"
 #include "tracer/render/rgb_upsampling.h"
+#include "tracer/render/sky.h"
 #include "tracer/render/units.h"
 
 namespace rayset::tracer {
@@ -56,13 +57,11 @@ public:
     }
     // Whether some point of the object emits light.
     bool emits(int object) const { return materials_[size_t(object)].emits(); }
-    // Whether some object's pigment is patterned (its material made point by point).
-    bool has_patterned_pigments() const;
+    // Whether some colour is made point by point: a patterned pigment or a sky_sphere.
+    bool has_varying_colours() const;
     const SceneUnits& units() const { return units_; }
-    Rgb background() const { return background_; }  // renderer units
-    const IlluminantSpectrum& background_spectrum() const {
-        return background_spectrum_;
-    }  // spectral transport
+    // What rays that leave the scene see (background, sky_sphere), renderer units.
+    const Sky& sky() const { return sky_; }
     // Offset that moves a ray origin off the surface it starts on (scene units).
     double epsilon() const { return epsilon_; }
 
@@ -97,8 +96,7 @@ private:
     SceneUnits units_;
     std::vector<ObjectMaterial> materials_;
     std::vector<uint8_t> no_shadow_;  // per object: read on every hit, apart from the big objects
-    Rgb background_;
-    IlluminantSpectrum background_spectrum_;
+    Sky sky_;
     double epsilon_ = 1e-6;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
