@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 namespace rayset {
 
@@ -20,5 +21,10 @@ inline Rgb& operator*=(Rgb& a, Rgb b) { return a = a * b; }
 inline double max_component(Rgb a) { return std::max({a.red, a.green, a.blue}); }
 inline double average(Rgb a) { return (a.red + a.green + a.blue) / 3; }
 inline bool is_black(Rgb a) { return a.red <= 0 && a.green <= 0 && a.blue <= 0; }
+
+// The sRGB transfer curve decoded: an encoded channel value to its linear value.
+inline double srgb_to_linear(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
 
 }  // namespace rayset

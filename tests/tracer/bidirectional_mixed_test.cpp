@@ -44,9 +44,9 @@ TEST(BidirectionalMixed, WhiteLedFromTwoRayFilesPlusAPointLight) {
     Led leds[2] = {{460, 0.3, 11, "", nullptr}, {580, 0.7, 12, "", nullptr}};
     for (Led& led : leds) {
         const std::string key = "led" + std::to_string(int(led.wavelength_nm));
-        led.model = test::synthesised_model(scratch.path().string(), key, led.disk(), 1000000,
-                                            led.seed)
-                        .model;
+        led.model =
+            test::synthesised_model(scratch.path().string(), key, led.disk(), 1000000, led.seed)
+                .model;
         led.light_model =
             std::make_shared<lightmodel::LightModel>(lightmodel::read_model(led.model));
     }

@@ -14,7 +14,7 @@ namespace {
 
 Material material_of(const std::string& object) {
     const SceneDescription d = parse_scene_text(object, "test.pov");
-    return ObjectMaterial(d.objects.at(0), 1.0).uniform();
+    return ObjectMaterial(d.objects.at(0), 1.0, ColourDecoding(d.global)).uniform();
 }
 
 TEST(RenderMaterial, PovRayTextureMapping) {
@@ -47,6 +47,21 @@ TEST(RenderMaterial, PovRayTextureMapping) {
 }
 
 // The renderer refuses, at the place the scene writes it, what it does not render.
+TEST(RenderMaterial, ColoursDecodedFromTheAssumedGamma) {
+    const std::string sphere =
+        "sphere { 0, 1 pigment { rgbt <0.5, 0.2, 1.5, 0.25> } finish { diffuse 0.8 } }";
+    Material m = material_of("global_settings { assumed_gamma 2.2 } " + sphere);
+    EXPECT_DOUBLE_EQ(m.diffuse.red, 0.8 * 0.75 * std::pow(0.5, 2.2));
+    // Colours are single precision, as POV-Ray keeps them: 0.2 is 0.2 to 1.5e-8.
+    EXPECT_NEAR(m.diffuse.green, 0.8 * 0.75 * std::pow(0.2, 2.2), 1e-7 * m.diffuse.green);
+    EXPECT_DOUBLE_EQ(m.diffuse.blue, 0.8 * 0.75);  // the pigment clamped to 1 after decoding
+    EXPECT_DOUBLE_EQ(m.transmission.red, 0.25);    // transmit is a fraction: kept
+    m = material_of("global_settings { assumed_gamma srgb } " + sphere);
+    EXPECT_DOUBLE_EQ(m.diffuse.red, 0.8 * 0.75 * std::pow((0.5 + 0.055) / 1.055, 2.4));
+    m = material_of("global_settings { assumed_gamma 1.0 } " + sphere);
+    EXPECT_DOUBLE_EQ(m.diffuse.red, 0.8 * 0.75 * 0.5);
+}
+
 TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
     auto error = [](const std::string& object) {
         try {

@@ -57,32 +57,48 @@ TEST(RenderPatterns, SkyAgreesWithPovRayPixelForPixel) {
     EXPECT_GE(fraction, 0.98);
 }
 
-TEST(RenderPatterns, AgreeWithPovRayPixelForPixel) {
+// The pattern scene under `assumed_gamma` (its colours encoded with it), against POV-Ray's
+// render written with that file gamma: POV-Ray shows a flat colour unchanged, and here it is
+// decoded to c^gamma of radiance, so c^(1/gamma) must give it back.
+void expect_patterns_agree(double assumed_gamma) {
     const int width = 240, height = 180;
-    const std::string scene_file = kScenes + "patterns.pov";
+    test::ScratchDir dir;
+    std::string text = test::read_file(kScenes + "patterns.pov");
+    const std::string linear = "assumed_gamma 1.0";
+    text.replace(text.find(linear), linear.size(),
+                 "assumed_gamma " + std::to_string(assumed_gamma));
+    const std::string scene_file = dir.file("patterns.pov");
+    test::write_file(scene_file, text);
     std::vector<uint8_t> reference;
     std::string message;
-    if (!test::povray_render(scene_file, width, height, reference, message))
+    if (!test::povray_render(scene_file, width, height, reference, message, assumed_gamma))
         GTEST_SKIP() << message;
 
     const RenderScene scene(parse_scene_file(scene_file));
     const std::vector<SurfaceHit> hits = centre_hits(scene, width, height);
     const double to_pigment = scene.units().per_square_metre();  // emission -> pigment
+    auto encoded = [&](double v) { return std::pow(to_pigment * v, 1 / assumed_gamma); };
     int agree = 0, patterned = 0;
     Material scratch;
     for (size_t i = 0; i < hits.size(); ++i) {
         Rgb ours{};
-        if (hits[i].object >= 0)
-            ours = to_pigment * scene.material(hits[i].object, hits[i].point, scratch).emission;
+        if (hits[i].object >= 0) {
+            const Rgb e = scene.material(hits[i].object, hits[i].point, scratch).emission;
+            ours = {encoded(e.red), encoded(e.green), encoded(e.blue)};
+        }
         agree += agrees(ours, &reference[3 * i]);
         patterned += hits[i].object >= 0;
     }
     const double fraction = double(agree) / double(hits.size());
-    std::printf("pattern colours agree on %d of %zu pixels (%.4f); %d pixels see a surface\n",
-                agree, hits.size(), fraction, patterned);
+    std::printf("assumed_gamma %g: pattern colours agree on %d of %zu pixels (%.4f)\n",
+                assumed_gamma, agree, hits.size(), fraction);
     EXPECT_GT(patterned, width * height * 9 / 10);
     EXPECT_GE(fraction, 0.98);
 }
+
+TEST(RenderPatterns, AgreeWithPovRayPixelForPixel) { expect_patterns_agree(1.0); }
+
+TEST(RenderPatterns, AgreeWithPovRayUnderAnotherAssumedGamma) { expect_patterns_agree(2.2); }
 
 // The colour moves with the object: a checker on a box translated by one square shows the
 // other colour at the same world point; and it is the pigment's, not a mean.

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "support/test_support.h"
 #include "tracer/render/camera.h"
+#include "tracer/render/povray_lights.h"
 #include "tracer/render/render_scene.h"
 #include "tracer/scene_language/scene_language.h"
 
@@ -182,12 +183,6 @@ TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
     EXPECT_EQ(render_error("sky_sphere { pigment { rgb 1 } }"), "no error");
     EXPECT_EQ(render_error("sky_sphere {\n pigment { bozo } }"),
               "not supported: pigment pattern 'bozo' in sky_sphere at test.pov:2:12");
-    EXPECT_EQ(render_error("global_settings { assumed_gamma 2.2 }"),
-              "not supported: assumed_gamma 2.2 (colours are read as linear: only 1.0) at "
-              "test.pov:1:19");
-    EXPECT_EQ(render_error("global_settings { assumed_gamma srgb }"),
-              "not supported: assumed_gamma srgb (colours are read as linear: only 1.0) at "
-              "test.pov:1:19");
     EXPECT_EQ(render_error(
                   "global_settings { assumed_gamma 1 ambient_light 0.3 adc_bailout 0.1\n"
                   "  max_trace_level 3 max_intersections 10 number_of_waves 3 noise_generator 1\n"
@@ -195,6 +190,26 @@ TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
                   "  photons { count 1000 } subsurface { } }\n"
                   "camera { perspective location -5*z angle 60 }"),
               "no error");
+}
+
+TEST(RenderScene, LightAndSkyColoursDecodedFromTheAssumedGamma) {
+    const SceneDescription d = parse_scene_text(
+        "global_settings { assumed_gamma 2.2 }\n"
+        "light_source { <0, 5, 0> rgb <0.5, 1, 2> }\n"
+        "background { rgb <0.5, 0, 0> }\n"
+        "sky_sphere { pigment { rgbt <1, 0.5, 0.25, 0.5> } }",
+        "test.pov");
+    const PovrayLights lights =
+        read_povray_lights(d.lights, SceneUnits{}, ColourDecoding(d.global));
+    ASSERT_EQ(lights.points.size(), 1u);
+    EXPECT_DOUBLE_EQ(lights.points[0].intensity.red, std::pow(0.5, 2.2));
+    EXPECT_DOUBLE_EQ(lights.points[0].intensity.green, 1);
+    EXPECT_DOUBLE_EQ(lights.points[0].intensity.blue, std::pow(2, 2.2));
+    // Half the sky's decoded colour over half the decoded background (transmit 0.5 is kept).
+    const Rgb sky = Sky(d, 1.0).radiance({0, 1, 0});
+    EXPECT_DOUBLE_EQ(sky.red, 0.5 + 0.5 * std::pow(0.5, 2.2));
+    EXPECT_DOUBLE_EQ(sky.green, 0.5 * std::pow(0.5, 2.2));
+    EXPECT_DOUBLE_EQ(sky.blue, 0.5 * std::pow(0.25, 2.2));
 }
 
 TEST(RenderScene, RefusesWhatItDoesNotRender) {

@@ -136,7 +136,7 @@ bool read_ppm(const std::string& path, int& width, int& height, std::vector<uint
 }  // namespace
 
 bool povray_render(const std::string& scene, int width, int height, std::vector<uint8_t>& rgb,
-                   std::string& message) {
+                   std::string& message, double file_gamma) {
     if (run_command("command -v povray").status != 0) {
         message =
             "povray is not installed (Debian package povray; scripts/install-deps.sh "
@@ -144,9 +144,10 @@ bool povray_render(const std::string& scene, int width, int height, std::vector<
         return false;
     }
     ScratchDir dir;
-    const CommandResult pov = run_command(
-        "cd '" + dir.path().string() + "' && povray +I'" + scene + "' +W" + std::to_string(width) +
-        " +H" + std::to_string(height) + " +Opov.ppm +FP -D -GA File_Gamma=1.0 2>&1");
+    const CommandResult pov =
+        run_command("cd '" + dir.path().string() + "' && povray +I'" + scene + "' +W" +
+                    std::to_string(width) + " +H" + std::to_string(height) +
+                    " +Opov.ppm +FP -D -GA File_Gamma=" + std::to_string(file_gamma) + " 2>&1");
     int w = 0, h = 0;
     if (pov.status != 0 || !read_ppm(dir.file("pov.ppm"), w, h, rgb) || w != width || h != height) {
         throw std::runtime_error("povray failed on " + scene + ": " + pov.output);

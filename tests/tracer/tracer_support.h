@@ -67,10 +67,10 @@ std::string disk_over_black_floor(const std::string& source, const std::string& 
 // illuminance receiver on its floor, facing up.
 std::string cornell_with_receiver();
 
-// POV-Ray's own render of `scene` (no anti-aliasing, linear output: File_Gamma 1), read back as
-// 8-bit RGB rows from the top. False with `message` set when povray is not installed (the test
-// skips, saying so); std::runtime_error when it fails.
+// POV-Ray's own render of `scene` (no anti-aliasing, output encoded with `file_gamma`: 1 is
+// linear), read back as 8-bit RGB rows from the top. False with `message` set when povray is
+// not installed (the test skips, saying so); std::runtime_error when it fails.
 bool povray_render(const std::string& scene, int width, int height, std::vector<uint8_t>& rgb,
-                   std::string& message);
+                   std::string& message, double file_gamma = 1);
 
 }  // namespace rayset::test

@@ -52,7 +52,7 @@ LightSet::LightSet(std::vector<Light> lights) : lights_(std::move(lights)) {
 }
 
 LightSet::LightSet(const SceneDescription& scene, const SceneUnits& units, bool naive_sources) {
-    PovrayLights povray = read_povray_lights(scene.lights, units);
+    PovrayLights povray = read_povray_lights(scene.lights, units, ColourDecoding(scene.global));
     std::vector<Light> lights;
     for (PointLight& l : povray.points) lights.emplace_back(std::move(l));
     for (RectLight& l : povray.rects) lights.emplace_back(std::move(l));

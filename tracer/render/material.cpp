@@ -139,8 +139,9 @@ void add_spectra(Material& m) {
 
 }  // namespace
 
-ObjectMaterial::ObjectMaterial(const ObjectInstance& object, double emission_scale)
-    : emission_scale_(emission_scale) {
+ObjectMaterial::ObjectMaterial(const ObjectInstance& object, double emission_scale,
+                               const ColourDecoding& decoding)
+    : emission_scale_(emission_scale), decoding_(decoding) {
     const Refusal refusal(object);
     const ObjectAppearance& appearance = object.appearance;
     if (appearance.texture) refusal.check_texture(*appearance.texture);
@@ -153,8 +154,8 @@ ObjectMaterial::ObjectMaterial(const ObjectInstance& object, double emission_sca
     if (texture.pigment.pattern->kind != PatternKind::plain) texture_ = appearance.texture;
     // A patterned pigment's uniform material says what every point shares: whether it emits.
     const Colour white{1, 1, 1, 0, 0};
-    uniform_ = material_of(texture_ ? white : texture.pigment.colour, *texture.finish, ior_,
-                           emission_scale);
+    uniform_ = material_of(texture_ ? white : decoding(texture.pigment.colour), *texture.finish,
+                           ior_, emission_scale);
     add_spectra(uniform_);
 }
 
@@ -166,7 +167,7 @@ const Material& ObjectMaterial::at(Vec3 point, Material& scratch) const {
             "not supported: pigment pattern '{}' at {} (its colour at ({}, {}, {}) is not known)",
             pattern_name(texture_->pigment.pattern->kind),
             texture_->pigment.pattern->location.str(), point.x, point.y, point.z));
-    scratch = material_of(colour, *texture_->finish, ior_, emission_scale_);
+    scratch = material_of(decoding_(colour), *texture_->finish, ior_, emission_scale_);
     return scratch;
 }
 

@@ -5,6 +5,7 @@
 
 #include <memory>
 
+#include "tracer/render/colour_decoding.h"
 #include "tracer/render/rgb.h"
 #include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/sampling.h"
@@ -50,8 +51,9 @@ class ObjectMaterial {
 public:
     // Refuses what the renderer does not render of the object's appearance (Error, "not
     // supported: ..."). `emission_scale` converts W/(m^2 sr) to the renderer's radiance unit
-    // (units.h).
-    ObjectMaterial(const ObjectInstance& object, double emission_scale);
+    // (units.h); `decoding` gives the pigment's linear colour (colour_decoding.h).
+    ObjectMaterial(const ObjectInstance& object, double emission_scale,
+                   const ColourDecoding& decoding);
 
     // The material at `point`: the uniform one, or one made in `scratch` (without the spectra
     // of spectral transport, which refuses patterned pigments).
@@ -66,6 +68,7 @@ private:
     Material uniform_;
     std::shared_ptr<const Texture> texture_;  // set for a patterned pigment
     double ior_ = 1, emission_scale_ = 1;
+    ColourDecoding decoding_;
 };
 
 template <class Q>

@@ -146,9 +146,9 @@ lightmodel::BinnedSpectrum RectLight::spectrum() const { return lightmodel::d65_
 
 namespace {
 
-PointLight point_light_of(const LightSource& source, const SceneUnits& units,
+PointLight point_light_of(const LightSource& source, Rgb colour, const SceneUnits& units,
                           const std::string& where) {
-    Rgb intensity = source.colour;
+    Rgb intensity = colour;
     // POV-Ray's fade 2 / (1 + (d/d0)^2) tends to 2 d0^2 / d^2: read as inverse-square with the
     // same far-field value. Other fade powers have no physical reading.
     if (source.fade_distance > 0 && source.fade_power > 0) {
@@ -202,7 +202,8 @@ RectLight rect_light_of(const LightSource& source, const PointLight& point, doub
 
 }  // namespace
 
-PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const SceneUnits& units) {
+PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const SceneUnits& units,
+                                const ColourDecoding& decoding) {
     PovrayLights out;
     for (const LightSource& source : lights) {
         const std::string where = source.location.str();
@@ -212,7 +213,7 @@ PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const Sc
         if (source.area_light && (source.circular || source.orient))
             throw Error(fmt::format(
                 "not supported: circular/orient area_light (only rectangles) at {}", where));
-        PointLight point = point_light_of(source, units, where);
+        PointLight point = point_light_of(source, decoding(source.colour), units, where);
         const double solid_angle = effective_solid_angle(point);
         point.emitted_power = average(point.intensity) * solid_angle;
         if (source.area_light)

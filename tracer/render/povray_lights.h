@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "tracer/render/colour_decoding.h"
 #include "tracer/render/light_samples.h"
 #include "tracer/render/rgb.h"
 #include "tracer/render/rgb_upsampling.h"
@@ -81,6 +82,7 @@ struct PovrayLights {
 };
 // The scene's light_source statements; throws rayset::Error, naming the statement, for what
 // has no physical reading (shadowless lights, fade powers other than 2, circular area lights).
-PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const SceneUnits& units);
+PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const SceneUnits& units,
+                                const ColourDecoding& decoding);
 
 }  // namespace rayset::tracer

@@ -85,13 +85,6 @@ void refuse_what_is_not_rendered(const SceneDescription& scene) {
     if (!atmosphere.fogs.empty()) refuse("fog", atmosphere.fogs.front().location);
     if (!atmosphere.rainbows.empty()) refuse("rainbow", atmosphere.rainbows.front().location);
     if (!atmosphere.media.empty()) refuse("atmospheric media", atmosphere.media.front().location);
-    const GlobalSettings& global = scene.global;
-    const std::string linear = "(colours are read as linear: only 1.0)";
-    if (global.assumed_gamma_srgb)
-        refuse("assumed_gamma srgb " + linear, global.assumed_gamma_location);
-    if (global.assumed_gamma != 1)
-        refuse(fmt::format("assumed_gamma {} {}", global.assumed_gamma, linear),
-               global.assumed_gamma_location);
 }
 
 SceneUnits units_of(const SceneDescription& scene) {
@@ -106,9 +99,11 @@ RenderScene::RenderScene(const SceneDescription& scene)
     : description_(scene), units_(units_of(scene)), sky_(scene, 1 / units_.per_square_metre()) {
     refuse_what_is_not_rendered(scene);
     const double to_internal = 1 / units_.per_square_metre();
-    read_povray_lights(scene.lights, units_);  // refuses, at load, what has no physical reading
+    // Refuses, at load, what has no physical reading.
+    const ColourDecoding decoding(scene.global);
+    read_povray_lights(scene.lights, units_, decoding);
     for (const ObjectInstance& o : scene.objects) {
-        materials_.emplace_back(o, to_internal);
+        materials_.emplace_back(o, to_internal, decoding);
         no_shadow_.push_back(o.no_shadow);
     }
 

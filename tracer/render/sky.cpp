@@ -23,7 +23,8 @@ constexpr Vec3 kProbes[] = {{0, 1, 0}, {0.48, -0.6, 0.64}};
 }  // namespace
 
 Sky::Sky(const SceneDescription& scene, double to_internal)
-    : background_(to_internal * scene.background.rgb()),
+    : decoding_(scene.global),
+      background_(to_internal * decoding_(scene.background.rgb())),
       background_spectrum_(background_),
       sky_(scene.atmosphere.sky_sphere),
       to_internal_(to_internal) {
@@ -44,7 +45,7 @@ Rgb Sky::radiance(Vec3 direction) const {
     for (auto layer = sky_->pigments.rbegin(); layer != sky_->pigments.rend(); ++layer) {
         Colour c;
         if (!evaluate_pigment(**layer, at, c)) refuse_pigment(**layer, *sky_);
-        const Rgb colour = c.rgb();
+        const Rgb colour = decoding_(c.rgb());
         const double opacity = 1 - c.filter - c.transmit;
         sum += (to_internal_ * opacity) * (through * sky_->emission * colour);
         through = through * (c.filter * colour + Rgb{c.transmit, c.transmit, c.transmit});

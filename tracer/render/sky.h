@@ -6,12 +6,14 @@
 // composed as POV-Ray composes layered pigments: each layer shows its colour times its opacity
 // (1 - filter - transmit) and lets through filter x its colour + transmit of what lies below,
 // the background at the bottom. Colours are radiance in W/(m^2 sr) per channel, as the
-// background's are; the sky's `emission` scales its layers.
+// background's are, decoded from the scene's assumed_gamma (colour_decoding.h); the sky's
+// `emission` scales its layers.
 #pragma once
 
 #include <memory>
 #include <vector>
 
+#include "tracer/render/colour_decoding.h"
 #include "tracer/render/rgb.h"
 #include "tracer/render/rgb_upsampling.h"
 #include "tracer/scene_language/scene_description.h"
@@ -34,6 +36,7 @@ public:
     const IlluminantSpectrum& spectrum() const { return background_spectrum_; }
 
 private:
+    ColourDecoding decoding_;
     Rgb background_;
     IlluminantSpectrum background_spectrum_;
     std::shared_ptr<const SkySphere> sky_;

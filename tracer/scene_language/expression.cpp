@@ -32,10 +32,6 @@ Numeric combine(Numeric a, Numeric b, double (*op)(double, double)) {
     return a;
 }
 
-double srgb_to_linear(double c) {
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
 }  // namespace
 
 bool is_colour_keyword(const Token& token) {

@@ -4,7 +4,7 @@
 //
 // Frame: POV-Ray's own (left-handed, y up), coordinates as the file writes them. Lengths in
 // the scene's unit (GlobalSettings::length_unit, mm by default). Colours are POV-Ray's
-// numbers as written (linear; assumed_gamma is recorded, not applied).
+// numbers as written (assumed_gamma is recorded; the renderer decodes them with it).
 #pragma once
 
 #include <deque>
