@@ -43,7 +43,7 @@ TEST(RenderPatterns, SkyAgreesWithPovRayPixelForPixel) {
         GTEST_SKIP() << message;
 
     const RenderScene scene(parse_scene_file(scene_file));
-    const PerspectiveCamera camera(scene.description().camera, width, height);
+    const SceneCamera camera(scene.description().camera, width, height);
     const double to_colour = scene.units().per_square_metre();  // radiance -> POV-Ray colour
     int agree = 0;
     for (int y = 0; y < height; ++y)
@@ -57,16 +57,21 @@ TEST(RenderPatterns, SkyAgreesWithPovRayPixelForPixel) {
     EXPECT_GE(fraction, 0.98);
 }
 
-// The pattern scene under `assumed_gamma` (its colours encoded with it), against POV-Ray's
-// render written with that file gamma: POV-Ray shows a flat colour unchanged, and here it is
-// decoded to c^gamma of radiance, so c^(1/gamma) must give it back.
-void expect_patterns_agree(double assumed_gamma) {
+// The pattern scene under `assumed_gamma` (its colours encoded with it) and seen through
+// `camera` (its camera statement when empty), against POV-Ray's render written with that file
+// gamma: POV-Ray shows a flat colour unchanged, and here it is decoded to c^gamma of radiance,
+// so c^(1/gamma) must give it back.
+void expect_patterns_agree(double assumed_gamma, const std::string& camera = "") {
     const int width = 240, height = 180;
     test::ScratchDir dir;
     std::string text = test::read_file(kScenes + "patterns.pov");
     const std::string linear = "assumed_gamma 1.0";
     text.replace(text.find(linear), linear.size(),
                  "assumed_gamma " + std::to_string(assumed_gamma));
+    if (!camera.empty()) {
+        const size_t start = text.find("camera {");
+        text.replace(start, text.find('\n', start) - start, camera);
+    }
     const std::string scene_file = dir.file("patterns.pov");
     test::write_file(scene_file, text);
     std::vector<uint8_t> reference;
@@ -90,8 +95,9 @@ void expect_patterns_agree(double assumed_gamma) {
         patterned += hits[i].object >= 0;
     }
     const double fraction = double(agree) / double(hits.size());
-    std::printf("assumed_gamma %g: pattern colours agree on %d of %zu pixels (%.4f)\n",
-                assumed_gamma, agree, hits.size(), fraction);
+    std::printf("assumed_gamma %g, %s: pattern colours agree on %d of %zu pixels (%.4f)\n",
+                assumed_gamma, camera.empty() ? "its camera" : camera.c_str(), agree, hits.size(),
+                fraction);
     EXPECT_GT(patterned, width * height * 9 / 10);
     EXPECT_GE(fraction, 0.98);
 }
@@ -99,6 +105,14 @@ void expect_patterns_agree(double assumed_gamma) {
 TEST(RenderPatterns, AgreeWithPovRayPixelForPixel) { expect_patterns_agree(1.0); }
 
 TEST(RenderPatterns, AgreeWithPovRayUnderAnotherAssumedGamma) { expect_patterns_agree(2.2); }
+
+// The orthographic camera, sized by its angle at the look_at distance and by right and up.
+TEST(RenderPatterns, AgreeWithPovRayThroughAnOrthographicCamera) {
+    expect_patterns_agree(
+        1.0, "camera { orthographic location <0, 12, -4> look_at <0, 0, 0.5> angle 60 }");
+    expect_patterns_agree(
+        1.0, "camera { orthographic location <3, 9, -6> look_at <0, 0, 0> right 16*x up 12*y }");
+}
 
 // The colour moves with the object: a checker on a box translated by one square shows the
 // other colour at the same world point; and it is the pigment's, not a mean.

@@ -141,12 +141,12 @@ TEST(RenderScene, ModifiersHideObjectsFromTheirRays) {
 
 TEST(RenderCamera, PovRayFrameAndMirroredRight) {
     Camera c;  // POV-Ray's default camera: at the origin looking along +z, right <1.33,0,0>
-    PerspectiveCamera camera(c, 100, 50);
+    SceneCamera camera(c, 100, 50);
     expect_vec(camera.ray(50, 25).direction, {0, 0, 1}, 1e-12);
     // Image left edge, top row: direction + (-0.5) right + 0.5 up.
     expect_vec(camera.ray(0, 0).direction, normalized({-0.665, 0.5, 1}), 1e-12);
     c.right = {-1, 0, 0};  // cornell.pov's right <-1,0,0>: the image's left is +x
-    expect_vec(PerspectiveCamera(c, 100, 50).ray(0, 25).direction, normalized({0.5, 0, 1}), 1e-12);
+    expect_vec(SceneCamera(c, 100, 50).ray(0, 25).direction, normalized({0.5, 0, 1}), 1e-12);
 }
 
 // The message of the error a scene gives the renderer, or "no error".
@@ -170,10 +170,9 @@ TEST(RenderLights, UnsupportedFadeAndShadowlessAreErrors) {
 // What the renderer does not render is refused with its place in the file; POV-Ray's hints
 // (radiosity, photons, max_trace_level ...) and ambient_light are accepted (README.md).
 TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
-    EXPECT_EQ(render_error("camera { orthographic location -5*z }"),
-              "not supported: orthographic camera (only perspective) at test.pov:1:10");
     EXPECT_EQ(render_error("#declare C = camera { cylinder 2 }\ncamera { C translate x }"),
-              "not supported: cylinder camera (only perspective) at test.pov:1:23");
+              "not supported: cylinder camera (only perspective and orthographic) at "
+              "test.pov:1:23");
     EXPECT_EQ(render_error("camera { location -5*z aperture 0.4 blur_samples 9 }"),
               "not supported: focal blur (camera aperture 0.4) at test.pov:1:24");
     EXPECT_EQ(render_error("sphere { 0, 1 }\nfog { distance 10 rgb 1 }"),

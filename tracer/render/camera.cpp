@@ -27,10 +27,11 @@ const char* projection_name(CameraProjection projection) {
 }  // namespace
 
 void check_camera_renderable(const Camera& camera) {
-    if (camera.projection != CameraProjection::perspective)
-        throw Error(fmt::format("not supported: {} camera (only perspective) at {}",
-                                projection_name(camera.projection),
-                                camera.projection_location.str()));
+    if (camera.projection != CameraProjection::perspective &&
+        camera.projection != CameraProjection::orthographic)
+        throw Error(
+            fmt::format("not supported: {} camera (only perspective and orthographic) at {}",
+                        projection_name(camera.projection), camera.projection_location.str()));
     if (camera.focal_blur.aperture != 0)
         throw Error(fmt::format("not supported: focal blur (camera aperture {}) at {}",
                                 camera.focal_blur.aperture, camera.focal_blur_location.str()));
@@ -39,16 +40,18 @@ void check_camera_renderable(const Camera& camera) {
                                 camera.normal_location.str()));
 }
 
-PerspectiveCamera::PerspectiveCamera(const Camera& camera, int width, int height)
+SceneCamera::SceneCamera(const Camera& camera, int width, int height)
     : camera_(camera), width_(width), height_(height) {
     check_camera_renderable(camera);
     if (width < 1 || height < 1) throw Error("image size must be at least 1 x 1 pixels");
 }
 
-CameraRay PerspectiveCamera::ray(double x, double y) const {
+CameraRay SceneCamera::ray(double x, double y) const {
     const double s = x / width_, t = y / height_;
-    const Vec3 d = camera_.direction + (s - 0.5) * camera_.right + (0.5 - t) * camera_.up;
-    return {camera_.location, normalized(d)};
+    const Vec3 on_plane = (s - 0.5) * camera_.right + (0.5 - t) * camera_.up;
+    if (camera_.projection == CameraProjection::orthographic)
+        return {camera_.location + on_plane, normalized(camera_.direction)};
+    return {camera_.location, normalized(camera_.direction + on_plane)};
 }
 
 }  // namespace rayset::tracer

@@ -150,7 +150,7 @@ private:
     }
 
     Integrator& integrator_;
-    const PerspectiveCamera camera_;
+    const SceneCamera camera_;
     const SamplePoints points_;
     const int samples_;
     const double weight_, to_si_;
@@ -352,7 +352,7 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings, Re
 }
 
 std::vector<SurfaceHit> centre_hits(const RenderScene& scene, int width, int height) {
-    const PerspectiveCamera camera(scene.description().camera, width, height);
+    const SceneCamera camera(scene.description().camera, width, height);
     std::vector<SurfaceHit> hits(size_t(width) * height);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
