@@ -23,6 +23,7 @@
 
 #include "core/error.h"
 #include "tracer/scene_language/object_grammar.h"
+#include "tracer/scene_language/shape_geometry.h"
 
 namespace rayset::tracer {
 namespace {
@@ -425,102 +426,6 @@ bool object_bounding_box(const ObjectNode& object, Vec3& minimum, Vec3& maximum)
 
 namespace {
 
-// POV-Ray's term order of a polynomial (x^order first): see grammar_shapes.cpp.
-double polynomial_value(const PolynomialShape& poly, Vec3 p) {
-    double sum = 0;
-    size_t term = 0;
-    for (int i = poly.order; i >= 0; --i)
-        for (int j = poly.order - i; j >= 0; --j)
-            for (int k = poly.order - i - j; k >= 0; --k)
-                sum += poly.coefficients[term++] * std::pow(p.x, i) * std::pow(p.y, j) *
-                       std::pow(p.z, k);
-    return sum;
-}
-
-struct Hit {
-    double t;
-    Vec3 normal;  // not normalised
-};
-
-void mesh_hits(const TriangleMesh& mesh, Vec3 o, Vec3 d, std::vector<Hit>& hits);
-
-// Whether (x, z) is inside the closed outlines of a linear prism (each sub-outline closes
-// where its first point repeats): an odd number of edge crossings, so that where an even
-// number of outlines overlap there is a hole, as POV-Ray has it.
-bool inside_outlines(const std::vector<Vec2>& points, double x, double z) {
-    bool inside = false;
-    size_t start = 0;
-    for (size_t i = 0; i + 1 < points.size(); ++i) {
-        const Vec2 a = points[i], b = points[i + 1];
-        if ((a.y > z) != (b.y > z) && x < a.x + (z - a.y) * (b.x - a.x) / (b.y - a.y))
-            inside = !inside;
-        if (b.x == points[start].x && b.y == points[start].y) start = i + 2, ++i;
-    }
-    return inside;
-}
-
-// A prism of linear spline between its heights; a conic one's outline scales with the height.
-bool prism_inside(const PrismShape& prism, Vec3 p, bool& inside) {
-    if (prism.spline != SplineKind::linear) return false;
-    const double low = std::min(prism.height1, prism.height2);
-    const double high = std::max(prism.height1, prism.height2);
-    inside = p.y >= low && p.y <= high;
-    if (!inside) return true;
-    if (!prism.conic_sweep) {
-        inside = inside_outlines(prism.points, p.x, p.z);
-    } else {
-        inside = p.y != 0 && inside_outlines(prism.points, p.x / p.y, p.z / p.y);
-    }
-    return true;
-}
-
-bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
-    if (const auto* prism = std::get_if<PrismShape>(&shape)) return prism_inside(*prism, p, inside);
-    if (const auto* s = std::get_if<SphereShape>(&shape)) {
-        const Vec3 q = p - s->centre;
-        inside = dot(q, q) < s->radius * s->radius;
-    } else if (const auto* b = std::get_if<BoxShape>(&shape)) {
-        inside = p.x >= b->minimum.x && p.x <= b->maximum.x && p.y >= b->minimum.y &&
-                 p.y <= b->maximum.y && p.z >= b->minimum.z && p.z <= b->maximum.z;
-    } else if (const auto* c = std::get_if<CylinderShape>(&shape)) {
-        const Vec3 axis = c->cap - c->base, q = p - c->base;
-        const double s = dot(q, axis) / dot(axis, axis);
-        const Vec3 radial = q - s * axis;
-        inside = s >= 0 && s <= 1 && dot(radial, radial) < c->radius * c->radius;
-    } else if (const auto* c = std::get_if<ConeShape>(&shape)) {
-        const Vec3 axis = c->cap - c->base, q = p - c->base;
-        const double s = dot(q, axis) / dot(axis, axis);
-        const double r = c->base_radius + s * (c->cap_radius - c->base_radius);
-        const Vec3 radial = q - s * axis;
-        inside = s >= 0 && s <= 1 && dot(radial, radial) < r * r;
-    } else if (const auto* t = std::get_if<TorusShape>(&shape)) {
-        const double ring = std::hypot(p.x, p.z) - t->major_radius;
-        inside = ring * ring + p.y * p.y < t->minor_radius * t->minor_radius;
-    } else if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
-        inside = dot(plane->normal, p) < plane->distance;
-    } else if (const auto* disc = std::get_if<DiscShape>(&shape)) {
-        inside =
-            dot(disc->normal, p - disc->centre) < 0;  // its plane's inside, whatever the radius
-    } else if (const auto* q = std::get_if<QuadricShape>(&shape)) {
-        const double value = q->squares.x * p.x * p.x + q->squares.y * p.y * p.y +
-                             q->squares.z * p.z * p.z + q->mixed.x * p.x * p.y +
-                             q->mixed.y * p.x * p.z + q->mixed.z * p.y * p.z + dot(q->linear, p) +
-                             q->constant;
-        inside = value < 0;
-    } else if (const auto* poly = std::get_if<PolynomialShape>(&shape)) {
-        inside = polynomial_value(*poly, p) < 0;
-    } else if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
-        // POV-Ray counts the crossings of a ray along inside_vector: odd is inside.
-        if (!mesh->mesh->has_inside_vector) return false;
-        std::vector<Hit> hits;
-        mesh_hits(*mesh->mesh, p, mesh->mesh->inside_vector, hits);
-        inside = hits.size() % 2 == 1;
-    } else {
-        return false;
-    }
-    return true;
-}
-
 // Whether `p` (in the coordinates of the node's parent) is inside the node; false when that
 // cannot be answered here.
 bool node_inside(const ObjectNode& node, Vec3 p, bool& inside) {
@@ -554,206 +459,13 @@ bool node_inside(const ObjectNode& node, Vec3 p, bool& inside) {
 
 // ---------------------------------------------------------------- ray hits
 
-// The real roots of c[0] + c[1] t + ... + c[n] t^n in [lo, hi]: each monotone piece between the
-// roots of the derivative is bisected.
-std::vector<double> roots_between(std::vector<double> c, double lo, double hi) {
-    while (c.size() > 1 && c.back() == 0) c.pop_back();
-    std::vector<double> roots;
-    if (c.size() < 2) return roots;
-    auto value = [&](double t) {
-        double v = 0;
-        for (size_t i = c.size(); i-- > 0;) v = v * t + c[i];
-        return v;
-    };
-    std::vector<double> derivative;
-    for (size_t i = 1; i < c.size(); ++i) derivative.push_back(double(i) * c[i]);
-    std::vector<double> ends{lo};
-    for (double t : roots_between(derivative, lo, hi)) ends.push_back(t);
-    ends.push_back(hi);
-    for (size_t k = 0; k + 1 < ends.size(); ++k) {
-        double a = ends[k], b = ends[k + 1];
-        double fa = value(a), fb = value(b);
-        if (fa == 0) {
-            if (roots.empty() || roots.back() != a) roots.push_back(a);
-            continue;
-        }
-        if ((fa < 0) == (fb < 0)) continue;
-        for (int iteration = 0; iteration < 200 && b - a > 1e-15 * std::max(1.0, std::abs(a));
-             ++iteration) {
-            const double m = 0.5 * (a + b), fm = value(m);
-            if ((fm < 0) == (fa < 0))
-                a = m, fa = fm;
-            else
-                b = m;
-        }
-        roots.push_back(0.5 * (a + b));
-    }
-    return roots;
-}
-
-// The roots of a t^2 + b t + c.
-std::vector<double> quadratic_roots(double a, double b, double c) {
-    if (a == 0) return b == 0 ? std::vector<double>{} : std::vector<double>{-c / b};
-    const double disc = b * b - 4 * a * c;
-    if (disc < 0) return {};
-    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-    std::vector<double> roots{q / a};
-    if (q != 0) roots.push_back(c / q);
-    std::sort(roots.begin(), roots.end());
-    return roots;
-}
-
-// A triangle's hit by Moller-Trumbore; its normal is POV-Ray's, (c - a) x (b - a).
-void triangle_hit(Vec3 a, Vec3 b, Vec3 c, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
-    const Vec3 e1 = b - a, e2 = c - a, pv = cross(d, e2);
-    const double det = dot(e1, pv);
-    if (det == 0) return;
-    const Vec3 tv = o - a;
-    const double u = dot(tv, pv) / det;
-    if (u < 0 || u > 1) return;
-    const Vec3 qv = cross(tv, e1);
-    const double v = dot(d, qv) / det;
-    if (v < 0 || u + v > 1) return;
-    hits.push_back({dot(e2, qv) / det, cross(e2, e1)});
-}
-
-void mesh_hits(const TriangleMesh& mesh, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
-    std::vector<Hit> all;
-    for (const auto& f : mesh.faces)
-        triangle_hit(mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]], o, d, all);
-    for (const Hit& hit : all)
-        if (hit.t > 0) hits.push_back(hit);
-}
-
-void plane_hit(Vec3 n, double distance, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
-    const double along = dot(n, d);
-    if (along != 0) hits.push_back({(distance - dot(n, o)) / along, n});
-}
-
-void box_hits(const BoxShape& box, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
-    const double lo[3] = {box.minimum.x, box.minimum.y, box.minimum.z};
-    const double hi[3] = {box.maximum.x, box.maximum.y, box.maximum.z};
-    const double origin[3] = {o.x, o.y, o.z}, dir[3] = {d.x, d.y, d.z};
-    for (int axis = 0; axis < 3; ++axis) {
-        if (dir[axis] == 0) continue;
-        for (int side = 0; side < 2; ++side) {
-            const double t = ((side ? hi : lo)[axis] - origin[axis]) / dir[axis];
-            const Vec3 p = o + t * d;
-            const double q[3] = {p.x, p.y, p.z};
-            bool on_face = true;
-            for (int other = 0; other < 3; ++other)
-                if (other != axis && (q[other] < lo[other] || q[other] > hi[other]))
-                    on_face = false;
-            if (!on_face) continue;
-            Vec3 n;
-            (axis == 0 ? n.x : axis == 1 ? n.y : n.z) = side ? 1 : -1;
-            hits.push_back({t, n});
-        }
-    }
-}
-
-// A cylinder (equal radii) or cone about base -> cap, with its caps unless open.
-void cone_hits(Vec3 base, Vec3 cap, double r0, double r1, bool open, Vec3 o, Vec3 d,
-               std::vector<Hit>& hits) {
-    const Vec3 axis = cap - base;
-    const double len = length(axis);
-    const Vec3 u = (1 / len) * axis;
-    const double slope = (r1 - r0) / len;
-    const Vec3 w = o - base;
-    const double wu = dot(w, u), du = dot(d, u);
-    const Vec3 wr = w - wu * u, dr = d - du * u;
-    const double rw = r0 + slope * wu;
-    for (double t : quadratic_roots(dot(dr, dr) - slope * slope * du * du,
-                                    2 * (dot(wr, dr) - slope * rw * du), dot(wr, wr) - rw * rw)) {
-        const double s = wu + t * du;
-        if (s < 0 || s > len) continue;
-        const Vec3 radial = wr + t * dr;
-        const double rl = length(radial);
-        if (rl == 0) continue;
-        hits.push_back({t, (1 / rl) * radial - slope * u});
-    }
-    if (open || du == 0) return;
-    for (int end = 0; end < 2; ++end) {
-        const double t = ((end ? len : 0) - wu) / du, r = end ? r1 : r0;
-        const Vec3 radial = wr + t * dr;
-        if (dot(radial, radial) <= r * r) hits.push_back({t, end ? u : -u});
-    }
-}
-
-void torus_hits(const TorusShape& torus, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
-    const double big = torus.major_radius * torus.major_radius,
-                 small = torus.minor_radius * torus.minor_radius;
-    const double outer = std::abs(torus.major_radius) + std::abs(torus.minor_radius);
-    const std::vector<double> span =
-        quadratic_roots(dot(d, d), 2 * dot(o, d), dot(o, o) - outer * outer);
-    if (span.size() < 2) return;
-    // (|p|^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + z^2) along p = o + t d.
-    const double a = dot(d, d), b = 2 * dot(o, d), c = dot(o, o) + big - small;
-    const double dxz = d.x * d.x + d.z * d.z, odxz = o.x * d.x + o.z * d.z,
-                 oxz = o.x * o.x + o.z * o.z;
-    const std::vector<double> coefficients{c * c - 4 * big * oxz, 2 * b * c - 8 * big * odxz,
-                                           b * b + 2 * a * c - 4 * big * dxz, 2 * a * b, a * a};
-    const double margin = 1e-9 * (span[1] - span[0]);
-    for (double t : roots_between(coefficients, span[0] - margin, span[1] + margin)) {
-        const Vec3 p = o + t * d;
-        const double ring = std::hypot(p.x, p.z);
-        const Vec3 centre =
-            ring > 0 ? Vec3{torus.major_radius * p.x / ring, 0, torus.major_radius * p.z / ring}
-                     : Vec3{};
-        hits.push_back({t, p - centre});
-    }
-}
-
-void disc_hit(const DiscShape& disc, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
-    const double along = dot(disc.normal, d);
-    if (along == 0) return;
-    const double t = dot(disc.normal, disc.centre - o) / along;
-    const Vec3 q = o + t * d - disc.centre;
-    const double r2 = dot(q, q);
-    if (r2 <= disc.radius * disc.radius && r2 >= disc.hole_radius * disc.hole_radius)
-        hits.push_back({t, disc.normal});
-}
-
-bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
-    if (const auto* s = std::get_if<SphereShape>(&shape)) {
-        const Vec3 w = o - s->centre;
-        for (double t :
-             quadratic_roots(dot(d, d), 2 * dot(w, d), dot(w, w) - s->radius * s->radius))
-            hits.push_back({t, w + t * d});
-    } else if (const auto* b = std::get_if<BoxShape>(&shape)) {
-        box_hits(*b, o, d, hits);
-    } else if (const auto* c = std::get_if<CylinderShape>(&shape)) {
-        cone_hits(c->base, c->cap, c->radius, c->radius, c->open, o, d, hits);
-    } else if (const auto* c = std::get_if<ConeShape>(&shape)) {
-        cone_hits(c->base, c->cap, c->base_radius, c->cap_radius, c->open, o, d, hits);
-    } else if (const auto* t = std::get_if<TorusShape>(&shape)) {
-        torus_hits(*t, o, d, hits);
-    } else if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
-        plane_hit(plane->normal, plane->distance, o, d, hits);
-    } else if (const auto* disc = std::get_if<DiscShape>(&shape)) {
-        disc_hit(*disc, o, d, hits);
-    } else if (const auto* t = std::get_if<TriangleShape>(&shape)) {
-        triangle_hit(t->a, t->b, t->c, o, d, hits);
-    } else if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
-        if (!mesh->mesh->normals.empty()) return false;  // smooth triangles' normals: not here
-        std::vector<Hit> all;
-        for (const auto& f : mesh->mesh->faces)
-            triangle_hit(mesh->mesh->vertices[f[0]], mesh->mesh->vertices[f[1]],
-                         mesh->mesh->vertices[f[2]], o, d, all);
-        hits.insert(hits.end(), all.begin(), all.end());
-    } else {
-        return false;
-    }
-    return true;
-}
-
 // Every hit of the ray o + t d (the node's parent's coordinates) with the node's surface as
 // CSG keeps it, normals in the parent's coordinates; false when that cannot be answered here.
-bool node_hits(const ObjectNode& node, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
+bool node_hits(const ObjectNode& node, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
     Matrix4 to_local;
     if (!inverse_of(node.transform, to_local)) return false;
     const Vec3 lo = to_local.point(o), ld = to_local.vector(d);
-    std::vector<Hit> local;
+    std::vector<ShapeHit> local;
     if (node.kind == ObjectNode::Kind::light || node.kind == ObjectNode::Kind::light_group)
         return false;
     if (node.kind == ObjectNode::Kind::shape) {
@@ -761,10 +473,10 @@ bool node_hits(const ObjectNode& node, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
     } else {
         const auto operation = std::get<CsgShape>(node.shape).operation;
         for (size_t i = 0; i < node.children.size(); ++i) {
-            std::vector<Hit> child_hits;
+            std::vector<ShapeHit> child_hits;
             if (!node_hits(*node.children[i], lo, ld, child_hits)) return false;
             const bool subtracted = operation == CsgShape::Operation::difference && i > 0;
-            for (Hit& hit : child_hits) {
+            for (ShapeHit& hit : child_hits) {
                 const Vec3 p = lo + hit.t * ld;
                 bool keep = true;
                 for (size_t j = 0; j < node.children.size() && keep; ++j) {
@@ -784,7 +496,7 @@ bool node_hits(const ObjectNode& node, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
             }
         }
     }
-    for (Hit& hit : local) {
+    for (ShapeHit& hit : local) {
         if (node.inverse) hit.normal = -hit.normal;
         hit.normal = normal_through(to_local, hit.normal);
         bool keep = true;
@@ -810,12 +522,12 @@ bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& h
     const double len = length(direction);
     if (!(len > 0)) return true;
     const Vec3 d = (1 / len) * direction;
-    std::vector<Hit> hits;
+    std::vector<ShapeHit> hits;
     if (!node_hits(object, origin, d, hits)) return false;
     constexpr double kMinimumDistance =
         1e-6;  // a hit closer than this to the origin is the origin's own surface
-    const Hit* nearest = nullptr;
-    for (const Hit& h : hits)
+    const ShapeHit* nearest = nullptr;
+    for (const ShapeHit& h : hits)
         if (h.t > kMinimumDistance && (!nearest || h.t < nearest->t)) nearest = &h;
     if (!nearest) return true;
     found = true;
