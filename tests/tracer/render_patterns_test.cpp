@@ -61,10 +61,11 @@ TEST(RenderPatterns, SkyAgreesWithPovRayPixelForPixel) {
 // `camera` (its camera statement when empty), against POV-Ray's render written with that file
 // gamma: POV-Ray shows a flat colour unchanged, and here it is decoded to c^gamma of radiance,
 // so c^(1/gamma) must give it back.
-void expect_patterns_agree(double assumed_gamma, const std::string& camera = "") {
+void expect_flat_colours_agree(const std::string& scene_name, double assumed_gamma,
+                               const std::string& camera = "") {
     const int width = 240, height = 180;
     test::ScratchDir dir;
-    std::string text = test::read_file(kScenes + "patterns.pov");
+    std::string text = test::read_file(kScenes + scene_name);
     const std::string linear = "assumed_gamma 1.0";
     text.replace(text.find(linear), linear.size(),
                  "assumed_gamma " + std::to_string(assumed_gamma));
@@ -72,7 +73,7 @@ void expect_patterns_agree(double assumed_gamma, const std::string& camera = "")
         const size_t start = text.find("camera {");
         text.replace(start, text.find('\n', start) - start, camera);
     }
-    const std::string scene_file = dir.file("patterns.pov");
+    const std::string scene_file = dir.file(scene_name);
     test::write_file(scene_file, text);
     std::vector<uint8_t> reference;
     std::string message;
@@ -95,23 +96,33 @@ void expect_patterns_agree(double assumed_gamma, const std::string& camera = "")
         patterned += hits[i].object >= 0;
     }
     const double fraction = double(agree) / double(hits.size());
-    std::printf("assumed_gamma %g, %s: pattern colours agree on %d of %zu pixels (%.4f)\n",
-                assumed_gamma, camera.empty() ? "its camera" : camera.c_str(), agree, hits.size(),
-                fraction);
+    std::printf("%s, assumed_gamma %g, %s: colours agree on %d of %zu pixels (%.4f)\n",
+                scene_name.c_str(), assumed_gamma, camera.empty() ? "its camera" : camera.c_str(),
+                agree, hits.size(), fraction);
     EXPECT_GT(patterned, width * height * 9 / 10);
     EXPECT_GE(fraction, 0.98);
 }
 
-TEST(RenderPatterns, AgreeWithPovRayPixelForPixel) { expect_patterns_agree(1.0); }
+TEST(RenderPatterns, AgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("patterns.pov", 1.0);
+}
 
-TEST(RenderPatterns, AgreeWithPovRayUnderAnotherAssumedGamma) { expect_patterns_agree(2.2); }
+TEST(RenderPatterns, AgreeWithPovRayUnderAnotherAssumedGamma) {
+    expect_flat_colours_agree("patterns.pov", 2.2);
+}
+
+// Cylinders and cones (closed, open, tilted, to a point), a disc with a hole and tori (one
+// scaled unevenly and turned), patterned: silhouettes and hit points both.
+TEST(RenderShapes, AgreeWithPovRayPixelForPixel) { expect_flat_colours_agree("shapes.pov", 1.0); }
 
 // The orthographic camera, sized by its angle at the look_at distance and by right and up.
 TEST(RenderPatterns, AgreeWithPovRayThroughAnOrthographicCamera) {
-    expect_patterns_agree(
-        1.0, "camera { orthographic location <0, 12, -4> look_at <0, 0, 0.5> angle 60 }");
-    expect_patterns_agree(
-        1.0, "camera { orthographic location <3, 9, -6> look_at <0, 0, 0> right 16*x up 12*y }");
+    expect_flat_colours_agree(
+        "patterns.pov", 1.0,
+        "camera { orthographic location <0, 12, -4> look_at <0, 0, 0.5> angle 60 }");
+    expect_flat_colours_agree(
+        "patterns.pov", 1.0,
+        "camera { orthographic location <3, 9, -6> look_at <0, 0, 0> right 16*x up 12*y }");
 }
 
 // The colour moves with the object: a checker on a box translated by one square shows the

@@ -69,6 +69,44 @@ TEST(RenderScene, RotatedBoxHasOutwardNormals) {
     }
 }
 
+// Cylinder, cone, disc and torus against their closed forms: distances and outward normals,
+// through transforms, caps and holes.
+TEST(RenderScene, AnalyticShapesHitWhereTheClosedFormsSay) {
+    const Scene cylinder("cylinder { <0, 0, 0>, <0, 2, 0>, 1 translate 10*z }");
+    SurfaceHit h = cylinder.hit({-5, 1, 10}, {1, 0, 0});  // the side
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 4, 1e-5);
+    EXPECT_NEAR(h.normal.x, -1, 1e-6);
+    h = cylinder.hit({0.5, 5, 10}, {0, -1, 0});  // the top cap
+    EXPECT_NEAR(h.t, 3, 1e-5);
+    EXPECT_NEAR(h.normal.y, 1, 1e-6);
+    const Scene open("cylinder { <0, 0, 0>, <0, 2, 0>, 1 open }");
+    EXPECT_EQ(open.hit({0.5, 5, 0}, {0, -1, 0}).object, -1);  // no caps: down the inside, nothing
+    // A cone from radius 2 at y = 0 to 0 at y = 2: at height 1 its radius is 1, its outward
+    // normal leans up by 45 degrees.
+    const Scene cone("cone { 0, 2, 2*y, 0 }");
+    h = cone.hit({-5, 1, 0}, {1, 0, 0});
+    EXPECT_NEAR(h.t, 4, 1e-5);
+    EXPECT_NEAR(h.normal.x, -std::sqrt(0.5), 1e-6);
+    EXPECT_NEAR(h.normal.y, std::sqrt(0.5), 1e-6);
+    // A disc of radius 2 with a hole of radius 1, facing +z after a scale of 3 along z.
+    const Scene disc("disc { 0, z, 2, 1 scale <1, 1, 3> translate 4*z }");
+    EXPECT_EQ(disc.hit({0.5, 0, 0}, {0, 0, 1}).object, -1);  // the hole
+    h = disc.hit({1.5, 0, 0}, {0, 0, 1});
+    EXPECT_NEAR(h.t, 4, 1e-5);
+    EXPECT_NEAR(std::abs(h.normal.z), 1, 1e-6);
+    // A torus (R 2, r 0.5) in the x-z plane, turned to stand in the x-y plane: a ray along z
+    // through (2, 0) meets the tube 0.5 before its middle; through the centre it meets nothing.
+    const Scene torus("torus { 2, 0.5 rotate 90*x translate 10*z }");
+    h = torus.hit({2, 0, 0}, {0, 0, 1});
+    EXPECT_NEAR(h.t, 9.5, 1e-5);
+    EXPECT_NEAR(h.normal.z, -1, 1e-6);
+    EXPECT_EQ(torus.hit({0, 0, 0}, {0, 0, 1}).object, -1);
+    h = torus.hit({-5, 0, 10}, {1, 0, 0});  // along the x axis: the outer rim at x = -2.5
+    EXPECT_NEAR(h.t, 2.5, 1e-5);
+    EXPECT_NEAR(h.normal.x, -1, 1e-6);
+}
+
 TEST(RenderScene, PlaneIsInfiniteUserGeometry) {
     const Scene s("plane { <0, 1, 1>, 2 }  sphere { <0,0,0>, 0.001 translate <1000,1000,1000> }");
     // Points with dot(n, p) = 2 with n = (0, 1, 1)/sqrt 2.
@@ -215,7 +253,8 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
     auto refused = [](const std::string& feature, const std::string& at) {
         return "not supported: " + feature + " at test.pov:" + at;
     };
-    EXPECT_EQ(render_error("sphere { 0, 1 }\n  cylinder { 0, y, 1 }"), refused("cylinder", "2:3"));
+    EXPECT_EQ(render_error("sphere { 0, 1 }\n  superellipsoid { <1, 1> }"),
+              refused("superellipsoid", "2:3"));
     EXPECT_EQ(render_error("difference { box { -1, 1 } sphere { 0, 2 } }"),
               refused("difference", "1:1"));
     EXPECT_EQ(render_error("union { sphere { 0, 1 } sphere { x, 1 } inverse }"),

@@ -111,7 +111,7 @@ RenderScene::RenderScene(const SceneDescription& scene)
     if (!device_) throw Error("cannot create the Embree device");
     scene_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-    tables_ = build_geometry(device_, scene_, scene);
+    tables_ = build_geometry(device_, scene_, description_);
     rtcCommitScene(scene_);
     check_device(device_, "building the scene");
     epsilon_ = 1e-5 * tables_->extent;

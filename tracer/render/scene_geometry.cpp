@@ -1,6 +1,6 @@
 // SceneDescription objects -> Embree geometry: triangles and boxes as world-space triangles,
 // meshes as instances of one prototype per mesh (every `object { M }` of a mesh shares it),
-// spheres and planes as user geometry (quadric_geometry.cpp).
+// spheres, planes, cylinders, cones, tori and discs as user geometry (user_geometry.cpp).
 #include "tracer/render/scene_geometry.h"
 
 #include <algorithm>
@@ -19,10 +19,10 @@ namespace rayset::tracer {
 namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
-// other than sphere, box, plane, triangle and mesh, CSG kept whole, and the modifiers that
-// change what is seen. Photon and radiosity hints (photons { }, radiosity { importance }),
-// hierarchy, sturm and hollow have nothing to change in a path tracer, which computes all
-// light transport; they pass.
+// other than sphere, box, plane, triangle, mesh, cylinder, cone, torus and disc, CSG kept whole,
+// and the modifiers that change what is seen. Photon and radiosity hints (photons { }, radiosity {
+// importance }), hierarchy, sturm and hollow have nothing to change in a path tracer, which
+// computes all light transport; they pass.
 void refuse_unrendered(const ObjectInstance& o) {
     const std::string where = o.location.str();
     auto refuse = [&](const std::string& feature) {
@@ -32,7 +32,9 @@ void refuse_unrendered(const ObjectInstance& o) {
     const bool rendered_shape =
         std::holds_alternative<SphereShape>(s) || std::holds_alternative<BoxShape>(s) ||
         std::holds_alternative<PlaneShape>(s) || std::holds_alternative<TriangleShape>(s) ||
-        std::holds_alternative<MeshShape>(s) || std::holds_alternative<MeshFileShape>(s);
+        std::holds_alternative<MeshShape>(s) || std::holds_alternative<MeshFileShape>(s) ||
+        std::holds_alternative<CylinderShape>(s) || std::holds_alternative<ConeShape>(s) ||
+        std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
     if (const auto* sphere = std::get_if<SphereShape>(&o.shape); sphere && !(sphere->radius > 0))
         refuse(fmt::format("sphere of radius {} (only positive radii)", sphere->radius));
@@ -75,6 +77,30 @@ void skip_filter(const RTCFilterFunctionNArguments* args) {
 Vec3 unit_or_up(Vec3 v) {
     const double l = length(v);
     return l > 0 ? (1 / l) * v : Vec3{0, 1, 0};
+}
+
+// A box that holds a cylinder, cone, torus or disc in its own coordinates; false for the other
+// shapes.
+bool own_box(const Shape& shape, Vec3& lower, Vec3& upper) {
+    auto around = [&](Vec3 a, Vec3 b, double r) {
+        r = std::abs(r);
+        lower = {std::min(a.x, b.x) - r, std::min(a.y, b.y) - r, std::min(a.z, b.z) - r};
+        upper = {std::max(a.x, b.x) + r, std::max(a.y, b.y) + r, std::max(a.z, b.z) + r};
+    };
+    if (const auto* c = std::get_if<CylinderShape>(&shape)) {
+        around(c->base, c->cap, c->radius);
+    } else if (const auto* c = std::get_if<ConeShape>(&shape)) {
+        around(c->base, c->cap, std::max(std::abs(c->base_radius), std::abs(c->cap_radius)));
+    } else if (const auto* d = std::get_if<DiscShape>(&shape)) {
+        around(d->centre, d->centre, d->radius);
+    } else if (const auto* t = std::get_if<TorusShape>(&shape)) {
+        const double outer = std::abs(t->major_radius) + std::abs(t->minor_radius);
+        const double r = std::abs(t->minor_radius);
+        lower = {-outer, -r, -outer}, upper = {outer, r, outer};
+    } else {
+        return false;
+    }
+    return true;
 }
 
 struct Box3 {
@@ -129,20 +155,20 @@ public:
             tables_->object_flags.push_back(flags_of(o));
         LeafTable& plain = new_leaf();
         LeafTable& flagged = new_leaf();
-        LeafTable& quadrics = new_leaf();
+        LeafTable& user = new_leaf();
         TriangleSoup plain_soup, flagged_soup;
         for (int k = 0; k < int(description_.objects.size()); ++k) {
             const ObjectInstance& o = description_.objects[k];
             const bool is_flagged = tables_->object_flags[k] != 0;
             add_object(k, o, is_flagged ? flagged : plain, is_flagged ? flagged_soup : plain_soup,
-                       quadrics);
+                       user);
         }
         const double extent = std::max({bounds_.hi.x - bounds_.lo.x, bounds_.hi.y - bounds_.lo.y,
                                         bounds_.hi.z - bounds_.lo.z, 0.0});
         tables_->extent = extent > 0 && std::isfinite(extent) ? extent : 1;
         attach_triangles(plain, plain_soup, false);
         attach_triangles(flagged, flagged_soup, true);
-        if (!quadrics.quadrics.empty()) {
+        if (!user.user_prims.empty()) {
             // Planes reach 10^5 times beyond everything placed in the scene.
             Box3 placed = bounds_;
             placed.add(description_.camera.location);
@@ -152,9 +178,9 @@ public:
             const double reach =
                 std::max({std::abs(placed.lo.x), std::abs(placed.lo.y), std::abs(placed.lo.z),
                           std::abs(placed.hi.x), std::abs(placed.hi.y), std::abs(placed.hi.z)});
-            quadrics.plane_extent =
+            user.plane_extent =
                 float(1e5 * std::max(tables_->extent, std::isfinite(reach) ? reach : 1.0));
-            add_quadric_geometry(device_, scene_, *tables_, quadrics);
+            add_user_geometry(device_, scene_, *tables_, user);
         }
         attach_instances();
         return std::move(tables_);
@@ -197,26 +223,31 @@ private:
     }
 
     void add_object(int k, const ObjectInstance& o, LeafTable& leaf, TriangleSoup& soup,
-                    LeafTable& quadrics) {
+                    LeafTable& user) {
         const Matrix4& m = o.object_to_world;
         const Matrix4 inverse = m.inverse();
+        Vec3 lower, upper;
         if (const auto* sphere = std::get_if<SphereShape>(&o.shape)) {
-            QuadricPrim prim;
+            UserPrim prim;
             prim.object = k;
             const Matrix4 unit_to_world = m * translation(sphere->centre) *
                                           scaling({sphere->radius, sphere->radius, sphere->radius});
-            prim.world_to_unit = unit_to_world.inverse();
-            for (int i = 0; i < 8; ++i)
-                bounds_.add(
-                    unit_to_world.point({i & 1 ? 1. : -1., i & 2 ? 1. : -1., i & 4 ? 1. : -1.}));
-            quadrics.quadrics.push_back(prim);
+            prim.world_to_local = unit_to_world.inverse();
+            add_user_prim(prim, unit_to_world, {-1, -1, -1}, {1, 1, 1}, user);
         } else if (const auto* plane = std::get_if<PlaneShape>(&o.shape)) {
-            QuadricPrim prim;
-            prim.sphere = false;
+            UserPrim prim;
+            prim.kind = UserPrim::Kind::plane;
             prim.object = k;
             prim.normal = normalized(m.normal(plane->normal));
             prim.distance = dot(prim.normal, m.point(plane->distance * plane->normal));
-            quadrics.quadrics.push_back(prim);
+            user.user_prims.push_back(prim);
+        } else if (own_box(o.shape, lower, upper)) {
+            UserPrim prim;
+            prim.kind = UserPrim::Kind::shape;
+            prim.object = k;
+            prim.shape = &o.shape;
+            prim.world_to_local = inverse;
+            add_user_prim(prim, m, lower, upper, user);
         } else if (const auto* triangle = std::get_if<TriangleShape>(&o.shape)) {
             add_triangle(k, m, inverse, triangle->a, triangle->b, triangle->c, leaf, soup);
         } else if (const auto* box = std::get_if<BoxShape>(&o.shape)) {
@@ -228,6 +259,18 @@ private:
             if (!cached) cached = load_mesh_file(*file, o.location.str());
             add_instance(k, cached, m, inverse);
         }
+    }
+
+    // A bounded user primitive whose own coordinates hold it in the box lower..upper.
+    void add_user_prim(UserPrim prim, const Matrix4& local_to_world, Vec3 lower, Vec3 upper,
+                       LeafTable& user) {
+        Box3 box;
+        for (int i = 0; i < 8; ++i)
+            box.add(local_to_world.point(
+                {i & 1 ? upper.x : lower.x, i & 2 ? upper.y : lower.y, i & 4 ? upper.z : lower.z}));
+        prim.lower = box.lo, prim.upper = box.hi;
+        bounds_.add(box.lo), bounds_.add(box.hi);
+        user.user_prims.push_back(prim);
     }
 
     void add_instance(int object, const std::shared_ptr<const TriangleMesh>& mesh, const Matrix4& m,
@@ -343,22 +386,28 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
         return;
     }
     const LeafTable& leaf = *tables.leaf_of_geometry[h.geomID];
-    if (leaf.quadrics.empty()) {
+    if (leaf.user_prims.empty()) {
         hit.object = leaf.prim_object[h.primID];
         hit.normal = hit.shading_normal = leaf.prim_normal[h.primID];
         return;
     }
-    const QuadricPrim& prim = leaf.quadrics[h.primID];
+    const UserPrim& prim = leaf.user_prims[h.primID];
     hit.object = prim.object;
-    // Embree hands t back in float: at a distance t the point may miss the plane by t x 6e-8,
-    // more than the offset of a scene whose only geometry is an infinite plane (extent 1), and
-    // its shadow rays would then start behind the plane. Put the point back on the plane.
-    if (!prim.sphere)
-        hit.point = hit.point - (dot(prim.normal, hit.point) - prim.distance) * prim.normal;
-    hit.normal =
-        prim.sphere
-            ? unit_or_up(transpose_times(prim.world_to_unit, prim.world_to_unit.point(hit.point)))
-            : prim.normal;
+    switch (prim.kind) {
+        case UserPrim::Kind::plane:
+            // Embree hands t back in float: at a distance t the point may miss the plane by
+            // t x 6e-8, more than the offset of a scene whose only geometry is an infinite plane
+            // (extent 1), and its shadow rays would then start behind the plane. Put the point
+            // back on the plane.
+            hit.point = hit.point - (dot(prim.normal, hit.point) - prim.distance) * prim.normal;
+            hit.normal = prim.normal;
+            break;
+        case UserPrim::Kind::sphere:
+            hit.normal = unit_or_up(
+                transpose_times(prim.world_to_local, prim.world_to_local.point(hit.point)));
+            break;
+        case UserPrim::Kind::shape: hit.normal = unit_or_up({h.Ng_x, h.Ng_y, h.Ng_z}); break;
+    }
     hit.shading_normal = hit.normal;
 }
 

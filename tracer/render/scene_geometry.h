@@ -21,24 +21,31 @@ struct TraceContext {
     uint8_t skip = 0;
 };
 
-struct QuadricPrim {
-    bool sphere = true;  // else a plane
+// A primitive intersected by the renderer's own code (user_geometry.cpp), in double precision.
+struct UserPrim {
+    enum class Kind : uint8_t {
+        sphere,  // world_to_local takes it to the unit sphere at the origin
+        plane,   // dot(normal, p) = distance, world
+        shape,   // a cylinder, cone, torus or disc through shape_geometry.h, in its own frame
+    } kind = Kind::sphere;
     int object = -1;
-    Matrix4 world_to_unit;  // sphere: world -> the unit sphere at the origin
-    Vec3 normal;            // plane: dot(normal, p) = distance, world
+    Matrix4 world_to_local;  // sphere, shape
+    Vec3 normal;             // plane
     double distance = 0;
+    const Shape* shape = nullptr;  // shape: the description's, in object coordinates
+    Vec3 lower, upper;             // sphere, shape: world bounds
 };
 
 struct GeometryTables;
 
-// One Embree leaf geometry: world triangles, a mesh prototype or the quadrics.
+// One Embree leaf geometry: world triangles, a mesh prototype or the user primitives.
 struct LeafTable {
     const GeometryTables* tables = nullptr;
     std::vector<int> prim_object;  // top-level triangles: object of each primitive
     std::vector<Vec3>
         prim_normal;  // triangles: unit normal (world, or object space for prototypes)
     std::shared_ptr<const TriangleMesh> mesh;  // prototypes: for interpolated normals
-    std::vector<QuadricPrim> quadrics;
+    std::vector<UserPrim> user_prims;
     float plane_extent = 1e6f;  // half-size of the box a plane's bounds span
 };
 
@@ -61,8 +68,7 @@ struct GeometryTables {
 // Fills `scene` with the description's objects; returns the tables hits are resolved with.
 std::unique_ptr<GeometryTables> build_geometry(RTCDevice device, RTCScene scene,
                                                const SceneDescription& description);
-void add_quadric_geometry(RTCDevice device, RTCScene scene, GeometryTables& tables,
-                          LeafTable& leaf);
+void add_user_geometry(RTCDevice device, RTCScene scene, GeometryTables& tables, LeafTable& leaf);
 // Fills the hit's object, normal and shading normal from an Embree hit (point and t set).
 void resolve_hit(const GeometryTables& tables, const RTCHit& embree_hit, SurfaceHit& hit);
 
