@@ -422,90 +422,33 @@ bool object_bounding_box(const ObjectNode& object, Vec3& minimum, Vec3& maximum)
     return true;
 }
 
-// ---------------------------------------------------------------- inside
+// ---------------------------------------------------------------- inside and trace
 
 namespace {
 
-// Whether `p` (in the coordinates of the node's parent) is inside the node; false when that
-// cannot be answered here.
-bool node_inside(const ObjectNode& node, Vec3 p, bool& inside) {
-    Matrix4 to_local;
-    if (!inverse_of(node.transform, to_local)) return false;
-    const Vec3 local = to_local.point(p);
+// The node, in the coordinates of its parent taken to the solid's frame by `parent_to_frame`,
+// added to `tree` as `index`; false for lights and for transforms that cannot be inverted.
+bool add_to_solid(const ObjectNode& node, const Matrix4& parent_to_frame, SolidTree& tree,
+                  int& index) {
     if (node.kind == ObjectNode::Kind::light || node.kind == ObjectNode::Kind::light_group)
         return false;
+    const Matrix4 to_frame = parent_to_frame * node.transform;
+    Matrix4 to_local;
+    if (!inverse_of(to_frame, to_local)) return false;
     if (node.kind == ObjectNode::Kind::shape) {
-        if (!shape_inside(node.shape, local, inside)) return false;
+        index = tree.add_shape(node.shape, to_local, node.inverse);
     } else {
-        const auto operation = std::get<CsgShape>(node.shape).operation;
-        const bool any =
-            operation == CsgShape::Operation::union_of || operation == CsgShape::Operation::merge;
-        inside = !any;
-        for (size_t i = 0; i < node.children.size(); ++i) {
-            bool in = false;
-            if (!node_inside(*node.children[i], local, in)) return false;
-            if (operation == CsgShape::Operation::difference && i > 0) in = !in;
-            inside = any ? inside || in : inside && in;
+        index = tree.add_csg(std::get<CsgShape>(node.shape).operation, node.inverse);
+        for (const ObjectRef& child : node.children) {
+            int c = 0;
+            if (!add_to_solid(*child, to_frame, tree, c)) return false;
+            tree.add_child(index, c);
         }
     }
-    if (node.inverse) inside = !inside;
     for (const ObjectRef& clip : node.clipped_by) {
-        bool in = false;
-        if (!node_inside(*clip, p, in)) return false;
-        inside = inside && in;
-    }
-    return true;
-}
-
-// ---------------------------------------------------------------- ray hits
-
-// Every hit of the ray o + t d (the node's parent's coordinates) with the node's surface as
-// CSG keeps it, normals in the parent's coordinates; false when that cannot be answered here.
-bool node_hits(const ObjectNode& node, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
-    Matrix4 to_local;
-    if (!inverse_of(node.transform, to_local)) return false;
-    const Vec3 lo = to_local.point(o), ld = to_local.vector(d);
-    std::vector<ShapeHit> local;
-    if (node.kind == ObjectNode::Kind::light || node.kind == ObjectNode::Kind::light_group)
-        return false;
-    if (node.kind == ObjectNode::Kind::shape) {
-        if (!shape_hits(node.shape, lo, ld, local)) return false;
-    } else {
-        const auto operation = std::get<CsgShape>(node.shape).operation;
-        for (size_t i = 0; i < node.children.size(); ++i) {
-            std::vector<ShapeHit> child_hits;
-            if (!node_hits(*node.children[i], lo, ld, child_hits)) return false;
-            const bool subtracted = operation == CsgShape::Operation::difference && i > 0;
-            for (ShapeHit& hit : child_hits) {
-                const Vec3 p = lo + hit.t * ld;
-                bool keep = true;
-                for (size_t j = 0; j < node.children.size() && keep; ++j) {
-                    if (j == i) continue;
-                    bool in = false;
-                    if (!node_inside(*node.children[j], p, in)) return false;
-                    switch (operation) {
-                        case CsgShape::Operation::union_of: break;
-                        case CsgShape::Operation::merge: keep = !in; break;
-                        case CsgShape::Operation::intersection: keep = in; break;
-                        case CsgShape::Operation::difference: keep = j == 0 ? in : !in; break;
-                    }
-                }
-                if (!keep) continue;
-                if (subtracted) hit.normal = -hit.normal;
-                local.push_back(hit);
-            }
-        }
-    }
-    for (ShapeHit& hit : local) {
-        if (node.inverse) hit.normal = -hit.normal;
-        hit.normal = normal_through(to_local, hit.normal);
-        bool keep = true;
-        for (const ObjectRef& clip : node.clipped_by) {
-            bool in = false;
-            if (!node_inside(*clip, o + hit.t * d, in)) return false;
-            keep = keep && in;
-        }
-        if (keep) hits.push_back(hit);
+        int k = 0;
+        if (!add_to_solid(*clip, parent_to_frame, tree, k)) return false;
+        tree.add_clip(index, k);
     }
     return true;
 }
@@ -513,7 +456,9 @@ bool node_hits(const ObjectNode& node, Vec3 o, Vec3 d, std::vector<ShapeHit>& hi
 }  // namespace
 
 bool object_inside(const ObjectNode& object, Vec3 point, bool& inside) {
-    return node_inside(object, point, inside);
+    SolidTree tree;
+    int root = 0;
+    return add_to_solid(object, Matrix4{}, tree, root) && tree.inside(point, inside);
 }
 
 bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& hit, Vec3& normal,
@@ -523,7 +468,9 @@ bool object_trace(const ObjectNode& object, Vec3 origin, Vec3 direction, Vec3& h
     if (!(len > 0)) return true;
     const Vec3 d = (1 / len) * direction;
     std::vector<ShapeHit> hits;
-    if (!node_hits(object, origin, d, hits)) return false;
+    SolidTree tree;
+    int root = 0;
+    if (!add_to_solid(object, Matrix4{}, tree, root) || !tree.hits(origin, d, hits)) return false;
     constexpr double kMinimumDistance =
         1e-6;  // a hit closer than this to the origin is the origin's own surface
     const ShapeHit* nearest = nullptr;

@@ -291,4 +291,118 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
     return true;
 }
 
+namespace {
+
+// A normal through the transpose of frame -> local: the inverse transpose of local -> frame.
+Vec3 normal_to_frame(const Matrix4& frame_to_local, Vec3 n) {
+    const Matrix4& m = frame_to_local;
+    return {m(0, 0) * n.x + m(1, 0) * n.y + m(2, 0) * n.z,
+            m(0, 1) * n.x + m(1, 1) * n.y + m(2, 1) * n.z,
+            m(0, 2) * n.x + m(1, 2) * n.y + m(2, 2) * n.z};
+}
+
+SolidTree::Kind kind_of(CsgShape::Operation operation) {
+    switch (operation) {
+        case CsgShape::Operation::union_of: return SolidTree::Kind::union_of;
+        case CsgShape::Operation::merge: return SolidTree::Kind::merge;
+        case CsgShape::Operation::intersection: return SolidTree::Kind::intersection;
+        case CsgShape::Operation::difference: break;
+    }
+    return SolidTree::Kind::difference;
+}
+
+}  // namespace
+
+int SolidTree::add_shape(const Shape& shape, const Matrix4& frame_to_local, bool inverse) {
+    Node node;
+    node.shape = &shape;
+    node.frame_to_local = frame_to_local;
+    node.inverse = inverse;
+    nodes_.push_back(std::move(node));
+    return int(nodes_.size()) - 1;
+}
+
+int SolidTree::add_csg(CsgShape::Operation operation, bool inverse) {
+    Node node;
+    node.kind = kind_of(operation);
+    node.inverse = inverse;
+    nodes_.push_back(std::move(node));
+    return int(nodes_.size()) - 1;
+}
+
+bool SolidTree::keeps(const Node& node, size_t from, Vec3 p, bool& keep) const {
+    keep = true;
+    for (size_t j = 0; j < node.children.size() && keep; ++j) {
+        if (j == from) continue;
+        bool in = false;
+        if (!inside_of(node.children[j], p, in)) return false;
+        switch (node.kind) {
+            case Kind::merge: keep = !in; break;
+            case Kind::intersection: keep = in; break;
+            case Kind::difference: keep = j == 0 ? in : !in; break;
+            case Kind::union_of:
+            case Kind::shape: break;
+        }
+    }
+    return true;
+}
+
+bool SolidTree::hits_of(int index, Vec3 o, Vec3 d, std::vector<ShapeHit>& out) const {
+    const Node& node = nodes_[size_t(index)];
+    std::vector<ShapeHit> found;
+    if (node.kind == Kind::shape) {
+        if (!shape_hits(*node.shape, node.frame_to_local.point(o), node.frame_to_local.vector(d),
+                        found))
+            return false;
+        for (ShapeHit& hit : found) hit.normal = normal_to_frame(node.frame_to_local, hit.normal);
+    } else {
+        for (size_t i = 0; i < node.children.size(); ++i) {
+            std::vector<ShapeHit> child_hits;
+            if (!hits_of(node.children[i], o, d, child_hits)) return false;
+            const bool subtracted = node.kind == Kind::difference && i > 0;
+            for (ShapeHit& hit : child_hits) {
+                bool keep = false;
+                if (!keeps(node, i, o + hit.t * d, keep)) return false;
+                if (!keep) continue;
+                if (subtracted) hit.normal = -hit.normal;
+                found.push_back(hit);
+            }
+        }
+    }
+    for (ShapeHit& hit : found) {
+        if (node.inverse) hit.normal = -hit.normal;
+        bool keep = true;
+        for (int clip : node.clips) {
+            bool in = false;
+            if (!inside_of(clip, o + hit.t * d, in)) return false;
+            keep = keep && in;
+        }
+        if (keep) out.push_back(hit);
+    }
+    return true;
+}
+
+bool SolidTree::inside_of(int index, Vec3 p, bool& in) const {
+    const Node& node = nodes_[size_t(index)];
+    if (node.kind == Kind::shape) {
+        if (!shape_inside(*node.shape, node.frame_to_local.point(p), in)) return false;
+    } else {
+        const bool any = node.kind == Kind::union_of || node.kind == Kind::merge;
+        in = !any;
+        for (size_t i = 0; i < node.children.size(); ++i) {
+            bool child = false;
+            if (!inside_of(node.children[i], p, child)) return false;
+            if (node.kind == Kind::difference && i > 0) child = !child;
+            in = any ? in || child : in && child;
+        }
+    }
+    if (node.inverse) in = !in;
+    for (int clip : node.clips) {
+        bool clip_in = false;
+        if (!inside_of(clip, p, clip_in)) return false;
+        in = in && clip_in;
+    }
+    return true;
+}
+
 }  // namespace rayset::tracer

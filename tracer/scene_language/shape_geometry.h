@@ -1,6 +1,7 @@
-// Exact geometry of the simple shapes in their own coordinates: the crossings of a line with
-// their surface and whether a point is inside. The parse-time trace and inside of the language
-// (object_geometry.cpp) and the renderer's analytic shapes use them.
+// Exact geometry of the simple shapes in their own coordinates, the crossings of a line with
+// their surface and whether a point is inside, and of CSG solids made of them (SolidTree). The
+// language's trace and inside (object_geometry.cpp) and the renderer's analytic shapes and CSG
+// use them.
 //
 // Covered: sphere, box, cylinder, cone, torus, plane, disc, triangle, mesh (inside with an
 // inside_vector; hits of flat triangles), quadric, polynomial (inside only) and linear prism
@@ -24,5 +25,42 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
 // Whether `p` is inside the shape (POV-Ray's inside: a plane's or disc's side against their
 // normal, a mesh by the parity of crossings along its inside_vector); false when not covered.
 bool shape_inside(const Shape& shape, Vec3 p, bool& inside);
+
+// A solid as CSG makes it from shapes: union, merge, intersection and difference (the second
+// and later children subtracted from the first), inverse and clipped_by, every node in one
+// frame (world coordinates for the renderer; a parse-time object's parent's coordinates).
+// Nodes are added parent first, so the root is node 0; a shape keeps a pointer to the Shape.
+class SolidTree {
+public:
+    enum class Kind { shape, union_of, merge, intersection, difference };
+
+    // A shape seen through `frame_to_local` (the inverse of its transform into the frame).
+    int add_shape(const Shape& shape, const Matrix4& frame_to_local, bool inverse);
+    int add_csg(CsgShape::Operation operation, bool inverse);
+    void add_child(int parent, int child) { nodes_[size_t(parent)].children.push_back(child); }
+    // `node` is cut to the inside of the solid rooted at `clip` (clipped_by).
+    void add_clip(int node, int clip) { nodes_[size_t(node)].clips.push_back(clip); }
+
+    // Every crossing of the line o + t d with the solid's surface as CSG keeps it (unsorted),
+    // normals outward in the frame, not normalised; false when a shape is not covered by
+    // shape_hits.
+    bool hits(Vec3 o, Vec3 d, std::vector<ShapeHit>& out) const { return hits_of(0, o, d, out); }
+    // Whether `p` is inside the solid; false when a shape is not covered by shape_inside.
+    bool inside(Vec3 p, bool& in) const { return inside_of(0, p, in); }
+
+private:
+    struct Node {
+        Kind kind = Kind::shape;
+        const Shape* shape = nullptr;
+        Matrix4 frame_to_local;
+        bool inverse = false;
+        std::vector<int> children, clips;
+    };
+    bool hits_of(int node, Vec3 o, Vec3 d, std::vector<ShapeHit>& out) const;
+    bool inside_of(int node, Vec3 p, bool& in) const;
+    // Whether a hit of child `from` at p is on the surface of the CSG `node`.
+    bool keeps(const Node& node, size_t from, Vec3 p, bool& keep) const;
+    std::vector<Node> nodes_;
+};
 
 }  // namespace rayset::tracer
