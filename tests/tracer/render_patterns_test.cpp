@@ -115,6 +115,10 @@ TEST(RenderPatterns, AgreeWithPovRayUnderAnotherAssumedGamma) {
 // scaled unevenly and turned), patterned: silhouettes and hit points both.
 TEST(RenderShapes, AgreeWithPovRayPixelForPixel) { expect_flat_colours_agree("shapes.pov", 1.0); }
 
+// Difference, intersection (with an inverted part; of six planes), merge, clipped_by (twice, a
+// sphere; a union), patterned and turned.
+TEST(RenderShapes, CsgAgreesWithPovRayPixelForPixel) { expect_flat_colours_agree("csg.pov", 1.0); }
+
 // The orthographic camera, sized by its angle at the look_at distance and by right and up.
 TEST(RenderPatterns, AgreeWithPovRayThroughAnOrthographicCamera) {
     expect_flat_colours_agree(

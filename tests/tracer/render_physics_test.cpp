@@ -57,6 +57,30 @@ TEST(RenderFurnace, EmittingWhiteSphereConvergesToGeometricSeries) {
     EXPECT_NEAR(mean, expected, kZ * se) << "standard error " << se;
 }
 
+TEST(RenderFurnace, CsgEnclosureWithAPatternKeepsTheBalance) {
+    // The same furnace made as CSG: a box with a ball cut out (its inner wall is the ball's
+    // surface, normals turned in), a checker whose two colours share the red channel: red sees
+    // L = Le / (1 - a) as above; the pattern and the subtracted part's normals must not change it.
+    const double albedo = 0.8, emitted = 0.5;
+    RenderSettings settings;
+    settings.width = 32, settings.height = 24, settings.passes = 64, settings.seed = 12;
+    const RenderResult r = render_text(R"(
+        camera { location <0,0,0> look_at <0,0,1> }
+        difference {
+            box { -120, 120 }
+            sphere { <0,0,0>, 100 }
+            pigment { checker rgb <1, 0.5, 0.2>, rgb <1, 0.2, 0.6> scale 20 }
+            finish { diffuse 0.8 emission 0.5 ambient 0 }
+        }
+    )",
+                                       settings);
+    double mean = 0, se = 0;
+    image_mean(r.film, mean, se);
+    const double expected = emitted / (1 - albedo);
+    EXPECT_LT(se, 0.01 * expected);
+    EXPECT_NEAR(mean, expected, kZ * se) << "standard error " << se;
+}
+
 TEST(RenderFurnace, PointLightInWhiteSphereMatchesClosedForm) {
     // A point light of intensity I at the centre of a sphere of radius R gives every wall point
     // E0 = I / R^2; each wall point also sees the whole sphere of radiance L, so

@@ -13,16 +13,17 @@
 
 #include "core/error.h"
 #include "tracer/render/mesh_loader.h"
+#include "tracer/render/solids.h"
 
 namespace rayset::tracer {
 
 namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
-// other than sphere, box, plane, triangle, mesh, cylinder, cone, torus and disc, CSG kept whole,
-// and the modifiers that change what is seen. Photon and radiosity hints (photons { }, radiosity {
-// importance }), hierarchy, sturm and hollow have nothing to change in a path tracer, which
-// computes all light transport; they pass.
+// other than sphere, box, plane, triangle, mesh, cylinder, cone, torus and disc (solids.h
+// refuses what it cannot take into CSG), and the modifiers that change what is seen. Photon and
+// radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
+// to change in a path tracer, which computes all light transport; they pass.
 void refuse_unrendered(const ObjectInstance& o) {
     const std::string where = o.location.str();
     auto refuse = [&](const std::string& feature) {
@@ -34,7 +35,8 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<PlaneShape>(s) || std::holds_alternative<TriangleShape>(s) ||
         std::holds_alternative<MeshShape>(s) || std::holds_alternative<MeshFileShape>(s) ||
         std::holds_alternative<CylinderShape>(s) || std::holds_alternative<ConeShape>(s) ||
-        std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s);
+        std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
+        std::holds_alternative<CsgShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
     if (const auto* sphere = std::get_if<SphereShape>(&o.shape); sphere && !(sphere->radius > 0))
         refuse(fmt::format("sphere of radius {} (only positive radii)", sphere->radius));
@@ -43,9 +45,7 @@ void refuse_unrendered(const ObjectInstance& o) {
         for (const auto& corners : mesh->mesh->normal_faces)
             if (corners[0] < 0) refuse("mesh mixing smooth and flat triangles");
     }
-    if (!o.clipped_by.empty()) refuse("clipped_by");
     if (!o.bounded_by.empty()) refuse("bounded_by");
-    if (o.inverse) refuse("inverse");
     if (o.double_illuminate) refuse("double_illuminate");
     if (o.no_radiosity) refuse("no_radiosity");
     if (o.uv_mapping) refuse("uv_mapping");
@@ -79,28 +79,10 @@ Vec3 unit_or_up(Vec3 v) {
     return l > 0 ? (1 / l) * v : Vec3{0, 1, 0};
 }
 
-// A box that holds a cylinder, cone, torus or disc in its own coordinates; false for the other
-// shapes.
-bool own_box(const Shape& shape, Vec3& lower, Vec3& upper) {
-    auto around = [&](Vec3 a, Vec3 b, double r) {
-        r = std::abs(r);
-        lower = {std::min(a.x, b.x) - r, std::min(a.y, b.y) - r, std::min(a.z, b.z) - r};
-        upper = {std::max(a.x, b.x) + r, std::max(a.y, b.y) + r, std::max(a.z, b.z) + r};
-    };
-    if (const auto* c = std::get_if<CylinderShape>(&shape)) {
-        around(c->base, c->cap, c->radius);
-    } else if (const auto* c = std::get_if<ConeShape>(&shape)) {
-        around(c->base, c->cap, std::max(std::abs(c->base_radius), std::abs(c->cap_radius)));
-    } else if (const auto* d = std::get_if<DiscShape>(&shape)) {
-        around(d->centre, d->centre, d->radius);
-    } else if (const auto* t = std::get_if<TorusShape>(&shape)) {
-        const double outer = std::abs(t->major_radius) + std::abs(t->minor_radius);
-        const double r = std::abs(t->minor_radius);
-        lower = {-outer, -r, -outer}, upper = {outer, r, outer};
-    } else {
-        return false;
-    }
-    return true;
+// The shapes intersected through the scene language's shape geometry (user_geometry.cpp).
+bool analytic(const Shape& s) {
+    return std::holds_alternative<CylinderShape>(s) || std::holds_alternative<ConeShape>(s) ||
+           std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s);
 }
 
 struct Box3 {
@@ -227,7 +209,9 @@ private:
         const Matrix4& m = o.object_to_world;
         const Matrix4 inverse = m.inverse();
         Vec3 lower, upper;
-        if (const auto* sphere = std::get_if<SphereShape>(&o.shape)) {
+        if (is_solid(o)) {
+            add_solid(k, o, user);
+        } else if (const auto* sphere = std::get_if<SphereShape>(&o.shape)) {
             UserPrim prim;
             prim.object = k;
             const Matrix4 unit_to_world = m * translation(sphere->centre) *
@@ -241,7 +225,7 @@ private:
             prim.normal = normalized(m.normal(plane->normal));
             prim.distance = dot(prim.normal, m.point(plane->distance * plane->normal));
             user.user_prims.push_back(prim);
-        } else if (own_box(o.shape, lower, upper)) {
+        } else if (analytic(o.shape) && local_box(o.shape, lower, upper)) {
             UserPrim prim;
             prim.kind = UserPrim::Kind::shape;
             prim.object = k;
@@ -259,6 +243,21 @@ private:
             if (!cached) cached = load_mesh_file(*file, o.location.str());
             add_instance(k, cached, m, inverse);
         }
+    }
+
+    void add_solid(int object, const ObjectInstance& o, LeafTable& user) {
+        Solid solid = solid_of(o);
+        tables_->solids.push_back(std::make_unique<SolidTree>(std::move(solid.tree)));
+        UserPrim prim;
+        prim.kind = UserPrim::Kind::solid;
+        prim.object = object;
+        prim.solid = tables_->solids.back().get();
+        prim.unbounded = !solid.bounded;
+        if (solid.bounded) {
+            prim.lower = solid.lower, prim.upper = solid.upper;
+            bounds_.add(solid.lower), bounds_.add(solid.upper);
+        }
+        user.user_prims.push_back(prim);
     }
 
     // A bounded user primitive whose own coordinates hold it in the box lower..upper.
@@ -406,7 +405,8 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
             hit.normal = unit_or_up(
                 transpose_times(prim.world_to_local, prim.world_to_local.point(hit.point)));
             break;
-        case UserPrim::Kind::shape: hit.normal = unit_or_up({h.Ng_x, h.Ng_y, h.Ng_z}); break;
+        case UserPrim::Kind::shape:
+        case UserPrim::Kind::solid: hit.normal = unit_or_up({h.Ng_x, h.Ng_y, h.Ng_z}); break;
     }
     hit.shading_normal = hit.normal;
 }

@@ -9,6 +9,7 @@
 #include <embree3/rtcore.h>
 
 #include "tracer/render/render_scene.h"
+#include "tracer/scene_language/shape_geometry.h"
 
 namespace rayset::tracer {
 
@@ -27,13 +28,16 @@ struct UserPrim {
         sphere,  // world_to_local takes it to the unit sphere at the origin
         plane,   // dot(normal, p) = distance, world
         shape,   // a cylinder, cone, torus or disc through shape_geometry.h, in its own frame
+        solid,   // CSG, clipped_by or inverse: a SolidTree in world coordinates (solids.h)
     } kind = Kind::sphere;
     int object = -1;
     Matrix4 world_to_local;  // sphere, shape
     Vec3 normal;             // plane
     double distance = 0;
-    const Shape* shape = nullptr;  // shape: the description's, in object coordinates
-    Vec3 lower, upper;             // sphere, shape: world bounds
+    const Shape* shape = nullptr;      // shape: the description's, in object coordinates
+    const SolidTree* solid = nullptr;  // solid
+    bool unbounded = false;            // solid: bounds as a plane's
+    Vec3 lower, upper;                 // sphere, shape, bounded solid: world bounds
 };
 
 struct GeometryTables;
@@ -56,6 +60,7 @@ struct InstanceRecord {
 };
 
 struct GeometryTables {
+    std::vector<std::unique_ptr<SolidTree>> solids;  // ownership
     std::vector<uint8_t> object_flags;               // per object
     std::vector<std::unique_ptr<LeafTable>> leaves;  // ownership
     std::vector<RTCScene> prototypes;                // released with the tables

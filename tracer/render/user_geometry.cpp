@@ -1,8 +1,9 @@
 // Embree user geometry, intersected in double precision: spheres (ellipsoids under any
-// transform), planes, and the shapes that shape_geometry.h intersects exactly (cylinder, cone,
-// torus, disc) in their own coordinates. A plane's bounds are a box of half-size
-// LeafTable::plane_extent around the origin (10^5 times the reach of the scene's geometry,
-// camera, lights and receivers from the origin): beyond it the plane is not found.
+// transform), planes, the shapes that shape_geometry.h intersects exactly (cylinder, cone,
+// torus, disc) in their own coordinates, and solids (CSG, clipped_by, inverse; solids.h) in
+// world coordinates. An unbounded solid's bounds are a plane's. A plane's bounds are a box of
+// half-size LeafTable::plane_extent around the origin (10^5 times the reach of the scene's
+// geometry, camera, lights and receivers from the origin): beyond it the plane is not found.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -63,12 +64,26 @@ bool shape_hit(const UserPrim& prim, Vec3 o, Vec3 d, double t_near, double t_far
     return true;
 }
 
+bool solid_hit(const UserPrim& prim, Vec3 o, Vec3 d, double t_near, double t_far, double& t,
+               Vec3& normal) {
+    thread_local std::vector<ShapeHit> hits;
+    hits.clear();
+    prim.solid->hits(o, d, hits);
+    const ShapeHit* nearest = nullptr;
+    for (const ShapeHit& h : hits)
+        if (h.t > t_near && h.t < t_far && (!nearest || h.t < nearest->t)) nearest = &h;
+    if (!nearest) return false;
+    t = nearest->t, normal = nearest->normal;
+    return true;
+}
+
 bool user_hit(const UserPrim& prim, Vec3 o, Vec3 d, double t_near, double t_far, double& t,
               Vec3& normal) {
     switch (prim.kind) {
         case UserPrim::Kind::plane: return plane_hit(prim, o, d, t_near, t_far, t);
         case UserPrim::Kind::sphere: return sphere_hit(prim, o, d, t_near, t_far, t);
         case UserPrim::Kind::shape: return shape_hit(prim, o, d, t_near, t_far, t, normal);
+        case UserPrim::Kind::solid: return solid_hit(prim, o, d, t_near, t_far, t, normal);
     }
     return false;
 }
@@ -77,7 +92,7 @@ void user_bounds(const RTCBoundsFunctionArguments* args) {
     const auto* leaf = static_cast<const LeafTable*>(args->geometryUserPtr);
     const UserPrim& prim = leaf->user_prims[args->primID];
     RTCBounds& b = *args->bounds_o;
-    if (prim.kind != UserPrim::Kind::plane) {
+    if (prim.kind != UserPrim::Kind::plane && !prim.unbounded) {
         b.lower_x = std::nextafter(float(prim.lower.x), -1e30f);
         b.lower_y = std::nextafter(float(prim.lower.y), -1e30f);
         b.lower_z = std::nextafter(float(prim.lower.z), -1e30f);
@@ -89,6 +104,7 @@ void user_bounds(const RTCBoundsFunctionArguments* args) {
     const float r = leaf->plane_extent;
     b.lower_x = b.lower_y = b.lower_z = -r;
     b.upper_x = b.upper_y = b.upper_z = r;
+    if (prim.kind != UserPrim::Kind::plane) return;
     // An axis-aligned plane gets a thin box, so rays parallel to it skip the test.
     const Vec3 n = prim.normal;
     const float margin = 1e-4f * float(leaf->tables->extent);

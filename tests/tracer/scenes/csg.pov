@@ -1,0 +1,42 @@
+// CSG, clipped_by and inverse on flat-lit solids over a checkered floor.
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 7, -11> look_at <0, 1, 0> angle 55 }
+#declare Flat = finish { ambient 0 diffuse 0 emission 1 }
+plane { y, 0 pigment { checker rgb 0.85, rgb 0.25 } finish { Flat } }
+difference {
+  box { <-1, 0, -1>, <1, 2, 1> }
+  sphere { <0, 2, 0>, 1.2 }
+  cylinder { <-2, 0.8, 0>, <2, 0.8, 0>, 0.4 }
+  pigment { gradient y colour_map { [0 rgb <0.9, 0.2, 0.1>] [1 rgb <0.1, 0.3, 0.9>] } scale 2 }
+  finish { Flat }
+  rotate y*30 translate <-4, 0, 1.5>
+}
+intersection {
+  sphere { 0, 1.3 }
+  box { -1, 1 }
+  cylinder { -2*x, 2*x, 0.7 inverse }
+  pigment { checker rgb <0.2, 0.8, 0.3>, rgb <0.9, 0.9, 0.2> scale 0.3 } finish { Flat }
+  rotate <20, 40, 0> translate <-0.8, 1.4, 2>
+}
+merge {
+  cylinder { <0, 0, 0>, <0, 2.4, 0>, 0.5 }
+  cone { <0, 1.2, 0>, 1.1, <0, 2.6, 0>, 0 }
+  torus { 0.8, 0.25 translate 0.5*y }
+  pigment { radial frequency 8 colour_map { [0 rgb <1, 0.5, 0>] [1 rgb <0.2, 0.2, 0.8>] } }
+  finish { Flat } translate <2.4, 0, 1.5>
+}
+sphere { <4.6, 1.2, 0>, 1.2
+  clipped_by { plane { y, 1.5 } }
+  clipped_by { box { <3, 0, -0.6>, <6, 3, 3> } }
+  pigment { onion colour_map { [0 rgb <0.1, 0.6, 0.6>] [1 rgb <0.9, 0.8, 0.5>] } scale 0.4 }
+  finish { Flat } }
+intersection {
+  plane { y, 1.8 } plane { -y, 0 } plane { x, 1 } plane { -x, 1 } plane { z, 0.6 } plane { -z, 0.6 }
+  pigment { rgb <0.6, 0.1, 0.7> } finish { Flat } rotate y*25 translate <1, 0, -2.6>
+}
+union {
+  sphere { <-1, 0, 0>, 0.6 } sphere { <1, 0, 0>, 0.6 }
+  pigment { rgb <0.2, 0.9, 0.9> } finish { Flat } clipped_by { plane { z, 0.2 } }
+  translate <-3, 0.7, -2.5>
+}

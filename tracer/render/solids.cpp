@@ -1,0 +1,186 @@
+#include "tracer/render/solids.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+
+namespace rayset::tracer {
+
+namespace {
+
+struct Bounds {
+    bool bounded = true;
+    Vec3 lower{1e300, 1e300, 1e300}, upper{-1e300, -1e300, -1e300};
+    void add(Vec3 p) {
+        lower = {std::min(lower.x, p.x), std::min(lower.y, p.y), std::min(lower.z, p.z)};
+        upper = {std::max(upper.x, p.x), std::max(upper.y, p.y), std::max(upper.z, p.z)};
+    }
+    static Bounds unbounded() {
+        Bounds b;
+        b.bounded = false;
+        return b;
+    }
+    // The common part (unbounded on one side: the other).
+    Bounds overlap(const Bounds& other) const {
+        if (!bounded) return other;
+        if (!other.bounded) return *this;
+        Bounds b;
+        b.lower = {std::max(lower.x, other.lower.x), std::max(lower.y, other.lower.y),
+                   std::max(lower.z, other.lower.z)};
+        b.upper = {std::min(upper.x, other.upper.x), std::min(upper.y, other.upper.y),
+                   std::min(upper.z, other.upper.z)};
+        return b;
+    }
+    Bounds hull(const Bounds& other) const {
+        if (!bounded || !other.bounded) return unbounded();
+        Bounds b = *this;
+        b.add(other.lower), b.add(other.upper);
+        return b;
+    }
+};
+
+[[noreturn]] void refuse(const std::string& feature, const SourceLocation& where) {
+    throw Error(fmt::format("not supported: {} at {}", feature, where.str()));
+}
+
+// A part's shape must be one the tree intersects and tells the inside of.
+void check_covered(const ObjectInstance& part) {
+    std::vector<ShapeHit> hits;
+    bool in = false;
+    if (!shape_hits(part.shape, {0, 0, 0}, {0, 0, 1}, hits) ||
+        !shape_inside(part.shape, {0, 0, 0}, in))
+        refuse(fmt::format("{} in CSG, clipped_by or inverse", shape_keyword(part.shape)),
+               part.location);
+}
+
+class SolidBuilder {
+public:
+    explicit SolidBuilder(const ObjectInstance& whole) : whole_(whole) {}
+
+    // Adds `o` and what it holds; returns its node and sets its world bounds.
+    int add(const ObjectInstance& o, Bounds& bounds, bool part_of_whole) {
+        if (part_of_whole) check_appearance(o);
+        int index = 0;
+        if (const auto* csg = std::get_if<CsgShape>(&o.shape)) {
+            index = tree_.add_csg(csg->operation, o.inverse);
+            bounds = csg_bounds(*csg, index);
+        } else {
+            check_covered(o);
+            index = tree_.add_shape(o.shape, o.object_to_world.inverse(), o.inverse);
+            bounds = shape_bounds(o);
+        }
+        // An inverted solid reaches everywhere its original does not.
+        if (o.inverse) bounds = Bounds::unbounded();
+        for (const ObjectInstance& clip : o.clipped_by) {
+            Bounds clip_bounds;
+            tree_.add_clip(index, add(clip, clip_bounds, false));
+            bounds = bounds.overlap(clip_bounds);
+        }
+        return index;
+    }
+
+    SolidTree take() { return std::move(tree_); }
+
+private:
+    Bounds csg_bounds(const CsgShape& csg, int index) {
+        Bounds bounds;
+        for (size_t i = 0; i < csg.children.size(); ++i) {
+            Bounds child;
+            tree_.add_child(index, add(csg.children[i], child, true));
+            switch (csg.operation) {
+                case CsgShape::Operation::union_of:
+                case CsgShape::Operation::merge:
+                    bounds = i == 0 ? child : bounds.hull(child);
+                    break;
+                case CsgShape::Operation::intersection:
+                    bounds = i == 0 ? child : bounds.overlap(child);
+                    break;
+                case CsgShape::Operation::difference:
+                    if (i == 0) bounds = child;
+                    break;
+            }
+        }
+        return bounds;
+    }
+
+    static Bounds shape_bounds(const ObjectInstance& o) {
+        Vec3 lower, upper;
+        if (!local_box(o.shape, lower, upper)) return Bounds::unbounded();
+        Bounds bounds;
+        for (int i = 0; i < 8; ++i)
+            bounds.add(o.object_to_world.point(
+                {i & 1 ? upper.x : lower.x, i & 2 ? upper.y : lower.y, i & 4 ? upper.z : lower.z}));
+        return bounds;
+    }
+
+    // One material for the whole: its parts carry its texture and interior (inherited), not
+    // their own.
+    void check_appearance(const ObjectInstance& part) const {
+        if (part.appearance.texture != whole_.appearance.texture ||
+            part.appearance.interior != whole_.appearance.interior ||
+            part.appearance.interior_texture != whole_.appearance.interior_texture)
+            refuse("a texture or interior of its own on a part of CSG", part.location);
+    }
+
+    const ObjectInstance& whole_;
+    SolidTree tree_;
+};
+
+}  // namespace
+
+bool is_solid(const ObjectInstance& object) {
+    return std::holds_alternative<CsgShape>(object.shape) || !object.clipped_by.empty() ||
+           object.inverse;
+}
+
+bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
+    Bounds b;
+    auto around = [&](Vec3 a, Vec3 c, double r) {
+        r = std::abs(r);
+        b.add({std::min(a.x, c.x) - r, std::min(a.y, c.y) - r, std::min(a.z, c.z) - r});
+        b.add({std::max(a.x, c.x) + r, std::max(a.y, c.y) + r, std::max(a.z, c.z) + r});
+    };
+    if (const auto* s = std::get_if<SphereShape>(&shape)) {
+        around(s->centre, s->centre, s->radius);
+    } else if (const auto* box = std::get_if<BoxShape>(&shape)) {
+        b.add(box->minimum), b.add(box->maximum);
+    } else if (const auto* c = std::get_if<CylinderShape>(&shape)) {
+        around(c->base, c->cap, c->radius);
+    } else if (const auto* c = std::get_if<ConeShape>(&shape)) {
+        around(c->base, c->cap, std::max(std::abs(c->base_radius), std::abs(c->cap_radius)));
+    } else if (const auto* d = std::get_if<DiscShape>(&shape)) {
+        around(d->centre, d->centre, d->radius);
+    } else if (const auto* t = std::get_if<TorusShape>(&shape)) {
+        const double outer = std::abs(t->major_radius) + std::abs(t->minor_radius);
+        const double r = std::abs(t->minor_radius);
+        b.add({-outer, -r, -outer}), b.add({outer, r, outer});
+    } else if (const auto* t = std::get_if<TriangleShape>(&shape)) {
+        b.add(t->a), b.add(t->b), b.add(t->c);
+    } else if (const auto* m = std::get_if<MeshShape>(&shape)) {
+        for (const Vec3& v : m->mesh->vertices) b.add(v);
+    } else {
+        return false;
+    }
+    lower = b.lower, upper = b.upper;
+    return true;
+}
+
+Solid solid_of(const ObjectInstance& object) {
+    SolidBuilder builder(object);
+    Bounds bounds;
+    builder.add(object, bounds, false);
+    Solid solid;
+    solid.tree = builder.take();
+    solid.bounded = bounds.bounded;
+    // An empty overlap (nothing left of an intersection) is a point: found by no ray.
+    solid.lower = bounds.lower;
+    solid.upper = {std::max(bounds.lower.x, bounds.upper.x),
+                   std::max(bounds.lower.y, bounds.upper.y),
+                   std::max(bounds.lower.z, bounds.upper.z)};
+    return solid;
+}
+
+}  // namespace rayset::tracer

@@ -1,0 +1,29 @@
+// Objects rendered as solids: CSG kept whole (merge, intersection, difference, a union that
+// could not be split), and any object with clipped_by or inverse. Each is one SolidTree
+// (scene_language/shape_geometry.h) in world coordinates, intersected exactly by the renderer's
+// user geometry; its parts share the whole's material.
+#pragma once
+
+#include "tracer/scene_language/scene_description.h"
+#include "tracer/scene_language/shape_geometry.h"
+
+namespace rayset::tracer {
+
+bool is_solid(const ObjectInstance& object);
+
+// The box that holds a shape in its own coordinates (sphere, box, cylinder, cone, torus, disc,
+// triangle, mesh); false for the unbounded ones (plane, ...).
+bool local_box(const Shape& shape, Vec3& lower, Vec3& upper);
+
+struct Solid {
+    SolidTree tree;       // points into the object's shapes
+    bool bounded = true;  // false: the box below is not known (a plane among the parts)
+    Vec3 lower, upper;    // world
+};
+
+// The solid of `object` (is_solid). Refuses (Error, "not supported: ... at FILE:LINE:COLUMN")
+// parts whose shape the tree cannot intersect or tell the inside of, and parts whose texture or
+// interior differ from the whole's.
+Solid solid_of(const ObjectInstance& object);
+
+}  // namespace rayset::tracer
