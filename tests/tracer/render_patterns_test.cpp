@@ -116,7 +116,8 @@ TEST(RenderPatterns, AgreeWithPovRayUnderAnotherAssumedGamma) {
 TEST(RenderShapes, AgreeWithPovRayPixelForPixel) { expect_flat_colours_agree("shapes.pov", 1.0); }
 
 // Difference, intersection (with an inverted part; of six planes), merge, clipped_by (twice, a
-// sphere; a union), patterned and turned.
+// sphere; a union), bounded_by (holding its object; too small on a sphere, which POV-Ray drops;
+// on a plane, which it keeps), patterned and turned.
 TEST(RenderShapes, CsgAgreesWithPovRayPixelForPixel) { expect_flat_colours_agree("csg.pov", 1.0); }
 
 // The orthographic camera, sized by its angle at the look_at distance and by right and up.

@@ -21,7 +21,8 @@ namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
 // other than sphere, box, plane, triangle, mesh, cylinder, cone, torus and disc (solids.h
-// refuses what it cannot take into CSG), and the modifiers that change what is seen. Photon and
+// refuses what it cannot take into CSG, clipped_by, bounded_by or inverse), and the modifiers
+// that change what is seen. Photon and
 // radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
 // to change in a path tracer, which computes all light transport; they pass.
 void refuse_unrendered(const ObjectInstance& o) {
@@ -45,7 +46,6 @@ void refuse_unrendered(const ObjectInstance& o) {
         for (const auto& corners : mesh->mesh->normal_faces)
             if (corners[0] < 0) refuse("mesh mixing smooth and flat triangles");
     }
-    if (!o.bounded_by.empty()) refuse("bounded_by");
     if (o.double_illuminate) refuse("double_illuminate");
     if (o.no_radiosity) refuse("no_radiosity");
     if (o.uv_mapping) refuse("uv_mapping");
@@ -252,6 +252,10 @@ private:
         prim.kind = UserPrim::Kind::solid;
         prim.object = object;
         prim.solid = tables_->solids.back().get();
+        if (solid.bound) {
+            tables_->solids.push_back(std::make_unique<SolidTree>(std::move(*solid.bound)));
+            prim.bound = tables_->solids.back().get();
+        }
         prim.unbounded = !solid.bounded;
         if (solid.bounded) {
             prim.lower = solid.lower, prim.upper = solid.upper;

@@ -36,6 +36,7 @@ struct UserPrim {
     double distance = 0;
     const Shape* shape = nullptr;      // shape: the description's, in object coordinates
     const SolidTree* solid = nullptr;  // solid
+    const SolidTree* bound = nullptr;  // solid with bounded_by: rays that miss it skip the solid
     bool unbounded = false;            // solid: bounds as a plane's
     Vec3 lower, upper;                 // sphere, shape, bounded solid: world bounds
 };

@@ -82,6 +82,18 @@ public:
         return index;
     }
 
+    // The union of `parts` (bounding objects) as the root; returns its bounds.
+    Bounds add_union(const std::vector<ObjectInstance>& parts) {
+        const int root = tree_.add_csg(CsgShape::Operation::union_of, false);
+        Bounds bounds;
+        for (size_t i = 0; i < parts.size(); ++i) {
+            Bounds part;
+            tree_.add_child(root, add(parts[i], part, false));
+            bounds = i == 0 ? part : bounds.hull(part);
+        }
+        return bounds;
+    }
+
     SolidTree take() { return std::move(tree_); }
 
 private:
@@ -133,7 +145,7 @@ private:
 
 bool is_solid(const ObjectInstance& object) {
     return std::holds_alternative<CsgShape>(object.shape) || !object.clipped_by.empty() ||
-           object.inverse;
+           !object.bounded_by.empty() || object.inverse;
 }
 
 bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
@@ -174,6 +186,11 @@ Solid solid_of(const ObjectInstance& object) {
     builder.add(object, bounds, false);
     Solid solid;
     solid.tree = builder.take();
+    if (!object.bounded_by.empty() && !bounds.bounded) {
+        SolidBuilder bound(object);
+        bounds = bound.add_union(object.bounded_by);
+        solid.bound = bound.take();
+    }
     solid.bounded = bounds.bounded;
     // An empty overlap (nothing left of an intersection) is a point: found by no ray.
     solid.lower = bounds.lower;

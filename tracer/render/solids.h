@@ -1,8 +1,15 @@
 // Objects rendered as solids: CSG kept whole (merge, intersection, difference, a union that
-// could not be split), and any object with clipped_by or inverse. Each is one SolidTree
-// (scene_language/shape_geometry.h) in world coordinates, intersected exactly by the renderer's
-// user geometry; its parts share the whole's material.
+// could not be split), and any object with clipped_by, bounded_by or inverse. Each is one
+// SolidTree (scene_language/shape_geometry.h) in world coordinates, intersected exactly by the
+// renderer's user geometry; its parts share the whole's material.
+//
+// bounded_by is what POV-Ray 3.7 makes of it: kept only for an object it cannot bound itself
+// (an unbounded one: a plane or inverse among its parts; POV-Ray's Remove_Bounds, on by
+// default, drops the others), and then a ray is tested against the object only if it meets
+// the bounding objects or starts inside them; the object's bounds are theirs.
 #pragma once
+
+#include <optional>
 
 #include "tracer/scene_language/scene_description.h"
 #include "tracer/scene_language/shape_geometry.h"
@@ -16,9 +23,10 @@ bool is_solid(const ObjectInstance& object);
 bool local_box(const Shape& shape, Vec3& lower, Vec3& upper);
 
 struct Solid {
-    SolidTree tree;       // points into the object's shapes
-    bool bounded = true;  // false: the box below is not known (a plane among the parts)
-    Vec3 lower, upper;    // world
+    SolidTree tree;                  // points into the object's shapes
+    std::optional<SolidTree> bound;  // bounded_by of an unbounded object: the bounding objects
+    bool bounded = true;             // false: the box below is not known (a plane among the parts)
+    Vec3 lower, upper;               // world
 };
 
 // The solid of `object` (is_solid). Refuses (Error, "not supported: ... at FILE:LINE:COLUMN")

@@ -64,8 +64,20 @@ bool shape_hit(const UserPrim& prim, Vec3 o, Vec3 d, double t_near, double t_far
     return true;
 }
 
+// POV-Ray's bounded_by: a ray is tested against the object only if it starts inside the
+// bounding objects or meets them ahead of it.
+bool meets_bound(const SolidTree& bound, Vec3 o, Vec3 d) {
+    bool inside = false;
+    if (bound.inside(o, inside) && inside) return true;
+    thread_local std::vector<ShapeHit> hits;
+    hits.clear();
+    bound.hits(o, d, hits);
+    return std::any_of(hits.begin(), hits.end(), [](const ShapeHit& h) { return h.t > 0; });
+}
+
 bool solid_hit(const UserPrim& prim, Vec3 o, Vec3 d, double t_near, double t_far, double& t,
                Vec3& normal) {
+    if (prim.bound && !meets_bound(*prim.bound, o, d)) return false;
     thread_local std::vector<ShapeHit> hits;
     hits.clear();
     prim.solid->hits(o, d, hits);

@@ -40,3 +40,16 @@ union {
   pigment { rgb <0.2, 0.9, 0.9> } finish { Flat } clipped_by { plane { z, 0.2 } }
   translate <-3, 0.7, -2.5>
 }
+// bounded_by: POV-Ray drops it on objects it can bound itself (the sphere below shows whole);
+// an unbounded one (the plane) is tested only along rays that meet its bound.
+intersection {
+  sphere { 0, 1 } sphere { 0, 0.6 inverse } plane { -z, 0 }
+  pigment { rgb <0.9, 0.6, 0.2> } finish { Flat }
+  bounded_by { sphere { 0, 1.001 } }
+  rotate y*-30 translate <-1.2, 0.8, -5>
+}
+sphere { <3.6, 0.8, -3.6>, 0.8
+  bounded_by { box { <3.2, 0, -4.5>, <4.4, 1.2, -2.5> } }
+  pigment { rgb <0.3, 0.5, 1> } finish { Flat } }
+plane { z, -6 bounded_by { box { <0.8, 0.2, -6.1>, <2.2, 1.4, -5.9> } }
+  pigment { rgb <1, 0.2, 0.6> } finish { Flat } }
