@@ -262,8 +262,6 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
               refused("triangle in CSG, clipped_by or inverse", "2:2"));
     EXPECT_EQ(render_error("sphere { 0, 1 clipped_by {\n superellipsoid { <1, 1> } } }"),
               refused("superellipsoid in CSG, clipped_by or inverse", "2:2"));
-    EXPECT_EQ(render_error("sphere { 0, 1 bounded_by { box { -1, 1 } } }"),
-              refused("bounded_by", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 double_illuminate }"),
               refused("double_illuminate", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 no_radiosity }"), refused("no_radiosity", "1:1"));
