@@ -120,6 +120,12 @@ TEST(RenderShapes, AgreeWithPovRayPixelForPixel) { expect_flat_colours_agree("sh
 // on a plane, which it keeps), patterned and turned.
 TEST(RenderShapes, CsgAgreesWithPovRayPixelForPixel) { expect_flat_colours_agree("csg.pov", 1.0); }
 
+// Quadrics (a hyperboloid cut to a box, a cylinder cut by planes), a quartic torus with a
+// bound, a cubic monkey saddle cut to a cylinder and a sphere as a poly.
+TEST(RenderShapes, PolynomialsAgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("polynomials.pov", 1.0);
+}
+
 // The orthographic camera, sized by its angle at the look_at distance and by right and up.
 TEST(RenderPatterns, AgreeWithPovRayThroughAnOrthographicCamera) {
     expect_flat_colours_agree(

@@ -20,7 +20,8 @@ namespace rayset::tracer {
 namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
-// other than sphere, box, plane, triangle, mesh, cylinder, cone, torus and disc (solids.h
+// other than sphere, box, plane, triangle, mesh, cylinder, cone, torus, disc, quadric and
+// polynomials (solids.h
 // refuses what it cannot take into CSG, clipped_by, bounded_by or inverse), and the modifiers
 // that change what is seen. Photon and
 // radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
@@ -37,7 +38,8 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<MeshShape>(s) || std::holds_alternative<MeshFileShape>(s) ||
         std::holds_alternative<CylinderShape>(s) || std::holds_alternative<ConeShape>(s) ||
         std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
-        std::holds_alternative<CsgShape>(s);
+        std::holds_alternative<CsgShape>(s) || std::holds_alternative<PolynomialShape>(s) ||
+        std::holds_alternative<QuadricShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
     if (const auto* sphere = std::get_if<SphereShape>(&o.shape); sphere && !(sphere->radius > 0))
         refuse(fmt::format("sphere of radius {} (only positive radii)", sphere->radius));

@@ -144,7 +144,10 @@ private:
 }  // namespace
 
 bool is_solid(const ObjectInstance& object) {
-    return std::holds_alternative<CsgShape>(object.shape) || !object.clipped_by.empty() ||
+    // Polynomial shapes are unbounded in general: one primitive with a plane's bounds.
+    return std::holds_alternative<CsgShape>(object.shape) ||
+           std::holds_alternative<PolynomialShape>(object.shape) ||
+           std::holds_alternative<QuadricShape>(object.shape) || !object.clipped_by.empty() ||
            !object.bounded_by.empty() || object.inverse;
 }
 

@@ -1,5 +1,6 @@
 // Objects rendered as solids: CSG kept whole (merge, intersection, difference, a union that
-// could not be split), and any object with clipped_by, bounded_by or inverse. Each is one
+// could not be split), quadrics and polynomials (poly, cubic, quartic), and any object with
+// clipped_by, bounded_by or inverse. Each is one
 // SolidTree (scene_language/shape_geometry.h) in world coordinates, intersected exactly by the
 // renderer's user geometry; its parts share the whole's material.
 //

@@ -7,16 +7,28 @@
 namespace rayset::tracer {
 namespace {
 
-// POV-Ray's term order of a polynomial (x^order first): see grammar_shapes.cpp.
-double polynomial_value(const PolynomialShape& poly, Vec3 p) {
-    double sum = 0;
-    size_t term = 0;
+// Calls term(coefficient, i, j, k) for each term coefficient x^i y^j z^k of a polynomial in
+// POV-Ray's order (x^order first; see grammar_shapes.cpp).
+template <class Term>
+void for_each_term(const PolynomialShape& poly, Term&& term) {
+    size_t index = 0;
     for (int i = poly.order; i >= 0; --i)
         for (int j = poly.order - i; j >= 0; --j)
-            for (int k = poly.order - i - j; k >= 0; --k)
-                sum += poly.coefficients[term++] * std::pow(p.x, i) * std::pow(p.y, j) *
-                       std::pow(p.z, k);
+            for (int k = poly.order - i - j; k >= 0; --k) term(poly.coefficients[index++], i, j, k);
+}
+
+double polynomial_value(const PolynomialShape& poly, Vec3 p) {
+    double sum = 0;
+    for_each_term(poly, [&](double a, int i, int j, int k) {
+        sum += a * std::pow(p.x, i) * std::pow(p.y, j) * std::pow(p.z, k);
+    });
     return sum;
+}
+
+double quadric_value(const QuadricShape& q, Vec3 p) {
+    return q.squares.x * p.x * p.x + q.squares.y * p.y * p.y + q.squares.z * p.z * p.z +
+           q.mixed.x * p.x * p.y + q.mixed.y * p.x * p.z + q.mixed.z * p.y * p.z +
+           dot(q.linear, p) + q.constant;
 }
 
 // Whether (x, z) is inside the closed outlines of a linear prism (each sub-outline closes
@@ -209,6 +221,64 @@ void disc_hit(const DiscShape& disc, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits
         hits.push_back({t, disc.normal});
 }
 
+// The coefficients (t^0 first) of the product of two polynomials in t.
+std::vector<double> times(const std::vector<double>& a, const std::vector<double>& b) {
+    std::vector<double> c(a.size() + b.size() - 1, 0.0);
+    for (size_t i = 0; i < a.size(); ++i)
+        for (size_t j = 0; j < b.size(); ++j) c[i + j] += a[i] * b[j];
+    return c;
+}
+
+Vec3 polynomial_gradient(const PolynomialShape& poly, Vec3 p) {
+    Vec3 g{0, 0, 0};
+    auto power = [](double v, int e) { return e <= 0 ? 1.0 : std::pow(v, e); };
+    for_each_term(poly, [&](double a, int i, int j, int k) {
+        if (a == 0) return;
+        if (i > 0) g.x += a * i * power(p.x, i - 1) * power(p.y, j) * power(p.z, k);
+        if (j > 0) g.y += a * j * power(p.x, i) * power(p.y, j - 1) * power(p.z, k);
+        if (k > 0) g.z += a * k * power(p.x, i) * power(p.y, j) * power(p.z, k - 1);
+    });
+    return g;
+}
+
+// The polynomial along o + t d expanded in t; its real roots lie within Cauchy's bound
+// 1 + max |c_i / c_n|, bisected between the roots of its derivatives.
+void polynomial_hits(const PolynomialShape& poly, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    const double origin[3] = {o.x, o.y, o.z}, direction[3] = {d.x, d.y, d.z};
+    std::vector<std::vector<double>> powers[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        powers[axis].push_back({1.0});
+        for (int e = 1; e <= poly.order; ++e)
+            powers[axis].push_back(times(powers[axis].back(), {origin[axis], direction[axis]}));
+    }
+    std::vector<double> c(size_t(poly.order) + 1, 0.0);
+    for_each_term(poly, [&](double a, int i, int j, int k) {
+        if (a == 0) return;
+        const std::vector<double> term = times(times(powers[0][i], powers[1][j]), powers[2][k]);
+        for (size_t q = 0; q < term.size(); ++q) c[q] += a * term[q];
+    });
+    while (c.size() > 1 && c.back() == 0) c.pop_back();
+    if (c.size() < 2) return;
+    double bound = 0;
+    for (size_t q = 0; q + 1 < c.size(); ++q) bound = std::max(bound, std::abs(c[q] / c.back()));
+    for (double t : roots_between(c, -1 - bound, 1 + bound))
+        hits.push_back({t, polynomial_gradient(poly, o + t * d)});
+}
+
+void quadric_hits(const QuadricShape& q, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    // Along o + t d the quadric is c0 + c1 t + c2 t^2, read from its values at t = 0, 1, -1.
+    const double at0 = quadric_value(q, o), at1 = quadric_value(q, o + d),
+                 at_minus1 = quadric_value(q, o - d);
+    const double c2 = (at1 + at_minus1) / 2 - at0, c1 = (at1 - at_minus1) / 2;
+    for (double t : quadratic_roots(c2, c1, at0)) {
+        const Vec3 p = o + t * d;
+        hits.push_back({t,
+                        {2 * q.squares.x * p.x + q.mixed.x * p.y + q.mixed.y * p.z + q.linear.x,
+                         2 * q.squares.y * p.y + q.mixed.x * p.x + q.mixed.z * p.z + q.linear.y,
+                         2 * q.squares.z * p.z + q.mixed.y * p.x + q.mixed.z * p.y + q.linear.z}});
+    }
+}
+
 }  // namespace
 
 bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
@@ -239,11 +309,7 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
         inside =
             dot(disc->normal, p - disc->centre) < 0;  // its plane's inside, whatever the radius
     } else if (const auto* q = std::get_if<QuadricShape>(&shape)) {
-        const double value = q->squares.x * p.x * p.x + q->squares.y * p.y * p.y +
-                             q->squares.z * p.z * p.z + q->mixed.x * p.x * p.y +
-                             q->mixed.y * p.x * p.z + q->mixed.z * p.y * p.z + dot(q->linear, p) +
-                             q->constant;
-        inside = value < 0;
+        inside = quadric_value(*q, p) < 0;
     } else if (const auto* poly = std::get_if<PolynomialShape>(&shape)) {
         inside = polynomial_value(*poly, p) < 0;
     } else if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
@@ -259,7 +325,11 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
 }
 
 bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
-    if (const auto* s = std::get_if<SphereShape>(&shape)) {
+    if (const auto* poly = std::get_if<PolynomialShape>(&shape)) {
+        polynomial_hits(*poly, o, d, hits);
+    } else if (const auto* q = std::get_if<QuadricShape>(&shape)) {
+        quadric_hits(*q, o, d, hits);
+    } else if (const auto* s = std::get_if<SphereShape>(&shape)) {
         const Vec3 w = o - s->centre;
         for (double t :
              quadratic_roots(dot(d, d), 2 * dot(w, d), dot(w, w) - s->radius * s->radius))

@@ -4,7 +4,8 @@
 // use them.
 //
 // Covered: sphere, box, cylinder, cone, torus, plane, disc, triangle, mesh (inside with an
-// inside_vector; hits of flat triangles), quadric, polynomial (inside only) and linear prism
+// inside_vector; hits of flat triangles), quadric, polynomial (poly, cubic, quartic: the
+// polynomial along the line, its real roots bisected within Cauchy's bound) and linear prism
 // (inside only).
 #pragma once
 
