@@ -89,7 +89,7 @@ void expect_flat_colours_agree(const std::string& scene_name, double assumed_gam
     for (size_t i = 0; i < hits.size(); ++i) {
         Rgb ours{};
         if (hits[i].object >= 0) {
-            const Rgb e = scene.material(hits[i].object, hits[i].point, scratch).emission;
+            const Rgb e = scene.material(hits[i], scratch).emission;
             ours = {encoded(e.red), encoded(e.green), encoded(e.blue)};
         }
         agree += agrees(ours, &reference[3 * i]);
@@ -117,7 +117,7 @@ TEST(RenderShapes, AgreeWithPovRayPixelForPixel) { expect_flat_colours_agree("sh
 
 // Difference, intersection (with an inverted part; of six planes), merge, clipped_by (twice, a
 // sphere; a union), bounded_by (holding its object; too small on a sphere, which POV-Ray drops;
-// on a plane, which it keeps), patterned and turned.
+// on a plane, which it keeps), parts with pigments of their own, patterned and turned.
 TEST(RenderShapes, CsgAgreesWithPovRayPixelForPixel) { expect_flat_colours_agree("csg.pov", 1.0); }
 
 // Quadrics (a hyperboloid cut to a box, a cylinder cut by planes), a quartic torus with a
@@ -142,7 +142,7 @@ TEST(RenderPatterns, MaterialFollowsThePatternAndTheObject) {
     auto diffuse_at = [](const std::string& text, Vec3 point) {
         const RenderScene scene(parse_scene_text(text, "test.pov"));
         Material scratch;
-        return scene.material(0, point, scratch).diffuse;
+        return scene.material(0, -1, point, scratch).diffuse;
     };
     const std::string checker =
         "box { -1, 1 pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> } finish { diffuse 1 } ";

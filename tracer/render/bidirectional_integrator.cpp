@@ -89,7 +89,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
                            wavelengths);
         if (!found) break;
         Material scratch;
-        const Material& material = scene_.material(hit.object, hit.point, scratch);
+        const Material& material = scene_.material(hit, scratch);
         const Vec3 wo = -direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         if (bsdf.has_smooth_lobes()) {
@@ -98,7 +98,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
             Point vp;
             vp.point = hit.point, vp.normal = hit.normal, vp.shading_normal = hit.shading_normal,
             vp.wo = wo;
-            vp.object = hit.object, vp.beta = beta, vp.pixel = pixel;
+            vp.object = hit.object, vp.part = hit.part, vp.beta = beta, vp.pixel = pixel;
             if constexpr (std::is_same_v<Q, SampledSpectrum>) vp.wavelengths = wavelengths;
             visible.push_back(vp);
         }
@@ -164,8 +164,8 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
             ++rays;
             if (!scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit)) break;
             Material scratch;
-            const BsdfOf<Q> bsdf(scene_.material(hit.object, hit.point, scratch), hit.normal,
-                                 hit.shading_normal, -direction, wavelengths);
+            const BsdfOf<Q> bsdf(scene_.material(hit, scratch), hit.normal, hit.shading_normal,
+                                 -direction, wavelengths);
             if (bsdf.has_smooth_lobes() && (scattered || keep_direct)) {
                 photon.position = hit.point, photon.wi = -direction,
                 photon.normal = bsdf.facing_normal();
@@ -193,7 +193,7 @@ template <class Q>
 void BidirectionalIntegratorOf<Q>::gather(const Point& vp, const Grid& grid, Rgb& direct,
                                           Rgb& scattered) const {
     Material scratch;
-    const Material& material = scene_.material(vp.object, vp.point, scratch);
+    const Material& material = scene_.material(vp.object, vp.part, vp.point, scratch);
     const Bsdf bsdf(material, vp.normal, vp.shading_normal, vp.wo);
     const Vec3 n = bsdf.facing_normal();
     Rgb sum_direct, sum_scattered;

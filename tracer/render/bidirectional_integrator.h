@@ -33,7 +33,7 @@ namespace rayset::tracer {
 template <class Q>
 struct VisiblePointOf : PhotonWavelengths<Q> {
     Vec3 point, normal, shading_normal, wo;
-    int object = -1;
+    int object = -1, part = -1;  // as SurfaceHit's
     Q beta;
     uint32_t pixel = 0;
 };

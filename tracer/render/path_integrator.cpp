@@ -79,7 +79,7 @@ template <class Q>
             sum += s.beta * emitted(sky.radiance(s.direction), sky.spectrum(), wavelengths);
             break;
         }
-        const Material& material = scene_.material(hit.object, hit.point, scratch);
+        const Material& material = scene_.material(hit, scratch);
         if (!is_black(material.emission))
             sum += s.beta * emitted(material.emission, material.emission_spectrum, wavelengths);
         const Vec3 wo = -s.direction;

@@ -115,11 +115,39 @@ RenderScene::RenderScene(const SceneDescription& scene)
     rtcCommitScene(scene_);
     check_device(device_, "building the scene");
     epsilon_ = 1e-5 * tables_->extent;
+    add_part_materials(to_internal);
+}
+
+void RenderScene::add_part_materials(double emission_scale) {
+    const ColourDecoding decoding(description_.global);
+    part_material_.resize(description_.objects.size());
+    for (const auto& [object, parts] : tables_->solid_parts) {
+        const ObjectAppearance& whole = description_.objects[size_t(object)].appearance;
+        std::vector<int>& own = part_material_[size_t(object)];
+        own.assign(parts.size(), -1);
+        for (size_t node = 0; node < parts.size(); ++node) {
+            const ObjectInstance* part = parts[node];
+            if (!part || (part->appearance.texture == whole.texture &&
+                          part->appearance.interior == whole.interior &&
+                          part->appearance.interior_texture == whole.interior_texture))
+                continue;
+            own[node] = int(part_materials_.size());
+            part_materials_.emplace_back(*part, emission_scale, decoding);
+        }
+    }
+}
+
+bool RenderScene::emits(int object) const {
+    if (materials_[size_t(object)].emits()) return true;
+    for (int index : part_material_[size_t(object)])
+        if (index >= 0 && part_materials_[size_t(index)].emits()) return true;
+    return false;
 }
 
 bool RenderScene::has_varying_colours() const {
-    return !sky_.uniform() || std::any_of(materials_.begin(), materials_.end(),
-                                          [](const ObjectMaterial& m) { return m.patterned(); });
+    auto patterned = [](const ObjectMaterial& m) { return m.patterned(); };
+    return !sky_.uniform() || std::any_of(materials_.begin(), materials_.end(), patterned) ||
+           std::any_of(part_materials_.begin(), part_materials_.end(), patterned);
 }
 
 RenderScene::~RenderScene() {

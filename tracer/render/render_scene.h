@@ -24,6 +24,7 @@ struct SurfaceHit {
     Vec3 normal;          // unit geometric normal (outward for closed shapes)
     Vec3 shading_normal;  // unit; interpolated for meshes with normals, else `normal`
     int object = -1;      // index into SceneDescription::objects
+    int part = -1;        // a solid's part (solids.h), for its material; -1 otherwise
 };
 
 // Which objects a ray ignores, after POV-Ray's object modifiers.
@@ -51,12 +52,16 @@ public:
     RenderScene& operator=(const RenderScene&) = delete;
 
     const SceneDescription& description() const { return description_; }
-    // The material of an object at a point of its surface (ObjectMaterial::at).
-    const Material& material(int object, Vec3 point, Material& scratch) const {
-        return materials_[size_t(object)].at(point, scratch);
+    // The material at a point of an object's surface, or of a part of a solid
+    // (ObjectMaterial::at).
+    const Material& material(int object, int part, Vec3 point, Material& scratch) const {
+        return object_material(object, part).at(point, scratch);
+    }
+    const Material& material(const SurfaceHit& hit, Material& scratch) const {
+        return material(hit.object, hit.part, hit.point, scratch);
     }
     // Whether some point of the object emits light.
-    bool emits(int object) const { return materials_[size_t(object)].emits(); }
+    bool emits(int object) const;
     // Whether some colour is made point by point: a patterned pigment or a sky_sphere.
     bool has_varying_colours() const;
     const SceneUnits& units() const { return units_; }
@@ -94,7 +99,20 @@ public:
 private:
     SceneDescription description_;
     SceneUnits units_;
+    const ObjectMaterial& object_material(int object, int part) const {
+        if (part >= 0) {
+            const std::vector<int>& own = part_material_[size_t(object)];
+            if (size_t(part) < own.size() && own[size_t(part)] >= 0)
+                return part_materials_[size_t(own[size_t(part)])];
+        }
+        return materials_[size_t(object)];
+    }
+    // The materials of solids' parts that have an appearance of their own.
+    void add_part_materials(double emission_scale);
+
     std::vector<ObjectMaterial> materials_;
+    std::vector<ObjectMaterial> part_materials_;
+    std::vector<std::vector<int>> part_material_;  // by object, by part: index or -1
     std::vector<uint8_t> no_shadow_;  // per object: read on every hit, apart from the big objects
     Sky sky_;
     double epsilon_ = 1e-6;

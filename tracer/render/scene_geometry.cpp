@@ -249,6 +249,7 @@ private:
 
     void add_solid(int object, const ObjectInstance& o, LeafTable& user) {
         Solid solid = solid_of(o);
+        tables_->solid_parts.emplace_back(object, std::move(solid.parts));
         tables_->solids.push_back(std::make_unique<SolidTree>(std::move(solid.tree)));
         UserPrim prim;
         prim.kind = UserPrim::Kind::solid;
@@ -371,6 +372,7 @@ std::unique_ptr<GeometryTables> build_geometry(RTCDevice device, RTCScene scene,
 }
 
 void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit) {
+    hit.part = -1;
     const unsigned instance_id = h.instID[0];
     if (instance_id != RTC_INVALID_GEOMETRY_ID) {
         const InstanceRecord& instance = tables.instances[tables.instance_of_geometry[instance_id]];
@@ -411,8 +413,11 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
             hit.normal = unit_or_up(
                 transpose_times(prim.world_to_local, prim.world_to_local.point(hit.point)));
             break;
-        case UserPrim::Kind::shape:
-        case UserPrim::Kind::solid: hit.normal = unit_or_up({h.Ng_x, h.Ng_y, h.Ng_z}); break;
+        case UserPrim::Kind::shape: hit.normal = unit_or_up({h.Ng_x, h.Ng_y, h.Ng_z}); break;
+        case UserPrim::Kind::solid:
+            hit.normal = unit_or_up({h.Ng_x, h.Ng_y, h.Ng_z});
+            hit.part = int(h.u);  // user_geometry.cpp keeps the part there
+            break;
     }
     hit.shading_normal = hit.normal;
 }

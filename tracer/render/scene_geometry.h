@@ -62,6 +62,9 @@ struct InstanceRecord {
 
 struct GeometryTables {
     std::vector<std::unique_ptr<SolidTree>> solids;  // ownership
+    // Solids whose parts may have materials of their own: object, and its parts by tree node
+    // (Solid::parts).
+    std::vector<std::pair<int, std::vector<const ObjectInstance*>>> solid_parts;
     std::vector<uint8_t> object_flags;               // per object
     std::vector<std::unique_ptr<LeafTable>> leaves;  // ownership
     std::vector<RTCScene> prototypes;                // released with the tables

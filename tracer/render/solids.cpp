@@ -58,18 +58,19 @@ void check_covered(const ObjectInstance& part) {
 
 class SolidBuilder {
 public:
-    explicit SolidBuilder(const ObjectInstance& whole) : whole_(whole) {}
-
-    // Adds `o` and what it holds; returns its node and sets its world bounds.
+    // Adds `o` and what it holds; returns its node and sets its world bounds. The shapes of a
+    // part of the whole (not of a clip or bound) are recorded as parts.
     int add(const ObjectInstance& o, Bounds& bounds, bool part_of_whole) {
-        if (part_of_whole) check_appearance(o);
+        if (o.cutaway_textures) refuse("cutaway_textures", o.location);
         int index = 0;
         if (const auto* csg = std::get_if<CsgShape>(&o.shape)) {
             index = tree_.add_csg(csg->operation, o.inverse);
-            bounds = csg_bounds(*csg, index);
+            bounds = csg_bounds(*csg, index, part_of_whole);
         } else {
             check_covered(o);
             index = tree_.add_shape(o.shape, o.object_to_world.inverse(), o.inverse);
+            parts_.resize(size_t(index) + 1, nullptr);
+            if (part_of_whole) parts_[size_t(index)] = &o;
             bounds = shape_bounds(o);
         }
         // An inverted solid reaches everywhere its original does not.
@@ -95,13 +96,14 @@ public:
     }
 
     SolidTree take() { return std::move(tree_); }
+    std::vector<const ObjectInstance*> take_parts() { return std::move(parts_); }
 
 private:
-    Bounds csg_bounds(const CsgShape& csg, int index) {
+    Bounds csg_bounds(const CsgShape& csg, int index, bool part_of_whole) {
         Bounds bounds;
         for (size_t i = 0; i < csg.children.size(); ++i) {
             Bounds child;
-            tree_.add_child(index, add(csg.children[i], child, true));
+            tree_.add_child(index, add(csg.children[i], child, part_of_whole));
             switch (csg.operation) {
                 case CsgShape::Operation::union_of:
                 case CsgShape::Operation::merge:
@@ -128,17 +130,8 @@ private:
         return bounds;
     }
 
-    // One material for the whole: its parts carry its texture and interior (inherited), not
-    // their own.
-    void check_appearance(const ObjectInstance& part) const {
-        if (part.appearance.texture != whole_.appearance.texture ||
-            part.appearance.interior != whole_.appearance.interior ||
-            part.appearance.interior_texture != whole_.appearance.interior_texture)
-            refuse("a texture or interior of its own on a part of CSG", part.location);
-    }
-
-    const ObjectInstance& whole_;
     SolidTree tree_;
+    std::vector<const ObjectInstance*> parts_;
 };
 
 }  // namespace
@@ -184,13 +177,14 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
 }
 
 Solid solid_of(const ObjectInstance& object) {
-    SolidBuilder builder(object);
+    SolidBuilder builder;
     Bounds bounds;
-    builder.add(object, bounds, false);
+    builder.add(object, bounds, true);
     Solid solid;
     solid.tree = builder.take();
+    solid.parts = builder.take_parts();
     if (!object.bounded_by.empty() && !bounds.bounded) {
-        SolidBuilder bound(object);
+        SolidBuilder bound;
         bounds = bound.add_union(object.bounded_by);
         solid.bound = bound.take();
     }

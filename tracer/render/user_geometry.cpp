@@ -76,7 +76,7 @@ bool meets_bound(const SolidTree& bound, Vec3 o, Vec3 d) {
 }
 
 bool solid_hit(const UserPrim& prim, Vec3 o, Vec3 d, double t_near, double t_far, double& t,
-               Vec3& normal) {
+               Vec3& normal, int& part) {
     if (prim.bound && !meets_bound(*prim.bound, o, d)) return false;
     thread_local std::vector<ShapeHit> hits;
     hits.clear();
@@ -85,17 +85,17 @@ bool solid_hit(const UserPrim& prim, Vec3 o, Vec3 d, double t_near, double t_far
     for (const ShapeHit& h : hits)
         if (h.t > t_near && h.t < t_far && (!nearest || h.t < nearest->t)) nearest = &h;
     if (!nearest) return false;
-    t = nearest->t, normal = nearest->normal;
+    t = nearest->t, normal = nearest->normal, part = nearest->part;
     return true;
 }
 
 bool user_hit(const UserPrim& prim, Vec3 o, Vec3 d, double t_near, double t_far, double& t,
-              Vec3& normal) {
+              Vec3& normal, int& part) {
     switch (prim.kind) {
         case UserPrim::Kind::plane: return plane_hit(prim, o, d, t_near, t_far, t);
         case UserPrim::Kind::sphere: return sphere_hit(prim, o, d, t_near, t_far, t);
         case UserPrim::Kind::shape: return shape_hit(prim, o, d, t_near, t_far, t, normal);
-        case UserPrim::Kind::solid: return solid_hit(prim, o, d, t_near, t_far, t, normal);
+        case UserPrim::Kind::solid: return solid_hit(prim, o, d, t_near, t_far, t, normal, part);
     }
     return false;
 }
@@ -141,10 +141,11 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
     const Vec3 o{ray.org_x, ray.org_y, ray.org_z}, d{ray.dir_x, ray.dir_y, ray.dir_z};
     double t = 0;
     Vec3 normal{};  // spheres and planes: resolve_hit computes it in double
-    if (!user_hit(prim, o, d, ray.tnear, ray.tfar, t, normal)) return;
+    int part = 0;   // solids: the tree node hit, kept in u (exact in float below 2^24)
+    if (!user_hit(prim, o, d, ray.tnear, ray.tfar, t, normal, part)) return;
     ray.tfar = float(t);
     RTCHit& hit = rayhit->hit;
-    hit.u = hit.v = 0;
+    hit.u = float(part), hit.v = 0;
     hit.Ng_x = float(normal.x), hit.Ng_y = float(normal.y), hit.Ng_z = float(normal.z);
     hit.primID = args->primID;
     hit.geomID = args->geomID;
@@ -160,7 +161,8 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
     const Vec3 o{ray->org_x, ray->org_y, ray->org_z}, d{ray->dir_x, ray->dir_y, ray->dir_z};
     double t = 0;
     Vec3 normal;
-    if (user_hit(prim, o, d, ray->tnear, ray->tfar, t, normal))
+    int part = 0;
+    if (user_hit(prim, o, d, ray->tnear, ray->tfar, t, normal, part))
         ray->tfar = -std::numeric_limits<float>::infinity();
 }
 

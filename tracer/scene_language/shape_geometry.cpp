@@ -424,7 +424,10 @@ bool SolidTree::hits_of(int index, Vec3 o, Vec3 d, std::vector<ShapeHit>& out) c
         if (!shape_hits(*node.shape, node.frame_to_local.point(o), node.frame_to_local.vector(d),
                         found))
             return false;
-        for (ShapeHit& hit : found) hit.normal = normal_to_frame(node.frame_to_local, hit.normal);
+        for (ShapeHit& hit : found) {
+            hit.normal = normal_to_frame(node.frame_to_local, hit.normal);
+            hit.part = index;
+        }
     } else {
         for (size_t i = 0; i < node.children.size(); ++i) {
             std::vector<ShapeHit> child_hits;

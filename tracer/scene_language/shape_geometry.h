@@ -16,8 +16,9 @@
 namespace rayset::tracer {
 
 struct ShapeHit {
-    double t;     // along the line o + t d, in units of |d|
-    Vec3 normal;  // outward, not normalised
+    double t;       // along the line o + t d, in units of |d|
+    Vec3 normal;    // outward, not normalised
+    int part = -1;  // SolidTree::hits: the shape node it lies on
 };
 
 // Every crossing of the line o + t d (any t, unsorted) with the shape's surface; false when the

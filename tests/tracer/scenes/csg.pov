@@ -53,3 +53,10 @@ sphere { <3.6, 0.8, -3.6>, 0.8
   pigment { rgb <0.3, 0.5, 1> } finish { Flat } }
 plane { z, -6 bounded_by { box { <0.8, 0.2, -6.1>, <2.2, 1.4, -5.9> } }
   pigment { rgb <1, 0.2, 0.6> } finish { Flat } }
+// Parts with textures of their own: each shows its own where its surface is the solid's (the
+// cut of the subtracted cylinder shows the cylinder's pigment).
+difference {
+  box { <-0.8, 0, -0.8>, <0.8, 1.2, 0.8> pigment { rgb <0.95, 0.85, 0.3> } finish { Flat } }
+  cylinder { <0, 0.6, -2>, <0, 0.6, 2>, 0.45 pigment { rgb <0.2, 0.4, 0.95> } finish { Flat } }
+  rotate y*-20 translate <4.2, 0, -1.4>
+}
