@@ -241,6 +241,8 @@ Vec3 polynomial_gradient(const PolynomialShape& poly, Vec3 p) {
     return g;
 }
 
+constexpr double kFarthestRoot = 1e15;
+
 // The polynomial along o + t d expanded in t; its real roots lie within Cauchy's bound
 // 1 + max |c_i / c_n|, bisected between the roots of its derivatives.
 void polynomial_hits(const PolynomialShape& poly, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
@@ -261,6 +263,9 @@ void polynomial_hits(const PolynomialShape& poly, Vec3 o, Vec3 d, std::vector<Sh
     if (c.size() < 2) return;
     double bound = 0;
     for (size_t q = 0; q + 1 < c.size(); ++q) bound = std::max(bound, std::abs(c[q] / c.back()));
+    // A line nearly along an asymptotic direction has a leading coefficient near zero and roots
+    // far out: those beyond 10^15 of the line's length unit lie beyond any scene.
+    bound = std::min(bound, kFarthestRoot);
     for (double t : roots_between(c, -1 - bound, 1 + bound))
         hits.push_back({t, polynomial_gradient(poly, o + t * d)});
 }
