@@ -61,13 +61,9 @@ public:
         check_finish(*texture.finish);
     }
     // A patterned pigment is rendered where its colour is known exactly at every point
-    // (evaluate_pigment: no noise, turbulence, image or surface coordinates); probed at two
-    // points, and again at every point it is evaluated (ObjectMaterial::at).
+    // (evaluate_pigment: no noise, turbulence, image or surface coordinates).
     void check_pigment(const Pigment& pigment) const {
-        if (pigment.pattern->kind == PatternKind::plain) return;
-        Colour colour;
-        if (!evaluate_pigment(pigment, {0, 0, 0}, colour) ||
-            !evaluate_pigment(pigment, {0.31, -0.72, 1.13}, colour))
+        if (pigment.pattern->kind != PatternKind::plain && !pigment_is_evaluable(pigment))
             fail(fmt::format("pigment pattern '{}'", pattern_name(pigment.pattern->kind)),
                  pigment.pattern->location);
     }

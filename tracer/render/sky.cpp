@@ -9,10 +9,6 @@ namespace rayset::tracer {
 
 namespace {
 
-// Two directions a pattern is probed at before the render: one that fails there fails
-// everywhere (noise, turbulence and images are refused whatever the point).
-constexpr Vec3 kProbes[] = {{0, 1, 0}, {0.48, -0.6, 0.64}};
-
 [[noreturn]] void refuse_pigment(const Pigment& pigment, const SkySphere& sky) {
     const SourceLocation& at =
         pigment.pattern->location.file.empty() ? sky.location : pigment.pattern->location;
@@ -31,10 +27,7 @@ Sky::Sky(const SceneDescription& scene, double to_internal)
     if (!sky_) return;
     world_to_sky_ = sky_->transform.inverse();
     for (const PigmentRef& pigment : sky_->pigments)
-        for (Vec3 probe : kProbes) {
-            Colour colour;
-            if (!evaluate_pigment(*pigment, probe, colour)) refuse_pigment(*pigment, *sky_);
-        }
+        if (!pigment_is_evaluable(*pigment)) refuse_pigment(*pigment, *sky_);
 }
 
 Rgb Sky::radiance(Vec3 direction) const {

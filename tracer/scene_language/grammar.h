@@ -71,6 +71,9 @@ std::shared_ptr<const Pattern> parse_function_pattern(Parser& parser, const Toke
 // solid colours and the patterns that need no noise (pattern_evaluation.cpp lists them).
 bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value);
 bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour);
+// Whether evaluate_pigment knows the pigment's colour. What it cannot evaluate (noise,
+// turbulence, images, surface coordinates) it cannot anywhere, so one point tells.
+bool pigment_is_evaluable(const Pigment& pigment);
 
 // ---- scene items
 CameraRef parse_camera(Parser& parser, const Token& keyword);

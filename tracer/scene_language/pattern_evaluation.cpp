@@ -245,6 +245,11 @@ bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value) {
     return true;
 }
 
+bool pigment_is_evaluable(const Pigment& pigment) {
+    Colour colour;
+    return evaluate_pigment(pigment, {0.31, -0.72, 1.13}, colour);
+}
+
 bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour) {
     if (pigment.pattern->kind == PatternKind::plain) {
         colour = pigment.colour;
