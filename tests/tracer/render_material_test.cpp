@@ -74,12 +74,12 @@ TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
     // Transforms of a uniform colour change nothing; ambient is not physical.
     EXPECT_EQ(error("sphere { 0, 1 pigment { rgb 1 scale 2 rotate y } finish { ambient 0.3 } }"),
               "no error");
-    // Patterns whose colour is exact at every point render; noise and turbulence do not yet.
+    // Patterns the language evaluates render (noise ones too); crackle and fractals do not yet.
     EXPECT_EQ(error("sphere { 0, 1 pigment { checker } }"), "no error");
-    EXPECT_EQ(error("sphere { 0, 1 pigment { wood turbulence 0.3 } }"),
-              "not supported: pigment pattern 'wood' at test.pov:1:25");
-    EXPECT_EQ(error("sphere { 0, 1 pigment { bozo } }"),
-              "not supported: pigment pattern 'bozo' at test.pov:1:25");
+    EXPECT_EQ(error("sphere { 0, 1 pigment { crackle } }"),
+              "not supported: pigment pattern 'crackle' at test.pov:1:25");
+    EXPECT_EQ(error("sphere { 0, 1 pigment { mandel 20 } }"),
+              "not supported: pigment pattern 'mandel' at test.pov:1:25");
     EXPECT_EQ(error("sphere { 0, 1\n normal { bumps 0.5 } }"),
               "not supported: normal 'bumps' at test.pov:2:11");
     EXPECT_EQ(error("sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }"),

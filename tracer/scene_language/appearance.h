@@ -239,7 +239,8 @@ struct Pattern {
     // Warps and transforms in the order written. A point is taken through them from the last
     // to the first (each undone), then through the classic turbulence, then the pattern.
     std::vector<Warp> warps;
-    int noise_generator = 0;  // 1, 2 or 3; 0: global_settings' (POV-Ray's default 2)
+    // 1, 2 or 3: as written, else global_settings' where the pattern was written (noise.h)
+    int noise_generator = 0;
     bool uv_mapping = false;  // evaluated at the surface's <u, v, 0>
 };
 

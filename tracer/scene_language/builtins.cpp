@@ -13,6 +13,7 @@
 
 #include "converters/rays/io.h"
 #include "tracer/scene_language/grammar.h"
+#include "tracer/scene_language/noise.h"
 #include "tracer/scene_language/object_tree.h"
 #include "tracer/scene_language/parse_error.h"
 #include "tracer/scene_language/parser.h"
@@ -389,8 +390,16 @@ const Parser::Builtins::NumericFunction Parser::Builtins::kNumericFunctions[] = 
     {Keyword::inside, inside},
     {Keyword::trace, trace},
     {Keyword::vturbulence,
-     [](Call& call) -> Numeric {
-         call.parser.fail_not_supported(call.name, "vturbulence (POV-Ray's noise function)");
+     [](Call& call) {  // vturbulence(Lambda, Omega, Octaves, A)
+         const double lambda = call.float_argument();
+         call.comma();
+         const double omega = call.float_argument();
+         call.comma();
+         const int octaves = call.int_argument("octaves");
+         call.comma();
+         const Vec3 point = call.vector_argument();
+         call.close();
+         return Numeric::vector3(vector_turbulence(point, octaves, omega, lambda));
      }},
 };
 

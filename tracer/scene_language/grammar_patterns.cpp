@@ -397,6 +397,8 @@ bool parse_general_modifier(Parser& p, const Token& token, Pattern& pattern) {
         if (pattern.noise_generator < 0 || pattern.noise_generator > 3)
             p.fail(at, fmt::format("noise_generator must be 0, 1, 2 or 3, found {}",
                                    pattern.noise_generator));
+        if (pattern.noise_generator == 0)
+            pattern.noise_generator = p.scene().global.noise_generator;
     } else {
         return false;
     }
@@ -431,6 +433,7 @@ BlendMapPointer parse_pattern_type(Parser& p, const Token& keyword, Pattern& pat
                                     roles_allowed(kind), role_name(role)));
     pattern.kind = kind;
     pattern.location = p.location_of(keyword);
+    if (pattern.noise_generator == 0) pattern.noise_generator = p.scene().global.noise_generator;
     // POV-Ray's patterns that default to a triangle wave set it with their keyword; the others
     // keep the waveform a pattern identifier brought (checked with POV-Ray 3.7).
     if (kind == PatternKind::marble || kind == PatternKind::wood || kind == PatternKind::spiral1 ||

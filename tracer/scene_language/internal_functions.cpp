@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include "core/geometry.h"
+#include "tracer/scene_language/noise.h"
 
 namespace rayset::tracer {
 namespace {
@@ -475,6 +476,12 @@ double th(const double* a) {
     return std::atan2(args.x(), args.z());
 }
 double sphere(const double* a) { return r(a) - Args{a}.p(0); }
+// POV-Ray's solid noise at x, y, z (noise.h): f_noise3d with the default generator (POV-Ray
+// takes global_settings' there), f_noise_generator with generator P0.
+double noise3d(const double* a) { return solid_noise({a[0], a[1], a[2]}, kDefaultNoiseGenerator); }
+double noise_generator(const double* a) {
+    return solid_noise({a[0], a[1], a[2]}, static_cast<int>(Args{a}.p(0)));
+}
 double torus(const double* a) {
     const Args args{a};
     return std::hypot(std::hypot(args.x(), args.z()) - args.p(0), args.y()) - args.p(1);
@@ -602,9 +609,9 @@ constexpr InternalFunction kFunctions[] = {
     {73, "f_umbrella", 4, field_surface<umbrella>},
     {74, "f_witch_of_agnesi", 5, field_surface<witch_of_agnesi>},
     {75, "f_witch_of_agnesi_2d", 9, curve_2d<witch_of_agnesi_2d, 2>},
-    {76, "f_noise3d", 3, nullptr},
+    {76, "f_noise3d", 3, noise3d},
     {77, "", 3, nullptr},
-    {78, "f_noise_generator", 4, nullptr},
+    {78, "f_noise_generator", 4, noise_generator},
 };
 
 const InternalFunction* find(int number) {

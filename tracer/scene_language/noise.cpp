@@ -1,0 +1,115 @@
+#include "tracer/scene_language/noise.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace rayset::tracer {
+namespace {
+
+// MurmurHash3's finaliser: every input bit moves every output bit.
+uint32_t mix(uint32_t h) {
+    h ^= h >> 16;
+    h *= 0x85EBCA6Bu;
+    h ^= h >> 13;
+    h *= 0xC2B2AE35u;
+    h ^= h >> 16;
+    return h;
+}
+
+uint32_t lattice_hash(int64_t x, int64_t y, int64_t z, uint32_t channel) {
+    return mix(static_cast<uint32_t>(x) ^
+               mix(static_cast<uint32_t>(y) ^ mix(static_cast<uint32_t>(z) ^ mix(channel))));
+}
+
+// The twelve edge directions of a cube (Perlin 2002): gradients without a preferred axis.
+constexpr double kGradients[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
+                                      {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+                                      {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
+
+// Beyond this the lattice cell of a double is no longer a whole number we can hash.
+constexpr double kLargestCoordinate = 1e15;
+
+// Gradient noise plus `value_weight` times a lattice value uniform in [-1, 1], blended by
+// 3t^2 - 2t^3; zero mean.
+double lattice_noise(Vec3 p, double value_weight, uint32_t channel) {
+    if (!(std::fabs(p.x) < kLargestCoordinate && std::fabs(p.y) < kLargestCoordinate &&
+          std::fabs(p.z) < kLargestCoordinate))
+        return 0;
+    const double cx = std::floor(p.x), cy = std::floor(p.y), cz = std::floor(p.z);
+    const double f[3] = {p.x - cx, p.y - cy, p.z - cz};
+    double blend[3];
+    for (int axis = 0; axis < 3; ++axis) blend[axis] = f[axis] * f[axis] * (3 - 2 * f[axis]);
+    const auto ix = static_cast<int64_t>(cx), iy = static_cast<int64_t>(cy),
+               iz = static_cast<int64_t>(cz);
+    double sum = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const int d[3] = {corner & 1, (corner >> 1) & 1, (corner >> 2) & 1};
+        const uint32_t h = lattice_hash(ix + d[0], iy + d[1], iz + d[2], channel);
+        const double* g = kGradients[h % 12];
+        const double value = (h >> 8 & 0xFFFF) / 32767.5 - 1;
+        double weight = 1, gradient = 0;
+        for (int axis = 0; axis < 3; ++axis) {
+            weight *= d[axis] ? blend[axis] : 1 - blend[axis];
+            gradient += g[axis] * (f[axis] - d[axis]);
+        }
+        sum += weight * (gradient + value_weight * value);
+    }
+    return sum;
+}
+
+// Per generator: the lattice value's weight, and the mean and scale of the scalar noise (the
+// scale being POV-Ray's standard deviation over that of lattice_noise, 0.3529 with the value
+// term and 0.2582 without). Generator 1's scale is the spread before its clip to [0, 1].
+struct Generator {
+    double value_weight, mean, scale;
+};
+constexpr Generator kGenerators[3] = {
+    {0.65, 0.4803, 0.258 / 0.3529},
+    {0.65, 0.5053, 0.1261 / 0.3529},
+    {0.0, 0.4945, 0.1447 / 0.2582},
+};
+constexpr double kVectorScale = 0.2575 / 0.3529;
+
+int octaves_taken(int octaves) { return std::clamp(octaves, 1, 10); }
+
+const Generator& generator_of(int number) {
+    return kGenerators[number >= 1 && number <= 3 ? number - 1 : kDefaultNoiseGenerator - 1];
+}
+
+}  // namespace
+
+double solid_noise(Vec3 point, int generator) {
+    const Generator& g = generator_of(generator);
+    const double v = g.mean + g.scale * lattice_noise(point, g.value_weight, 0);
+    return std::clamp(v, 0.0, 1.0);
+}
+
+Vec3 vector_noise(Vec3 point) {
+    const double weight = generator_of(kDefaultNoiseGenerator).value_weight;
+    return {kVectorScale * lattice_noise(point, weight, 1),
+            kVectorScale * lattice_noise(point, weight, 2),
+            kVectorScale * lattice_noise(point, weight, 3)};
+}
+
+Vec3 vector_turbulence(Vec3 point, int octaves, double omega, double lambda) {
+    Vec3 sum;
+    double amplitude = 1, frequency = 1;
+    for (int octave = 0; octave < octaves_taken(octaves); ++octave) {
+        sum = sum + amplitude * vector_noise(frequency * point);
+        amplitude *= omega;
+        frequency *= lambda;
+    }
+    return sum;
+}
+
+double scalar_turbulence(Vec3 point, int octaves, double omega, double lambda, int generator) {
+    double sum = 0, amplitude = 1, frequency = 1;
+    for (int octave = 0; octave < octaves_taken(octaves); ++octave) {
+        sum += amplitude * solid_noise(frequency * point, generator);
+        amplitude *= omega;
+        frequency *= lambda;
+    }
+    return sum;
+}
+
+}  // namespace rayset::tracer
