@@ -12,9 +12,11 @@
 namespace rayset::tracer {
 namespace {
 
-Material material_of(const std::string& object) {
+// The material of the scene's first object at `point`.
+Material material_of(const std::string& object, Vec3 point = {}) {
     const SceneDescription d = parse_scene_text(object, "test.pov");
-    return ObjectMaterial(d.objects.at(0), 1.0, ColourDecoding(d.global)).uniform();
+    Material scratch;
+    return ObjectMaterial(d.objects.at(0), 1.0, ColourDecoding(d.global)).at(point, scratch);
 }
 
 TEST(RenderMaterial, PovRayTextureMapping) {
@@ -62,6 +64,45 @@ TEST(RenderMaterial, ColoursDecodedFromTheAssumedGamma) {
     EXPECT_DOUBLE_EQ(m.diffuse.red, 0.8 * 0.75 * 0.5);
 }
 
+// Layers: each seen through the filter and transmit of those above; texture patterns: their
+// textures blended as their map says. The default finish is diffuse 0.6.
+TEST(RenderMaterial, LayersAndTexturePatternsCombineLobeByLobe) {
+    Material m = material_of(
+        "sphere { 0, 1 texture { pigment { rgb <1, 0, 0> } } "
+        "texture { pigment { rgbt <0, 0, 1, 0.25> } } }");
+    EXPECT_FLOAT_EQ(m.diffuse.red, 0.6 * 0.25);  // the bottom through 0.25 transmit
+    EXPECT_FLOAT_EQ(m.diffuse.green, 0);
+    EXPECT_FLOAT_EQ(m.diffuse.blue, 0.6 * 0.75);  // the top's opaque 0.75
+    EXPECT_EQ(max_component(m.transmission), 0);  // the bottom is opaque
+    // Filter tints what is below: 0.5 x <0, 1, 1> over yellow leaves its green.
+    m = material_of(
+        "sphere { 0, 1 texture { pigment { rgb <1, 1, 0> } } "
+        "texture { pigment { rgbf <0, 1, 1, 0.5> } finish { phong 0.3 } } }");
+    EXPECT_FLOAT_EQ(m.diffuse.red, 0);
+    EXPECT_FLOAT_EQ(m.diffuse.green, 0.6 * 0.5 + 0.6 * 0.5);
+    EXPECT_FLOAT_EQ(m.diffuse.blue, 0.6 * 0.5);
+    EXPECT_FLOAT_EQ(m.glossy.red, 0.3);  // the top's highlight, unfiltered
+    // A transparent bottom stays transparent through the layers above it.
+    m = material_of(
+        "sphere { 0, 1 texture { pigment { rgbt 1 } } "
+        "texture { pigment { rgbt <1, 1, 1, 0.5> } } }");
+    EXPECT_FLOAT_EQ(m.transmission.red, 0.5);
+    EXPECT_FLOAT_EQ(m.diffuse.red, 0.6 * 0.5);
+    // texture_map: a quarter of the way from white to black along x.
+    const std::string mapped =
+        "sphere { 0, 1 texture { gradient x texture_map { [0 pigment { rgb 1 }] "
+        "[1 pigment { rgb 0 } finish { emission 1 }] } } }";
+    m = material_of(mapped, {0.25, 0, 0});
+    EXPECT_FLOAT_EQ(m.diffuse.green, 0.6 * 0.75);
+    // A texture list picks one texture per checker cell.
+    const std::string checker =
+        "sphere { 0, 1 texture { checker texture { pigment { rgb 1 } } "
+        "texture { pigment { rgb <0, 0, 1> } } } }";
+    EXPECT_FLOAT_EQ(material_of(checker, {0.5, 0.5, 0.5}).diffuse.red, 0.6);
+    EXPECT_FLOAT_EQ(material_of(checker, {1.5, 0.5, 0.5}).diffuse.red, 0);
+    EXPECT_FLOAT_EQ(material_of(checker, {1.5, 0.5, 0.5}).diffuse.blue, 0.6);
+}
+
 TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
     auto error = [](const std::string& object) {
         try {
@@ -82,11 +123,13 @@ TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
               "not supported: pigment pattern 'mandel' at test.pov:1:25");
     EXPECT_EQ(error("sphere { 0, 1\n normal { bumps 0.5 } }"),
               "not supported: normal 'bumps' at test.pov:2:11");
-    EXPECT_EQ(error("sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }"),
-              "not supported: layered textures at test.pov:1:15");
-    EXPECT_EQ(error("sphere { 0, 1 texture { gradient x texture_map { [0 pigment { rgb 1 }] "
+    // One material holds one highlight: layers whose highlights differ cannot be combined.
+    EXPECT_EQ(error("sphere { 0, 1 texture { finish { phong 1 phong_size 10 } } texture { "
+                    "pigment { rgbt 1 } finish { phong 1 phong_size 20 } } }"),
+              "not supported: textures combining highlights of different sizes at test.pov:1:15");
+    EXPECT_EQ(error("sphere { 0, 1 texture { crackle texture_map { [0 pigment { rgb 1 }] "
                     "[1 pigment { rgb 0 }] } } }"),
-              "not supported: patterned textures (gradient) at test.pov:1:25");
+              "not supported: patterned textures (crackle) at test.pov:1:25");
     EXPECT_EQ(error("sphere { 0, 1 finish { irid { 0.3 } } }"),
               "not supported: finish 'irid' at test.pov:1:15");
     EXPECT_EQ(error("sphere { 0, 1 finish { diffuse 0.6, 0.2 } }"),

@@ -107,6 +107,12 @@ TEST(RenderPatterns, AgreeWithPovRayPixelForPixel) {
     expect_flat_colours_agree("patterns.pov", 1.0);
 }
 
+// Layered textures (filter and transmit, a patterned layer, three layers), texture maps and
+// texture lists, one a map of a layered texture.
+TEST(RenderPatterns, LayersAndTexturePatternsAgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("layers.pov", 1.0);
+}
+
 TEST(RenderPatterns, AgreeWithPovRayUnderAnotherAssumedGamma) {
     expect_flat_colours_agree("patterns.pov", 2.2);
 }

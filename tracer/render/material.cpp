@@ -2,6 +2,8 @@
 #include "tracer/render/material.h"
 
 #include <cmath>
+#include <functional>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -48,11 +50,29 @@ public:
         const SourceLocation& at = where.file.empty() ? object_.location : where;
         throw Error(fmt::format("not supported: {} at {}", feature, at.str()));
     }
+    // A plain texture, layers of plain textures, or a texture pattern over textures.
     void check_texture(const Texture& texture) const {
-        if (texture.kind == Texture::Kind::layered) fail("layered textures", texture.location);
-        if (texture.kind == Texture::Kind::patterned)
-            fail(fmt::format("patterned textures ({})", pattern_name(texture.pattern->kind)),
-                 texture.pattern->location);
+        if (texture.kind == Texture::Kind::layered) {
+            for (const TextureRef& layer : texture.layers) check_texture(*layer);
+        } else if (texture.kind == Texture::Kind::patterned) {
+            check_texture_pattern(texture);
+        } else {
+            check_plain_texture(texture);
+        }
+    }
+    void check_texture_pattern(const Texture& texture) const {
+        const Pattern& pattern = *texture.pattern;
+        if (!pattern_is_evaluable(pattern))
+            fail(fmt::format("patterned textures ({})", pattern_name(pattern.kind)),
+                 pattern.location);
+        if (!texture.map || texture.map->entries.empty())
+            fail("a texture pattern without textures", texture.location);
+        for (const BlendMapEntry& entry : texture.map->entries) {
+            if (!entry.texture) fail("a texture pattern without textures", texture.location);
+            check_texture(*entry.texture);
+        }
+    }
+    void check_plain_texture(const Texture& texture) const {
         check_pigment(texture.pigment);
         // A normal without a pattern perturbs nothing.
         if (texture.normal && texture.normal->pattern->kind != PatternKind::plain)
@@ -98,7 +118,8 @@ private:
     const ObjectInstance& object_;
 };
 
-// The physical material of a pigment colour under a finish (README.md beside this file).
+// The physical material of a pigment colour under a finish (README.md beside this file),
+// before conserve_energy (applied once to what the texture's parts make together).
 Material material_of(const Colour& c, const Finish& f, double ior, double emission_scale) {
     Material m;
     const Rgb pigment = clamp01(c.rgb());
@@ -121,8 +142,7 @@ Material material_of(const Colour& c, const Finish& f, double ior, double emissi
     m.mirror_max = clamp01(f.reflection_max);
     m.mirror_falloff = f.reflection_falloff;
     m.mirror_fresnel = f.reflection_fresnel;
-    m.emission = emission_scale * (f.emission * pigment);
-    conserve_energy(m);
+    m.emission = (emission_scale * opacity) * (f.emission * pigment);  // as POV-Ray weighs it
     return m;
 }
 
@@ -131,6 +151,133 @@ void add_spectra(Material& m) {
     m.spectra = {upsample_reflectance(m.diffuse), upsample_reflectance(m.glossy),
                  upsample_reflectance(m.mirror_min), upsample_reflectance(m.mirror_max),
                  upsample_reflectance(m.transmission)};
+}
+
+// Adds `m` weighted per channel to `sum`, lobe by lobe: what layers and texture patterns
+// make. The shapes of the lobes (highlight exponent, mirror falloff and Fresnel) come from the
+// parts that have them; check_lobe_shapes makes sure those agree.
+void add_weighted(Material& sum, const Material& m, Rgb weight) {
+    if (!is_black(m.glossy)) sum.glossy_exponent = m.glossy_exponent;
+    if (!is_black(m.mirror_max)) {
+        sum.mirror_falloff = m.mirror_falloff;
+        sum.mirror_fresnel = m.mirror_fresnel;
+    }
+    sum.ior = m.ior;
+    sum.diffuse += weight * m.diffuse;
+    sum.glossy += weight * m.glossy;
+    sum.mirror_min += weight * m.mirror_min;
+    sum.mirror_max += weight * m.mirror_max;
+    sum.transmission += weight * m.transmission;
+    sum.emission += weight * m.emission;
+}
+
+const Rgb kWhite{1, 1, 1};
+
+// Every plain texture a texture is made of.
+void for_each_plain_texture(const Texture& texture,
+                            const std::function<void(const Texture&)>& visit) {
+    if (texture.kind == Texture::Kind::layered) {
+        for (const TextureRef& layer : texture.layers) for_each_plain_texture(*layer, visit);
+    } else if (texture.kind == Texture::Kind::patterned) {
+        for (const BlendMapEntry& entry : texture.map->entries)
+            for_each_plain_texture(*entry.texture, visit);
+    } else {
+        visit(texture);
+    }
+}
+
+bool texture_varies(const Texture& texture) {
+    bool varies = texture.kind == Texture::Kind::patterned;
+    for_each_plain_texture(texture, [&](const Texture& plain) {
+        varies = varies || plain.pigment.pattern->kind != PatternKind::plain;
+    });
+    return varies;
+}
+
+}  // namespace
+
+// The material of a texture at a point: a plain texture's pigment colour under its finish; a
+// layered one's layers from the bottom up, each seen through the filter and transmit of the
+// layers above it (POV-Ray's layering); a texture pattern's textures blended by its map.
+struct ObjectMaterial::Maker {
+    double ior, emission_scale;
+    const ColourDecoding& decoding;
+
+    bool make(const Texture& texture, Vec3 point, Material& out) const {
+        if (!combine(texture, point, out)) return false;
+        conserve_energy(out);
+        return true;
+    }
+
+private:
+    bool combine(const Texture& texture, Vec3 point, Material& out) const {
+        if (texture.kind == Texture::Kind::layered) return layered(texture, point, out);
+        if (texture.kind == Texture::Kind::patterned) return patterned(texture, point, out);
+        Colour colour = texture.pigment.colour;
+        if (texture.pigment.pattern->kind != PatternKind::plain &&
+            !evaluate_pigment(texture.pigment, point, colour))
+            return false;
+        out = material_of(decoding(colour), *texture.finish, ior, emission_scale);
+        return true;
+    }
+    bool layered(const Texture& texture, Vec3 point, Material& out) const {
+        if (!combine(*texture.layers.front(), point, out)) return false;
+        for (size_t i = 1; i < texture.layers.size(); ++i) {
+            Material layer;
+            if (!combine(*texture.layers[i], point, layer)) return false;
+            const Rgb through = layer.transmission;
+            layer.transmission = {};
+            Material sum;
+            add_weighted(sum, layer, kWhite);
+            add_weighted(sum, out, through);
+            out = sum;
+        }
+        return true;
+    }
+    bool patterned(const Texture& texture, Vec3 point, Material& out) const {
+        double value = 0;
+        MapBlend blend;
+        if (!evaluate_pattern(*texture.pattern, point, value) ||
+            !look_up_map(*texture.map, value, blend))
+            return false;
+        const auto& entries = texture.map->entries;
+        if (!combine(*entries[blend.low].texture, point, out)) return false;
+        if (blend.weight == 0) return true;
+        Material high;
+        if (!combine(*entries[blend.high].texture, point, high)) return false;
+        Material sum;
+        add_weighted(sum, out, (1 - blend.weight) * kWhite);
+        add_weighted(sum, high, blend.weight * kWhite);
+        out = sum;
+        return true;
+    }
+};
+
+namespace {
+
+// One material holds one highlight and one mirror lobe: the textures a layered or patterned
+// texture combines must agree on their shapes where they have them.
+void check_lobe_shapes(const Texture& texture, const Refusal& refusal) {
+    const Material* glossy = nullptr;
+    const Material* mirror = nullptr;
+    std::vector<Material> parts;
+    for_each_plain_texture(texture, [&](const Texture& plain) {
+        parts.push_back(material_of({1, 1, 1, 0, 0}, *plain.finish, 1, 1));
+    });
+    for (const Material& part : parts) {
+        if (!is_black(part.glossy)) {
+            if (glossy && glossy->glossy_exponent != part.glossy_exponent)
+                refusal.fail("textures combining highlights of different sizes", texture.location);
+            glossy = &part;
+        }
+        if (!is_black(part.mirror_max)) {
+            if (mirror && (mirror->mirror_falloff != part.mirror_falloff ||
+                           mirror->mirror_fresnel != part.mirror_fresnel))
+                refusal.fail("textures combining reflections of different falloff or fresnel",
+                             texture.location);
+            mirror = &part;
+        }
+    }
 }
 
 }  // namespace
@@ -147,23 +294,28 @@ ObjectMaterial::ObjectMaterial(const ObjectInstance& object, double emission_sca
     if (!appearance.texture) return;  // POV-Ray renders an untextured object black
     ior_ = appearance.interior ? appearance.interior->ior : 1.0;
     const Texture& texture = *appearance.texture;
-    if (texture.pigment.pattern->kind != PatternKind::plain) texture_ = appearance.texture;
-    // A patterned pigment's uniform material says what every point shares: whether it emits.
-    const Colour white{1, 1, 1, 0, 0};
-    uniform_ = material_of(texture_ ? white : decoding(texture.pigment.colour), *texture.finish,
-                           ior_, emission_scale);
+    check_lobe_shapes(texture, refusal);
+    for_each_plain_texture(texture, [&](const Texture& plain) {
+        emits_ = emits_ || !is_black(plain.finish->emission);
+    });
+    if (texture_varies(texture)) {
+        texture_ = appearance.texture;
+        return;
+    }
+    maker().make(texture, {}, uniform_);
+    emits_ = !is_black(uniform_.emission);
     add_spectra(uniform_);
 }
 
+ObjectMaterial::Maker ObjectMaterial::maker() const { return {ior_, emission_scale_, decoding_}; }
+
 const Material& ObjectMaterial::at(Vec3 point, Material& scratch) const {
     if (!texture_) return uniform_;
-    Colour colour;
-    if (!evaluate_pigment(texture_->pigment, point, colour))
-        throw Error(fmt::format(
-            "not supported: pigment pattern '{}' at {} (its colour at ({}, {}, {}) is not known)",
-            pattern_name(texture_->pigment.pattern->kind),
-            texture_->pigment.pattern->location.str(), point.x, point.y, point.z));
-    scratch = material_of(decoding_(colour), *texture_->finish, ior_, emission_scale_);
+    if (!maker().make(*texture_, point, scratch))
+        throw Error(
+            fmt::format("not supported: the texture at {} (its value at ({}, {}, {}) is "
+                        "not known)",
+                        texture_->location.str(), point.x, point.y, point.z));
     return scratch;
 }
 

@@ -43,10 +43,10 @@ LobeColours<SampledSpectrum> lobe_colours(const Material& m, const SampledWavele
 // irradiance receiver stands for.
 const Material& white_lambertian();
 
-// An object's material at its surface points: one material for a uniform pigment; for a
-// patterned pigment, the material of the pigment's colour at the point (world coordinates,
-// where the object's textures are placed) under the texture's finish. Patterns whose colour
-// is not known exactly everywhere (noise, turbulence, images) are refused.
+// An object's material at its surface points: one material for a texture the same everywhere;
+// else the material made at the point (world coordinates, where the object's textures are
+// placed) from its pigment patterns, layers and texture patterns. Patterns the scene language
+// cannot evaluate (images, surface coordinates, ...) are refused.
 class ObjectMaterial {
 public:
     // Refuses what the renderer does not render of the object's appearance (Error, "not
@@ -56,17 +56,19 @@ public:
                    const ColourDecoding& decoding);
 
     // The material at `point`: the uniform one, or one made in `scratch` (without the spectra
-    // of spectral transport, which refuses patterned pigments).
+    // of spectral transport, which refuses materials that vary).
     const Material& at(Vec3 point, Material& scratch) const;
     bool patterned() const { return texture_ != nullptr; }
-    // Whether some point emits (a patterned pigment: where its colour is not black).
-    bool emits() const { return !is_black(uniform_.emission); }
-    // The uniform material (a patterned pigment's under a white pigment).
-    const Material& uniform() const { return uniform_; }
+    // Whether some point may emit (a texture that varies: some part has finish emission).
+    bool emits() const { return emits_; }
 
 private:
+    struct Maker;
+    Maker maker() const;
+
     Material uniform_;
-    std::shared_ptr<const Texture> texture_;  // set for a patterned pigment
+    std::shared_ptr<const Texture> texture_;  // set when the material varies
+    bool emits_ = false;
     double ior_ = 1, emission_scale_ = 1;
     ColourDecoding decoding_;
 };

@@ -66,14 +66,23 @@ std::string resolve_image_file(Parser& parser, const std::string& name, const To
                                const std::string& type, const std::string& what);
 // `function { pattern { PATTERN } }`: after `pattern`.
 std::shared_ptr<const Pattern> parse_function_pattern(Parser& parser, const Token& keyword);
-// A pattern's value or a pigment's colour at a point, for pattern and pigment functions;
-// false when it cannot be evaluated (the caller reports that as not supported): exact for
-// solid colours and the patterns that need no noise (pattern_evaluation.cpp lists them).
+// A pattern's value or a pigment's colour at a point, for pattern and pigment functions and
+// the renderer; false when it cannot be evaluated (the caller reports that as not supported):
+// pattern_evaluation.cpp lists the patterns it evaluates.
 bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value);
 bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour);
-// Whether evaluate_pigment knows the pigment's colour. What it cannot evaluate (noise,
-// turbulence, images, surface coordinates) it cannot anywhere, so one point tells.
+// Whether evaluate_pattern / evaluate_pigment know the value. What they cannot evaluate
+// (images, surface coordinates, unsupported patterns) they cannot anywhere, so one point tells.
+bool pattern_is_evaluable(const Pattern& pattern);
 bool pigment_is_evaluable(const Pigment& pigment);
+// POV-Ray's lookup of a map at a pattern value: at or past the last entry that entry, at or
+// before the first the first, else the two entries around the value blended linearly (weight:
+// the share of `high`). False for an empty map.
+struct MapBlend {
+    size_t low = 0, high = 0;
+    double weight = 0;
+};
+bool look_up_map(const BlendMap& map, double value, MapBlend& blend);
 
 // ---- scene items
 CameraRef parse_camera(Parser& parser, const Token& keyword);

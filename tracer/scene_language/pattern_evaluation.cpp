@@ -251,22 +251,15 @@ Colour blend(const Colour& a, const Colour& b, double t) {
             a.transmit + t * (b.transmit - a.transmit)};
 }
 
-// POV-Ray's lookup: at or past the last entry its item, at or before the first the first's,
-// else the two entries around the value, blended linearly.
-template <class Item, class Blend>
-bool look_up(const BlendMap& map, double v, Item& out, Blend&& item_at) {
-    const auto& e = map.entries;
-    if (e.empty()) return false;
-    if (v >= e.back().value) return item_at(e.back(), out);
-    if (v <= e.front().value) return item_at(e.front(), out);
-    size_t i = 1;
-    while (i < e.size() && !(v < e[i].value)) ++i;
-    if (i >= e.size()) return item_at(e.back(), out);
+template <class Item, class ItemAt>
+bool look_up(const BlendMap& map, double v, Item& out, ItemAt&& item_at) {
+    MapBlend where;
+    if (!look_up_map(map, v, where)) return false;
+    if (where.weight == 0) return item_at(map.entries[where.low], out);
     Item low, high;
-    if (!item_at(e[i - 1], low) || !item_at(e[i], high)) return false;
-    const double span = e[i].value - e[i - 1].value;
-    const double t = span > 0 ? (v - e[i - 1].value) / span : 0;
-    out = blend(low, high, t);
+    if (!item_at(map.entries[where.low], low) || !item_at(map.entries[where.high], high))
+        return false;
+    out = blend(low, high, where.weight);
     return true;
 }
 
@@ -309,9 +302,34 @@ bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value) {
     return true;
 }
 
+bool look_up_map(const BlendMap& map, double v, MapBlend& blend) {
+    const auto& e = map.entries;
+    if (e.empty()) return false;
+    blend = {};
+    if (v >= e.back().value) {
+        blend.low = blend.high = e.size() - 1;
+        return true;
+    }
+    if (v <= e.front().value) return true;
+    size_t i = 1;
+    while (i < e.size() && !(v < e[i].value)) ++i;
+    blend.low = i - 1;
+    blend.high = i;
+    const double span = e[i].value - e[i - 1].value;
+    blend.weight = span > 0 ? (v - e[i - 1].value) / span : 0;
+    return true;
+}
+
+constexpr Vec3 kProbe{0.31, -0.72, 1.13};
+
+bool pattern_is_evaluable(const Pattern& pattern) {
+    double value;
+    return evaluate_pattern(pattern, kProbe, value);
+}
+
 bool pigment_is_evaluable(const Pigment& pigment) {
     Colour colour;
-    return evaluate_pigment(pigment, {0.31, -0.72, 1.13}, colour);
+    return evaluate_pigment(pigment, kProbe, colour);
 }
 
 bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour) {
