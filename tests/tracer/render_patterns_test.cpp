@@ -174,7 +174,7 @@ TEST(RenderPatterns, SpectralTransportRefusesThem) {
         FAIL() << "rendered";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find(
-                      "not supported: patterned pigments or a sky_sphere in spectral"),
+                      "not supported: patterned pigments, a sky_sphere or fog in spectral"),
                   std::string::npos)
             << e.what();
     }

@@ -12,8 +12,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include "core/error.h"
 #include "tracer/render/path_integrator.h"
 #include "tracer/render/renderer.h"
 
@@ -272,6 +274,11 @@ const std::vector<std::string>& bidirectional_layers() {
 std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene,
                                                           const RenderSettings& settings,
                                                           const RenderResult& start) {
+    if (scene.fog().present())
+        throw Error(
+            fmt::format("not supported: fog with integrator \"bidirectional\" at {} "
+                        "(the path integrator renders it)",
+                        scene.description().atmosphere.fogs.front().location.str()));
     if (spectral_transport(scene, settings))
         return std::make_unique<BidirectionalPasses<SampledSpectrum>>(scene, settings, start);
     return std::make_unique<BidirectionalPasses<Rgb>>(scene, settings, start);

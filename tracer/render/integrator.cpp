@@ -75,7 +75,8 @@ bool spectral_transport(const RenderScene& scene, const RenderSettings& settings
     // A colour fitted to a spectrum at every point a path meets would cost more than the path.
     if (spectral && scene.has_varying_colours())
         throw Error(
-            "not supported: patterned pigments or a sky_sphere in spectral transport (render in "
+            "not supported: patterned pigments, a sky_sphere or fog in spectral transport (render "
+            "in "
             "RGB: without "
             "--spectral and without global_settings { spectral on })");
     return spectral;

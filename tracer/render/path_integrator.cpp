@@ -66,6 +66,15 @@ template <class Q>
     for (;; ++s.depth) {
         ++rays;
         const bool found = scene_.intersect(s.origin, s.direction, 0, kInfinity, s.kind, hit);
+        if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses fog
+            if (scene_.fog().present()) {
+                Rgb through, added;
+                scene_.fog().along(s.origin, s.direction, found ? hit.t : kInfinity, through,
+                                   added);
+                sum += s.beta * added;
+                s.beta *= through;
+            }
+        }
         if (lights.has_bodies()) {
             // Lights are not geometry: a ray collects one if it crosses its body before the
             // first surface that casts shadows, which is exactly what light sampling tests.
@@ -143,6 +152,8 @@ std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene,
         throw Error(
             "the naive ray set (--naive-sources) has no body and cannot be light sampled: only "
             "photons carry its light; render it with integrator \"bidirectional\"");
+    if (scene.fog().present() && !scene.description().ray_sources.empty())
+        throw Error("not supported: fog with ray-file sources (their bodies are not dimmed)");
     LightSet lights(scene.description(), scene.units(), false);
     if (spectral_transport(scene, settings))
         return std::make_unique<PathTracing<SampledSpectrum>>(scene, std::move(lights));

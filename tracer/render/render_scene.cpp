@@ -82,7 +82,6 @@ void refuse_what_is_not_rendered(const SceneDescription& scene) {
     check_camera_renderable(scene.camera);
     for (const LightSource& light : scene.lights) refuse_unrendered(light);
     const Atmosphere& atmosphere = scene.atmosphere;
-    if (!atmosphere.fogs.empty()) refuse("fog", atmosphere.fogs.front().location);
     if (!atmosphere.rainbows.empty()) refuse("rainbow", atmosphere.rainbows.front().location);
     if (!atmosphere.media.empty()) refuse("atmospheric media", atmosphere.media.front().location);
 }
@@ -96,7 +95,10 @@ SceneUnits units_of(const SceneDescription& scene) {
 }  // namespace
 
 RenderScene::RenderScene(const SceneDescription& scene)
-    : description_(scene), units_(units_of(scene)), sky_(scene, 1 / units_.per_square_metre()) {
+    : description_(scene),
+      units_(units_of(scene)),
+      sky_(scene, 1 / units_.per_square_metre()),
+      fog_(scene, 1 / units_.per_square_metre()) {
     refuse_what_is_not_rendered(scene);
     const double to_internal = 1 / units_.per_square_metre();
     // Refuses, at load, what has no physical reading.
@@ -146,7 +148,8 @@ bool RenderScene::emits(int object) const {
 
 bool RenderScene::has_varying_colours() const {
     auto patterned = [](const ObjectMaterial& m) { return m.patterned(); };
-    return !sky_.uniform() || std::any_of(materials_.begin(), materials_.end(), patterned) ||
+    return !sky_.uniform() || fog_.present() ||
+           std::any_of(materials_.begin(), materials_.end(), patterned) ||
            std::any_of(part_materials_.begin(), part_materials_.end(), patterned);
 }
 

@@ -11,6 +11,7 @@
 
 #include <embree3/rtcore.h>
 
+#include "tracer/render/fog.h"
 #include "tracer/render/material.h"
 #include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/sky.h"
@@ -62,11 +63,13 @@ public:
     }
     // Whether some point of the object emits light.
     bool emits(int object) const;
-    // Whether some colour is made point by point: a patterned pigment or a sky_sphere.
+    // Whether some colour is made point by point: a patterned pigment, a sky_sphere or fog.
     bool has_varying_colours() const;
     const SceneUnits& units() const { return units_; }
     // What rays that leave the scene see (background, sky_sphere), renderer units.
     const Sky& sky() const { return sky_; }
+    // What eye paths see through between their vertices (fog.h).
+    const FogMedium& fog() const { return fog_; }
     // Offset that moves a ray origin off the surface it starts on (scene units).
     double epsilon() const { return epsilon_; }
 
@@ -115,6 +118,7 @@ private:
     std::vector<std::vector<int>> part_material_;  // by object, by part: index or -1
     std::vector<uint8_t> no_shadow_;  // per object: read on every hit, apart from the big objects
     Sky sky_;
+    FogMedium fog_;
     double epsilon_ = 1e-6;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
