@@ -256,6 +256,9 @@ int run(int argc, char** argv) {
         return 0;
     }
     RenderScene scene(description);
+    if (!options.quiet)
+        for (const std::string& note : scene.notes())
+            std::fprintf(stderr, "raytrace: note: %s\n", note.c_str());
     const RenderSettings settings = render_settings(options, description, size);
     if (options.bench) {
         run_raytrace_benchmark(scene, settings);

@@ -99,7 +99,9 @@ void expect_flat_colours_agree(const std::string& scene_name, double assumed_gam
     std::printf("%s, assumed_gamma %g, %s: colours agree on %d of %zu pixels (%.4f)\n",
                 scene_name.c_str(), assumed_gamma, camera.empty() ? "its camera" : camera.c_str(),
                 agree, hits.size(), fraction);
-    EXPECT_GT(patterned, width * height * 9 / 10);
+    // Most pixels show an object (the wide-angle cameras see sky too): nothing, black in both,
+    // cannot carry the agreement.
+    EXPECT_GT(patterned, width * height / 2);
     EXPECT_GE(fraction, 0.98);
 }
 
@@ -140,6 +142,20 @@ TEST(RenderPatterns, AgreeWithPovRayThroughAnOrthographicCamera) {
     expect_flat_colours_agree(
         "patterns.pov", 1.0,
         "camera { orthographic location <3, 9, -6> look_at <0, 0, 0> right 16*x up 12*y }");
+}
+
+// The wide-angle projections: spherical, the four cylinders, ultra_wide_angle and fisheye (its
+// corners outside the circle black in both), turned and with right and up of other lengths.
+TEST(RenderPatterns, AgreeWithPovRayThroughTheWideAngleCameras) {
+    for (const char* camera :
+         {"camera { spherical location <0, 5, -7> look_at <0, 0, 0.5> angle 220 110 }",
+          "camera { cylinder 1 location <1, 8, -8> look_at <0, 0, 0.5> angle 150 up 1.5*y }",
+          "camera { cylinder 2 location <0, 9, -7> look_at <0, 0, 0.5> angle 120 right 2*x }",
+          "camera { cylinder 3 location <0, 9, -7> look_at <0, 0, 0.5> angle 140 up 6*y }",
+          "camera { cylinder 4 location <0, 9, -7> look_at <0, 0, 0.5> angle 100 right 12*x }",
+          "camera { ultra_wide_angle location <0, 9, -5> look_at <0, 0, 0.5> angle 160 }",
+          "camera { fisheye location <0, 9, -3> look_at <0, 0, 0.5> angle 170 rotate y*10 }"})
+        expect_flat_colours_agree("patterns.pov", 1.0, camera);
 }
 
 // The colour moves with the object: a checker on a box translated by one square shows the

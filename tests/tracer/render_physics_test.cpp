@@ -181,6 +181,33 @@ TEST(RenderPointLight, ReceiverOnPlaneRecordsInverseSquareCosine) {
         }
 }
 
+TEST(RenderPointLight, ShadowlessLightPassesThroughObjects) {
+    // The receiver of the test above under a black box that covers it: an ordinary light leaves
+    // it dark; a shadowless one (POV-Ray's) lights it as if the box were not there, exactly
+    // I cos(theta) / d^2 (the box is black, so nothing else reaches the floor).
+    auto floor_map = [](const std::string& light) {
+        RenderSettings settings;
+        settings.render_image = false, settings.passes = 2, settings.seed = 1;
+        return render_text(light + R"(
+            box { <-1500, 100, -1500>, <1500, 200, 1500> pigment { rgb 0 } }
+            plane { y, 0 pigment { rgb 0.7 } finish { diffuse 1 } }
+            illuminance_receiver { <-1000, 0, -1000>, <0, 0, 2000>, <2000, 0, 0>
+                resolution <5, 4> name "floor" })",
+                           settings)
+            .receivers.at(0);
+    };
+    const ReceiverMap dark = floor_map("light_source { <100, 1000, -50> color rgb 2 }");
+    const ReceiverMap lit = floor_map("light_source { <100, 1000, -50> color rgb 2 shadowless }");
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 5; ++i) {
+            const Vec3 to_light = Vec3{100, 1000, -50} - lit.cell_centre(i, j);
+            const double d_m = length(to_light) / 1000, cos_theta = to_light.y / length(to_light);
+            EXPECT_EQ(dark.irradiance.photometric_mean(i, j), 0);
+            EXPECT_NEAR(lit.irradiance.photometric_mean(i, j), 683 * 2 * cos_theta / (d_m * d_m),
+                        1e-9 * 683 * 2);
+        }
+}
+
 TEST(RenderPointLight, CameraSeesAPlaneWithLambertsLuminance) {
     // A white diffuse plane (albedo 0.7) 1 m from a point light of I = 2 W/sr, seen straight on
     // through a 1 degree camera between them: L = albedo / pi x I / d^2 in every channel

@@ -274,6 +274,12 @@ const std::vector<std::string>& bidirectional_layers() {
 std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene,
                                                           const RenderSettings& settings,
                                                           const RenderResult& start) {
+    for (const LightSource& light : scene.description().lights)
+        if (light.shadowless)
+            throw Error(
+                fmt::format("not supported: a shadowless light_source with integrator "
+                            "\"bidirectional\" at {} (the path integrator renders it)",
+                            light.location.str()));
     if (scene.fog().present())
         throw Error(
             fmt::format("not supported: fog with integrator \"bidirectional\" at {} "

@@ -1,6 +1,8 @@
 // Camera rays in POV-Ray's frame (see camera.h).
 #include "tracer/render/camera.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "core/error.h"
@@ -27,11 +29,12 @@ const char* projection_name(CameraProjection projection) {
 }  // namespace
 
 void check_camera_renderable(const Camera& camera) {
-    if (camera.projection != CameraProjection::perspective &&
-        camera.projection != CameraProjection::orthographic)
-        throw Error(
-            fmt::format("not supported: {} camera (only perspective and orthographic) at {}",
-                        projection_name(camera.projection), camera.projection_location.str()));
+    if (camera.projection == CameraProjection::mesh ||
+        camera.projection == CameraProjection::omnimax ||
+        camera.projection == CameraProjection::panoramic)
+        throw Error(fmt::format("not supported: {} camera at {}",
+                                projection_name(camera.projection),
+                                camera.projection_location.str()));
     if (camera.focal_blur.aperture != 0)
         throw Error(fmt::format("not supported: focal blur (camera aperture {}) at {}",
                                 camera.focal_blur.aperture, camera.focal_blur_location.str()));
@@ -44,14 +47,49 @@ SceneCamera::SceneCamera(const Camera& camera, int width, int height)
     : camera_(camera), width_(width), height_(height) {
     check_camera_renderable(camera);
     if (width < 1 || height < 1) throw Error("image size must be at least 1 x 1 pixels");
+    d_ = normalized(camera.direction);
+    r_ = normalized(camera.right);
+    u_ = normalized(camera.up);
+    right_over_up_ = length(camera.right) / length(camera.up);
+    angle_ = camera.angle * kRadiansPerDegree;
+    vertical_angle_ = camera.vertical_angle * kRadiansPerDegree;
 }
 
-CameraRay SceneCamera::ray(double x, double y) const {
-    const double s = x / width_, t = y / height_;
-    const Vec3 on_plane = (s - 0.5) * camera_.right + (0.5 - t) * camera_.up;
-    if (camera_.projection == CameraProjection::orthographic)
-        return {camera_.location + on_plane, normalized(camera_.direction)};
-    return {camera_.location, normalized(camera_.direction + on_plane)};
+CameraRay SceneCamera::ray(double px, double py) const {
+    const double x = px / width_ - 0.5, y = 0.5 - py / height_;
+    const Camera& c = camera_;
+    // The unit vector at `around` from D toward R and `up` from that toward U.
+    auto turned = [&](double around, double up) {
+        return std::cos(up) * (std::sin(around) * r_ + std::cos(around) * d_) + std::sin(up) * u_;
+    };
+    switch (c.projection) {
+        case CameraProjection::orthographic: return {c.location + x * c.right + y * c.up, d_};
+        case CameraProjection::spherical:
+            return {c.location, turned(x * angle_, y * vertical_angle_)};
+        case CameraProjection::cylinder: {
+            const Vec3 around_up = std::sin(x * angle_) * r_ + std::cos(x * angle_) * d_;
+            const Vec3 around_right = std::cos(y * angle_) * d_ + std::sin(y * angle_) * u_;
+            switch (c.cylinder_type) {
+                case 1: return {c.location, normalized(around_up + y * c.up)};
+                case 2: return {c.location, normalized(around_right + x * c.right)};
+                case 3: return {c.location + y * c.up, around_up};
+                default: return {c.location + x * c.right, around_right};
+            }
+        }
+        case CameraProjection::ultra_wide_angle: {
+            const double ax = x * angle_, ay = y * angle_ / right_over_up_;
+            return {c.location, normalized(std::sin(ax) * r_ + std::sin(ay) * u_ +
+                                           std::cos(ax) * std::cos(ay) * d_)};
+        }
+        case CameraProjection::fisheye: {
+            const double fx = x * right_over_up_, r = std::hypot(fx, y);
+            if (r > 0.5) return {c.location, d_, false};
+            const double theta = r * angle_, phi = std::atan2(y, fx);
+            return {c.location, std::sin(theta) * (std::cos(phi) * r_ + std::sin(phi) * u_) +
+                                    std::cos(theta) * d_};
+        }
+        default: return {c.location, normalized(c.direction + x * c.right + y * c.up)};
+    }
 }
 
 }  // namespace rayset::tracer

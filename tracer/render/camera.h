@@ -1,8 +1,15 @@
 // The camera of a SceneDescription, kept in POV-Ray's frame. The image point (s, t) in [0, 1]^2
-// (t downward) is the point (s - 0.5) right + (0.5 - t) up of the image plane; through it
-// - perspective: a ray from the location along direction + that point;
-// - orthographic: a ray from the location + that point along the direction (the parser has
-//   sized right and up from the angle, as POV-Ray does).
+// (t downward) has the offsets x = s - 0.5 and y = 0.5 - t; with D, R, U the unit direction,
+// right and up, and A the camera's angle in degrees (read back from POV-Ray 3.7's renders):
+// - perspective: a ray from the location along direction + x right + y up;
+// - orthographic: from the location + x right + y up along the direction (the parser has sized
+//   right and up from the angle, as POV-Ray does);
+// - spherical: longitude x A and latitude y V (V the vertical angle) about D;
+// - cylinder 1: around U by x A, rising y up; cylinder 2: around R by y A, along x right;
+//   cylinders 3 and 4: the same with the viewpoint moved by y up (3) or x right (4) instead;
+// - ultra_wide_angle: sin(x A) R + sin(y A |up| / |right|) U + cos(x A) cos(...) D;
+// - fisheye: at the angle r A from D, r = |(x |right| / |up|, y)|; none beyond r = 1/2 (POV-Ray
+//   leaves those pixels black).
 // Like POV-Ray, the image size does not change right/up: a 4:3 image of a square camera
 // is stretched exactly as POV-Ray stretches it.
 #pragma once
@@ -12,12 +19,13 @@
 namespace rayset::tracer {
 
 // Throws rayset::Error ("not supported: FEATURE at FILE:LINE:COLUMN") for what the camera does
-// not render: a projection other than perspective and orthographic, focal blur, a normal
+// not render: the mesh_camera, omnimax and panoramic projections, focal blur, a normal
 // perturbation.
 void check_camera_renderable(const Camera& camera);
 
 struct CameraRay {
     Vec3 origin, direction;  // direction of unit length
+    bool exists = true;      // false where the projection casts no ray (outside a fisheye)
 };
 
 class SceneCamera {
@@ -31,6 +39,9 @@ public:
 private:
     Camera camera_;
     int width_, height_;
+    Vec3 d_, r_, u_;                         // unit direction, right and up
+    double right_over_up_ = 1;               // |right| / |up|
+    double angle_ = 0, vertical_angle_ = 0;  // radians
 };
 
 }  // namespace rayset::tracer

@@ -20,7 +20,8 @@ namespace rayset::tracer {
 // nothing blocks it.
 template <class Q>
 struct ShadowRayOf {
-    bool cast = false;  // false: the sample brings nothing, no shadow ray
+    bool cast = false;        // false: the sample brings nothing, no shadow ray
+    bool shadowless = false;  // brings it whatever lies between (POV-Ray's shadowless light)
     Vec3 origin, direction;
     double t_far = 0;
     Q contribution{};
@@ -39,6 +40,7 @@ ShadowRayOf<Q> sample_direct_light(const RenderScene& scene, const LightSet& lig
     const Q f = bsdf.eval(light->wi);
     if (is_black(f) || is_black(light->Li)) return shadow;
     shadow.cast = true;
+    shadow.shadowless = light->shadowless;
     shadow.origin = scene.offset(point, normal, light->wi);
     shadow.direction = light->wi;
     shadow.t_far = light->distance - scene.epsilon();
@@ -51,6 +53,7 @@ ShadowRayOf<Q> sample_direct_light(const RenderScene& scene, const LightSet& lig
 template <class Q>
 Q unless_occluded(const RenderScene& scene, const ShadowRayOf<Q>& shadow, uint64_t& rays) {
     if (!shadow.cast) return {};
+    if (shadow.shadowless) return shadow.contribution;
     ++rays;
     if (scene.occluded(shadow.origin, shadow.direction, 0, shadow.t_far)) return {};
     return shadow.contribution;

@@ -17,12 +17,13 @@ struct LightUniforms {
 
 template <class Q>
 struct LightLiSampleOf {
-    Vec3 wi;              // unit, from the reference point toward the light
-    double distance = 0;  // to the light along wi (the shadow ray's length), scene units
-    Q Li;                 // arriving radiance (a point light's intensity / d^2): divide by pdf
-    double pdf = 0;       // solid-angle density including the choice of the light; that choice
-                          // alone for a point light
-    bool delta = false;   // a point light: no other strategy can find it, no MIS
+    Vec3 wi;                  // unit, from the reference point toward the light
+    double distance = 0;      // to the light along wi (the shadow ray's length), scene units
+    Q Li;                     // arriving radiance (a point light's intensity / d^2): divide by pdf
+    double pdf = 0;           // solid-angle density including the choice of the light; that choice
+                              // alone for a point light
+    bool delta = false;       // a point light: no other strategy can find it, no MIS
+    bool shadowless = false;  // POV-Ray's shadowless light: nothing blocks it, no shadow ray
 };
 
 template <class Q>

@@ -73,6 +73,7 @@ std::optional<LightLiSampleOf<Q>> PointLight::sample_Li(
     out.Li = factor * emitted(intensity, intensity_spectrum, wavelengths);
     out.pdf = chosen;
     out.delta = true;
+    out.shadowless = shadowless;
     return out;
 }
 
@@ -207,13 +208,13 @@ PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const Sc
     PovrayLights out;
     for (const LightSource& source : lights) {
         const std::string where = source.location.str();
-        if (source.shadowless)
-            throw Error(
-                fmt::format("not supported: shadowless light_source (not physical) at {}", where));
+        if (source.shadowless && source.area_light)
+            throw Error(fmt::format("not supported: shadowless area_light at {}", where));
         if (source.area_light && (source.circular || source.orient))
             throw Error(fmt::format(
                 "not supported: circular/orient area_light (only rectangles) at {}", where));
         PointLight point = point_light_of(source, decoding(source.colour), units, where);
+        point.shadowless = source.shadowless;
         const double solid_angle = effective_solid_angle(point);
         point.emitted_power = average(point.intensity) * solid_angle;
         if (source.area_light)

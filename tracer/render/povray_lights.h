@@ -21,7 +21,8 @@ struct PointLight {
     Rgb intensity;
     IlluminantSpectrum intensity_spectrum;  // the same for spectral transport
     bool spot = false;
-    Vec3 axis;  // unit, toward point_at
+    bool shadowless = false;  // POV-Ray's shadowless light: its light passes through objects
+    Vec3 axis;                // unit, toward point_at
     double cos_radius = 0, cos_falloff = 0, tightness = 0;
     double emitted_power = 0;  // W, average over channels
 
@@ -81,7 +82,9 @@ struct PovrayLights {
     std::vector<RectLight> rects;
 };
 // The scene's light_source statements; throws rayset::Error, naming the statement, for what
-// has no physical reading (shadowless lights, fade powers other than 2, circular area lights).
+// it does not render (shadowless area lights, fade powers other than 2, circular area lights).
+// Shadowless point and spot lights light every point they face, as POV-Ray's do: not
+// physical (RenderScene::notes says so).
 PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const SceneUnits& units,
                                 const ColourDecoding& decoding);
 

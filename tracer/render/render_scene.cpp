@@ -104,6 +104,12 @@ RenderScene::RenderScene(const SceneDescription& scene)
     // Refuses, at load, what has no physical reading.
     const ColourDecoding decoding(scene.global);
     read_povray_lights(scene.lights, units_, decoding);
+    for (const LightSource& light : scene.lights)
+        if (light.shadowless)
+            notes_.push_back(fmt::format(
+                "the shadowless light_source at {} lights what it faces through every object, as "
+                "POV-Ray renders it (not physical)",
+                light.location.str()));
     for (const ObjectInstance& o : scene.objects) {
         materials_.emplace_back(o, to_internal, decoding);
         no_shadow_.push_back(o.no_shadow);

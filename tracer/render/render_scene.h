@@ -66,6 +66,9 @@ public:
     // Whether some colour is made point by point: a patterned pigment, a sky_sphere or fog.
     bool has_varying_colours() const;
     const SceneUnits& units() const { return units_; }
+    // What the scene asks for that is rendered as POV-Ray renders it rather than physically
+    // (shadowless lights), one sentence each, for the tools to show.
+    const std::vector<std::string>& notes() const { return notes_; }
     // What rays that leave the scene see (background, sky_sphere), renderer units.
     const Sky& sky() const { return sky_; }
     // What eye paths see through between their vertices (fog.h).
@@ -119,6 +122,7 @@ private:
     std::vector<uint8_t> no_shadow_;  // per object: read on every hit, apart from the big objects
     Sky sky_;
     FogMedium fog_;
+    std::vector<std::string> notes_;
     double epsilon_ = 1e-6;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;

@@ -118,7 +118,8 @@ private:
                             for (int k = 0; k < samples_; ++k) {
                                 const double px = x + rng.uniform_float(),
                                              py = y + rng.uniform_float();
-                                integrator_.camera_sample(camera_.ray(px, py), sink, rng, counted);
+                                const CameraRay ray = camera_.ray(px, py);
+                                if (ray.exists) integrator_.camera_sample(ray, sink, rng, counted);
                             }
                         }
                 }
@@ -358,7 +359,8 @@ std::vector<SurfaceHit> centre_hits(const RenderScene& scene, int width, int hei
         for (int x = 0; x < width; ++x) {
             const CameraRay ray = camera.ray(x + 0.5, y + 0.5);
             SurfaceHit& hit = hits[size_t(y) * width + x];
-            if (!scene.intersect(ray.origin, ray.direction, 0,
+            if (!ray.exists ||
+                !scene.intersect(ray.origin, ray.direction, 0,
                                  std::numeric_limits<double>::infinity(), RayKind::camera, hit))
                 hit.object = -1;
         }
