@@ -13,6 +13,7 @@
 #include "support/test_support.h"
 #include "tracer/scene_language/functions.h"
 #include "tracer/scene_language/scene_language.h"
+#include "tracer/scene_language/text_outline.h"
 
 namespace rayset::tracer {
 namespace {
@@ -303,7 +304,7 @@ TEST(ObjectsCurves, BicubicPatchAndText) {
               "a bicubic_patch needs 16 points, found 1 at test.pov:1:32");
 
     test::ScratchDir dir;
-    test::write_file(dir.file("font.ttf"), "not read while parsing");
+    fs::copy_file("/usr/share/povray-3.7/include/timrom.ttf", dir.file("font.ttf"));
     test::write_file(dir.file("scene.pov"),
                      "text { ttf \"font\" \"Hi\" 0.5, <0.1, 0> }\n"
                      "text { internal 1 concat(\"a\", \"b\") 1, 0 }\n");
@@ -317,11 +318,29 @@ TEST(ObjectsCurves, BicubicPatchAndText) {
     EXPECT_EQ(text.text, "Hi");
     EXPECT_DOUBLE_EQ(text.thickness, 0.5);
     expect_vec(text.offset, {0.1, 0, 0});
+    ASSERT_TRUE(text.outline);  // the glyphs' outlines, read while parsing
+    EXPECT_FALSE(text.outline->pieces.empty());
+    // Along y = 0.3 from the left: outside, then the H's left stem within its first 0.2.
+    EXPECT_FALSE(text.outline->inside(-0.01, 0.3));
+    bool stem = false;
+    for (double x = 0; x < 0.2; x += 0.005) stem = stem || text.outline->inside(x, 0.3);
+    EXPECT_TRUE(stem);
     const auto& internal = std::get<TextShape>(t.objects[1].shape);
     EXPECT_EQ(internal.internal_font, 1);  // povray 3.7 takes `internal` fonts
     EXPECT_TRUE(internal.font_path.empty());
     EXPECT_EQ(internal.text, "ab");
     expect_vec(internal.offset, {0, 0, 0});
+    // A file that is no font: an error naming it and the text statement.
+    test::write_file(dir.file("bad.ttf"), "no font");
+    test::write_file(dir.file("bad.pov"), "text { ttf \"bad\" \"Hi\" 0.5, 0 }\n");
+    try {
+        parse_scene_file(dir.file("bad.pov"));
+        ADD_FAILURE() << "a file that is no font was read";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot read the font"), std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("bad.pov:1:1"), std::string::npos) << e.what();
+    }
 }
 
 // ---------------------------------------------------------------- fields and functions

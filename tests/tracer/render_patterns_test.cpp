@@ -134,6 +134,11 @@ TEST(RenderShapes, PolynomialsAgreeWithPovRayPixelForPixel) {
     expect_flat_colours_agree("polynomials.pov", 1.0);
 }
 
+// Text in three of POV-Ray's fonts (curves, holes, an offset, turned, thick) and cut from a box.
+TEST(RenderShapes, TextAgreesWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("text.pov", 1.0);
+}
+
 // The orthographic camera, sized by its angle at the look_at distance and by right and up.
 TEST(RenderPatterns, AgreeWithPovRayThroughAnOrthographicCamera) {
     expect_flat_colours_agree(

@@ -107,6 +107,26 @@ TEST(RenderScene, AnalyticShapesHitWhereTheClosedFormsSay) {
     EXPECT_NEAR(h.normal.x, -1, 1e-6);
 }
 
+// Text: the glyph outline extruded along z from 0 to the thickness, its first glyph's left edge
+// at x = 0. Times Roman's "I" is a stem with serifs: its caps face -z and +z, its stem's walls
+// +-x; "O" has a hole where a ray along z passes through.
+TEST(RenderScene, TextIsTheOutlineExtruded) {
+    const Scene text("text { ttf \"timrom.ttf\" \"IO\" 0.5, 0 translate 10*z }");
+    SurfaceHit h = text.hit({0.15, 0.3, 0}, {0, 0, 1});  // the front cap through the stem
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 10, 1e-5);
+    EXPECT_NEAR(h.normal.z, -1, 1e-6);
+    h = text.hit({0.15, 0.3, 20}, {0, 0, -1});  // the back cap
+    EXPECT_NEAR(h.t, 9.5, 1e-5);
+    EXPECT_NEAR(h.normal.z, 1, 1e-6);
+    h = text.hit({-5, 0.3, 10.25}, {1, 0, 0});  // the stem's left wall, between the serifs
+    ASSERT_EQ(h.object, 0);
+    EXPECT_GT(h.t, 5);  // inside the serifs' span, which starts at x = 0
+    EXPECT_NEAR(h.normal.x, -1, 1e-3);
+    EXPECT_EQ(text.hit({0.342 + 0.36, 0.33, 0}, {0, 0, 1}).object, -1);  // the O's hole
+    EXPECT_EQ(text.hit({0.342 + 0.05, 0.33, 0}, {0, 0, 1}).object, 0);   // its left side
+}
+
 TEST(RenderScene, PlaneIsInfiniteUserGeometry) {
     const Scene s("plane { <0, 1, 1>, 2 }  sphere { <0,0,0>, 0.001 translate <1000,1000,1000> }");
     // Points with dot(n, p) = 2 with n = (0, 1, 1)/sqrt 2.

@@ -20,8 +20,8 @@ namespace rayset::tracer {
 namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
-// other than sphere, box, plane, triangle, mesh, cylinder, cone, torus, disc, quadric and
-// polynomials (solids.h
+// other than sphere, box, plane, triangle, mesh, cylinder, cone, torus, disc, text of a TrueType
+// font, quadric and polynomials (solids.h
 // refuses what it cannot take into CSG, clipped_by, bounded_by or inverse), and the modifiers
 // that change what is seen. Photon and
 // radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
@@ -38,6 +38,7 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<MeshShape>(s) || std::holds_alternative<MeshFileShape>(s) ||
         std::holds_alternative<CylinderShape>(s) || std::holds_alternative<ConeShape>(s) ||
         std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
+        (std::holds_alternative<TextShape>(s) && std::get<TextShape>(s).outline) ||
         std::holds_alternative<CsgShape>(s) || std::holds_alternative<PolynomialShape>(s) ||
         std::holds_alternative<QuadricShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
@@ -84,7 +85,8 @@ Vec3 unit_or_up(Vec3 v) {
 // The shapes intersected through the scene language's shape geometry (user_geometry.cpp).
 bool analytic(const Shape& s) {
     return std::holds_alternative<CylinderShape>(s) || std::holds_alternative<ConeShape>(s) ||
-           std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s);
+           std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
+           std::holds_alternative<TextShape>(s);
 }
 
 struct Box3 {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "tracer/scene_language/text_outline.h"
 
 namespace rayset::tracer {
 
@@ -169,6 +170,10 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
         b.add(t->a), b.add(t->b), b.add(t->c);
     } else if (const auto* m = std::get_if<MeshShape>(&shape)) {
         for (const Vec3& v : m->mesh->vertices) b.add(v);
+    } else if (const auto* t = std::get_if<TextShape>(&shape)) {
+        if (!t->outline) return false;
+        b.add({t->outline->min_x, t->outline->min_y, std::min(0.0, t->thickness)});
+        b.add({t->outline->max_x, t->outline->max_y, std::max(0.0, t->thickness)});
     } else {
         return false;
     }

@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "core/error.h"
 #include "tracer/scene_language/object_grammar.h"
+#include "tracer/scene_language/text_outline.h"
 
 namespace rayset::tracer {
 namespace {
@@ -270,6 +272,13 @@ ObjectRef parse_text(Parser& p, const Token& keyword) {
     text.thickness = p.parse_float("as the text thickness");
     p.accept_comma();
     text.offset = p.parse_vector();
+    if (!text.font_path.empty()) {
+        try {
+            text.outline = load_text_outline(text.font_path, text.text, text.offset);
+        } catch (const Error& e) {
+            p.fail(keyword, e.what());
+        }
+    }
     node->shape = std::move(text);
     finish_shape(p, *node, keyword, open);
     return node;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tracer/scene_language/text_outline.h"
+
 namespace rayset::tracer {
 namespace {
 
@@ -284,6 +286,44 @@ void quadric_hits(const QuadricShape& q, Vec3 o, Vec3 d, std::vector<ShapeHit>& 
     }
 }
 
+// Text: the outline extruded from z = 0 to the thickness. The caps where the outline is filled;
+// the walls where the line's x-y shadow crosses a piece (a quadratic in the piece's parameter),
+// normals in the x-y plane toward the unfilled side.
+bool text_inside(const TextShape& text, Vec3 p) {
+    return p.z >= 0 && p.z <= text.thickness && text.outline->inside(p.x, p.y);
+}
+
+void text_hits(const TextShape& text, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    const TextOutline& outline = *text.outline;
+    if (d.z != 0)
+        for (double z : {0.0, text.thickness}) {
+            const double t = (z - o.z) / d.z;
+            if (outline.inside(o.x + t * d.x, o.y + t * d.y))
+                hits.push_back({t, {0, 0, z == 0 ? -1.0 : 1.0}});
+        }
+    const double planar = d.x * d.x + d.y * d.y;
+    if (planar == 0) return;
+    // cross(q - o, d) in x-y: zero on the line's shadow.
+    auto side = [&](double x, double y) { return (x - o.x) * d.y - (y - o.y) * d.x; };
+    for (const TextOutline::Piece& p : outline.pieces) {
+        const double sa = side(p.ax, p.ay), sc = side(p.cx, p.cy), sb = side(p.bx, p.by);
+        if ((sa > 0 && sc > 0 && sb > 0) || (sa < 0 && sc < 0 && sb < 0)) continue;
+        // side(C(u)) = (sa - 2 sc + sb) u^2 + 2 (sc - sa) u + sa: a quadratic in u.
+        for (double u : quadratic_roots(sa - 2 * sc + sb, 2 * (sc - sa), sa)) {
+            if (!(u >= 0 && u < 1)) continue;
+            const double w = 1 - u;
+            const double x = w * w * p.ax + 2 * u * w * p.cx + u * u * p.bx;
+            const double y = w * w * p.ay + 2 * u * w * p.cy + u * u * p.by;
+            const double t = ((x - o.x) * d.x + (y - o.y) * d.y) / planar;
+            const double z = o.z + t * d.z;
+            if (z < 0 || z > text.thickness) continue;
+            const double tx = w * (p.cx - p.ax) + u * (p.bx - p.cx);
+            const double ty = w * (p.cy - p.ay) + u * (p.by - p.cy);
+            hits.push_back({t, p.filled_left ? Vec3{ty, -tx, 0} : Vec3{-ty, tx, 0}});
+        }
+    }
+}
+
 }  // namespace
 
 bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
@@ -315,6 +355,9 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
             dot(disc->normal, p - disc->centre) < 0;  // its plane's inside, whatever the radius
     } else if (const auto* q = std::get_if<QuadricShape>(&shape)) {
         inside = quadric_value(*q, p) < 0;
+    } else if (const auto* text = std::get_if<TextShape>(&shape)) {
+        if (!text->outline) return false;
+        inside = text_inside(*text, p);
     } else if (const auto* poly = std::get_if<PolynomialShape>(&shape)) {
         inside = polynomial_value(*poly, p) < 0;
     } else if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
@@ -353,6 +396,9 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
         disc_hit(*disc, o, d, hits);
     } else if (const auto* t = std::get_if<TriangleShape>(&shape)) {
         triangle_hit(t->a, t->b, t->c, o, d, hits);
+    } else if (const auto* text = std::get_if<TextShape>(&shape)) {
+        if (!text->outline) return false;
+        text_hits(*text, o, d, hits);
     } else if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
         if (!mesh->mesh->normals.empty()) return false;  // smooth triangles' normals: not here
         std::vector<ShapeHit> all;

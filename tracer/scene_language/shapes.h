@@ -17,6 +17,8 @@
 
 namespace rayset::tracer {
 
+struct TextOutline;  // text_outline.h
+
 // A 2-D point: lathe and sor (radius x, height y), prism (x, z written as x, y), uv vectors.
 struct Vec2 {
     double x = 0, y = 0;
@@ -184,6 +186,7 @@ struct TextShape {
     std::string text;
     double thickness = 1;
     Vec3 offset;  // extra spacing added after each character
+    std::shared_ptr<const TextOutline> outline;  // of a ttf font (text_outline.h)
 };
 
 // ---------------------------------------------------------------- patches
