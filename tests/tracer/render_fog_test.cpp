@@ -19,23 +19,13 @@
 namespace rayset::tracer {
 namespace {
 
-const std::string kScenes =
-    (std::filesystem::path(__FILE__).parent_path() / "scenes").string() + "/";
-
-// Within 2% of the value, and half a step of POV-Ray's 8-bit output.
-bool agrees(Rgb ours, const uint8_t* pov) {
-    auto close = [](double value, uint8_t reference) {
-        return std::abs(255 * value - reference) <=
-               0.02 * std::max(255 * value, double(reference)) + 0.5;
-    };
-    return close(ours.red, pov[0]) && close(ours.green, pov[1]) && close(ours.blue, pov[2]);
-}
+using test::agrees_with_povray;
 
 // fog.pov with its fog statement's `fog_type 2` replaced by `fog_type`.
 void expect_fog_agrees(const std::string& fog_type) {
     const int width = 240, height = 180;
     test::ScratchDir dir;
-    std::string text = test::read_file(kScenes + "fog.pov");
+    std::string text = test::read_file(test::tracer_scene("fog.pov"));
     text.replace(text.find("fog_type 2"), 10, fog_type);
     const std::string scene_file = dir.file("fog.pov");
     test::write_file(scene_file, text);
@@ -62,7 +52,7 @@ void expect_fog_agrees(const std::string& fog_type) {
             scene.fog().along(ray.origin, ray.direction,
                               found ? hits[i].t : std::numeric_limits<double>::infinity(), through,
                               added);
-            agree += agrees(to_colour * (added + through * beyond), &reference[3 * i]);
+            agree += agrees_with_povray(to_colour * (added + through * beyond), &reference[3 * i]);
         }
     const double fraction = double(agree) / (width * height);
     std::printf("%s: colours agree on %d of %d pixels (%.4f)\n", fog_type.c_str(), agree,

@@ -22,21 +22,11 @@
 namespace rayset::tracer {
 namespace {
 
-const std::string kScenes =
-    (std::filesystem::path(__FILE__).parent_path() / "scenes").string() + "/";
-
-// Within 2% of the value, and half a step of POV-Ray's 8-bit output.
-bool agrees(Rgb ours, const uint8_t* pov) {
-    auto close = [](double value, uint8_t reference) {
-        return std::abs(255 * value - reference) <=
-               0.02 * std::max(255 * value, double(reference)) + 0.5;
-    };
-    return close(ours.red, pov[0]) && close(ours.green, pov[1]) && close(ours.blue, pov[2]);
-}
+using test::agrees_with_povray;
 
 TEST(RenderPatterns, SkyAgreesWithPovRayPixelForPixel) {
     const int width = 240, height = 180;
-    const std::string scene_file = kScenes + "sky.pov";
+    const std::string scene_file = test::tracer_scene("sky.pov");
     std::vector<uint8_t> reference;
     std::string message;
     if (!test::povray_render(scene_file, width, height, reference, message))
@@ -50,7 +40,8 @@ TEST(RenderPatterns, SkyAgreesWithPovRayPixelForPixel) {
         for (int x = 0; x < width; ++x) {
             const CameraRay ray = camera.ray(x + 0.5, y + 0.5);
             const size_t i = size_t(y) * width + x;
-            agree += agrees(to_colour * scene.sky().radiance(ray.direction), &reference[3 * i]);
+            agree += agrees_with_povray(to_colour * scene.sky().radiance(ray.direction),
+                                        &reference[3 * i]);
         }
     const double fraction = double(agree) / (width * height);
     std::printf("sky colours agree on %d of %d pixels (%.4f)\n", agree, width * height, fraction);
@@ -65,7 +56,7 @@ void expect_flat_colours_agree(const std::string& scene_name, double assumed_gam
                                const std::string& camera = "") {
     const int width = 240, height = 180;
     test::ScratchDir dir;
-    std::string text = test::read_file(kScenes + scene_name);
+    std::string text = test::read_file(test::tracer_scene(scene_name));
     const std::string linear = "assumed_gamma 1.0";
     text.replace(text.find(linear), linear.size(),
                  "assumed_gamma " + std::to_string(assumed_gamma));
@@ -92,7 +83,7 @@ void expect_flat_colours_agree(const std::string& scene_name, double assumed_gam
             const Rgb e = scene.material(hits[i], scratch).emission;
             ours = {encoded(e.red), encoded(e.green), encoded(e.blue)};
         }
-        agree += agrees(ours, &reference[3 * i]);
+        agree += agrees_with_povray(ours, &reference[3 * i]);
         patterned += hits[i].object >= 0;
     }
     const double fraction = double(agree) / double(hits.size());

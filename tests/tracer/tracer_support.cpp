@@ -135,6 +135,18 @@ bool read_ppm(const std::string& path, int& width, int& height, std::vector<uint
 
 }  // namespace
 
+bool agrees_with_povray(Rgb ours, const uint8_t* pov) {
+    auto close = [](double value, uint8_t reference) {
+        return std::abs(255 * value - reference) <=
+               0.02 * std::max(255 * value, double(reference)) + 0.5;
+    };
+    return close(ours.red, pov[0]) && close(ours.green, pov[1]) && close(ours.blue, pov[2]);
+}
+
+std::string tracer_scene(const std::string& name) {
+    return (std::filesystem::path(__FILE__).parent_path() / "scenes" / name).string();
+}
+
 bool povray_render(const std::string& scene, int width, int height, std::vector<uint8_t>& rgb,
                    std::string& message, double file_gamma) {
     if (run_command("command -v povray").status != 0) {

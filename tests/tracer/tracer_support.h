@@ -72,5 +72,10 @@ std::string cornell_with_receiver();
 // not installed (the test skips, saying so); std::runtime_error when it fails.
 bool povray_render(const std::string& scene, int width, int height, std::vector<uint8_t>& rgb,
                    std::string& message, double file_gamma = 1);
+// Whether our colour (POV-Ray's colour scale, 1 = white) agrees with POV-Ray's 8-bit pixel
+// `pov` (three bytes): every channel within 2% of the value and half an 8-bit step.
+bool agrees_with_povray(Rgb ours, const uint8_t* pov);
+// The path of a scene of tests/tracer/scenes/.
+std::string tracer_scene(const std::string& name);
 
 }  // namespace rayset::test
