@@ -233,6 +233,8 @@ INSTANTIATE_TEST_SUITE_P(Patterns, PovRayNoise,
                                            "bozo turbulence 0.5", "marble turbulence 0.5",
                                            "wood turbulence 0.3", "wood turbulence <0.3, 0, 0>",
                                            "gradient x warp { turbulence 0.4 octaves 3 }",
+                                           "crackle", "crackle metric 1",
+                                           "crackle form <0, 1, 0> offset 0.5", "crackle solid",
                                            "function { f_noise3d(x, y, z) }",
                                            "function { f_noise_generator(x, y, z, 3) }"));
 

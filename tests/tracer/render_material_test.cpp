@@ -115,10 +115,10 @@ TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
     // Transforms of a uniform colour change nothing; ambient is not physical.
     EXPECT_EQ(error("sphere { 0, 1 pigment { rgb 1 scale 2 rotate y } finish { ambient 0.3 } }"),
               "no error");
-    // Patterns the language evaluates render (noise ones too); crackle and fractals do not yet.
+    // Patterns the language evaluates render (noise ones too); spirals and fractals do not yet.
     EXPECT_EQ(error("sphere { 0, 1 pigment { checker } }"), "no error");
-    EXPECT_EQ(error("sphere { 0, 1 pigment { crackle } }"),
-              "not supported: pigment pattern 'crackle' at test.pov:1:25");
+    EXPECT_EQ(error("sphere { 0, 1 pigment { spiral1 3 } }"),
+              "not supported: pigment pattern 'spiral1' at test.pov:1:25");
     EXPECT_EQ(error("sphere { 0, 1 pigment { mandel 20 } }"),
               "not supported: pigment pattern 'mandel' at test.pov:1:25");
     EXPECT_EQ(error("sphere { 0, 1\n normal { bumps 0.5 } }"),
@@ -127,9 +127,9 @@ TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
     EXPECT_EQ(error("sphere { 0, 1 texture { finish { phong 1 phong_size 10 } } texture { "
                     "pigment { rgbt 1 } finish { phong 1 phong_size 20 } } }"),
               "not supported: textures combining highlights of different sizes at test.pov:1:15");
-    EXPECT_EQ(error("sphere { 0, 1 texture { crackle texture_map { [0 pigment { rgb 1 }] "
+    EXPECT_EQ(error("sphere { 0, 1 texture { spiral1 3 texture_map { [0 pigment { rgb 1 }] "
                     "[1 pigment { rgb 0 }] } } }"),
-              "not supported: patterned textures (crackle) at test.pov:1:25");
+              "not supported: patterned textures (spiral1) at test.pov:1:25");
     EXPECT_EQ(error("sphere { 0, 1 finish { irid { 0.3 } } }"),
               "not supported: finish 'irid' at test.pov:1:15");
     EXPECT_EQ(error("sphere { 0, 1 finish { diffuse 0.6, 0.2 } }"),

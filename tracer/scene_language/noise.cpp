@@ -112,4 +112,51 @@ double scalar_turbulence(Vec3 point, int octaves, double omega, double lambda, i
     return sum;
 }
 
+CellDistances cell_distances(Vec3 point, double metric, double offset) {
+    CellDistances out{{kLargestCoordinate, kLargestCoordinate, kLargestCoordinate}, point};
+    if (!(std::fabs(point.x) < kLargestCoordinate && std::fabs(point.y) < kLargestCoordinate &&
+          std::fabs(point.z) < kLargestCoordinate))
+        return out;
+    const auto ix = static_cast<int64_t>(std::floor(point.x)),
+               iy = static_cast<int64_t>(std::floor(point.y)),
+               iz = static_cast<int64_t>(std::floor(point.z));
+    const double offset_power = std::pow(std::fabs(offset), metric);
+    // The 27 cubes around the point's own hold its nearest three points but for rare corners.
+    for (int64_t dx = -1; dx <= 1; ++dx)
+        for (int64_t dy = -1; dy <= 1; ++dy)
+            for (int64_t dz = -1; dz <= 1; ++dz) {
+                const int64_t cx = ix + dx, cy = iy + dy, cz = iz + dz;
+                auto uniform = [&](uint32_t channel) {
+                    return lattice_hash(cx, cy, cz, channel) / 4294967296.0;
+                };
+                const Vec3 q{double(cx) + uniform(4), double(cy) + uniform(5),
+                             double(cz) + uniform(6)};
+                const Vec3 d = q - point;
+                double distance = 0;
+                if (metric == 2) {
+                    distance = std::sqrt(dot(d, d) + offset_power);
+                } else {
+                    distance = std::pow(std::pow(std::fabs(d.x), metric) +
+                                            std::pow(std::fabs(d.y), metric) +
+                                            std::pow(std::fabs(d.z), metric) + offset_power,
+                                        1 / metric);
+                }
+                double* f = out.nearest;
+                if (distance < f[2]) {
+                    if (distance < f[1]) {
+                        f[2] = f[1];
+                        if (distance < f[0]) {
+                            f[1] = f[0], f[0] = distance;
+                            out.nearest_point = q;
+                        } else {
+                            f[1] = distance;
+                        }
+                    } else {
+                        f[2] = distance;
+                    }
+                }
+            }
+    return out;
+}
+
 }  // namespace rayset::tracer

@@ -34,4 +34,14 @@ Vec3 vector_turbulence(Vec3 point, int octaves, double omega, double lambda);
 // sum over i < octaves of omega^i solid_noise(lambda^i point), octaves within [1, 10].
 double scalar_turbulence(Vec3 point, int octaves, double omega, double lambda, int generator);
 
+// POV-Ray's crackle cells: one point in each unit cube of the lattice, uniform in it (read back
+// from POV-Ray's statistics, like the noise above). The distances from `point` to the nearest
+// three points in the Minkowski metric of exponent `metric`, each d taken as
+// (d^metric + offset^metric)^(1 / metric), nearest first; and the nearest point.
+struct CellDistances {
+    double nearest[3];
+    Vec3 nearest_point;
+};
+CellDistances cell_distances(Vec3 point, double metric, double offset);
+
 }  // namespace rayset::tracer

@@ -4,8 +4,8 @@
 // marble, wood, object (where the object can answer), onion, pigment_pattern (of such
 // pigments), planar, radial, spherical, square and triangular, through transforms, frequency,
 // phase, waveforms and colour, pigment and list maps. The noise patterns (agate, bozo, bumps,
-// dents, granite, spotted, wrinkles) and turbulence agree with POV-Ray's in distribution and
-// spectrum, not point for point (noise.h). Everything else returns false.
+// crackle, dents, granite, spotted, wrinkles) and turbulence agree with POV-Ray's in distribution
+// and spectrum, not point for point (noise.h). Everything else returns false.
 //
 // Every rule below was read back from POV-Ray 3.7 itself through `function { pattern { ... } }`
 // and `function { pigment { ... } }` at random points (to 1e-6), since the manual leaves the
@@ -80,6 +80,17 @@ double wrinkles(const Pattern& pattern, Vec3 p) {
     for (int octave = 0; octave < 10; ++octave, rate *= 2)
         sum += (solid_noise(rate * p, pattern.noise_generator) - 0.5) / rate;
     return std::clamp(sum, 0.0, 1.0);
+}
+
+// Crackle: the weighted distances to the nearest three cell points (form), or with `solid`
+// the noise at the nearest point (read back from POV-Ray's statistics), within [0, 1].
+double crackle(const Pattern& pattern, Vec3 p) {
+    const CrackleParameters& c = pattern.crackle;
+    const CellDistances cells = cell_distances(p, c.metric, c.offset);
+    if (c.solid) return solid_noise(cells.nearest_point, pattern.noise_generator);
+    const double v =
+        c.form.x * cells.nearest[0] + c.form.y * cells.nearest[1] + c.form.z * cells.nearest[2];
+    return std::clamp(v, 0.0, 1.0);
 }
 
 // The absolute 1/f noise over six octaves from four times the base rate.
@@ -187,6 +198,7 @@ bool raw_value(const Pattern& pattern, Vec3 p, double& value) {
             value = std::pow(solid_noise(p, pattern.noise_generator), 3);
             return true;
         case PatternKind::agate: value = agate(pattern, p); return true;
+        case PatternKind::crackle: value = crackle(pattern, p); return true;
         case PatternKind::radial: value = radial(p); return true;
         case PatternKind::gradient: {
             const Vec3 g = pattern.gradient;
