@@ -21,6 +21,7 @@ inline Vec3 cross(Vec3 a, Vec3 b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 inline double length(Vec3 a) { return std::sqrt(dot(a, a)); }
+inline bool is_zero(Vec3 a) { return a.x == 0 && a.y == 0 && a.z == 0; }
 inline Vec3 normalized(Vec3 a) { return (1 / length(a)) * a; }
 
 // Two unit vectors that complete `axis` (unit) to a right-handed orthonormal basis

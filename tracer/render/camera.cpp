@@ -67,14 +67,15 @@ CameraRay SceneCamera::ray(double px, double py) const {
         case CameraProjection::spherical:
             return {c.location, turned(x * angle_, y * vertical_angle_)};
         case CameraProjection::cylinder: {
-            const Vec3 around_up = std::sin(x * angle_) * r_ + std::cos(x * angle_) * d_;
-            const Vec3 around_right = std::cos(y * angle_) * d_ + std::sin(y * angle_) * u_;
-            switch (c.cylinder_type) {
-                case 1: return {c.location, normalized(around_up + y * c.up)};
-                case 2: return {c.location, normalized(around_right + x * c.right)};
-                case 3: return {c.location + y * c.up, around_up};
-                default: return {c.location + x * c.right, around_right};
+            // Types 1 and 3 turn around up, 2 and 4 around right.
+            if (c.cylinder_type == 1 || c.cylinder_type == 3) {
+                const Vec3 around = turned(x * angle_, 0);
+                return c.cylinder_type == 1 ? CameraRay{c.location, normalized(around + y * c.up)}
+                                            : CameraRay{c.location + y * c.up, around};
             }
+            const Vec3 around = turned(0, y * angle_);
+            return c.cylinder_type == 2 ? CameraRay{c.location, normalized(around + x * c.right)}
+                                        : CameraRay{c.location + x * c.right, around};
         }
         case CameraProjection::ultra_wide_angle: {
             const double ax = x * angle_, ay = y * angle_ / right_over_up_;

@@ -13,8 +13,6 @@ namespace {
     throw Error(fmt::format("not supported: {} at {}", feature, where.str()));
 }
 
-bool is_zero(Vec3 v) { return v.x == 0 && v.y == 0 && v.z == 0; }
-
 // The integral of 1 / (1 + k^2) over the height h, k = (h - offset) / altitude, from h0 to h1
 // with the density 1 below offset.
 double ground_column(double h0, double h1, double offset, double altitude) {
@@ -48,7 +46,8 @@ FogMedium::FogMedium(const SceneDescription& scene, double to_internal)
     up_ = normalized(fog.up);
     const ColourDecoding decoding(scene.global);
     colour_ = decoding(fog.colour.rgb());
-    filter_ = fog.colour.filter;
+    const double filter = fog.colour.filter;
+    tint_ = Rgb{1 - filter, 1 - filter, 1 - filter} + filter * colour_;
     transmit_ = fog.colour.transmit;
 }
 
@@ -68,8 +67,7 @@ double FogMedium::optical_depth(Vec3 origin, Vec3 direction, double length) cons
 void FogMedium::along(Vec3 origin, Vec3 direction, double length, Rgb& through, Rgb& added) const {
     const double transmittance =
         std::max(std::exp(-optical_depth(origin, direction, length)), transmit_);
-    const Rgb tint = Rgb{1 - filter_, 1 - filter_, 1 - filter_} + filter_ * colour_;
-    through = transmittance * tint;
+    through = transmittance * tint_;
     added = (to_internal_ * (1 - transmittance)) * colour_;
 }
 

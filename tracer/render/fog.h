@@ -37,8 +37,9 @@ private:
     bool ground_ = false;
     double distance_ = 1, offset_ = 0, altitude_ = 1;
     Vec3 up_{0, 1, 0};
-    Rgb colour_;  // decoded, linear
-    double filter_ = 0, transmit_ = 0;
+    Rgb colour_;         // decoded, linear
+    Rgb tint_{1, 1, 1};  // what is beyond is seen through: (1 - filter) + filter x colour
+    double transmit_ = 0;
     double to_internal_ = 1;
 };
 

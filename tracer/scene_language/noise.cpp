@@ -26,21 +26,33 @@ constexpr double kGradients[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1
                                       {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
                                       {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
 
-// Beyond this the lattice cell of a double is no longer a whole number we can hash.
-constexpr double kLargestCoordinate = 1e15;
+// The unit cube of the lattice a point lies in, and the point's place in it; false beyond
+// 10^15 (or not finite), where a double's cell is no longer a whole number we can hash.
+struct LatticeCell {
+    int64_t x, y, z;
+    double f[3];
+};
+bool lattice_cell(Vec3 p, LatticeCell& cell) {
+    constexpr double kLargest = 1e15;
+    if (!(std::fabs(p.x) < kLargest && std::fabs(p.y) < kLargest && std::fabs(p.z) < kLargest))
+        return false;
+    const double cx = std::floor(p.x), cy = std::floor(p.y), cz = std::floor(p.z);
+    cell = {static_cast<int64_t>(cx),
+            static_cast<int64_t>(cy),
+            static_cast<int64_t>(cz),
+            {p.x - cx, p.y - cy, p.z - cz}};
+    return true;
+}
 
 // Gradient noise plus `value_weight` times a lattice value uniform in [-1, 1], blended by
 // 3t^2 - 2t^3; zero mean.
 double lattice_noise(Vec3 p, double value_weight, uint32_t channel) {
-    if (!(std::fabs(p.x) < kLargestCoordinate && std::fabs(p.y) < kLargestCoordinate &&
-          std::fabs(p.z) < kLargestCoordinate))
-        return 0;
-    const double cx = std::floor(p.x), cy = std::floor(p.y), cz = std::floor(p.z);
-    const double f[3] = {p.x - cx, p.y - cy, p.z - cz};
+    LatticeCell cell;
+    if (!lattice_cell(p, cell)) return 0;
+    const double* f = cell.f;
     double blend[3];
     for (int axis = 0; axis < 3; ++axis) blend[axis] = f[axis] * f[axis] * (3 - 2 * f[axis]);
-    const auto ix = static_cast<int64_t>(cx), iy = static_cast<int64_t>(cy),
-               iz = static_cast<int64_t>(cz);
+    const int64_t ix = cell.x, iy = cell.y, iz = cell.z;
     double sum = 0;
     for (int corner = 0; corner < 8; ++corner) {
         const int d[3] = {corner & 1, (corner >> 1) & 1, (corner >> 2) & 1};
@@ -113,48 +125,34 @@ double scalar_turbulence(Vec3 point, int octaves, double omega, double lambda, i
 }
 
 CellDistances cell_distances(Vec3 point, double metric, double offset) {
-    CellDistances out{{kLargestCoordinate, kLargestCoordinate, kLargestCoordinate}, point};
-    if (!(std::fabs(point.x) < kLargestCoordinate && std::fabs(point.y) < kLargestCoordinate &&
-          std::fabs(point.z) < kLargestCoordinate))
-        return out;
-    const auto ix = static_cast<int64_t>(std::floor(point.x)),
-               iy = static_cast<int64_t>(std::floor(point.y)),
-               iz = static_cast<int64_t>(std::floor(point.z));
+    constexpr double kFar = 1e300;
+    CellDistances out{{kFar, kFar, kFar}, point};
+    LatticeCell cell;
+    if (!lattice_cell(point, cell)) return out;
     const double offset_power = std::pow(std::fabs(offset), metric);
     // The 27 cubes around the point's own hold its nearest three points but for rare corners.
     for (int64_t dx = -1; dx <= 1; ++dx)
         for (int64_t dy = -1; dy <= 1; ++dy)
             for (int64_t dz = -1; dz <= 1; ++dz) {
-                const int64_t cx = ix + dx, cy = iy + dy, cz = iz + dz;
+                const int64_t cx = cell.x + dx, cy = cell.y + dy, cz = cell.z + dz;
                 auto uniform = [&](uint32_t channel) {
                     return lattice_hash(cx, cy, cz, channel) / 4294967296.0;
                 };
                 const Vec3 q{double(cx) + uniform(4), double(cy) + uniform(5),
                              double(cz) + uniform(6)};
                 const Vec3 d = q - point;
-                double distance = 0;
-                if (metric == 2) {
-                    distance = std::sqrt(dot(d, d) + offset_power);
-                } else {
-                    distance = std::pow(std::pow(std::fabs(d.x), metric) +
-                                            std::pow(std::fabs(d.y), metric) +
-                                            std::pow(std::fabs(d.z), metric) + offset_power,
-                                        1 / metric);
-                }
-                double* f = out.nearest;
-                if (distance < f[2]) {
-                    if (distance < f[1]) {
-                        f[2] = f[1];
-                        if (distance < f[0]) {
-                            f[1] = f[0], f[0] = distance;
-                            out.nearest_point = q;
-                        } else {
-                            f[1] = distance;
-                        }
-                    } else {
-                        f[2] = distance;
-                    }
-                }
+                const double distance =
+                    metric == 2 ? std::sqrt(dot(d, d) + offset_power)
+                                : std::pow(std::pow(std::fabs(d.x), metric) +
+                                               std::pow(std::fabs(d.y), metric) +
+                                               std::pow(std::fabs(d.z), metric) + offset_power,
+                                           1 / metric);
+                // Into the three nearest, kept in order.
+                int k = 3;
+                for (; k > 0 && distance < out.nearest[k - 1]; --k)
+                    if (k < 3) out.nearest[k] = out.nearest[k - 1];
+                if (k < 3) out.nearest[k] = distance;
+                if (k == 0) out.nearest_point = q;
             }
     return out;
 }

@@ -25,8 +25,6 @@ namespace {
 
 double fraction(double v) { return v - std::floor(v); }
 
-bool is_zero(Vec3 v) { return v.x == 0 && v.y == 0 && v.z == 0; }
-
 Vec3 times(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
 Vec3 turbulence_displacement(const Turbulence& turbulence, Vec3 point) {

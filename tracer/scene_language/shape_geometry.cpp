@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tracer/scene_language/quadratic.h"
 #include "tracer/scene_language/text_outline.h"
 
 namespace rayset::tracer {
@@ -100,16 +101,10 @@ std::vector<double> roots_between(std::vector<double> c, double lo, double hi) {
     return roots;
 }
 
-// The roots of a t^2 + b t + c.
+// The roots of a t^2 + b t + c (quadratic.h), in increasing order.
 std::vector<double> quadratic_roots(double a, double b, double c) {
-    if (a == 0) return b == 0 ? std::vector<double>{} : std::vector<double>{-c / b};
-    const double disc = b * b - 4 * a * c;
-    if (disc < 0) return {};
-    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-    std::vector<double> roots{q / a};
-    if (q != 0) roots.push_back(c / q);
-    std::sort(roots.begin(), roots.end());
-    return roots;
+    double roots[2];
+    return std::vector<double>(roots, roots + solve_quadratic(a, b, c, roots));
 }
 
 // A triangle's hit by Moller-Trumbore; its normal is POV-Ray's, (c - a) x (b - a).
@@ -309,16 +304,15 @@ void text_hits(const TextShape& text, Vec3 o, Vec3 d, std::vector<ShapeHit>& hit
         const double sa = side(p.ax, p.ay), sc = side(p.cx, p.cy), sb = side(p.bx, p.by);
         if ((sa > 0 && sc > 0 && sb > 0) || (sa < 0 && sc < 0 && sb < 0)) continue;
         // side(C(u)) = (sa - 2 sc + sb) u^2 + 2 (sc - sa) u + sa: a quadratic in u.
-        for (double u : quadratic_roots(sa - 2 * sc + sb, 2 * (sc - sa), sa)) {
+        double roots[2];
+        const int n = solve_quadratic(sa - 2 * sc + sb, 2 * (sc - sa), sa, roots);
+        for (int i = 0; i < n; ++i) {
+            const double u = roots[i];
             if (!(u >= 0 && u < 1)) continue;
-            const double w = 1 - u;
-            const double x = w * w * p.ax + 2 * u * w * p.cx + u * u * p.bx;
-            const double y = w * w * p.ay + 2 * u * w * p.cy + u * u * p.by;
-            const double t = ((x - o.x) * d.x + (y - o.y) * d.y) / planar;
+            const double t = ((p.x(u) - o.x) * d.x + (p.y(u) - o.y) * d.y) / planar;
             const double z = o.z + t * d.z;
             if (z < 0 || z > text.thickness) continue;
-            const double tx = w * (p.cx - p.ax) + u * (p.bx - p.cx);
-            const double ty = w * (p.cy - p.ay) + u * (p.by - p.cy);
+            const double tx = p.dx(u), ty = p.dy(u);
             hits.push_back({t, p.filled_left ? Vec3{ty, -tx, 0} : Vec3{-ty, tx, 0}});
         }
     }

@@ -9,6 +9,7 @@
 #include FT_OUTLINE_H
 
 #include "core/error.h"
+#include "tracer/scene_language/quadratic.h"
 
 namespace rayset::tracer {
 namespace {
@@ -76,26 +77,14 @@ bool TextOutline::inside(double x, double y) const {
     int winding = 0;
     for (const Piece& p : pieces) {
         if ((p.ay > y && p.cy > y && p.by > y) || (p.ay < y && p.cy < y && p.by < y)) continue;
-        // y(u) = A u^2 + B u + ay on [0, 1): where it crosses the level y to the right of x.
-        const double a = p.ay - 2 * p.cy + p.by, b = 2 * (p.cy - p.ay), c = p.ay - y;
+        // Where the piece crosses the level y on [0, 1), to the right of x, and which way.
         double roots[2];
-        int n = 0;
-        if (std::fabs(a) < 1e-12) {
-            if (b != 0) roots[n++] = -c / b;
-        } else {
-            const double disc = b * b - 4 * a * c;
-            if (disc < 0) continue;
-            const double s = std::sqrt(disc);
-            roots[n++] = (-b - s) / (2 * a);
-            roots[n++] = (-b + s) / (2 * a);
-        }
+        const int n = solve_quadratic(p.ay - 2 * p.cy + p.by, 2 * (p.cy - p.ay), p.ay - y, roots);
         for (int i = 0; i < n; ++i) {
             const double u = roots[i];
-            if (!(u >= 0 && u < 1)) continue;
-            const double ax = p.ax - 2 * p.cx + p.bx, bx = 2 * (p.cx - p.ax);
-            if ((ax * u + bx) * u + p.ax <= x) continue;
-            const double slope = 2 * a * u + b;
-            winding += slope > 0 ? 1 : slope < 0 ? -1 : 0;
+            if (!(u >= 0 && u < 1) || p.x(u) <= x) continue;
+            const double rising = p.dy(u);
+            winding += rising > 0 ? 1 : rising < 0 ? -1 : 0;
         }
     }
     return winding != 0;

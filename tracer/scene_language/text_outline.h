@@ -22,6 +22,12 @@ struct TextOutline {
     struct Piece {
         double ax, ay, cx, cy, bx, by;
         bool filled_left;  // the filled side is left of the direction of travel
+
+        // The point at u in [0, 1] and half its derivative (the tangent's direction).
+        double x(double u) const { return ((ax - 2 * cx + bx) * u + 2 * (cx - ax)) * u + ax; }
+        double y(double u) const { return ((ay - 2 * cy + by) * u + 2 * (cy - ay)) * u + ay; }
+        double dx(double u) const { return (1 - u) * (cx - ax) + u * (bx - cx); }
+        double dy(double u) const { return (1 - u) * (cy - ay) + u * (by - cy); }
     };
     std::vector<Piece> pieces;
     double min_x = 0, min_y = 0, max_x = 0, max_y = 0;  // bounds of the pieces
