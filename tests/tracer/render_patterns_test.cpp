@@ -160,7 +160,7 @@ TEST(RenderPatterns, MaterialFollowsThePatternAndTheObject) {
     auto diffuse_at = [](const std::string& text, Vec3 point) {
         const RenderScene scene(parse_scene_text(text, "test.pov"));
         Material scratch;
-        return scene.material(0, -1, point, scratch).diffuse;
+        return scene.material(0, -1, point, {0, 0, 1}, scratch).diffuse;
     };
     const std::string checker =
         "box { -1, 1 pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> } finish { diffuse 1 } ";

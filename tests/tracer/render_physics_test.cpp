@@ -75,6 +75,19 @@ TEST(RenderFurnace, CsgEnclosureWithAPatternKeepsTheBalance) {
                            12);
 }
 
+TEST(RenderFurnace, BumpedWallsKeepTheBalance) {
+    // Normal patterns tilt the shading normal, by noise and down a slope steep enough to tip
+    // it past the wall's plane in places: the diffuse lobe still reflects the whole albedo.
+    expect_furnace_balance(R"(
+        sphere { <0,0,0>, 100
+            texture { pigment { rgb 1 } normal { bumps 2 scale 5 }
+                      finish { diffuse 0.8 emission 0.5 ambient 0 } }
+            texture { pigment { rgbt <1, 1, 1, 0.5> } normal { gradient x 20 scale 7 }
+                      finish { diffuse 0.8 emission 0.5 ambient 0 } }
+        })",
+                           13);
+}
+
 TEST(RenderFurnace, PointLightInWhiteSphereMatchesClosedForm) {
     // A point light of intensity I at the centre of a sphere of radius R gives every wall point
     // E0 = I / R^2; each wall point also sees the whole sphere of radiance L, so

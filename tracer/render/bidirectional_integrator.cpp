@@ -193,15 +193,16 @@ template <class Q>
 void BidirectionalIntegratorOf<Q>::gather(const Point& vp, const Grid& grid, Rgb& direct,
                                           Rgb& scattered) const {
     Material scratch;
-    const Material& material = scene_.material(vp.object, vp.part, vp.point, scratch);
+    const Material& material = scene_.material(vp.object, vp.part, vp.point, vp.normal, scratch);
     const Bsdf bsdf(material, vp.normal, vp.shading_normal, vp.wo);
     const Vec3 n = bsdf.facing_normal();
     Rgb sum_direct, sum_scattered;
     grid.for_each_near(vp.point, [&](const Photon& p) {
         if (dot(p.normal, n) < kSameSurfaceCos) return;
-        const double cos_i = std::fabs(dot(p.wi, vp.shading_normal));
+        const double cos_i = std::fabs(dot(p.wi, n));
         if (!(cos_i > 0)) return;
-        // Bsdf::eval gives f |cos|; the photon's power already holds the projected area.
+        // Bsdf::eval gives f |cos| about the shading normal; the photon's power already holds
+        // the projected area on the surface itself, whose cosine is divided out.
         const Rgb contribution = reflected(bsdf, material, p, cos_i);
         (p.direct ? sum_direct : sum_scattered) += contribution;
     });

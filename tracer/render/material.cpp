@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "tracer/scene_language/grammar.h"
+#include "tracer/scene_language/normal_perturbation.h"
 
 namespace rayset::tracer {
 
@@ -41,8 +42,8 @@ void conserve_energy(Material& m) {
 }
 
 // What the renderer does not render of POV-Ray's appearance is refused, never approximated:
-// it renders a plain texture of a uniform pigment (transforms of a uniform colour change
-// nothing), no normal, the finish keywords of README.md, and an interior's ior.
+// it renders the pigments and normals the scene language evaluates, layered and patterned
+// textures of them, the finish keywords of README.md, and an interior's ior.
 class Refusal {
 public:
     explicit Refusal(const ObjectInstance& object) : object_(object) {}
@@ -74,10 +75,14 @@ public:
     }
     void check_plain_texture(const Texture& texture) const {
         check_pigment(texture.pigment);
-        // A normal without a pattern perturbs nothing.
-        if (texture.normal && texture.normal->pattern->kind != PatternKind::plain)
-            fail(fmt::format("normal '{}'", pattern_name(texture.normal->pattern->kind)),
-                 texture.normal->pattern->location);
+        if (texture.normal && !normal_is_evaluable(*texture.normal)) {
+            const Pattern& pattern = *texture.normal->pattern;
+            const char* detail = !texture.normal->map          ? ""
+                                 : list_size(pattern.kind) > 0 ? " with a list of normals"
+                                                               : " with a normal_map or slope_map";
+            fail(fmt::format("normal '{}'{}", pattern_name(pattern.kind), detail),
+                 pattern.location);
+        }
         check_finish(*texture.finish);
     }
     // A patterned pigment is rendered where its colour is known exactly at every point
@@ -189,19 +194,22 @@ void for_each_plain_texture(const Texture& texture,
 bool texture_varies(const Texture& texture) {
     bool varies = texture.kind == Texture::Kind::patterned;
     for_each_plain_texture(texture, [&](const Texture& plain) {
-        varies = varies || plain.pigment.pattern->kind != PatternKind::plain;
+        varies = varies || plain.pigment.pattern->kind != PatternKind::plain ||
+                 (plain.normal && plain.normal->pattern->kind != PatternKind::plain);
     });
     return varies;
 }
 
 }  // namespace
 
-// The material of a texture at a point: a plain texture's pigment colour under its finish; a
-// layered one's layers from the bottom up, each seen through the filter and transmit of the
-// layers above it (POV-Ray's layering); a texture pattern's textures blended by its map.
+// The material of a texture at a point: a plain texture's pigment colour under its finish,
+// tilted by its normal; a layered one's layers from the bottom up, each seen through the
+// filter and transmit of the layers above it (POV-Ray's layering); a texture pattern's
+// textures blended by its map.
 struct ObjectMaterial::Maker {
     double ior, emission_scale;
     const ColourDecoding& decoding;
+    Vec3 normal;  // the surface's outward geometric normal at the point
 
     bool make(const Texture& texture, Vec3 point, Material& out) const {
         if (!combine(texture, point, out)) return false;
@@ -218,7 +226,7 @@ private:
             !evaluate_pigment(texture.pigment, point, colour))
             return false;
         out = material_of(decoding(colour), *texture.finish, ior, emission_scale);
-        return true;
+        return !texture.normal || normal_perturbation(*texture.normal, point, normal, out.bump);
     }
     bool layered(const Texture& texture, Vec3 point, Material& out) const {
         if (!combine(*texture.layers.front(), point, out)) return false;
@@ -230,6 +238,8 @@ private:
             Material sum;
             add_weighted(sum, layer, kWhite);
             add_weighted(sum, out, through);
+            const double below = (through.red + through.green + through.blue) / 3;
+            sum.bump = (1 - below) * layer.bump + below * out.bump;
             out = sum;
         }
         return true;
@@ -248,6 +258,7 @@ private:
         Material sum;
         add_weighted(sum, out, (1 - blend.weight) * kWhite);
         add_weighted(sum, high, blend.weight * kWhite);
+        sum.bump = (1 - blend.weight) * out.bump + blend.weight * high.bump;
         out = sum;
         return true;
     }
@@ -302,16 +313,18 @@ ObjectMaterial::ObjectMaterial(const ObjectInstance& object, double emission_sca
         texture_ = appearance.texture;
         return;
     }
-    maker().make(texture, {}, uniform_);
+    maker({0, 0, 1}).make(texture, {}, uniform_);
     emits_ = !is_black(uniform_.emission);
     add_spectra(uniform_);
 }
 
-ObjectMaterial::Maker ObjectMaterial::maker() const { return {ior_, emission_scale_, decoding_}; }
+ObjectMaterial::Maker ObjectMaterial::maker(Vec3 normal) const {
+    return {ior_, emission_scale_, decoding_, normal};
+}
 
-const Material& ObjectMaterial::at(Vec3 point, Material& scratch) const {
+const Material& ObjectMaterial::at(Vec3 point, Vec3 normal, Material& scratch) const {
     if (!texture_) return uniform_;
-    if (!maker().make(*texture_, point, scratch))
+    if (!maker(normal).make(*texture_, point, scratch))
         throw Error(
             fmt::format("not supported: the texture at {} (its value at ({}, {}, {}) is "
                         "not known)",
@@ -344,13 +357,30 @@ double fresnel_dielectric(double cos_i, double eta) {
     return 0.5 * (rs * rs + rp * rp);
 }
 
+namespace {
+
+// A shading normal tilted by a material's bump; a tilt to or past the surface's plane leaves
+// the normal as it is (no side of the surface would face it).
+Vec3 tilted(Vec3 shading_normal, Vec3 bump) {
+    if (is_zero(bump)) return shading_normal;
+    const Vec3 n = shading_normal + bump;
+    return dot(n, shading_normal) > 0 ? normalized(n) : shading_normal;
+}
+
+}  // namespace
+
 template <class Q>
 BsdfOf<Q>::BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo,
                   const WavelengthsFor<Q>& wavelengths)
     : m_(material), c_(lobe_colours(material, wavelengths)), wo_(wo) {
     entering_ = dot(wo, normal) >= 0;
     n_ = entering_ ? normal : -normal;
+    shading_normal = tilted(shading_normal, material.bump);
     ns_ = dot(shading_normal, n_) >= 0 ? shading_normal : -shading_normal;
+    // The part of the diffuse lobe about a tilted shading normal that lies below the surface
+    // is lost; the rest, (1 + cos tilt) / 2 of it (a tilted plane's view of a hemisphere), is
+    // scaled up to carry the whole albedo.
+    diffuse_scale_ = 2 / (1 + dot(ns_, n_));
     cos_o_ = std::max(0.0, dot(wo, ns_));
     // Lobes are picked in proportion to their average albedo; the channel sums give the same
     // ratios with one division instead of eight (this runs at every hit).
@@ -388,7 +418,7 @@ void BsdfOf<Q>::smooth_factors(Vec3 wi, double& diffuse_factor, double& glossy_f
     diffuse_factor = glossy_factor = 0;
     const double cos_i = dot(wi, ns_);
     if (cos_i <= 0 || dot(wi, n_) <= 0) return;
-    diffuse_factor = cos_i / kPi;
+    diffuse_factor = diffuse_scale_ * cos_i / kPi;
     if (p_glossy_ > 0) {
         const double c = dot(wi, reflect(wo_, ns_));
         if (c > 0)
@@ -429,7 +459,7 @@ bool BsdfOf<Q>::sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out
         out.delta = false;
         out.pdf = p_diffuse_ * cos_i / kPi;
         if (out.pdf <= 0 || dot(out.wi, n_) <= 0) return false;
-        out.weight = (1 / p_diffuse_) * c_.diffuse;
+        out.weight = (diffuse_scale_ / p_diffuse_) * c_.diffuse;
         return true;
     }
     if (u_lobe < p_diffuse_ + p_glossy_) {

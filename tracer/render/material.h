@@ -22,6 +22,8 @@ struct Material {
     bool mirror_fresnel = false;
     Rgb transmission;  // smooth dielectric lobe (Fresnel reflection + refraction)
     double ior = 1;
+    // Added to the shading normal, then normalised (a normal { } pattern's tilt; world space).
+    Vec3 bump;
     Rgb emission;                          // emitted radiance, renderer units (both sides)
     IlluminantSpectrum emission_spectrum;  // the same for spectral transport
     // The reflectances above as spectra, for spectral transport (rgb_upsampling.h).
@@ -45,8 +47,10 @@ const Material& white_lambertian();
 
 // An object's material at its surface points: one material for a texture the same everywhere;
 // else the material made at the point (world coordinates, where the object's textures are
-// placed) from its pigment patterns, layers and texture patterns. Patterns the scene language
-// cannot evaluate (images, surface coordinates, ...) are refused.
+// placed) from its pigment patterns, normal patterns, layers and texture patterns. Patterns
+// the scene language cannot evaluate (images, surface coordinates, ...) are refused. The normal
+// patterns of a texture's parts tilt its one shading normal together, each weighted by the
+// share of its part, as the lobes are.
 class ObjectMaterial {
 public:
     // Refuses what the renderer does not render of the object's appearance (Error, "not
@@ -55,16 +59,17 @@ public:
     ObjectMaterial(const ObjectInstance& object, double emission_scale,
                    const ColourDecoding& decoding);
 
-    // The material at `point`: the uniform one, or one made in `scratch` (without the spectra
-    // of spectral transport, which refuses materials that vary).
-    const Material& at(Vec3 point, Material& scratch) const;
+    // The material at `point`, where the outward geometric normal is `normal`: the uniform
+    // one, or one made in `scratch` (without the spectra of spectral transport, which refuses
+    // materials that vary).
+    const Material& at(Vec3 point, Vec3 normal, Material& scratch) const;
     bool patterned() const { return texture_ != nullptr; }
     // Whether some point may emit (a texture that varies: some part has finish emission).
     bool emits() const { return emits_; }
 
 private:
     struct Maker;
-    Maker maker() const;
+    Maker maker(Vec3 normal) const;
 
     Material uniform_;
     std::shared_ptr<const Texture> texture_;  // set when the material varies
@@ -88,7 +93,8 @@ template <class Q>
 class BsdfOf {
 public:
     // `normal`: the surface's geometric normal, outward for closed shapes (dielectrics use it
-    // to tell entering from leaving). `shading_normal` may differ (interpolated mesh normals).
+    // to tell entering from leaving). `shading_normal` may differ (interpolated mesh normals);
+    // the material's bump tilts it.
     BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo,
            const WavelengthsFor<Q>& wavelengths = {});
 
@@ -102,6 +108,8 @@ public:
     bool sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out) const;
     // The normal on the side `wo` is on: where reflected rays leave from.
     Vec3 facing_normal() const { return n_; }
+    // The shading normal on that side, tilted by the material's bump: what the lobes turn on.
+    Vec3 shading_normal() const { return ns_; }
 
 private:
     double mirror_fraction() const;  // of the way from mirror_min to mirror_max
@@ -112,6 +120,9 @@ private:
     LobeColours<Q> c_;
     Vec3 wo_, n_, ns_;
     bool entering_;
+    // The diffuse lobe's scale: 1, or more where the shading normal is tilted off the
+    // geometric one, so that the lobe still reflects its whole albedo above the surface.
+    double diffuse_scale_;
     double cos_o_;
     double p_diffuse_ = 0, p_glossy_ = 0, p_mirror_ = 0, p_dielectric_ = 0;
 };

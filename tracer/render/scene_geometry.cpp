@@ -360,12 +360,6 @@ private:
     std::map<std::string, std::shared_ptr<const TriangleMesh>> loaded_;
 };
 
-Vec3 transpose_times(const Matrix4& m, Vec3 v) {
-    return {m(0, 0) * v.x + m(1, 0) * v.y + m(2, 0) * v.z,
-            m(0, 1) * v.x + m(1, 1) * v.y + m(2, 1) * v.z,
-            m(0, 2) * v.x + m(1, 2) * v.y + m(2, 2) * v.z};
-}
-
 }  // namespace
 
 std::unique_ptr<GeometryTables> build_geometry(RTCDevice device, RTCScene scene,
@@ -381,7 +375,7 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
         const LeafTable& leaf = *instance.prototype;
         hit.object = instance.object;
         hit.normal =
-            unit_or_up(transpose_times(instance.world_to_object, leaf.prim_normal[h.primID]));
+            unit_or_up(instance.world_to_object.transpose_vector(leaf.prim_normal[h.primID]));
         hit.shading_normal = hit.normal;
         const TriangleMesh& mesh = *leaf.mesh;
         if (!mesh.normals.empty()) {
@@ -390,7 +384,7 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
             const Vec3 n = (1 - h.u - h.v) * mesh.normals[corners[0]] +
                            double(h.u) * mesh.normals[corners[1]] +
                            double(h.v) * mesh.normals[corners[2]];
-            hit.shading_normal = unit_or_up(transpose_times(instance.world_to_object, n));
+            hit.shading_normal = unit_or_up(instance.world_to_object.transpose_vector(n));
         }
         return;
     }
@@ -413,7 +407,7 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
             break;
         case UserPrim::Kind::sphere:
             hit.normal = unit_or_up(
-                transpose_times(prim.world_to_local, prim.world_to_local.point(hit.point)));
+                prim.world_to_local.transpose_vector(prim.world_to_local.point(hit.point)));
             break;
         case UserPrim::Kind::shape: hit.normal = unit_or_up({h.Ng_x, h.Ng_y, h.Ng_z}); break;
         case UserPrim::Kind::solid:

@@ -75,6 +75,11 @@ bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour);
 // (images, surface coordinates, unsupported patterns) they cannot anywhere, so one point tells.
 bool pattern_is_evaluable(const Pattern& pattern);
 bool pigment_is_evaluable(const Pigment& pigment);
+// The point in a pattern's own space (its warps undone, its turbulence applied), and the
+// linear part of the transform from that space to the world's (its transform warps composed);
+// false for warps and mappings it cannot undo.
+bool pattern_space_point(const Pattern& pattern, Vec3& point);
+Matrix4 pattern_to_world(const Pattern& pattern);
 // POV-Ray's lookup of a map at a pattern value: at or past the last entry that entry, at or
 // before the first the first, else the two entries around the value blended linearly (weight:
 // the share of `high`). False for an empty map.

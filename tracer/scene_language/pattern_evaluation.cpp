@@ -36,23 +36,6 @@ Vec3 turbulence_displacement(const Turbulence& turbulence, Vec3 point) {
 // displacement decorrelates its rings five times too slowly).
 bool own_turbulence(PatternKind kind) { return kind == PatternKind::wood; }
 
-// The point in the pattern's own space: every warp undone from the last written to the
-// first, then the classic turbulence. Transforms and turbulence warps only.
-bool pattern_space_point(const Pattern& pattern, Vec3& point) {
-    if (pattern.uv_mapping) return false;  // needs a surface's u, v
-    for (auto warp = pattern.warps.rbegin(); warp != pattern.warps.rend(); ++warp) {
-        if (warp->kind == Warp::Kind::transform)
-            point = warp->transform.inverse().point(point);
-        else if (warp->kind == Warp::Kind::turbulence)
-            point = point + turbulence_displacement(warp->turbulence, point);
-        else
-            return false;
-    }
-    if (!is_zero(pattern.turbulence.amount) && !own_turbulence(pattern.kind))
-        point = point + turbulence_displacement(pattern.turbulence, point);
-    return true;
-}
-
 // Rings around z, each axis pushed by a sine of the turbulent coordinate: x + sin(2 pi (x +
 // T.x) a.x), the same for y, with T the vector turbulence and a the turbulence amount.
 double wood(const Pattern& pattern, Vec3 p) {
@@ -298,6 +281,29 @@ bool average_colour(const BlendMap& map, Vec3 point, Colour& colour) {
 }
 
 }  // namespace
+
+// Every warp undone from the last written to the first, then the classic turbulence.
+bool pattern_space_point(const Pattern& pattern, Vec3& point) {
+    if (pattern.uv_mapping) return false;  // needs a surface's u, v
+    for (auto warp = pattern.warps.rbegin(); warp != pattern.warps.rend(); ++warp) {
+        if (warp->kind == Warp::Kind::transform)
+            point = warp->transform.inverse().point(point);
+        else if (warp->kind == Warp::Kind::turbulence)
+            point = point + turbulence_displacement(warp->turbulence, point);
+        else
+            return false;
+    }
+    if (!is_zero(pattern.turbulence.amount) && !own_turbulence(pattern.kind))
+        point = point + turbulence_displacement(pattern.turbulence, point);
+    return true;
+}
+
+Matrix4 pattern_to_world(const Pattern& pattern) {
+    Matrix4 m;
+    for (const Warp& warp : pattern.warps)
+        if (warp.kind == Warp::Kind::transform) m = warp.transform * m;
+    return m;
+}
 
 bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value) {
     if (!pattern_space_point(pattern, point) || !raw_value(pattern, point, value)) return false;

@@ -21,11 +21,13 @@ Vec3 Matrix4::vector(Vec3 v) const {
             a(2, 0) * v.x + a(2, 1) * v.y + a(2, 2) * v.z};
 }
 
-Vec3 Matrix4::normal(Vec3 n) const {
-    const Matrix4 inv = inverse();
-    return {inv(0, 0) * n.x + inv(1, 0) * n.y + inv(2, 0) * n.z,
-            inv(0, 1) * n.x + inv(1, 1) * n.y + inv(2, 1) * n.z,
-            inv(0, 2) * n.x + inv(1, 2) * n.y + inv(2, 2) * n.z};
+Vec3 Matrix4::normal(Vec3 n) const { return inverse().transpose_vector(n); }
+
+Vec3 Matrix4::transpose_vector(Vec3 v) const {
+    const Matrix4& a = *this;
+    return {a(0, 0) * v.x + a(1, 0) * v.y + a(2, 0) * v.z,
+            a(0, 1) * v.x + a(1, 1) * v.y + a(2, 1) * v.z,
+            a(0, 2) * v.x + a(1, 2) * v.y + a(2, 2) * v.z};
 }
 
 Matrix4 operator*(const Matrix4& a, const Matrix4& b) {

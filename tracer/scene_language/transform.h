@@ -19,10 +19,11 @@ struct Matrix4 {
     double operator()(int row, int column) const { return m[4 * row + column]; }
     double& operator()(int row, int column) { return m[4 * row + column]; }
 
-    Vec3 point(Vec3 p) const;   // affine point: rotation/scale part plus translation
-    Vec3 vector(Vec3 v) const;  // direction or edge: no translation
-    Vec3 normal(Vec3 n) const;  // inverse transpose, not normalised
-    Matrix4 inverse() const;    // throws rayset::Error when singular
+    Vec3 point(Vec3 p) const;             // affine point: rotation/scale part plus translation
+    Vec3 vector(Vec3 v) const;            // direction or edge: no translation
+    Vec3 normal(Vec3 n) const;            // inverse transpose, not normalised
+    Vec3 transpose_vector(Vec3 v) const;  // the linear part's transpose applied to v
+    Matrix4 inverse() const;              // throws rayset::Error when singular
 };
 
 Matrix4 operator*(const Matrix4& a, const Matrix4& b);
