@@ -2,6 +2,8 @@
 #include "tracer/render/material.h"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <functional>
 #include <vector>
 
@@ -100,7 +102,6 @@ public:
         const Unrendered unrendered[] = {
             {f.diffuse_albedo || f.specular_albedo || f.phong_albedo, "finish 'albedo'"},
             {f.diffuse_back != 0, "finish diffuse with a back-side amount"},
-            {f.crand != 0, "finish 'crand'"},
             {f.reflection_exponent != 1, "reflection 'exponent'"},
             {f.reflection_metallic != 0, "reflection 'metallic'"},
             {f.irid_amount != 0, "finish 'irid'"},
@@ -178,6 +179,28 @@ void add_weighted(Material& sum, const Material& m, Rgb weight) {
 
 const Rgb kWhite{1, 1, 1};
 
+// A number in [0, 1) fixed by a point's coordinates and scattered from one point to the next.
+double grain(Vec3 p) {
+    uint64_t h = 0x9e3779b97f4a7c15u;
+    for (const double v : {p.x, p.y, p.z}) {
+        uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        h = (h ^ bits) * 0xff51afd7ed558ccdu;
+        h ^= h >> 33;
+    }
+    h *= 0xc4ceb9fe1a85ec53u;
+    h ^= h >> 33;
+    return double(h >> 11) * 0x1.0p-53;
+}
+
+// finish { crand c }: POV-Ray darkens the diffuse light at each point by c u, u uniform in
+// [0, 1) and drawn anew at each point; here the diffuse albedo, as a grain fixed to the point.
+void darken_by_crand(Material& m, double crand, Vec3 point) {
+    const double dark = crand * grain(point);
+    m.diffuse = {std::max(0.0, m.diffuse.red - dark), std::max(0.0, m.diffuse.green - dark),
+                 std::max(0.0, m.diffuse.blue - dark)};
+}
+
 // Every plain texture a texture is made of.
 void for_each_plain_texture(const Texture& texture,
                             const std::function<void(const Texture&)>& visit) {
@@ -195,7 +218,8 @@ bool texture_varies(const Texture& texture) {
     bool varies = texture.kind == Texture::Kind::patterned;
     for_each_plain_texture(texture, [&](const Texture& plain) {
         varies = varies || plain.pigment.pattern->kind != PatternKind::plain ||
-                 (plain.normal && plain.normal->pattern->kind != PatternKind::plain);
+                 (plain.normal && plain.normal->pattern->kind != PatternKind::plain) ||
+                 plain.finish->crand != 0;
     });
     return varies;
 }
@@ -226,6 +250,7 @@ private:
             !evaluate_pigment(texture.pigment, point, colour))
             return false;
         out = material_of(decoding(colour), *texture.finish, ior, emission_scale);
+        if (texture.finish->crand > 0) darken_by_crand(out, texture.finish->crand, point);
         return !texture.normal || normal_perturbation(*texture.normal, point, normal, out.bump);
     }
     bool layered(const Texture& texture, Vec3 point, Material& out) const {
