@@ -905,10 +905,10 @@ TEST(AppearanceEvaluation, MapsAndPigmentMaps) {
                              "#declare P = pigment { gradient x color_map { [0 rgb <1, 0, 0>] [1 "
                              "rgb <0, 0, 1>] } }"),
                   0.5, 0, 0.5);
-    // What cannot be evaluated (the spirals, a black hole warp): the caller says so.
+    // What cannot be evaluated (spiral2, a black hole warp): the caller says so.
     EXPECT_NE(
         error_of(
-            "#declare F = function { pigment { spiral1 3 } }\ncamera { location F(0, 0, 0).red }")
+            "#declare F = function { pigment { spiral2 3 } }\ncamera { location F(0, 0, 0).red }")
             .find("not supported"),
         std::string::npos);
     EXPECT_NE(error_of("#declare F = function { pattern { gradient x warp { black_hole 0, 1 } } }\n"

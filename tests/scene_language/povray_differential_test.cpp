@@ -142,7 +142,8 @@ TEST_P(PovRayDifferential, DebugOutputAgrees) { expect_same_output(GetParam()); 
 INSTANTIATE_TEST_SUITE_P(Snippets, PovRayDifferential,
                          ::testing::Values("expressions.pov", "strings.pov", "random.pov",
                                            "directives.pov", "arrays.pov", "splines.pov",
-                                           "functions.pov", "includes.pov", "fileio.pov"),
+                                           "functions.pov", "includes.pov", "fileio.pov",
+                                           "patterns.pov"),
                          [](const ::testing::TestParamInfo<const char*>& info) {
                              std::string name = info.param;
                              return name.substr(0, name.find('.'));

@@ -120,11 +120,14 @@ TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
     // Transforms of a uniform colour change nothing; ambient is not physical.
     EXPECT_EQ(error("sphere { 0, 1 pigment { rgb 1 scale 2 rotate y } finish { ambient 0.3 } }"),
               "no error");
-    // Patterns the language evaluates render (noise ones too); spirals and fractals do not yet.
+    // Patterns the language evaluates render (noise ones too); spiral2 and fractals other than
+    // the plain Mandelbrot and Julia sets do not yet.
     EXPECT_EQ(error("sphere { 0, 1 pigment { checker } }"), "no error");
-    EXPECT_EQ(error("sphere { 0, 1 pigment { spiral1 3 } }"),
-              "not supported: pigment pattern 'spiral1' at test.pov:1:25");
-    EXPECT_EQ(error("sphere { 0, 1 pigment { mandel 20 } }"),
+    EXPECT_EQ(error("sphere { 0, 1 pigment { spiral1 3 } }"), "no error");
+    EXPECT_EQ(error("sphere { 0, 1 pigment { mandel 20 } }"), "no error");
+    EXPECT_EQ(error("sphere { 0, 1 pigment { spiral2 3 } }"),
+              "not supported: pigment pattern 'spiral2' at test.pov:1:25");
+    EXPECT_EQ(error("sphere { 0, 1 pigment { mandel 20 exponent 3 } }"),
               "not supported: pigment pattern 'mandel' at test.pov:1:25");
     // Normals tilt down a pattern's slope, or by noise; block patterns (which take lists of
     // normals), maps of normals and the patterns with a tilt of their own do not render yet.
@@ -139,9 +142,9 @@ TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
     EXPECT_EQ(error("sphere { 0, 1 texture { finish { phong 1 phong_size 10 } } texture { "
                     "pigment { rgbt 1 } finish { phong 1 phong_size 20 } } }"),
               "not supported: textures combining highlights of different sizes at test.pov:1:15");
-    EXPECT_EQ(error("sphere { 0, 1 texture { spiral1 3 texture_map { [0 pigment { rgb 1 }] "
+    EXPECT_EQ(error("sphere { 0, 1 texture { spiral2 3 texture_map { [0 pigment { rgb 1 }] "
                     "[1 pigment { rgb 0 }] } } }"),
-              "not supported: patterned textures (spiral1) at test.pov:1:25");
+              "not supported: patterned textures (spiral2) at test.pov:1:25");
     EXPECT_EQ(error("sphere { 0, 1 finish { irid { 0.3 } } }"),
               "not supported: finish 'irid' at test.pov:1:15");
     EXPECT_EQ(error("sphere { 0, 1 finish { diffuse 0.6, 0.2 } }"),

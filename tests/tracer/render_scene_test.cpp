@@ -238,8 +238,8 @@ TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
     EXPECT_EQ(render_error("rainbow { direction z angle 42 width 5 }"),
               "not supported: rainbow at test.pov:1:1");
     EXPECT_EQ(render_error("sky_sphere { pigment { rgb 1 } }"), "no error");
-    EXPECT_EQ(render_error("sky_sphere {\n pigment { spiral1 3 } }"),
-              "not supported: pigment pattern 'spiral1' in sky_sphere at test.pov:2:12");
+    EXPECT_EQ(render_error("sky_sphere {\n pigment { spiral2 3 } }"),
+              "not supported: pigment pattern 'spiral2' in sky_sphere at test.pov:2:12");
     EXPECT_EQ(render_error(
                   "global_settings { assumed_gamma 1 ambient_light 0.3 adc_bailout 0.1\n"
                   "  max_trace_level 3 max_intersections 10 number_of_waves 3 noise_generator 1\n"

@@ -1,11 +1,12 @@
 // Evaluation of patterns and pigments at a point (pattern and pigment functions, and the
 // renderer's textures): exact for solid colours and for the patterns that need no noise, image
-// or surface: boxed, brick, checker, cubic, cylindrical, function, gradient, hexagon, leopard,
-// marble, wood, object (where the object can answer), onion, pigment_pattern (of such
-// pigments), planar, radial, spherical, square and triangular, through transforms, frequency,
-// phase, waveforms and colour, pigment and list maps. The noise patterns (agate, bozo, bumps,
-// crackle, dents, granite, spotted, wrinkles) and turbulence agree with POV-Ray's in distribution
-// and spectrum, not point for point (noise.h). Everything else returns false.
+// or surface: boxed, brick, checker, cubic, cylindrical, function, gradient, hexagon, julia and
+// mandel (exponent 2), leopard, marble, wood, object (where the object can answer), onion,
+// pigment_pattern (of such pigments), planar, radial, spherical, spiral1, square and triangular,
+// through transforms, frequency, phase, waveforms and colour, pigment and list maps. The noise
+// patterns (agate, bozo, bumps, crackle, dents, granite, spotted, wrinkles) and turbulence agree
+// with POV-Ray's in distribution and spectrum, not point for point (noise.h). Everything else
+// returns false.
 //
 // Every rule below was read back from POV-Ray 3.7 itself through `function { pattern { ... } }`
 // and `function { pigment { ... } }` at random points (to 1e-6), since the manual leaves the
@@ -35,6 +36,27 @@ Vec3 turbulence_displacement(const Turbulence& turbulence, Vec3 point) {
 // Wood takes the classic turbulence in its own way (read back from POV-Ray's spectra: a plain
 // displacement decorrelates its rings five times too slowly).
 bool own_turbulence(PatternKind kind) { return kind == PatternKind::wood; }
+
+// z -> z^2 + c from z = `start` until |z| > 2 (the first step counted as 0), over
+// `iterations` steps: the step it escapes at over `iterations`, or 1 where it never does. The
+// plain Mandelbrot and Julia sets (exponent 2, POV-Ray's default exterior and interior).
+bool escape_time(const FractalParameters& f, double start_x, double start_y, double c_x, double c_y,
+                 double& value) {
+    if (f.magnet != 0 || f.exponent != 2 || f.exterior_type != 1 || f.exterior_factor != 1 ||
+        f.interior_type != 0 || f.interior_factor != 1 || f.iterations <= 0)
+        return false;
+    double x = start_x, y = start_y;
+    for (int i = 0; i < f.iterations; ++i) {
+        const double next_x = x * x - y * y + c_x;
+        y = 2 * x * y + c_y, x = next_x;
+        if (x * x + y * y > 4) {
+            value = double(i) / f.iterations;
+            return true;
+        }
+    }
+    value = 1;
+    return true;
+}
 
 // Rings around z, each axis pushed by a sine of the turbulent coordinate: x + sin(2 pi (x +
 // T.x) a.x), the same for y, with T the vector turbulence and a the turbulence amount.
@@ -181,6 +203,16 @@ bool raw_value(const Pattern& pattern, Vec3 p, double& value) {
         case PatternKind::agate: value = agate(pattern, p); return true;
         case PatternKind::crackle: value = crackle(pattern, p); return true;
         case PatternKind::radial: value = radial(p); return true;
+        case PatternKind::spiral1:
+            // Arms around z that climb one unit along z and out along the radius per turn; the
+            // turn's fraction measured from -y, in [0, 1).
+            value = std::sqrt(p.x * p.x + p.y * p.y) + p.z +
+                    pattern.spiral_arms * fraction(std::atan2(p.y, p.x) / (2 * kPi) + 0.25);
+            return true;
+        case PatternKind::mandel: return escape_time(pattern.fractal, p.x, p.y, p.x, p.y, value);
+        case PatternKind::julia:
+            return escape_time(pattern.fractal, p.x, p.y, pattern.fractal.julia_real,
+                               pattern.fractal.julia_imaginary, value);
         case PatternKind::gradient: {
             const Vec3 g = pattern.gradient;
             const double norm = std::sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
