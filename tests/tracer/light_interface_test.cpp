@@ -115,6 +115,14 @@ TEST(LightInterface, BidirectionalSamplesAndEmitsPovRayLights) {
         "light_source { <0, 10, 0> color rgb 0.001 area_light <10, 0, 0>, <0, 0, 10>, 2, 2 }",
         4 * kPi * intensity, "area light");
     expect_bidirectional_balance(
+        "light_source { <0, 10, 0> color rgb 0.001 area_light <10, 0, 0>, "
+        "<0, 0, 10>, 2, 2 circular }",
+        4 * kPi * intensity, "circular area light");
+    expect_bidirectional_balance(
+        "light_source { <0, 10, 0> color rgb 0.001 area_light <10, 0, 0>, "
+        "<0, 0, 10>, 2, 2 circular orient }",
+        4 * kPi * intensity, "oriented area light");
+    expect_bidirectional_balance(
         "light_source { <0, 10, 0> color rgb 0.001 spotlight point_at <0, -50, 0> radius -90 "
         "falloff 90 tightness 1 }",
         kPi * intensity, "cosine spotlight");

@@ -351,5 +351,55 @@ TEST(RenderAreaLight, TwoSidedRectangleEmitsHalfItsPowerEachWay) {
     }
 }
 
+TEST(RenderAreaLight, CircularLightIsADiscOfItsPower) {
+    // A circular area light is the ellipse inscribed in its axes' rectangle: here a disc of
+    // radius r = 50 mm, two-sided, of the point lights' power P = 4 pi: L = P / (2 pi^2 r^2).
+    // On its axis at height h a facing receiver gets E = pi L r^2 / (r^2 + h^2).
+    RenderSettings settings;
+    settings.render_image = false, settings.passes = 4096, settings.seed = 4;
+    const RenderResult r = render_text(R"(
+        light_source { <0, 0, 0> color rgb 1 area_light <100, 0, 0>, <0, 0, 100>, 3, 3 circular }
+        illuminance_receiver { <-1, -60, -1>, <0, 0, 2>, <2, 0, 0> resolution <1, 1> name "near" }
+        illuminance_receiver { <-1, 400, -1>, <2, 0, 0>, <0, 0, 2> resolution <1, 1> name "far" }
+    )",
+                                       settings);
+    const double radius = 50, radiance = 4 * kPi / (2 * kPi * kPi * radius * radius);
+    for (const ReceiverMap& map : r.receivers) {
+        const double h = map.receiver.name == "near" ? 60 : 400;
+        const double expected =
+            683e6 * kPi * radiance * radius * radius / (radius * radius + h * h);
+        const double se = map.irradiance.photometric_standard_error(0, 0);
+        EXPECT_LT(se, 0.01 * expected) << map.receiver.name;
+        EXPECT_NEAR(map.irradiance.photometric_mean(0, 0), expected, kZ * se) << map.receiver.name;
+    }
+}
+
+TEST(RenderAreaLight, OrientedLightIsASphereOfItsPower) {
+    // An oriented area light is a Lambertian sphere of its first axis' diameter (R = 50 mm)
+    // emitting the point lights' power P = 4 pi: outside it the illuminance of a facing
+    // receiver is P / (4 pi d^2) at any distance d from its centre, as a point's; seen from
+    // the camera, the sphere's radiance is L = P / (4 pi^2 R^2).
+    RenderSettings settings;
+    settings.passes = 4096, settings.seed = 6, settings.width = 9, settings.height = 9;
+    const RenderResult r = render_text(R"(
+        camera { location <0, 0, -1000> look_at <0, 0, 0> angle 1 }
+        light_source { <0, 0, 0> color rgb 1 area_light <100, 0, 0>, <0, 0, 100>, 3, 3
+                       circular orient }
+        illuminance_receiver { <-1, -70, -1>, <0, 0, 2>, <2, 0, 0> resolution <1, 1> name "70" }
+        illuminance_receiver { <-1, 400, -1>, <2, 0, 0>, <0, 0, 2> resolution <1, 1> name "400" }
+    )",
+                                       settings);
+    for (const ReceiverMap& map : r.receivers) {
+        const double d = std::stod(map.receiver.name);
+        const double expected = 683e6 * 4 * kPi / (4 * kPi * d * d);
+        const double se = map.irradiance.photometric_standard_error(0, 0);
+        EXPECT_LT(se, 0.01 * expected) << map.receiver.name;
+        EXPECT_NEAR(map.irradiance.photometric_mean(0, 0), expected, kZ * se) << map.receiver.name;
+    }
+    // The camera's 1 degree view at 1 m spans 17 mm: the middle pixel sees only the sphere.
+    const double radiance = 4 * kPi / (4 * kPi * kPi * 50 * 50) * 1e6;  // W/(m^2 sr)
+    EXPECT_NEAR(r.film.mean(4, 4).red, radiance, 1e-9 * radiance);
+}
+
 }  // namespace
 }  // namespace rayset::tracer

@@ -10,20 +10,6 @@
 
 namespace rayset::tracer {
 
-namespace {
-
-// Extends [low, high] by a rectangle's corners.
-void extend_by_corners(const RectLight& r, Vec3& low, Vec3& high) {
-    for (double a : {-0.5, 0.5})
-        for (double b : {-0.5, 0.5}) {
-            const Vec3 c = r.centre + a * r.edge1 + b * r.edge2;
-            low = {std::min(low.x, c.x), std::min(low.y, c.y), std::min(low.z, c.z)};
-            high = {std::max(high.x, c.x), std::max(high.y, c.y), std::max(high.z, c.z)};
-        }
-}
-
-}  // namespace
-
 lightmodel::BinnedSpectrum ordinary_light_density() {
     const lightmodel::BinnedSpectrum d65 = lightmodel::d65_spectrum();
     std::array<double, lightmodel::kSpectrumBins> light{};
@@ -32,20 +18,18 @@ lightmodel::BinnedSpectrum ordinary_light_density() {
 }
 
 LightSet::LightSet(std::vector<Light> lights) : lights_(std::move(lights)) {
-    // The box around rectangles, widened once here: the box test runs for every ray a path casts.
-    rectangles_low_ = {1e300, 1e300, 1e300}, rectangles_high_ = {-1e300, -1e300, -1e300};
+    // The box around area lights, widened once here: the box test runs for every ray a path
+    // casts.
+    area_low_ = {1e300, 1e300, 1e300}, area_high_ = {-1e300, -1e300, -1e300};
     for (size_t i = 0; i < lights_.size(); ++i) {
         cdf_.push_back(total_power_ += lights_[i].power());
-        if (const RectLight* rect = lights_[i].rectangle()) {
-            rectangles_.push_back(i);
-            extend_by_corners(*rect, rectangles_low_, rectangles_high_);
-        }
+        if (lights_[i].extend_by_area_body(area_low_, area_high_)) area_bodies_.push_back(i);
         if (lights_[i].is_ray_source()) {
             has_ray_sources_ = true;
             if (!lights_[i].photons_only()) ray_source_bodies_.push_back(i);
         }
     }
-    widen_box(rectangles_low_, rectangles_high_);
+    widen_box(area_low_, area_high_);
     for (size_t i = 0; i < cdf_.size(); ++i)
         probability_.push_back(total_power_ > 0 ? (cdf_[i] - (i ? cdf_[i - 1] : 0)) / total_power_
                                                 : 0);
@@ -56,6 +40,7 @@ LightSet::LightSet(const SceneDescription& scene, const SceneUnits& units, bool 
     std::vector<Light> lights;
     for (PointLight& l : povray.points) lights.emplace_back(std::move(l));
     for (RectLight& l : povray.rects) lights.emplace_back(std::move(l));
+    for (SphereLight& l : povray.spheres) lights.emplace_back(std::move(l));
     for (PlacedRaySource& s : read_ray_sources(scene, naive_sources))
         lights.emplace_back(std::move(s));
     *this = LightSet(std::move(lights));
@@ -107,9 +92,8 @@ Q LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double b
                 power_heuristic(bsdf_pdf, lights_[i].pdf_Li(origin, direction, t, probability_[i]));
         sum += weight * lights_[i].radiance<Q>(origin, direction, wavelengths);
     };
-    if (!rectangles_.empty() &&
-        ray_crosses_box(origin, direction, t_max, rectangles_low_, rectangles_high_))
-        for (size_t i : rectangles_) add(i);
+    if (!area_bodies_.empty() && ray_crosses_box(origin, direction, t_max, area_low_, area_high_))
+        for (size_t i : area_bodies_) add(i);
     for (size_t i : ray_source_bodies_) add(i);
     return sum;
 }

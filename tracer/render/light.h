@@ -41,7 +41,19 @@ public:
     bool photons_only() const {
         return std::visit([](const auto& l) { return l.photons_only(); }, kind_);
     }
-    const RectLight* rectangle() const { return std::get_if<RectLight>(&kind_); }
+    // Extends [low, high] by the body of an area light (rectangle, ellipse or sphere); false
+    // for the other kinds, which have none or track their own.
+    bool extend_by_area_body(Vec3& low, Vec3& high) const {
+        if (const auto* rect = std::get_if<RectLight>(&kind_)) {
+            rect->extend_bounds(low, high);
+            return true;
+        }
+        if (const auto* sphere = std::get_if<SphereLight>(&kind_)) {
+            sphere->extend_bounds(low, high);
+            return true;
+        }
+        return false;
+    }
     bool is_ray_source() const { return std::holds_alternative<PlacedRaySource>(kind_); }
 
     template <class Q>
@@ -77,7 +89,7 @@ public:
     }
 
 private:
-    std::variant<PointLight, RectLight, PlacedRaySource> kind_;
+    std::variant<PointLight, RectLight, SphereLight, PlacedRaySource> kind_;
 };
 
 // Every light of a scene, chosen in proportion to power for light sampling and for photons.
@@ -94,7 +106,7 @@ public:
     const Light& operator[](size_t i) const { return lights_[i]; }
     double probability(size_t i) const { return probability_[i]; }
     double total_power() const { return total_power_; }
-    bool has_bodies() const { return !rectangles_.empty() || !ray_source_bodies_.empty(); }
+    bool has_bodies() const { return !area_bodies_.empty() || !ray_source_bodies_.empty(); }
     bool has_ray_sources() const { return has_ray_sources_; }
 
     // The canonical numbers of one light sample (floats: 24 bits are ample for a choice among
@@ -126,10 +138,10 @@ private:
     std::vector<Light> lights_;
     std::vector<double> cdf_;  // running sum of the lights' power
     std::vector<double> probability_;
-    // Lights a ray can cross: rectangles (with a box around them all, widened a little: most
+    // Lights a ray can cross: area lights (with a box around them all, widened a little: most
     // rays miss it at once) and ray sources with a body.
-    std::vector<size_t> rectangles_, ray_source_bodies_;
-    Vec3 rectangles_low_, rectangles_high_;
+    std::vector<size_t> area_bodies_, ray_source_bodies_;
+    Vec3 area_low_, area_high_;
     double total_power_ = 0;
     bool has_ray_sources_ = false;
 };

@@ -8,7 +8,7 @@ namespace rayset::tracer {
 
 // The canonical random numbers of one light sample, each in [0, 1): `select` picks the light and
 // is handed to it rescaled to [0, 1) (a ray source reuses it for its flux cell); a light uses as
-// many of `u` as it needs, in order (a rectangle 2, a ray source 4, a point none).
+// many of `u` as it needs, in order (a rectangle or a sphere 2, a ray source 4, a point none).
 struct LightUniforms {
     static constexpr int kCount = 4;
     double select = 0;

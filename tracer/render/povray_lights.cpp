@@ -54,7 +54,51 @@ bool RectLight::crossed(Vec3 origin, Vec3 direction, double t_max, double& t) co
     t = dot(centre - origin, normal) / denom;
     if (!(t > 0 && t < t_max)) return false;
     const Vec3 q = origin + t * direction - centre;
-    return std::abs(dot(q, dual1)) <= 0.5 && std::abs(dot(q, dual2)) <= 0.5;
+    const double a = dot(q, dual1), b = dot(q, dual2);
+    return elliptical ? a * a + b * b <= 0.25 : std::abs(a) <= 0.5 && std::abs(b) <= 0.5;
+}
+
+Vec3 RectLight::point_at(double u0, double u1) const {
+    if (!elliptical) return centre + (u0 - 0.5) * edge1 + (u1 - 0.5) * edge2;
+    const double r = 0.5 * std::sqrt(u0), phi = 2 * kPi * u1;
+    return centre + (r * std::cos(phi)) * edge1 + (r * std::sin(phi)) * edge2;
+}
+
+void RectLight::extend_bounds(Vec3& low, Vec3& high) const {
+    for (double a : {-0.5, 0.5})
+        for (double b : {-0.5, 0.5}) {
+            const Vec3 c = centre + a * edge1 + b * edge2;
+            low = {std::min(low.x, c.x), std::min(low.y, c.y), std::min(low.z, c.z)};
+            high = {std::max(high.x, c.x), std::max(high.y, c.y), std::max(high.z, c.z)};
+        }
+}
+
+bool SphereLight::crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const {
+    const Vec3 from_centre = origin - centre;
+    const double b = dot(from_centre, direction);
+    const double c = dot(from_centre, from_centre) - radius * radius;
+    if (c <= 0) return false;  // inside: the sphere emits outward only
+    const double discriminant = b * b - c;
+    if (discriminant < 0 || b > 0) return false;
+    t = c / (-b + std::sqrt(discriminant));  // the nearer root, without cancellation
+    return t > 0 && t < t_max;
+}
+
+double SphereLight::cone_solid_angle(Vec3 ref) const {
+    const Vec3 d = centre - ref;
+    const double sin2 = std::min(1.0, radius * radius / dot(d, d));
+    return 2 * kPi * sin2 / (1 + std::sqrt(1 - sin2));  // 2 pi (1 - cos), without cancellation
+}
+
+double SphereLight::pdf_Li(Vec3 ref, Vec3, double, double chosen) const {
+    return chosen / cone_solid_angle(ref);
+}
+
+void SphereLight::extend_bounds(Vec3& low, Vec3& high) const {
+    low = {std::min(low.x, centre.x - radius), std::min(low.y, centre.y - radius),
+           std::min(low.z, centre.z - radius)};
+    high = {std::max(high.x, centre.x + radius), std::max(high.y, centre.y + radius),
+            std::max(high.z, centre.z + radius)};
 }
 
 double RectLight::pdf_Li(Vec3, Vec3 wi, double t, double chosen) const {
@@ -81,8 +125,7 @@ template <class Q>
 std::optional<LightLiSampleOf<Q>> RectLight::sample_Li(Vec3 ref, const LightUniforms& u,
                                                        double chosen,
                                                        const WavelengthsFor<Q>& wavelengths) const {
-    const Vec3 q = centre + (u.u[0] - 0.5) * edge1 + (u.u[1] - 0.5) * edge2;
-    const Vec3 d = q - ref;
+    const Vec3 d = point_at(u.u[0], u.u[1]) - ref;
     LightLiSampleOf<Q> out;
     out.distance = length(d);
     if (out.distance == 0) return std::nullopt;
@@ -132,7 +175,7 @@ LightPhotonOf<Q> PointLight::sample_Le(const double u[7], double u_wavelength) c
 template <class Q>
 LightPhotonOf<Q> RectLight::sample_Le(const double u[7], double u_wavelength) const {
     LightPhotonOf<Q> photon;
-    photon.origin = centre + (u[1] - 0.5) * edge1 + (u[2] - 0.5) * edge2;
+    photon.origin = point_at(u[1], u[2]);
     const bool back = two_sided && u[0] < 0.5;
     const Vec3 side = back ? -normal : normal;
     photon.direction = normalized(Frame(side).to_world(cosine_hemisphere(u[3], u[4])));
@@ -142,8 +185,47 @@ LightPhotonOf<Q> RectLight::sample_Le(const double u[7], double u_wavelength) co
     return photon;
 }
 
+template <class Q>
+std::optional<LightLiSampleOf<Q>> SphereLight::sample_Li(
+    Vec3 ref, const LightUniforms& u, double chosen, const WavelengthsFor<Q>& wavelengths) const {
+    const Vec3 d = centre - ref;
+    const double distance = length(d);
+    if (!(distance > radius)) return std::nullopt;
+    const double sin2_max = radius * radius / (distance * distance);
+    const double one_minus_cos_max = sin2_max / (1 + std::sqrt(1 - sin2_max));
+    const double cos_theta = 1 - u.u[0] * one_minus_cos_max;
+    const double sin2_theta = std::max(0.0, (1 - cos_theta) * (1 + cos_theta));
+    const double sin_theta = std::sqrt(sin2_theta), phi = 2 * kPi * u.u[1];
+    LightLiSampleOf<Q> out;
+    out.wi = normalized(
+        Frame((1 / distance) * d)
+            .to_world({sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta}));
+    // The nearer crossing along wi; at the cone's edge the ray grazes the sphere.
+    const double half_chord =
+        std::sqrt(std::max(0.0, radius * radius - distance * distance * sin2_theta));
+    out.distance = distance * cos_theta - half_chord;
+    out.Li = emitted(radiance_rgb, radiance_spectrum, wavelengths);
+    out.pdf = chosen / (2 * kPi * one_minus_cos_max);
+    return out;
+}
+
+template <class Q>
+LightPhotonOf<Q> SphereLight::sample_Le(const double u[7], double u_wavelength) const {
+    const double z = 1 - 2 * u[1], phi = 2 * kPi * u[2];
+    const double r = std::sqrt(std::max(0.0, 1 - z * z));
+    const Vec3 n{r * std::cos(phi), r * std::sin(phi), z};
+    LightPhotonOf<Q> photon;
+    photon.origin = centre + radius * n;
+    photon.direction = normalized(Frame(n).to_world(cosine_hemisphere(u[3], u[4])));
+    // L cos dA dw over (cos / pi) / A.
+    set_photon_flux(photon, (kPi * 4 * kPi * radius * radius) * radiance_rgb, radiance_spectrum,
+                    u_wavelength);
+    return photon;
+}
+
 lightmodel::BinnedSpectrum PointLight::spectrum() const { return lightmodel::d65_spectrum(); }
 lightmodel::BinnedSpectrum RectLight::spectrum() const { return lightmodel::d65_spectrum(); }
+lightmodel::BinnedSpectrum SphereLight::spectrum() const { return lightmodel::d65_spectrum(); }
 
 namespace {
 
@@ -178,20 +260,22 @@ PointLight point_light_of(const LightSource& source, Rgb colour, const SceneUnit
 }
 
 // The n1 x n2 POV-Ray lights of an area light share the colour, so together they emit the
-// power of `point`; the rectangle emits the same power, Lambertian.
+// power of `point`; the rectangle (or ellipse) emits the same power, Lambertian.
 RectLight rect_light_of(const LightSource& source, const PointLight& point, double solid_angle,
                         const std::string& where) {
     RectLight rect;
     rect.centre = source.position;
     rect.edge1 = source.axis1;
     rect.edge2 = source.axis2;
+    rect.elliptical = source.circular;
     const Vec3 n = cross(rect.edge1, rect.edge2);
-    rect.area = length(n);
-    if (rect.area == 0) throw Error(fmt::format("area_light axes span no area at {}", where));
-    rect.normal = (1 / rect.area) * n;
+    const double parallelogram = length(n);
+    if (parallelogram == 0) throw Error(fmt::format("area_light axes span no area at {}", where));
+    rect.area = rect.elliptical ? kPi / 4 * parallelogram : parallelogram;
+    rect.normal = (1 / parallelogram) * n;
     // q = a edge1 + b edge2 gives a = dot(q, cross(edge2, n)) / |n|^2, b likewise.
-    rect.dual1 = (1 / (rect.area * rect.area)) * cross(rect.edge2, n);
-    rect.dual2 = (1 / (rect.area * rect.area)) * cross(n, rect.edge1);
+    rect.dual1 = (1 / (parallelogram * parallelogram)) * cross(rect.edge2, n);
+    rect.dual2 = (1 / (parallelogram * parallelogram)) * cross(n, rect.edge1);
     rect.two_sided = !point.spot;
     if (point.spot && dot(rect.normal, point.axis) < 0) rect.normal = -rect.normal;
     const double projected = (rect.two_sided ? 2 : 1) * kPi * rect.area;  // W per unit radiance
@@ -199,6 +283,21 @@ RectLight rect_light_of(const LightSource& source, const PointLight& point, doub
     rect.radiance_rgb = (solid_angle / projected) * point.intensity;
     rect.radiance_spectrum = IlluminantSpectrum(rect.radiance_rgb);
     return rect;
+}
+
+// An oriented area light (POV-Ray makes it circular, both axes as long as the first): a sphere
+// of that diameter emitting the power of `point`, Lambertian.
+SphereLight sphere_light_of(const LightSource& source, const PointLight& point, double solid_angle,
+                            const std::string& where) {
+    SphereLight sphere;
+    sphere.centre = source.position;
+    sphere.radius = 0.5 * length(source.axis1);
+    if (sphere.radius == 0) throw Error(fmt::format("area_light axis of length 0 at {}", where));
+    const double projected = kPi * 4 * kPi * sphere.radius * sphere.radius;
+    sphere.emitted_power = point.emitted_power;
+    sphere.radiance_rgb = (solid_angle / projected) * point.intensity;
+    sphere.radiance_spectrum = IlluminantSpectrum(sphere.radiance_rgb);
+    return sphere;
 }
 
 }  // namespace
@@ -210,14 +309,15 @@ PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const Sc
         const std::string where = source.location.str();
         if (source.shadowless && source.area_light)
             throw Error(fmt::format("not supported: shadowless area_light at {}", where));
-        if (source.area_light && (source.circular || source.orient))
-            throw Error(fmt::format(
-                "not supported: circular/orient area_light (only rectangles) at {}", where));
+        if (source.area_light && source.orient && source.spotlight)
+            throw Error(fmt::format("not supported: an oriented area spotlight at {}", where));
         PointLight point = point_light_of(source, decoding(source.colour), units, where);
         point.shadowless = source.shadowless;
         const double solid_angle = effective_solid_angle(point);
         point.emitted_power = average(point.intensity) * solid_angle;
-        if (source.area_light)
+        if (source.area_light && source.orient)
+            out.spheres.push_back(sphere_light_of(source, point, solid_angle, where));
+        else if (source.area_light)
             out.rects.push_back(rect_light_of(source, point, solid_angle, where));
         else
             out.points.push_back(point);
@@ -230,8 +330,11 @@ PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const Sc
         Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;           \
     template std::optional<LightLiSampleOf<Q>> RectLight::sample_Li<Q>(                \
         Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;           \
+    template std::optional<LightLiSampleOf<Q>> SphereLight::sample_Li<Q>(              \
+        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;           \
     template LightPhotonOf<Q> PointLight::sample_Le<Q>(const double[7], double) const; \
-    template LightPhotonOf<Q> RectLight::sample_Le<Q>(const double[7], double) const;
+    template LightPhotonOf<Q> RectLight::sample_Le<Q>(const double[7], double) const;  \
+    template LightPhotonOf<Q> SphereLight::sample_Le<Q>(const double[7], double) const;
 RAYSET_POVRAY_LIGHT_QUERIES(Rgb)
 RAYSET_POVRAY_LIGHT_QUERIES(SampledSpectrum)
 #undef RAYSET_POVRAY_LIGHT_QUERIES

@@ -1,6 +1,7 @@
 // POV-Ray light sources read physically (the unit conventions are in README.md beside this
 // file): point and spot lights as point emitters of radiant intensity in W/sr, area lights as
-// Lambertian rectangles. Both kinds answer the queries of the light interface (light.h).
+// Lambertian rectangles or ellipses (circular), oriented area lights as Lambertian spheres.
+// Each kind answers the queries of the light interface (light.h).
 #pragma once
 
 #include <optional>
@@ -47,11 +48,12 @@ struct PointLight {
 };
 
 // An area light: a Lambertian rectangle of radiance `radiance` (renderer units), one-sided
-// toward `normal` or two-sided.
+// toward `normal` or two-sided; or the ellipse inscribed in it (a circular area light).
 struct RectLight {
     Vec3 centre, edge1, edge2;
     Vec3 normal;  // unit; the emitting side (both sides when two_sided)
     bool two_sided = false;
+    bool elliptical = false;
     double area = 0;
     Rgb radiance_rgb;                      // W/(unit^2 sr)
     IlluminantSpectrum radiance_spectrum;  // the same for spectral transport
@@ -75,14 +77,52 @@ struct RectLight {
     template <class Q>
     LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const;
     lightmodel::BinnedSpectrum spectrum() const;
+    void extend_bounds(Vec3& low, Vec3& high) const;  // by the body's box
+
+private:
+    Vec3 point_at(double u0, double u1) const;  // uniform on the body for uniform u0, u1
+};
+
+// An oriented area light: a Lambertian sphere of radiance `radiance` (renderer units), seen
+// from every point as a disc facing it, as POV-Ray turns an oriented light's disc toward each
+// point it lights.
+struct SphereLight {
+    Vec3 centre;
+    double radius = 0;
+    Rgb radiance_rgb;                      // W/(unit^2 sr)
+    IlluminantSpectrum radiance_spectrum;  // the same for spectral transport
+    double emitted_power = 0;              // W, average over channels
+
+    double power() const { return emitted_power; }
+    bool photons_only() const { return false; }
+    // Uniform in the cone of directions the sphere fills seen from `ref` (outside it).
+    template <class Q>
+    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                                                const WavelengthsFor<Q>& wavelengths) const;
+    // Distance along (origin, unit direction) to the sphere in (0, t_max), from outside it.
+    bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const;
+    double pdf_Li(Vec3 ref, Vec3 wi, double t, double chosen) const;
+    template <class Q>
+    Q radiance(Vec3, Vec3, const WavelengthsFor<Q>& wavelengths) const {
+        return emitted(radiance_rgb, radiance_spectrum, wavelengths);
+    }
+    // A uniform point, a cosine-distributed direction about the outward normal there.
+    template <class Q>
+    LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const;
+    lightmodel::BinnedSpectrum spectrum() const;
+    void extend_bounds(Vec3& low, Vec3& high) const;  // by the body's box
+
+private:
+    double cone_solid_angle(Vec3 ref) const;  // of the directions toward it from `ref`
 };
 
 struct PovrayLights {
     std::vector<PointLight> points;
     std::vector<RectLight> rects;
+    std::vector<SphereLight> spheres;
 };
 // The scene's light_source statements; throws rayset::Error, naming the statement, for what
-// it does not render (shadowless area lights, fade powers other than 2, circular area lights).
+// it does not render (shadowless area lights, fade powers other than 2).
 // Shadowless point and spot lights light every point they face, as POV-Ray's do: not
 // physical (RenderScene::notes says so).
 PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const SceneUnits& units,
