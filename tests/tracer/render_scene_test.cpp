@@ -217,6 +217,21 @@ std::string render_error(const std::string& text) {
     return "no error";
 }
 
+// What the renderer renders as POV-Ray does rather than physically, or leaves to its own
+// physics, it says in a note: shadowless lights, fake caustics.
+TEST(RenderScene, NotesWhatItRendersItsOwnWay) {
+    const RenderScene plain(parse_scene_text("sphere { 0, 1 interior { ior 1.5 } }", "test.pov"));
+    EXPECT_TRUE(plain.notes().empty());
+    const RenderScene glass(parse_scene_text(
+        "sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.5 caustics 1 } }\n"
+        "sphere { 2, 1 pigment { rgbf 1 } interior { ior 1.5 caustics 0.5 } }\n"
+        "light_source { <0, 9, 0> color 1 shadowless }",
+        "test.pov"));
+    ASSERT_EQ(glass.notes().size(), 2u);
+    EXPECT_NE(glass.notes()[0].find("shadowless light_source at test.pov:3:1"), std::string::npos);
+    EXPECT_NE(glass.notes()[1].find("interior caustics at test.pov:1:34"), std::string::npos);
+}
+
 TEST(RenderLights, UnsupportedFadeAndShadowlessAreaLightsAreErrors) {
     EXPECT_EQ(
         render_error("light_source { <0,0,0> color 1 fade_distance 2 fade_power 1 }"),

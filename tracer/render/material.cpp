@@ -114,7 +114,6 @@ public:
     }
     void check_interior(const Interior& interior) const {
         if (!interior.media.empty()) fail("media", interior.media.front()->location);
-        if (interior.caustics != 0) fail("interior 'caustics'", interior.location);
         if (interior.dispersion != 1) fail("interior 'dispersion'", interior.location);
         if (interior.fade_distance != 0 || interior.fade_power != 0)
             fail("interior fade_distance/fade_power", interior.location);

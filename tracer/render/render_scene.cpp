@@ -94,6 +94,21 @@ SceneUnits units_of(const SceneDescription& scene) {
 
 }  // namespace
 
+// interior { caustics C } brightens the shadows of transparent objects with POV-Ray's fake
+// caustics, a stand-in for the light they focus; the renderer renders that light as it goes
+// (the bidirectional integrator finds its caustics), so the hint only earns a note.
+void RenderScene::note_fake_caustics(const SceneDescription& scene) {
+    for (const ObjectInstance& o : scene.objects) {
+        const InteriorRef& interior = o.appearance.interior;
+        if (!interior || interior->caustics == 0) continue;
+        notes_.push_back(fmt::format(
+            "interior caustics at {}: POV-Ray's fake caustics are not drawn; the light through "
+            "the object is rendered as it goes (the bidirectional integrator renders caustics)",
+            interior->location.str()));
+        return;  // one note says it for every object
+    }
+}
+
 RenderScene::RenderScene(const SceneDescription& scene)
     : description_(scene),
       units_(units_of(scene)),
@@ -114,6 +129,7 @@ RenderScene::RenderScene(const SceneDescription& scene)
         materials_.emplace_back(o, to_internal, decoding);
         no_shadow_.push_back(o.no_shadow);
     }
+    note_fake_caustics(scene);
 
     device_ = rtcNewDevice(nullptr);
     if (!device_) throw Error("cannot create the Embree device");
