@@ -125,6 +125,12 @@ TEST(RenderShapes, PolynomialsAgreeWithPovRayPixelForPixel) {
     expect_flat_colours_agree("polynomials.pov", 1.0);
 }
 
+// Superellipsoids from rounded boxes (exponents 0.2) to pinched stars (3), turned and scaled
+// unevenly, cut by a sphere and by a plane.
+TEST(RenderShapes, SuperellipsoidsAgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("superellipsoids.pov", 1.0);
+}
+
 // Text in three of POV-Ray's fonts (curves, holes, an offset, turned, thick) and cut from a box.
 TEST(RenderShapes, TextAgreesWithPovRayPixelForPixel) {
     expect_flat_colours_agree("text.pov", 1.0);

@@ -107,6 +107,26 @@ TEST(RenderScene, AnalyticShapesHitWhereTheClosedFormsSay) {
     EXPECT_NEAR(h.normal.x, -1, 1e-6);
 }
 
+// Superellipsoids of closed form: <1, 1> is the unit sphere, <2, 2> the octahedron
+// |x| + |y| + |z| = 1, <e, 1> about z a sphere's profile; distances to 1e-9 (the bisection
+// goes to the last bit) and outward normals.
+TEST(RenderScene, SuperellipsoidsHitWhereTheClosedFormsSay) {
+    const Scene sphere("superellipsoid { <1, 1> translate 10*z }");
+    SurfaceHit h = sphere.hit({0.6, 0, 0}, {0, 0, 1});
+    ASSERT_EQ(sphere.hit({0.6, 0, 0}, {0, 0, 1}).object, 0);
+    EXPECT_NEAR(h.t, 10 - 0.8, 1e-5);
+    expect_vec(h.normal, {0.6, 0, -0.8}, 1e-6);
+    const Scene octahedron("superellipsoid { <2, 2> scale 2 }");
+    h = octahedron.hit({-10, 0.5, 0.5}, {1, 0, 0});  // |x| = 2 - 0.5 - 0.5 = 1
+    EXPECT_NEAR(h.t, 9, 1e-5);
+    expect_vec(h.normal, normalized({-1, 1, 1}), 1e-6);
+    const Vec3 diagonal = normalized({1, 1, 1});
+    h = octahedron.hit(-10 * diagonal, diagonal);  // the face's middle, 2 / sqrt(3) out
+    EXPECT_NEAR(h.t, 10 - 2 / std::sqrt(3.0), 1e-5);
+    expect_vec(h.normal, -1 * diagonal, 1e-6);
+    EXPECT_EQ(octahedron.hit({-10, 1.1, 1.1}, {1, 0, 0}).object, -1);  // past an edge
+}
+
 // Text: the glyph outline extruded along z from 0 to the thickness, its first glyph's left edge
 // at x = 0. Times Roman's "I" is a stem with serifs: its caps face -z and +z, its stem's walls
 // +-x; "O" has a hole where a ray along z passes through.
@@ -222,11 +242,11 @@ std::string render_error(const std::string& text) {
 TEST(RenderScene, NotesWhatItRendersItsOwnWay) {
     const RenderScene plain(parse_scene_text("sphere { 0, 1 interior { ior 1.5 } }", "test.pov"));
     EXPECT_TRUE(plain.notes().empty());
-    const RenderScene glass(parse_scene_text(
-        "sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.5 caustics 1 } }\n"
-        "sphere { 2, 1 pigment { rgbf 1 } interior { ior 1.5 caustics 0.5 } }\n"
-        "light_source { <0, 9, 0> color 1 shadowless }",
-        "test.pov"));
+    const RenderScene glass(
+        parse_scene_text("sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.5 caustics 1 } }\n"
+                         "sphere { 2, 1 pigment { rgbf 1 } interior { ior 1.5 caustics 0.5 } }\n"
+                         "light_source { <0, 9, 0> color 1 shadowless }",
+                         "test.pov"));
     ASSERT_EQ(glass.notes().size(), 2u);
     EXPECT_NE(glass.notes()[0].find("shadowless light_source at test.pov:3:1"), std::string::npos);
     EXPECT_NE(glass.notes()[1].find("interior caustics at test.pov:1:34"), std::string::npos);

@@ -21,7 +21,7 @@ namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
 // other than sphere, box, plane, triangle, mesh, cylinder, cone, torus, disc, text of a TrueType
-// font, quadric and polynomials (solids.h
+// font, quadric, polynomials and superellipsoid (solids.h
 // refuses what it cannot take into CSG, clipped_by, bounded_by or inverse), and the modifiers
 // that change what is seen. Photon and
 // radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
@@ -40,7 +40,7 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
         (std::holds_alternative<TextShape>(s) && std::get<TextShape>(s).outline) ||
         std::holds_alternative<CsgShape>(s) || std::holds_alternative<PolynomialShape>(s) ||
-        std::holds_alternative<QuadricShape>(s);
+        std::holds_alternative<QuadricShape>(s) || std::holds_alternative<SuperellipsoidShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
     if (const auto* sphere = std::get_if<SphereShape>(&o.shape); sphere && !(sphere->radius > 0))
         refuse(fmt::format("sphere of radius {} (only positive radii)", sphere->radius));
@@ -86,7 +86,7 @@ Vec3 unit_or_up(Vec3 v) {
 bool analytic(const Shape& s) {
     return std::holds_alternative<CylinderShape>(s) || std::holds_alternative<ConeShape>(s) ||
            std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
-           std::holds_alternative<TextShape>(s);
+           std::holds_alternative<TextShape>(s) || std::holds_alternative<SuperellipsoidShape>(s);
 }
 
 struct Box3 {

@@ -166,6 +166,8 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
         const double outer = std::abs(t->major_radius) + std::abs(t->minor_radius);
         const double r = std::abs(t->minor_radius);
         b.add({-outer, -r, -outer}), b.add({outer, r, outer});
+    } else if (std::holds_alternative<SuperellipsoidShape>(shape)) {
+        b.add({-1, -1, -1}), b.add({1, 1, 1});
     } else if (const auto* t = std::get_if<TriangleShape>(&shape)) {
         b.add(t->a), b.add(t->b), b.add(t->c);
     } else if (const auto* m = std::get_if<MeshShape>(&shape)) {
