@@ -268,8 +268,6 @@ TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
               "not supported: omnimax camera at test.pov:1:23");
     EXPECT_EQ(render_error("camera { location -5*z aperture 0.4 blur_samples 9 }"),
               "not supported: focal blur (camera aperture 0.4) at test.pov:1:24");
-    EXPECT_EQ(render_error("sphere { 0, 1 }\nfog { distance 10 rgb 1 turbulence 0.2 }"),
-              "not supported: fog turbulence at test.pov:2:1");
     EXPECT_EQ(render_error("rainbow { direction z angle 42 width 5 }"),
               "not supported: rainbow at test.pov:1:1");
     EXPECT_EQ(render_error("sky_sphere { pigment { rgb 1 } }"), "no error");

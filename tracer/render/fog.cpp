@@ -1,10 +1,12 @@
 #include "tracer/render/fog.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "tracer/scene_language/noise.h"
 
 namespace rayset::tracer {
 namespace {
@@ -35,7 +37,6 @@ FogMedium::FogMedium(const SceneDescription& scene, double to_internal)
     if (fogs.empty()) return;
     if (fogs.size() > 1) refuse("more than one fog", fogs[1].location);
     const auto& fog = fogs.front();
-    if (!is_zero(fog.turbulence)) refuse("fog turbulence", fog.location);
     if (fog.distance <= 0) return;  // POV-Ray draws no fog of no distance
     present_ = true;
     ground_ = fog.fog_type == 2;
@@ -49,9 +50,33 @@ FogMedium::FogMedium(const SceneDescription& scene, double to_internal)
     const double filter = fog.colour.filter;
     tint_ = Rgb{1 - filter, 1 - filter, 1 - filter} + filter * colour_;
     transmit_ = fog.colour.transmit;
+    turbulent_ = !is_zero(fog.turbulence);
+    turbulence_ = fog.turbulence;
+    turb_depth_ = fog.turb_depth;
+    octaves_ = fog.octaves, omega_ = fog.omega, lambda_ = fog.lambda;
+    noise_generator_ = scene.global.noise_generator;
+    world_to_fog_ = fog.transform.inverse();
+}
+
+double FogMedium::turbulence_factor(Vec3 origin, Vec3 direction, double length) const {
+    const Vec3 p = world_to_fog_.point(origin + (turb_depth_ * length) * direction);
+    const Vec3 q{p.x * turbulence_.x, p.y * turbulence_.y, p.z * turbulence_.z};
+    // POV-Ray's sum has the mean of noise.h's and twice its spread.
+    const double sum = scalar_turbulence(q, octaves_, omega_, lambda_, noise_generator_);
+    double mean = 0, weight = 1;
+    for (int i = 0; i < std::clamp(octaves_, 1, 10); ++i, weight *= omega_) mean += 0.5 * weight;
+    const double x = std::max(0.0, 2 * sum - mean);
+    return 1 - std::exp(-length / distance_) * std::min(1.0, turb_depth_ * x);
 }
 
 double FogMedium::optical_depth(Vec3 origin, Vec3 direction, double length) const {
+    const double factor = turbulent_ && std::isfinite(length)
+                              ? turbulence_factor(origin, direction, length)
+                              : 1.0;
+    return factor * untroubled_depth(origin, direction, length);
+}
+
+double FogMedium::untroubled_depth(Vec3 origin, Vec3 direction, double length) const {
     if (!ground_) return length / distance_;
     const double h0 = dot(origin, up_);
     const double rise = dot(direction, up_);
