@@ -306,15 +306,15 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
     auto refused = [](const std::string& feature, const std::string& at) {
         return "not supported: " + feature + " at test.pov:" + at;
     };
-    EXPECT_EQ(render_error("sphere { 0, 1 }\n  superellipsoid { <1, 1> }"),
-              refused("superellipsoid", "2:3"));
+    EXPECT_EQ(render_error("sphere { 0, 1 }\n  blob { sphere { 0, 1, 1 } }"),
+              refused("blob", "2:3"));
     // CSG, clipped_by and inverse render (RenderShapes); parts the solid cannot take do not.
     EXPECT_EQ(render_error("difference { box { -1, 1 }\n sphere { 0, 2 } cutaway_textures }"),
               refused("cutaway_textures", "1:1"));
     EXPECT_EQ(render_error("intersection { box { -1, 1 }\n triangle { 0, x, y } }"),
               refused("triangle in CSG, clipped_by or inverse", "2:2"));
-    EXPECT_EQ(render_error("sphere { 0, 1 clipped_by {\n superellipsoid { <1, 1> } } }"),
-              refused("superellipsoid in CSG, clipped_by or inverse", "2:2"));
+    EXPECT_EQ(render_error("sphere { 0, 1 clipped_by {\n blob { sphere { 0, 1, 1 } } } }"),
+              refused("blob in CSG, clipped_by or inverse", "2:2"));
     EXPECT_EQ(render_error("sphere { 0, 1 double_illuminate }"),
               refused("double_illuminate", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 no_radiosity }"), refused("no_radiosity", "1:1"));
