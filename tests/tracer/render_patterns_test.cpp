@@ -131,6 +131,12 @@ TEST(RenderShapes, SuperellipsoidsAgreeWithPovRayPixelForPixel) {
     expect_flat_colours_agree("superellipsoids.pov", 1.0);
 }
 
+// Isosurfaces of expressions and internal functions, in box and sphere containers, capped and
+// open, turned and cut by a sphere.
+TEST(RenderShapes, IsosurfacesAgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("isosurfaces.pov", 1.0);
+}
+
 // Text in three of POV-Ray's fonts (curves, holes, an offset, turned, thick) and cut from a box.
 TEST(RenderShapes, TextAgreesWithPovRayPixelForPixel) {
     expect_flat_colours_agree("text.pov", 1.0);

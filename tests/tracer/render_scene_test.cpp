@@ -127,6 +127,34 @@ TEST(RenderScene, SuperellipsoidsHitWhereTheClosedFormsSay) {
     EXPECT_EQ(octahedron.hit({-10, 1.1, 1.1}, {1, 0, 0}).object, -1);  // past an edge
 }
 
+// Isosurfaces: the unit sphere x^2 + y^2 + z^2 = 1 where its container holds it; a cylinder
+// of radius 0.8 cut by its box -1..1, capped where the box cuts it (the box's normal) unless
+// open; a threshold moves the surface.
+TEST(RenderScene, IsosurfacesHitWhereTheClosedFormsSay) {
+    const Scene sphere(
+        "isosurface { function { x*x + y*y + z*z - 1 } max_gradient 4 "
+        "contained_by { box { -2, 2 } } translate 10*z }");
+    SurfaceHit h = sphere.hit({0.6, 0, 0}, {0, 0, 1});
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 10 - 0.8, 1e-5);
+    expect_vec(h.normal, {0.6, 0, -0.8}, 1e-5);
+    const Scene bigger(
+        "isosurface { function { x*x + y*y + z*z - 1 } threshold 0.44 "
+        "contained_by { sphere { 0, 2 } } }");
+    EXPECT_NEAR(bigger.hit({0, 0, -5}, {0, 0, 1}).t, 5 - 1.2, 1e-5);
+    const std::string cylinder = "isosurface { function { sqrt(x*x + z*z) - 0.8 } ";
+    const Scene capped(cylinder + "}");
+    h = capped.hit({0.3, 5, 0.2}, {0, -1, 0});  // down the axis: the box's top cuts it
+    EXPECT_NEAR(h.t, 4, 1e-5);
+    expect_vec(h.normal, {0, 1, 0}, 1e-12);
+    h = capped.hit({-5, 0.5, 0}, {1, 0, 0});  // from the side: the cylinder's wall
+    EXPECT_NEAR(h.t, 5 - 0.8, 1e-5);
+    expect_vec(h.normal, {-1, 0, 0}, 1e-5);
+    const Scene open(cylinder + "open }");
+    h = open.hit({0.3, 5, 0.2}, {0, -1, 0});  // down the axis of the open tube: nothing
+    EXPECT_EQ(h.object, -1);
+}
+
 // Text: the glyph outline extruded along z from 0 to the thickness, its first glyph's left edge
 // at x = 0. Times Roman's "I" is a stem with serifs: its caps face -z and +z, its stem's walls
 // +-x; "O" has a hole where a ray along z passes through.

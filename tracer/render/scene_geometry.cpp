@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "tracer/render/mesh_loader.h"
 #include "tracer/render/solids.h"
+#include "tracer/scene_language/functions.h"
 
 namespace rayset::tracer {
 
@@ -21,11 +22,27 @@ namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
 // other than sphere, box, plane, triangle, mesh, cylinder, cone, torus, disc, text of a TrueType
-// font, quadric, polynomials and superellipsoid (solids.h
+// font, quadric, polynomials, superellipsoid and isosurface (solids.h
 // refuses what it cannot take into CSG, clipped_by, bounded_by or inverse), and the modifiers
 // that change what is seen. Photon and
 // radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
 // to change in a path tracer, which computes all light transport; they pass.
+// An isosurface whose function the language cannot evaluate (an internal function or a
+// pattern it does not have) is refused before rendering, where one evaluation tells.
+template <class Refuse>
+void refuse_unevaluable(const IsosurfaceShape& iso, Refuse&& refuse) {
+    if (!iso.function || iso.function->result_terms() != 1 || iso.function->parameter_count() > 3)
+        refuse("isosurface of this function");
+    const ContainedBy& c = iso.contained_by;
+    const Vec3 p = c.kind == ContainedBy::Kind::sphere ? c.centre : 0.5 * (c.minimum + c.maximum);
+    const double arguments[3] = {p.x, p.y, p.z};
+    try {
+        iso.function->evaluate_float(arguments);
+    } catch (const FunctionNotSupported& e) {
+        refuse(fmt::format("isosurface function ({})", e.what()));
+    }
+}
+
 void refuse_unrendered(const ObjectInstance& o) {
     const std::string where = o.location.str();
     auto refuse = [&](const std::string& feature) {
@@ -40,8 +57,10 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
         (std::holds_alternative<TextShape>(s) && std::get<TextShape>(s).outline) ||
         std::holds_alternative<CsgShape>(s) || std::holds_alternative<PolynomialShape>(s) ||
-        std::holds_alternative<QuadricShape>(s) || std::holds_alternative<SuperellipsoidShape>(s);
+        std::holds_alternative<QuadricShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
+        std::holds_alternative<IsosurfaceShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
+    if (const auto* iso = std::get_if<IsosurfaceShape>(&s)) refuse_unevaluable(*iso, refuse);
     if (const auto* sphere = std::get_if<SphereShape>(&o.shape); sphere && !(sphere->radius > 0))
         refuse(fmt::format("sphere of radius {} (only positive radii)", sphere->radius));
     if (const auto* mesh = std::get_if<MeshShape>(&o.shape)) {
@@ -86,7 +105,8 @@ Vec3 unit_or_up(Vec3 v) {
 bool analytic(const Shape& s) {
     return std::holds_alternative<CylinderShape>(s) || std::holds_alternative<ConeShape>(s) ||
            std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
-           std::holds_alternative<TextShape>(s) || std::holds_alternative<SuperellipsoidShape>(s);
+           std::holds_alternative<TextShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
+           std::holds_alternative<IsosurfaceShape>(s);
 }
 
 struct Box3 {

@@ -168,6 +168,13 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
         b.add({-outer, -r, -outer}), b.add({outer, r, outer});
     } else if (std::holds_alternative<SuperellipsoidShape>(shape)) {
         b.add({-1, -1, -1}), b.add({1, 1, 1});
+    } else if (const auto* iso = std::get_if<IsosurfaceShape>(&shape)) {
+        const ContainedBy& c = iso->contained_by;
+        if (c.kind == ContainedBy::Kind::sphere) {
+            around(c.centre, c.centre, c.radius);
+        } else {
+            b.add(c.minimum), b.add(c.maximum);
+        }
     } else if (const auto* t = std::get_if<TriangleShape>(&shape)) {
         b.add(t->a), b.add(t->b), b.add(t->c);
     } else if (const auto* m = std::get_if<MeshShape>(&shape)) {

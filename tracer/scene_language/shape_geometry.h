@@ -6,8 +6,9 @@
 // Covered: sphere, box, cylinder, cone, torus, plane, disc, triangle, mesh (inside with an
 // inside_vector; hits of flat triangles), quadric, polynomial (poly, cubic, quartic: the
 // polynomial along the line, its real roots bisected within Cauchy's bound), superellipsoid
-// (its implicit function sampled in 256 steps across its box, sign changes bisected) and
-// linear prism (inside only).
+// and isosurface (the implicit function sampled in 256 steps across the box or container,
+// sign changes bisected; an isosurface capped by its container) and linear prism (inside
+// only).
 #pragma once
 
 #include <vector>
