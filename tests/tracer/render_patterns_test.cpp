@@ -137,6 +137,12 @@ TEST(RenderShapes, IsosurfacesAgreeWithPovRayPixelForPixel) {
     expect_flat_colours_agree("isosurfaces.pov", 1.0);
 }
 
+// Blobs of sphere and cylinder components, a negative one, components scaled on their own,
+// several thresholds, one cut by a box.
+TEST(RenderShapes, BlobsAgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("blobs.pov", 1.0);
+}
+
 // Text in three of POV-Ray's fonts (curves, holes, an offset, turned, thick) and cut from a box.
 TEST(RenderShapes, TextAgreesWithPovRayPixelForPixel) {
     expect_flat_colours_agree("text.pov", 1.0);

@@ -155,6 +155,26 @@ TEST(RenderScene, IsosurfacesHitWhereTheClosedFormsSay) {
     EXPECT_EQ(h.object, -1);
 }
 
+// Blobs: one sphere component of strength s and radius r at threshold t is the sphere of
+// radius r sqrt(1 - sqrt(t / s)); a cylinder component's the capsule of that radius about its
+// segment; a negative component carves the field.
+TEST(RenderScene, BlobsHitWhereTheClosedFormsSay) {
+    const Scene sphere("blob { threshold 0.36 sphere { 0, 2, 1 } translate 10*z }");
+    const double radius = 2 * std::sqrt(1 - 0.6);
+    SurfaceHit h = sphere.hit({0, 0, 0}, {0, 0, 1});
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 10 - radius, 1e-5);
+    expect_vec(h.normal, {0, 0, -1}, 1e-5);
+    const Scene capsule("blob { threshold 0.36 cylinder { <-1, 0, 0>, <1, 0, 0>, 2, 1 } }");
+    h = capsule.hit({0.5, 5, 0}, {0, -1, 0});  // onto the side, above the segment
+    EXPECT_NEAR(h.t, 5 - radius, 1e-5);
+    h = capsule.hit({5, 0, 0}, {-1, 0, 0});  // onto the rounded end
+    EXPECT_NEAR(h.t, 5 - 1 - radius, 1e-5);
+    // A negative component of the same size at the centre leaves nothing there.
+    const Scene carved("blob { threshold 0.36 sphere { 0, 2, 1 } sphere { 0, 2, -1 } }");
+    EXPECT_EQ(carved.hit({0, 0, -5}, {0, 0, 1}).object, -1);
+}
+
 // Text: the glyph outline extruded along z from 0 to the thickness, its first glyph's left edge
 // at x = 0. Times Roman's "I" is a stem with serifs: its caps face -z and +z, its stem's walls
 // +-x; "O" has a hole where a ray along z passes through.
@@ -334,15 +354,18 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
     auto refused = [](const std::string& feature, const std::string& at) {
         return "not supported: " + feature + " at test.pov:" + at;
     };
-    EXPECT_EQ(render_error("sphere { 0, 1 }\n  blob { sphere { 0, 1, 1 } }"),
-              refused("blob", "2:3"));
+    EXPECT_EQ(render_error("sphere { 0, 1 }\n  lathe { linear_spline 2, <0, 0>, <1, 1> }"),
+              refused("lathe", "2:3"));
+    EXPECT_EQ(render_error("blob { sphere { 0, 1, 1 }\n sphere { x, 1, 1 pigment { rgb 1 } } }"),
+              refused("blob components with textures of their own (at test.pov:2:2)", "1:1"));
     // CSG, clipped_by and inverse render (RenderShapes); parts the solid cannot take do not.
     EXPECT_EQ(render_error("difference { box { -1, 1 }\n sphere { 0, 2 } cutaway_textures }"),
               refused("cutaway_textures", "1:1"));
     EXPECT_EQ(render_error("intersection { box { -1, 1 }\n triangle { 0, x, y } }"),
               refused("triangle in CSG, clipped_by or inverse", "2:2"));
-    EXPECT_EQ(render_error("sphere { 0, 1 clipped_by {\n blob { sphere { 0, 1, 1 } } } }"),
-              refused("blob in CSG, clipped_by or inverse", "2:2"));
+    EXPECT_EQ(
+        render_error("sphere { 0, 1 clipped_by {\n lathe { linear_spline 2, <0, 0>, <1, 1> } } }"),
+        refused("lathe in CSG, clipped_by or inverse", "2:2"));
     EXPECT_EQ(render_error("sphere { 0, 1 double_illuminate }"),
               refused("double_illuminate", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 no_radiosity }"), refused("no_radiosity", "1:1"));

@@ -22,7 +22,7 @@ namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
 // other than sphere, box, plane, triangle, mesh, cylinder, cone, torus, disc, text of a TrueType
-// font, quadric, polynomials, superellipsoid and isosurface (solids.h
+// font, quadric, polynomials, superellipsoid, isosurface and blob (solids.h
 // refuses what it cannot take into CSG, clipped_by, bounded_by or inverse), and the modifiers
 // that change what is seen. Photon and
 // radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
@@ -58,8 +58,13 @@ void refuse_unrendered(const ObjectInstance& o) {
         (std::holds_alternative<TextShape>(s) && std::get<TextShape>(s).outline) ||
         std::holds_alternative<CsgShape>(s) || std::holds_alternative<PolynomialShape>(s) ||
         std::holds_alternative<QuadricShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
-        std::holds_alternative<IsosurfaceShape>(s);
+        std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
+    if (const auto* blob = std::get_if<BlobShape>(&s))
+        for (const BlobComponent& c : blob->components)
+            if (c.appearance.texture || c.appearance.interior)
+                refuse(fmt::format("blob components with textures of their own (at {})",
+                                   c.location.str()));
     if (const auto* iso = std::get_if<IsosurfaceShape>(&s)) refuse_unevaluable(*iso, refuse);
     if (const auto* sphere = std::get_if<SphereShape>(&o.shape); sphere && !(sphere->radius > 0))
         refuse(fmt::format("sphere of radius {} (only positive radii)", sphere->radius));
@@ -106,7 +111,7 @@ bool analytic(const Shape& s) {
     return std::holds_alternative<CylinderShape>(s) || std::holds_alternative<ConeShape>(s) ||
            std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
            std::holds_alternative<TextShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
-           std::holds_alternative<IsosurfaceShape>(s);
+           std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s);
 }
 
 struct Box3 {

@@ -168,6 +168,10 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
         b.add({-outer, -r, -outer}), b.add({outer, r, outer});
     } else if (std::holds_alternative<SuperellipsoidShape>(shape)) {
         b.add({-1, -1, -1}), b.add({1, 1, 1});
+    } else if (const auto* blob = std::get_if<BlobShape>(&shape)) {
+        Vec3 lo, hi;
+        if (!blob_bounds(*blob, lo, hi)) return false;
+        b.add(lo), b.add(hi);
     } else if (const auto* iso = std::get_if<IsosurfaceShape>(&shape)) {
         const ContainedBy& c = iso->contained_by;
         if (c.kind == ContainedBy::Kind::sphere) {

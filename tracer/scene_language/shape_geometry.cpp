@@ -307,6 +307,46 @@ void superellipsoid_hits(const SuperellipsoidShape& s, Vec3 o, Vec3 d,
                   kSuperellipsoidSteps, hits);
 }
 
+// A blob's field at `p` from its components, each moved by its transform (`to_component`: the
+// inverses, in the components' order).
+double blob_field(const BlobShape& blob, const std::vector<Matrix4>& to_component, Vec3 p) {
+    double field = 0;
+    for (size_t i = 0; i < blob.components.size(); ++i) {
+        const BlobComponent& c = blob.components[i];
+        const Vec3 q = to_component[i].point(p);
+        Vec3 from = q - c.centre;
+        if (c.kind == BlobComponent::Kind::cylinder) {
+            const Vec3 axis = c.end - c.centre;
+            const double along = std::clamp(dot(from, axis) / dot(axis, axis), 0.0, 1.0);
+            from = from - along * axis;
+        }
+        const double d2 = dot(from, from) / (c.radius * c.radius);
+        if (d2 < 1) field += c.strength * (1 - d2) * (1 - d2);
+    }
+    return field;
+}
+
+// The line's crossings with the blob's surface (field = threshold, inside above it) within its
+// bounds, in kBlobSteps steps; normals by central differences over 1e-6 of the bounds' size.
+constexpr int kBlobSteps = 256;
+
+void blob_hits(const BlobShape& blob, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    ContainedBy box;
+    if (!blob_bounds(blob, box.minimum, box.maximum)) return;
+    double near = 0, far = 0;
+    if (!container_span(box, o, d, near, far)) return;
+    std::vector<Matrix4> to_component;
+    for (const BlobComponent& c : blob.components) to_component.push_back(c.transform.inverse());
+    auto value = [&](Vec3 p) { return blob.threshold - blob_field(blob, to_component, p); };
+    const double h = 1e-6 * length(box.maximum - box.minimum);
+    auto gradient = [&](Vec3 p) {
+        return Vec3{value(p + Vec3{h, 0, 0}) - value(p - Vec3{h, 0, 0}),
+                    value(p + Vec3{0, h, 0}) - value(p - Vec3{0, h, 0}),
+                    value(p + Vec3{0, 0, h}) - value(p - Vec3{0, 0, h})};
+    };
+    implicit_hits(value, gradient, o, d, near, far, kBlobSteps, hits);
+}
+
 // The line's crossings with the isosurface f = threshold inside its container, and with the
 // container's surface where f is below the threshold there (unless `open`). The function's
 // gradient, for normals, by central differences over 1e-5 of the container's size.
@@ -450,6 +490,30 @@ void text_hits(const TextShape& text, Vec3 o, Vec3 d, std::vector<ShapeHit>& hit
 
 }  // namespace
 
+bool blob_bounds(const BlobShape& blob, Vec3& lower, Vec3& upper) {
+    lower = {1e300, 1e300, 1e300}, upper = {-1e300, -1e300, -1e300};
+    for (const BlobComponent& c : blob.components) {
+        if (c.strength <= 0) continue;  // negative components only take away
+        const double r = std::abs(c.radius);
+        const Vec3 lo{std::min(c.centre.x, c.end.x) - r, std::min(c.centre.y, c.end.y) - r,
+                      std::min(c.centre.z, c.end.z) - r};
+        const Vec3 hi{std::max(c.centre.x, c.end.x) + r, std::max(c.centre.y, c.end.y) + r,
+                      std::max(c.centre.z, c.end.z) + r};
+        const bool cylinder = c.kind == BlobComponent::Kind::cylinder;
+        const Vec3 a = cylinder ? lo : c.centre - Vec3{r, r, r};
+        const Vec3 b = cylinder ? hi : c.centre + Vec3{r, r, r};
+        for (int k = 0; k < 8; ++k) {
+            const Vec3 corner =
+                c.transform.point({k & 1 ? b.x : a.x, k & 2 ? b.y : a.y, k & 4 ? b.z : a.z});
+            lower = {std::min(lower.x, corner.x), std::min(lower.y, corner.y),
+                     std::min(lower.z, corner.z)};
+            upper = {std::max(upper.x, corner.x), std::max(upper.y, corner.y),
+                     std::max(upper.z, corner.z)};
+        }
+    }
+    return lower.x <= upper.x;
+}
+
 bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
     if (const auto* prism = std::get_if<PrismShape>(&shape)) return prism_inside(*prism, p, inside);
     if (const auto* s = std::get_if<SphereShape>(&shape)) {
@@ -474,6 +538,11 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
         inside = ring * ring + p.y * p.y < t->minor_radius * t->minor_radius;
     } else if (const auto* se = std::get_if<SuperellipsoidShape>(&shape)) {
         inside = superellipsoid_value(*se, p) < 0;
+    } else if (const auto* blob = std::get_if<BlobShape>(&shape)) {
+        std::vector<Matrix4> to_component;
+        for (const BlobComponent& c : blob->components)
+            to_component.push_back(c.transform.inverse());
+        inside = blob_field(*blob, to_component, p) > blob->threshold;
     } else if (const auto* iso = std::get_if<IsosurfaceShape>(&shape)) {
         if (!iso->function) return false;
         double near = 0, far = 0;  // inside the container: a zero-length stretch through p
@@ -526,6 +595,8 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
     } else if (const auto* iso = std::get_if<IsosurfaceShape>(&shape)) {
         if (!iso->function) return false;
         isosurface_hits(*iso, o, d, hits);
+    } else if (const auto* blob = std::get_if<BlobShape>(&shape)) {
+        blob_hits(*blob, o, d, hits);
     } else if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
         plane_hit(plane->normal, plane->distance, o, d, hits);
     } else if (const auto* disc = std::get_if<DiscShape>(&shape)) {

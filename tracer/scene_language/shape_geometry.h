@@ -5,10 +5,10 @@
 //
 // Covered: sphere, box, cylinder, cone, torus, plane, disc, triangle, mesh (inside with an
 // inside_vector; hits of flat triangles), quadric, polynomial (poly, cubic, quartic: the
-// polynomial along the line, its real roots bisected within Cauchy's bound), superellipsoid
-// and isosurface (the implicit function sampled in 256 steps across the box or container,
-// sign changes bisected; an isosurface capped by its container) and linear prism (inside
-// only).
+// polynomial along the line, its real roots bisected within Cauchy's bound), superellipsoid,
+// isosurface and blob (the implicit function sampled in 256 steps across the box, container or
+// bounds, sign changes bisected; an isosurface capped by its container) and linear prism
+// (inside only).
 #pragma once
 
 #include <vector>
@@ -26,6 +26,8 @@ struct ShapeHit {
 // Every crossing of the line o + t d (any t, unsorted) with the shape's surface; false when the
 // shape is not covered here.
 bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits);
+// The box around a blob's positive components (its own coordinates); false when it has none.
+bool blob_bounds(const BlobShape& blob, Vec3& lower, Vec3& upper);
 // Whether `p` is inside the shape (POV-Ray's inside: a plane's or disc's side against their
 // normal, a mesh by the parity of crossings along its inside_vector); false when not covered.
 bool shape_inside(const Shape& shape, Vec3 p, bool& inside);
