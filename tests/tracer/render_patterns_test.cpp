@@ -143,6 +143,11 @@ TEST(RenderShapes, BlobsAgreeWithPovRayPixelForPixel) {
     expect_flat_colours_agree("blobs.pov", 1.0);
 }
 
+// Linear prisms swept along y and conically, one with a hole, one open, turned and cut.
+TEST(RenderShapes, PrismsAgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("prisms.pov", 1.0);
+}
+
 // Text in three of POV-Ray's fonts (curves, holes, an offset, turned, thick) and cut from a box.
 TEST(RenderShapes, TextAgreesWithPovRayPixelForPixel) {
     expect_flat_colours_agree("text.pov", 1.0);

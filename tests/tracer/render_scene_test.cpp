@@ -175,6 +175,33 @@ TEST(RenderScene, BlobsHitWhereTheClosedFormsSay) {
     EXPECT_EQ(carved.hit({0, 0, -5}, {0, 0, 1}).object, -1);
 }
 
+// Linear prisms: a square outline with a square hole swept from y = 0 to 2 (caps on top and
+// bottom, walls facing out of the solid, into the hole too), and the same square swept
+// conically from y = 1 to 2 (the outline scaled by the height).
+TEST(RenderScene, PrismsHitWhereTheClosedFormsSay) {
+    const Scene framed(
+        "prism { 0, 2, 10, <-2, -2>, <2, -2>, <2, 2>, <-2, 2>, <-2, -2>, "
+        "<-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1> }");
+    SurfaceHit h = framed.hit({1.5, 5, 0}, {0, -1, 0});  // the top cap of the frame
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 3, 1e-5);
+    expect_vec(h.normal, {0, 1, 0}, 1e-12);
+    EXPECT_EQ(framed.hit({0, 5, 0}, {0, -1, 0}).object, -1);  // down the hole
+    h = framed.hit({-5, 1, 0}, {1, 0, 0});                    // the outer wall
+    EXPECT_NEAR(h.t, 3, 1e-5);
+    expect_vec(h.normal, {-1, 0, 0}, 1e-12);
+    h = framed.hit({0, 1, 0}, {1, 0, 0});  // from the hole: its wall faces into the hole
+    EXPECT_NEAR(h.t, 1, 1e-5);
+    expect_vec(h.normal, {-1, 0, 0}, 1e-12);
+    const Scene conic(
+        "prism { conic_sweep 1, 2, 5, <-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1> }");
+    h = conic.hit({-5, 1.5, 0}, {1, 0, 0});  // at y = 1.5 the square's half-width is 1.5
+    EXPECT_NEAR(h.t, 5 - 1.5, 1e-5);
+    expect_vec(h.normal, normalized({-1, -1, 0}), 1e-6);  // the wall widens upward
+    h = conic.hit({1.9, 5, 0}, {0, -1, 0});  // the top cap (half-width 2) just inside its edge
+    EXPECT_NEAR(h.t, 3, 1e-5);
+}
+
 // Text: the glyph outline extruded along z from 0 to the thickness, its first glyph's left edge
 // at x = 0. Times Roman's "I" is a stem with serifs: its caps face -z and +z, its stem's walls
 // +-x; "O" has a hole where a ray along z passes through.

@@ -22,7 +22,7 @@ namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
 // other than sphere, box, plane, triangle, mesh, cylinder, cone, torus, disc, text of a TrueType
-// font, quadric, polynomials, superellipsoid, isosurface and blob (solids.h
+// font, quadric, polynomials, superellipsoid, isosurface, blob and linear prism (solids.h
 // refuses what it cannot take into CSG, clipped_by, bounded_by or inverse), and the modifiers
 // that change what is seen. Photon and
 // radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
@@ -58,8 +58,12 @@ void refuse_unrendered(const ObjectInstance& o) {
         (std::holds_alternative<TextShape>(s) && std::get<TextShape>(s).outline) ||
         std::holds_alternative<CsgShape>(s) || std::holds_alternative<PolynomialShape>(s) ||
         std::holds_alternative<QuadricShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
-        std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s);
+        std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s) ||
+        std::holds_alternative<PrismShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
+    if (const auto* prism = std::get_if<PrismShape>(&s);
+        prism && prism->spline != SplineKind::linear)
+        refuse("prism of a quadratic, cubic or bezier spline (only linear_spline)");
     if (const auto* blob = std::get_if<BlobShape>(&s))
         for (const BlobComponent& c : blob->components)
             if (c.appearance.texture || c.appearance.interior)
@@ -111,7 +115,8 @@ bool analytic(const Shape& s) {
     return std::holds_alternative<CylinderShape>(s) || std::holds_alternative<ConeShape>(s) ||
            std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
            std::holds_alternative<TextShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
-           std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s);
+           std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s) ||
+           std::holds_alternative<PrismShape>(s);
 }
 
 struct Box3 {

@@ -168,6 +168,12 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
         b.add({-outer, -r, -outer}), b.add({outer, r, outer});
     } else if (std::holds_alternative<SuperellipsoidShape>(shape)) {
         b.add({-1, -1, -1}), b.add({1, 1, 1});
+    } else if (const auto* prism = std::get_if<PrismShape>(&shape)) {
+        // A conic sweep's outline scales with the height: the hull of its outlines at both.
+        for (const double h : {prism->height1, prism->height2}) {
+            const double scale = prism->conic_sweep ? h : 1.0;
+            for (const Vec2& p : prism->points) b.add({scale * p.x, h, scale * p.y});
+        }
     } else if (const auto* blob = std::get_if<BlobShape>(&shape)) {
         Vec3 lo, hi;
         if (!blob_bounds(*blob, lo, hi)) return false;

@@ -65,6 +65,68 @@ bool prism_inside(const PrismShape& prism, Vec3 p, bool& inside) {
     return true;
 }
 
+// Calls edge(a, b) for each edge of a linear prism's outlines (not the step from one closed
+// outline to the next).
+template <class Edge>
+void for_each_outline_edge(const std::vector<Vec2>& points, Edge&& edge) {
+    size_t start = 0;
+    for (size_t i = 0; i + 1 < points.size(); ++i) {
+        edge(points[i], points[i + 1]);
+        const Vec2 b = points[i + 1];
+        if (b.x == points[start].x && b.y == points[start].y) start = i + 2, ++i;
+    }
+}
+
+// A linear prism's crossings: its walls (each edge swept along y, or toward the origin for a
+// conic sweep: the plane through the origin and the edge lifted to y = 1) between its heights,
+// and its caps where the outline holds the point (unless open). Walls' normals point out of
+// the prism (checked by a step across them).
+void prism_hits(const PrismShape& prism, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    const double low = std::min(prism.height1, prism.height2);
+    const double high = std::max(prism.height1, prism.height2);
+    auto outline_point = [&](Vec3 p, double& x, double& z) {
+        if (!prism.conic_sweep) {
+            x = p.x, z = p.z;
+            return true;
+        }
+        if (p.y == 0) return false;
+        x = p.x / p.y, z = p.z / p.y;
+        return true;
+    };
+    auto outward = [&](Vec3 p, Vec3 n) {
+        const double step = 1e-7 * (1 + length(p));
+        bool in = false;
+        prism_inside(prism, p + step * normalized(n), in);
+        return in ? -1 * n : n;
+    };
+    for_each_outline_edge(prism.points, [&](Vec2 a, Vec2 b) {
+        // The wall's plane: through a and b at y = 1, and along y (linear) or through the
+        // origin (conic).
+        const Vec3 a3{a.x, 1, a.y}, b3{b.x, 1, b.y};
+        const Vec3 n = prism.conic_sweep ? cross(a3, b3) : Vec3{b.y - a.y, 0, a.x - b.x};
+        const double along = dot(n, d);
+        if (along == 0 || is_zero(n)) return;
+        const double t = (prism.conic_sweep ? -dot(n, o) : dot(n, a3 - o)) / along;
+        const Vec3 p = o + t * d;
+        if (p.y < low || p.y > high) return;
+        double x = 0, z = 0;
+        if (!outline_point(p, x, z)) return;
+        const Vec2 edge{b.x - a.x, b.y - a.y};
+        const double u =
+            ((x - a.x) * edge.x + (z - a.y) * edge.y) / (edge.x * edge.x + edge.y * edge.y);
+        if (u < 0 || u > 1) return;
+        hits.push_back({t, outward(p, n)});
+    });
+    if (prism.open || d.y == 0) return;
+    for (const double h : {low, high}) {
+        const double t = (h - o.y) / d.y;
+        const Vec3 p = o + t * d;
+        double x = 0, z = 0;
+        if (outline_point(p, x, z) && inside_outlines(prism.points, x, z))
+            hits.push_back({t, {0, h == high ? 1.0 : -1.0, 0}});
+    }
+}
+
 // The real roots of c[0] + c[1] t + ... + c[n] t^n in [lo, hi]: each monotone piece between the
 // roots of the derivative is bisected.
 std::vector<double> roots_between(std::vector<double> c, double lo, double hi) {
@@ -597,6 +659,9 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
         isosurface_hits(*iso, o, d, hits);
     } else if (const auto* blob = std::get_if<BlobShape>(&shape)) {
         blob_hits(*blob, o, d, hits);
+    } else if (const auto* prism = std::get_if<PrismShape>(&shape)) {
+        if (prism->spline != SplineKind::linear) return false;
+        prism_hits(*prism, o, d, hits);
     } else if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
         plane_hit(plane->normal, plane->distance, o, d, hits);
     } else if (const auto* disc = std::get_if<DiscShape>(&shape)) {

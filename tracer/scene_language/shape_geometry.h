@@ -7,8 +7,7 @@
 // inside_vector; hits of flat triangles), quadric, polynomial (poly, cubic, quartic: the
 // polynomial along the line, its real roots bisected within Cauchy's bound), superellipsoid,
 // isosurface and blob (the implicit function sampled in 256 steps across the box, container or
-// bounds, sign changes bisected; an isosurface capped by its container) and linear prism
-// (inside only).
+// bounds, sign changes bisected; an isosurface capped by its container) and linear prism.
 #pragma once
 
 #include <vector>
