@@ -24,6 +24,7 @@
 #include "core/error.h"
 #include "tracer/scene_language/object_grammar.h"
 #include "tracer/scene_language/shape_geometry.h"
+#include "tracer/scene_language/text_outline.h"
 
 namespace rayset::tracer {
 namespace {
@@ -188,6 +189,11 @@ bool own_box(const Shape& shape, Box& box) {
     } else if (const auto* patch = std::get_if<BicubicPatchShape>(&shape)) {
         box = empty_box();
         for (const Vec3& p : patch->points) add_point(box, p);
+    } else if (const auto* text = std::get_if<TextShape>(&shape)) {
+        if (!text->outline) return false;
+        const TextOutline& o = *text->outline;
+        box = {{std::min(0.0, o.min_x), o.min_y, std::min(0.0, text->thickness)},
+               {o.max_x, o.max_y, std::max(0.0, text->thickness)}};
     } else {
         return false;
     }
