@@ -148,6 +148,11 @@ TEST(RenderShapes, PrismsAgreeWithPovRayPixelForPixel) {
     expect_flat_colours_agree("prisms.pov", 1.0);
 }
 
+// Lathes of the four spline kinds, turned, one cut by a sphere.
+TEST(RenderShapes, LathesAgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("lathes.pov", 1.0);
+}
+
 // Text in three of POV-Ray's fonts (curves, holes, an offset, turned, thick) and cut from a box.
 TEST(RenderShapes, TextAgreesWithPovRayPixelForPixel) {
     expect_flat_colours_agree("text.pov", 1.0);

@@ -202,6 +202,29 @@ TEST(RenderScene, PrismsHitWhereTheClosedFormsSay) {
     EXPECT_NEAR(h.t, 3, 1e-5);
 }
 
+// Lathes: a linear profile from radius 2 at y = 0 to 1 at y = 2 is a cone's frustum (radius
+// 1.5 at y = 1, its side leaning out by atan(1/2)); a cubic profile passes through its inner
+// points (radius 1 at y = 1); a closed profile with a hole is a ring a line down the middle
+// misses.
+TEST(RenderScene, LathesHitWhereTheClosedFormsSay) {
+    const Scene cone("lathe { linear_spline 4, <0, 0>, <2, 0>, <1, 2>, <0, 2> }");
+    SurfaceHit h = cone.hit({-5, 1, 0}, {1, 0, 0});
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 5 - 1.5, 1e-5);
+    expect_vec(h.normal, normalized({-2, 1, 0}), 1e-6);
+    h = cone.hit({0.5, 5, 0.3}, {0, -1, 0});  // the flat top
+    EXPECT_NEAR(h.t, 3, 1e-5);
+    expect_vec(h.normal, {0, 1, 0}, 1e-6);
+    const Scene cubic("lathe { cubic_spline 5, <0.5, -1>, <1.5, 0>, <1, 1>, <1.5, 2>, <0.5, 3> }");
+    EXPECT_NEAR(cubic.hit({0, 1, -5}, {0, 0, 1}).t, 5 - 1, 1e-5);
+    EXPECT_NEAR(cubic.hit({0, 0, -5}, {0, 0, 1}).t, 5 - 1.5, 1e-5);
+    const Scene ring("lathe { linear_spline 5, <1, 0>, <2, 0>, <2, 1>, <1, 1>, <1, 0> }");
+    EXPECT_EQ(ring.hit({0, 5, 0}, {0, -1, 0}).object, -1);
+    h = ring.hit({0, 0.5, 0}, {1, 0, 0});  // from the hole: the inner wall faces it
+    EXPECT_NEAR(h.t, 1, 1e-5);
+    expect_vec(h.normal, {-1, 0, 0}, 1e-6);
+}
+
 // Text: the glyph outline extruded along z from 0 to the thickness, its first glyph's left edge
 // at x = 0. Times Roman's "I" is a stem with serifs: its caps face -z and +z, its stem's walls
 // +-x; "O" has a hole where a ray along z passes through.
@@ -381,8 +404,8 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
     auto refused = [](const std::string& feature, const std::string& at) {
         return "not supported: " + feature + " at test.pov:" + at;
     };
-    EXPECT_EQ(render_error("sphere { 0, 1 }\n  lathe { linear_spline 2, <0, 0>, <1, 1> }"),
-              refused("lathe", "2:3"));
+    EXPECT_EQ(render_error("sphere { 0, 1 }\n  sor { 4, <0, 0>, <1, 0.3>, <1, 0.7>, <0, 1> }"),
+              refused("sor", "2:3"));
     EXPECT_EQ(render_error("blob { sphere { 0, 1, 1 }\n sphere { x, 1, 1 pigment { rgb 1 } } }"),
               refused("blob components with textures of their own (at test.pov:2:2)", "1:1"));
     // CSG, clipped_by and inverse render (RenderShapes); parts the solid cannot take do not.
@@ -390,9 +413,9 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
               refused("cutaway_textures", "1:1"));
     EXPECT_EQ(render_error("intersection { box { -1, 1 }\n triangle { 0, x, y } }"),
               refused("triangle in CSG, clipped_by or inverse", "2:2"));
-    EXPECT_EQ(
-        render_error("sphere { 0, 1 clipped_by {\n lathe { linear_spline 2, <0, 0>, <1, 1> } } }"),
-        refused("lathe in CSG, clipped_by or inverse", "2:2"));
+    EXPECT_EQ(render_error(
+                  "sphere { 0, 1 clipped_by {\n sor { 4, <0, 0>, <1, 0.3>, <1, 0.7>, <0, 1> } } }"),
+              refused("sor in CSG, clipped_by or inverse", "2:2"));
     EXPECT_EQ(render_error("sphere { 0, 1 double_illuminate }"),
               refused("double_illuminate", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 no_radiosity }"), refused("no_radiosity", "1:1"));

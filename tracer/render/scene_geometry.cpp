@@ -22,7 +22,7 @@ namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
 // other than sphere, box, plane, triangle, mesh, cylinder, cone, torus, disc, text of a TrueType
-// font, quadric, polynomials, superellipsoid, isosurface, blob and linear prism (solids.h
+// font, quadric, polynomials, superellipsoid, isosurface, blob, linear prism and lathe (solids.h
 // refuses what it cannot take into CSG, clipped_by, bounded_by or inverse), and the modifiers
 // that change what is seen. Photon and
 // radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
@@ -59,7 +59,7 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<CsgShape>(s) || std::holds_alternative<PolynomialShape>(s) ||
         std::holds_alternative<QuadricShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
         std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s) ||
-        std::holds_alternative<PrismShape>(s);
+        std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
     if (const auto* prism = std::get_if<PrismShape>(&s);
         prism && prism->spline != SplineKind::linear)
@@ -116,7 +116,7 @@ bool analytic(const Shape& s) {
            std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
            std::holds_alternative<TextShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
            std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s) ||
-           std::holds_alternative<PrismShape>(s);
+           std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s);
 }
 
 struct Box3 {

@@ -174,6 +174,10 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
             const double scale = prism->conic_sweep ? h : 1.0;
             for (const Vec2& p : prism->points) b.add({scale * p.x, h, scale * p.y});
         }
+    } else if (const auto* lathe = std::get_if<LatheShape>(&shape)) {
+        Vec3 lo, hi;
+        lathe_bounds(*lathe, lo, hi);
+        b.add(lo), b.add(hi);
     } else if (const auto* blob = std::get_if<BlobShape>(&shape)) {
         Vec3 lo, hi;
         if (!blob_bounds(*blob, lo, hi)) return false;

@@ -2,6 +2,7 @@
 #include "tracer/scene_language/shape_geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "tracer/scene_language/functions.h"
@@ -127,6 +128,62 @@ void prism_hits(const PrismShape& prism, Vec3 o, Vec3 d, std::vector<ShapeHit>& 
     }
 }
 
+// One piece of a lathe's profile: radius and height as cubics in t in [0, 1] (t^0 first).
+struct ProfilePiece {
+    std::array<double, 4> r{}, y{};
+};
+
+double cubic_at(const std::array<double, 4>& c, double t) {
+    return ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
+}
+
+// A lathe's profile as POV-Ray draws it (read back from POV-Ray with trace): straight lines
+// between the points; quadratic pieces from each point to the next through the parabola that
+// the point before also lies on (the first point only steers); Catmull-Rom pieces (the first
+// and last points only steer); cubic Bezier pieces of four points each.
+std::vector<ProfilePiece> lathe_profile(const LatheShape& lathe) {
+    const std::vector<Vec2>& p = lathe.points;
+    std::vector<ProfilePiece> pieces;
+    auto add = [&](Vec2 c0, Vec2 c1, Vec2 c2, Vec2 c3) {
+        pieces.push_back({{c0.x, c1.x, c2.x, c3.x}, {c0.y, c1.y, c2.y, c3.y}});
+    };
+    auto lin = [](double a, Vec2 u, double b, Vec2 v) {
+        return Vec2{a * u.x + b * v.x, a * u.y + b * v.y};
+    };
+    const size_t n = p.size();
+    switch (lathe.spline) {
+        case SplineKind::linear:
+            for (size_t i = 0; i + 1 < n; ++i) add(p[i], lin(1, p[i + 1], -1, p[i]), {}, {});
+            break;
+        case SplineKind::quadratic:
+            for (size_t i = 1; i + 1 < n; ++i) {
+                const Vec2 a = p[i - 1], b = p[i], c = p[i + 1];
+                add(b, lin(0.5, c, -0.5, a), {0.5 * (c.x + a.x) - b.x, 0.5 * (c.y + a.y) - b.y},
+                    {});
+            }
+            break;
+        case SplineKind::cubic:
+            for (size_t i = 1; i + 2 < n; ++i) {
+                const Vec2 p0 = p[i - 1], p1 = p[i], p2 = p[i + 1], p3 = p[i + 2];
+                add(p1, lin(0.5, p2, -0.5, p0),
+                    {p0.x - 2.5 * p1.x + 2 * p2.x - 0.5 * p3.x,
+                     p0.y - 2.5 * p1.y + 2 * p2.y - 0.5 * p3.y},
+                    {-0.5 * p0.x + 1.5 * p1.x - 1.5 * p2.x + 0.5 * p3.x,
+                     -0.5 * p0.y + 1.5 * p1.y - 1.5 * p2.y + 0.5 * p3.y});
+            }
+            break;
+        case SplineKind::bezier:
+            for (size_t i = 0; i + 3 < n; i += 4) {
+                const Vec2 p0 = p[i], p1 = p[i + 1], p2 = p[i + 2], p3 = p[i + 3];
+                add(p0, {3 * (p1.x - p0.x), 3 * (p1.y - p0.y)},
+                    {3 * (p0.x - 2 * p1.x + p2.x), 3 * (p0.y - 2 * p1.y + p2.y)},
+                    {p3.x - p0.x + 3 * (p1.x - p2.x), p3.y - p0.y + 3 * (p1.y - p2.y)});
+            }
+            break;
+    }
+    return pieces;
+}
+
 // The real roots of c[0] + c[1] t + ... + c[n] t^n in [lo, hi]: each monotone piece between the
 // roots of the derivative is bisected.
 std::vector<double> roots_between(std::vector<double> c, double lo, double hi) {
@@ -244,6 +301,70 @@ void cone_hits(Vec3 base, Vec3 cap, double r0, double r1, bool open, Vec3 o, Vec
         const double t = ((end ? len : 0) - wu) / du, r = end ? r1 : r0;
         const Vec3 radial = wr + t * dr;
         if (dot(radial, radial) <= r * r) hits.push_back({t, end ? u : -u});
+    }
+}
+
+std::vector<double> times(const std::vector<double>& a, const std::vector<double>& b);
+
+// Whether (radius rho, height y) of the profile's plane is inside the lathe: an odd number of
+// the profile's crossings with the half-line from it outward (POV-Ray's parity rule).
+bool lathe_inside(const std::vector<ProfilePiece>& pieces, double rho, double y) {
+    bool inside = false;
+    for (const ProfilePiece& piece : pieces) {
+        std::vector<double> c(piece.y.begin(), piece.y.end());
+        c[0] -= y;
+        for (double t : roots_between(c, 0, 1))
+            if (t < 1 && std::abs(cubic_at(piece.r, t)) > rho) inside = !inside;
+    }
+    return inside;
+}
+
+// The line's crossings with the surface turned from each profile piece: x^2 + z^2 = r(t)^2 at
+// height y(t). Along a line that climbs, the line's parameter is a cubic in t and the
+// condition a sextic in t; along a level line, the heights' roots give t and each a circle.
+void lathe_hits(const LatheShape& lathe, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    const std::vector<ProfilePiece> pieces = lathe_profile(lathe);
+    auto add_hit = [&](const ProfilePiece& piece, double t, double s) {
+        const Vec3 p = o + s * d;
+        const double dr = (3 * piece.r[3] * t + 2 * piece.r[2]) * t + piece.r[1];
+        const double dy = (3 * piece.y[3] * t + 2 * piece.y[2]) * t + piece.y[1];
+        const double rho = std::hypot(p.x, p.z);
+        const Vec3 radial = rho > 0 ? Vec3{p.x / rho, 0, p.z / rho} : Vec3{1, 0, 0};
+        Vec3 n = dy * radial + Vec3{0, -dr, 0};  // across the profile's tangent (dr, dy)
+        // Outward: a step along the normal leaves the solid.
+        const double step = 1e-7 * (1 + length(p));
+        const Vec3 q = p + step * normalized(n);
+        if (lathe_inside(pieces, std::hypot(q.x, q.z), q.y)) n = -1 * n;
+        hits.push_back({s, n});
+    };
+    for (const ProfilePiece& piece : pieces) {
+        if (d.y != 0) {
+            // s(t) = (y(t) - o.y) / d.y; X = o.x + d.x s, Z = o.z + d.z s.
+            std::vector<double> sc(piece.y.begin(), piece.y.end());
+            sc[0] -= o.y;
+            for (double& c : sc) c /= d.y;
+            std::vector<double> x(4), z(4);
+            for (int k = 0; k < 4; ++k) x[k] = d.x * sc[k], z[k] = d.z * sc[k];
+            x[0] += o.x, z[0] += o.z;
+            const std::vector<double> r(piece.r.begin(), piece.r.end());
+            std::vector<double> f = times(x, x);
+            const std::vector<double> zz = times(z, z), rr = times(r, r);
+            for (size_t k = 0; k < f.size(); ++k) f[k] += zz[k] - rr[k];
+            for (double t : roots_between(f, 0, 1)) {
+                double s = 0;
+                for (int k = 3; k >= 0; --k) s = s * t + sc[k];
+                add_hit(piece, t, s);
+            }
+        } else {
+            std::vector<double> c(piece.y.begin(), piece.y.end());
+            c[0] -= o.y;
+            for (double t : roots_between(c, 0, 1)) {
+                const double r = cubic_at(piece.r, t);
+                const double a = d.x * d.x + d.z * d.z, b = 2 * (o.x * d.x + o.z * d.z),
+                             cc = o.x * o.x + o.z * o.z - r * r;
+                for (double s : quadratic_roots(a, b, cc)) add_hit(piece, t, s);
+            }
+        }
     }
 }
 
@@ -552,6 +673,21 @@ void text_hits(const TextShape& text, Vec3 o, Vec3 d, std::vector<ShapeHit>& hit
 
 }  // namespace
 
+void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper) {
+    double r_max = 0, y_min = 1e300, y_max = -1e300;
+    for (const ProfilePiece& piece : lathe_profile(lathe)) {
+        // The extremes of a cubic on [0, 1]: its ends and its derivative's roots.
+        auto extremes = [](const std::array<double, 4>& c, auto&& visit) {
+            visit(cubic_at(c, 0)), visit(cubic_at(c, 1));
+            for (double t : roots_between({c[1], 2 * c[2], 3 * c[3]}, 0, 1)) visit(cubic_at(c, t));
+        };
+        extremes(piece.r, [&](double v) { r_max = std::max(r_max, std::abs(v)); });
+        extremes(piece.y,
+                 [&](double v) { y_min = std::min(y_min, v), y_max = std::max(y_max, v); });
+    }
+    lower = {-r_max, y_min, -r_max}, upper = {r_max, y_max, r_max};
+}
+
 bool blob_bounds(const BlobShape& blob, Vec3& lower, Vec3& upper) {
     lower = {1e300, 1e300, 1e300}, upper = {-1e300, -1e300, -1e300};
     for (const BlobComponent& c : blob.components) {
@@ -600,6 +736,8 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
         inside = ring * ring + p.y * p.y < t->minor_radius * t->minor_radius;
     } else if (const auto* se = std::get_if<SuperellipsoidShape>(&shape)) {
         inside = superellipsoid_value(*se, p) < 0;
+    } else if (const auto* lathe = std::get_if<LatheShape>(&shape)) {
+        inside = lathe_inside(lathe_profile(*lathe), std::hypot(p.x, p.z), p.y);
     } else if (const auto* blob = std::get_if<BlobShape>(&shape)) {
         std::vector<Matrix4> to_component;
         for (const BlobComponent& c : blob->components)
@@ -662,6 +800,8 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
     } else if (const auto* prism = std::get_if<PrismShape>(&shape)) {
         if (prism->spline != SplineKind::linear) return false;
         prism_hits(*prism, o, d, hits);
+    } else if (const auto* lathe = std::get_if<LatheShape>(&shape)) {
+        lathe_hits(*lathe, o, d, hits);
     } else if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
         plane_hit(plane->normal, plane->distance, o, d, hits);
     } else if (const auto* disc = std::get_if<DiscShape>(&shape)) {

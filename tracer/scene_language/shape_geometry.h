@@ -7,7 +7,8 @@
 // inside_vector; hits of flat triangles), quadric, polynomial (poly, cubic, quartic: the
 // polynomial along the line, its real roots bisected within Cauchy's bound), superellipsoid,
 // isosurface and blob (the implicit function sampled in 256 steps across the box, container or
-// bounds, sign changes bisected; an isosurface capped by its container) and linear prism.
+// bounds, sign changes bisected; an isosurface capped by its container), linear prism and
+// lathe (its profile's pieces as POV-Ray draws them, each turned: a sextic along the line).
 #pragma once
 
 #include <vector>
@@ -27,6 +28,8 @@ struct ShapeHit {
 bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits);
 // The box around a blob's positive components (its own coordinates); false when it has none.
 bool blob_bounds(const BlobShape& blob, Vec3& lower, Vec3& upper);
+// The box around a lathe: its profile's reach and heights.
+void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper);
 // Whether `p` is inside the shape (POV-Ray's inside: a plane's or disc's side against their
 // normal, a mesh by the parity of crossings along its inside_vector); false when not covered.
 bool shape_inside(const Shape& shape, Vec3 p, bool& inside);
