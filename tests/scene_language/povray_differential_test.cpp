@@ -143,7 +143,7 @@ INSTANTIATE_TEST_SUITE_P(Snippets, PovRayDifferential,
                          ::testing::Values("expressions.pov", "strings.pov", "random.pov",
                                            "directives.pov", "arrays.pov", "splines.pov",
                                            "functions.pov", "includes.pov", "fileio.pov",
-                                           "patterns.pov", "extents.pov"),
+                                           "patterns.pov", "geometry.pov"),
                          [](const ::testing::TestParamInfo<const char*>& info) {
                              std::string name = info.param;
                              return name.substr(0, name.find('.'));
