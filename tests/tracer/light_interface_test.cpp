@@ -126,6 +126,10 @@ TEST(LightInterface, BidirectionalSamplesAndEmitsPovRayLights) {
         "light_source { <0, 10, 0> color rgb 0.001 spotlight point_at <0, -50, 0> radius -90 "
         "falloff 90 tightness 1 }",
         kPi * intensity, "cosine spotlight");
+    expect_bidirectional_balance(
+        "light_source { <0, 10, 0> color rgb 0.001 spotlight point_at <0, -50, 0> radius -90 "
+        "falloff 90 tightness 1 area_light <10, 0, 0>, <0, 0, 10>, 2, 2 circular orient }",
+        kPi * intensity, "oriented cosine area spotlight");
 }
 
 TEST(LightInterface, PathTracerRefusesTheNaiveRaySet) {

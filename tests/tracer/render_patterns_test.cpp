@@ -48,14 +48,11 @@ TEST(RenderPatterns, SkyAgreesWithPovRayPixelForPixel) {
     EXPECT_GE(fraction, 0.98);
 }
 
-// The pattern scene under `assumed_gamma` (its colours encoded with it) and seen through
-// `camera` (its camera statement when empty), against POV-Ray's render written with that file
-// gamma: POV-Ray shows a flat colour unchanged, and here it is decoded to c^gamma of radiance,
-// so c^(1/gamma) must give it back.
-void expect_flat_colours_agree(const std::string& scene_name, double assumed_gamma,
-                               const std::string& camera = "") {
-    const int width = 240, height = 180;
-    test::ScratchDir dir;
+// The scene `scene_name` with its camera statement (a line) replaced by `camera` if given,
+// written to `dir` as `file_name`.
+std::string scene_with_camera(const test::ScratchDir& dir, const std::string& scene_name,
+                              double assumed_gamma, const std::string& camera,
+                              const std::string& file_name) {
     std::string text = test::read_file(test::tracer_scene(scene_name));
     const std::string linear = "assumed_gamma 1.0";
     text.replace(text.find(linear), linear.size(),
@@ -64,14 +61,31 @@ void expect_flat_colours_agree(const std::string& scene_name, double assumed_gam
         const size_t start = text.find("camera {");
         text.replace(start, text.find('\n', start) - start, camera);
     }
-    const std::string scene_file = dir.file(scene_name);
+    const std::string scene_file = dir.file(file_name);
     test::write_file(scene_file, text);
+    return scene_file;
+}
+
+// The pattern scene under `assumed_gamma` (its colours encoded with it) and seen through
+// `camera` (its camera statement when empty), against POV-Ray's render written with that file
+// gamma: POV-Ray shows a flat colour unchanged, and here it is decoded to c^gamma of radiance,
+// so c^(1/gamma) must give it back. With `our_camera`, the scene is seen here through that
+// camera instead (one that should see what POV-Ray's does).
+void expect_flat_colours_agree(const std::string& scene_name, double assumed_gamma,
+                               const std::string& camera = "", const std::string& our_camera = "") {
+    const int width = 240, height = 180;
+    test::ScratchDir dir;
+    const std::string scene_file =
+        scene_with_camera(dir, scene_name, assumed_gamma, camera, scene_name);
     std::vector<uint8_t> reference;
     std::string message;
     if (!test::povray_render(scene_file, width, height, reference, message, assumed_gamma))
         GTEST_SKIP() << message;
 
-    const RenderScene scene(parse_scene_file(scene_file));
+    const RenderScene scene(parse_scene_file(
+        our_camera.empty()
+            ? scene_file
+            : scene_with_camera(dir, scene_name, assumed_gamma, our_camera, "ours.pov")));
     const std::vector<SurfaceHit> hits = centre_hits(scene, width, height);
     const double to_pigment = scene.units().per_square_metre();  // emission -> pigment
     auto encoded = [&](double v) { return std::pow(to_pigment * v, 1 / assumed_gamma); };
@@ -87,9 +101,9 @@ void expect_flat_colours_agree(const std::string& scene_name, double assumed_gam
         patterned += hits[i].object >= 0;
     }
     const double fraction = double(agree) / double(hits.size());
-    std::printf("%s, assumed_gamma %g, %s: colours agree on %d of %zu pixels (%.4f)\n",
+    std::printf("%s, assumed_gamma %g, %s%s: colours agree on %d of %zu pixels (%.4f)\n",
                 scene_name.c_str(), assumed_gamma, camera.empty() ? "its camera" : camera.c_str(),
-                agree, hits.size(), fraction);
+                our_camera.empty() ? "" : " (here a mesh camera)", agree, hits.size(), fraction);
     // Most pixels show an object (the wide-angle cameras see sky too): nothing, black in both,
     // cannot carry the agreement.
     EXPECT_GT(patterned, width * height / 2);
@@ -153,6 +167,12 @@ TEST(RenderShapes, LathesAgreeWithPovRayPixelForPixel) {
     expect_flat_colours_agree("lathes.pov", 1.0);
 }
 
+// Surfaces of revolution (closed, open, turned, scaled unevenly, cut from a box) and polygons
+// (with a hole, a self-crossing star, tilted).
+TEST(RenderShapes, SorsAndPolygonsAgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("sors.pov", 1.0);
+}
+
 // Text in three of POV-Ray's fonts (curves, holes, an offset, turned, thick) and cut from a box.
 TEST(RenderShapes, TextAgreesWithPovRayPixelForPixel) {
     expect_flat_colours_agree("text.pov", 1.0);
@@ -180,6 +200,77 @@ TEST(RenderPatterns, AgreeWithPovRayThroughTheWideAngleCameras) {
           "camera { ultra_wide_angle location <0, 9, -5> look_at <0, 0, 0.5> angle 160 }",
           "camera { fisheye location <0, 9, -3> look_at <0, 0, 0.5> angle 170 rotate y*10 }"})
         expect_flat_colours_agree("patterns.pov", 1.0, camera);
+}
+
+// A mesh_camera whose faces (one per pixel, distribution 0) or smooth uv grid (distribution 3)
+// aim along the rays of the scene's perspective camera sees what POV-Ray's perspective camera
+// does (POV-Ray's own mesh camera departs from its documented pixel mapping: mesh_camera.h).
+TEST(RenderPatterns, MeshCamerasSeeWhatThePerspectiveCameraTheyFollowSees) {
+    const std::string include = test::read_file(test::tracer_scene("mesh_cameras.inc")) + "\n";
+    const std::string view = "<0, 12, -4>, <0, 0, 0.5>, 60";
+    expect_flat_colours_agree(
+        "patterns.pov", 1.0, "",
+        include + "camera { mesh_camera { 1 0 PixelMesh(" + view + ", 240, 180) } }");
+    expect_flat_colours_agree(
+        "patterns.pov", 1.0, "",
+        include + "camera { mesh_camera { 1 3 UvMesh(" + view + ", 60, 45) smooth } }");
+}
+
+// The rules of a face's ray, each read back from POV-Ray 3.7 with probe renders (a 1 x 1 image
+// of one triangle; the hit point's direction and position shown as colours): the ray leaves the
+// centroid along (c - a) x (b - a), taken to the world as a normal (so a mirroring scale turns
+// it); location.z moves the origin along the unit normal in the mesh's coordinates (so a scale
+// of 3 along it moves it 3 times as far); a negative direction.z reverses the ray but not the
+// move. And the pixel-to-face maps of distributions 0, 1 (meshes summed, ray k at face
+// W H k + p) and 2 (meshes side by side).
+TEST(RenderPatterns, MeshCameraRaysFollowPovRaysRules) {
+    auto ray = [](const std::string& camera, double x, double y, int width = 1, int height = 1) {
+        const SceneDescription scene = parse_scene_text(camera, "test.pov");
+        return SceneCamera(scene.camera, width, height).ray(x, y);
+    };
+    auto expect_ray = [](const CameraRay& r, Vec3 origin, Vec3 direction) {
+        EXPECT_TRUE(r.exists);
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR((&r.origin.x)[k], (&origin.x)[k], 1e-12);
+            EXPECT_NEAR((&r.direction.x)[k], (&direction.x)[k], 1e-12);
+        }
+    };
+    const std::string unit = "triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }";
+    auto camera = [](const std::string& mesh, const std::string& rest) {
+        return "camera { mesh_camera { 1 0 mesh { " + mesh + " } } " + rest + " }";
+    };
+    const double third = 1.0 / 3, half_root2 = std::sqrt(0.5);
+    expect_ray(ray(camera(unit, ""), 0.5, 0.5), {third, third, 0}, {0, 0, -1});
+    expect_ray(ray(camera(unit, "location <0, 0, 0.1>"), 0.5, 0.5), {third, third, -0.1},
+               {0, 0, -1});
+    expect_ray(ray(camera(unit + " scale <1, 1, 3>", "location <0, 0, 0.04>"), 0.5, 0.5),
+               {third, third, -0.12}, {0, 0, -1});
+    expect_ray(ray(camera(unit + " scale -1", ""), 0.5, 0.5), {-third, -third, 0}, {0, 0, 1});
+    expect_ray(ray(camera(unit, "location <0, 0, 0.06> direction -z"), 0.5, 0.5),
+               {third, third, -0.06}, {0, 0, 1});
+    expect_ray(ray(camera("triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 1> }", ""), 0.5, 0.5),
+               {third, third, third}, {0, half_root2, -half_root2});
+
+    // Faces T(i) at x = i (centroid x = i + 0.1); pixel (x, y) of a 3 x 2 image.
+    auto row = [](int mesh, int first, int count) {
+        std::string text = "mesh { ";
+        for (int i = first; i < first + count; ++i)
+            text += "triangle { <" + std::to_string(i) + ", " + std::to_string(mesh) + ", 0>, <" +
+                    std::to_string(i) + ".3, " + std::to_string(mesh) + ", 0>, <" +
+                    std::to_string(i) + ", " + std::to_string(mesh) + ".3, 0> } ";
+        return text + "} ";
+    };
+    auto face_x = [&](const std::string& mesh_camera, double x, double y) {
+        const CameraRay r = ray("camera { mesh_camera { " + mesh_camera + " } }", x, y, 3, 2);
+        return r.exists ? r.origin.x - 0.1 : -1.0;
+    };
+    const std::string two_meshes = row(0, 0, 4) + row(1, 0, 4);
+    EXPECT_NEAR(face_x("1 0 " + row(0, 0, 6), 1.5, 1.5), 4, 1e-12);   // pixel 4
+    EXPECT_NEAR(face_x("1 0 " + row(0, 0, 4), 1.5, 1.5), -1, 1e-12);  // no face 4: no ray
+    EXPECT_NEAR(face_x("2 0 " + two_meshes, 1.75, 0.5), 1, 1e-12);    // ray 1: mesh 1, face 1
+    EXPECT_NEAR(face_x("2 1 " + row(0, 0, 3) + row(1, 0, 6), 0.75, 0.5), 3, 1e-12);  // face 6
+    EXPECT_NEAR(face_x("1 2 " + two_meshes, 1.5, 1.5), 1, 1e-12);   // block 1 (width 1), face 1
+    EXPECT_NEAR(face_x("1 2 " + two_meshes, 2.5, 1.5), -1, 1e-12);  // left over: no ray
 }
 
 // The colour moves with the object: a checker on a box translated by one square shows the

@@ -401,5 +401,34 @@ TEST(RenderAreaLight, OrientedLightIsASphereOfItsPower) {
     EXPECT_NEAR(r.film.mean(4, 4).red, radiance, 1e-9 * radiance);
 }
 
+TEST(RenderAreaLight, OrientedSpotlightIsASphereWithTheSpotsFarField) {
+    // An oriented area spotlight of intensity I = 1 W/sr on its axis (full inside 30 degrees,
+    // none beyond 60): a sphere (R = 50 mm) of radiance I s(w) / (pi R^2) along each direction
+    // w leaving it. 400 mm down its axis, every direction from the sphere to the receiver lies
+    // within 7.2 degrees of the axis: E = I / d^2 exactly, as a point spotlight's; at 75 degrees
+    // off the axis every one lies beyond the falloff: nothing. Seen from its axis, the sphere
+    // has the radiance I / (pi R^2).
+    RenderSettings settings;
+    settings.passes = 4096, settings.seed = 7, settings.width = 9, settings.height = 9;
+    const RenderResult r = render_text(R"(
+        camera { location <0, -1000, 0> look_at <0, 0, 0> angle 1 }
+        light_source { <0, 0, 0> color rgb 1 spotlight point_at <0, -1000, 0> radius 30
+                       falloff 60 tightness 0 area_light <100, 0, 0>, <0, 0, 100>, 3, 3
+                       circular orient }
+        illuminance_receiver { <-1, -400, -1>, <0, 0, 2>, <2, 0, 0> resolution <1, 1>
+                               name "axis" }
+        illuminance_receiver { <386.4, -103.5, -1>, <-0.5176, -1.9319, 0>, <0, 0, 2>
+                               resolution <1, 1> name "75 degrees" }
+    )",
+                                       settings);
+    const double expected = 683e6 / (400.0 * 400.0);
+    const double se = r.receivers[0].irradiance.photometric_standard_error(0, 0);
+    EXPECT_LT(se, 0.01 * expected);
+    EXPECT_NEAR(r.receivers[0].irradiance.photometric_mean(0, 0), expected, kZ * se);
+    EXPECT_EQ(r.receivers[1].irradiance.photometric_mean(0, 0), 0.0);
+    const double radiance = 1 / (kPi * 50 * 50) * 1e6;  // W/(m^2 sr)
+    EXPECT_NEAR(r.film.mean(4, 4).red, radiance, 1e-9 * radiance);
+}
+
 }  // namespace
 }  // namespace rayset::tracer

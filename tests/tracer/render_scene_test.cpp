@@ -225,6 +225,40 @@ TEST(RenderScene, LathesHitWhereTheClosedFormsSay) {
     expect_vec(h.normal, {-1, 0, 0}, 1e-6);
 }
 
+// Surfaces of revolution: four points of one radius make a cylinder between the inner two
+// heights (r^2 has slope 0 there), capped unless open; inside it a box's top is kept by an
+// intersection. A polygon of two loops is a square frame: a ray down the hole misses.
+TEST(RenderScene, SorsAndPolygonsHitWhereTheClosedFormsSay) {
+    const std::string cylinder = "sor { 4, <1, -1>, <1, 0>, <1, 2>, <1, 3> ";
+    const Scene capped(cylinder + "}");
+    SurfaceHit h = capped.hit({-5, 1, 0}, {1, 0, 0});
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 4, 1e-9);
+    expect_vec(h.normal, {-1, 0, 0}, 1e-9);
+    h = capped.hit({0.3, 5, 0.2}, {0, -1, 0});  // the top cap at y = 2
+    EXPECT_NEAR(h.t, 3, 1e-9);
+    expect_vec(h.normal, {0, 1, 0}, 1e-9);
+    EXPECT_EQ(capped.hit({1.5, 5, 0}, {0, -1, 0}).object, -1);  // beside it
+    const Scene open(cylinder + "open }");
+    h = open.hit({0.3, 5, 0.2}, {0, -1, 0});  // down the open tube: nothing
+    EXPECT_EQ(h.object, -1);
+    const Scene cut("intersection { " + cylinder + "} box { <-2, 0.5, -2>, <2, 1.5, 2> } }");
+    h = cut.hit({0.3, 5, 0.2}, {0, -1, 0});  // the box's top, inside the cylinder
+    EXPECT_NEAR(h.t, 3.5, 1e-9);
+    expect_vec(h.normal, {0, 1, 0}, 1e-9);
+    EXPECT_EQ(cut.hit({1.5, 5, 0}, {0, -1, 0}).object, -1);  // the box's top, outside it
+
+    const Scene frame(
+        "polygon { 10, <-2, -2>, <2, -2>, <2, 2>, <-2, 2>, <-2, -2>, "
+        "<-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1> translate 3*z }");
+    h = frame.hit({1.5, 0.2, 0}, {0, 0, 1});
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 3, 1e-9);
+    EXPECT_NEAR(std::abs(h.normal.z), 1, 1e-9);
+    EXPECT_EQ(frame.hit({0.2, 0.3, 0}, {0, 0, 1}).object, -1);  // through the hole
+    EXPECT_EQ(frame.hit({2.5, 0, 0}, {0, 0, 1}).object, -1);    // beside it
+}
+
 // Text: the glyph outline extruded along z from 0 to the thickness, its first glyph's left edge
 // at x = 0. Times Roman's "I" is a stem with serifs: its caps face -z and +z, its stem's walls
 // +-x; "O" has a hole where a ray along z passes through.

@@ -29,8 +29,7 @@ const char* projection_name(CameraProjection projection) {
 }  // namespace
 
 void check_camera_renderable(const Camera& camera) {
-    if (camera.projection == CameraProjection::mesh ||
-        camera.projection == CameraProjection::omnimax ||
+    if (camera.projection == CameraProjection::omnimax ||
         camera.projection == CameraProjection::panoramic)
         throw Error(fmt::format("not supported: {} camera at {}",
                                 projection_name(camera.projection),
@@ -53,6 +52,9 @@ SceneCamera::SceneCamera(const Camera& camera, int width, int height)
     right_over_up_ = length(camera.right) / length(camera.up);
     angle_ = camera.angle * kRadiansPerDegree;
     vertical_angle_ = camera.vertical_angle * kRadiansPerDegree;
+    if (camera.projection == CameraProjection::mesh)
+        mesh_ = std::make_shared<const MeshCameraRays>(camera.mesh, camera.location.z,
+                                                       camera.direction.z);
 }
 
 CameraRay SceneCamera::ray(double px, double py) const {
@@ -82,6 +84,7 @@ CameraRay SceneCamera::ray(double px, double py) const {
             return {c.location, normalized(std::sin(ax) * r_ + std::sin(ay) * u_ +
                                            std::cos(ax) * std::cos(ay) * d_)};
         }
+        case CameraProjection::mesh: return mesh_->ray(px, py, width_, height_);
         case CameraProjection::fisheye: {
             const double fx = x * right_over_up_, r = std::hypot(fx, y);
             if (r > 0.5) return {c.location, d_, false};

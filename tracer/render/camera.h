@@ -9,18 +9,21 @@
 //   cylinders 3 and 4: the same with the viewpoint moved by y up (3) or x right (4) instead;
 // - ultra_wide_angle: sin(x A) R + sin(y A |up| / |right|) U + cos(x A) cos(...) D;
 // - fisheye: at the angle r A from D, r = |(x |right| / |up|, y)|; none beyond r = 1/2 (POV-Ray
-//   leaves those pixels black).
+//   leaves those pixels black);
+// - mesh_camera: from the faces of meshes (mesh_camera.h).
 // Like POV-Ray, the image size does not change right/up: a 4:3 image of a square camera
 // is stretched exactly as POV-Ray stretches it.
 #pragma once
 
+#include <memory>
+
+#include "tracer/render/mesh_camera.h"
 #include "tracer/scene_language/scene_description.h"
 
 namespace rayset::tracer {
 
 // Throws rayset::Error ("not supported: FEATURE at FILE:LINE:COLUMN") for what the camera does
-// not render: the mesh_camera, omnimax and panoramic projections, focal blur, a normal
-// perturbation.
+// not render: the omnimax and panoramic projections, focal blur, a normal perturbation.
 void check_camera_renderable(const Camera& camera);
 
 struct CameraRay {
@@ -39,9 +42,10 @@ public:
 private:
     Camera camera_;
     int width_, height_;
-    Vec3 d_, r_, u_;                         // unit direction, right and up
-    double right_over_up_ = 1;               // |right| / |up|
-    double angle_ = 0, vertical_angle_ = 0;  // radians
+    Vec3 d_, r_, u_;                              // unit direction, right and up
+    double right_over_up_ = 1;                    // |right| / |up|
+    double angle_ = 0, vertical_angle_ = 0;       // radians
+    std::shared_ptr<const MeshCameraRays> mesh_;  // the mesh_camera projection
 };
 
 }  // namespace rayset::tracer

@@ -20,6 +20,11 @@ struct Material {
     Rgb mirror_min, mirror_max;  // perfect mirror: weight at normal and at grazing incidence
     double mirror_falloff = 1;
     bool mirror_fresnel = false;
+    // A metallic reflection (POV-Ray's `reflection { metallic M }`): the weights above tinted
+    // by the pigment, taking over from them by M (1 - F(angle)), F rising from 0 at normal
+    // incidence to 1 at grazing (BsdfOf::mirror_weight).
+    Rgb mirror_min_metal, mirror_max_metal;
+    double mirror_metallic = 0;
     Rgb transmission;  // smooth dielectric lobe (Fresnel reflection + refraction)
     double ior = 1;
     // Added to the shading normal, then normalised (a normal { } pattern's tilt; world space).
@@ -29,6 +34,7 @@ struct Material {
     // The reflectances above as spectra, for spectral transport (rgb_upsampling.h).
     struct Spectra {
         ReflectanceSpectrum diffuse, glossy, mirror_min, mirror_max, transmission;
+        ReflectanceSpectrum mirror_min_metal, mirror_max_metal;
     } spectra;
 };
 
@@ -37,6 +43,7 @@ struct Material {
 template <class Q>
 struct LobeColours {
     Q diffuse, glossy, mirror_min, mirror_max, transmission;
+    Q mirror_min_metal, mirror_max_metal;
 };
 LobeColours<Rgb> lobe_colours(const Material& m, NoWavelengths);
 LobeColours<SampledSpectrum> lobe_colours(const Material& m, const SampledWavelengths& wavelengths);
@@ -115,6 +122,9 @@ private:
     double mirror_fraction() const;  // of the way from mirror_min to mirror_max
     Rgb mirror_weight_rgb() const;   // what the lobe choice uses
     Q mirror_weight() const;
+    template <class Colour>
+    Colour mirror_weight_of(const Colour& min, const Colour& max, const Colour& min_metal,
+                            const Colour& max_metal) const;
 
     const Material& m_;
     LobeColours<Q> c_;

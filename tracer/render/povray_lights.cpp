@@ -26,26 +26,35 @@ double cubic_spline(double low, double high, double x) {
 // (Simpson's rule in cos(theta); 4 pi for a plain point light).
 double effective_solid_angle(const PointLight& light) {
     if (!light.spot) return 4 * kPi;
+    const Vec3 axis = light.spot->axis;
     const int n = 20000;
     double sum = 0;
     for (int i = 0; i <= n; ++i) {
         const double mu = double(i) / n;
         const double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
-        sum +=
-            w * light.spot_factor(mu * light.axis + std::sqrt(1 - mu * mu) * Frame(light.axis).s);
+        sum += w * light.spot->factor(mu * axis + std::sqrt(1 - mu * mu) * Frame(axis).s);
     }
     return 2 * kPi * sum / (3.0 * n);
 }
 
 }  // namespace
 
-double PointLight::spot_factor(Vec3 direction) const {
-    if (!spot) return 1;
+double SpotProfile::factor(Vec3 direction) const {
     const double c = dot(direction, axis);
     if (c <= 0) return 0;
     double factor = std::pow(c, tightness);
     if (cos_radius > 0 && c < cos_radius) factor *= cubic_spline(cos_falloff, cos_radius, c);
     return factor;
+}
+
+// The factor is zero behind the light and, with a radius, outside the falloff cone.
+double SpotProfile::sample_cone(double u1, double u2, Vec3& direction) const {
+    const double cos_edge = std::max(0.0, cos_radius > 0 ? cos_falloff : 0.0);
+    const double cos_theta = 1 - u1 * (1 - cos_edge), phi = 2 * kPi * u2;
+    const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
+    const Vec3 local{sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+    direction = normalized(Frame(axis).to_world(local));
+    return 2 * kPi * (1 - cos_edge);
 }
 
 bool RectLight::crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const {
@@ -158,15 +167,13 @@ void set_photon_flux(LightPhotonOf<Q>& photon, const Rgb& watts, const Illuminan
 
 template <class Q>
 LightPhotonOf<Q> PointLight::sample_Le(const double u[7], double u_wavelength) const {
-    // The spot factor is zero behind the light and, with a radius, outside the falloff cone.
-    const double cos_edge = !spot ? -1 : std::max(0.0, cos_radius > 0 ? cos_falloff : 0.0);
-    const double cos_theta = 1 - u[1] * (1 - cos_edge), phi = 2 * kPi * u[2];
-    const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
-    const Vec3 local{sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
     LightPhotonOf<Q> photon;
     photon.origin = position;
-    photon.direction = spot ? normalized(Frame(axis).to_world(local)) : local;
-    const double solid_angle = 2 * kPi * (1 - cos_edge);
+    double solid_angle = 4 * kPi;
+    if (spot)
+        solid_angle = spot->sample_cone(u[1], u[2], photon.direction);
+    else
+        photon.direction = uniform_sphere(u[1], u[2]);
     set_photon_flux(photon, (spot_factor(photon.direction) * solid_angle) * intensity,
                     intensity_spectrum, u_wavelength);
     return photon;
@@ -204,22 +211,32 @@ std::optional<LightLiSampleOf<Q>> SphereLight::sample_Li(
     const double half_chord =
         std::sqrt(std::max(0.0, radius * radius - distance * distance * sin2_theta));
     out.distance = distance * cos_theta - half_chord;
-    out.Li = emitted(radiance_rgb, radiance_spectrum, wavelengths);
+    out.Li = radiance<Q>(ref, out.wi, wavelengths);
     out.pdf = chosen / (2 * kPi * one_minus_cos_max);
     return out;
 }
 
 template <class Q>
 LightPhotonOf<Q> SphereLight::sample_Le(const double u[7], double u_wavelength) const {
-    const double z = 1 - 2 * u[1], phi = 2 * kPi * u[2];
-    const double r = std::sqrt(std::max(0.0, 1 - z * z));
-    const Vec3 n{r * std::cos(phi), r * std::sin(phi), z};
     LightPhotonOf<Q> photon;
-    photon.origin = centre + radius * n;
-    photon.direction = normalized(Frame(n).to_world(cosine_hemisphere(u[3], u[4])));
-    // L cos dA dw over (cos / pi) / A.
-    set_photon_flux(photon, (kPi * 4 * kPi * radius * radius) * radiance_rgb, radiance_spectrum,
-                    u_wavelength);
+    if (!spot) {
+        const Vec3 n = uniform_sphere(u[1], u[2]);
+        photon.origin = centre + radius * n;
+        photon.direction = normalized(Frame(n).to_world(cosine_hemisphere(u[3], u[4])));
+        // L cos dA dw over (cos / pi) / A.
+        set_photon_flux(photon, (kPi * 4 * kPi * radius * radius) * radiance_rgb, radiance_spectrum,
+                        u_wavelength);
+        return photon;
+    }
+    // Seen along w the sphere is a disc of area pi r^2: a point uniform on it, moved along w
+    // onto the sphere; flux L(w) pi r^2 over the direction's density.
+    const double solid_angle = spot->sample_cone(u[1], u[2], photon.direction);
+    const Frame frame(photon.direction);
+    const double rho = radius * std::sqrt(u[3]), phi = 2 * kPi * u[4];
+    const double along = std::sqrt(std::max(0.0, radius * radius - rho * rho));
+    photon.origin = centre + frame.to_world({rho * std::cos(phi), rho * std::sin(phi), along});
+    const double weight = spot->factor(photon.direction) * kPi * radius * radius * solid_angle;
+    set_photon_flux(photon, weight * radiance_rgb, radiance_spectrum, u_wavelength);
     return photon;
 }
 
@@ -246,15 +263,15 @@ PointLight point_light_of(const LightSource& source, Rgb colour, const SceneUnit
     point.position = source.position;
     point.intensity = intensity;
     point.intensity_spectrum = IlluminantSpectrum(intensity);
-    point.spot = source.spotlight;
-    if (point.spot) {
+    if (source.spotlight) {
         const Vec3 axis = source.point_at - source.position;
         if (length(axis) == 0)
             throw Error(fmt::format("spotlight point_at equals its location at {}", where));
-        point.axis = normalized(axis);
-        point.cos_radius = std::cos(source.radius * kRadiansPerDegree);
-        point.cos_falloff = std::cos(source.falloff * kRadiansPerDegree);
-        point.tightness = source.tightness;
+        SpotProfile& spot = point.spot.emplace();
+        spot.axis = normalized(axis);
+        spot.cos_radius = std::cos(source.radius * kRadiansPerDegree);
+        spot.cos_falloff = std::cos(source.falloff * kRadiansPerDegree);
+        spot.tightness = source.tightness;
     }
     return point;
 }
@@ -277,7 +294,7 @@ RectLight rect_light_of(const LightSource& source, const PointLight& point, doub
     rect.dual1 = (1 / (parallelogram * parallelogram)) * cross(rect.edge2, n);
     rect.dual2 = (1 / (parallelogram * parallelogram)) * cross(n, rect.edge1);
     rect.two_sided = !point.spot;
-    if (point.spot && dot(rect.normal, point.axis) < 0) rect.normal = -rect.normal;
+    if (point.spot && dot(rect.normal, point.spot->axis) < 0) rect.normal = -rect.normal;
     const double projected = (rect.two_sided ? 2 : 1) * kPi * rect.area;  // W per unit radiance
     rect.emitted_power = point.emitted_power;
     rect.radiance_rgb = (solid_angle / projected) * point.intensity;
@@ -286,16 +303,18 @@ RectLight rect_light_of(const LightSource& source, const PointLight& point, doub
 }
 
 // An oriented area light (POV-Ray makes it circular, both axes as long as the first): a sphere
-// of that diameter emitting the power of `point`, Lambertian.
-SphereLight sphere_light_of(const LightSource& source, const PointLight& point, double solid_angle,
+// of that diameter emitting the power of `point`, in its directions.
+SphereLight sphere_light_of(const LightSource& source, const PointLight& point,
                             const std::string& where) {
     SphereLight sphere;
     sphere.centre = source.position;
     sphere.radius = 0.5 * length(source.axis1);
     if (sphere.radius == 0) throw Error(fmt::format("area_light axis of length 0 at {}", where));
-    const double projected = kPi * 4 * kPi * sphere.radius * sphere.radius;
+    // The far field of radiance L0 s(w) from a disc of area pi r^2 is the point light's
+    // intensity I s(w): L0 = I / (pi r^2), Lambertian (s = 1) or spot alike.
+    sphere.spot = point.spot;
     sphere.emitted_power = point.emitted_power;
-    sphere.radiance_rgb = (solid_angle / projected) * point.intensity;
+    sphere.radiance_rgb = (1 / (kPi * sphere.radius * sphere.radius)) * point.intensity;
     sphere.radiance_spectrum = IlluminantSpectrum(sphere.radiance_rgb);
     return sphere;
 }
@@ -309,14 +328,12 @@ PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const Sc
         const std::string where = source.location.str();
         if (source.shadowless && source.area_light)
             throw Error(fmt::format("not supported: shadowless area_light at {}", where));
-        if (source.area_light && source.orient && source.spotlight)
-            throw Error(fmt::format("not supported: an oriented area spotlight at {}", where));
         PointLight point = point_light_of(source, decoding(source.colour), units, where);
         point.shadowless = source.shadowless;
         const double solid_angle = effective_solid_angle(point);
         point.emitted_power = average(point.intensity) * solid_angle;
         if (source.area_light && source.orient)
-            out.spheres.push_back(sphere_light_of(source, point, solid_angle, where));
+            out.spheres.push_back(sphere_light_of(source, point, where));
         else if (source.area_light)
             out.rects.push_back(rect_light_of(source, point, solid_angle, where));
         else

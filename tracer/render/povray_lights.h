@@ -15,20 +15,29 @@
 
 namespace rayset::tracer {
 
+// POV-Ray's spotlight: the share of a light's axial intensity it sends along a direction.
+struct SpotProfile {
+    Vec3 axis;  // unit, toward point_at
+    double cos_radius = 0, cos_falloff = 0, tightness = 0;
+
+    // POV-Ray's spotlight factor (Attenuate_Light) for a unit direction leaving the light.
+    double factor(Vec3 direction) const;
+    // A direction uniform over the cone the factor is not zero in, for uniform u1, u2; returns
+    // the cone's solid angle.
+    double sample_cone(double u1, double u2, Vec3& direction) const;
+};
+
 // A point or spot light: radiant intensity `intensity` W/sr along the axis (spot) or in every
 // direction, inverse-square law.
 struct PointLight {
     Vec3 position;
     Rgb intensity;
     IlluminantSpectrum intensity_spectrum;  // the same for spectral transport
-    bool spot = false;
-    bool shadowless = false;  // POV-Ray's shadowless light: its light passes through objects
-    Vec3 axis;                // unit, toward point_at
-    double cos_radius = 0, cos_falloff = 0, tightness = 0;
+    std::optional<SpotProfile> spot;
+    bool shadowless = false;   // POV-Ray's shadowless light: its light passes through objects
     double emitted_power = 0;  // W, average over channels
 
-    // POV-Ray's spotlight factor (Attenuate_Light) for a unit direction leaving the light.
-    double spot_factor(Vec3 direction) const;
+    double spot_factor(Vec3 direction) const { return spot ? spot->factor(direction) : 1; }
 
     double power() const { return emitted_power; }
     bool photons_only() const { return false; }
@@ -83,15 +92,17 @@ private:
     Vec3 point_at(double u0, double u1) const;  // uniform on the body for uniform u0, u1
 };
 
-// An oriented area light: a Lambertian sphere of radiance `radiance` (renderer units), seen
-// from every point as a disc facing it, as POV-Ray turns an oriented light's disc toward each
-// point it lights.
+// An oriented area light: a sphere seen from every point as a disc facing it, as POV-Ray turns
+// an oriented light's disc toward each point it lights. Its radiance along a direction w
+// leaving it is `radiance` times the spot factor of w (1 without a spot): Lambertian, or a
+// spotlight whose far field is the point spotlight's.
 struct SphereLight {
     Vec3 centre;
     double radius = 0;
     Rgb radiance_rgb;                      // W/(unit^2 sr)
     IlluminantSpectrum radiance_spectrum;  // the same for spectral transport
-    double emitted_power = 0;              // W, average over channels
+    std::optional<SpotProfile> spot;
+    double emitted_power = 0;  // W, average over channels
 
     double power() const { return emitted_power; }
     bool photons_only() const { return false; }
@@ -103,10 +114,12 @@ struct SphereLight {
     bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const;
     double pdf_Li(Vec3 ref, Vec3 wi, double t, double chosen) const;
     template <class Q>
-    Q radiance(Vec3, Vec3, const WavelengthsFor<Q>& wavelengths) const {
-        return emitted(radiance_rgb, radiance_spectrum, wavelengths);
+    Q radiance(Vec3, Vec3 direction, const WavelengthsFor<Q>& wavelengths) const {
+        const double factor = spot ? spot->factor(-direction) : 1;
+        return factor * emitted(radiance_rgb, radiance_spectrum, wavelengths);
     }
-    // A uniform point, a cosine-distributed direction about the outward normal there.
+    // A uniform point, a cosine-distributed direction about the outward normal there; with a
+    // spot, a direction in the spot's cone and a point uniform over the disc facing it.
     template <class Q>
     LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const;
     lightmodel::BinnedSpectrum spectrum() const;

@@ -63,7 +63,7 @@ void check_device(RTCDevice device, const char* what) {
 }
 
 // The light features the renderer does not render (povray_lights.cpp refuses its own: shadowless
-// area lights, oriented area spotlights, fade powers other than 2). media_interaction,
+// area lights, fade powers other than 2). media_interaction,
 // media_attenuation and photon flags matter only with media and photon mapping, which a path
 // tracer does not use; area_illumination is what its area lights always do.
 void refuse_unrendered(const LightSource& light) {

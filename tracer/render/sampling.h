@@ -25,6 +25,12 @@ inline Vec3 cosine_hemisphere(double u1, double u2) {
     return {r * double(std::cos(phi)), r * double(std::sin(phi)), std::sqrt(std::max(0.0, 1 - u1))};
 }
 
+// Uniform direction on the unit sphere (pdf 1 / (4 pi)).
+inline Vec3 uniform_sphere(double u1, double u2) {
+    const double z = 1 - 2 * u1, r = std::sqrt(std::max(0.0, 1 - z * z)), phi = 2 * kPi * u2;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
 // Direction about +z with pdf (n + 1) / (2 pi) cos^n(alpha).
 inline Vec3 phong_lobe(double exponent, double u1, double u2) {
     const double cos_alpha = std::pow(u1, 1 / (exponent + 1));

@@ -59,7 +59,8 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<CsgShape>(s) || std::holds_alternative<PolynomialShape>(s) ||
         std::holds_alternative<QuadricShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
         std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s) ||
-        std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s);
+        std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s) ||
+        std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
     if (const auto* prism = std::get_if<PrismShape>(&s);
         prism && prism->spline != SplineKind::linear)
@@ -116,7 +117,8 @@ bool analytic(const Shape& s) {
            std::holds_alternative<TorusShape>(s) || std::holds_alternative<DiscShape>(s) ||
            std::holds_alternative<TextShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
            std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s) ||
-           std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s);
+           std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s) ||
+           std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s);
 }
 
 struct Box3 {

@@ -178,6 +178,12 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
         Vec3 lo, hi;
         lathe_bounds(*lathe, lo, hi);
         b.add(lo), b.add(hi);
+    } else if (const auto* sor = std::get_if<SorShape>(&shape)) {
+        Vec3 lo, hi;
+        sor_bounds(*sor, lo, hi);
+        b.add(lo), b.add(hi);
+    } else if (const auto* polygon = std::get_if<PolygonShape>(&shape)) {
+        for (const Vec3& p : polygon->points) b.add(p);
     } else if (const auto* blob = std::get_if<BlobShape>(&shape)) {
         Vec3 lo, hi;
         if (!blob_bounds(*blob, lo, hi)) return false;

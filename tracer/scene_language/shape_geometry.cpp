@@ -673,6 +673,141 @@ void text_hits(const TextShape& text, Vec3 o, Vec3 d, std::vector<ShapeHit>& hit
 
 }  // namespace
 
+// A surface of revolution as POV-Ray draws it (read back from POV-Ray with trace, to 1e-10):
+// between points i and i + 1 (i from the second point to the third-last), r^2 is the cubic in
+// the height h through r_i^2 and r_(i+1)^2 whose slopes there are 2 r_j (r_(j+1) - r_(j-1)) /
+// (h_(j+1) - h_(j-1)), the slope of r^2 with r's central difference.
+struct SorPiece {
+    double h0, h1;
+    std::array<double, 4> r2;  // r^2 as a cubic in h, h^0 first
+};
+
+std::vector<SorPiece> sor_pieces(const SorShape& sor) {
+    const std::vector<Vec2>& p = sor.points;
+    auto slope = [&](size_t j) {
+        return 2 * p[j].x * (p[j + 1].x - p[j - 1].x) / (p[j + 1].y - p[j - 1].y);
+    };
+    std::vector<SorPiece> pieces;
+    for (size_t i = 1; i + 2 < p.size(); ++i) {
+        // Hermite form on s = (h - h0) / w, then expanded in h.
+        const double h0 = p[i].y, w = p[i + 1].y - h0;
+        const double v0 = p[i].x * p[i].x, v1 = p[i + 1].x * p[i + 1].x;
+        const double m0 = slope(i) * w, m1 = slope(i + 1) * w;
+        const double a = 2 * v0 - 2 * v1 + m0 + m1, b = -3 * v0 + 3 * v1 - 2 * m0 - m1;
+        // a s^3 + b s^2 + m0 s + v0 with s = (h - h0) / w.
+        const std::vector<double> s_of_h{-h0 / w, 1 / w};
+        std::vector<double> value{v0}, power{1};
+        for (const double c : {m0, b, a}) {
+            power = times(power, s_of_h);
+            value.resize(power.size(), 0.0);
+            for (size_t k = 0; k < power.size(); ++k) value[k] += c * power[k];
+        }
+        SorPiece piece{h0, p[i + 1].y, {}};
+        for (size_t k = 0; k < 4; ++k) piece.r2[k] = value[k];
+        pieces.push_back(piece);
+    }
+    return pieces;
+}
+
+bool sor_inside(const SorShape& sor, Vec3 q) {
+    const double rho2 = q.x * q.x + q.z * q.z;
+    for (const SorPiece& piece : sor_pieces(sor))
+        if (q.y >= piece.h0 && q.y <= piece.h1) return rho2 < cubic_at(piece.r2, q.y);
+    return false;
+}
+
+// x^2 + z^2 = r^2(y) along the line, piece by piece (a cubic in t), and the caps unless open.
+void sor_hits(const SorShape& sor, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    const std::vector<SorPiece> pieces = sor_pieces(sor);
+    if (pieces.empty()) return;
+    const std::vector<double> x{o.x, d.x}, y{o.y, d.y}, z{o.z, d.z};
+    std::vector<double> rho2 = times(x, x);
+    const std::vector<double> zz = times(z, z);
+    for (size_t k = 0; k < rho2.size(); ++k) rho2[k] += zz[k];
+    for (const SorPiece& piece : pieces) {
+        std::vector<double> f = rho2, power{1};
+        f.resize(4, 0.0);
+        for (int k = 0; k < 4; ++k) {
+            for (size_t m = 0; m < power.size(); ++m) f[m] -= piece.r2[k] * power[m];
+            power = times(power, y);
+        }
+        double lo = -1e300, hi = 1e300;
+        if (d.y != 0) {
+            lo = (piece.h0 - o.y) / d.y, hi = (piece.h1 - o.y) / d.y;
+            if (lo > hi) std::swap(lo, hi);
+        } else if (o.y < piece.h0 || o.y > piece.h1) {
+            continue;
+        } else {
+            // A level line: the quadratic's roots, within reach of any scene.
+            lo = -1e12, hi = 1e12;
+        }
+        for (double t : roots_between(f, lo, hi)) {
+            const Vec3 p = o + t * d;
+            const double dr2 = (3 * piece.r2[3] * p.y + 2 * piece.r2[2]) * p.y + piece.r2[1];
+            hits.push_back({t, {2 * p.x, -dr2, 2 * p.z}});
+        }
+    }
+    if (sor.open || d.y == 0) return;
+    for (const bool top : {false, true}) {
+        const SorPiece& piece = top ? pieces.back() : pieces.front();
+        const double h = top ? piece.h1 : piece.h0, t = (h - o.y) / d.y;
+        const Vec3 p = o + t * d;
+        if (p.x * p.x + p.z * p.z <= cubic_at(piece.r2, h))
+            hits.push_back({t, {0, top ? 1.0 : -1.0, 0}});
+    }
+}
+
+void sor_bounds(const SorShape& sor, Vec3& lower, Vec3& upper) {
+    double r2_max = 0;
+    const std::vector<SorPiece> pieces = sor_pieces(sor);
+    for (const SorPiece& piece : pieces) {
+        auto visit = [&](double h) { r2_max = std::max(r2_max, cubic_at(piece.r2, h)); };
+        visit(piece.h0), visit(piece.h1);
+        for (double h :
+             roots_between({piece.r2[1], 2 * piece.r2[2], 3 * piece.r2[3]}, piece.h0, piece.h1))
+            visit(h);
+    }
+    const double r = std::sqrt(r2_max);
+    lower = {-r, pieces.empty() ? 0 : pieces.front().h0, -r};
+    upper = {r, pieces.empty() ? 0 : pieces.back().h1, r};
+}
+
+// A polygon's plane (Newell's normal of its points) and the even-odd rule over the edges of
+// all its loops, each loop closed by repeating its first point.
+void polygon_hits(const PolygonShape& polygon, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    const std::vector<Vec3>& p = polygon.points;
+    Vec3 normal{};
+    for (size_t i = 0; i < p.size(); ++i) {
+        const Vec3 a = p[i], b = p[(i + 1) % p.size()];
+        normal = normal + Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+                               (a.x - b.x) * (a.y + b.y)};
+    }
+    const double along = dot(normal, d);
+    if (is_zero(normal) || along == 0) return;
+    const double t = dot(normal, p[0] - o) / along;
+    const Vec3 q = o + t * d;
+    // Project on the plane of the two axes the normal is least along.
+    const double n[3] = {std::abs(normal.x), std::abs(normal.y), std::abs(normal.z)};
+    const int drop = n[0] > n[1] ? (n[0] > n[2] ? 0 : 2) : (n[1] > n[2] ? 1 : 2);
+    auto uv = [drop](Vec3 v) {
+        return drop == 0 ? Vec2{v.y, v.z} : drop == 1 ? Vec2{v.z, v.x} : Vec2{v.x, v.y};
+    };
+    const Vec2 at = uv(q);
+    bool inside = false;
+    size_t loop_start = 0;
+    for (size_t i = 0; i + 1 < p.size(); ++i) {
+        if (i > loop_start && p[i].x == p[loop_start].x && p[i].y == p[loop_start].y &&
+            p[i].z == p[loop_start].z) {
+            loop_start = i + 1;  // the loop closed at i: the next starts after it
+            continue;
+        }
+        const Vec2 a = uv(p[i]), b = uv(p[i + 1]);
+        if ((a.y > at.y) != (b.y > at.y) && at.x < a.x + (at.y - a.y) * (b.x - a.x) / (b.y - a.y))
+            inside = !inside;
+    }
+    if (inside) hits.push_back({t, normal});
+}
+
 void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper) {
     double r_max = 0, y_min = 1e300, y_max = -1e300;
     for (const ProfilePiece& piece : lathe_profile(lathe)) {
@@ -738,6 +873,8 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
         inside = superellipsoid_value(*se, p) < 0;
     } else if (const auto* lathe = std::get_if<LatheShape>(&shape)) {
         inside = lathe_inside(lathe_profile(*lathe), std::hypot(p.x, p.z), p.y);
+    } else if (const auto* sor = std::get_if<SorShape>(&shape)) {
+        inside = sor_inside(*sor, p);
     } else if (const auto* blob = std::get_if<BlobShape>(&shape)) {
         std::vector<Matrix4> to_component;
         for (const BlobComponent& c : blob->components)
@@ -802,6 +939,10 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
         prism_hits(*prism, o, d, hits);
     } else if (const auto* lathe = std::get_if<LatheShape>(&shape)) {
         lathe_hits(*lathe, o, d, hits);
+    } else if (const auto* sor = std::get_if<SorShape>(&shape)) {
+        sor_hits(*sor, o, d, hits);
+    } else if (const auto* polygon = std::get_if<PolygonShape>(&shape)) {
+        polygon_hits(*polygon, o, d, hits);
     } else if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
         plane_hit(plane->normal, plane->distance, o, d, hits);
     } else if (const auto* disc = std::get_if<DiscShape>(&shape)) {

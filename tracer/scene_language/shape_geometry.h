@@ -7,8 +7,9 @@
 // inside_vector; hits of flat triangles), quadric, polynomial (poly, cubic, quartic: the
 // polynomial along the line, its real roots bisected within Cauchy's bound), superellipsoid,
 // isosurface and blob (the implicit function sampled in 256 steps across the box, container or
-// bounds, sign changes bisected; an isosurface capped by its container), linear prism and
-// lathe (its profile's pieces as POV-Ray draws them, each turned: a sextic along the line).
+// bounds, sign changes bisected; an isosurface capped by its container), linear prism, lathe
+// (its profile's pieces as POV-Ray draws them, each turned: a sextic along the line), sor (r^2 a
+// cubic in the height: a cubic along the line) and polygon (even-odd over its loops).
 #pragma once
 
 #include <vector>
@@ -30,6 +31,8 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
 bool blob_bounds(const BlobShape& blob, Vec3& lower, Vec3& upper);
 // The box around a lathe: its profile's reach and heights.
 void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper);
+// The box around a surface of revolution.
+void sor_bounds(const SorShape& sor, Vec3& lower, Vec3& upper);
 // Whether `p` is inside the shape (POV-Ray's inside: a plane's or disc's side against their
 // normal, a mesh by the parity of crossings along its inside_vector); false when not covered.
 bool shape_inside(const Shape& shape, Vec3 p, bool& inside);
