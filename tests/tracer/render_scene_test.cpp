@@ -259,6 +259,22 @@ TEST(RenderScene, SorsAndPolygonsHitWhereTheClosedFormsSay) {
     EXPECT_EQ(frame.hit({2.5, 0, 0}, {0, 0, 1}).object, -1);    // beside it
 }
 
+// Julia fractals of c = 0: under z -> z^2 a point stays within radius 2 for the 7 steps of
+// max_iteration 8 where |z|^128 <= 2: a ball of radius 2^(1/128), in every direction for the
+// quaternions; along x (both complex planes alike) for the hypercomplex numbers.
+TEST(RenderScene, JuliaFractalsOfZeroAreBalls) {
+    const double radius = std::pow(2.0, 1.0 / 128);
+    const Scene quaternion("julia_fractal { <0, 0, 0, 0> quaternion sqr max_iteration 8 }");
+    for (const Vec3 direction : {Vec3{1, 0, 0}, normalized({1, 2, -2})}) {
+        const SurfaceHit h = quaternion.hit(-5 * direction, direction);
+        ASSERT_EQ(h.object, 0);
+        EXPECT_NEAR(h.t, 5 - radius, 1e-5);  // Embree keeps distances in single precision
+        expect_vec(h.normal, -1 * direction, 1e-4);
+    }
+    const Scene hypercomplex("julia_fractal { <0, 0, 0, 0> hypercomplex sqr max_iteration 8 }");
+    EXPECT_NEAR(hypercomplex.hit({-5, 0, 0}, {1, 0, 0}).t, 5 - radius, 1e-5);
+}
+
 // Text: the glyph outline extruded along z from 0 to the thickness, its first glyph's left edge
 // at x = 0. Times Roman's "I" is a stem with serifs: its caps face -z and +z, its stem's walls
 // +-x; "O" has a hole where a ray along z passes through.

@@ -60,8 +60,12 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<QuadricShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
         std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s) ||
         std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s) ||
-        std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s);
+        std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s) ||
+        std::holds_alternative<JuliaFractalShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
+    if (const auto* julia = std::get_if<JuliaFractalShape>(&s);
+        julia && !julia_default_slice(*julia))
+        refuse("julia_fractal sliced other than by w = distance (slice <0, 0, 0, 1>)");
     if (const auto* prism = std::get_if<PrismShape>(&s);
         prism && prism->spline != SplineKind::linear)
         refuse("prism of a quadratic, cubic or bezier spline (only linear_spline)");
@@ -118,7 +122,8 @@ bool analytic(const Shape& s) {
            std::holds_alternative<TextShape>(s) || std::holds_alternative<SuperellipsoidShape>(s) ||
            std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s) ||
            std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s) ||
-           std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s);
+           std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s) ||
+           std::holds_alternative<JuliaFractalShape>(s);
 }
 
 struct Box3 {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 
 #include "tracer/scene_language/functions.h"
 #include "tracer/scene_language/quadratic.h"
@@ -671,7 +672,91 @@ void text_hits(const TextShape& text, Vec3 o, Vec3 d, std::vector<ShapeHit>& hit
     }
 }
 
+// A Julia set of 4-D numbers cut by the hyperplane w = slice distance (the default slice):
+// the points whose orbit z -> f(z) + c stays within radius 2 for max_iteration steps. In the
+// quaternion algebra f is the square or cube; the hypercomplex algebra is two complex planes
+// (x - w + i(y + z), x + w + i(y - z)), f applied in each.
+using Quad = std::array<double, 4>;
+
+std::complex<double> complex_function(const JuliaFractalShape& j, std::complex<double> z) {
+    const std::string& f = j.function;
+    if (f == "sqr") return z * z;
+    if (f == "cube") return z * z * z;
+    if (f == "reciprocal") return 1.0 / z;
+    if (f == "exp") return std::exp(z);
+    if (f == "ln") return std::log(z);
+    if (f == "pwr") return std::pow(z, std::complex<double>{j.power.x, j.power.y});
+    if (f == "sin") return std::sin(z);
+    if (f == "asin") return std::asin(z);
+    if (f == "sinh") return std::sinh(z);
+    if (f == "asinh") return std::asinh(z);
+    if (f == "cos") return std::cos(z);
+    if (f == "acos") return std::acos(z);
+    if (f == "cosh") return std::cosh(z);
+    if (f == "acosh") return std::acosh(z);
+    if (f == "tan") return std::tan(z);
+    if (f == "atan") return std::atan(z);
+    if (f == "tanh") return std::tanh(z);
+    return std::atanh(z);
+}
+
+Quad julia_function(const JuliaFractalShape& j, const Quad& q) {
+    if (j.algebra == JuliaFractalShape::Algebra::quaternion) {
+        const double a = q[0], v2 = q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+        // (a + v)^2 = a^2 - |v|^2 + 2 a v; (a + v)^3 = a^3 - 3 a |v|^2 + (3 a^2 - |v|^2) v.
+        if (j.function == "cube") {
+            const double s = 3 * a * a - v2;
+            return {a * a * a - 3 * a * v2, s * q[1], s * q[2], s * q[3]};
+        }
+        return {a * a - v2, 2 * a * q[1], 2 * a * q[2], 2 * a * q[3]};
+    }
+    const std::complex<double> u{q[0] - q[3], q[1] + q[2]}, v{q[0] + q[3], q[1] - q[2]};
+    const std::complex<double> fu = complex_function(j, u), fv = complex_function(j, v);
+    return {0.5 * (fu.real() + fv.real()), 0.5 * (fu.imag() + fv.imag()),
+            0.5 * (fu.imag() - fv.imag()), 0.5 * (fv.real() - fu.real())};
+}
+
+// Negative inside: log(|z_m|^2 / 4) / 2^m at the first m whose |z_m| exceeds 2, else at
+// max_iteration - 1 (continuous where the orbit leaves at the last step: the set's surface).
+// POV-Ray's renders agree best with max_iteration - 1 steps (97% of the pixels of a test scene
+// against 95% with max_iteration, 94% with one more) and the bailout radius 2.
+double julia_value(const JuliaFractalShape& j, Vec3 p) {
+    Quad z{p.x, p.y, p.z, j.slice_distance};
+    double scale = 1;
+    for (int m = 0;; ++m) {
+        const double r2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2] + z[3] * z[3];
+        if (r2 > 4 || m == j.max_iteration - 1) return std::log(std::max(r2, 1e-300) / 4) * scale;
+        z = julia_function(j, z);
+        for (int k = 0; k < 4; ++k) z[k] += j.parameter[k];
+        scale *= 0.5;
+    }
+}
+
+constexpr int kJuliaSteps = 256;
+
 }  // namespace
+
+bool julia_default_slice(const JuliaFractalShape& j) {
+    return j.slice_normal[0] == 0 && j.slice_normal[1] == 0 && j.slice_normal[2] == 0;
+}
+
+namespace {
+
+void julia_hits(const JuliaFractalShape& j, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    ContainedBy ball;
+    ball.kind = ContainedBy::Kind::sphere;
+    ball.radius = 2;
+    double near = 0, far = 0;
+    if (!container_span(ball, o, d, near, far)) return;
+    const double h = 1e-6;
+    auto value = [&](Vec3 p) { return julia_value(j, p); };
+    auto gradient = [&](Vec3 p) {
+        return Vec3{value(p + Vec3{h, 0, 0}) - value(p - Vec3{h, 0, 0}),
+                    value(p + Vec3{0, h, 0}) - value(p - Vec3{0, h, 0}),
+                    value(p + Vec3{0, 0, h}) - value(p - Vec3{0, 0, h})};
+    };
+    implicit_hits(value, gradient, o, d, near, far, kJuliaSteps, hits);
+}
 
 // A surface of revolution as POV-Ray draws it (read back from POV-Ray with trace, to 1e-10):
 // between points i and i + 1 (i from the second point to the third-last), r^2 is the cubic in
@@ -757,6 +842,8 @@ void sor_hits(const SorShape& sor, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) 
     }
 }
 
+}  // namespace
+
 void sor_bounds(const SorShape& sor, Vec3& lower, Vec3& upper) {
     double r2_max = 0;
     const std::vector<SorPiece> pieces = sor_pieces(sor);
@@ -771,6 +858,8 @@ void sor_bounds(const SorShape& sor, Vec3& lower, Vec3& upper) {
     lower = {-r, pieces.empty() ? 0 : pieces.front().h0, -r};
     upper = {r, pieces.empty() ? 0 : pieces.back().h1, r};
 }
+
+namespace {
 
 // A polygon's plane (Newell's normal of its points) and the even-odd rule over the edges of
 // all its loops, each loop closed by repeating its first point.
@@ -807,6 +896,8 @@ void polygon_hits(const PolygonShape& polygon, Vec3 o, Vec3 d, std::vector<Shape
     }
     if (inside) hits.push_back({t, normal});
 }
+
+}  // namespace
 
 void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper) {
     double r_max = 0, y_min = 1e300, y_max = -1e300;
@@ -875,6 +966,9 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
         inside = lathe_inside(lathe_profile(*lathe), std::hypot(p.x, p.z), p.y);
     } else if (const auto* sor = std::get_if<SorShape>(&shape)) {
         inside = sor_inside(*sor, p);
+    } else if (const auto* julia = std::get_if<JuliaFractalShape>(&shape)) {
+        if (!julia_default_slice(*julia)) return false;
+        inside = julia_value(*julia, p) < 0;
     } else if (const auto* blob = std::get_if<BlobShape>(&shape)) {
         std::vector<Matrix4> to_component;
         for (const BlobComponent& c : blob->components)
@@ -941,6 +1035,9 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
         lathe_hits(*lathe, o, d, hits);
     } else if (const auto* sor = std::get_if<SorShape>(&shape)) {
         sor_hits(*sor, o, d, hits);
+    } else if (const auto* julia = std::get_if<JuliaFractalShape>(&shape)) {
+        if (!julia_default_slice(*julia)) return false;
+        julia_hits(*julia, o, d, hits);
     } else if (const auto* polygon = std::get_if<PolygonShape>(&shape)) {
         polygon_hits(*polygon, o, d, hits);
     } else if (const auto* plane = std::get_if<PlaneShape>(&shape)) {

@@ -9,7 +9,9 @@
 // isosurface and blob (the implicit function sampled in 256 steps across the box, container or
 // bounds, sign changes bisected; an isosurface capped by its container), linear prism, lathe
 // (its profile's pieces as POV-Ray draws them, each turned: a sextic along the line), sor (r^2 a
-// cubic in the height: a cubic along the line) and polygon (even-odd over its loops).
+// cubic in the height: a cubic along the line), polygon (even-odd over its loops) and
+// julia_fractal (the set as its orbits' escape within max_iteration steps says, sampled in 256
+// steps across its ball of radius 2 and bisected; slices w = const only).
 #pragma once
 
 #include <vector>
@@ -31,6 +33,8 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
 bool blob_bounds(const BlobShape& blob, Vec3& lower, Vec3& upper);
 // The box around a lathe: its profile's reach and heights.
 void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper);
+// Whether a julia_fractal is cut by a hyperplane w = const (the one slice covered here).
+bool julia_default_slice(const JuliaFractalShape& julia);
 // The box around a surface of revolution.
 void sor_bounds(const SorShape& sor, Vec3& lower, Vec3& upper);
 // Whether `p` is inside the shape (POV-Ray's inside: a plane's or disc's side against their
