@@ -196,6 +196,11 @@ TEST(RenderShapes, JuliaFractalsAgreeWithPovRayWithinOnePixel) {
     expect_flat_colours_agree("julias.pov", 1.0, "", "", 1);
 }
 
+// Bicubic patches of several subdivisions, type 0 and 1, turned and scaled unevenly.
+TEST(RenderShapes, BicubicPatchesAgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("patches.pov", 1.0);
+}
+
 // Text in three of POV-Ray's fonts (curves, holes, an offset, turned, thick) and cut from a box.
 TEST(RenderShapes, TextAgreesWithPovRayPixelForPixel) {
     expect_flat_colours_agree("text.pov", 1.0);
