@@ -1224,7 +1224,7 @@ TEST(ObjectsGeometry, TraceAsPovRayAnswers) {
                  {0, 0, -1});
     expect_trace("sphere { 0, 1 scale <1,2,1> translate x }", "<1,-5,0>", "y", {1, -2, 0},
                  {0, -1, 0});
-    EXPECT_EQ(error_of("#declare O = sor { 4, <0, 0>, <1, 0.3>, <1, 0.7>, <0, 1> }\n"
+    EXPECT_EQ(error_of("#declare O = sphere_sweep { linear_spline 2, 0, 1, x, 1 }\n"
                        "#declare H = trace(O, 0, x);"),
               "not supported: 'trace' of this kind of object at test.pov:2:14");
 }

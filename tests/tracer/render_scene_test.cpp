@@ -454,8 +454,8 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
     auto refused = [](const std::string& feature, const std::string& at) {
         return "not supported: " + feature + " at test.pov:" + at;
     };
-    EXPECT_EQ(render_error("sphere { 0, 1 }\n  sor { 4, <0, 0>, <1, 0.3>, <1, 0.7>, <0, 1> }"),
-              refused("sor", "2:3"));
+    EXPECT_EQ(render_error("sphere { 0, 1 }\n  sphere_sweep { linear_spline 2, 0, 1, x, 1 }"),
+              refused("sphere_sweep", "2:3"));
     EXPECT_EQ(render_error("blob { sphere { 0, 1, 1 }\n sphere { x, 1, 1 pigment { rgb 1 } } }"),
               refused("blob components with textures of their own (at test.pov:2:2)", "1:1"));
     // CSG, clipped_by and inverse render (RenderShapes); parts the solid cannot take do not.
@@ -463,9 +463,8 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
               refused("cutaway_textures", "1:1"));
     EXPECT_EQ(render_error("intersection { box { -1, 1 }\n triangle { 0, x, y } }"),
               refused("triangle in CSG, clipped_by or inverse", "2:2"));
-    EXPECT_EQ(render_error(
-                  "sphere { 0, 1 clipped_by {\n sor { 4, <0, 0>, <1, 0.3>, <1, 0.7>, <0, 1> } } }"),
-              refused("sor in CSG, clipped_by or inverse", "2:2"));
+    EXPECT_EQ(render_error("sphere { 0, 1 clipped_by {\n polygon { 4, 0, x, y, 0 } } }"),
+              refused("polygon in CSG, clipped_by or inverse", "2:2"));
     EXPECT_EQ(render_error("sphere { 0, 1 double_illuminate }"),
               refused("double_illuminate", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 no_radiosity }"), refused("no_radiosity", "1:1"));

@@ -435,6 +435,14 @@ Vec3 container_normal(const ContainedBy& c, Vec3 p) {
 // Crossings of the line with an implicit surface value(p) = 0 (negative inside) between t0
 // and t1: the value sampled at `steps` even steps and each change of sign bisected to the last
 // bit; `gradient` gives the outward normal there.
+// The gradient of `value` at p (up to the factor 1 / (2 h)) by central differences over h.
+template <class Value>
+Vec3 central_differences(const Value& value, Vec3 p, double h) {
+    return {value(p + Vec3{h, 0, 0}) - value(p - Vec3{h, 0, 0}),
+            value(p + Vec3{0, h, 0}) - value(p - Vec3{0, h, 0}),
+            value(p + Vec3{0, 0, h}) - value(p - Vec3{0, 0, h})};
+}
+
 template <class Value, class Gradient>
 void implicit_hits(Value&& value, Gradient&& gradient, Vec3 o, Vec3 d, double t0, double t1,
                    int steps, std::vector<ShapeHit>& hits) {
@@ -523,11 +531,7 @@ void blob_hits(const BlobShape& blob, Vec3 o, Vec3 d, std::vector<ShapeHit>& hit
     for (const BlobComponent& c : blob.components) to_component.push_back(c.transform.inverse());
     auto value = [&](Vec3 p) { return blob.threshold - blob_field(blob, to_component, p); };
     const double h = 1e-6 * length(box.maximum - box.minimum);
-    auto gradient = [&](Vec3 p) {
-        return Vec3{value(p + Vec3{h, 0, 0}) - value(p - Vec3{h, 0, 0}),
-                    value(p + Vec3{0, h, 0}) - value(p - Vec3{0, h, 0}),
-                    value(p + Vec3{0, 0, h}) - value(p - Vec3{0, 0, h})};
-    };
+    auto gradient = [&](Vec3 p) { return central_differences(value, p, h); };
     implicit_hits(value, gradient, o, d, near, far, kBlobSteps, hits);
 }
 
@@ -549,11 +553,7 @@ void isosurface_hits(const IsosurfaceShape& s, Vec3 o, Vec3 d, std::vector<Shape
         c.kind == ContainedBy::Kind::sphere ? 2 * c.radius : length(c.maximum - c.minimum);
     const double h = 1e-5 * size;
     auto value = [&](Vec3 p) { return isosurface_value(s, p); };
-    auto gradient = [&](Vec3 p) {
-        return Vec3{value(p + Vec3{h, 0, 0}) - value(p - Vec3{h, 0, 0}),
-                    value(p + Vec3{0, h, 0}) - value(p - Vec3{0, h, 0}),
-                    value(p + Vec3{0, 0, h}) - value(p - Vec3{0, 0, h})};
-    };
+    auto gradient = [&](Vec3 p) { return central_differences(value, p, h); };
     implicit_hits(value, gradient, o, d, near, far, kIsosurfaceSteps, hits);
     if (s.open) return;
     for (const double t : {near, far}) {
@@ -750,11 +750,7 @@ void julia_hits(const JuliaFractalShape& j, Vec3 o, Vec3 d, std::vector<ShapeHit
     if (!container_span(ball, o, d, near, far)) return;
     const double h = 1e-6;
     auto value = [&](Vec3 p) { return julia_value(j, p); };
-    auto gradient = [&](Vec3 p) {
-        return Vec3{value(p + Vec3{h, 0, 0}) - value(p - Vec3{h, 0, 0}),
-                    value(p + Vec3{0, h, 0}) - value(p - Vec3{0, h, 0}),
-                    value(p + Vec3{0, 0, h}) - value(p - Vec3{0, 0, h})};
-    };
+    auto gradient = [&](Vec3 p) { return central_differences(value, p, h); };
     implicit_hits(value, gradient, o, d, near, far, kJuliaSteps, hits);
 }
 
