@@ -70,6 +70,18 @@ Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, doub
 }
 
 template <class Q>
+int BidirectionalIntegratorOf<Q>::attenuate_inside(Q& beta, int start, Vec3 direction, bool found,
+                                                   const SurfaceHit& hit) const {
+    const Interiors& interiors = scene_.interiors();
+    if (!interiors.any()) return -1;
+    const int medium = interiors.segment_medium(start, direction, found, hit);
+    if constexpr (std::is_same_v<Q, Rgb>)  // spectral transport refuses fade
+        if (medium >= 0)
+            beta *= interiors.medium(medium).transmittance(found ? hit.t : kInfinity);
+    return medium;
+}
+
+template <class Q>
 CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 direction, uint32_t pixel,
                                                        Pcg32& rng, uint64_t& rays,
                                                        std::vector<Point>& visible) const {
@@ -77,6 +89,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
     Q direct_visibility{}, primary{};
     Q beta = constant_value<Q>(1);
     RayKind kind = RayKind::camera;
+    int medium = -1;  // the object whose interior the path is in, if known (interior_media.h)
     for (int depth = 0; depth < kMaxDepth; ++depth) {
         SurfaceHit hit;
         ++rays;
@@ -87,6 +100,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
                            origin, direction,
                            scene_.light_horizon(origin, direction, found, hit, rays), -1,
                            wavelengths);
+        medium = attenuate_inside(beta, medium, direction, found, hit);
         if (!found) break;
         Material scratch;
         const Material& material = scene_.material(hit, scratch);
@@ -106,6 +120,8 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
         const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
                      u2 = rng.uniform_float();
         if (!bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight)) break;
+        if (scene_.interiors().any())
+            medium = scene_.interiors().medium_after(medium, direction, hit, s.wi);
         const Vec3 next_origin = scene_.offset(hit.point, hit.normal, s.wi);
         if (!s.delta) {
             // The smooth lobe ends the camera path: what lies beyond is the photons' part.
@@ -159,10 +175,14 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
         Q power = emission.flux;
         Vec3 origin = emission.origin, direction = emission.direction;
         bool scattered = false;
+        int medium = -1;
         for (int depth = 0; depth < kMaxDepth; ++depth) {
             SurfaceHit hit;
             ++rays;
-            if (!scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit)) break;
+            const bool found =
+                scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit);
+            medium = attenuate_inside(power, medium, direction, found, hit);
+            if (!found) break;
             Material scratch;
             const BsdfOf<Q> bsdf(scene_.material(hit, scratch), hit.normal, hit.shading_normal,
                                  -direction, wavelengths);
@@ -176,6 +196,8 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
             const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
                          u2 = rng.uniform_float();
             if (!bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight)) break;
+            if (scene_.interiors().any())
+                medium = scene_.interiors().medium_after(medium, direction, hit, s.wi);
             const Q next = power * s.weight;
             // Roulette keeps the surviving photons' power near the emitted one.
             const double survive = std::min(1.0, max_component(next) / max_component(power));

@@ -113,7 +113,8 @@ RenderScene::RenderScene(const SceneDescription& scene)
     : description_(scene),
       units_(units_of(scene)),
       sky_(scene, 1 / units_.per_square_metre()),
-      fog_(scene, 1 / units_.per_square_metre()) {
+      fog_(scene, 1 / units_.per_square_metre()),
+      interiors_(scene, 1 / units_.per_square_metre()) {
     refuse_what_is_not_rendered(scene);
     const double to_internal = 1 / units_.per_square_metre();
     // Refuses, at load, what has no physical reading.
