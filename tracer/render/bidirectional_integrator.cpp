@@ -70,14 +70,16 @@ Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, doub
 }
 
 template <class Q>
-int BidirectionalIntegratorOf<Q>::attenuate_inside(Q& beta, int start, Vec3 direction, bool found,
-                                                   const SurfaceHit& hit) const {
+int BidirectionalIntegratorOf<Q>::attenuate_inside(Q& beta, int start, Vec3 origin,
+                                                   Vec3 direction, bool found,
+                                                   const SurfaceHit& hit, Pcg32& rng) const {
     const Interiors& interiors = scene_.interiors();
     if (!interiors.any()) return -1;
     const int medium = interiors.segment_medium(start, direction, found, hit);
     if constexpr (std::is_same_v<Q, Rgb>)  // spectral transport refuses fade
         if (medium >= 0)
-            beta *= interiors.medium(medium).transmittance(found ? hit.t : kInfinity);
+            beta *= interiors.medium(medium).transmittance(origin, direction,
+                                                           found ? hit.t : kInfinity, rng);
     return medium;
 }
 
@@ -100,7 +102,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
                            origin, direction,
                            scene_.light_horizon(origin, direction, found, hit, rays), -1,
                            wavelengths);
-        medium = attenuate_inside(beta, medium, direction, found, hit);
+        medium = attenuate_inside(beta, medium, origin, direction, found, hit, rng);
         if (!found) break;
         Material scratch;
         const Material& material = scene_.material(hit, scratch);
@@ -181,7 +183,7 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
             ++rays;
             const bool found =
                 scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit);
-            medium = attenuate_inside(power, medium, direction, found, hit);
+            medium = attenuate_inside(power, medium, origin, direction, found, hit, rng);
             if (!found) break;
             Material scratch;
             const BsdfOf<Q> bsdf(scene_.material(hit, scratch), hit.normal, hit.shading_normal,

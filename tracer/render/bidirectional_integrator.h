@@ -91,11 +91,11 @@ private:
     // against light sampling of its light.
     Q bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, const Wavelengths& wavelengths,
                      uint64_t& rays) const;
-    // Scales `beta` by the transmittance of the interior (fade, interior_media.h) a segment
-    // along `direction` that started in medium `start` and ended at `hit` (if `found`) lay in;
-    // returns that medium.
-    int attenuate_inside(Q& beta, int start, Vec3 direction, bool found,
-                         const SurfaceHit& hit) const;
+    // Scales `beta` by the transmittance of the interior (fade, absorbing media;
+    // interior_media.h) a segment from `origin` along `direction` that started in medium
+    // `start` and ended at `hit` (if `found`) lay in; returns that medium.
+    int attenuate_inside(Q& beta, int start, Vec3 origin, Vec3 direction, bool found,
+                         const SurfaceHit& hit, Pcg32& rng) const;
 
     const RenderScene& scene_;
     const LightSet& lights_;

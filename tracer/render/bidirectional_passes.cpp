@@ -291,7 +291,7 @@ std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& sce
             "path integrator renders them)");
     if (spectral_transport(scene, settings)) {
         if (scene.interiors().any())
-            throw Error("not supported: interior fade under spectral transport");
+            throw Error("not supported: interior fade or media under spectral transport");
         return std::make_unique<BidirectionalPasses<SampledSpectrum>>(scene, settings, start);
     }
     return std::make_unique<BidirectionalPasses<Rgb>>(scene, settings, start);

@@ -13,14 +13,22 @@
 // -ln((1 + fade_color) / 2) / fade_distance. Shorter paths transmit a little more than POV-Ray
 // shows, longer ones less, down to black instead of fade_color.
 //
+// Density. `density { }` scales a medium's absorption, emission and scattering by its colour
+// (channel by channel) at each point, several densities multiplying, as POV-Ray's patterns give
+// it (evaluate_pigment of the scene language). Such media are sampled by delta tracking under a
+// majorant, the product of the densities' largest map entries times the extinction: exact
+// (unbiased) whatever the pattern, as the colour map bounds its values.
+//
 // Which medium a path segment lies in: the object it entered at its start, else the object
 // whose surface it leaves at its end (its outward normal along the ray). That is exact for
 // closed objects, one inside another included; a segment that leaves an inner object and meets
 // a third one before the outer one's surface is taken to be in no medium.
 #pragma once
 
+#include <memory>
 #include <vector>
 
+#include "core/random.h"
 #include "tracer/render/colour_decoding.h"
 #include "tracer/render/phase_function.h"
 #include "tracer/render/rgb.h"
@@ -31,51 +39,73 @@ namespace rayset::tracer {
 
 struct SurfaceHit;
 
-// Where a free-flight sample ends along a segment and the factor on the path's throughput.
+// Where a free flight ends along a segment, what it brings, and the factor on the path's
+// throughput.
 struct FreeFlight {
     bool scattered = false;  // true: at distance t, where the medium scatters the path
     double t = 0;
-    Rgb weight;  // T(t) / pdf(t) if scattered (the scattering itself is the phase sample's);
-                 // else T(length) / P(no scattering before length)
+    // If scattered, the factor up to the scattering (the scattering itself is the phase
+    // sample's, scattered()); else the factor on what lies beyond the segment.
+    Rgb weight;
+    Rgb emitted;  // the medium's emission seen on the way, per unit throughput at the start
 };
 
 class InteriorMedium {
 public:
     InteriorMedium() = default;
     // The interior's fade and media; refuses (Error, "not supported: ...") what is not
-    // rendered: media with density, fade colours above 1. `to_internal` converts POV-Ray's
-    // emission (W/(m^2 sr) per scene unit of path) to the renderer's radiance unit (units.h).
-    InteriorMedium(const Interior& interior, double to_internal, const ColourDecoding& decoding);
+    // rendered: densities the scene language cannot evaluate (density_file, ...), fade colours
+    // outside 0..1, negative coefficients. `to_internal` converts POV-Ray's emission
+    // (W/(m^2 sr) per scene unit of path) to the renderer's radiance unit (units.h).
+    InteriorMedium(const InteriorRef& interior, double to_internal,
+                   const ColourDecoding& decoding);
 
-    bool present() const { return present_; }
+    bool present() const { return !parts_.empty(); }
     // Whether it scatters or emits: more than an attenuation of what passes.
-    bool participates() const { return scatters() || !is_black(emission_); }
-    bool scatters() const { return !components_.empty(); }
-    Rgb extinction() const { return extinction_; }
-    Rgb transmittance(double length) const;
-    // The radiance its emission adds to a ray along `length` (infinite: the whole way), seen
-    // through the medium itself: the integral of T(s) emission over [0, length].
-    Rgb emitted(double length) const;
-    // A distance drawn from exp(-sigma_t t) of a channel chosen by `u_channel` (the pdf the
-    // mixture over the three channels), within `length`.
-    FreeFlight sample_free_flight(double length, double u_channel, double u) const;
+    bool participates() const { return scatters_ || emits_; }
 
-    // sigma_s p(cos_theta) summed over the media: the fraction scattered per unit length into
-    // a unit solid angle at that angle from the direction of travel.
-    Rgb scattered(double cos_theta) const;
-    // The pdf of sample_phase's directions (the phase functions mixed by their mean scattering).
+    // The transmittance along a segment (origin, unit direction, length; infinite: the whole
+    // way): exact where the medium is uniform, else ratio tracking under the majorant (an
+    // unbiased estimate; draws from `rng`).
+    Rgb transmittance(Vec3 origin, Vec3 direction, double length, Pcg32& rng) const;
+    // A free flight along that segment: the exponential of a channel's extinction chosen at
+    // random (the pdf the three channels' mixture) where the medium is uniform, its emission in
+    // closed form; else delta tracking under the majorant with null collisions (weighted),
+    // emission collected at each tentative collision.
+    FreeFlight fly(Vec3 origin, Vec3 direction, double length, Pcg32& rng) const;
+
+    // sigma_s p(cos_theta) at `point` summed over the media: the fraction scattered per unit
+    // length into a unit solid angle at that angle from the direction of travel.
+    Rgb scattered(Vec3 point, double cos_theta) const;
+    // The pdf of sample_phase's directions (the phase functions mixed by their mean scattering
+    // without density).
     double phase_pdf(double cos_theta) const;
     Vec3 sample_phase(Vec3 forward, double u_choice, double u1, double u2) const;
 
 private:
-    struct Component {
-        Rgb scattering;
+    // One media { } (or the fade): its coefficients where its densities are 1.
+    struct Part {
+        Rgb extinction, scattering, emission;
         PhaseFunction phase;
-        double share = 0;  // of the phase sampling
+        double phase_share = 0;
+        std::vector<const Pigment*> densities;  // multiplied; none: 1 everywhere
+        Rgb density_bound{1, 1, 1};             // the densities' product never exceeds it
+        Rgb density(Vec3 point) const;
     };
-    bool present_ = false;
-    Rgb extinction_, emission_;
-    std::vector<Component> components_;
+    struct Local {
+        Rgb extinction, scattering, emission;
+    };
+    static Part part_of(const Media& media, double to_internal, const ColourDecoding& decoding);
+    Local at(Vec3 point) const;
+    FreeFlight fly_uniform(double length, Pcg32& rng) const;
+    Rgb uniform_transmittance(double length) const;
+    Rgb uniform_emitted(double length) const;
+
+    InteriorRef keep_;  // what the densities point into
+    std::vector<Part> parts_;
+    bool uniform_ = true, scatters_ = false, emits_ = false;
+    Rgb extinction_, emission_;  // summed, where uniform
+    double majorant_ = 0;        // of the extinction, every channel, where not uniform
 };
 
 // The media of the scene's objects, by object index, and the rule of which one a segment

@@ -23,7 +23,7 @@ namespace rayset::tracer {
 // The fraction of light from `t_far` along (origin, unit direction) that reaches `origin`,
 // which lies in `medium` (an object index, -1: none known); `rays` counts the rays cast.
 inline Rgb shadow_transmittance(const RenderScene& scene, Vec3 origin, Vec3 direction,
-                                double t_far, int medium, uint64_t& rays) {
+                                double t_far, int medium, Pcg32& rng, uint64_t& rays) {
     constexpr int kMaxCrossings = 64;
     const Interiors& interiors = scene.interiors();
     Rgb through{1, 1, 1};
@@ -33,7 +33,9 @@ inline Rgb shadow_transmittance(const RenderScene& scene, Vec3 origin, Vec3 dire
         ++rays;
         const bool found = scene.intersect(origin, direction, 0, t_far, RayKind::shadow, hit);
         const int m = interiors.segment_medium(medium, direction, found, hit);
-        if (m >= 0) through *= interiors.medium(m).transmittance(found ? hit.t : t_far);
+        if (m >= 0)
+            through *= interiors.medium(m).transmittance(origin, direction,
+                                                         found ? hit.t : t_far, rng);
         if (!found) return through;
         const Material& material = scene.material(hit, scratch);
         if (material.ior != 1) return {};
@@ -50,11 +52,11 @@ inline Rgb shadow_transmittance(const RenderScene& scene, Vec3 origin, Vec3 dire
 // A surface's light sample (direct_light.h) seen through the media on its way; the shadow ray
 // starts in `medium`.
 inline Rgb through_media(const RenderScene& scene, const ShadowRayOf<Rgb>& shadow, int medium,
-                         uint64_t& rays) {
+                         Pcg32& rng, uint64_t& rays) {
     if (!shadow.cast) return {};
     if (shadow.shadowless) return shadow.contribution;
-    return shadow.contribution *
-           shadow_transmittance(scene, shadow.origin, shadow.direction, shadow.t_far, medium, rays);
+    return shadow.contribution * shadow_transmittance(scene, shadow.origin, shadow.direction,
+                                                      shadow.t_far, medium, rng, rays);
 }
 
 // Light scattered toward -`direction` at `point`, inside the medium of object `medium`, from
@@ -65,12 +67,12 @@ inline Rgb medium_direct_light(const RenderScene& scene, const LightSet& lights,
     if (lights.empty()) return {};
     const auto light = lights.sample_Li<Rgb>(point, lights.draw(rng), {});
     if (!light || !(light->pdf > 0)) return {};
-    const Rgb f = scene.interiors().medium(medium).scattered(dot(light->wi, direction));
+    const Rgb f = scene.interiors().medium(medium).scattered(point, dot(light->wi, direction));
     if (is_black(f) || is_black(light->Li)) return {};
     const Rgb contribution = (1 / light->pdf) * (f * light->Li);
     if (light->shadowless) return contribution;
     return contribution *
-           shadow_transmittance(scene, point, light->wi, light->distance, medium, rays);
+           shadow_transmittance(scene, point, light->wi, light->distance, medium, rng, rays);
 }
 
 }  // namespace rayset::tracer

@@ -138,7 +138,7 @@ template <class Q>
                 if (interiors.participating()) {
                     const int shadow_medium =
                         interiors.medium_after(medium, s.direction, hit, shadow.direction);
-                    sum += s.beta * through_media(scene_, shadow, shadow_medium, rays);
+                    sum += s.beta * through_media(scene_, shadow, shadow_medium, rng, rays);
                 } else {
                     sum += s.beta * unless_occluded(scene_, shadow, rays);
                 }
@@ -172,9 +172,8 @@ bool PathIntegratorOf<Q>::cross_medium(PathState& s, int medium, double length, 
                                        uint64_t& rays, Rgb& sum) const {
     if constexpr (std::is_same_v<Q, Rgb>) {
         const InteriorMedium& m = scene_.interiors().medium(medium);
-        sum += s.beta * m.emitted(length);
-        const double u_channel = rng.uniform_float(), u = rng.uniform_float();
-        const FreeFlight flight = m.sample_free_flight(length, u_channel, u);
+        const FreeFlight flight = m.fly(s.origin, s.direction, length, rng);
+        sum += s.beta * flight.emitted;
         s.beta *= flight.weight;
         if (!flight.scattered) return false;
         const Vec3 point = s.origin + flight.t * s.direction;
@@ -184,7 +183,7 @@ bool PathIntegratorOf<Q>::cross_medium(PathState& s, int medium, double length, 
         const Vec3 wi = m.sample_phase(s.direction, u_choice, u1, u2);
         const double cos_theta = dot(wi, s.direction);
         const double pdf = m.phase_pdf(cos_theta);
-        s.beta *= (pdf > 0 ? 1 / pdf : 0) * m.scattered(cos_theta);
+        s.beta *= (pdf > 0 ? 1 / pdf : 0) * m.scattered(point, cos_theta);
         s.origin = point;
         s.direction = wi;
         s.bsdf_pdf = pdf;
