@@ -157,6 +157,41 @@ TEST(RenderInteriorFade, BidirectionalPhotonsFade) {
     }
 }
 
+// A white diffuse wall (a box's face at z = 10) lit by a point light of 1 W/sr at (0, 0, 8),
+// both inside a clear box of absorption 0.1 (z from 0 to 20), seen through it: the wall's
+// radiance I cos / (pi r^2) dimmed by exp(-0.1 r) on the light's way and exp(-1) on the
+// camera's. Light the wall reflects leaves through the clear box. Averaged over a 64 x 64 grid
+// of each image; pixel jitter alone is random: 0.1%.
+void expect_lit_inside_absorbing_box(const std::string& integrator) {
+    RenderSettings settings;
+    settings.width = 16, settings.height = 16, settings.passes = 4, settings.seed = 4;
+    settings.photons_per_pass = 10000;
+    const RenderResult r = render_text(
+        "global_settings { length_unit \"m\" integrator \"" + integrator + "\" }\n"
+        "camera { orthographic location <0, 0, -5> look_at <0, 0, 0> right x up y }\n"
+        "light_source { <0, 0, 8> color rgb 1 }\n"
+        "box { <-20, -20, 0>, <20, 20, 20> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } "
+        "hollow interior { media { absorption 0.1 } } }\n"
+        "box { <-5, -5, 10>, <5, 5, 11> pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n",
+        settings);
+    double expected = 0;
+    for (int i = 0; i < 64; ++i)
+        for (int j = 0; j < 64; ++j) {
+            const double x = -0.5 + (i + 0.5) / 64, y = -0.5 + (j + 0.5) / 64;
+            const double d = std::sqrt(x * x + y * y + 4);
+            expected += 2 / d / (kPi * d * d) * std::exp(-0.1 * d - 1) / (64 * 64);
+        }
+    double mean = 0, se = 0;
+    image_mean(r.film, 0, mean, se);
+    std::printf("%s: %.6f, closed form %.6f\n", integrator.c_str(), mean, expected);
+    EXPECT_NEAR(mean, expected, 0.002 * expected);
+}
+
+TEST(RenderMedia, LightInsideAnAbsorbingMediumIsDimmedOnItsWay) {
+    expect_lit_inside_absorbing_box("path");
+    expect_lit_inside_absorbing_box("bidirectional");
+}
+
 // A hollow clear box (index 1) 2 units deep, 10 wide, holding `media`, between the camera and
 // the wall.
 std::string media_box(const std::string& media) {
@@ -409,6 +444,9 @@ TEST(RenderMedia, RefusesWhatItDoesNotRender) {
     EXPECT_EQ(error("light_source { 0, 1 area_light x, y, 2, 2 }\n" + scattering),
               "not supported: media that scatter or emit, with area lights or ray-file sources "
               "(point and spot lights only)");
+    EXPECT_EQ(error("light_source { 0, 1 media_interaction off }\n" + scattering),
+              "not supported: media_interaction off (every light scatters in media here) at "
+              "test.pov:1:1");
     EXPECT_EQ(error("global_settings { spectral on }\n" + scattering),
               "not supported: interior fade or media under spectral transport");
     EXPECT_EQ(error("sphere { 0, 1 hollow interior { media { absorption 1 density { "

@@ -7,6 +7,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "tracer/render/medium_light.h"
 #include "tracer/render/receiver_irradiance.h"
 
 namespace rayset::tracer {
@@ -84,6 +85,23 @@ int BidirectionalIntegratorOf<Q>::attenuate_inside(Q& beta, int start, Vec3 orig
 }
 
 template <class Q>
+Q BidirectionalIntegratorOf<Q>::primary_light(const BsdfOf<Q>& bsdf, const SurfaceHit& hit,
+                                              int medium, Vec3 direction,
+                                              const Wavelengths& wavelengths, Pcg32& rng,
+                                              uint64_t& rays) const {
+    const ShadowRayOf<Q> shadow = sample_direct_light(scene_, lights_, bsdf, hit.point,
+                                                      bsdf.facing_normal(), wavelengths, rng);
+    if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses fade and media
+        const Interiors& interiors = scene_.interiors();
+        if (interiors.any())
+            return dimmed_unless_occluded(
+                scene_, shadow, interiors.medium_after(medium, direction, hit, shadow.direction),
+                rng, rays);
+    }
+    return unless_occluded(scene_, shadow, rays);
+}
+
+template <class Q>
 CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 direction, uint32_t pixel,
                                                        Pcg32& rng, uint64_t& rays,
                                                        std::vector<Point>& visible) const {
@@ -109,8 +127,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
         const Vec3 wo = -direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         if (bsdf.has_smooth_lobes()) {
-            primary += beta * direct_light(scene_, lights_, bsdf, hit.point, bsdf.facing_normal(),
-                                           wavelengths, rng, rays);
+            primary += beta * primary_light(bsdf, hit, medium, direction, wavelengths, rng, rays);
             Point vp;
             vp.point = hit.point, vp.normal = hit.normal, vp.shading_normal = hit.shading_normal,
             vp.wo = wo;

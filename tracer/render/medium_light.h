@@ -59,6 +59,17 @@ inline Rgb through_media(const RenderScene& scene, const ShadowRayOf<Rgb>& shado
                                                       shadow.t_far, medium, rng, rays);
 }
 
+// A surface's light sample whose shadow ray stops at every surface (direct_light.h), dimmed
+// by the medium it starts in (an object index, -1: none): what fade and media that only absorb
+// do to it, in both integrators.
+inline Rgb dimmed_unless_occluded(const RenderScene& scene, const ShadowRayOf<Rgb>& shadow,
+                                  int medium, Pcg32& rng, uint64_t& rays) {
+    const Rgb c = unless_occluded(scene, shadow, rays);
+    if (medium < 0 || shadow.shadowless || is_black(c)) return c;
+    return c * scene.interiors().medium(medium).transmittance(shadow.origin, shadow.direction,
+                                                              shadow.t_far, rng);
+}
+
 // Light scattered toward -`direction` at `point`, inside the medium of object `medium`, from
 // one light sample: sigma_s p Li / pdf, seen through the media on the way (lights have no
 // body here, so no MIS).

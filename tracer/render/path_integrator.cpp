@@ -135,10 +135,13 @@ template <class Q>
         const bool sampled = bsdf.sample(u_lobe, u1, u2, sample);
         if (light_sampled) {
             if constexpr (std::is_same_v<Q, Rgb>) {
-                if (interiors.participating()) {
+                if (interiors.any()) {
                     const int shadow_medium =
                         interiors.medium_after(medium, s.direction, hit, shadow.direction);
-                    sum += s.beta * through_media(scene_, shadow, shadow_medium, rng, rays);
+                    sum += s.beta *
+                           (interiors.participating()
+                                ? through_media(scene_, shadow, shadow_medium, rng, rays)
+                                : dimmed_unless_occluded(scene_, shadow, shadow_medium, rng, rays));
                 } else {
                     sum += s.beta * unless_occluded(scene_, shadow, rays);
                 }

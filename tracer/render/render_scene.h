@@ -120,6 +120,7 @@ private:
     // The materials of solids' parts that have an appearance of their own.
     void add_part_materials(double emission_scale);
     void note_fake_caustics(const SceneDescription& scene);
+    void note_media_attenuation(const SceneDescription& scene);
 
     std::vector<ObjectMaterial> materials_;
     std::vector<ObjectMaterial> part_materials_;
