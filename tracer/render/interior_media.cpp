@@ -286,11 +286,7 @@ Interiors::Interiors(const SceneDescription& scene, double to_internal) {
         any_ = any_ || media_[i].present();
         participating_ = participating_ || media_[i].participates();
     }
-    if (participating_)
-        for (const LightSource& light : scene.lights)
-            if (!light.media_interaction)
-                refuse("media_interaction off (every light scatters in media here)",
-                       light.location);
+
 }
 
 int Interiors::segment_medium(int start, Vec3 direction, bool found, const SurfaceHit& hit) const {

@@ -72,12 +72,13 @@ inline Rgb dimmed_unless_occluded(const RenderScene& scene, const ShadowRayOf<Rg
 
 // Light scattered toward -`direction` at `point`, inside the medium of object `medium`, from
 // one light sample: sigma_s p Li / pdf, seen through the media on the way (lights have no
-// body here, so no MIS).
+// body here, so no MIS). Lights with POV-Ray's media_interaction off bring nothing, as POV-Ray
+// renders them (not physical; RenderScene notes it).
 inline Rgb medium_direct_light(const RenderScene& scene, const LightSet& lights, int medium,
                                Vec3 point, Vec3 direction, Pcg32& rng, uint64_t& rays) {
     if (lights.empty()) return {};
     const auto light = lights.sample_Li<Rgb>(point, lights.draw(rng), {});
-    if (!light || !(light->pdf > 0)) return {};
+    if (!light || !(light->pdf > 0) || !light->media_interaction) return {};
     const Rgb f = scene.interiors().medium(medium).scattered(point, dot(light->wi, direction));
     if (is_black(f) || is_black(light->Li)) return {};
     const Rgb contribution = (1 / light->pdf) * (f * light->Li);

@@ -23,6 +23,7 @@ struct PointLight {
     IlluminantSpectrum intensity_spectrum;  // the same for spectral transport
     bool spot = false;
     bool shadowless = false;  // POV-Ray's shadowless light: its light passes through objects
+    bool media_interaction = true;  // false: media do not scatter its light (POV-Ray's flag)
     Vec3 axis;                // unit, toward point_at
     double cos_radius = 0, cos_falloff = 0, tightness = 0;
     double emitted_power = 0;  // W, average over channels

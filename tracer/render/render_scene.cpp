@@ -64,10 +64,9 @@ void check_device(RTCDevice device, const char* what) {
 
 // The light features the renderer does not render (povray_lights.cpp refuses its own: shadowless
 // area lights, oriented area spotlights, fade powers other than 2). media_interaction,
-// media_attenuation and photon flags matter only with media (interior_media.cpp refuses
-// media_interaction off with media that scatter; media_attenuation earns a note) and photon
-// mapping, which a path tracer does not use; area_illumination is what its area lights always
-// do.
+// media_attenuation and photon flags matter only with media (both earn notes,
+// note_media_attenuation) and photon mapping, which a path tracer does not use;
+// area_illumination is what its area lights always do.
 void refuse_unrendered(const LightSource& light) {
     if (light.cylinder) refuse("cylinder light_source", light.location);
     if (light.parallel) refuse("parallel light_source", light.location);
@@ -112,7 +111,8 @@ void RenderScene::note_fake_caustics(const SceneDescription& scene) {
 }
 
 // POV-Ray does not dim a light by the media on its way unless it says media_attenuation on
-// (the default is off); the renderer always does, as light is dimmed.
+// (the default is off); the renderer always does, as light is dimmed. A light with
+// media_interaction off is not scattered by media, as POV-Ray renders it (not physical).
 void RenderScene::note_media_attenuation(const SceneDescription& scene) {
     if (!interiors_.any()) return;
     for (const LightSource& light : scene.lights) {
@@ -121,8 +121,15 @@ void RenderScene::note_media_attenuation(const SceneDescription& scene) {
             "the light_source at {} is dimmed by the media its light crosses, as every light is "
             "here (POV-Ray dims only lights with media_attenuation on)",
             light.location.str()));
-        return;  // one note says it for every light
+        break;  // one note says it for every light
     }
+    if (!interiors_.participating()) return;
+    for (const LightSource& light : scene.lights)
+        if (!light.media_interaction)
+            notes_.push_back(fmt::format(
+                "the light_source at {} has media_interaction off: media do not scatter its "
+                "light, as POV-Ray renders it (not physical)",
+                light.location.str()));
 }
 
 RenderScene::RenderScene(const SceneDescription& scene)
