@@ -224,6 +224,23 @@ TEST(RenderMedia, AbsorptionTransmitsExponentially) {
     EXPECT_NEAR(two.green, std::exp(-1.0), kOffsets * std::exp(-1.0));
 }
 
+TEST(RenderMedia, AtmosphericMediaFillWhatLiesOutsideObjectsAndInsideHollowOnes) {
+    // An atmosphere of absorption 0.1 between the camera and the wall 15 units away (the wall
+    // a plane whose inside lies beyond it: inside a non-hollow object there is no atmosphere,
+    // as in POV-Ray): exp(-1.5); a hollow clear box 2 units deep on the way changes nothing, a
+    // non-hollow one takes its 2 units out: exp(-1.3).
+    const std::string scene =
+        "global_settings { length_unit \"m\" }\n"
+        "camera { orthographic location <0, 0, -5> look_at <0, 0, 0> right x up y }\n"
+        "plane { -z, -10 pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 1 } }\n"
+        "media { absorption 0.1 }\n";
+    const std::string box =
+        "box { <-5, -5, 0>, <5, 5, 2> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } ";
+    EXPECT_NEAR(pixel_of(scene).red, std::exp(-1.5), kOffsets * std::exp(-1.5));
+    EXPECT_NEAR(pixel_of(scene + box + "hollow }").red, std::exp(-1.5), kOffsets * std::exp(-1.5));
+    EXPECT_NEAR(pixel_of(scene + box + "}").red, std::exp(-1.3), kOffsets * std::exp(-1.3));
+}
+
 TEST(RenderMedia, EmissionAddsRadianceAlongThePath) {
     // Emission e without absorption in front of a black wall: e d; with absorption sigma,
     // e (1 - exp(-sigma d)) / sigma (the far part seen through the near part).
@@ -462,6 +479,12 @@ TEST(RenderMedia, RefusesWhatItDoesNotRender) {
     EXPECT_EQ(error("light_source { 0, 1 area_light x, y, 2, 2 }\n" + scattering),
               "not supported: media that scatter or emit, with area lights or ray-file sources "
               "(point and spot lights only)");
+    EXPECT_EQ(error("media { emission 1 }"),
+              "not supported: atmospheric media emitting without extinction (infinite radiance "
+              "toward the sky) at test.pov:1:1");
+    EXPECT_EQ(error("media { absorption 1 }\n" + scattering),
+              "not supported: atmospheric media together with fade or media in objects at "
+              "test.pov:2:41");
     EXPECT_EQ(error("global_settings { spectral on }\n" + scattering),
               "not supported: interior fade or media under spectral transport");
     EXPECT_EQ(error("sphere { 0, 1 hollow interior { media { absorption 1 density { "

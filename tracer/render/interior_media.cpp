@@ -89,6 +89,24 @@ InteriorMedium::InteriorMedium(const InteriorRef& interior_ref, double to_intern
     }
     for (const MediaRef& media : interior.media)
         parts_.push_back(part_of(*media, to_internal, decoding));
+    sum_parts();
+}
+
+InteriorMedium::InteriorMedium(const std::vector<AtmosphericMedia>& media, double to_internal,
+                               const ColourDecoding& decoding) {
+    for (const AtmosphericMedia& m : media) {
+        if (!m.media->densities.empty())
+            refuse("density in atmospheric media", m.media->location);
+        parts_.push_back(part_of(*m.media, to_internal, decoding));
+    }
+    sum_parts();
+    const Rgb e = emission_, s = extinction_;
+    if ((e.red > 0 && s.red <= 0) || (e.green > 0 && s.green <= 0) || (e.blue > 0 && s.blue <= 0))
+        refuse("atmospheric media emitting without extinction (infinite radiance toward the sky)",
+               media.front().location);
+}
+
+void InteriorMedium::sum_parts() {
     Rgb total_scattering;
     for (const Part& part : parts_) {
         total_scattering += part.scattering;
@@ -275,6 +293,7 @@ Interiors::Interiors(const SceneDescription& scene, double to_internal) {
     media_.resize(scene.objects.size());
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const ObjectInstance& object = scene.objects[i];
+        hollow_.push_back(object.hollow);
         refuse_part_media(object, object.appearance.interior);
         if (!interior_fills(object.appearance.interior)) continue;
         const Interior& interior = *object.appearance.interior;
@@ -282,22 +301,37 @@ Interiors::Interiors(const SceneDescription& scene, double to_internal) {
             refuse(fmt::format("fade or media in a {}, which has no inside",
                                shape_keyword(object.shape)),
                    interior.location);
+        if (!scene.atmosphere.media.empty())
+            refuse("atmospheric media together with fade or media in objects",
+                   interior.location);
         media_[i] = InteriorMedium(object.appearance.interior, to_internal, decoding);
         any_ = any_ || media_[i].present();
         participating_ = participating_ || media_[i].participates();
     }
-
+    if (scene.atmosphere.media.empty()) return;
+    outside_ = int(media_.size());
+    media_.emplace_back(scene.atmosphere.media, to_internal, decoding);
+    any_ = true;
+    participating_ = participating_ || media_.back().participates();
 }
 
 int Interiors::segment_medium(int start, Vec3 direction, bool found, const SurfaceHit& hit) const {
     if (start >= 0) return start;
-    if (found && dot(direction, hit.normal) > 0 && media_[size_t(hit.object)].present())
-        return hit.object;
-    return -1;
+    if (start == kNoMedium) return -1;
+    if (found && dot(direction, hit.normal) > 0) {  // leaving the object it was in
+        const size_t object = size_t(hit.object);
+        if (media_[object].present()) return hit.object;
+        return hollow_[object] ? outside_ : -1;
+    }
+    return outside_;
 }
 
 int Interiors::medium_after(int segment, Vec3 direction, const SurfaceHit& hit, Vec3 wi) const {
-    if (dot(wi, hit.normal) < 0) return media_[size_t(hit.object)].present() ? hit.object : -1;
+    if (dot(wi, hit.normal) < 0) {  // into the object
+        const size_t object = size_t(hit.object);
+        if (media_[object].present()) return hit.object;
+        return hollow_[object] ? outside_ : kNoMedium;
+    }
     return dot(direction, hit.normal) < 0 ? segment : -1;
 }
 

@@ -25,6 +25,7 @@
 // a third one before the outer one's surface is taken to be in no medium.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -58,6 +59,9 @@ public:
     // outside 0..1, negative coefficients. `to_internal` converts POV-Ray's emission
     // (W/(m^2 sr) per scene unit of path) to the renderer's radiance unit (units.h).
     InteriorMedium(const InteriorRef& interior, double to_internal,
+                   const ColourDecoding& decoding);
+    // The scene's atmospheric media, added together.
+    InteriorMedium(const std::vector<AtmosphericMedia>& media, double to_internal,
                    const ColourDecoding& decoding);
 
     bool present() const { return !parts_.empty(); }
@@ -97,6 +101,7 @@ private:
     };
     static Part part_of(const Media& media, double to_internal, const ColourDecoding& decoding);
     Local at(Vec3 point) const;
+    void sum_parts();
     FreeFlight fly_uniform(double length, Pcg32& rng) const;
     Rgb uniform_transmittance(double length) const;
     Rgb uniform_emitted(double length) const;
@@ -109,12 +114,19 @@ private:
 };
 
 // The media of the scene's objects, by object index, and the rule of which one a segment
-// lies in (above).
+// lies in (above); atmospheric media (media { } at the top level) fill what lies outside
+// objects and inside hollow objects, as in POV-Ray, as one more medium after the objects'.
 class Interiors {
 public:
+    // A path inside an object that holds no medium and is not hollow: no medium, not even the
+    // atmosphere.
+    static constexpr int kNoMedium = -2;
+
     Interiors() = default;
     // Refuses fade and media on objects without an inside (triangles, meshes, discs,
-    // polygons, patches) and on parts of solids with an interior of their own.
+    // polygons, patches) and on parts of solids with an interior of their own; atmospheric
+    // media with density, emitting without extinction (infinitely bright toward the sky), or
+    // together with fade or media in objects.
     Interiors(const SceneDescription& scene, double to_internal);
 
     bool any() const { return any_; }
@@ -122,15 +134,17 @@ public:
     bool participating() const { return participating_; }
     const InteriorMedium& medium(int object) const { return media_[size_t(object)]; }
 
-    // The medium of a segment along `direction` that started in `start` (-1: none known) and
-    // ends at `hit` (if `found`): an object index or -1.
+    // The medium of a segment along `direction` that started in `start` (-1: none known,
+    // kNoMedium: none) and ends at `hit` (if `found`): an index or -1.
     int segment_medium(int start, Vec3 direction, bool found, const SurfaceHit& hit) const;
     // The medium a path is in after turning at `hit` from `direction` to `wi`, given the one it
     // came through.
     int medium_after(int segment, Vec3 direction, const SurfaceHit& hit, Vec3 wi) const;
 
 private:
-    std::vector<InteriorMedium> media_;
+    std::vector<InteriorMedium> media_;  // by object; then the atmosphere's, if any
+    std::vector<uint8_t> hollow_;        // by object
+    int outside_ = -1;                   // the atmosphere's index, or -1
     bool any_ = false, participating_ = false;
 };
 

@@ -60,11 +60,12 @@ inline Rgb through_media(const RenderScene& scene, const ShadowRayOf<Rgb>& shado
 }
 
 // A surface's light sample whose shadow ray stops at every surface (direct_light.h), dimmed
-// by the medium it starts in (an object index, -1: none): what fade and media that only absorb
+// by the medium it starts in (Interiors::medium_after's): what fade and media that only absorb
 // do to it, in both integrators.
 inline Rgb dimmed_unless_occluded(const RenderScene& scene, const ShadowRayOf<Rgb>& shadow,
                                   int medium, Pcg32& rng, uint64_t& rays) {
     const Rgb c = unless_occluded(scene, shadow, rays);
+    medium = scene.interiors().segment_medium(medium, shadow.direction, false, {});
     if (medium < 0 || shadow.shadowless || is_black(c)) return c;
     return c * scene.interiors().medium(medium).transmittance(shadow.origin, shadow.direction,
                                                               shadow.t_far, rng);

@@ -84,7 +84,6 @@ void refuse_what_is_not_rendered(const SceneDescription& scene) {
     for (const LightSource& light : scene.lights) refuse_unrendered(light);
     const Atmosphere& atmosphere = scene.atmosphere;
     if (!atmosphere.rainbows.empty()) refuse("rainbow", atmosphere.rainbows.front().location);
-    if (!atmosphere.media.empty()) refuse("atmospheric media", atmosphere.media.front().location);
 }
 
 SceneUnits units_of(const SceneDescription& scene) {
