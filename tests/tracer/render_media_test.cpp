@@ -482,6 +482,9 @@ TEST(RenderMedia, RefusesWhatItDoesNotRender) {
     EXPECT_EQ(error("media { emission 1 }"),
               "not supported: atmospheric media emitting without extinction (infinite radiance "
               "toward the sky) at test.pov:1:1");
+    EXPECT_EQ(error("media { absorption 1 }\n"
+                    "illuminance_receiver { 0, x, z resolution <1, 1> }"),
+              "not supported: illuminance receivers in atmospheric media at test.pov:1:1");
     EXPECT_EQ(error("media { absorption 1 }\n" + scattering),
               "not supported: atmospheric media together with fade or media in objects at "
               "test.pov:2:41");

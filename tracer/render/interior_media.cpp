@@ -309,6 +309,11 @@ Interiors::Interiors(const SceneDescription& scene, double to_internal) {
         participating_ = participating_ || media_[i].participates();
     }
     if (scene.atmosphere.media.empty()) return;
+    // Receivers take their light samples undimmed (receiver_irradiance.h): in an atmosphere
+    // that would be wrong everywhere.
+    if (!scene.receivers.empty())
+        refuse("illuminance receivers in atmospheric media",
+               scene.atmosphere.media.front().location);
     outside_ = int(media_.size());
     media_.emplace_back(scene.atmosphere.media, to_internal, decoding);
     any_ = true;

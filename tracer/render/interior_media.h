@@ -125,8 +125,8 @@ public:
     Interiors() = default;
     // Refuses fade and media on objects without an inside (triangles, meshes, discs,
     // polygons, patches) and on parts of solids with an interior of their own; atmospheric
-    // media with density, emitting without extinction (infinitely bright toward the sky), or
-    // together with fade or media in objects.
+    // media with density, emitting without extinction (infinitely bright toward the sky),
+    // together with fade or media in objects, or with illuminance receivers.
     Interiors(const SceneDescription& scene, double to_internal);
 
     bool any() const { return any_; }
