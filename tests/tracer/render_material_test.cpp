@@ -150,10 +150,6 @@ TEST(RenderMaterial, RefusesWhatItDoesNotRender) {
               "not supported: finish 'irid' at test.pov:1:15");
     EXPECT_EQ(error("sphere { 0, 1 finish { diffuse 0.6, 0.2 } }"),
               "not supported: finish diffuse with a back-side amount at test.pov:1:15");
-    EXPECT_EQ(error("sphere { 0, 1 hollow interior { media { emission 1 } } }"),
-              "not supported: media at test.pov:1:33");
-    EXPECT_EQ(error("sphere { 0, 1 interior { ior 1.5 fade_distance 2 fade_power 2 } }"),
-              "not supported: interior fade_distance/fade_power at test.pov:1:15");
     EXPECT_EQ(error("sphere { 0, 1 interior_texture { pigment { rgb 1 } } }"),
               "not supported: interior_texture at test.pov:1:15");
 }

@@ -7,6 +7,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "tracer/render/medium_light.h"
 #include "tracer/render/receiver_irradiance.h"
 
 namespace rayset::tracer {
@@ -70,6 +71,37 @@ Q BidirectionalIntegratorOf<Q>::bodies_crossed(Vec3 origin, Vec3 direction, doub
 }
 
 template <class Q>
+int BidirectionalIntegratorOf<Q>::attenuate_inside(Q& beta, int start, Vec3 origin, Vec3 direction,
+                                                   bool found, const SurfaceHit& hit,
+                                                   Pcg32& rng) const {
+    const Interiors& interiors = scene_.interiors();
+    if (!interiors.any()) return -1;
+    const int medium = interiors.segment_medium(start, direction, found, hit);
+    if constexpr (std::is_same_v<Q, Rgb>)  // spectral transport refuses fade
+        if (medium >= 0)
+            beta *= interiors.medium(medium).transmittance(origin, direction,
+                                                           found ? hit.t : kInfinity, rng);
+    return medium;
+}
+
+template <class Q>
+Q BidirectionalIntegratorOf<Q>::primary_light(const BsdfOf<Q>& bsdf, const SurfaceHit& hit,
+                                              int medium, Vec3 direction,
+                                              const Wavelengths& wavelengths, Pcg32& rng,
+                                              uint64_t& rays) const {
+    const ShadowRayOf<Q> shadow = sample_direct_light(scene_, lights_, bsdf, hit.point,
+                                                      bsdf.facing_normal(), wavelengths, rng);
+    if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses fade and media
+        const Interiors& interiors = scene_.interiors();
+        if (interiors.any())
+            return dimmed_unless_occluded(
+                scene_, shadow, interiors.medium_after(medium, direction, hit, shadow.direction),
+                rng, rays);
+    }
+    return unless_occluded(scene_, shadow, rays);
+}
+
+template <class Q>
 CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 direction, uint32_t pixel,
                                                        Pcg32& rng, uint64_t& rays,
                                                        std::vector<Point>& visible) const {
@@ -77,6 +109,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
     Q direct_visibility{}, primary{};
     Q beta = constant_value<Q>(1);
     RayKind kind = RayKind::camera;
+    int medium = -1;  // the object whose interior the path is in, if known (interior_media.h)
     for (int depth = 0; depth < kMaxDepth; ++depth) {
         SurfaceHit hit;
         ++rays;
@@ -87,14 +120,14 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
                            origin, direction,
                            scene_.light_horizon(origin, direction, found, hit, rays), -1,
                            wavelengths);
+        medium = attenuate_inside(beta, medium, origin, direction, found, hit, rng);
         if (!found) break;
         Material scratch;
         const Material& material = scene_.material(hit, scratch);
         const Vec3 wo = -direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         if (bsdf.has_smooth_lobes()) {
-            primary += beta * direct_light(scene_, lights_, bsdf, hit.point, bsdf.facing_normal(),
-                                           wavelengths, rng, rays);
+            primary += beta * primary_light(bsdf, hit, medium, direction, wavelengths, rng, rays);
             Point vp;
             vp.point = hit.point, vp.normal = hit.normal, vp.shading_normal = hit.shading_normal,
             vp.wo = wo;
@@ -106,6 +139,8 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
         const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
                      u2 = rng.uniform_float();
         if (!bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight)) break;
+        if (scene_.interiors().any())
+            medium = scene_.interiors().medium_after(medium, direction, hit, s.wi);
         const Vec3 next_origin = scene_.offset(hit.point, hit.normal, s.wi);
         if (!s.delta) {
             // The smooth lobe ends the camera path: what lies beyond is the photons' part.
@@ -159,10 +194,14 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
         Q power = emission.flux;
         Vec3 origin = emission.origin, direction = emission.direction;
         bool scattered = false;
+        int medium = -1;
         for (int depth = 0; depth < kMaxDepth; ++depth) {
             SurfaceHit hit;
             ++rays;
-            if (!scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit)) break;
+            const bool found =
+                scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit);
+            medium = attenuate_inside(power, medium, origin, direction, found, hit, rng);
+            if (!found) break;
             Material scratch;
             const BsdfOf<Q> bsdf(scene_.material(hit, scratch), hit.normal, hit.shading_normal,
                                  -direction, wavelengths);
@@ -176,6 +215,8 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
             const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
                          u2 = rng.uniform_float();
             if (!bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight)) break;
+            if (scene_.interiors().any())
+                medium = scene_.interiors().medium_after(medium, direction, hit, s.wi);
             const Q next = power * s.weight;
             // Roulette keeps the surviving photons' power near the emitted one.
             const double survive = std::min(1.0, max_component(next) / max_component(power));

@@ -91,6 +91,15 @@ private:
     // against light sampling of its light.
     Q bodies_crossed(Vec3 origin, Vec3 direction, double bsdf_pdf, const Wavelengths& wavelengths,
                      uint64_t& rays) const;
+    // Scales `beta` by the transmittance of the interior (fade, absorbing media;
+    // interior_media.h) a segment from `origin` along `direction` that started in medium
+    // `start` and ended at `hit` (if `found`) lay in; returns that medium.
+    // The light sample of a visible point at `hit`, reached along `direction` through
+    // `medium`, its shadow ray dimmed by the medium it starts in.
+    Q primary_light(const BsdfOf<Q>& bsdf, const SurfaceHit& hit, int medium, Vec3 direction,
+                    const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const;
+    int attenuate_inside(Q& beta, int start, Vec3 origin, Vec3 direction, bool found,
+                         const SurfaceHit& hit, Pcg32& rng) const;
 
     const RenderScene& scene_;
     const LightSet& lights_;

@@ -285,8 +285,15 @@ std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& sce
             fmt::format("not supported: fog with integrator \"bidirectional\" at {} "
                         "(the path integrator renders it)",
                         scene.description().atmosphere.fogs.front().location.str()));
-    if (spectral_transport(scene, settings))
+    if (scene.interiors().participating())
+        throw Error(
+            "not supported: media that scatter or emit with integrator \"bidirectional\" (the "
+            "path integrator renders them)");
+    if (spectral_transport(scene, settings)) {
+        if (scene.interiors().any())
+            throw Error("not supported: interior fade or media under spectral transport");
         return std::make_unique<BidirectionalPasses<SampledSpectrum>>(scene, settings, start);
+    }
     return std::make_unique<BidirectionalPasses<Rgb>>(scene, settings, start);
 }
 

@@ -24,6 +24,7 @@ struct LightLiSampleOf {
                               // alone for a point light
     bool delta = false;       // a point light: no other strategy can find it, no MIS
     bool shadowless = false;  // POV-Ray's shadowless light: nothing blocks it, no shadow ray
+    bool media_interaction = true;  // false: media do not scatter its light (POV-Ray's flag)
 };
 
 template <class Q>

@@ -54,7 +54,8 @@ void conserve_energy(Material& m) {
 
 // What the renderer does not render of POV-Ray's appearance is refused, never approximated:
 // it renders the pigments and normals the scene language evaluates, layered and patterned
-// textures of them, the finish keywords of README.md, and an interior's ior.
+// textures of them, the finish keywords of README.md, and an interior's ior (its fade and
+// media are interior_media.h's).
 class Refusal {
 public:
     explicit Refusal(const ObjectInstance& object) : object_(object) {}
@@ -121,10 +122,7 @@ public:
             if (item.present) fail(item.feature, f.location);
     }
     void check_interior(const Interior& interior) const {
-        if (!interior.media.empty()) fail("media", interior.media.front()->location);
         if (interior.dispersion != 1) fail("interior 'dispersion'", interior.location);
-        if (interior.fade_distance != 0 || interior.fade_power != 0)
-            fail("interior fade_distance/fade_power", interior.location);
     }
 
 private:

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "tracer/render/medium_light.h"
 #include "tracer/render/receiver_irradiance.h"
 #include "tracer/render/renderer.h"
 
@@ -14,6 +15,23 @@ namespace rayset::tracer {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Fade and media are rendered in RGB; media that scatter or emit light with shadow rays through
+// clear surfaces (medium_light.h), which suits lights without a body only, and are not mixed
+// with fog, which is drawn over whole segments.
+void check_interiors_renderable(const RenderScene& scene, const RenderSettings& settings,
+                                const LightSet& lights) {
+    const Interiors& interiors = scene.interiors();
+    if (!interiors.any()) return;
+    if (spectral_transport(scene, settings))
+        throw Error("not supported: interior fade or media under spectral transport");
+    if (!interiors.participating()) return;
+    if (lights.has_bodies())
+        throw Error(
+            "not supported: media that scatter or emit, with area lights or ray-file sources "
+            "(point and spot lights only)");
+    if (scene.fog().present()) throw Error("not supported: media together with fog");
+}
 
 }  // namespace
 
@@ -59,6 +77,7 @@ template <class Q>
 [[gnu::flatten]] Q PathIntegratorOf<Q>::trace(PathState& s, const Wavelengths& wavelengths,
                                               Pcg32& rng, uint64_t& rays) const {
     const LightSet& lights = lights_;
+    const Interiors& interiors = scene_.interiors();
     Q sum{};
     SurfaceHit hit;
     BsdfSampleOf<Q> sample;
@@ -66,6 +85,17 @@ template <class Q>
     for (;; ++s.depth) {
         ++rays;
         const bool found = scene_.intersect(s.origin, s.direction, 0, kInfinity, s.kind, hit);
+        int medium = -1;
+        if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses media
+            if (interiors.any()) {
+                medium = interiors.segment_medium(s.medium, s.direction, found, hit);
+                if (medium >= 0 &&
+                    cross_medium(s, medium, found ? hit.t : kInfinity, rng, rays, sum)) {
+                    if (s.depth + 1 >= kMaxDepth || !survives_roulette(s, rng)) break;
+                    continue;
+                }
+            }
+        }
         if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses fog
             if (scene_.fog().present()) {
                 Rgb through, added;
@@ -103,20 +133,69 @@ template <class Q>
         const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
                      u2 = rng.uniform_float();
         const bool sampled = bsdf.sample(u_lobe, u1, u2, sample);
-        if (light_sampled) sum += s.beta * unless_occluded(scene_, shadow, rays);
+        if (light_sampled) {
+            if constexpr (std::is_same_v<Q, Rgb>) {
+                if (interiors.any()) {
+                    const int shadow_medium =
+                        interiors.medium_after(medium, s.direction, hit, shadow.direction);
+                    sum += s.beta *
+                           (interiors.participating()
+                                ? through_media(scene_, shadow, shadow_medium, rng, rays)
+                                : dimmed_unless_occluded(scene_, shadow, shadow_medium, rng, rays));
+                } else {
+                    sum += s.beta * unless_occluded(scene_, shadow, rays);
+                }
+            } else {
+                sum += s.beta * unless_occluded(scene_, shadow, rays);
+            }
+        }
         if (s.depth + 1 >= kMaxDepth || !sampled || is_black(sample.weight)) break;
+        if (interiors.any()) s.medium = interiors.medium_after(medium, s.direction, hit, sample.wi);
         s.beta *= sample.weight;
         s.bsdf_pdf = sample.delta ? -1 : sample.pdf;
         s.origin = scene_.offset(hit.point, hit.normal, sample.wi);
         s.direction = sample.wi;
         s.kind = RayKind::indirect;
-        if (s.depth + 1 >= kRouletteDepth) {
-            const double survive = std::min(0.95, max_component(s.beta));
-            if (rng.uniform_float() >= survive) break;
-            s.beta = (1 / survive) * s.beta;
-        }
+        if (!survives_roulette(s, rng)) break;
     }
     return sum;
+}
+
+template <class Q>
+bool PathIntegratorOf<Q>::survives_roulette(PathState& s, Pcg32& rng) {
+    if (s.depth + 1 < kRouletteDepth) return true;
+    const double survive = std::min(0.95, max_component(s.beta));
+    if (rng.uniform_float() >= survive) return false;
+    s.beta = (1 / survive) * s.beta;
+    return true;
+}
+
+template <class Q>
+bool PathIntegratorOf<Q>::cross_medium(PathState& s, int medium, double length, Pcg32& rng,
+                                       uint64_t& rays, Rgb& sum) const {
+    if constexpr (std::is_same_v<Q, Rgb>) {
+        const InteriorMedium& m = scene_.interiors().medium(medium);
+        const FreeFlight flight = m.fly(s.origin, s.direction, length, rng);
+        sum += s.beta * flight.emitted;
+        s.beta *= flight.weight;
+        if (!flight.scattered) return false;
+        const Vec3 point = s.origin + flight.t * s.direction;
+        sum += s.beta * medium_direct_light(scene_, lights_, medium, point, s.direction, rng, rays);
+        const double u_choice = rng.uniform_float(), u1 = rng.uniform_float(),
+                     u2 = rng.uniform_float();
+        const Vec3 wi = m.sample_phase(s.direction, u_choice, u1, u2);
+        const double cos_theta = dot(wi, s.direction);
+        const double pdf = m.phase_pdf(cos_theta);
+        s.beta *= (pdf > 0 ? 1 / pdf : 0) * m.scattered(point, cos_theta);
+        s.origin = point;
+        s.direction = wi;
+        s.bsdf_pdf = pdf;
+        s.medium = medium;
+        s.kind = RayKind::indirect;
+        return true;
+    } else {
+        return false;
+    }
 }
 
 template class PathIntegratorOf<Rgb>;
@@ -155,6 +234,7 @@ std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene,
     if (scene.fog().present() && !scene.description().ray_sources.empty())
         throw Error("not supported: fog with ray-file sources (their bodies are not dimmed)");
     LightSet lights(scene.description(), scene.units(), false);
+    check_interiors_renderable(scene, settings, lights);
     if (spectral_transport(scene, settings))
         return std::make_unique<PathTracing<SampledSpectrum>>(scene, std::move(lights));
     return std::make_unique<PathTracing<Rgb>>(scene, std::move(lights));

@@ -52,10 +52,20 @@ private:
         Q beta = constant_value<Q>(1);
         double bsdf_pdf = -1;  // pdf of the sampled direction; < 0: no light sampling competes
         int depth = 0;
+        int medium = -1;  // the object whose interior the path is in, if known (interior_media.h)
     };
     // Follows the path from `state` (advanced in place: a by-value copy of this struct cost
     // more than some of the arithmetic per bounce).
     Q trace(PathState& state, const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const;
+    // Across a segment of `length` in the medium of object `medium` (RGB transport): adds its
+    // emission to `sum`, draws a free flight and scales the throughput by it. If the medium
+    // scatters the path there, adds the light sampled at that point, turns the path by the
+    // phase function and returns true.
+    bool cross_medium(PathState& state, int medium, double length, Pcg32& rng, uint64_t& rays,
+                      Rgb& sum) const;
+    // Russian roulette from kRouletteDepth on: whether the path goes on (its throughput then
+    // rescaled).
+    static bool survives_roulette(PathState& state, Pcg32& rng);
     const RenderScene& scene_;
     const LightSet& lights_;
     lightmodel::BinnedSpectrum wavelength_density_;  // spectral only

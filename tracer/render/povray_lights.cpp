@@ -127,6 +127,7 @@ std::optional<LightLiSampleOf<Q>> PointLight::sample_Li(
     out.pdf = chosen;
     out.delta = true;
     out.shadowless = shadowless;
+    out.media_interaction = media_interaction;
     return out;
 }
 
@@ -330,6 +331,7 @@ PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const Sc
             throw Error(fmt::format("not supported: shadowless area_light at {}", where));
         PointLight point = point_light_of(source, decoding(source.colour), units, where);
         point.shadowless = source.shadowless;
+        point.media_interaction = source.media_interaction;
         const double solid_angle = effective_solid_angle(point);
         point.emitted_power = average(point.intensity) * solid_angle;
         if (source.area_light && source.orient)

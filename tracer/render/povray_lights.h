@@ -34,8 +34,9 @@ struct PointLight {
     Rgb intensity;
     IlluminantSpectrum intensity_spectrum;  // the same for spectral transport
     std::optional<SpotProfile> spot;
-    bool shadowless = false;   // POV-Ray's shadowless light: its light passes through objects
-    double emitted_power = 0;  // W, average over channels
+    bool shadowless = false;        // POV-Ray's shadowless light: its light passes through objects
+    bool media_interaction = true;  // false: media do not scatter its light (POV-Ray's flag)
+    double emitted_power = 0;       // W, average over channels
 
     double spot_factor(Vec3 direction) const { return spot ? spot->factor(direction) : 1; }
 

@@ -64,8 +64,9 @@ void check_device(RTCDevice device, const char* what) {
 
 // The light features the renderer does not render (povray_lights.cpp refuses its own: shadowless
 // area lights, fade powers other than 2). media_interaction,
-// media_attenuation and photon flags matter only with media and photon mapping, which a path
-// tracer does not use; area_illumination is what its area lights always do.
+// media_attenuation and photon flags matter only with media (both earn notes,
+// note_media_attenuation) and photon mapping, which a path tracer does not use;
+// area_illumination is what its area lights always do.
 void refuse_unrendered(const LightSource& light) {
     if (light.cylinder) refuse("cylinder light_source", light.location);
     if (light.parallel) refuse("parallel light_source", light.location);
@@ -83,7 +84,6 @@ void refuse_what_is_not_rendered(const SceneDescription& scene) {
     for (const LightSource& light : scene.lights) refuse_unrendered(light);
     const Atmosphere& atmosphere = scene.atmosphere;
     if (!atmosphere.rainbows.empty()) refuse("rainbow", atmosphere.rainbows.front().location);
-    if (!atmosphere.media.empty()) refuse("atmospheric media", atmosphere.media.front().location);
 }
 
 SceneUnits units_of(const SceneDescription& scene) {
@@ -109,11 +109,34 @@ void RenderScene::note_fake_caustics(const SceneDescription& scene) {
     }
 }
 
+// POV-Ray does not dim a light by the media on its way unless it says media_attenuation on
+// (the default is off); the renderer always does, as light is dimmed. A light with
+// media_interaction off is not scattered by media, as POV-Ray renders it (not physical).
+void RenderScene::note_media_attenuation(const SceneDescription& scene) {
+    if (!interiors_.any()) return;
+    for (const LightSource& light : scene.lights) {
+        if (light.media_attenuation) continue;
+        notes_.push_back(fmt::format(
+            "the light_source at {} is dimmed by the media its light crosses, as every light is "
+            "here (POV-Ray dims only lights with media_attenuation on)",
+            light.location.str()));
+        break;  // one note says it for every light
+    }
+    if (!interiors_.participating()) return;
+    for (const LightSource& light : scene.lights)
+        if (!light.media_interaction)
+            notes_.push_back(fmt::format(
+                "the light_source at {} has media_interaction off: media do not scatter its "
+                "light, as POV-Ray renders it (not physical)",
+                light.location.str()));
+}
+
 RenderScene::RenderScene(const SceneDescription& scene)
     : description_(scene),
       units_(units_of(scene)),
       sky_(scene, 1 / units_.per_square_metre()),
-      fog_(scene, 1 / units_.per_square_metre()) {
+      fog_(scene, 1 / units_.per_square_metre()),
+      interiors_(scene, 1 / units_.per_square_metre()) {
     refuse_what_is_not_rendered(scene);
     const double to_internal = 1 / units_.per_square_metre();
     // Refuses, at load, what has no physical reading.
@@ -130,6 +153,7 @@ RenderScene::RenderScene(const SceneDescription& scene)
         no_shadow_.push_back(o.no_shadow);
     }
     note_fake_caustics(scene);
+    note_media_attenuation(scene);
 
     device_ = rtcNewDevice(nullptr);
     if (!device_) throw Error("cannot create the Embree device");

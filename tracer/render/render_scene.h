@@ -12,6 +12,7 @@
 #include <embree3/rtcore.h>
 
 #include "tracer/render/fog.h"
+#include "tracer/render/interior_media.h"
 #include "tracer/render/material.h"
 #include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/sky.h"
@@ -74,6 +75,8 @@ public:
     const Sky& sky() const { return sky_; }
     // What eye paths see through between their vertices (fog.h).
     const FogMedium& fog() const { return fog_; }
+    // What fills the objects' insides (interior_media.h).
+    const Interiors& interiors() const { return interiors_; }
     // Offset that moves a ray origin off the surface it starts on (scene units).
     double epsilon() const { return epsilon_; }
 
@@ -117,6 +120,7 @@ private:
     // The materials of solids' parts that have an appearance of their own.
     void add_part_materials(double emission_scale);
     void note_fake_caustics(const SceneDescription& scene);
+    void note_media_attenuation(const SceneDescription& scene);
 
     std::vector<ObjectMaterial> materials_;
     std::vector<ObjectMaterial> part_materials_;
@@ -124,6 +128,7 @@ private:
     std::vector<uint8_t> no_shadow_;  // per object: read on every hit, apart from the big objects
     Sky sky_;
     FogMedium fog_;
+    Interiors interiors_;
     std::vector<std::string> notes_;
     double epsilon_ = 1e-6;
     RTCDevice device_ = nullptr;
