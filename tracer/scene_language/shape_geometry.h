@@ -8,7 +8,9 @@
 // polynomial along the line, its real roots bisected within Cauchy's bound), superellipsoid,
 // isosurface and blob (the implicit function sampled in 256 steps across the box, container or
 // bounds, sign changes bisected; an isosurface capped by its container), linear prism and
-// lathe (its profile's pieces as POV-Ray draws them, each turned: a sextic along the line).
+// lathe (its profile's pieces as POV-Ray draws them, each turned: a sextic along the line),
+// height_field of an image (its triangles, cell by cell along the line:
+// height_field_geometry.cpp).
 #pragma once
 
 #include <vector>
@@ -30,6 +32,11 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
 bool blob_bounds(const BlobShape& blob, Vec3& lower, Vec3& upper);
 // The box around a lathe: its profile's reach and heights.
 void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper);
+// A height field's lowest and highest sample, and (shape_hits and shape_inside of a field with
+// its grid) its crossings and inside.
+void height_field_range(const HeightGrid& grid, double& lowest, double& highest);
+void height_field_hits(const HeightFieldShape& field, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits);
+bool height_field_inside(const HeightFieldShape& field, Vec3 p);
 // Whether `p` is inside the shape (POV-Ray's inside: a plane's or disc's side against their
 // normal, a mesh by the parity of crossings along its inside_vector); false when not covered.
 bool shape_inside(const Shape& shape, Vec3 p, bool& inside);
