@@ -100,7 +100,11 @@ public:
     }
     // What image_mapping.h does not lay on space as POV-Ray does.
     void check_image_map(const ImageMap& image) const {
-        if (!image.pixels) fail("image_map of a function image", image.location);
+        if (!image.pixels)
+            fail(image.file_type == "function"
+                     ? std::string("image_map of a function image")
+                     : fmt::format("{} images (convert it to PNG, TGA or EXR)", image.file_type),
+                 image.location);
         for (const auto* amounts : {&image.filter, &image.transmit})
             for (const ImageMap::PaletteAmount& entry : *amounts)
                 if (entry.index >= 0 && image.pixels->indices.empty())

@@ -47,6 +47,8 @@ void refuse_unevaluable(const IsosurfaceShape& iso, Refuse&& refuse) {
 template <class Refuse>
 void refuse_unrendered(const HeightFieldShape& field, Refuse&& refuse) {
     if (field.function) refuse("height_field of a function");
+    if (!image_type_is_read(field.image_type))
+        refuse(fmt::format("{} images (convert it to PNG, TGA or EXR)", field.image_type));
     if (field.image_gamma != 0 || field.image_srgb)
         refuse("height_field image 'gamma' (POV-Ray's heights then follow no rule found)");
     if (!field.grid)

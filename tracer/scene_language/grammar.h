@@ -64,7 +64,8 @@ void parse_default(Parser& parser, const Token& directive);  // after #default
 // An image file of POV-Ray type `type` (png, jpeg, ...), also tried with that type's extension.
 std::string resolve_image_file(Parser& parser, const std::string& name, const Token& at,
                                const std::string& type, const std::string& what);
-// That file's pixels (image_file.h); a file that cannot be read fails at `at`.
+// That file's pixels (image_file.h); a file that cannot be read fails at `at`. Null for the
+// types not read (iff, pot, sys), which the renderer refuses.
 std::shared_ptr<const ImagePixels> read_scene_image(Parser& parser, const std::string& path,
                                                     const std::string& type, const Token& at);
 // `function { pattern { PATTERN } }`: after `pattern`.

@@ -141,6 +141,7 @@ std::shared_ptr<const std::vector<Colour>> image_colours(const ImageMap& image,
 
 std::shared_ptr<const ImagePixels> read_scene_image(Parser& p, const std::string& path,
                                                     const std::string& type, const Token& at) {
+    if (!image_type_is_read(type)) return nullptr;  // the renderer refuses it, naming the type
     try {
         return read_image_file(path, type);
     } catch (const Error& e) {

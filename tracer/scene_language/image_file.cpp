@@ -72,6 +72,10 @@ std::string one_line(std::string text) {
 
 }  // namespace
 
+bool image_type_is_read(const std::string& type) {
+    return type != "iff" && type != "pot" && type != "sys";
+}
+
 double ImageGamma::decode(double value) const {
     switch (kind) {
         case Kind::linear: return value;
@@ -93,7 +97,7 @@ double ImageGamma::encode(double linear) const {
 
 std::shared_ptr<const ImagePixels> read_image_file(const std::string& path,
                                                    const std::string& type) {
-    if (type == "iff" || type == "pot" || type == "sys")
+    if (!image_type_is_read(type))
         throw Error(fmt::format("not supported: {} images ({}): convert it to PNG, TGA or EXR",
                                 type, path));
     auto input = OIIO::ImageInput::open(path);

@@ -26,8 +26,8 @@ struct ImagePixels {
     // none).
     std::vector<float> values;
     bool has_alpha = false;
-    bool grey = false;      // one channel (or grey and alpha)
-    bool palette = false;   // the file's pixels are indices into a palette (PNG, GIF)
+    bool grey = false;     // one channel (or grey and alpha)
+    bool palette = false;  // the file's pixels are indices into a palette (PNG, GIF)
     // A PNG palette image's index of each pixel (rows from the top); empty otherwise.
     std::vector<uint8_t> indices;
     bool floating = false;  // HDR, EXR, float TIFF
@@ -37,6 +37,9 @@ struct ImagePixels {
         return &values[4 * (size_t(row) * size_t(width) + size_t(column))];
     }
 };
+
+// Whether files of POV-Ray's type keyword `type` are read (all but iff, pot and sys).
+bool image_type_is_read(const std::string& type);
 
 // Reads `path`; `type` is the POV-Ray type keyword written before it (png, jpeg, ...; empty:
 // none). Throws rayset::Error naming the file and what is wrong with it: not readable as an
