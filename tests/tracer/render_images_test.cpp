@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.h"
+
 #include "support/image_writing.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
@@ -220,6 +222,33 @@ TEST(RenderImages, HeightFieldsAgreeWithPovRayPixelForPixel) {
     if (fraction < 0) GTEST_SKIP() << "povray is not installed";
     std::printf("height_fields.pov: colours agree on %.4f of the pixels\n", fraction);
     EXPECT_GE(fraction, 0.98);
+}
+
+// What is not rendered is refused where the scene writes it, saying what to do.
+TEST(RenderImages, UnreadImageTypesAndFunctionFieldsAreRefused) {
+    test::ScratchDir dir;
+    auto error = [&](const std::string& scene) {
+        test::write_file(dir.file("s.pov"), scene);
+        try {
+            const RenderScene render(parse_scene_file(dir.file("s.pov")));
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    test::write_file(dir.file("a.pot"), "GIF87a");
+    test::write_file(dir.file("a.iff"), "FORM");
+    EXPECT_EQ(error("height_field { pot \"a.pot\" }"),
+              "not supported: pot images (convert it to PNG, TGA or EXR) at " + dir.file("s.pov") +
+                  ":1:1");
+    const std::string iff =
+        error("plane { z, 0 pigment { image_map { iff \"a.iff\" } } finish { emission 1 } }");
+    EXPECT_NE(iff.find("not supported: iff images (convert it to PNG, TGA or EXR) at "),
+              std::string::npos)
+        << iff;
+    EXPECT_NE(error("height_field { function 4, 4 { x * y } }")
+                  .find("not supported: height_field of a function"),
+              std::string::npos);
 }
 
 }  // namespace

@@ -107,7 +107,8 @@ void parse_height_field_image(Parser& p, HeightFieldShape& field) {
             at);
     field.image_path =
         resolve_image_file(p, p.parse_string(), at, field.image_type, "height_field image");
-    field.grid = heights_from_image(*read_scene_image(p, field.image_path, field.image_type, at));
+    if (const auto pixels = read_scene_image(p, field.image_path, field.image_type, at))
+        field.grid = heights_from_image(*pixels);
     for (;;) {
         if (p.accept(Keyword::gamma)) {
             if (p.accept(Keyword::srgb))
