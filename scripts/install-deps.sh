@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libceres-dev libopenexr-dev libvtk9-dev
   libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev nlohmann-json3-dev
-  libeigen3-dev libpng-dev libtinyobjloader-dev libfreetype-dev xvfb xauth time
+  libeigen3-dev libpng-dev libtinyobjloader-dev libfreetype-dev libopenimageio-dev xvfb xauth time
   # Open MPI: raytrace across processes and machines (mpirun -n N raytrace ...)
   openmpi-bin libopenmpi-dev
   # POV-Ray 3.7: the reference renderer of the framing and differential tests, its include

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "scene_language/scene_test_support.h"
+#include "support/image_writing.h"
 #include "support/test_support.h"
 #include "tracer/scene_language/grammar.h"
 #include "tracer/scene_language/scene_language.h"
@@ -175,7 +176,7 @@ TEST(AppearancePigments, PigmentMapEntriesAndTheirTransforms) {
 
 TEST(AppearancePigments, ImageMapAndItsModifiers) {
     test::ScratchDir dir;
-    test::write_file(dir.file("a.png"), "not read while parsing");
+    test::write_image(dir.file("a.png"), 1, 1, 3, {0.5f, 0.5f, 0.5f});
     const std::string text =
         "sphere { 0, 1 pigment { image_map { png \"a.png\" gamma srgb premultiplied on map_type 1 "
         "once interpolate 2 filter 3, 0.5 transmit all 0.25 } rotate x } }";
@@ -571,10 +572,10 @@ TEST(AppearanceTextures, PatternedTexturesTilesAndMaterialMaps) {
     EXPECT_EQ(tiles.map->entries[1].texture->kind, Texture::Kind::plain);
     // material_map: the textures are the list.
     test::ScratchDir dir;
-    test::write_file(dir.file("m.gif"), "x");
+    test::write_image(dir.file("m.png"), 1, 1, 3, {0, 0, 0});
     test::write_file(
         dir.file("s.pov"),
-        "sphere { 0, 1 texture { material_map { gif \"m.gif\" map_type 2 texture { "
+        "sphere { 0, 1 texture { material_map { png \"m.png\" map_type 2 texture { "
         "pigment { rgb 1 } } texture { pigment { rgb 0 } } texture { finish { phong 1 } } "
         "} scale 30 } }");
     const Texture mm = *parse_scene_file(dir.file("s.pov")).objects.at(0).appearance.texture;

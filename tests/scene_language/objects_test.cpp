@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "scene_language/scene_test_support.h"
+#include "support/image_writing.h"
 #include "support/test_support.h"
 #include "tracer/scene_language/functions.h"
 #include "tracer/scene_language/scene_language.h"
@@ -392,11 +393,12 @@ TEST(ObjectsFields, BlobWithItsComponents) {
 
 TEST(ObjectsFields, HeightFieldFromAnImageOrAFunction) {
     test::ScratchDir dir;
-    test::write_file(dir.file("hf.png"), "not read while parsing");
+    test::write_image(dir.file("hf.png"), 2, 2, 1, {0, 0.5f, 0.25f, 1});
+    test::write_image(dir.file("hf.exr"), 2, 2, 1, {0, 0.5f, 0.25f, 1}, true);
     test::write_file(dir.file("scene.pov"),
                      "height_field { png \"hf.png\" gamma 2.2 smooth water_level 0.2 }\n"
                      "height_field { \"hf.png\" gamma srgb premultiplied hierarchy off }\n"
-                     "height_field { exr \"hf.png\" }\n"
+                     "height_field { exr \"hf.exr\" }\n"
                      "height_field { function 8, 4 { x * y } }\n");
     const SceneDescription s = parse_scene_file(dir.file("scene.pov"));
     ASSERT_EQ(s.objects.size(), 4u);

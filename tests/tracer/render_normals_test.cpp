@@ -51,42 +51,11 @@ TEST(NormalPatterns, TiltDownTheSlopeByPovRaysRule) {
     EXPECT_NEAR(wall.y, 0, 1e-12);
 }
 
-// Each pixel's colour as POV-Ray shows it: the pigment under one light of colour 1, without
-// anti-aliasing, in linear 8-bit output.
-struct LitTiles {
-    std::vector<uint8_t> povray;
-    std::vector<Rgb> ours;
-    std::vector<int> object;  // what each pixel's centre ray sees (-1: none)
-};
-
-bool render_lit_tiles(const std::string& scene_name, Vec3 light, int width, int height,
-                      LitTiles& out) {
-    const std::string scene_file = test::tracer_scene(scene_name);
-    std::string message;
-    if (!test::povray_render(scene_file, width, height, out.povray, message)) {
-        std::printf("%s\n", message.c_str());
-        return false;
-    }
-    const RenderScene scene(parse_scene_file(scene_file));
-    Material scratch;
-    for (const SurfaceHit& hit : centre_hits(scene, width, height)) {
-        out.object.push_back(hit.object);
-        if (hit.object < 0) {
-            out.ours.push_back({});
-            continue;
-        }
-        const Material& material = scene.material(hit, scratch);
-        const Bsdf bsdf(material, hit.normal, hit.shading_normal, hit.normal);
-        const double cos_light = dot(bsdf.shading_normal(), normalized(light - hit.point));
-        out.ours.push_back(std::max(0.0, cos_light) * material.diffuse);
-    }
-    return true;
-}
-
 TEST(NormalPatterns, LitTilesAgreeWithPovRayPixelForPixel) {
     const int width = 240, height = 180;
-    LitTiles tiles;
-    if (!render_lit_tiles("normals.pov", 1e5 * Vec3{-3, 8, -2}, width, height, tiles))
+    test::LitTiles tiles;
+    if (!test::render_lit_tiles(test::tracer_scene("normals.pov"), 1e5 * Vec3{-3, 8, -2}, width,
+                                height, tiles))
         GTEST_SKIP() << "povray is not installed";
     int agree = 0;
     for (size_t i = 0; i < tiles.ours.size(); ++i)
@@ -105,8 +74,9 @@ TEST(NormalPatterns, LitTilesAgreeWithPovRayPixelForPixel) {
 // sd / sqrt(n) and the standard deviation's relative one 1 / sqrt(2 n), for each renderer.
 TEST(NormalPatterns, NoiseTiltsAgreeWithPovRayInMeanAndSpread) {
     const int width = 720, height = 480;
-    LitTiles tiles;
-    if (!render_lit_tiles("normal_noise.pov", 1e6 * Vec3{0, 1, -1}, width, height, tiles))
+    test::LitTiles tiles;
+    if (!test::render_lit_tiles(test::tracer_scene("normal_noise.pov"), 1e6 * Vec3{0, 1, -1}, width,
+                                height, tiles))
         GTEST_SKIP() << "povray is not installed";
     struct Tile {
         const char* name;

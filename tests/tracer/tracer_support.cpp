@@ -1,5 +1,6 @@
 #include "tracer/tracer_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,7 +12,9 @@
 #include "converters/analytic/synth.h"
 #include "lightmodel/model_support.h"
 #include "support/test_support.h"
+#include "tracer/render/renderer.h"
 #include "tracer/render/rgb.h"
+#include "tracer/scene_language/scene_language.h"
 
 namespace rayset::test {
 
@@ -143,6 +146,29 @@ bool agrees_with_povray(Rgb ours, const uint8_t* pov) {
     return close(ours.red, pov[0]) && close(ours.green, pov[1]) && close(ours.blue, pov[2]);
 }
 
+bool render_lit_tiles(const std::string& scene_file, Vec3 light, int width, int height,
+                      LitTiles& out) {
+    std::string message;
+    if (!povray_render(scene_file, width, height, out.povray, message)) {
+        std::printf("%s\n", message.c_str());
+        return false;
+    }
+    const tracer::RenderScene scene(tracer::parse_scene_file(scene_file));
+    tracer::Material scratch;
+    for (const tracer::SurfaceHit& hit : tracer::centre_hits(scene, width, height)) {
+        out.object.push_back(hit.object);
+        if (hit.object < 0) {
+            out.ours.push_back({});
+            continue;
+        }
+        const tracer::Material& material = scene.material(hit, scratch);
+        const tracer::Bsdf bsdf(material, hit.normal, hit.shading_normal, hit.normal);
+        const double cos_light = dot(bsdf.shading_normal(), normalized(light - hit.point));
+        out.ours.push_back(std::max(0.0, cos_light) * material.diffuse);
+    }
+    return true;
+}
+
 std::string tracer_scene(const std::string& name) {
     return (std::filesystem::path(__FILE__).parent_path() / "scenes" / name).string();
 }
@@ -157,7 +183,8 @@ bool povray_render(const std::string& scene, int width, int height, std::vector<
     }
     ScratchDir dir;
     const CommandResult pov =
-        run_command("cd '" + dir.path().string() + "' && povray +I'" + scene + "' +W" +
+        run_command("cd '" + dir.path().string() + "' && povray +I'" + scene + "' +L'" +
+                    std::filesystem::path(scene).parent_path().string() + "' +W" +
                     std::to_string(width) + " +H" + std::to_string(height) +
                     " +Opov.ppm +FP -D -GA File_Gamma=" + std::to_string(file_gamma) + " 2>&1");
     int w = 0, h = 0;

@@ -68,13 +68,25 @@ std::string disk_over_black_floor(const std::string& source, const std::string& 
 std::string cornell_with_receiver();
 
 // POV-Ray's own render of `scene` (no anti-aliasing, output encoded with `file_gamma`: 1 is
-// linear), read back as 8-bit RGB rows from the top. False with `message` set when povray is
-// not installed (the test skips, saying so); std::runtime_error when it fails.
+// linear; the scene's folder on its library path, where files it names are found), read back as
+// 8-bit RGB rows from the top. False with `message` set when povray is not installed (the test
+// skips, saying so); std::runtime_error when it fails.
 bool povray_render(const std::string& scene, int width, int height, std::vector<uint8_t>& rgb,
                    std::string& message, double file_gamma = 1);
 // Whether our colour (POV-Ray's colour scale, 1 = white) agrees with POV-Ray's 8-bit pixel
 // `pov` (three bytes): every channel within 2% of the value and half an 8-bit step.
 bool agrees_with_povray(Rgb ours, const uint8_t* pov);
+// Each pixel's colour as POV-Ray shows `scene_file` (objects of diffuse finishes under one
+// distant light at `light`, colour 1, no shadows) and as computed here from the hit its centre
+// ray makes, shaded as POV-Ray shades it: the pigment times N'.L, N' the BSDF's tilted
+// shading normal. False (with a note printed) when povray is not installed.
+struct LitTiles {
+    std::vector<uint8_t> povray;
+    std::vector<Rgb> ours;
+    std::vector<int> object;  // what each pixel's centre ray sees (-1: none)
+};
+bool render_lit_tiles(const std::string& scene_file, Vec3 light, int width, int height,
+                      LitTiles& out);
 // The path of a scene of tests/tracer/scenes/.
 std::string tracer_scene(const std::string& name);
 

@@ -89,7 +89,9 @@ public:
         check_pigment(texture.pigment);
         if (texture.normal && !normal_is_evaluable(*texture.normal)) {
             const Pattern& pattern = *texture.normal->pattern;
-            const char* detail = !texture.normal->map          ? ""
+            const char* detail = pattern.kind == PatternKind::bump_map
+                                     ? " other than map_type 0 of colours"
+                                 : !texture.normal->map        ? ""
                                  : list_size(pattern.kind) > 0 ? " with a list of normals"
                                                                : " with a normal_map or slope_map";
             fail(fmt::format("normal '{}'{}", pattern_name(pattern.kind), detail),
@@ -98,11 +100,32 @@ public:
         check_finish(*texture.finish);
     }
     // A patterned pigment is rendered where its colour is known exactly at every point
-    // (evaluate_pigment: no noise, turbulence, image or surface coordinates).
+    // (evaluate_pigment: no surface coordinates, function images or unevaluated patterns).
     void check_pigment(const Pigment& pigment) const {
+        if (pigment.pattern->kind == PatternKind::image_map && pigment.pattern->image)
+            check_image_map(*pigment.pattern->image);
         if (pigment.pattern->kind != PatternKind::plain && !pigment_is_evaluable(pigment))
             fail(fmt::format("pigment pattern '{}'", pattern_name(pigment.pattern->kind)),
                  pigment.pattern->location);
+    }
+    // What image_mapping.h does not lay on space as POV-Ray does.
+    void check_image_map(const ImageMap& image) const {
+        if (!image.pixels)
+            fail(image.file_type == "function"
+                     ? std::string("image_map of a function image")
+                     : fmt::format("{} images (convert it to PNG, TGA or EXR)", image.file_type),
+                 image.location);
+        for (const auto* amounts : {&image.filter, &image.transmit})
+            for (const ImageMap::PaletteAmount& entry : *amounts)
+                if (entry.index >= 0 && image.pixels->indices.empty())
+                    fail(
+                        "image_map filter or transmit of a palette entry of an image other "
+                        "than a PNG palette image",
+                        image.location);
+        if (image.interpolate == 3) fail("image_map interpolate 3 (bicubic)", image.location);
+        if (image.map_type != 0 && image.map_type != 1 && image.map_type != 2 &&
+            image.map_type != 5)
+            fail(fmt::format("image_map map_type {}", image.map_type), image.location);
     }
     void check_finish(const Finish& f) const {
         struct Unrendered {

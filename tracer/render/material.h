@@ -55,9 +55,9 @@ const Material& white_lambertian();
 // An object's material at its surface points: one material for a texture the same everywhere;
 // else the material made at the point (world coordinates, where the object's textures are
 // placed) from its pigment patterns, normal patterns, layers and texture patterns. Patterns
-// the scene language cannot evaluate (images, surface coordinates, ...) are refused. The normal
-// patterns of a texture's parts tilt its one shading normal together, each weighted by the
-// share of its part, as the lobes are.
+// the scene language cannot evaluate (surface coordinates, function images, ...) are refused.
+// The normal patterns of a texture's parts tilt its one shading normal together, each weighted
+// by the share of its part, as the lobes are.
 class ObjectMaterial {
 public:
     // Refuses what the renderer does not render of the object's appearance (Error, "not

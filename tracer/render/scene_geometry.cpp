@@ -43,6 +43,20 @@ void refuse_unevaluable(const IsosurfaceShape& iso, Refuse&& refuse) {
     }
 }
 
+// Height fields are rendered from an image's heights as read (HeightFieldShape::grid).
+template <class Refuse>
+void refuse_unrendered(const HeightFieldShape& field, Refuse&& refuse) {
+    if (field.function) refuse("height_field of a function");
+    if (!image_type_is_read(field.image_type))
+        refuse(fmt::format("{} images (convert it to PNG, TGA or EXR)", field.image_type));
+    if (field.image_gamma != 0 || field.image_srgb)
+        refuse("height_field image 'gamma' (POV-Ray's heights then follow no rule found)");
+    if (!field.grid)
+        refuse(
+            "height_field of a palette image (its indices are not read: save it as a grey "
+            "image) or of a single row or column of pixels");
+}
+
 void refuse_unrendered(const ObjectInstance& o) {
     const std::string where = o.location.str();
     auto refuse = [&](const std::string& feature) {
@@ -62,11 +76,12 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s) ||
         std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s) ||
         std::holds_alternative<JuliaFractalShape>(s) ||
-        std::holds_alternative<BicubicPatchShape>(s);
+        std::holds_alternative<BicubicPatchShape>(s) || std::holds_alternative<HeightFieldShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
     if (const auto* julia = std::get_if<JuliaFractalShape>(&s);
         julia && !julia_default_slice(*julia))
         refuse("julia_fractal sliced other than by w = distance (slice <0, 0, 0, 1>)");
+    if (const auto* field = std::get_if<HeightFieldShape>(&s)) refuse_unrendered(*field, refuse);
     if (const auto* prism = std::get_if<PrismShape>(&s);
         prism && prism->spline != SplineKind::linear)
         refuse("prism of a quadratic, cubic or bezier spline (only linear_spline)");
@@ -124,7 +139,8 @@ bool analytic(const Shape& s) {
            std::holds_alternative<IsosurfaceShape>(s) || std::holds_alternative<BlobShape>(s) ||
            std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s) ||
            std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s) ||
-           std::holds_alternative<JuliaFractalShape>(s);
+           std::holds_alternative<JuliaFractalShape>(s) ||
+           std::holds_alternative<HeightFieldShape>(s);
 }
 
 struct Box3 {

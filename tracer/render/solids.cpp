@@ -201,6 +201,11 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
         b.add(t->a), b.add(t->b), b.add(t->c);
     } else if (const auto* m = std::get_if<MeshShape>(&shape)) {
         for (const Vec3& v : m->mesh->vertices) b.add(v);
+    } else if (const auto* field = std::get_if<HeightFieldShape>(&shape)) {
+        if (!field->grid) return false;
+        double lowest = 0, highest = 0;
+        height_field_range(*field->grid, lowest, highest);
+        b.add({0, std::min(0.0, lowest), 0}), b.add({1, std::max(1.0, highest), 1});
     } else if (const auto* t = std::get_if<TextShape>(&shape)) {
         if (!t->outline) return false;
         b.add({t->outline->min_x, t->outline->min_y, std::min(0.0, t->thickness)});

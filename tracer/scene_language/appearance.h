@@ -13,6 +13,7 @@
 
 #include "core/colour.h"
 #include "tracer/scene_language/copy_on_write.h"
+#include "tracer/scene_language/image_file.h"
 #include "tracer/scene_language/source_location.h"
 #include "tracer/scene_language/transform.h"
 #include "tracer/scene_language/values.h"
@@ -164,6 +165,12 @@ struct ImageMap {
     bool use_alpha = false;   // image_pattern: the alpha channel as the value
     bool use_index = false;   // bump_map: palette index instead of brightness
     SourceLocation location;  // the image_map / bump_map / ... keyword
+    // The file's pixels, read while parsing (null for a function image).
+    std::shared_ptr<const ImagePixels> pixels;
+    // Each pixel's colour (rows from the top) in the scene's colour numbers: decoded with the
+    // file's gamma or the one written, encoded again with the scene's assumed_gamma as it was
+    // when the image was read; alpha as transmit; `filter all` and `transmit all` added.
+    std::shared_ptr<const std::vector<Colour>> colours;
 };
 
 struct CrackleParameters {

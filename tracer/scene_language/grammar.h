@@ -64,6 +64,10 @@ void parse_default(Parser& parser, const Token& directive);  // after #default
 // An image file of POV-Ray type `type` (png, jpeg, ...), also tried with that type's extension.
 std::string resolve_image_file(Parser& parser, const std::string& name, const Token& at,
                                const std::string& type, const std::string& what);
+// That file's pixels (image_file.h); a file that cannot be read fails at `at`. Null for the
+// types not read (iff, pot, sys), which the renderer refuses.
+std::shared_ptr<const ImagePixels> read_scene_image(Parser& parser, const std::string& path,
+                                                    const std::string& type, const Token& at);
 // `function { pattern { PATTERN } }`: after `pattern`.
 std::shared_ptr<const Pattern> parse_function_pattern(Parser& parser, const Token& keyword);
 // A pattern's value or a pigment's colour at a point, for pattern and pigment functions and
@@ -72,7 +76,8 @@ std::shared_ptr<const Pattern> parse_function_pattern(Parser& parser, const Toke
 bool evaluate_pattern(const Pattern& pattern, Vec3 point, double& value);
 bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour);
 // Whether evaluate_pattern / evaluate_pigment know the value. What they cannot evaluate
-// (images, surface coordinates, unsupported patterns) they cannot anywhere, so one point tells.
+// (function images, surface coordinates, unsupported patterns) they cannot anywhere, so one
+// point tells.
 bool pattern_is_evaluable(const Pattern& pattern);
 bool pigment_is_evaluable(const Pigment& pigment);
 // The point in a pattern's own space (its warps undone, its turbulence applied), and the

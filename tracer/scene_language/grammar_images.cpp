@@ -3,7 +3,9 @@
 // bitmap modifiers.
 #include <fmt/format.h>
 
+#include "core/error.h"
 #include "tracer/scene_language/appearance_grammar.h"
+#include "tracer/scene_language/parser.h"
 
 namespace rayset::tracer {
 namespace {
@@ -39,6 +41,7 @@ void parse_image_source(Parser& p, ImageMap& image, const Token& keyword) {
             name_token, fmt::format("a file name after the bitmap type in '{}'", p.word(keyword)));
     const std::string name = p.parse_string();
     image.path = resolve_image_file(p, name, name_token, image.file_type, "image file");
+    image.pixels = read_scene_image(p, image.path, image.file_type, name_token);
     // gamma and premultiplied belong right after the file name.
     for (;;) {
         if (p.accept(Keyword::gamma)) {
@@ -93,7 +96,58 @@ bool parse_bitmap_modifier(Parser& p, ImageMap& image, const Token& keyword) {
     return true;
 }
 
+// ImageMap::colours: what each pixel shows.
+std::shared_ptr<const std::vector<Colour>> image_colours(const ImageMap& image,
+                                                         const GlobalSettings& global) {
+    const ImagePixels& pixels = *image.pixels;
+    ImageGamma gamma = pixels.gamma;
+    if (image.gamma_given)
+        gamma = image.gamma_srgb ? ImageGamma{ImageGamma::Kind::srgb, 1}
+                                 : ImageGamma{ImageGamma::Kind::power, image.gamma};
+    // The scene's colour numbers encode light with its assumed_gamma.
+    const ImageGamma scene{
+        global.assumed_gamma_srgb ? ImageGamma::Kind::srgb : ImageGamma::Kind::power,
+        global.assumed_gamma};
+    double filter_all = 0, transmit_all = 0;
+    for (const ImageMap::PaletteAmount& entry : image.filter)
+        if (entry.index < 0) filter_all = entry.amount;
+    for (const ImageMap::PaletteAmount& entry : image.transmit)
+        if (entry.index < 0) transmit_all = entry.amount;
+    auto colours = std::make_shared<std::vector<Colour>>();
+    colours->reserve(size_t(pixels.width) * size_t(pixels.height));
+    for (int row = 0; row < pixels.height; ++row)
+        for (int column = 0; column < pixels.width; ++column) {
+            const float* v = pixels.pixel(column, row);
+            Colour c;
+            c.red = scene.encode(gamma.decode(v[0]));
+            c.green = scene.encode(gamma.decode(v[1]));
+            c.blue = scene.encode(gamma.decode(v[2]));
+            c.filter = filter_all;
+            c.transmit = pixels.has_alpha ? 1 - v[3] : transmit_all;
+            if (!pixels.indices.empty()) {
+                const int index =
+                    pixels.indices[size_t(row) * size_t(pixels.width) + size_t(column)];
+                for (const ImageMap::PaletteAmount& entry : image.filter)
+                    if (entry.index == index) c.filter = entry.amount;
+                for (const ImageMap::PaletteAmount& entry : image.transmit)
+                    if (entry.index == index) c.transmit = entry.amount;
+            }
+            colours->push_back(c);
+        }
+    return colours;
+}
+
 }  // namespace
+
+std::shared_ptr<const ImagePixels> read_scene_image(Parser& p, const std::string& path,
+                                                    const std::string& type, const Token& at) {
+    if (!image_type_is_read(type)) return nullptr;  // the renderer refuses it, naming the type
+    try {
+        return read_image_file(path, type);
+    } catch (const Error& e) {
+        p.fail(at, e.what());
+    }
+}
 
 std::string resolve_image_file(Parser& p, const std::string& name, const Token& at,
                                const std::string& type, const std::string& what) {
@@ -130,6 +184,7 @@ std::shared_ptr<const ImageMap> parse_image(Parser& p, const Token& keyword,
         p.fail_expected(fmt::format("a bitmap type and file name in '{}'", p.word(keyword)),
                         p.peek());
     p.expect_close(keyword, open);
+    if (image->pixels) image->colours = image_colours(*image, p.scene().global);
     return image;
 }
 

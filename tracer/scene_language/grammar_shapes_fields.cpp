@@ -53,8 +53,39 @@ BlobComponent parse_blob_component(Parser& p, const Token& keyword) {
     return component;
 }
 
+// The heights POV-Ray 3.7 takes from an image (read back with trace): a grey image's values
+// over their maximum (8 or 16 bits), an 8-bit colour image's red and green as the high and low
+// bytes of a 16-bit number, other colour images' grey 0.297 red + 0.589 green + 0.114 blue.
+// A palette image's index is the high byte (POV-Ray's trace of a field of index 3: 3 x 256 /
+// 65535); the indices of palette images other than PNG are not read (null: not supported).
+std::shared_ptr<const HeightGrid> heights_from_image(const ImagePixels& pixels) {
+    if ((pixels.palette && pixels.indices.empty()) || pixels.width < 2 || pixels.height < 2)
+        return nullptr;
+    auto grid = std::make_shared<HeightGrid>();
+    grid->columns = pixels.width;
+    grid->rows = pixels.height;
+    grid->heights.reserve(size_t(pixels.width) * size_t(pixels.height));
+    for (int row = pixels.height - 1; row >= 0; --row)
+        for (int column = 0; column < pixels.width; ++column) {
+            const float* v = pixels.pixel(column, row);
+            double height = 0;
+            if (pixels.palette)
+                height = 256.0 *
+                         pixels.indices[size_t(row) * size_t(pixels.width) + size_t(column)] /
+                         65535;
+            else if (pixels.grey)
+                height = v[0];
+            else if (pixels.bits == 8 && !pixels.floating)
+                height = (std::round(255.0 * v[0]) * 256 + std::round(255.0 * v[1])) / 65535;
+            else
+                height = 0.297 * v[0] + 0.589 * v[1] + 0.114 * v[2];
+            grid->heights.push_back(height);
+        }
+    return grid;
+}
+
 // height_field { [TYPE] "file" [gamma G | gamma srgb] [premultiplied B] ... }: the image is
-// resolved and recorded, not read.
+// resolved and read.
 void parse_height_field_image(Parser& p, HeightFieldShape& field) {
     static const char* const types[] = {"exr", "gif", "hdr", "iff", "jpeg", "pgm", "png",
                                         "pot", "ppm", "sys", "tga", "tiff", "bmp"};
@@ -76,6 +107,8 @@ void parse_height_field_image(Parser& p, HeightFieldShape& field) {
             at);
     field.image_path =
         resolve_image_file(p, p.parse_string(), at, field.image_type, "height_field image");
+    if (const auto pixels = read_scene_image(p, field.image_path, field.image_type, at))
+        field.grid = heights_from_image(*pixels);
     for (;;) {
         if (p.accept(Keyword::gamma)) {
             if (p.accept(Keyword::srgb))

@@ -1,9 +1,10 @@
 // Evaluation of patterns and pigments at a point (pattern and pigment functions, and the
-// renderer's textures): exact for solid colours and for the patterns that need no noise, image
-// or surface: boxed, brick, checker, cubic, cylindrical, function, gradient, hexagon, julia and
-// mandel (exponent 2), leopard, marble, wood, object (where the object can answer), onion,
-// pigment_pattern (of such pigments), planar, radial, spherical, spiral1, square and triangular,
-// through transforms, frequency, phase, waveforms and colour, pigment and list maps. The noise
+// renderer's textures): exact for solid colours, image maps (image_mapping.h) and the patterns
+// that need no noise or surface: boxed, brick, checker, cubic, cylindrical, function, gradient,
+// hexagon, julia and mandel (exponent 2), leopard, marble, wood, object (where the object can
+// answer), onion, pigment_pattern (of such pigments), planar, radial, spherical, spiral1, square
+// and triangular, through transforms, frequency, phase, waveforms and colour, pigment and list
+// maps. The noise
 // patterns (agate, bozo, bumps, crackle, dents, granite, spotted, wrinkles) and turbulence agree
 // with POV-Ray's in distribution and spectrum, not point for point (noise.h). Everything else
 // returns false.
@@ -18,6 +19,7 @@
 #include "core/geometry.h"
 #include "tracer/scene_language/appearance_grammar.h"
 #include "tracer/scene_language/functions.h"
+#include "tracer/scene_language/image_mapping.h"
 #include "tracer/scene_language/noise.h"
 #include "tracer/scene_language/object_tree.h"
 
@@ -384,6 +386,11 @@ bool evaluate_pigment(const Pigment& pigment, Vec3 point, Colour& colour) {
     if (pigment.pattern->kind == PatternKind::plain) {
         colour = pigment.colour;
         return true;
+    }
+    if (pigment.pattern->kind == PatternKind::image_map) {
+        const Pattern& pattern = *pigment.pattern;
+        return pattern.image && pattern_space_point(pattern, point) &&
+               image_map_colour(*pattern.image, point, colour);
     }
     const BlendMap& map = pigment.map ? *pigment.map : builtin_colour_map(pigment.pattern->kind);
     if (map.kind != BlendMapKind::colour && map.kind != BlendMapKind::pigment) return false;

@@ -987,6 +987,11 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
         inside = text_inside(*text, p);
     } else if (const auto* poly = std::get_if<PolynomialShape>(&shape)) {
         inside = polynomial_value(*poly, p) < 0;
+    } else if (const auto* field = std::get_if<HeightFieldShape>(&shape)) {
+        // Below the surface over the unit square; water_level's inside is not POV-Ray's plain
+        // rule (its inside() counts points above the surface but below the water as in).
+        if (!field->grid || field->water_level > 0) return false;
+        inside = height_field_inside(*field, p);
     } else if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
         // POV-Ray counts the crossings of a ray along inside_vector: odd is inside.
         if (!mesh->mesh->has_inside_vector) return false;
@@ -1045,6 +1050,9 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
     } else if (const auto* text = std::get_if<TextShape>(&shape)) {
         if (!text->outline) return false;
         text_hits(*text, o, d, hits);
+    } else if (const auto* field = std::get_if<HeightFieldShape>(&shape)) {
+        if (!field->grid) return false;
+        height_field_hits(*field, o, d, hits);
     } else if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
         if (!mesh->mesh->normals.empty()) return false;  // smooth triangles' normals: not here
         std::vector<ShapeHit> all;

@@ -9,9 +9,10 @@
 // isosurface and blob (the implicit function sampled in 256 steps across the box, container or
 // bounds, sign changes bisected; an isosurface capped by its container), linear prism, lathe
 // (its profile's pieces as POV-Ray draws them, each turned: a sextic along the line), sor (r^2 a
-// cubic in the height: a cubic along the line), polygon (even-odd over its loops) and
+// cubic in the height: a cubic along the line), polygon (even-odd over its loops),
 // julia_fractal (the set as its orbits' escape within max_iteration steps says, sampled in 256
-// steps across its ball of radius 2 and bisected; slices w = const only).
+// steps across its ball of radius 2 and bisected; slices w = const only) and height_field of an
+// image (its triangles, cell by cell along the line: height_field_geometry.cpp).
 #pragma once
 
 #include <vector>
@@ -37,6 +38,11 @@ void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper);
 bool julia_default_slice(const JuliaFractalShape& julia);
 // The box around a surface of revolution.
 void sor_bounds(const SorShape& sor, Vec3& lower, Vec3& upper);
+// A height field's lowest and highest sample, and (shape_hits and shape_inside of a field with
+// its grid) its crossings and inside.
+void height_field_range(const HeightGrid& grid, double& lowest, double& highest);
+void height_field_hits(const HeightFieldShape& field, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits);
+bool height_field_inside(const HeightFieldShape& field, Vec3 p);
 // Whether `p` is inside the shape (POV-Ray's inside: a plane's or disc's side against their
 // normal, a mesh by the parity of crossings along its inside_vector); false when not covered.
 bool shape_inside(const Shape& shape, Vec3 p, bool& inside);

@@ -80,6 +80,17 @@ struct BlobShape {
     bool hierarchy = true;
 };
 
+// A height field's samples: column i at x = i / (columns - 1), row j at z = j / (rows - 1) (the
+// image's bottom row at z = 0), each cell two triangles split along its diagonal from
+// (i, j + 1) to (i + 1, j), as POV-Ray splits them (its trace of a field of one raised corner).
+struct HeightGrid {
+    int columns = 0, rows = 0;
+    std::vector<double> heights;  // row by row from z = 0
+    double at(int column, int row) const {
+        return heights[size_t(row) * size_t(columns) + size_t(column)];
+    }
+};
+
 // The unit square x, z in [0, 1] with heights y in [0, 1] from an image or a function.
 struct HeightFieldShape {
     // From an image: its type keyword (gif, tga, pot, png, pgm, ppm, jpeg, tiff, sys, exr, hdr,
@@ -93,6 +104,8 @@ struct HeightFieldShape {
     // From `function W, H { ... }`: f(x, y) sampled on a W x H grid over [0, 1]^2.
     FunctionRef function;
     int function_width = 0, function_height = 0;
+    // The heights, read from the image while parsing (POV-Ray's rules: heights_from_image).
+    std::shared_ptr<const HeightGrid> grid;
     bool smooth = false;     // interpolated normals
     double water_level = 0;  // heights below it are left out
     bool hierarchy = true;
@@ -185,7 +198,7 @@ struct TextShape {
     int internal_font = -1;  // `internal N`: POV-Ray's built-in font N (0..3; others act as 0)
     std::string text;
     double thickness = 1;
-    Vec3 offset;  // extra spacing added after each character
+    Vec3 offset;                                 // extra spacing added after each character
     std::shared_ptr<const TextOutline> outline;  // of a ttf font (text_outline.h)
 };
 

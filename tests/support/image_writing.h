@@ -1,0 +1,16 @@
+// Small images written by the tests that need them (OpenImageIO), so that no binary image
+// lives in the repository.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rayset::test {
+
+// Writes `values` (`channels` per pixel, rows from the top, in [0, 1] unless `floating`) in the
+// format of the path's extension: 8 bits per channel, or 32-bit floats where the format
+// holds them (`floating`: EXR, HDR). Throws std::runtime_error when it cannot.
+void write_image(const std::string& path, int width, int height, int channels,
+                 const std::vector<float>& values, bool floating = false);
+
+}  // namespace rayset::test

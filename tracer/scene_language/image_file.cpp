@@ -1,0 +1,155 @@
+// Image files read through OpenImageIO (image_file.h).
+#include "tracer/scene_language/image_file.h"
+
+#include <cmath>
+#include <csetjmp>
+#include <cstdio>
+#include <fstream>
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+#include <png.h>
+
+#include "core/colour.h"
+#include "core/error.h"
+
+namespace rayset::tracer {
+namespace {
+
+// PNG keeps its colour type in the header (byte 25); 3 is a palette. OpenImageIO expands
+// palettes to colours, so the indices POV-Ray reads from them (height fields, palette filter
+// and transmit) are read here with libpng.
+bool png_has_palette(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char header[26] = {};
+    if (!in.read(header, sizeof header)) return false;
+    return std::string(header + 1, 3) == "PNG" && header[25] == 3;
+}
+
+// libpng reports errors by longjmp: no C++ object is made between setjmp and the end.
+bool read_png_indices(std::FILE* file, int width, int height, uint8_t* indices) {
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    if (!png) return false;
+    png_infop info = png_create_info_struct(png);
+    if (!info || setjmp(png_jmpbuf(png))) {
+        png_destroy_read_struct(&png, &info, nullptr);
+        return false;
+    }
+    png_init_io(png, file);
+    png_read_info(png, info);
+    if (png_get_color_type(png, info) != PNG_COLOR_TYPE_PALETTE ||
+        png_get_image_width(png, info) != png_uint_32(width) ||
+        png_get_image_height(png, info) != png_uint_32(height)) {
+        png_destroy_read_struct(&png, &info, nullptr);
+        return false;
+    }
+    png_set_packing(png);  // 1, 2 and 4-bit indices one per byte
+    const int passes = png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    for (int pass = 0; pass < passes; ++pass)
+        for (int y = 0; y < height; ++y)
+            png_read_row(png, indices + size_t(y) * size_t(width), nullptr);
+    png_destroy_read_struct(&png, &info, nullptr);
+    return true;
+}
+
+void read_palette_indices(const std::string& path, ImagePixels& pixels) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) return;
+    pixels.indices.resize(size_t(pixels.width) * size_t(pixels.height));
+    if (!read_png_indices(file, pixels.width, pixels.height, pixels.indices.data()))
+        pixels.indices.clear();
+    std::fclose(file);
+}
+
+// OpenImageIO's messages, one line each, as one line.
+std::string one_line(std::string text) {
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at))
+        text.replace(at, 1, "; ");
+    return text;
+}
+
+}  // namespace
+
+bool image_type_is_read(const std::string& type) {
+    return type != "iff" && type != "pot" && type != "sys";
+}
+
+double ImageGamma::decode(double value) const {
+    switch (kind) {
+        case Kind::linear: return value;
+        case Kind::power: return value <= 0 ? 0 : std::pow(value, power);
+        case Kind::srgb: return srgb_to_linear(value);
+    }
+    return value;
+}
+
+double ImageGamma::encode(double linear) const {
+    switch (kind) {
+        case Kind::linear: return linear;
+        case Kind::power: return linear <= 0 ? 0 : std::pow(linear, 1 / power);
+        case Kind::srgb:
+            return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
+    }
+    return linear;
+}
+
+std::shared_ptr<const ImagePixels> read_image_file(const std::string& path,
+                                                   const std::string& type) {
+    if (!image_type_is_read(type))
+        throw Error(fmt::format("not supported: {} images ({}): convert it to PNG, TGA or EXR",
+                                type, path));
+    auto input = OIIO::ImageInput::open(path);
+    if (!input)
+        throw Error(
+            fmt::format("cannot read the image {}: {} (PNG, JPEG, GIF, TGA, BMP, TIFF, "
+                        "PPM/PGM, HDR and EXR are read)",
+                        path, one_line(OIIO::geterror())));
+    const OIIO::ImageSpec& spec = input->spec();
+    const int channels = spec.nchannels;
+    if (spec.width <= 0 || spec.height <= 0 || channels <= 0 || spec.depth > 1)
+        throw Error(fmt::format("the image {} has no pixels of its own", path));
+    auto pixels = std::make_shared<ImagePixels>();
+    pixels->width = spec.width;
+    pixels->height = spec.height;
+    pixels->has_alpha = spec.alpha_channel >= 0 || channels == 2 || channels == 4;
+    pixels->grey = channels <= 2;
+    const OIIO::TypeDesc format = spec.format;
+    pixels->floating = format.is_floating_point();
+    pixels->bits = int(format.size()) * 8;
+    const std::string format_name = input->format_name();
+    pixels->palette = format_name == "gif" || (format_name == "png" && png_has_palette(path));
+    // A PNG's gAMA chunk comes as the power that decodes it.
+    const float png_gamma =
+        format_name == "png" && spec.get_string_attribute("oiio:ColorSpace") != "sRGB"
+            ? spec.get_float_attribute("oiio:Gamma", 0)
+            : 0;
+    if (pixels->floating || format_name == "pnm" || std::fabs(png_gamma - 1) < 1e-3)
+        pixels->gamma.kind = ImageGamma::Kind::linear;
+    else if (png_gamma > 0)
+        pixels->gamma = {ImageGamma::Kind::power, png_gamma};
+    else
+        pixels->gamma.kind = ImageGamma::Kind::srgb;
+
+    const size_t count = size_t(spec.width) * size_t(spec.height);
+    std::vector<float> file(count * size_t(channels));
+    if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, file.data()))
+        throw Error(fmt::format("cannot read the pixels of the image {}: {}", path,
+                                one_line(input->geterror())));
+    pixels->values.resize(count * 4);
+    for (size_t i = 0; i < count; ++i) {
+        const float* in = &file[i * size_t(channels)];
+        float* out = &pixels->values[i * 4];
+        if (pixels->grey) {
+            out[0] = out[1] = out[2] = in[0];
+        } else {
+            out[0] = in[0], out[1] = in[1], out[2] = in[2];
+        }
+        out[3] = pixels->has_alpha ? in[channels - 1] : 1.0f;
+    }
+    if (pixels->palette && format_name == "png") read_palette_indices(path, *pixels);
+    return pixels;
+}
+
+}  // namespace rayset::tracer
