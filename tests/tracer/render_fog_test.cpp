@@ -147,17 +147,7 @@ TEST(RenderFog, PathIntegratorSeesThroughIt) {
 }
 
 TEST(RenderFog, RefusesWhatItDoesNotRender) {
-    auto error = [](const std::string& text) {
-        try {
-            RenderScene scene(parse_scene_text(text, "test.pov"));
-            RenderSettings settings;
-            settings.width = 4, settings.height = 3, settings.passes = 1, settings.threads = 1;
-            render(scene, settings);
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
+    const auto error = test::render_error;
     EXPECT_EQ(error("fog { distance 2 colour rgb 1 turbulence 0.3 }"), "no error");
     EXPECT_EQ(error("fog { distance 2 colour rgb 1 }\nfog { distance 3 colour rgb 0.5 }"),
               "not supported: more than one fog at test.pov:2:1");

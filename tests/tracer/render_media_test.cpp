@@ -13,16 +13,14 @@
 #include "tracer/render/phase_function.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
+#include "tracer/tracer_support.h"
 
 namespace rayset::tracer {
 namespace {
 
 constexpr double kZ = 4.5;
 
-RenderResult render_text(const std::string& text, RenderSettings settings) {
-    const RenderScene scene(parse_scene_text(text, "test.pov"));
-    return render(scene, settings);
-}
+using test::render_text;
 
 // Mean of the image's pixels in one channel (0 red, 1 green, 2 blue) and its standard error
 // from the pixels' spread.
@@ -460,17 +458,7 @@ TEST(PhaseFunctions, IntegrateToOneAndSampleTheirDensity) {
 }
 
 TEST(RenderMedia, RefusesWhatItDoesNotRender) {
-    auto error = [](const std::string& text) {
-        try {
-            RenderScene scene(parse_scene_text(text, "test.pov"));
-            RenderSettings settings;
-            settings.width = 4, settings.height = 3, settings.passes = 1, settings.threads = 1;
-            render(scene, settings);
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
+    const auto error = test::render_error;
     const std::string scattering =
         "sphere { 0, 1 hollow pigment { rgbt 1 } interior { media { scattering { 1, 0.1 } } } }\n";
     EXPECT_EQ(error(scattering), "no error");

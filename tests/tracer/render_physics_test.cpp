@@ -11,14 +11,12 @@
 #include "converters/analytic/analytic_geometry.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
+#include "tracer/tracer_support.h"
 
 namespace rayset::tracer {
 namespace {
 
-RenderResult render_text(const std::string& text, RenderSettings settings) {
-    const RenderScene scene(parse_scene_text(text, "test.pov"));
-    return render(scene, settings);
-}
+using test::render_text;
 
 // Mean of the red channel over every pixel and its standard error: inside a uniform sphere
 // every pixel's samples have the same distribution, so the pixel means are independent and

@@ -18,6 +18,7 @@
 #include "tracer/render/rgb_upsampling.h"
 #include "tracer/render/spectrum.h"
 #include "tracer/scene_language/scene_language.h"
+#include "tracer/tracer_support.h"
 
 namespace rayset::tracer {
 namespace {
@@ -25,10 +26,7 @@ namespace {
 // z = 4.5: a two-sided normal tail of 6.8e-6 per comparison.
 constexpr double kZ = 4.5;
 
-RenderResult render_text(const std::string& text, RenderSettings settings) {
-    const RenderScene scene(parse_scene_text(text, "test.pov"));
-    return render(scene, settings);
-}
+using test::render_text;
 
 std::string with_mode(const std::string& scene, bool spectral,
                       const std::string& integrator = "bidirectional") {

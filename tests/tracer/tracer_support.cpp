@@ -10,6 +10,7 @@
 
 #include "converters/analytic/analytic_sources.h"
 #include "converters/analytic/synth.h"
+#include "core/error.h"
 #include "lightmodel/model_support.h"
 #include "support/test_support.h"
 #include "tracer/render/renderer.h"
@@ -192,6 +193,23 @@ bool povray_render(const std::string& scene, int width, int height, std::vector<
         throw std::runtime_error("povray failed on " + scene + ": " + pov.output);
     }
     return true;
+}
+
+tracer::RenderResult render_text(const std::string& text, const tracer::RenderSettings& settings) {
+    const tracer::RenderScene scene(tracer::parse_scene_text(text, "test.pov"));
+    return tracer::render(scene, settings);
+}
+
+std::string render_error(const std::string& text) {
+    try {
+        const tracer::RenderScene scene(tracer::parse_scene_text(text, "test.pov"));
+        tracer::RenderSettings settings;
+        settings.width = 4, settings.height = 3, settings.passes = 1, settings.threads = 1;
+        tracer::render(scene, settings);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
 }
 
 }  // namespace rayset::test

@@ -10,6 +10,7 @@
 #include "converters/analytic/analytic_sources.h"
 #include "support/test_support.h"
 #include "tracer/film/film.h"
+#include "tracer/render/renderer.h"
 
 namespace rayset::test {
 
@@ -87,6 +88,10 @@ struct LitTiles {
 };
 bool render_lit_tiles(const std::string& scene_file, Vec3 light, int width, int height,
                       LitTiles& out);
+// A scene written in the test ("test.pov"), rendered with `settings`.
+tracer::RenderResult render_text(const std::string& text, const tracer::RenderSettings& settings);
+// The error rendering a scene written in the test (4 x 3 pixels, one pass) throws, or "no error".
+std::string render_error(const std::string& text);
 // The path of a scene of tests/tracer/scenes/.
 std::string tracer_scene(const std::string& name);
 

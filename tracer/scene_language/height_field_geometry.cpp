@@ -51,19 +51,10 @@ void cell_hits(const HeightFieldShape& field, const CellCorners& c, Vec3 o, Vec3
                std::vector<ShapeHit>& hits) {
     for (const auto& tri : kTriangles) {
         const Vec3 a = c.p[tri[0]], b = c.p[tri[1]], e = c.p[tri[2]];
-        const Vec3 ab = b - a, ae = e - a;
-        const Vec3 q = cross(d, ae);
-        const double det = dot(ab, q);
-        if (det == 0) continue;
-        const Vec3 s = o - a;
-        const double beta = dot(s, q) / det;
-        if (beta < 0 || beta > 1) continue;
-        const Vec3 r = cross(s, ab);
-        const double gamma = dot(d, r) / det;
-        if (gamma < 0 || beta + gamma > 1) continue;
-        const double t = dot(ae, r) / det;
+        double t, beta, gamma;
+        if (!triangle_crossing(a, b, e, o, d, t, beta, gamma)) continue;
         if (o.y + t * d.y < field.water_level) continue;
-        Vec3 normal = cross(ae, ab);
+        Vec3 normal = cross(e - a, b - a);
         if (normal.y < 0) normal = -normal;
         if (field.smooth) {
             auto at = [&](int k) {

@@ -11,6 +11,21 @@
 #include "tracer/scene_language/text_outline.h"
 
 namespace rayset::tracer {
+// Moller-Trumbore.
+bool triangle_crossing(Vec3 a, Vec3 b, Vec3 c, Vec3 o, Vec3 d, double& t, double& u, double& v) {
+    const Vec3 e1 = b - a, e2 = c - a, pv = cross(d, e2);
+    const double det = dot(e1, pv);
+    if (det == 0) return false;
+    const Vec3 tv = o - a;
+    u = dot(tv, pv) / det;
+    if (u < 0 || u > 1) return false;
+    const Vec3 qv = cross(tv, e1);
+    v = dot(d, qv) / det;
+    if (v < 0 || u + v > 1) return false;
+    t = dot(e2, qv) / det;
+    return true;
+}
+
 namespace {
 
 // Calls term(coefficient, i, j, k) for each term coefficient x^i y^j z^k of a polynomial in
@@ -228,18 +243,10 @@ std::vector<double> quadratic_roots(double a, double b, double c) {
     return std::vector<double>(roots, roots + solve_quadratic(a, b, c, roots));
 }
 
-// A triangle's hit by Moller-Trumbore; its normal is POV-Ray's, (c - a) x (b - a).
+// A triangle's hit; its normal is POV-Ray's, (c - a) x (b - a).
 void triangle_hit(Vec3 a, Vec3 b, Vec3 c, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
-    const Vec3 e1 = b - a, e2 = c - a, pv = cross(d, e2);
-    const double det = dot(e1, pv);
-    if (det == 0) return;
-    const Vec3 tv = o - a;
-    const double u = dot(tv, pv) / det;
-    if (u < 0 || u > 1) return;
-    const Vec3 qv = cross(tv, e1);
-    const double v = dot(d, qv) / det;
-    if (v < 0 || u + v > 1) return;
-    hits.push_back({dot(e2, qv) / det, cross(e2, e1)});
+    double t, u, v;
+    if (triangle_crossing(a, b, c, o, d, t, u, v)) hits.push_back({t, cross(c - a, b - a)});
 }
 
 void mesh_hits(const TriangleMesh& mesh, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {

@@ -27,6 +27,9 @@ struct ShapeHit {
     int part = -1;  // SolidTree::hits: the shape node it lies on
 };
 
+// Where the line o + t d crosses the triangle a, b, c: t, and the hit's weights u of b and v of
+// c (a's is 1 - u - v); false when it does not.
+bool triangle_crossing(Vec3 a, Vec3 b, Vec3 c, Vec3 o, Vec3 d, double& t, double& u, double& v);
 // Every crossing of the line o + t d (any t, unsorted) with the shape's surface; false when the
 // shape is not covered here.
 bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits);
