@@ -53,6 +53,43 @@ bool read_png_indices(std::FILE* file, int width, int height, uint8_t* indices) 
     return true;
 }
 
+// Whether libpng decodes the whole file. OpenImageIO 2.4 loses memory when libpng fails inside
+// its read callback (a file cut short): such files are refused before it reads them.
+bool png_decodes(std::FILE* file) {
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    if (!png) return false;
+    png_infop info = png_create_info_struct(png);
+    png_bytep volatile row = nullptr;  // volatile: set after setjmp, freed after longjmp
+    if (!info || setjmp(png_jmpbuf(png))) {
+        png_free(png, row);
+        png_destroy_read_struct(&png, &info, nullptr);
+        return false;
+    }
+    png_init_io(png, file);
+    png_read_info(png, info);
+    const int passes = png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    row = static_cast<png_bytep>(png_malloc(png, png_get_rowbytes(png, info)));
+    const png_uint_32 height = png_get_image_height(png, info);
+    for (int pass = 0; pass < passes; ++pass)
+        for (png_uint_32 y = 0; y < height; ++y) png_read_row(png, row, nullptr);
+    png_read_end(png, nullptr);
+    png_free(png, row);
+    png_destroy_read_struct(&png, &info, nullptr);
+    return true;
+}
+
+bool is_damaged_png(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) return false;
+    unsigned char magic[8] = {};
+    const bool png = std::fread(magic, 1, 8, file) == 8 && png_sig_cmp(magic, 0, 8) == 0;
+    std::rewind(file);
+    const bool damaged = png && !png_decodes(file);
+    std::fclose(file);
+    return damaged;
+}
+
 void read_palette_indices(const std::string& path, ImagePixels& pixels) {
     std::FILE* file = std::fopen(path.c_str(), "rb");
     if (!file) return;
@@ -100,6 +137,11 @@ std::shared_ptr<const ImagePixels> read_image_file(const std::string& path,
     if (!image_type_is_read(type))
         throw Error(fmt::format("not supported: {} images ({}): convert it to PNG, TGA or EXR",
                                 type, path));
+    if (is_damaged_png(path))
+        throw Error(
+            fmt::format("cannot read the pixels of the image {}: its PNG data is damaged "
+                        "or cut short",
+                        path));
     auto input = OIIO::ImageInput::open(path);
     if (!input)
         throw Error(
