@@ -216,8 +216,9 @@ TEST(RenderPatterns, AgreeWithPovRayThroughAnOrthographicCamera) {
         "camera { orthographic location <3, 9, -6> look_at <0, 0, 0> right 16*x up 12*y }");
 }
 
-// The wide-angle projections: spherical, the four cylinders, ultra_wide_angle and fisheye (its
-// corners outside the circle black in both), turned and with right and up of other lengths.
+// The wide-angle projections: spherical, the four cylinders, ultra_wide_angle, fisheye and
+// omnimax (what lies outside their circles black in both), panoramic, turned and with right,
+// up and direction of other lengths.
 TEST(RenderPatterns, AgreeWithPovRayThroughTheWideAngleCameras) {
     for (const char* camera :
          {"camera { spherical location <0, 5, -7> look_at <0, 0, 0.5> angle 220 110 }",
@@ -226,7 +227,11 @@ TEST(RenderPatterns, AgreeWithPovRayThroughTheWideAngleCameras) {
           "camera { cylinder 3 location <0, 9, -7> look_at <0, 0, 0.5> angle 140 up 6*y }",
           "camera { cylinder 4 location <0, 9, -7> look_at <0, 0, 0.5> angle 100 right 12*x }",
           "camera { ultra_wide_angle location <0, 9, -5> look_at <0, 0, 0.5> angle 160 }",
-          "camera { fisheye location <0, 9, -3> look_at <0, 0, 0.5> angle 170 rotate y*10 }"})
+          "camera { fisheye location <0, 9, -3> look_at <0, 0, 0.5> angle 170 rotate y*10 }",
+          "camera { omnimax location <0, 6, -4> look_at <0, 0, 0.5> }",
+          "camera { omnimax location <0, 9, -0.5> look_at <0, 0, 1> right x up 1.1*y }",
+          "camera { panoramic location <0, 9, -5> look_at <0, 0, 0.5> }",
+          "camera { panoramic location <0, 9, -5> look_at <0, 0, 0.5> right 2*x direction 3*z }"})
         expect_flat_colours_agree("patterns.pov", 1.0, camera);
 }
 

@@ -412,8 +412,8 @@ TEST(RenderLights, UnsupportedFadeAndShadowlessAreaLightsAreErrors) {
 // What the renderer does not render is refused with its place in the file; POV-Ray's hints
 // (radiosity, photons, max_trace_level ...) and ambient_light are accepted (README.md).
 TEST(RenderScene, RefusesSceneItemsItDoesNotRender) {
-    EXPECT_EQ(render_error("#declare C = camera { omnimax }\ncamera { C translate x }"),
-              "not supported: omnimax camera at test.pov:1:23");
+    EXPECT_EQ(render_error("#declare C = camera { location -5*z aperture 0.4 }\ncamera { C }"),
+              "not supported: focal blur (camera aperture 0.4) at test.pov:1:37");
     EXPECT_EQ(render_error("camera { location -5*z aperture 0.4 blur_samples 9 }"),
               "not supported: focal blur (camera aperture 0.4) at test.pov:1:24");
     EXPECT_EQ(render_error("rainbow { direction z angle 42 width 5 }"),

@@ -10,6 +10,12 @@
 // - ultra_wide_angle: sin(x A) R + sin(y A |up| / |right|) U + cos(x A) cos(...) D;
 // - fisheye: at the angle r A from D, r = |(x |right| / |up|, y)|; none beyond r = 1/2 (POV-Ray
 //   leaves those pixels black);
+// - panoramic: cos(b) sin(a) right + sin(b) up + cos(b) cos(a) direction, a = 180 x and b =
+//   180 y degrees, the three vectors as given (their lengths shape the view; angle is ignored);
+// - omnimax: a 180-degree lens about the point (lx, ly) = (x0 |right| / |up|, y0 + k - 1) of
+//   the image (x0 = 2 x, y0 = 2 y), or (k x0, k y0 |up| / |right|) when |right| <= |up|; the
+//   angle from D a fixed odd polynomial of r = |(lx, ly)| (camera.cpp), k = 1.2835 where it ends
+//   at 90 degrees; no ray beyond k or more than 90 degrees from D + U (the dome's half);
 // - mesh_camera: from the faces of meshes (mesh_camera.h).
 // Like POV-Ray, the image size does not change right/up: a 4:3 image of a square camera
 // is stretched exactly as POV-Ray stretches it.
@@ -23,7 +29,7 @@
 namespace rayset::tracer {
 
 // Throws rayset::Error ("not supported: FEATURE at FILE:LINE:COLUMN") for what the camera does
-// not render: the omnimax and panoramic projections, focal blur, a normal perturbation.
+// not render: focal blur, a normal perturbation.
 void check_camera_renderable(const Camera& camera);
 
 struct CameraRay {
