@@ -35,6 +35,8 @@ void check_camera_renderable(const Camera& camera);
 struct CameraRay {
     Vec3 origin, direction;  // direction of unit length
     bool exists = true;      // false where the projection casts no ray (outside a fisheye)
+    // What a pixel without a ray gets.
+    static CameraRay none() { return {{}, {0, 0, 1}, false}; }
 };
 
 class SceneCamera {

@@ -125,15 +125,15 @@ void MeshCameraRays::build_uv_grid() {
 
 CameraRay MeshCameraRays::face_ray(const std::vector<Face>& faces, long face) const {
     if (face < 0 || face >= static_cast<long>(faces.size()) || is_zero(faces[face].direction))
-        return {{}, {0, 0, 1}, false};
+        return CameraRay::none();
     return {faces[face].origin, faces[face].direction};
 }
 
 CameraRay MeshCameraRays::uv_ray(Vec2 uv) const {
-    if (uv_cell_start_.empty()) return {{}, {0, 0, 1}, false};
+    if (uv_cell_start_.empty()) return CameraRay::none();
     const int i = static_cast<int>(std::floor((uv.x - uv_min_.x) / uv_cell_size_.x));
     const int j = static_cast<int>(std::floor((uv.y - uv_min_.y) / uv_cell_size_.y));
-    if (i < 0 || j < 0 || i >= uv_cells_ || j >= uv_cells_) return {{}, {0, 0, 1}, false};
+    if (i < 0 || j < 0 || i >= uv_cells_ || j >= uv_cells_) return CameraRay::none();
     const int cell = j * uv_cells_ + i;
     for (int k = uv_cell_start_[cell]; k < uv_cell_start_[cell + 1]; ++k) {
         const Face& face = *uv_faces_[k];
@@ -144,7 +144,7 @@ CameraRay MeshCameraRays::uv_ray(Vec2 uv) const {
             w[0] * face.normals[0] + w[1] * face.normals[1] + w[2] * face.normals[2];
         return {point + face.origin_move, normalized(normal)};
     }
-    return {{}, {0, 0, 1}, false};
+    return CameraRay::none();
 }
 
 CameraRay MeshCameraRays::ray(double x, double y, int width, int height) const {
@@ -157,7 +157,7 @@ CameraRay MeshCameraRays::ray(double x, double y, int width, int height) const {
     const long pixel = static_cast<long>(row) * width + column;
     switch (camera_.distribution) {
         case 0:
-            if (ray >= static_cast<int>(meshes_.size())) return {{}, {0, 0, 1}, false};
+            if (ray >= static_cast<int>(meshes_.size())) return CameraRay::none();
             return face_ray(meshes_[ray], pixel);
         case 1: {
             long face = pixels * ray + pixel;
@@ -165,14 +165,14 @@ CameraRay MeshCameraRays::ray(double x, double y, int width, int height) const {
                 if (face < static_cast<long>(faces.size())) return face_ray(faces, face);
                 face -= static_cast<long>(faces.size());
             }
-            return {{}, {0, 0, 1}, false};
+            return CameraRay::none();
         }
         default: {
             const int blocks = static_cast<int>(meshes_.size());
             const int block_width = std::max(width / blocks, 1);
             const int block = std::min(column / block_width, blocks - 1);
             const long local = static_cast<long>(row) * block_width + column - block * block_width;
-            if (column - block * block_width >= block_width) return {{}, {0, 0, 1}, false};
+            if (column - block * block_width >= block_width) return CameraRay::none();
             return face_ray(meshes_[block], local);
         }
     }
