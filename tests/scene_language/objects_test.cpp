@@ -478,7 +478,7 @@ TEST(ObjectsFields, IsosurfaceParametricJulia) {
                                             "slice <0,0,1,1>, 0.5 }"));
     EXPECT_EQ(julia.parameter, (std::array<double, 4>{-0.083, 0, -0.83, -0.025}));
     EXPECT_EQ(julia.algebra, JuliaFractalShape::Algebra::hypercomplex);
-    EXPECT_EQ(julia.function, "pwr");
+    EXPECT_EQ(julia.function, JuliaFractalShape::Function::pwr);
     EXPECT_DOUBLE_EQ(julia.power.x, 2);
     EXPECT_DOUBLE_EQ(julia.power.y, 1);
     EXPECT_EQ(julia.max_iteration, 8);
@@ -488,7 +488,7 @@ TEST(ObjectsFields, IsosurfaceParametricJulia) {
     const auto& standard =
         only_shape<JuliaFractalShape>(parse("julia_fractal { <1, 0, 0, 0> cube }"));
     EXPECT_EQ(standard.algebra, JuliaFractalShape::Algebra::quaternion);
-    EXPECT_EQ(standard.function, "cube");
+    EXPECT_EQ(standard.function, JuliaFractalShape::Function::cube);
     EXPECT_EQ(standard.max_iteration, 20);
     EXPECT_DOUBLE_EQ(standard.precision, 20);
     EXPECT_EQ(standard.slice_normal, (std::array<double, 4>{0, 0, 0, 1}));

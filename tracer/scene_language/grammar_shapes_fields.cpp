@@ -204,9 +204,23 @@ void parse_precompute(Parser& p, ParametricShape& parametric) {
     }
 }
 
-const char* const kJuliaFunctions[] = {"sqr",  "cube",  "exp",  "reciprocal", "sin",  "asin",
-                                       "sinh", "asinh", "cos",  "acos",       "cosh", "acosh",
-                                       "tan",  "atan",  "tanh", "atanh",      "ln",   "pwr"};
+using JuliaFunction = JuliaFractalShape::Function;
+const std::pair<const char*, JuliaFunction> kJuliaFunctions[] = {
+    {"sqr", JuliaFunction::sqr},   {"cube", JuliaFunction::cube},
+    {"exp", JuliaFunction::exp},   {"reciprocal", JuliaFunction::reciprocal},
+    {"sin", JuliaFunction::sin},   {"asin", JuliaFunction::asin},
+    {"sinh", JuliaFunction::sinh}, {"asinh", JuliaFunction::asinh},
+    {"cos", JuliaFunction::cos},   {"acos", JuliaFunction::acos},
+    {"cosh", JuliaFunction::cosh}, {"acosh", JuliaFunction::acosh},
+    {"tan", JuliaFunction::tan},   {"atan", JuliaFunction::atan},
+    {"tanh", JuliaFunction::tanh}, {"atanh", JuliaFunction::atanh},
+    {"ln", JuliaFunction::ln},     {"pwr", JuliaFunction::pwr}};
+
+const char* julia_function_name(JuliaFunction function) {
+    for (const auto& [name, f] : kJuliaFunctions)
+        if (f == function) return name;
+    return "?";
+}
 
 bool parse_julia_item(Parser& p, JuliaFractalShape& julia) {
     const Token token = p.peek();
@@ -231,8 +245,8 @@ bool parse_julia_item(Parser& p, JuliaFractalShape& julia) {
         p.accept_comma();
         julia.slice_distance = p.parse_float("as the slice distance");
     } else {
-        for (const char* function : kJuliaFunctions)
-            if (p.word(token) == function) {
+        for (const auto& [name, function] : kJuliaFunctions)
+            if (p.word(token) == name) {
                 p.next();
                 julia.function = function;
                 if (token.is(Keyword::pwr)) {
@@ -370,12 +384,12 @@ ObjectRef parse_julia_fractal(Parser& p, const Token& keyword) {
     for (size_t i = 0; i < 4; ++i) julia.parameter[i] = parameter.v[i];
     while (parse_julia_item(p, julia)) {
     }
-    if (julia.algebra == JuliaFractalShape::Algebra::quaternion && julia.function != "sqr" &&
-        julia.function != "cube")
+    if (julia.algebra == JuliaFractalShape::Algebra::quaternion &&
+        julia.function != JuliaFunction::sqr && julia.function != JuliaFunction::cube)
         p.fail(
             keyword,
             fmt::format("illegal function '{}': a quaternion julia_fractal takes only sqr and cube",
-                        julia.function));
+                        julia_function_name(julia.function)));
     node->shape = std::move(julia);
     finish_shape(p, *node, keyword, open);
     return node;

@@ -686,32 +686,35 @@ void text_hits(const TextShape& text, Vec3 o, Vec3 d, std::vector<ShapeHit>& hit
 using Quad = std::array<double, 4>;
 
 std::complex<double> complex_function(const JuliaFractalShape& j, std::complex<double> z) {
-    const std::string& f = j.function;
-    if (f == "sqr") return z * z;
-    if (f == "cube") return z * z * z;
-    if (f == "reciprocal") return 1.0 / z;
-    if (f == "exp") return std::exp(z);
-    if (f == "ln") return std::log(z);
-    if (f == "pwr") return std::pow(z, std::complex<double>{j.power.x, j.power.y});
-    if (f == "sin") return std::sin(z);
-    if (f == "asin") return std::asin(z);
-    if (f == "sinh") return std::sinh(z);
-    if (f == "asinh") return std::asinh(z);
-    if (f == "cos") return std::cos(z);
-    if (f == "acos") return std::acos(z);
-    if (f == "cosh") return std::cosh(z);
-    if (f == "acosh") return std::acosh(z);
-    if (f == "tan") return std::tan(z);
-    if (f == "atan") return std::atan(z);
-    if (f == "tanh") return std::tanh(z);
-    return std::atanh(z);
+    using F = JuliaFractalShape::Function;
+    switch (j.function) {
+        case F::sqr: return z * z;
+        case F::cube: return z * z * z;
+        case F::reciprocal: return 1.0 / z;
+        case F::exp: return std::exp(z);
+        case F::ln: return std::log(z);
+        case F::pwr: return std::pow(z, std::complex<double>{j.power.x, j.power.y});
+        case F::sin: return std::sin(z);
+        case F::asin: return std::asin(z);
+        case F::sinh: return std::sinh(z);
+        case F::asinh: return std::asinh(z);
+        case F::cos: return std::cos(z);
+        case F::acos: return std::acos(z);
+        case F::cosh: return std::cosh(z);
+        case F::acosh: return std::acosh(z);
+        case F::tan: return std::tan(z);
+        case F::atan: return std::atan(z);
+        case F::tanh: return std::tanh(z);
+        case F::atanh: return std::atanh(z);
+    }
+    return z;
 }
 
 Quad julia_function(const JuliaFractalShape& j, const Quad& q) {
     if (j.algebra == JuliaFractalShape::Algebra::quaternion) {
         const double a = q[0], v2 = q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
         // (a + v)^2 = a^2 - |v|^2 + 2 a v; (a + v)^3 = a^3 - 3 a |v|^2 + (3 a^2 - |v|^2) v.
-        if (j.function == "cube") {
+        if (j.function == JuliaFractalShape::Function::cube) {
             const double s = 3 * a * a - v2;
             return {a * a * a - 3 * a * v2, s * q[1], s * q[2], s * q[3]};
         }

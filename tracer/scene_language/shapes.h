@@ -148,9 +148,12 @@ struct ParametricShape {
 struct JuliaFractalShape {
     std::array<double, 4> parameter{};
     enum class Algebra { quaternion, hypercomplex } algebra = Algebra::quaternion;
-    // sqr, cube, exp, reciprocal, sin, asin, sinh, asinh, cos, acos, cosh, acosh, tan, atan,
-    // tanh, atanh, ln, pwr (quaternion: only sqr and cube).
-    std::string function = "sqr";
+    // The orbit's function, by POV-Ray's keyword (quaternion: only sqr and cube).
+    // clang-format off
+    enum class Function { sqr, cube, exp, reciprocal, sin, asin, sinh, asinh, cos, acos, cosh,
+                          acosh, tan, atan, tanh, atanh, ln, pwr };
+    // clang-format on
+    Function function = Function::sqr;
     Vec2 power;  // pwr(x, y): the complex exponent x + iy
     int max_iteration = 20;
     double precision = 20;                           // values below 1 act as 1
