@@ -175,7 +175,7 @@ std::string tracer_scene(const std::string& name) {
 }
 
 bool povray_render(const std::string& scene, int width, int height, std::vector<uint8_t>& rgb,
-                   std::string& message, double file_gamma) {
+                   std::string& message, double file_gamma, const std::string& library_path) {
     if (run_command("command -v povray").status != 0) {
         message =
             "povray is not installed (Debian package povray; scripts/install-deps.sh "
@@ -185,7 +185,8 @@ bool povray_render(const std::string& scene, int width, int height, std::vector<
     ScratchDir dir;
     const CommandResult pov =
         run_command("cd '" + dir.path().string() + "' && povray +I'" + scene + "' +L'" +
-                    std::filesystem::path(scene).parent_path().string() + "' +W" +
+                    std::filesystem::path(scene).parent_path().string() + "' " +
+                    (library_path.empty() ? "" : "+L'" + library_path + "' ") + "+W" +
                     std::to_string(width) + " +H" + std::to_string(height) +
                     " +Opov.ppm +FP -D -GA File_Gamma=" + std::to_string(file_gamma) + " 2>&1");
     int w = 0, h = 0;
