@@ -1187,6 +1187,19 @@ TEST(ObjectsGeometry, InsideAsPovRayAnswers) {
     EXPECT_EQ(inside(conic, "<0.7,0.75,-0.7>"), 1);
     EXPECT_EQ(inside(conic, "<0,0.25,0>"), 0);
     EXPECT_EQ(inside("prism { 1, 0, 3, <-1,-1>, <1,-1>, <0,1> }", "<0,0.5,0>"), 1);
+    // Sphere sweeps: the union of their spheres (a b_spline's end at 19/6 + 0.8 on its axis).
+    const std::string line = "sphere_sweep { linear_spline 3, 0, 1, 2*x, 1, 4*x, 1 }";
+    EXPECT_EQ(inside(line, "<1,0.9,0>"), 1);
+    EXPECT_EQ(inside(line, "<1,1.1,0>"), 0);
+    EXPECT_EQ(inside(line, "<4.99,0,0>"), 1);
+    EXPECT_EQ(inside(line, "<5.01,0,0>"), 0);
+    const std::string spheres = "4, 0, 0.2, x, 0.5, 3*x, 1, 6*x, 0.3 }";
+    EXPECT_EQ(inside("sphere_sweep { b_spline " + spheres, "<3.96,0,0>"), 1);
+    EXPECT_EQ(inside("sphere_sweep { b_spline " + spheres, "<3.97,0,0>"), 0);
+    EXPECT_EQ(inside("sphere_sweep { b_spline " + spheres, "<2,0.73,0>"), 1);
+    EXPECT_EQ(inside("sphere_sweep { b_spline " + spheres, "<2,0.735,0>"), 0);
+    EXPECT_EQ(inside("sphere_sweep { cubic_spline " + spheres, "<1.4,0.688,0>"), 1);
+    EXPECT_EQ(inside("sphere_sweep { cubic_spline " + spheres, "<1.4,0.689,0>"), 0);
     EXPECT_EQ(error_of("#declare O = triangle { 0, x, y }\ncamera { location inside(O, 0) }"),
               "not supported: 'inside' of this kind of object at test.pov:2:19");
 }
@@ -1226,7 +1239,27 @@ TEST(ObjectsGeometry, TraceAsPovRayAnswers) {
                  {0, 0, -1});
     expect_trace("sphere { 0, 1 scale <1,2,1> translate x }", "<1,-5,0>", "y", {1, -2, 0},
                  {0, -1, 0});
-    EXPECT_EQ(error_of("#declare O = sphere_sweep { linear_spline 2, 0, 1, x, 1 }\n"
+    // Sphere sweeps, POV-Ray's hits printed to 10 decimals: from inside a straight one out
+    // through its far end (no surface between its segments), a bent one of varied radii, and
+    // b_spline and cubic_spline sweeps, turned and scaled.
+    expect_trace("sphere_sweep { linear_spline 3, 0, 1, 2*x, 1, 4*x, 1 }", "-0.5*x", "x", {5, 0, 0},
+                 {1, 0, 0});
+    const std::string bent =
+        "sphere_sweep { linear_spline 4, 0, 1, 2*x, 0.5, <2,2,0>, 1, -x, 0.7 }";
+    expect_trace(bent, "<1,0.1,0>", "x", {2.5422176685, 0.1, 0}, {0.9682458366, -0.25, 0});
+    expect_trace(bent, "<1,0.1,0>", "y", {1, 2.4827420741, 0}, {-0.6220075146, 0.7830112718, 0});
+    const std::string spheres =
+        "6, <-2,0,0>, 0.3, <-1,1,0>, 0.4, <0,0,1>, 0.6, <1,-1,0>, 0.3, <2,0,0>, 0.5, <3,1,1>, "
+        "0.2 rotate 30*y scale <1,2,1> }";
+    expect_trace("sphere_sweep { cubic_spline " + spheres, "<0.3,-5,0.2>", "y",
+                 {0.3, -1.5937607397, 0.2}, {-0.9771990637, -0.1982426868, -0.0760383266});
+    expect_trace("sphere_sweep { cubic_spline " + spheres, "<-5,0.1,0.1>", "x", {0, 0, 0},
+                 {0, 0, 0});
+    expect_trace("sphere_sweep { b_spline " + spheres, "<0.3,-5,0.2>", "y",
+                 {0.3, -1.4444625717, 0.2}, {-0.9083528586, -0.4129748806, -0.0659305109});
+    expect_trace("sphere_sweep { b_spline " + spheres, "<-5,0.1,0.1>", "x",
+                 {0.1420546342, 0.1, 0.1}, {-0.3675090098, 0.0463310268, -0.9288652021});
+    EXPECT_EQ(error_of("#declare O = ovus { 1, 0.5 }\n"
                        "#declare H = trace(O, 0, x);"),
               "not supported: 'trace' of this kind of object at test.pov:2:14");
 }

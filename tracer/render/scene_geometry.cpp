@@ -22,7 +22,8 @@ namespace {
 
 // What the renderer does not render is refused, never dropped or approximated: the shapes
 // other than sphere, box, plane, triangle, mesh, cylinder, cone, torus, disc, text of a TrueType
-// font, quadric, polynomials, superellipsoid, isosurface, blob, linear prism and lathe (solids.h
+// font, quadric, polynomials, superellipsoid, isosurface, blob, linear prism, lathe, sor,
+// polygon, julia_fractal, bicubic_patch, height_field and sphere_sweep (solids.h
 // refuses what it cannot take into CSG, clipped_by, bounded_by or inverse), and the modifiers
 // that change what is seen. Photon and
 // radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
@@ -76,7 +77,8 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s) ||
         std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s) ||
         std::holds_alternative<JuliaFractalShape>(s) ||
-        std::holds_alternative<BicubicPatchShape>(s) || std::holds_alternative<HeightFieldShape>(s);
+        std::holds_alternative<BicubicPatchShape>(s) ||
+        std::holds_alternative<HeightFieldShape>(s) || std::holds_alternative<SphereSweepShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
     if (const auto* julia = std::get_if<JuliaFractalShape>(&s);
         julia && !julia_default_slice(*julia))
@@ -140,7 +142,8 @@ bool analytic(const Shape& s) {
            std::holds_alternative<PrismShape>(s) || std::holds_alternative<LatheShape>(s) ||
            std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s) ||
            std::holds_alternative<JuliaFractalShape>(s) ||
-           std::holds_alternative<HeightFieldShape>(s);
+           std::holds_alternative<HeightFieldShape>(s) ||
+           std::holds_alternative<SphereSweepShape>(s);
 }
 
 struct Box3 {

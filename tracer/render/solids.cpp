@@ -182,6 +182,10 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
         Vec3 lo, hi;
         sor_bounds(*sor, lo, hi);
         b.add(lo), b.add(hi);
+    } else if (const auto* sweep = std::get_if<SphereSweepShape>(&shape)) {
+        Vec3 lo, hi;
+        sphere_sweep_bounds(*sweep, lo, hi);
+        b.add(lo), b.add(hi);
     } else if (std::holds_alternative<JuliaFractalShape>(shape)) {
         b.add({-2, -2, -2}), b.add({2, 2, 2});
     } else if (const auto* polygon = std::get_if<PolygonShape>(&shape)) {

@@ -14,9 +14,8 @@
 // modifiers the box becomes its clipped_by objects' or its bounded_by objects' box when that
 // is smaller in volume.
 //
-// inside and trace cover spheres, boxes, cylinders, cones, tori, planes, discs, triangles,
-// meshes (inside with an inside_vector; trace of flat triangles), quadrics, polynomials and
-// linear prisms (inside only), and CSG of those with transforms, inverse and clipped_by.
+// inside and trace cover the shapes shape_geometry.h covers (sphere_sweep of every spline kind
+// among them; its header lists them) and CSG of those with transforms, inverse and clipped_by.
 #include <algorithm>
 #include <cmath>
 #include <optional>

@@ -903,7 +903,311 @@ void polygon_hits(const PolygonShape& polygon, Vec3 o, Vec3 d, std::vector<Shape
     if (inside) hits.push_back({t, normal});
 }
 
+// A sphere_sweep as POV-Ray draws it (read back from POV-Ray with trace, to 1e-10): the union of
+// the spheres whose centre and radius follow a spline through the given spheres, segment by
+// segment with t from 0 to 1: the straight line from each sphere to the next (linear_spline),
+// the uniform cubic B-spline of each four consecutive spheres (b_spline), or the Catmull-Rom
+// cubic of each four from the second to the third (cubic_spline). Inside one segment the line
+// o + s d is inside sphere t between the roots s0(t) <= s1(t) of |o + s d - c(t)|^2 = r(t)^2;
+// over each stretch of t where they are real these intervals join into one, from the least s0
+// to the greatest s1. Both are found among the stretch's ends and the roots of the polynomial
+// (degree 10 at most) whose roots are where s0 or s1 is level in t, and of its derivatives; the
+// normal is p - c(t) at the t that gives the hit, the envelope's (or an end sphere's) exact
+// normal. POV-Ray's trace agrees with this union on every outer surface probed; inside it,
+// where a ray touches one segment's envelope twice, POV-Ray also reports the ray's exit from
+// the first touching sphere and entry into the second (a gap its own inside() does not see),
+// which shows only through CSG cuts and is not reproduced here.
+struct SweepSegment {
+    std::array<std::array<double, 4>, 4> c{};  // x, y, z and radius as cubics in t, t^0 first
+    Vec3 lower, upper;                         // around every sphere of the segment
+};
+
+// The least and greatest value of a cubic on [0, 1].
+void cubic_range(const std::array<double, 4>& c, double& lo, double& hi) {
+    lo = std::min(cubic_at(c, 0), cubic_at(c, 1)), hi = std::max(cubic_at(c, 0), cubic_at(c, 1));
+    for (double t : roots_between({c[1], 2 * c[2], 3 * c[3]}, 0, 1)) {
+        const double v = cubic_at(c, t);
+        lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+}
+
+std::vector<SweepSegment> make_sweep_segments(const SphereSweepShape& sweep) {
+    using Kind = SphereSweepShape::Kind;
+    const auto& s = sweep.spheres;
+    auto at = [&](size_t i, int k) {
+        const Vec3 p = s[i].centre;
+        return k == 0 ? p.x : k == 1 ? p.y : k == 2 ? p.z : s[i].radius;
+    };
+    std::vector<SweepSegment> segments;
+    const bool linear = sweep.kind == Kind::linear_spline;
+    const size_t last = linear ? 1 : 3;  // the segments' first spheres run up to n - 1 - last
+    for (size_t i = 0; i + last < s.size(); ++i) {
+        SweepSegment g;
+        for (int k = 0; k < 4; ++k) {
+            std::array<double, 4>& c = g.c[size_t(k)];
+            if (linear) {
+                c = {at(i, k), at(i + 1, k) - at(i, k), 0, 0};
+                continue;
+            }
+            const double p0 = at(i, k), p1 = at(i + 1, k), p2 = at(i + 2, k), p3 = at(i + 3, k);
+            if (sweep.kind == Kind::b_spline) {
+                c = {(p0 + 4 * p1 + p2) / 6, (p2 - p0) / 2, (p0 - 2 * p1 + p2) / 2,
+                     (-p0 + 3 * p1 - 3 * p2 + p3) / 6};
+            } else {
+                c = {p1, (p2 - p0) / 2, (2 * p0 - 5 * p1 + 4 * p2 - p3) / 2,
+                     (-p0 + 3 * p1 - 3 * p2 + p3) / 2};
+            }
+        }
+        // Per axis, the reach of the centre plus and minus the radius (either sign).
+        double lo[3], hi[3];
+        for (size_t k = 0; k < 3; ++k) {
+            lo[k] = 1e300, hi[k] = -1e300;
+            for (const double sign : {1.0, -1.0}) {
+                std::array<double, 4> reach = g.c[k];
+                for (size_t m = 0; m < 4; ++m) reach[m] += sign * g.c[3][m];
+                double a = 0, b = 0;
+                cubic_range(reach, a, b);
+                lo[k] = std::min(lo[k], a), hi[k] = std::max(hi[k], b);
+            }
+        }
+        g.lower = {lo[0], lo[1], lo[2]}, g.upper = {hi[0], hi[1], hi[2]};
+        segments.push_back(g);
+    }
+    return segments;
+}
+
+// The segments of the sweep last asked for on this thread, made again only when its spheres or
+// kind differ (ray after ray asks for the same sweep's).
+const std::vector<SweepSegment>& sweep_segments(const SphereSweepShape& sweep) {
+    thread_local SphereSweepShape::Kind kind{};
+    thread_local std::vector<SphereSweepShape::Sphere> spheres;
+    thread_local std::vector<SweepSegment> segments;
+    const bool same =
+        kind == sweep.kind && spheres.size() == sweep.spheres.size() &&
+        std::equal(spheres.begin(), spheres.end(), sweep.spheres.begin(),
+                   [](const SphereSweepShape::Sphere& a, const SphereSweepShape::Sphere& b) {
+                       return a.centre.x == b.centre.x && a.centre.y == b.centre.y &&
+                              a.centre.z == b.centre.z && a.radius == b.radius;
+                   });
+    if (!same || segments.empty()) {
+        kind = sweep.kind, spheres = sweep.spheres;
+        segments = make_sweep_segments(sweep);
+    }
+    return segments;
+}
+
+// Whether the line o + s d meets the box lower..upper (widened by a hair).
+bool line_meets_box(Vec3 lower, Vec3 upper, Vec3 o, Vec3 d) {
+    const double margin = 1e-9 * (1 + length(upper - lower));
+    double near = -1e300, far = 1e300;
+    const double origin[3] = {o.x, o.y, o.z}, direction[3] = {d.x, d.y, d.z};
+    const double low[3] = {lower.x - margin, lower.y - margin, lower.z - margin};
+    const double high[3] = {upper.x + margin, upper.y + margin, upper.z + margin};
+    for (int axis = 0; axis < 3; ++axis) {
+        if (direction[axis] == 0) {
+            if (origin[axis] < low[axis] || origin[axis] > high[axis]) return false;
+            continue;
+        }
+        double t0 = (low[axis] - origin[axis]) / direction[axis];
+        double t1 = (high[axis] - origin[axis]) / direction[axis];
+        if (t0 > t1) std::swap(t0, t1);
+        near = std::max(near, t0), far = std::min(far, t1);
+    }
+    return near <= far;
+}
+
+// A polynomial of degree 10 at most, t^0 first, without allocation (a sweep's tests per ray).
+struct SmallPoly {
+    std::array<double, 11> c{};
+    int degree = 0;
+    double operator()(double t) const {
+        double v = 0;
+        for (int i = degree; i >= 0; --i) v = v * t + c[size_t(i)];
+        return v;
+    }
+};
+
+SmallPoly poly_product(const SmallPoly& a, const SmallPoly& b) {
+    SmallPoly p;
+    p.degree = a.degree + b.degree;
+    for (int i = 0; i <= a.degree; ++i)
+        for (int j = 0; j <= b.degree; ++j) p.c[size_t(i + j)] += a.c[size_t(i)] * b.c[size_t(j)];
+    return p;
+}
+
+// a + k b
+SmallPoly poly_sum(const SmallPoly& a, double k, const SmallPoly& b) {
+    SmallPoly p = a;
+    p.degree = std::max(a.degree, b.degree);
+    for (int i = 0; i <= b.degree; ++i) p.c[size_t(i)] += k * b.c[size_t(i)];
+    return p;
+}
+
+SmallPoly poly_derivative(const SmallPoly& a) {
+    SmallPoly p;
+    p.degree = std::max(0, a.degree - 1);
+    for (int i = 1; i <= a.degree; ++i) p.c[size_t(i - 1)] = double(i) * a.c[size_t(i)];
+    return p;
+}
+
+// The real roots of p in [lo, hi], in increasing order, into `roots` (returns their count):
+// each monotone piece between the roots of the derivative (found the same way) that changes
+// sign holds one, found by regula falsi (the Illinois variant) to the last bits. The roots of
+// every derivative go to `all` too when given (a multiple root of p is a simple root of one of
+// them), `n_all` counting them (at most 55 for degree 10).
+int poly_roots(SmallPoly p, double lo, double hi, double* roots, double* all = nullptr,
+               int* n_all = nullptr) {
+    while (p.degree > 0 && p.c[size_t(p.degree)] == 0) --p.degree;
+    if (p.degree == 0) return 0;
+    double ends[12];
+    int n_ends = 0;
+    ends[n_ends++] = lo;
+    if (p.degree > 1) {
+        const int n = poly_roots(poly_derivative(p), lo, hi, ends + 1, all, n_all);
+        if (all)
+            for (int k = 0; k < n; ++k) all[(*n_all)++] = ends[1 + k];
+        n_ends += n;
+    }
+    ends[n_ends++] = hi;
+    int count = 0;
+    for (int k = 0; k + 1 < n_ends; ++k) {
+        double a = ends[k], b = ends[k + 1], fa = p(a), fb = p(b);
+        if (fa == 0) {
+            if (count == 0 || roots[count - 1] != a) roots[count++] = a;
+            continue;
+        }
+        if ((fa < 0) == (fb < 0)) continue;
+        double x = a;
+        int side = 0;
+        for (int iteration = 0; iteration < 100; ++iteration) {
+            const double previous = x;
+            x = (a * fb - b * fa) / (fb - fa);
+            if (!(x > a && x < b)) x = 0.5 * (a + b);
+            const double fx = p(x);
+            if (fx == 0 || b - a <= 4e-16 * std::max(1.0, std::abs(x))) break;
+            if ((fx < 0) == (fa < 0)) {
+                a = x, fa = fx;
+                if (side == -1) fb *= 0.5;
+                side = -1;
+            } else {
+                b = x, fb = fx;
+                if (side == 1) fa *= 0.5;
+                side = 1;
+            }
+            if (std::abs(x - previous) <= 1e-16 * std::max(1.0, std::abs(x))) break;
+        }
+        roots[count++] = x;
+    }
+    return count;
+}
+
+// The stretches of the line o + s d inside one segment's spheres, each as its entry and exit.
+void segment_spans(const SweepSegment& g, Vec3 o, Vec3 d,
+                   std::vector<std::pair<ShapeHit, ShapeHit>>& spans) {
+    if (!line_meets_box(g.lower, g.upper, o, d)) return;
+    const double a = dot(d, d);
+    if (a == 0) return;
+    // Measured from the point of the line nearest the box's middle, for well-kept digits.
+    const double shift = dot(0.5 * (g.lower + g.upper) - o, d) / a;
+    const Vec3 from = o + shift * d;
+    const double origin[3] = {from.x, from.y, from.z}, direction[3] = {d.x, d.y, d.z};
+    // b(t) = w.d and c(t) = w.w - r^2 with w = from - centre(t); s = (-b -+ sqrt(b^2 - a c)) / a.
+    SmallPoly b, c, r;
+    b.degree = 3, r.degree = 3;
+    for (size_t k = 0; k < 3; ++k) {
+        SmallPoly w;
+        w.degree = 3;
+        for (size_t m = 0; m < 4; ++m) w.c[m] = -g.c[k][m];
+        w.c[0] += origin[k];
+        b = poly_sum(b, direction[k], w);
+        c = poly_sum(c, 1, poly_product(w, w));
+    }
+    for (size_t m = 0; m < 4; ++m) r.c[m] = g.c[3][m];
+    c = poly_sum(c, -1, poly_product(r, r));
+    const SmallPoly disc = poly_sum(poly_product(b, b), -a, c);
+    // s0 or s1 is level where -b' (2 sqrt(disc)) = 2 b b' - a c', squared:
+    // 4 b'^2 disc - (2 b b' - a c')^2 = 0. Where b' = 0 there (a ray square to the spline) the
+    // root is double, so the roots of the polynomial's derivatives are candidates too.
+    const SmallPoly db = poly_derivative(b), dc = poly_derivative(c);
+    const SmallPoly slope = poly_sum(poly_product(b, db), -0.5 * a, dc);  // (2 b b' - a c') / 2
+    const SmallPoly level =
+        poly_sum(poly_product(poly_product(db, db), disc), -1, poly_product(slope, slope));
+    double critical[64], roots[10];
+    int n_critical = 0;
+    const int n_roots = poly_roots(level, 0, 1, roots, critical, &n_critical);
+    for (int k = 0; k < n_roots; ++k) critical[n_critical++] = roots[k];
+
+    double ends[8];
+    int n_ends = 0;
+    ends[n_ends++] = 0;
+    double disc_roots[6];
+    const int n_disc = poly_roots(disc, 0, 1, disc_roots);
+    for (int k = 0; k < n_disc; ++k)
+        if (disc_roots[k] > ends[n_ends - 1]) ends[n_ends++] = disc_roots[k];
+    if (ends[n_ends - 1] < 1) ends[n_ends++] = 1;
+    for (int k = 0; k + 1 < n_ends; ++k) {
+        const double t0 = ends[k], t1 = ends[k + 1];
+        if (disc(0.5 * (t0 + t1)) < 0) continue;
+        double near = 1e300, far = -1e300, t_near = t0, t_far = t0;
+        auto visit = [&](double t) {
+            const double root = std::sqrt(std::max(0.0, disc(t))), bt = b(t);
+            const double s0 = (-bt - root) / a, s1 = (-bt + root) / a;
+            if (s0 < near) near = s0, t_near = t;
+            if (s1 > far) far = s1, t_far = t;
+        };
+        visit(t0), visit(t1);
+        for (int i = 0; i < n_critical; ++i)
+            if (critical[i] > t0 && critical[i] < t1) visit(critical[i]);
+        auto normal = [&](double s, double t) {
+            const Vec3 centre{cubic_at(g.c[0], t), cubic_at(g.c[1], t), cubic_at(g.c[2], t)};
+            return from + s * d - centre;
+        };
+        spans.push_back({{shift + near, normal(near, t_near)}, {shift + far, normal(far, t_far)}});
+    }
+}
+
+// The stretches of the line inside the sweep: the segments' stretches, overlapping ones joined,
+// in order along the line.
+std::vector<std::pair<ShapeHit, ShapeHit>> sweep_spans(const SphereSweepShape& sweep, Vec3 o,
+                                                       Vec3 d) {
+    std::vector<std::pair<ShapeHit, ShapeHit>> spans, joined;
+    for (const SweepSegment& g : sweep_segments(sweep)) segment_spans(g, o, d, spans);
+    std::sort(spans.begin(), spans.end(),
+              [](const auto& x, const auto& y) { return x.first.t < y.first.t; });
+    for (const auto& span : spans) {
+        if (!joined.empty() && span.first.t <= joined.back().second.t) {
+            if (span.second.t > joined.back().second.t) joined.back().second = span.second;
+        } else {
+            joined.push_back(span);
+        }
+    }
+    return joined;
+}
+
+void sphere_sweep_hits(const SphereSweepShape& sweep, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    for (const auto& span : sweep_spans(sweep, o, d)) {
+        hits.push_back(span.first);
+        hits.push_back(span.second);
+    }
+}
+
+bool sphere_sweep_inside(const SphereSweepShape& sweep, Vec3 p) {
+    for (const auto& span : sweep_spans(sweep, p, {1, 0, 0}))
+        if (span.first.t < 0 && span.second.t > 0) return true;
+    return false;
+}
+
 }  // namespace
+
+void sphere_sweep_bounds(const SphereSweepShape& sweep, Vec3& lower, Vec3& upper) {
+    lower = {1e300, 1e300, 1e300}, upper = {-1e300, -1e300, -1e300};
+    for (const SweepSegment& g : sweep_segments(sweep)) {
+        lower = {std::min(lower.x, g.lower.x), std::min(lower.y, g.lower.y),
+                 std::min(lower.z, g.lower.z)};
+        upper = {std::max(upper.x, g.upper.x), std::max(upper.y, g.upper.y),
+                 std::max(upper.z, g.upper.z)};
+    }
+}
 
 void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper) {
     double r_max = 0, y_min = 1e300, y_max = -1e300;
@@ -972,6 +1276,8 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
         inside = lathe_inside(lathe_profile(*lathe), std::hypot(p.x, p.z), p.y);
     } else if (const auto* sor = std::get_if<SorShape>(&shape)) {
         inside = sor_inside(*sor, p);
+    } else if (const auto* sweep = std::get_if<SphereSweepShape>(&shape)) {
+        inside = sphere_sweep_inside(*sweep, p);
     } else if (const auto* julia = std::get_if<JuliaFractalShape>(&shape)) {
         if (!julia_default_slice(*julia)) return false;
         inside = julia_value(*julia, p) < 0;
@@ -1046,6 +1352,8 @@ bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits)
         lathe_hits(*lathe, o, d, hits);
     } else if (const auto* sor = std::get_if<SorShape>(&shape)) {
         sor_hits(*sor, o, d, hits);
+    } else if (const auto* sweep = std::get_if<SphereSweepShape>(&shape)) {
+        sphere_sweep_hits(*sweep, o, d, hits);
     } else if (const auto* julia = std::get_if<JuliaFractalShape>(&shape)) {
         if (!julia_default_slice(*julia)) return false;
         julia_hits(*julia, o, d, hits);

@@ -9,7 +9,10 @@
 // isosurface and blob (the implicit function sampled in 256 steps across the box, container or
 // bounds, sign changes bisected; an isosurface capped by its container), linear prism, lathe
 // (its profile's pieces as POV-Ray draws them, each turned: a sextic along the line), sor (r^2 a
-// cubic in the height: a cubic along the line), polygon (even-odd over its loops),
+// cubic in the height: a cubic along the line), sphere_sweep of each spline kind (the union of
+// its spheres, segment by segment: where along the line the spheres' entries and exits are
+// least and greatest over the segment's parameter, from a polynomial's roots; normals from the
+// sphere that gives the hit), polygon (even-odd over its loops),
 // julia_fractal (the set as its orbits' escape within max_iteration steps says, sampled in 256
 // steps across its ball of radius 2 and bisected; slices w = const only) and height_field of an
 // image (its triangles, cell by cell along the line: height_field_geometry.cpp).
@@ -41,6 +44,8 @@ void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper);
 bool julia_default_slice(const JuliaFractalShape& julia);
 // The box around a surface of revolution.
 void sor_bounds(const SorShape& sor, Vec3& lower, Vec3& upper);
+// The box around a sphere_sweep: per axis the reach of each segment's spheres.
+void sphere_sweep_bounds(const SphereSweepShape& sweep, Vec3& lower, Vec3& upper);
 // A height field's lowest and highest sample, and (shape_hits and shape_inside of a field with
 // its grid) its crossings and inside.
 void height_field_range(const HeightGrid& grid, double& lowest, double& highest);
