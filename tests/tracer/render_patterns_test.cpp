@@ -209,6 +209,12 @@ TEST(RenderShapes, BicubicPatchesAgreeWithPovRayPixelForPixel) {
     expect_flat_colours_agree("patches.pov", 1.0);
 }
 
+// Parametric surfaces: a torus turned on its side, a twisted ribbon scaled unevenly, a rippled
+// sheet cut round by its sphere container, a saddle cut by its box, turned.
+TEST(RenderShapes, ParametricsAgreeWithPovRayPixelForPixel) {
+    expect_flat_colours_agree("parametrics.pov", 1.0);
+}
+
 // Text in three of POV-Ray's fonts (curves, holes, an offset, turned, thick) and cut from a box.
 TEST(RenderShapes, TextAgreesWithPovRayPixelForPixel) {
     expect_flat_colours_agree("text.pov", 1.0);

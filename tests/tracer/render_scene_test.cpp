@@ -3,12 +3,14 @@
 // OBJ files), the object modifiers (no_shadow, no_image) and the camera's POV-Ray frame.
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include <gtest/gtest.h>
 
 #include "core/error.h"
 #include "support/test_support.h"
 #include "tracer/render/camera.h"
+#include "tracer/render/parametric_mesh.h"
 #include "tracer/render/povray_lights.h"
 #include "tracer/render/render_scene.h"
 #include "tracer/scene_language/scene_language.h"
@@ -349,6 +351,127 @@ TEST(RenderScene, SphereSweepsHitWhereTheClosedFormsSay) {
     ASSERT_EQ(h.object, 0);
     EXPECT_NEAR(h.t, 4 + std::sqrt(0.25 - 0.09), kSingle);
     expect_vec(normalized(h.normal), {0, 0.8, -0.6}, kSingle);
+
+// Parametric surfaces: triangles within kParametricTolerance of the size of the surface's part
+// inside its container (hits within that of the closed forms, plus Embree's float); normals
+// cross(dP/du, dP/dv) at the hit's (u, v) (shading) and the triangle's (geometric), as POV-Ray
+// orients them (inward for this sphere and cylinder, whichever side the ray comes from); only
+// the uv rectangle is drawn, and only inside the container (the box -1..1 by default).
+TEST(RenderScene, ParametricsHitWhereTheClosedFormsSay) {
+    auto surface = [](const std::string& xyz, const std::string& rest) {
+        return "parametric { " + xyz + " " + rest + " }";
+    };
+    const std::string sphere =
+        "function { R*cos(v)*cos(u) } function { R*sin(v) } function { R*cos(v)*sin(u) } "
+        "<0, -pi/2>, <2*pi, pi/2>";
+    // The largest side of the sphere's box within its container is 2.
+    const double tolerance = 2 * kParametricTolerance + 1e-5;
+    const Scene unit("#declare R = 1;\n" + surface(sphere, "contained_by { box { -2, 2 } }"));
+    for (const Vec3 direction : {Vec3{1, 0, 0}, normalized({1, 2, -2}), normalized({-3, -1, 1})}) {
+        SurfaceHit h = unit.hit(-5 * direction, direction);
+        ASSERT_EQ(h.object, 0);
+        EXPECT_NEAR(h.t, 4, tolerance);
+        expect_vec(h.shading_normal, direction, tolerance);  // inward
+        EXPECT_GT(dot(h.normal, direction), 0.999);
+        h = unit.hit({0, 0, 0}, direction);  // from inside: inward still
+        EXPECT_NEAR(h.t, 1, tolerance);
+        expect_vec(h.shading_normal, -1 * direction, tolerance);
+    }
+
+    // A cylinder of radius 1 for v from 0 to 1: cross(dP/du, dP/dv) = (-cos u, 0, -sin u).
+    const Scene cylinder(surface("function { cos(u) } function { v } function { sin(u) }",
+                                 "<0, 0>, <2*pi, 1> contained_by { box { -2, 2 } }"));
+    SurfaceHit h = cylinder.hit({-5, 0.5, 0}, {1, 0, 0});
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 4, tolerance);
+    expect_vec(h.shading_normal, {1, 0, 0}, 1e-3);
+    h = cylinder.hit({0, 0.25, 0}, {0, 0, -1});
+    EXPECT_NEAR(h.t, 1, tolerance);
+    expect_vec(h.shading_normal, {0, 0, 1}, 1e-3);
+    EXPECT_EQ(cylinder.hit({-5, 1.5, 0}, {1, 0, 0}).object, -1);   // above v = 1
+    EXPECT_EQ(cylinder.hit({-5, -0.5, 0}, {1, 0, 0}).object, -1);  // below v = 0
+
+    // A tilted plane patch is its triangles exactly: z = u/2 + v/4, normal (-1/2, -1/4, 1);
+    // corners given in either order are the same rectangle.
+    for (const std::string corners : {"<-0.5, -1>, <0.5, 1>", "<0.5, 1>, <-0.5, -1>"}) {
+        const Scene patch(surface("function { u } function { v } function { u/2 + v/4 }",
+                                  corners + " scale 2 translate <0, 0, 3>"));
+        h = patch.hit({0.4, 0.8, -5}, {0, 0, 1});  // (u, v) = (0.2, 0.4): z = 0.2 (x2, +3)
+        ASSERT_EQ(h.object, 0);
+        EXPECT_NEAR(h.t, 8.4, 1e-5);
+        expect_vec(h.normal, normalized({-0.5, -0.25, 1}), 1e-6);
+        expect_vec(h.shading_normal, normalized({-0.5, -0.25, 1}), 1e-6);
+        h = patch.hit({0.4, 0.8, 10}, {0, 0, -1});  // from behind: the same normal
+        EXPECT_NEAR(h.t, 6.6, 1e-5);
+        expect_vec(h.shading_normal, normalized({-0.5, -0.25, 1}), 1e-6);
+        EXPECT_EQ(patch.hit({1.2, 0, -5}, {0, 0, 1}).object, -1);  // u = 0.6: beyond u2
+    }
+
+    // Mirrored, both normals keep POV-Ray's side: (1/2, -1/4, 1) through the inverse transpose.
+    const Scene mirrored(surface("function { u } function { v } function { u/2 + v/4 }",
+                                 "<-0.5, -1>, <0.5, 1> scale <-1, 1, 1>"));
+    h = mirrored.hit({-0.2, 0.4, -5}, {0, 0, 1});  // (u, v) = (0.2, 0.4): z = 0.2
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 5.2, 1e-5);
+    expect_vec(h.normal, normalized({0.5, -0.25, 1}), 1e-6);
+    expect_vec(h.shading_normal, normalized({0.5, -0.25, 1}), 1e-6);
+
+    // A sphere of radius 1.2 in the default container (box -1..1): its caps beyond the box are
+    // cut away; in a sphere container only what the sphere holds is left.
+    const Scene boxed("#declare R = 1.2;\n" + surface(sphere, ""));
+    EXPECT_EQ(boxed.hit({0, 0, -5}, {0, 0, 1}).object, -1);  // z = -1.2 and 1.2: outside
+    EXPECT_EQ(boxed.hit({0, 0, 0}, {0, 0, 1}).object, -1);
+    h = boxed.hit({0.8, 0, -5}, {0, 0, 1});
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 5 - std::sqrt(1.44 - 0.64), tolerance);
+    const Scene in_sphere("#declare R = 1.2;\n" +
+                          surface(sphere, "contained_by { sphere { <0.5, 0, 0>, 1 } }"));
+    EXPECT_EQ(in_sphere.hit({0.2, 0, -5}, {0, 0, 1}).object, -1);  // |p - centre| = 1.22
+    h = in_sphere.hit({0.8, 0, -5}, {0, 0, 1});
+    ASSERT_EQ(h.object, 0);
+    EXPECT_NEAR(h.t, 5 - std::sqrt(1.44 - 0.64), tolerance);
+    // Radius 2 without a container: nothing is left of it.
+    const Scene gone("#declare R = 2;\n" + surface(sphere, ""));
+    EXPECT_EQ(gone.hit({0, 0, -5}, {0, 0, 1}).object, -1);
+    EXPECT_EQ(gone.hit({0, 0, 0}, {1, 0, 0}).object, -1);
+}
+
+// The triangles' bound, checked away from the samples the grid was refined at: random points
+// of every triangle of a unit sphere lie within the tolerance of radius 1, and of a torus
+// within it of the surface at the same (u, v). The sphere's size is 2 (the largest side of its
+// box), the torus's 2.7.
+TEST(RenderScene, ParametricTrianglesFollowTheSurfaceWithinTheirTolerance) {
+    const SceneDescription d = parse_scene_text(
+        "parametric { function { cos(v)*cos(u) } function { sin(v) } function { cos(v)*sin(u) } "
+        "<0, -pi/2>, <2*pi, pi/2> contained_by { box { -2, 2 } } }\n"
+        "parametric { function { (1 + 0.35*cos(v))*cos(u) } function { 0.35*sin(v) } "
+        "function { (1 + 0.35*cos(v))*sin(u) } <0, 0>, <2*pi, 2*pi> "
+        "contained_by { box { -2, 2 } } }",
+        "test.pov");
+    std::mt19937 random(1);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const double sizes[2] = {2, 2.7};
+    for (size_t k = 0; k < 2; ++k) {
+        const auto& shape = std::get<ParametricShape>(d.objects[k].shape);
+        const ParametricMesh mesh = tessellate_parametric(shape, "test.pov");
+        EXPECT_NEAR(mesh.tolerance, kParametricTolerance * sizes[k], 1e-12);
+        double worst = 0;
+        for (const auto& t : mesh.triangles)
+            for (int sample = 0; sample < 4; ++sample) {
+                double a = unit(random), b = unit(random);
+                if (a + b > 1) a = 1 - a, b = 1 - b;
+                const double c = 1 - a - b;
+                const Vec3 p =
+                    c * mesh.points[t[0]] + a * mesh.points[t[1]] + b * mesh.points[t[2]];
+                const double u = c * mesh.uvs[t[0]].x + a * mesh.uvs[t[1]].x + b * mesh.uvs[t[2]].x;
+                const double v = c * mesh.uvs[t[0]].y + a * mesh.uvs[t[1]].y + b * mesh.uvs[t[2]].y;
+                worst = std::max(worst, k == 0 ? std::abs(length(p) - 1)
+                                               : length(p - parametric_point(shape, u, v)));
+            }
+        std::printf("parametric %zu: %zu triangles, worst distance %.3g of tolerance %.3g\n", k,
+                    mesh.triangles.size(), worst, mesh.tolerance);
+        EXPECT_LE(worst, mesh.tolerance);
+    }
 }
 
 // Julia fractals of c = 0: under z -> z^2 a point stays within radius 2 for the 7 steps of
@@ -556,6 +679,18 @@ TEST(RenderScene, RefusesWhatItDoesNotRender) {
               refused("triangle in CSG, clipped_by or inverse", "2:2"));
     EXPECT_EQ(render_error("sphere { 0, 1 clipped_by {\n polygon { 4, 0, x, y, 0 } } }"),
               refused("polygon in CSG, clipped_by or inverse", "2:2"));
+    // A parametric surface is no solid (POV-Ray's inside() refuses it): not in CSG or clips.
+    const std::string parametric =
+        "parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }";
+    EXPECT_EQ(render_error("difference { box { -1, 1 }\n " + parametric + " }"),
+              refused("parametric in CSG, clipped_by or inverse", "2:2"));
+    EXPECT_EQ(render_error(parametric.substr(0, parametric.size() - 1) +
+                           "clipped_by { sphere { 0, 1 } } }"),
+              refused("parametric in CSG, clipped_by or inverse", "1:1"));
+    EXPECT_EQ(render_error("union { sphere { 0, 1 } " + parametric + " }"), "no error");
+    EXPECT_EQ(render_error("parametric { function { sqrt(u) } function { v } function { 0 } "
+                           "<-1, 0>, <1, 1> }"),
+              refused("parametric whose functions are not finite at <-1, 0>", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 double_illuminate }"),
               refused("double_illuminate", "1:1"));
     EXPECT_EQ(render_error("sphere { 0, 1 no_radiosity }"), refused("no_radiosity", "1:1"));

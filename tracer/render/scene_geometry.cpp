@@ -1,6 +1,7 @@
 // SceneDescription objects -> Embree geometry: triangles and boxes as world-space triangles,
 // meshes as instances of one prototype per mesh (every `object { M }` of a mesh shares it),
-// spheres, planes, cylinders, cones, tori and discs as user geometry (user_geometry.cpp).
+// spheres, planes, cylinders, cones, tori and discs as user geometry (user_geometry.cpp), a
+// parametric as its own triangles, clipped by its container (parametric_mesh.h).
 #include "tracer/render/scene_geometry.h"
 
 #include <algorithm>
@@ -23,11 +24,11 @@ namespace {
 // What the renderer does not render is refused, never dropped or approximated: the shapes
 // other than sphere, box, plane, triangle, mesh, cylinder, cone, torus, disc, text of a TrueType
 // font, quadric, polynomials, superellipsoid, isosurface, blob, linear prism, lathe, sor,
-// polygon, julia_fractal, bicubic_patch, height_field and sphere_sweep (solids.h
+// polygon, julia_fractal, bicubic_patch, height_field, sphere_sweep and parametric (solids.h
 // refuses what it cannot take into CSG, clipped_by, bounded_by or inverse), and the modifiers
-// that change what is seen. Photon and
-// radiosity hints (photons { }, radiosity { importance }), hierarchy, sturm and hollow have nothing
-// to change in a path tracer, which computes all light transport; they pass.
+// that change what is seen. Photon and radiosity hints (photons { }, radiosity { importance }),
+// hierarchy, sturm and hollow have nothing to change in a path tracer, which computes all light
+// transport; they pass.
 // An isosurface whose function the language cannot evaluate (an internal function or a
 // pattern it does not have) is refused before rendering, where one evaluation tells.
 template <class Refuse>
@@ -41,6 +42,20 @@ void refuse_unevaluable(const IsosurfaceShape& iso, Refuse&& refuse) {
         iso.function->evaluate_float(arguments);
     } catch (const FunctionNotSupported& e) {
         refuse(fmt::format("isosurface function ({})", e.what()));
+    }
+}
+
+// A parametric's functions likewise, at the middle of its rectangle.
+template <class Refuse>
+void refuse_unevaluable(const ParametricShape& parametric, Refuse&& refuse) {
+    for (const FunctionRef& f : parametric.functions)
+        if (!f || f->result_terms() != 1 || f->parameter_count() > 3)
+            refuse("parametric of this function");
+    try {
+        parametric_point(parametric, 0.5 * (parametric.uv_minimum.x + parametric.uv_maximum.x),
+                         0.5 * (parametric.uv_minimum.y + parametric.uv_maximum.y));
+    } catch (const FunctionNotSupported& e) {
+        refuse(fmt::format("parametric function ({})", e.what()));
     }
 }
 
@@ -78,7 +93,8 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s) ||
         std::holds_alternative<JuliaFractalShape>(s) ||
         std::holds_alternative<BicubicPatchShape>(s) ||
-        std::holds_alternative<HeightFieldShape>(s) || std::holds_alternative<SphereSweepShape>(s);
+        std::holds_alternative<HeightFieldShape>(s) || std::holds_alternative<SphereSweepShape>(s) ||
+        std::holds_alternative<ParametricShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
     if (const auto* julia = std::get_if<JuliaFractalShape>(&s);
         julia && !julia_default_slice(*julia))
@@ -93,6 +109,8 @@ void refuse_unrendered(const ObjectInstance& o) {
                 refuse(fmt::format("blob components with textures of their own (at {})",
                                    c.location.str()));
     if (const auto* iso = std::get_if<IsosurfaceShape>(&s)) refuse_unevaluable(*iso, refuse);
+    if (const auto* parametric = std::get_if<ParametricShape>(&s))
+        refuse_unevaluable(*parametric, refuse);
     if (const auto* sphere = std::get_if<SphereShape>(&o.shape); sphere && !(sphere->radius > 0))
         refuse(fmt::format("sphere of radius {} (only positive radii)", sphere->radius));
     if (const auto* mesh = std::get_if<MeshShape>(&o.shape)) {
@@ -125,6 +143,31 @@ void skip_filter(const RTCFilterFunctionNArguments* args) {
                                ? tables.instances[tables.instance_of_geometry[instance]].object
                                : leaf->prim_object[RTCHitN_primID(args->hit, args->N, i)];
         if (tables.object_flags[object] & context->skip) args->valid[i] = 0;
+    }
+}
+
+// Skips as skip_filter does, and rejects hits on a parametric's triangles outside its container
+// (the hit distance is the ray's tfar while the filter runs).
+void parametric_filter(const RTCFilterFunctionNArguments* args) {
+    const auto* context = reinterpret_cast<const TraceContext*>(args->context);
+    const auto* leaf = static_cast<const LeafTable*>(args->geometryUserPtr);
+    const bool skipped = (leaf->tables->object_flags[leaf->parametric_object] & context->skip) != 0;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        if (skipped) {
+            args->valid[i] = 0;
+            continue;
+        }
+        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+        if (!leaf->parametric_mesh->straddles[prim]) continue;
+        RTCRayN* ray = args->ray;
+        const unsigned n = args->N;
+        const double t = RTCRayN_tfar(ray, n, i);
+        const Vec3 p{RTCRayN_org_x(ray, n, i) + t * RTCRayN_dir_x(ray, n, i),
+                     RTCRayN_org_y(ray, n, i) + t * RTCRayN_dir_y(ray, n, i),
+                     RTCRayN_org_z(ray, n, i) + t * RTCRayN_dir_z(ray, n, i)};
+        if (!container_holds(leaf->parametric->contained_by, leaf->world_to_object.point(p)))
+            args->valid[i] = 0;
     }
 }
 
@@ -294,6 +337,52 @@ private:
             }
     }
 
+    // A parametric's triangles in world coordinates, one geometry of its own whose filter
+    // clips them by the container; geometric normals are the triangles' (wound along
+    // cross(dP/du, dP/dv)), shading normals the surface's at the hit's (u, v).
+    void add_parametric(int object, const ParametricShape& parametric, const std::string& where,
+                        const Matrix4& m, const Matrix4& inverse) {
+        auto mesh =
+            std::make_shared<const ParametricMesh>(tessellate_parametric(parametric, where));
+        if (mesh->triangles.empty()) return;
+        LeafTable& leaf = new_leaf();
+        leaf.parametric = &parametric;
+        leaf.parametric_mesh = mesh;
+        leaf.parametric_object = object;
+        leaf.world_to_object = inverse;
+        std::vector<Vec3> world(mesh->points.size());
+        for (size_t i = 0; i < world.size(); ++i) world[i] = m.point(mesh->points[i]);
+        RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertex = static_cast<float*>(
+            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                    3 * sizeof(float), world.size()));
+        auto* index = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(unsigned), mesh->triangles.size()));
+        for (size_t i = 0; i < world.size(); ++i) {
+            vertex[3 * i] = float(world[i].x);
+            vertex[3 * i + 1] = float(world[i].y);
+            vertex[3 * i + 2] = float(world[i].z);
+        }
+        leaf.prim_normal.reserve(mesh->triangles.size());
+        for (size_t k = 0; k < mesh->triangles.size(); ++k) {
+            const auto& t = mesh->triangles[k];
+            for (size_t c = 0; c < 3; ++c) {
+                index[3 * k + c] = t[c];
+                bounds_.add(world[t[c]]);
+            }
+            // Through the inverse transpose, which keeps its side under a mirroring transform.
+            const Vec3 a = mesh->points[t[0]], b = mesh->points[t[1]], c = mesh->points[t[2]];
+            leaf.prim_normal.push_back(unit_or_up(inverse.transpose_vector(cross(b - a, c - a))));
+        }
+        rtcSetGeometryUserData(geometry, &leaf);
+        rtcSetGeometryIntersectFilterFunction(geometry, parametric_filter);
+        rtcSetGeometryOccludedFilterFunction(geometry, parametric_filter);
+        rtcCommitGeometry(geometry);
+        record(rtcAttachGeometry(scene_, geometry), &leaf, -1);
+        rtcReleaseGeometry(geometry);
+    }
+
     void add_object(int k, const ObjectInstance& o, LeafTable& leaf, TriangleSoup& soup,
                     LeafTable& user) {
         const Matrix4& m = o.object_to_world;
@@ -328,6 +417,8 @@ private:
             add_box(k, *box, m, inverse, leaf, soup);
         } else if (const auto* patch = std::get_if<BicubicPatchShape>(&o.shape)) {
             add_bicubic_patch(k, *patch, m, inverse, leaf, soup);
+        } else if (const auto* parametric = std::get_if<ParametricShape>(&o.shape)) {
+            add_parametric(k, *parametric, o.location.str(), m, inverse);
         } else if (const auto* mesh = std::get_if<MeshShape>(&o.shape)) {
             add_instance(k, mesh->mesh, m, inverse);
         } else if (const auto* file = std::get_if<MeshFileShape>(&o.shape)) {
@@ -477,6 +568,21 @@ void resolve_hit(const GeometryTables& tables, const RTCHit& h, SurfaceHit& hit)
         return;
     }
     const LeafTable& leaf = *tables.leaf_of_geometry[h.geomID];
+    if (leaf.parametric) {
+        hit.object = leaf.parametric_object;
+        hit.normal = hit.shading_normal = leaf.prim_normal[h.primID];
+        const ParametricMesh& mesh = *leaf.parametric_mesh;
+        const auto& corners = mesh.triangles[h.primID];
+        const double u = h.u, v = h.v;
+        const Vec2 a = mesh.uvs[corners[0]], b = mesh.uvs[corners[1]], c = mesh.uvs[corners[2]];
+        const Vec3 n = leaf.world_to_object.transpose_vector(
+            parametric_normal(*leaf.parametric, (1 - u - v) * a.x + u * b.x + v * c.x,
+                              (1 - u - v) * a.y + u * b.y + v * c.y));
+        const double l = length(n);
+        // Where the surface is degenerate (a pole), the triangle's normal.
+        if (l > 0 && std::isfinite(l)) hit.shading_normal = (1 / l) * n;
+        return;
+    }
     if (leaf.user_prims.empty()) {
         hit.object = leaf.prim_object[h.primID];
         hit.normal = hit.shading_normal = leaf.prim_normal[h.primID];

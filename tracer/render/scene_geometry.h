@@ -8,6 +8,7 @@
 
 #include <embree3/rtcore.h>
 
+#include "tracer/render/parametric_mesh.h"
 #include "tracer/render/render_scene.h"
 #include "tracer/scene_language/shape_geometry.h"
 
@@ -52,6 +53,12 @@ struct LeafTable {
     std::shared_ptr<const TriangleMesh> mesh;  // prototypes: for interpolated normals
     std::vector<UserPrim> user_prims;
     float plane_extent = 1e6f;  // half-size of the box a plane's bounds span
+    // A parametric's triangles (one geometry for each; primitive k is triangle k of the mesh):
+    // the surface for shading normals, the container for its clipping.
+    const ParametricShape* parametric = nullptr;
+    std::shared_ptr<const ParametricMesh> parametric_mesh;
+    int parametric_object = -1;
+    Matrix4 world_to_object;
 };
 
 struct InstanceRecord {

@@ -194,8 +194,12 @@ bool local_box(const Shape& shape, Vec3& lower, Vec3& upper) {
         Vec3 lo, hi;
         if (!blob_bounds(*blob, lo, hi)) return false;
         b.add(lo), b.add(hi);
-    } else if (const auto* iso = std::get_if<IsosurfaceShape>(&shape)) {
-        const ContainedBy& c = iso->contained_by;
+    } else if (std::holds_alternative<IsosurfaceShape>(shape) ||
+               std::holds_alternative<ParametricShape>(shape)) {
+        // Nothing outside the container is seen.
+        const auto* iso = std::get_if<IsosurfaceShape>(&shape);
+        const ContainedBy& c =
+            iso ? iso->contained_by : std::get<ParametricShape>(shape).contained_by;
         if (c.kind == ContainedBy::Kind::sphere) {
             around(c.centre, c.centre, c.radius);
         } else {

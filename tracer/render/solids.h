@@ -21,7 +21,8 @@ namespace rayset::tracer {
 bool is_solid(const ObjectInstance& object);
 
 // The box that holds a shape in its own coordinates (sphere, box, cylinder, cone, torus, disc,
-// triangle, mesh); false for the unbounded ones (plane, ...).
+// triangle, mesh, an isosurface's or parametric's container, ...); false for the unbounded ones
+// (plane, ...).
 bool local_box(const Shape& shape, Vec3& lower, Vec3& upper);
 
 struct Solid {
