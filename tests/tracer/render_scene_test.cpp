@@ -304,7 +304,7 @@ TEST(RenderScene, SphereSweepsHitWhereTheClosedFormsSay) {
 
     // The B-spline of -3, -1, 1, 3 runs from (-3 + 4 (-1) + 1) / 6 = -1 to 1; Catmull-Rom's of
     // -2, -1, 1, 2 from -1 to 1 (monotone between).
-    for (const std::string& tube :
+    for (const std::string tube :
          {"sphere_sweep { b_spline 4, <-3, 0, 0>, 0.5, <-1, 0, 0>, 0.5, <1, 0, 0>, 0.5, "
           "<3, 0, 0>, 0.5 rotate 90*y }",
           "sphere_sweep { cubic_spline 4, <-2, 0, 0>, 0.5, <-1, 0, 0>, 0.5, <1, 0, 0>, 0.5, "
@@ -351,6 +351,7 @@ TEST(RenderScene, SphereSweepsHitWhereTheClosedFormsSay) {
     ASSERT_EQ(h.object, 0);
     EXPECT_NEAR(h.t, 4 + std::sqrt(0.25 - 0.09), kSingle);
     expect_vec(normalized(h.normal), {0, 0.8, -0.6}, kSingle);
+}
 
 // Parametric surfaces: triangles within kParametricTolerance of the size of the surface's part
 // inside its container (hits within that of the closed forms, plus Embree's float); normals

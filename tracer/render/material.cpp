@@ -185,9 +185,13 @@ Material material_of(const Colour& c, const Finish& f, double ior, double emissi
 
 void add_spectra(Material& m) {
     m.emission_spectrum = IlluminantSpectrum(m.emission);
-    m.spectra = {upsample_reflectance(m.diffuse), upsample_reflectance(m.glossy),
-                 upsample_reflectance(m.mirror_min), upsample_reflectance(m.mirror_max),
-                 upsample_reflectance(m.transmission)};
+    m.spectra = {upsample_reflectance(m.diffuse),
+                 upsample_reflectance(m.glossy),
+                 upsample_reflectance(m.mirror_min),
+                 upsample_reflectance(m.mirror_max),
+                 upsample_reflectance(m.transmission),
+                 {},
+                 {}};
     if (m.mirror_metallic > 0) {
         m.spectra.mirror_min_metal = upsample_reflectance(m.mirror_min_metal);
         m.spectra.mirror_max_metal = upsample_reflectance(m.mirror_max_metal);
