@@ -181,7 +181,13 @@ public:
             std::string insert;
         };
         std::vector<Edit> edits;
-        std::vector<bool> frames;  // open braces: whether closing one ends a coloured statement
+        // Open braces: whether closing one ends a coloured statement, whether it holds an
+        // array's elements (values, like a declaration's).
+        struct Frame {
+            bool coloured = false, array = false;
+        };
+        std::vector<Frame> frames;
+        size_t array_brace = std::string::npos;  // the brace after `array [...]...`
         int parentheses = 0;
         bool in_camera = false;
         size_t camera_end = 0;
@@ -194,13 +200,26 @@ public:
             // Inside a macro's arguments a texture is an argument: it stays.
             if (is(t, i, "(")) ++parentheses;
             if (is(t, i, ")")) parentheses = std::max(0, parentheses - 1);
+            if (t[i].kind == Token::word && t[i].text == "array") {
+                size_t j = i + 1;
+                while (is(t, j, "[")) {
+                    for (int depth = 0; j < t.size(); ++j) {
+                        depth += is(t, j, "[") - is(t, j, "]");
+                        if (depth == 0) break;
+                    }
+                    ++j;
+                }
+                array_brace = j;
+            }
             if (is(t, i, "{")) {
-                frames.push_back(false);
+                const bool nested = !frames.empty() && frames.back().array &&
+                                    (is(t, i - 1, "{") || is(t, i - 1, ","));
+                frames.push_back({false, i == array_brace || nested});
                 continue;
             }
             if (is(t, i, "}")) {
                 if (!frames.empty()) {
-                    if (frames.back())
+                    if (frames.back().coloured)
                         edits.push_back(
                             {t[i].begin, t[i].begin, colour_texture(++copy.statements)});
                     frames.pop_back();
@@ -221,7 +240,8 @@ public:
             }
             if (t[i].kind != Token::word) continue;
             const std::string& w = t[i].text;
-            const bool declared = i > 0 && is(t, i - 1, "=");
+            const bool declared =
+                (i > 0 && is(t, i - 1, "=")) || (!frames.empty() && frames.back().array);
             size_t open = i + 1;
             if (w == "function" && is(t, open, "(")) {  // function(x, y, z) { ... }
                 while (open < t.size() && !is(t, open, ")")) ++open;
@@ -246,7 +266,7 @@ public:
                 edits.push_back({t[i].begin, t[end].end, ""});
                 i = end;
             } else if (kObjects.count(w)) {
-                frames.push_back(frames.empty() && !declared);
+                frames.push_back({frames.empty() && !declared, false});
                 i = open;
             }
         }
@@ -283,13 +303,15 @@ private:
 }  // namespace
 
 Rgb flat_colour(int index) {
-    if (index < 0 || index > 4095) throw std::runtime_error("more than 4095 object statements");
-    return {(index % 16) / 15.0, (index / 16 % 16) / 15.0, (index / 256) / 15.0};
+    if (index < 0 || index > kMaxFlatColour)
+        throw std::runtime_error("more than " + std::to_string(kMaxFlatColour) +
+                                 " object statements");
+    return {(index % 256) / 255.0, (index / 256 % 256) / 255.0, (index / 65536) / 255.0};
 }
 
 int flat_colour_index(Rgb c) {
-    const auto digit = [](double v) { return int(std::lround(std::clamp(v, 0.0, 1.0) * 15)); };
-    return digit(c.red) + 16 * digit(c.green) + 256 * digit(c.blue);
+    const auto digit = [](double v) { return int(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
+    return digit(c.red) + 256 * digit(c.green) + 65536 * digit(c.blue);
 }
 
 FlatColourCopy write_flat_colour_copy(const std::string& scene, const std::string& folder) {

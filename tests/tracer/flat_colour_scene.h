@@ -24,10 +24,11 @@
 
 namespace rayset::test {
 
-// The flat colour of the object statement number `index` (1, 2, ...; at most 4095): channel
-// values k / 15, k = 0 .. 15, the digits of `index` in base 16 (exact in 8-bit output, 17 k).
+// The flat colour of the object statement number `index` (1, 2, ..., kMaxFlatColour): channel
+// values k / 255, the digits of `index` in base 256, exact in 8-bit output.
+constexpr int kMaxFlatColour = 256 * 256 * 256 - 1;
 Rgb flat_colour(int index);
-// The statement number of a colour (rounded to the nearest k / 15 per channel); 0 is black.
+// The statement number of a colour (each channel rounded to the nearest k / 255); 0 is black.
 int flat_colour_index(Rgb colour);
 
 struct FlatColourCopy {

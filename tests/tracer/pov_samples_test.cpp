@@ -125,7 +125,8 @@ TEST(PovSampleCoverage, TheScenesUseEveryShapeCsgOperationAndCamera) {
 }
 
 // The copy's rules on a small scene: what is given is removed, what is declared kept (a layered
-// texture with its layers, a macro's texture argument), each top-level object statement coloured
+// texture with its layers, a macro's texture argument, an array's textures), each top-level
+// object statement coloured
 // (in a macro body too), the objects inside a CSG left to inherit.
 TEST(FlatColourCopy, RewritesAsDocumented) {
     ScratchDir source, target;
@@ -136,6 +137,8 @@ TEST(FlatColourCopy, RewritesAsDocumented) {
 union { sphere { 0, 1 texture { T } } box { 0, 1 pigment { rgb x } } finish { phong 1 } }
 #macro M(Tex) cone { 0, 1, y, 0 texture { Tex } } #end
 M(texture { T })
+#declare Looks = array[2] { texture { T }, pigment { rgb 1 } }
+#declare Things = array[1][1] { { sphere { 0, 1 pigment { rgb 1 } } } }
 global_settings { assumed_gamma 2.2 }
 )");
     write_file(source.file("parts.inc"), "plane { y, 0 pigment { checker } }\n");
@@ -156,28 +159,31 @@ global_settings { assumed_gamma 2.2 }
               "/* a comment { with a brace */ \n"
               "#declare S = sky_sphere { pigment { rgb 1 } } \n"
               "union { sphere { 0, 1  } box { 0, 1  }  " +
-                  texture("0.0666666667, 0, 0") +
+                  texture("0.00392156863, 0, 0") +
                   "}\n"
                   "#macro M(Tex) cone { 0, 1, y, 0  " +
-                  texture("0.133333333, 0, 0") +
+                  texture("0.00784313725, 0, 0") +
                   "} #end\n"
-                  "M(texture { T })\n\n"
+                  "M(texture { T })\n"
+                  "#declare Looks = array[2] { texture { T }, pigment { rgb 1 } }\n"
+                  "#declare Things = array[1][1] { { sphere { 0, 1  } } }\n\n"
                   "\nglobal_settings { assumed_gamma 1 }\nbackground { rgb 0 }\n");
-    EXPECT_EQ(read_file(target.file("parts.inc")), "plane { y, 0  " + texture("0.2, 0, 0") + "}\n");
+    EXPECT_EQ(read_file(target.file("parts.inc")),
+              "plane { y, 0  " + texture("0.0117647059, 0, 0") + "}\n");
     EXPECT_TRUE(copy.words.count("cone") && copy.words.count("plane"));
 }
 
 TEST(FlatColourCopy, ColoursNameTheirStatements) {
-    for (const int index : {1, 15, 16, 255, 256, 1000, 4095}) {
+    for (const int index : {1, 255, 256, 4095, 65535, 65536, 1000000, kMaxFlatColour}) {
         const Rgb c = flat_colour(index);
         EXPECT_EQ(flat_colour_index(c), index);
-        // As POV-Ray writes it in 8 bits (17 per step of 1/15), and back.
+        // As POV-Ray writes it in 8 bits, and back.
         EXPECT_EQ(flat_colour_index({std::round(255 * c.red) / 255, std::round(255 * c.green) / 255,
                                      std::round(255 * c.blue) / 255}),
                   index);
     }
     EXPECT_EQ(flat_colour_index({0, 0, 0}), 0);
-    EXPECT_THROW(flat_colour(4096), std::runtime_error);
+    EXPECT_THROW(flat_colour(kMaxFlatColour + 1), std::runtime_error);
 }
 
 }  // namespace
