@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "tracer/scene_language/object_grammar.h"
+#include "tracer/scene_language/shape_geometry.h"
 
 namespace rayset::tracer {
 namespace {
@@ -316,6 +317,7 @@ NodePtr new_node(Parser& p, const Token& keyword, ObjectNode::Kind kind) {
 }
 
 void finish_shape(Parser& p, ObjectNode& node, const Token& keyword, const Token& open) {
+    prepare_shape(node.shape);
     compute_shape_bounds(node);
     parse_object_modifiers(p, node, keyword, open);
 }

@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <memory>
+#include <stdexcept>
 
 #include "tracer/scene_language/functions.h"
 #include "tracer/scene_language/quadratic.h"
@@ -200,6 +202,21 @@ std::vector<ProfilePiece> lathe_profile(const LatheShape& lathe) {
     return pieces;
 }
 
+}  // namespace
+
+struct LatheProfile {
+    std::vector<ProfilePiece> pieces;
+};
+
+namespace {
+
+// What a prepared shape holds (prepare_shape).
+template <class T>
+const T& prepared(const std::shared_ptr<const T>& data) {
+    if (!data) throw std::logic_error("shape geometry asked of a shape not prepared");
+    return *data;
+}
+
 // The real roots of c[0] + c[1] t + ... + c[n] t^n in [lo, hi]: each monotone piece between the
 // roots of the derivative is bisected.
 std::vector<double> roots_between(std::vector<double> c, double lo, double hi) {
@@ -331,7 +348,7 @@ bool lathe_inside(const std::vector<ProfilePiece>& pieces, double rho, double y)
 // height y(t). Along a line that climbs, the line's parameter is a cubic in t and the
 // condition a sextic in t; along a level line, the heights' roots give t and each a circle.
 void lathe_hits(const LatheShape& lathe, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
-    const std::vector<ProfilePiece> pieces = lathe_profile(lathe);
+    const std::vector<ProfilePiece>& pieces = prepared(lathe.profile).pieces;
     auto add_hit = [&](const ProfilePiece& piece, double t, double s) {
         const Vec3 p = o + s * d;
         const double dr = (3 * piece.r[3] * t + 2 * piece.r[2]) * t + piece.r[1];
@@ -400,20 +417,12 @@ void torus_hits(const TorusShape& torus, Vec3 o, Vec3 d, std::vector<ShapeHit>& 
     }
 }
 
-// The stretch of the line o + t d inside a container, [near, far]; false when it misses.
-bool container_span(const ContainedBy& c, Vec3 o, Vec3 d, double& near, double& far) {
-    if (c.kind == ContainedBy::Kind::sphere) {
-        const Vec3 w = o - c.centre;
-        const std::vector<double> t =
-            quadratic_roots(dot(d, d), 2 * dot(w, d), dot(w, w) - c.radius * c.radius);
-        if (t.size() < 2) return false;
-        near = t[0], far = t[1];
-        return true;
-    }
+// The stretch [near, far] of the line o + t d inside the box lower..upper (the slab test);
+// false when the line misses it.
+bool box_span(Vec3 lower, Vec3 upper, Vec3 o, Vec3 d, double& near, double& far) {
     near = -1e300, far = 1e300;
     const double origin[3] = {o.x, o.y, o.z}, direction[3] = {d.x, d.y, d.z};
-    const double low[3] = {c.minimum.x, c.minimum.y, c.minimum.z};
-    const double high[3] = {c.maximum.x, c.maximum.y, c.maximum.z};
+    const double low[3] = {lower.x, lower.y, lower.z}, high[3] = {upper.x, upper.y, upper.z};
     for (int axis = 0; axis < 3; ++axis) {
         if (direction[axis] == 0) {
             if (origin[axis] < low[axis] || origin[axis] > high[axis]) return false;
@@ -424,7 +433,20 @@ bool container_span(const ContainedBy& c, Vec3 o, Vec3 d, double& near, double& 
         if (t0 > t1) std::swap(t0, t1);
         near = std::max(near, t0), far = std::min(far, t1);
     }
-    return near < far;
+    return near <= far;
+}
+
+// The stretch of the line o + t d inside a container, [near, far]; false when it misses.
+bool container_span(const ContainedBy& c, Vec3 o, Vec3 d, double& near, double& far) {
+    if (c.kind == ContainedBy::Kind::sphere) {
+        const Vec3 w = o - c.centre;
+        const std::vector<double> t =
+            quadratic_roots(dot(d, d), 2 * dot(w, d), dot(w, w) - c.radius * c.radius);
+        if (t.size() < 2) return false;
+        near = t[0], far = t[1];
+        return true;
+    }
+    return box_span(c.minimum, c.maximum, o, d, near, far) && near < far;
 }
 
 // The container's outward normal at a point of its surface.
@@ -800,16 +822,24 @@ std::vector<SorPiece> sor_pieces(const SorShape& sor) {
     return pieces;
 }
 
+}  // namespace
+
+struct SorProfile {
+    std::vector<SorPiece> pieces;
+};
+
+namespace {
+
 bool sor_inside(const SorShape& sor, Vec3 q) {
     const double rho2 = q.x * q.x + q.z * q.z;
-    for (const SorPiece& piece : sor_pieces(sor))
+    for (const SorPiece& piece : prepared(sor.profile).pieces)
         if (q.y >= piece.h0 && q.y <= piece.h1) return rho2 < cubic_at(piece.r2, q.y);
     return false;
 }
 
 // x^2 + z^2 = r^2(y) along the line, piece by piece (a cubic in t), and the caps unless open.
 void sor_hits(const SorShape& sor, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
-    const std::vector<SorPiece> pieces = sor_pieces(sor);
+    const std::vector<SorPiece>& pieces = prepared(sor.profile).pieces;
     if (pieces.empty()) return;
     const std::vector<double> x{o.x, d.x}, y{o.y, d.y}, z{o.z, d.z};
     std::vector<double> rho2 = times(x, x);
@@ -852,7 +882,7 @@ void sor_hits(const SorShape& sor, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) 
 
 void sor_bounds(const SorShape& sor, Vec3& lower, Vec3& upper) {
     double r2_max = 0;
-    const std::vector<SorPiece> pieces = sor_pieces(sor);
+    const std::vector<SorPiece>& pieces = prepared(sor.profile).pieces;
     for (const SorPiece& piece : pieces) {
         auto visit = [&](double h) { r2_max = std::max(r2_max, cubic_at(piece.r2, h)); };
         visit(piece.h0), visit(piece.h1);
@@ -865,25 +895,42 @@ void sor_bounds(const SorShape& sor, Vec3& lower, Vec3& upper) {
     upper = {r, pieces.empty() ? 0 : pieces.back().h1, r};
 }
 
+namespace {}  // namespace
+
+// A polygon's plane: Newell's normal of its points, and the axis it is least along (dropped to
+// project the polygon on the plane of the other two).
+struct PolygonPlane {
+    Vec3 normal;
+    int drop = 2;
+};
+
 namespace {
 
-// A polygon's plane (Newell's normal of its points) and the even-odd rule over the edges of
-// all its loops, each loop closed by repeating its first point.
-void polygon_hits(const PolygonShape& polygon, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+PolygonPlane polygon_plane(const PolygonShape& polygon) {
     const std::vector<Vec3>& p = polygon.points;
-    Vec3 normal{};
+    PolygonPlane plane;
     for (size_t i = 0; i < p.size(); ++i) {
         const Vec3 a = p[i], b = p[(i + 1) % p.size()];
-        normal = normal + Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
-                               (a.x - b.x) * (a.y + b.y)};
+        plane.normal = plane.normal + Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+                                           (a.x - b.x) * (a.y + b.y)};
     }
+    const double n[3] = {std::abs(plane.normal.x), std::abs(plane.normal.y),
+                         std::abs(plane.normal.z)};
+    plane.drop = n[0] > n[1] ? (n[0] > n[2] ? 0 : 2) : (n[1] > n[2] ? 1 : 2);
+    return plane;
+}
+
+// The even-odd rule over the edges of all the polygon's loops, each loop closed by repeating
+// its first point, in the plane's projection.
+void polygon_hits(const PolygonShape& polygon, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits) {
+    const std::vector<Vec3>& p = polygon.points;
+    const PolygonPlane& plane = prepared(polygon.plane);
+    const Vec3 normal = plane.normal;
     const double along = dot(normal, d);
     if (is_zero(normal) || along == 0) return;
     const double t = dot(normal, p[0] - o) / along;
     const Vec3 q = o + t * d;
-    // Project on the plane of the two axes the normal is least along.
-    const double n[3] = {std::abs(normal.x), std::abs(normal.y), std::abs(normal.z)};
-    const int drop = n[0] > n[1] ? (n[0] > n[2] ? 0 : 2) : (n[1] > n[2] ? 1 : 2);
+    const int drop = plane.drop;
     auto uv = [drop](Vec3 v) {
         return drop == 0 ? Vec2{v.y, v.z} : drop == 1 ? Vec2{v.z, v.x} : Vec2{v.x, v.y};
     };
@@ -976,44 +1023,20 @@ std::vector<SweepSegment> make_sweep_segments(const SphereSweepShape& sweep) {
     return segments;
 }
 
-// The segments of the sweep last asked for on this thread, made again only when its spheres or
-// kind differ (ray after ray asks for the same sweep's).
-const std::vector<SweepSegment>& sweep_segments(const SphereSweepShape& sweep) {
-    thread_local SphereSweepShape::Kind kind{};
-    thread_local std::vector<SphereSweepShape::Sphere> spheres;
-    thread_local std::vector<SweepSegment> segments;
-    const bool same =
-        kind == sweep.kind && spheres.size() == sweep.spheres.size() &&
-        std::equal(spheres.begin(), spheres.end(), sweep.spheres.begin(),
-                   [](const SphereSweepShape::Sphere& a, const SphereSweepShape::Sphere& b) {
-                       return a.centre.x == b.centre.x && a.centre.y == b.centre.y &&
-                              a.centre.z == b.centre.z && a.radius == b.radius;
-                   });
-    if (!same || segments.empty()) {
-        kind = sweep.kind, spheres = sweep.spheres;
-        segments = make_sweep_segments(sweep);
-    }
-    return segments;
-}
+}  // namespace
+
+struct SweepSegments {
+    std::vector<SweepSegment> segments;
+};
+
+namespace {
 
 // Whether the line o + s d meets the box lower..upper (widened by a hair).
 bool line_meets_box(Vec3 lower, Vec3 upper, Vec3 o, Vec3 d) {
     const double margin = 1e-9 * (1 + length(upper - lower));
-    double near = -1e300, far = 1e300;
-    const double origin[3] = {o.x, o.y, o.z}, direction[3] = {d.x, d.y, d.z};
-    const double low[3] = {lower.x - margin, lower.y - margin, lower.z - margin};
-    const double high[3] = {upper.x + margin, upper.y + margin, upper.z + margin};
-    for (int axis = 0; axis < 3; ++axis) {
-        if (direction[axis] == 0) {
-            if (origin[axis] < low[axis] || origin[axis] > high[axis]) return false;
-            continue;
-        }
-        double t0 = (low[axis] - origin[axis]) / direction[axis];
-        double t1 = (high[axis] - origin[axis]) / direction[axis];
-        if (t0 > t1) std::swap(t0, t1);
-        near = std::max(near, t0), far = std::min(far, t1);
-    }
-    return near <= far;
+    const Vec3 widen{margin, margin, margin};
+    double near = 0, far = 0;
+    return box_span(lower - widen, upper + widen, o, d, near, far);
 }
 
 // A polynomial of degree 10 at most, t^0 first, without allocation (a sweep's tests per ray).
@@ -1171,7 +1194,7 @@ void segment_spans(const SweepSegment& g, Vec3 o, Vec3 d,
 std::vector<std::pair<ShapeHit, ShapeHit>> sweep_spans(const SphereSweepShape& sweep, Vec3 o,
                                                        Vec3 d) {
     std::vector<std::pair<ShapeHit, ShapeHit>> spans, joined;
-    for (const SweepSegment& g : sweep_segments(sweep)) segment_spans(g, o, d, spans);
+    for (const SweepSegment& g : prepared(sweep.segments).segments) segment_spans(g, o, d, spans);
     std::sort(spans.begin(), spans.end(),
               [](const auto& x, const auto& y) { return x.first.t < y.first.t; });
     for (const auto& span : spans) {
@@ -1201,7 +1224,7 @@ bool sphere_sweep_inside(const SphereSweepShape& sweep, Vec3 p) {
 
 void sphere_sweep_bounds(const SphereSweepShape& sweep, Vec3& lower, Vec3& upper) {
     lower = {1e300, 1e300, 1e300}, upper = {-1e300, -1e300, -1e300};
-    for (const SweepSegment& g : sweep_segments(sweep)) {
+    for (const SweepSegment& g : prepared(sweep.segments).segments) {
         lower = {std::min(lower.x, g.lower.x), std::min(lower.y, g.lower.y),
                  std::min(lower.z, g.lower.z)};
         upper = {std::max(upper.x, g.upper.x), std::max(upper.y, g.upper.y),
@@ -1211,7 +1234,7 @@ void sphere_sweep_bounds(const SphereSweepShape& sweep, Vec3& lower, Vec3& upper
 
 void lathe_bounds(const LatheShape& lathe, Vec3& lower, Vec3& upper) {
     double r_max = 0, y_min = 1e300, y_max = -1e300;
-    for (const ProfilePiece& piece : lathe_profile(lathe)) {
+    for (const ProfilePiece& piece : prepared(lathe.profile).pieces) {
         // The extremes of a cubic on [0, 1]: its ends and its derivative's roots.
         auto extremes = [](const std::array<double, 4>& c, auto&& visit) {
             visit(cubic_at(c, 0)), visit(cubic_at(c, 1));
@@ -1273,7 +1296,7 @@ bool shape_inside(const Shape& shape, Vec3 p, bool& inside) {
     } else if (const auto* se = std::get_if<SuperellipsoidShape>(&shape)) {
         inside = superellipsoid_value(*se, p) < 0;
     } else if (const auto* lathe = std::get_if<LatheShape>(&shape)) {
-        inside = lathe_inside(lathe_profile(*lathe), std::hypot(p.x, p.z), p.y);
+        inside = lathe_inside(prepared(lathe->profile).pieces, std::hypot(p.x, p.z), p.y);
     } else if (const auto* sor = std::get_if<SorShape>(&shape)) {
         inside = sor_inside(*sor, p);
     } else if (const auto* sweep = std::get_if<SphereSweepShape>(&shape)) {
@@ -1499,6 +1522,18 @@ bool SolidTree::inside_of(int index, Vec3 p, bool& in) const {
         in = in && clip_in;
     }
     return true;
+}
+
+void prepare_shape(Shape& shape) {
+    if (auto* lathe = std::get_if<LatheShape>(&shape))
+        lathe->profile = std::make_shared<const LatheProfile>(LatheProfile{lathe_profile(*lathe)});
+    else if (auto* sor = std::get_if<SorShape>(&shape))
+        sor->profile = std::make_shared<const SorProfile>(SorProfile{sor_pieces(*sor)});
+    else if (auto* sweep = std::get_if<SphereSweepShape>(&shape))
+        sweep->segments =
+            std::make_shared<const SweepSegments>(SweepSegments{make_sweep_segments(*sweep)});
+    else if (auto* polygon = std::get_if<PolygonShape>(&shape))
+        polygon->plane = std::make_shared<const PolygonPlane>(polygon_plane(*polygon));
 }
 
 }  // namespace rayset::tracer

@@ -33,6 +33,10 @@ struct ShapeHit {
 // Where the line o + t d crosses the triangle a, b, c: t, and the hit's weights u of b and v of
 // c (a's is 1 - u - v); false when it does not.
 bool triangle_crossing(Vec3 a, Vec3 b, Vec3 c, Vec3 o, Vec3 d, double& t, double& u, double& v);
+// Makes what the crossings of every ray need once, when the shape is read: a lathe's and a
+// sor's profile pieces, a sphere_sweep's segments, a polygon's plane. The functions below take
+// shapes so prepared (the parser prepares every shape it reads).
+void prepare_shape(Shape& shape);
 // Every crossing of the line o + t d (any t, unsorted) with the shape's surface; false when the
 // shape is not covered here.
 bool shape_hits(const Shape& shape, Vec3 o, Vec3 d, std::vector<ShapeHit>& hits);

@@ -18,6 +18,12 @@
 namespace rayset::tracer {
 
 struct TextOutline;  // text_outline.h
+// What the crossings of every ray with a shape need, made once when the shape is read
+// (prepare_shape, shape_geometry.h).
+struct LatheProfile;
+struct SorProfile;
+struct SweepSegments;
+struct PolygonPlane;
 
 // A 2-D point: lathe and sor (radius x, height y), prism (x, z written as x, y), uv vectors.
 struct Vec2 {
@@ -168,6 +174,7 @@ struct LatheShape {
     SplineKind spline = SplineKind::linear;
     std::vector<Vec2> points;  // as many as the spline kind needs (checked)
     bool sturm = false;
+    std::shared_ptr<const LatheProfile> profile;  // prepare_shape
 };
 // Closed 2-D curves in the x-z plane (points hold x, z) swept along y from height1 to height2
 // (conic: scaled down toward the origin, height1 and height2 then scale the curve).
@@ -185,6 +192,7 @@ struct SorShape {
     std::vector<Vec2> points;
     bool open = false;
     bool sturm = false;
+    std::shared_ptr<const SorProfile> profile;  // prepare_shape
 };
 struct SphereSweepShape {
     enum class Kind { linear_spline, b_spline, cubic_spline } kind = Kind::linear_spline;
@@ -193,7 +201,8 @@ struct SphereSweepShape {
         double radius = 1;
     };
     std::vector<Sphere> spheres;
-    double tolerance = 1e-6;  // depth tolerance of the intersection tests
+    double tolerance = 1e-6;                        // depth tolerance of the intersection tests
+    std::shared_ptr<const SweepSegments> segments;  // prepare_shape
 };
 // Extruded text: the baseline along x from the origin, thickness along +z.
 struct TextShape {
@@ -234,6 +243,7 @@ struct SmoothTriangleShape {
 // as POV-Ray does. Where an even number of them overlap there is a hole.
 struct PolygonShape {
     std::vector<Vec3> points;
+    std::shared_ptr<const PolygonPlane> plane;  // prepare_shape
 };
 
 struct TriangleMesh {
