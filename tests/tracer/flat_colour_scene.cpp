@@ -247,6 +247,10 @@ public:
                 while (open < t.size() && !is(t, open, ")")) ++open;
                 ++open;
             }
+            if (w == "uv_mapping" && !declared) {  // how textures are laid on: none are left
+                edits.push_back({t[i].begin, t[i].end, ""});
+                continue;
+            }
             if (!is(t, open, "{")) continue;
             if (w == "camera") {
                 in_camera = true;
@@ -323,14 +327,28 @@ FlatColourCopy write_flat_colour_copy(const std::string& scene, const std::strin
 }
 
 bool geometry_agreement(const std::string& scene, int width, int height, GeometryAgreement& out,
-                        std::string& message) {
+                        std::string& message, const SampleFrame& frame) {
     ScratchDir dir;
     const FlatColourCopy copy = write_flat_colour_copy(scene, dir.path().string());
     const std::string original_folder = fs::path(scene).parent_path().string();
-    std::vector<uint8_t> pov;
-    if (!povray_render(copy.scene, width, height, pov, message, 1, original_folder)) return false;
-
+    std::string frame_options;
     tracer::ParseOptions options;
+    if (frame.frames > 1) {
+        // Frames 1 .. frames, the clock from 0 to 1, as the scene's .ini sets them.
+        frame_options = " +KFI1 +KFF" + std::to_string(frame.frames) + " +KI0 +KF1 +SF" +
+                        std::to_string(frame.number) + " +EF" + std::to_string(frame.number);
+        tracer::AnimationSettings& a = options.animation;
+        a.clock_on = true;
+        a.initial_frame = 1, a.final_frame = frame.frames;
+        a.initial_clock = 0, a.final_clock = 1;
+        a.frame_number = frame.number;
+        a.clock_delta = 1.0 / (frame.frames - 1);
+        a.clock = (frame.number - 1) * a.clock_delta;
+    }
+    std::vector<uint8_t> pov;
+    if (!povray_render(copy.scene, width, height, pov, message, 1, original_folder, frame_options))
+        return false;
+
     options.include_paths = {original_folder};
     options.animation.image_width = width, options.animation.image_height = height;
     const tracer::RenderScene ours(tracer::parse_scene_file(copy.scene, options));

@@ -4,8 +4,9 @@
 //
 // The copy (the scene file and the include files beside it, rewritten token by token):
 // - removes every texture, pigment, finish, normal, material, interior, interior_texture,
-//   texture_list and photons block given to an object, and the scene's lights, light groups,
-//   sky, background, fog, rainbow, atmospheric media, #default and global_settings;
+//   texture_list and photons block and uv_mapping given to an object, and the scene's lights,
+//   light groups, sky, background, fog, rainbow, atmospheric media, #default and
+//   global_settings;
 // - keeps what is declared (`#declare T = texture { ... }`, colour and texture maps, functions),
 //   so that the scene still reads;
 // - gives each object statement at the top level of a file (a union, a sphere, `object { X }`,
@@ -51,9 +52,13 @@ struct GeometryAgreement {
     std::set<std::string> words, camera_words;
     double fraction() const { return pixels ? double(agreeing) / pixels : 0; }
 };
+// A frame of an animated scene: number 1 .. frames, the clock from 0 to 1 (frames 0: a still).
+struct SampleFrame {
+    int number = 0, frames = 0;
+};
 // False with `message` set when povray is not installed; throws (rayset::Error from the
 // renderer's parser, std::runtime_error from POV-Ray) when a side cannot render the copy.
 bool geometry_agreement(const std::string& scene, int width, int height, GeometryAgreement& out,
-                        std::string& message);
+                        std::string& message, const SampleFrame& frame = {});
 
 }  // namespace rayset::test

@@ -3,8 +3,9 @@
 // object statement one self-lit colour, nothing else) rendered by POV-Ray and by the renderer,
 // one ray through each pixel's centre, shows the same object on at least 99% of the pixels.
 // Together the scenes use every shape, CSG operation and camera of the sample scenes that the
-// renderer draws (checked below). scripts/pov_geometry.sh runs the same comparison over every
-// sample scene that renders. Skipped, saying so, without povray or the sample scenes.
+// renderer draws (checked below); two frames of an animated one show the shapes no still scene
+// has. scripts/pov_geometry.sh runs the same comparison over every sample scene that renders.
+// Skipped, saying so, without povray or the sample scenes.
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -26,57 +27,68 @@ const std::string kExamples = "/usr/share/doc/povray/examples/";
 
 // Chosen for what they use (the coverage test below) among the scenes that agree, and for
 // rendering in a second or two each.
-const std::vector<std::string> kScenes = {
-    "advanced/blocks/stackergold.pov",
-    "advanced/drums2/drums.pov",
-    "advanced/woodbox.pov",
-    "bsp/Tango.pov",
-    "camera/cylinder3.pov",
-    "camera/fisheye.pov",
-    "camera/mesh_camera/ess/ess-persp-camera.pov",
-    "camera/omnimax.pov",
-    "camera/orthographic.pov",
-    "camera/panoramic.pov",
-    "camera/spherical.pov",
-    "camera/ultra_wide_angle.pov",
-    "incdemo/metals/chromes.pov",
-    "incdemo/sundial.pov",
-    "incdemo/woods/wood_15.pov",
-    "incdemo/woods/wood_4.pov",
-    "interior/atten1.pov",
-    "interior/media/media3.pov",
-    "language/arrays/array2.pov",
-    "language/macros/macro3.pov",
-    "lights/circular.pov",
-    "lights/glassthing.pov",
-    "objects/blob.pov",
-    "objects/fractal3.pov",
-    "objects/lathe2.pov",
-    "objects/primitiv.pov",
-    "objects/prism3a.pov",
-    "objects/quartic/bicube.pov",
-    "objects/quartic/piriform.pov",
-    "objects/quartic/steiner.pov",
-    "objects/quartic/torus.pov",
-    "objects/sor1.pov",
-    "objects/superel1.pov",
-    "radiosity/patio-radio_36.pov",
-    "templates/Basic_Scenes/Checkered_plane.pov",
-    "templates/Basic_Scenes/Sea_moon_partly_cloudy.pov",
-    "textures/noise_generator.pov",
-    "textures/patterns/crackle1.pov",
-    "textures/patterns/fractals3.pov",
-    "textures/pigments/skies/s_cloud3.pov",
+// A sample scene, or a frame of an animated one with the shape it shows.
+struct Sample {
+    std::string path;
+    SampleFrame frame;
+    std::string shows;  // a frame's shape (its file names them all)
 };
 
-std::string test_name(const testing::TestParamInfo<std::string>& info) {
+const std::vector<Sample> kScenes = {
+    {"advanced/blocks/stackergold.pov"},
+    {"advanced/drums2/drums.pov"},
+    {"advanced/woodbox.pov"},
+    {"bsp/Tango.pov"},
+    {"camera/cylinder3.pov"},
+    {"camera/fisheye.pov"},
+    {"camera/mesh_camera/ess/ess-persp-camera.pov"},
+    {"camera/omnimax.pov"},
+    {"camera/orthographic.pov"},
+    {"camera/panoramic.pov"},
+    {"camera/spherical.pov"},
+    {"camera/ultra_wide_angle.pov"},
+    {"incdemo/metals/chromes.pov"},
+    {"incdemo/sundial.pov"},
+    {"incdemo/woods/wood_15.pov"},
+    {"incdemo/woods/wood_4.pov"},
+    {"interior/atten1.pov"},
+    {"interior/media/media3.pov"},
+    {"language/arrays/array2.pov"},
+    {"language/macros/macro3.pov"},
+    {"lights/circular.pov"},
+    {"lights/glassthing.pov"},
+    {"objects/blob.pov"},
+    {"objects/fractal3.pov"},
+    {"objects/lathe2.pov"},
+    {"objects/primitiv.pov"},
+    {"objects/prism3a.pov"},
+    {"objects/quartic/bicube.pov"},
+    {"objects/quartic/piriform.pov"},
+    {"objects/quartic/steiner.pov"},
+    {"objects/quartic/torus.pov"},
+    {"objects/sor1.pov"},
+    {"objects/superel1.pov"},
+    {"radiosity/patio-radio_36.pov"},
+    {"templates/Basic_Scenes/Checkered_plane.pov"},
+    {"templates/Basic_Scenes/Sea_moon_partly_cloudy.pov"},
+    {"textures/noise_generator.pov"},
+    {"textures/patterns/crackle1.pov"},
+    {"textures/patterns/fractals3.pov"},
+    {"textures/pigments/skies/s_cloud3.pov"},
+    // portfolio/allobjects.pov shows one shape a frame, of 27.
+    {"portfolio/allobjects.pov", {13, 27}, "parametric"},
+    {"portfolio/allobjects.pov", {22, 27}, "sphere_sweep"},
+};
+
+std::string test_name(const testing::TestParamInfo<Sample>& info) {
     std::string name;
-    for (const char c : info.param.substr(0, info.param.rfind('.')))
+    for (const char c : info.param.path.substr(0, info.param.path.rfind('.')))
         name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    if (info.param.frame.frames > 0) name += "_frame" + std::to_string(info.param.frame.number);
     return name;
 }
 
-class PovSamples : public testing::TestWithParam<std::string> {};
+class PovSamples : public testing::TestWithParam<Sample> {};
 
 TEST_P(PovSamples, SeeTheSameObjectsAsPovRay) {
     if (!std::filesystem::is_directory(kExamples))
@@ -84,12 +96,16 @@ TEST_P(PovSamples, SeeTheSameObjectsAsPovRay) {
     const int width = 160, height = 120;
     GeometryAgreement a;
     std::string message;
-    if (!geometry_agreement(kExamples + GetParam(), width, height, a, message))
+    const Sample& sample = GetParam();
+    if (!geometry_agreement(kExamples + sample.path, width, height, a, message, sample.frame))
         GTEST_SKIP() << message;
     std::printf(
         "%s: %d object statements, POV-Ray sees an object on %d pixels; the object "
         "agrees on %d of %d pixels (%.4f)\n",
-        GetParam().c_str(), a.statements, a.seeing, a.agreeing, a.pixels, a.fraction());
+        (sample.path +
+         (sample.frame.frames ? ", frame " + std::to_string(sample.frame.number) : std::string()))
+            .c_str(),
+        a.statements, a.seeing, a.agreeing, a.pixels, a.fraction());
     RecordProperty("agreement", std::to_string(a.fraction()));
     // Something to agree on: black in both cannot carry the agreement.
     EXPECT_GT(a.seeing, a.pixels / 5);
@@ -104,17 +120,24 @@ TEST(PovSampleCoverage, TheScenesUseEveryShapeCsgOperationAndCamera) {
     if (!std::filesystem::is_directory(kExamples))
         GTEST_SKIP() << kExamples << " missing (Debian package povray-examples)";
     std::set<std::string> words, camera_words;
-    for (const std::string& scene : kScenes) {
+    for (const Sample& sample : kScenes) {
+        if (!sample.shows.empty()) {
+            words.insert(sample.shows);
+            continue;
+        }
         ScratchDir dir;
-        const FlatColourCopy copy = write_flat_colour_copy(kExamples + scene, dir.path().string());
+        const FlatColourCopy copy =
+            write_flat_colour_copy(kExamples + sample.path, dir.path().string());
         words.insert(copy.words.begin(), copy.words.end());
         camera_words.insert(copy.camera_words.begin(), copy.camera_words.end());
     }
-    for (const char* shape : {"sphere",   "box",     "plane",      "triangle",       "mesh",
-                              "cylinder", "cone",    "disc",       "torus",          "polygon",
-                              "prism",    "lathe",   "sor",        "superellipsoid", "height_field",
-                              "text",     "blob",    "isosurface", "bicubic_patch",  "quadric",
-                              "cubic",    "quartic", "poly",       "julia_fractal"})
+    for (const char* shape :
+         {"sphere",    "box",     "plane",      "triangle",       "mesh",
+          "cylinder",  "cone",    "disc",       "torus",          "polygon",
+          "prism",     "lathe",   "sor",        "superellipsoid", "height_field",
+          "text",      "blob",    "isosurface", "bicubic_patch",  "quadric",
+          "cubic",     "quartic", "poly",       "julia_fractal",  "sphere_sweep",
+          "parametric"})
         EXPECT_TRUE(words.count(shape)) << shape;
     for (const char* csg :
          {"union", "merge", "intersection", "difference", "inverse", "clipped_by", "bounded_by"})
@@ -124,7 +147,7 @@ TEST(PovSampleCoverage, TheScenesUseEveryShapeCsgOperationAndCamera) {
         EXPECT_TRUE(camera_words.count(camera)) << camera;
 }
 
-// The copy's rules on a small scene: what is given is removed, what is declared kept (a layered
+// The copy's rules on a small scene: what is given is removed (uv_mapping too), what is declared kept (a layered
 // texture with its layers, a macro's texture argument, an array's textures), each top-level
 // object statement coloured
 // (in a macro body too), the objects inside a CSG left to inherit.
@@ -134,7 +157,7 @@ TEST(FlatColourCopy, RewritesAsDocumented) {
 #declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt 0.5 } }
 /* a comment { with a brace */ light_source { <0, 9, 0> rgb 1 }
 #declare S = sky_sphere { pigment { rgb 1 } } sky_sphere { S }
-union { sphere { 0, 1 texture { T } } box { 0, 1 pigment { rgb x } } finish { phong 1 } }
+union { sphere { 0, 1 texture { T } } box { 0, 1 pigment { rgb x } } finish { phong 1 } uv_mapping }
 #macro M(Tex) cone { 0, 1, y, 0 texture { Tex } } #end
 M(texture { T })
 #declare Looks = array[2] { texture { T }, pigment { rgb 1 } }
@@ -158,7 +181,7 @@ global_settings { assumed_gamma 2.2 }
               "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt 0.5 } }\n"
               "/* a comment { with a brace */ \n"
               "#declare S = sky_sphere { pigment { rgb 1 } } \n"
-              "union { sphere { 0, 1  } box { 0, 1  }  " +
+              "union { sphere { 0, 1  } box { 0, 1  }   " +
                   texture("0.00392156863, 0, 0") +
                   "}\n"
                   "#macro M(Tex) cone { 0, 1, y, 0  " +

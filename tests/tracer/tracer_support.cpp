@@ -175,7 +175,8 @@ std::string tracer_scene(const std::string& name) {
 }
 
 bool povray_render(const std::string& scene, int width, int height, std::vector<uint8_t>& rgb,
-                   std::string& message, double file_gamma, const std::string& library_path) {
+                   std::string& message, double file_gamma, const std::string& library_path,
+                   const std::string& more_options) {
     if (run_command("command -v povray").status != 0) {
         message =
             "povray is not installed (Debian package povray; scripts/install-deps.sh "
@@ -183,14 +184,18 @@ bool povray_render(const std::string& scene, int width, int height, std::vector<
         return false;
     }
     ScratchDir dir;
-    const CommandResult pov =
-        run_command("cd '" + dir.path().string() + "' && povray +I'" + scene + "' +L'" +
-                    std::filesystem::path(scene).parent_path().string() + "' " +
-                    (library_path.empty() ? "" : "+L'" + library_path + "' ") + "+W" +
-                    std::to_string(width) + " +H" + std::to_string(height) +
-                    " +Opov.ppm +FP -D -GA File_Gamma=" + std::to_string(file_gamma) + " 2>&1");
+    const CommandResult pov = run_command(
+        "cd '" + dir.path().string() + "' && povray +I'" + scene + "' +L'" +
+        std::filesystem::path(scene).parent_path().string() + "' " +
+        (library_path.empty() ? "" : "+L'" + library_path + "' ") + "+W" + std::to_string(width) +
+        " +H" + std::to_string(height) +
+        " +Opov.ppm +FP -D -GA File_Gamma=" + std::to_string(file_gamma) + more_options + " 2>&1");
+    // An animation's frame is written with its number (pov13.ppm): the one image there is.
+    std::string image = dir.file("pov.ppm");
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+        if (entry.path().extension() == ".ppm") image = entry.path().string();
     int w = 0, h = 0;
-    if (pov.status != 0 || !read_ppm(dir.file("pov.ppm"), w, h, rgb) || w != width || h != height) {
+    if (pov.status != 0 || !read_ppm(image, w, h, rgb) || w != width || h != height) {
         throw std::runtime_error("povray failed on " + scene + ": " + pov.output);
     }
     return true;

@@ -70,11 +70,12 @@ std::string cornell_with_receiver();
 
 // POV-Ray's own render of `scene` (no anti-aliasing, output encoded with `file_gamma`: 1 is
 // linear; the scene's folder, then `library_path` if given, on its library path, where files it
-// names are found), read back as 8-bit RGB rows from the top. False with `message` set when
-// povray is not installed (the test skips, saying so); std::runtime_error when it fails.
+// names are found; `more_options` added to the command line: an animation's frame, say), read back
+// as 8-bit RGB rows from the top. False with `message` set when povray is not installed (the test
+// skips, saying so); std::runtime_error when it fails.
 bool povray_render(const std::string& scene, int width, int height, std::vector<uint8_t>& rgb,
                    std::string& message, double file_gamma = 1,
-                   const std::string& library_path = "");
+                   const std::string& library_path = "", const std::string& more_options = "");
 // Whether our colour (POV-Ray's colour scale, 1 = white) agrees with POV-Ray's 8-bit pixel
 // `pov` (three bytes): every channel within 2% of the value and half an 8-bit step.
 bool agrees_with_povray(Rgb ours, const uint8_t* pov);
