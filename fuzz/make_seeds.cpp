@@ -2,7 +2,7 @@
 // ray format, small files that the project's own encoders write from analytic sources and from
 // the first rays of each real ray file; the real ray files small enough to be inputs as they
 // are, and the first bytes of the large ones (their headers); the real photometry files, each
-// also written in the other photometric format. Nothing it writes goes into the repository.
+// also written in the other photometric format; a few OBJ meshes. Nothing it writes goes into the repository.
 //
 // Usage: fuzz_seeds OUT_FOLDER [SHARED_DATA_FOLDER]
 //   writes OUT_FOLDER/<harness>/<seed>; without the shared data only the analytic seeds.
@@ -179,6 +179,25 @@ void photometry_seeds(const SeedFolder& seeds, const fs::path& folder) {
     }
 }
 
+// Hand-made OBJ meshes (the repository holds none): each statement and index form the loader
+// meets in exported files.
+void mesh_seeds(const SeedFolder& seeds) {
+    const std::pair<const char*, const char*> meshes[] = {
+        {"triangle.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
+        {"quad_normals.obj",
+         "# a quad with a normal per corner\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+         "vn 0 0 1\nf 1//1 2//1 3//1 4//1\n"},
+        {"textured.obj",
+         "mtllib parts.mtl\no part\ng top bottom\nusemtl steel\ns 1\nv 0 0 0\nv 1 0 0\n"
+         "v 1 1 0\nv 0 1 1.5e-3\nvt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\nvn 0 0.6 0.8\n"
+         "f 1/1/1 2/2/1 3/3/2\nf 1/1/1 3/3/2 4/2/2\n"},
+        {"relative_pentagon.obj",
+         "v 1 0 0\nv 0.31 0.95 0\nv -0.81 0.59 0\nv -0.81 -0.59 0\nv 0.31 -0.95 0\n"
+         "f -5 -4 -3 -2 -1\nl 1 2\np 3\n"},
+    };
+    for (const auto& [name, text] : meshes) std::ofstream(seeds.path("mesh", name)) << text;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -190,6 +209,7 @@ int main(int argc, char** argv) {
     const fs::path shared = argc == 3 ? fs::path(argv[2]) : fs::path();
     try {
         analytic_seeds(seeds, shared);
+        mesh_seeds(seeds);
         std::error_code error;
         if (!shared.empty() && fs::is_directory(shared, error)) {
             real_ray_seeds(seeds, shared / "rayfiles");
