@@ -75,6 +75,14 @@ std::string write_input(const uint8_t* data, size_t size, const std::string& nam
     return path;
 }
 
+void expect_file_named(const Error& error, const std::string& path) {
+    const std::string message = error.what();
+    if (message.find(path) != std::string::npos) return;
+    std::fprintf(stderr, "fuzz: an error that does not name the file %s: %s\n", path.c_str(),
+                 message.c_str());
+    std::abort();
+}
+
 void read_every_ray(const std::string& path, std::optional<RayFormat> format) {
     RayReadOptions options;
     options.format = format;
@@ -86,8 +94,9 @@ void read_every_ray(const std::string& path, std::optional<RayFormat> format) {
         RayChunk chunk;
         while (reader->read(chunk)) {
         }
-    } catch (const Error&) {
+    } catch (const Error& error) {
         // The reader found the file bad and said where: what it should do.
+        expect_file_named(error, path);
     }
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "converters/rays/ray.h"
+#include "core/error.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -19,10 +20,15 @@ const std::string& input_folder();
 // path. Each call replaces the previous input of that name.
 std::string write_input(const uint8_t* data, size_t size, const std::string& name);
 
+// The errors of a reader name the file they are about (core/error.h: "FILE: byte 1234: ..."),
+// which is what a user needs to act on them. An error that does not is a finding: the harness
+// prints it and aborts, and libFuzzer keeps the input.
+void expect_file_named(const Error& error, const std::string& path);
+
 // Opens the file with open_rays() - as `format` when given, else by detection - and reads
-// every ray. The errors a reader reports about a bad file (rayset::Error) are the expected
-// outcome of most inputs and are swallowed; anything else (another exception, a crash, a
-// sanitizer report) reaches libFuzzer.
+// every ray. The errors a reader reports about a bad file (rayset::Error naming the file) are the
+// expected outcome of most inputs; anything else (another exception, a crash, a sanitizer
+// report) reaches libFuzzer.
 void read_every_ray(const std::string& path, std::optional<RayFormat> format);
 
 }  // namespace rayset::fuzz

@@ -20,8 +20,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             for (double vertical = -30; vertical <= 200; vertical += 57.5)
                 photometry.intensity(horizontal, vertical);
         rayset::eulumdat_from_photometry(photometry, path + ".ldt");
-    } catch (const rayset::Error&) {
+    } catch (const rayset::Error& error) {
         // The reader or the conversion found the file bad and said where: what they should do.
+        rayset::fuzz::expect_file_named(error, path);
     }
     return 0;
 }

@@ -2,7 +2,8 @@
 // ray format, small files that the project's own encoders write from analytic sources and from
 // the first rays of each real ray file; the real ray files small enough to be inputs as they
 // are, and the first bytes of the large ones (their headers); the real photometry files, each
-// also written in the other photometric format; a few OBJ meshes. Nothing it writes goes into the repository.
+// also written in the other photometric format; a few OBJ meshes. Nothing it writes goes into the
+// repository.
 //
 // Usage: fuzz_seeds OUT_FOLDER [SHARED_DATA_FOLDER]
 //   writes OUT_FOLDER/<harness>/<seed>; without the shared data only the analytic seeds.

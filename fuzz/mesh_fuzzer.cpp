@@ -33,8 +33,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const auto mesh = rayset::tracer::load_mesh_file(shape, "the fuzz harness");
         check_indices(mesh->faces, mesh->vertices.size(), "vertex");
         check_indices(mesh->normal_faces, mesh->normals.size(), "normal");
-    } catch (const rayset::Error&) {
+    } catch (const rayset::Error& error) {
         // The loader found the file bad and said so: what it should do.
+        rayset::fuzz::expect_file_named(error, shape.path);
     }
     return 0;
 }

@@ -11,7 +11,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     rayset::RayFormat format;
     try {
         format = rayset::detect_ray_format(path);
-    } catch (const rayset::Error&) {
+    } catch (const rayset::Error& error) {
+        rayset::fuzz::expect_file_named(error, path);
         return 0;  // no format fits, and detection said so
     }
     rayset::fuzz::read_every_ray(path, format);

@@ -24,8 +24,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         rayset::tracer::parse_scene_text(std::string(reinterpret_cast<const char*>(data), size),
                                          path, options);
-    } catch (const rayset::Error&) {
+    } catch (const rayset::Error& error) {
         // The parser found the scene bad (or over a limit) and said where: what it should do.
+        rayset::fuzz::expect_file_named(error, path);
     }
     return 0;
 }

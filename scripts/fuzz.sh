@@ -5,7 +5,7 @@
 # memory; the input that did it is in build-fuzz/crashes/<harness>/ and the harness's output in
 # build-fuzz/logs/<harness>.log. Replay an input with build-fuzz/fuzz/fuzz_<harness> FILE.
 # Usage: scripts/fuzz.sh SECONDS [HARNESS...]     (default: every harness, one after the other)
-#   harnesses: the names of fuzz/*_fuzzer.cpp (tm25, ies, scene, ...)
+#   harnesses: the names of fuzz/*_fuzzer.cpp (tm25, ies, scene, mesh, model, checkpoint, ...)
 #   RAYSET_SHARED_DATA: folder of the real sample files (default ../shared/data)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,15 +16,6 @@ if [ $# -lt 1 ] || ! [[ "$1" =~ ^[0-9]+$ ]]; then
 fi
 seconds=$1
 shift
-all=()
-for source in fuzz/*_fuzzer.cpp; do
-  name=$(basename "$source" _fuzzer.cpp)
-  all+=("$name")
-done
-harnesses=("${@:-${all[@]}}")
-for h in "${harnesses[@]}"; do
-  [ -f "fuzz/${h}_fuzzer.cpp" ] || { echo "fuzz.sh: no harness '$h' (${all[*]})" >&2; exit 2; }
-done
 
 build=build-fuzz
 shared=${RAYSET_SHARED_DATA:-../shared/data}
@@ -34,8 +25,25 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DRAYSET_CONVERTERS_ONLY=ON -DRAYSET_FUZZ=ON >/dev/null
+
+# Every harness the tree has (those of the OBJ, model and checkpoint readers need the Debian
+# packages of tinyobjloader, OpenVDB and Embree), or those named.
+configured() { [ -d "$build/fuzz/CMakeFiles/fuzz_$1.dir" ]; }
+all=()
+for source in fuzz/*_fuzzer.cpp; do
+  name=$(basename "$source" _fuzzer.cpp)
+  configured "$name" && all+=("$name")
+done
+harnesses=("${@:-${all[@]}}")
+for h in "${harnesses[@]}"; do
+  configured "$h" || { echo "fuzz.sh: no harness '$h' in $build (${all[*]})" >&2; exit 2; }
+done
+# A harness may have a tool of its own that writes its seed (fuzz_<harness>_seed FILE).
 targets=(fuzz_seeds)
-for h in "${harnesses[@]}"; do targets+=("fuzz_$h"); done
+for h in "${harnesses[@]}"; do
+  targets+=("fuzz_$h")
+  configured "${h}_seed" && targets+=("fuzz_${h}_seed")
+done
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
 
 # Seeds: the ray and photometry files fuzz_seeds makes (from ../shared/data when present), the
@@ -43,15 +51,23 @@ cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
 seeds=$build/seeds
 rm -rf "$seeds"
 "$build/fuzz/fuzz_seeds" "$seeds" "$shared"
+for h in "${harnesses[@]}"; do
+  if configured "${h}_seed"; then
+    mkdir -p "$seeds/$h"
+    "$build/fuzz/fuzz_${h}_seed" "$seeds/$h/seed"
+  fi
+done
 mkdir -p "$seeds/scene"
 while IFS= read -r scene; do
   cp "$scene" "$seeds/scene/$(echo "$scene" | tr / _)"
 done < <(find tests examples -name '*.pov' -o -name '*.inc')
 
-# The largest input each harness is given: a TM-25 header alone is 36288 bytes; scenes and text
-# files need no more than a few kilobytes to reach every construct.
+# The largest input each harness is given: a TM-25 header alone is 36288 bytes and the smallest
+# model file about 100 kB; scenes and text files need no more than a few kilobytes to reach
+# every construct.
 max_len() {
   case $1 in
+    model) echo 131072 ;;
     tm25 | ray_detect) echo 65536 ;;
     scene) echo 16384 ;;
     *) echo 8192 ;;
