@@ -535,6 +535,12 @@ TEST(SceneLanguageErrors, UnclosedBlocksAndExpectedTokens) {
     EXPECT_EQ(
         error_of("global_settings { length_unit \"furlong\" }"),
         "unknown length_unit \"furlong\" (expected um, mm, cm, m, in or ft) at test.pov:1:31");
+    // A NUL in quoted text is shown as the escape that wrote it, so that the message, read as a
+    // C string, still reaches the place.
+    EXPECT_EQ(error_of("sphere { 0, 1 }\n\"a\\0b\""),
+              "expected an object, a light_source, camera, global_settings, background, fog, "
+              "rainbow, sky_sphere, media, ray_source or illuminance_receiver, found string "
+              "\"a\\0b\" at test.pov:2:1");
 }
 
 TEST(SceneLanguageErrors, DirectiveStructure) {
