@@ -119,7 +119,8 @@ main() {
   printf '%-18s %12s %8s %7s %9s %7s %s\n' harness executions exec/s edges features corpus crashes
   printf '%s\n' "${summary[@]}"
   if [ ${#failed[@]} -gt 0 ]; then
-    echo "fuzz.sh: ${failed[*]} failed: inputs in $build/crashes/<harness>/, output in $build/logs/" >&2
+    echo "fuzz.sh: ${failed[*]} failed: inputs in $build/crashes/<harness>/," \
+      "output in $build/logs/" >&2
     exit 1
   fi
 }
