@@ -20,14 +20,19 @@ extern "C" const char* __lsan_default_suppressions() { return "leak:readTopology
 // such files do not stop the fuzzer at libFuzzer's -rss_limit_mb, while a bad_alloc from our own
 // code escapes read_model and is still a finding. (malloc is AddressSanitizer's, so its checks
 // stay.)
+// The scalar forms are replaced together (the array and aligned ones stay AddressSanitizer's),
+// so that what one allocates the other frees.
+constexpr std::size_t kLargestAllocation = std::size_t(256) << 20;
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    return size <= kLargestAllocation ? std::malloc(size ? size : 1) : nullptr;
+}
 void* operator new(std::size_t size) {
-    constexpr std::size_t kLargest = std::size_t(256) << 20;
-    if (size <= kLargest)
-        if (void* memory = std::malloc(size ? size : 1)) return memory;
+    if (void* memory = operator new(size, std::nothrow)) return memory;
     throw std::bad_alloc();
 }
 void operator delete(void* memory) noexcept { std::free(memory); }
 void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
+void operator delete(void* memory, const std::nothrow_t&) noexcept { std::free(memory); }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string path = rayset::fuzz::write_input(data, size, "input.vdb");
