@@ -14,25 +14,37 @@
 extern "C" const char* __lsan_default_suppressions() { return "leak:readTopology\n"; }
 
 // OpenVDB allocates what a file's length fields say before it finds the file too short: a
-// corrupt grid descriptor asks for a 1.6 GB name, which a real run gets, fills and frees when the
-// read then fails. Here an allocation above 256 MB throws std::bad_alloc instead, as one beyond
-// the machine's memory does, and read_model turns that into its error when OpenVDB throws it; so
-// such files do not stop the fuzzer at libFuzzer's -rss_limit_mb, while a bad_alloc from our own
-// code escapes read_model and is still a finding. (malloc is AddressSanitizer's, so its checks
-// stay.)
-// The scalar forms are replaced together (the array and aligned ones stay AddressSanitizer's),
-// so that what one allocates the other frees.
-constexpr std::size_t kLargestAllocation = std::size_t(256) << 20;
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-    return size <= kLargestAllocation ? std::malloc(size ? size : 1) : nullptr;
+// corrupt grid descriptor asks for a 1.6 GB name, a blosc block for terabytes (a real run gets
+// what the machine has, fills it and frees it when the read then fails, or throws
+// std::bad_alloc). Here an allocation above 256 MB throws std::bad_alloc, which read_model turns
+// into its error when OpenVDB throws it; so such files do not stop the fuzzer at libFuzzer's
+// -rss_limit_mb, while a bad_alloc from our own code escapes read_model and is still a finding.
+// Every form but the aligned ones (which stay AddressSanitizer's) is replaced, so that what one
+// allocates its partner frees; malloc is AddressSanitizer's, so its checks stay.
+namespace {
+
+void* allocate(std::size_t size) noexcept {
+    constexpr std::size_t kLargest = std::size_t(256) << 20;
+    return size <= kLargest ? std::malloc(size ? size : 1) : nullptr;
 }
-void* operator new(std::size_t size) {
-    if (void* memory = operator new(size, std::nothrow)) return memory;
+
+void* allocate_or_throw(std::size_t size) {
+    if (void* memory = allocate(size)) return memory;
     throw std::bad_alloc();
 }
+
+}  // namespace
+
+void* operator new(std::size_t size) { return allocate_or_throw(size); }
+void* operator new[](std::size_t size) { return allocate_or_throw(size); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return allocate(size); }
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return allocate(size); }
 void operator delete(void* memory) noexcept { std::free(memory); }
+void operator delete[](void* memory) noexcept { std::free(memory); }
 void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
+void operator delete[](void* memory, std::size_t) noexcept { std::free(memory); }
 void operator delete(void* memory, const std::nothrow_t&) noexcept { std::free(memory); }
+void operator delete[](void* memory, const std::nothrow_t&) noexcept { std::free(memory); }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string path = rayset::fuzz::write_input(data, size, "input.vdb");
