@@ -1,6 +1,10 @@
 #include "core/error.h"
 
+#include "core/text_encoding.h"
+
 namespace rayset {
+
+Error::Error(const std::string& message) : std::runtime_error(to_utf8(message)) {}
 
 std::string Location::str() const {
     switch (kind) {
