@@ -406,6 +406,13 @@ void write_atomically(const std::string& path,
     }
     if (!written) fail("");
     if (target.in_place) return;
+    // Writers that go through a file name do not flush to the disk: a disk that fills up while
+    // the kernel writes the data back must fail here, not after the rename.
+    const int fd = ::open(to.c_str(), O_RDONLY | O_CLOEXEC);
+    const bool synced = fd >= 0 && ::fsync(fd) == 0;
+    const std::string sync_error = synced ? "" : system_error_text();
+    if (fd >= 0) ::close(fd);
+    if (!synced) fail(sync_error);
     std::error_code error;
     fs::rename(to, target.file, error);
     if (error) fail(error.message());

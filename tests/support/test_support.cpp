@@ -1,10 +1,14 @@
 #include "support/test_support.h"
 
+#include <sys/mount.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -24,6 +28,27 @@ ScratchDir::ScratchDir() {
 ScratchDir::~ScratchDir() {
     std::error_code ignored;
     fs::remove_all(path_, ignored);
+}
+
+SmallDisk::SmallDisk(size_t bytes) {
+    const std::string options = "size=" + std::to_string(bytes);
+    if (::mount("tmpfs", dir_.path().c_str(), "tmpfs", 0, options.c_str()) == 0)
+        mounted_ = true;
+    else
+        why_ = std::string("cannot mount a tmpfs (") + std::strerror(errno) +
+               "; it needs root): full-disk test skipped";
+}
+
+SmallDisk::~SmallDisk() {
+    if (mounted_) ::umount2(dir_.path().c_str(), MNT_DETACH);
+}
+
+std::vector<std::string> SmallDisk::names() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_.path()))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
 }
 
 bool have_shared_data() { return fs::is_directory(RAYSET_SHARED_DATA); }

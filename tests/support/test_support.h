@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace rayset::test {
 
@@ -16,6 +17,25 @@ public:
 
 private:
     std::filesystem::path path_;
+};
+
+// A folder on a file system of `bytes` (a tmpfs mounted for the test, unmounted when the object
+// goes away), to see how tools fail when the disk fills up. Mounting needs root: mounted() is
+// false otherwise, and why() says so.
+class SmallDisk {
+public:
+    explicit SmallDisk(size_t bytes);
+    ~SmallDisk();
+    bool mounted() const { return mounted_; }
+    const std::string& why() const { return why_; }
+    std::string file(const std::string& name) const { return dir_.file(name); }
+    // The names in the folder, sorted.
+    std::vector<std::string> names() const;
+
+private:
+    ScratchDir dir_;
+    bool mounted_ = false;
+    std::string why_;
 };
 
 // Path of a file in ../shared/data (e.g. "rayfiles/Cyl10k.1.tm25ray"); the calling test is
