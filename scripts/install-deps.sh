@@ -7,6 +7,8 @@ packages=(
   libembree-dev libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libceres-dev libopenexr-dev libvtk9-dev
   libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libeigen3-dev libpng-dev libtinyobjloader-dev libfreetype-dev libopenimageio-dev xvfb xauth time
+  # clang and its libFuzzer and sanitizer runtimes: the fuzz tree (scripts/fuzz.sh)
+  clang libclang-rt-14-dev
   # Open MPI: raytrace across processes and machines (mpirun -n N raytrace ...)
   openmpi-bin libopenmpi-dev
   # POV-Ray 3.7: the reference renderer of the framing and differential tests, its include

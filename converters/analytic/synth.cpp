@@ -76,8 +76,10 @@ public:
     ParameterReader(const SourceHelp& help, const SourceParameters& parameters)
         : source_(help.name) {
         for (const auto& [key, value] : parameters) {
+            // C++17 lambdas cannot capture a structured binding (clang refuses): a name of its own.
+            const std::string& name = key;
             const bool known = std::any_of(help.keys.begin(), help.keys.end(),
-                                           [&](const KeyHelp& k) { return key == k.key; });
+                                           [&](const KeyHelp& k) { return name == k.key; });
             if (!known) {
                 std::string list;
                 for (const KeyHelp& k : help.keys)

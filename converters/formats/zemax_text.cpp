@@ -294,8 +294,10 @@ bool sniff_zemax_text(const Head& head, uint64_t size) {
     for (size_t i = 0; i < first.size(); ++i) parse_double(first[i], v[i]);
     for (size_t i = 4; i < first.size(); ++i)
         if (v[i] != 0) return false;
-    if (v[0] < 0 || !zemax_unit(int64_t(v[1])) || (v[2] != 0 && v[2] != 2) ||
-        (v[3] != 0 && v[3] != 1))
+    // The unit code is compared as a double first: converting one beyond int64's range is
+    // undefined.
+    if (v[0] < 0 || v[1] < 0 || v[1] > 4 || !zemax_unit(int64_t(v[1])) ||
+        (v[2] != 0 && v[2] != 2) || (v[3] != 0 && v[3] != 1))
         return false;
     if (v[0] == 0) return true;
     do {

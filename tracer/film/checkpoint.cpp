@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <variant>
 
 #include <fmt/format.h>
@@ -77,8 +78,15 @@ public:
     }
     // A grid stored as `expected` is laid out (the same scene and settings).
     SampleGrid get_grid(const SampleGrid& expected, const std::string& what) {
-        const int nx = int(get<uint32_t>()), ny = int(get<uint32_t>()),
-                  samples = int(get<uint32_t>());
+        const int nx = int(get<uint32_t>()), ny = int(get<uint32_t>());
+        const size_t samples_at = position_;
+        const uint32_t samples = get<uint32_t>();
+        // Each pass adds one sample to every cell, and passes are counted in an int.
+        if (samples > uint32_t(std::numeric_limits<int>::max()))
+            throw Error(fmt::format(
+                "{}: byte {}: {} counts {} samples, more than a render takes (at most {}): the "
+                "checkpoint is corrupt",
+                path_, samples_at, what, samples, std::numeric_limits<int>::max()));
         if (nx != expected.nx() || ny != expected.ny())
             fail(fmt::format("{} has {} x {} cells, this render {} x {}", what, nx, ny,
                              expected.nx(), expected.ny()));
@@ -86,7 +94,7 @@ public:
         std::vector<double> squares(sums.size());
         for (Rgb& s : sums) s.red = get<double>(), s.green = get<double>(), s.blue = get<double>();
         for (double& q : squares) q = get<double>();
-        return SampleGrid::restored(nx, ny, samples, std::move(sums), std::move(squares));
+        return SampleGrid::restored(nx, ny, int(samples), std::move(sums), std::move(squares));
     }
     void get_grids(Film& film, std::vector<ReceiverMap>& receivers, const std::string& what) {
         film = get_grid(film, what + "image");

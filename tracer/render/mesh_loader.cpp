@@ -9,6 +9,32 @@
 
 namespace rayset::tracer {
 
+namespace {
+
+// tinyobjloader only warns about a face that names a vertex or normal the file does not have (an
+// index past the last, or a relative index before the first); Embree and the shading would read
+// past the mesh's arrays. It gives no line, so the face is named by its place among the
+// triangles.
+void check_indices(const std::vector<std::array<int, 3>>& faces, size_t count, const char* what,
+                   const char* statement, const std::string& path, const std::string& where) {
+    for (size_t f = 0; f < faces.size(); ++f)
+        for (int index : faces[f]) {
+            if (index < 0)
+                throw Error(fmt::format(
+                    "{}: triangle {} (in file order, polygons split into triangles) names a {} "
+                    "before the first: a relative (negative) index reaches back past the first "
+                    "'{}' line (mesh_file at {})",
+                    path, f + 1, what, statement, where));
+            if (static_cast<size_t>(index) >= count)
+                throw Error(fmt::format(
+                    "{}: triangle {} (in file order, polygons split into triangles) names {} {} "
+                    "but the file has {} ('{}' lines) (mesh_file at {})",
+                    path, f + 1, what, index + 1, count, statement, where));
+        }
+}
+
+}  // namespace
+
 std::shared_ptr<const TriangleMesh> load_mesh_file(const MeshFileShape& shape,
                                                    const std::string& where) {
     if (shape.format != "obj")
@@ -44,6 +70,8 @@ std::shared_ptr<const TriangleMesh> load_mesh_file(const MeshFileShape& shape,
     if (mesh->faces.empty())
         throw Error(
             fmt::format("{}: the OBJ file has no faces (mesh_file at {})", shape.path, where));
+    check_indices(mesh->faces, mesh->vertices.size(), "vertex", "v", shape.path, where);
+    check_indices(mesh->normal_faces, mesh->normals.size(), "normal", "vn", shape.path, where);
     return mesh;
 }
 
