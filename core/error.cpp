@@ -4,7 +4,23 @@
 
 namespace rayset {
 
-Error::Error(const std::string& message) : std::runtime_error(to_utf8(message)) {}
+namespace {
+
+// UTF-8, and a NUL byte quoted from a file as "\0": what() is a C string, which would end there.
+std::string readable(const std::string& message) {
+    std::string text;
+    for (const char c : to_utf8(message)) {
+        if (c == '\0')
+            text += "\\0";
+        else
+            text += c;
+    }
+    return text;
+}
+
+}  // namespace
+
+Error::Error(const std::string& message) : std::runtime_error(readable(message)) {}
 
 std::string Location::str() const {
     switch (kind) {

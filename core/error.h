@@ -9,7 +9,8 @@ namespace rayset {
 
 // Thrown for anything wrong with an input file or a request. what() reads
 // "FILE: byte 1234: expected ..." or "FILE:12: ...", ready to print: UTF-8 even where the
-// message quotes a file's 8-bit text (to_utf8, core/text_encoding.h).
+// message quotes a file's 8-bit text (to_utf8, core/text_encoding.h), with a quoted NUL byte
+// written "\0" so that the C string what() returns holds the whole message.
 class Error : public std::runtime_error {
 public:
     explicit Error(const std::string& message);

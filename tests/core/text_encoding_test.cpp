@@ -2,6 +2,8 @@
 // UTF-8/16/32 forms and Windows-1252 as the WHATWG encoding standard defines it.
 #include "core/text_encoding.h"
 
+#include "core/error.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -116,6 +118,12 @@ TEST(TextEncoding, JsonStringsAndKeysBecomeUtf8) {
     EXPECT_EQ(back["file"], "Leuchte \u00E4.ies");
     EXPECT_EQ(back["keywords"]["TEST\u00B0"], "25 \u00B0C");
     EXPECT_EQ(back["keywords"]["LAMP"], "LED");
+}
+
+TEST(TextEncoding, ErrorsQuotingANulByteKeepTheirWholeMessage) {
+    // A scene's string "disk.\0x" quoted in a message that ends with where it is.
+    const Error e("ray file \"disk.\0x\" not found at scene.pov:3:1"s);
+    EXPECT_STREQ(e.what(), "ray file \"disk.\\0x\" not found at scene.pov:3:1");
 }
 
 }  // namespace
