@@ -1,6 +1,26 @@
 #include "core/error.h"
 
+#include "core/text_encoding.h"
+
 namespace rayset {
+
+namespace {
+
+// UTF-8, and a NUL byte quoted from a file as "\0": what() is a C string, which would end there.
+std::string readable(const std::string& message) {
+    std::string text;
+    for (const char c : to_utf8(message)) {
+        if (c == '\0')
+            text += "\\0";
+        else
+            text += c;
+    }
+    return text;
+}
+
+}  // namespace
+
+Error::Error(const std::string& message) : std::runtime_error(readable(message)) {}
 
 std::string Location::str() const {
     switch (kind) {

@@ -8,10 +8,12 @@
 namespace rayset {
 
 // Thrown for anything wrong with an input file or a request. what() reads
-// "FILE: byte 1234: expected ..." or "FILE:12: ...", ready to print.
+// "FILE: byte 1234: expected ..." or "FILE:12: ...", ready to print: UTF-8 even where the
+// message quotes a file's 8-bit text (to_utf8, core/text_encoding.h), with a quoted NUL byte
+// written "\0" so that the C string what() returns holds the whole message.
 class Error : public std::runtime_error {
 public:
-    explicit Error(const std::string& message) : std::runtime_error(message) {}
+    explicit Error(const std::string& message);
 };
 
 // Where in a file: a byte offset for binary formats, a line (and column) for text.

@@ -10,7 +10,10 @@
 #include <openvdb/tools/PointIndexGrid.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -437,6 +440,17 @@ void read_spectra(const ModelFile& file, const std::string& path, LightModel& mo
     }
 }
 
+// openvdb::io::File::write ignores a failing stream: on a full disk it leaves a truncated model
+// and reports success. This writes the same archive (seekable, so that readers can load grids
+// lazily, as File writes it) to a stream whose state the caller checks.
+class CheckedArchive : public openvdb::io::Archive {
+public:
+    void write_seekable(std::ostream& out, const openvdb::GridPtrVec& grids,
+                        const openvdb::MetaMap& meta) const {
+        write(out, openvdb::GridCPtrVec(grids.begin(), grids.end()), true, meta);
+    }
+};
+
 }  // namespace
 
 void write_model(const LightModel& model, const std::string& path) {
@@ -454,10 +468,12 @@ void write_model(const LightModel& model, const std::string& path) {
 
     // Written beside the target and renamed into place: no half-written model on failure.
     write_atomically(path, [&](const std::string& temporary) {
-        openvdb::io::File file(temporary);
-        file.setCompression(openvdb::io::COMPRESS_BLOSC);
-        file.write(grids, meta);
-        file.close();
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        CheckedArchive archive;
+        archive.setCompression(openvdb::io::COMPRESS_BLOSC);
+        archive.write_seekable(out, grids, meta);
+        out.flush();
+        if (!out) throw std::runtime_error(std::strerror(errno));
         return true;
     });
 }

@@ -2,6 +2,7 @@
 // OpenVDB file, and summarise a stored model.
 #include "core/error.h"
 #include "core/progress.h"
+#include "core/text_encoding.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 
@@ -47,7 +48,7 @@ nlohmann::json summary(const LightModel& m, const std::string& path) {
     j["spheres"] = m.spheres.size();
     j["body_bounds_mm"] = {{b.lower.x, b.lower.y, b.lower.z}, {b.upper.x, b.upper.y, b.upper.z}};
     if (std::filesystem::exists(path)) j["file_bytes"] = std::filesystem::file_size(path);
-    return j;
+    return rayset::with_utf8_strings(j);
 }
 
 void print(const nlohmann::json& j) {

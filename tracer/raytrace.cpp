@@ -96,6 +96,8 @@ ParseOptions parse_options_of(const RaytraceOptions& options, const AnimationSet
     parse_options.include_paths = options.include_paths;
     parse_options.write_roots = options.write_roots;
     parse_options.max_memory_megabytes = options.max_parse_memory_mb;
+    if (options.max_objects > 0) parse_options.max_objects = options.max_objects;
+    if (options.max_lights > 0) parse_options.max_lights = options.max_lights;
     parse_options.declarations = options.declarations;
     parse_options.animation = frame;
     return parse_options;

@@ -463,6 +463,15 @@ void add_tool_options(CLI::App& app, RaytraceOptions& o) {
                    "Megabytes the scene may make the parser grow by "
                    "(default: half the RAM)")
         ->check(CLI::PositiveNumber);
+    app.add_option("--max-objects", o.max_objects,
+                   "Objects the scene may place (a union counts its parts, a mesh one; "
+                   "default: " +
+                       std::to_string(ParseOptions{}.max_objects) + ")")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--max-lights", o.max_lights,
+                   "Light sources the scene may place (default: " +
+                       std::to_string(ParseOptions{}.max_lights) + ")")
+        ->check(CLI::PositiveNumber);
 }
 
 void add_transport_options(CLI::App& app, RaytraceOptions& o) {

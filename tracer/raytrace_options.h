@@ -43,6 +43,8 @@ struct RaytraceOptions {
     std::vector<std::string> write_roots;  // folders the scene's #fopen may write to
     std::vector<std::pair<std::string, double>> declarations;  // Declare=NAME=VALUE
     long max_parse_memory_mb = 0;  // 0: the parser's default (half the RAM)
+    long max_objects = 0;          // 0: the parser's default
+    long max_lights = 0;           // 0: the parser's default
     bool quiet = false;
     // Bidirectional integrator (global_settings { integrator "bidirectional" }).
     int photons_per_pass = 0;    // 0: the renderer's default

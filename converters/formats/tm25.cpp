@@ -5,6 +5,7 @@
 #include "converters/formats/tm25_layout.h"
 #include "converters/rays/io.h"
 #include "converters/rays/simd.h"
+#include "core/text_encoding.h"
 
 #include <algorithm>
 #include <climits>
@@ -17,56 +18,6 @@
 
 namespace rayset {
 namespace tm25 {
-
-size_t utf32_to_utf8(const char32_t* text, size_t n, std::string& out) {
-    out.clear();
-    for (size_t i = 0; i < n; ++i) {
-        char32_t c = text[i];
-        if (c == 0) break;
-        if (c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return i;
-        append_utf8(c, out);
-    }
-    return std::string::npos;
-}
-
-size_t utf8_to_utf32(std::string_view text, std::u32string& out) {
-    out.clear();
-    size_t i = 0;
-    while (i < text.size()) {
-        auto byte = [&](size_t k) { return static_cast<unsigned char>(text[k]); };
-        unsigned char lead = byte(i);
-        size_t length;
-        char32_t c, min;
-        if (lead < 0x80) {
-            length = 1;
-            c = lead;
-            min = 0;
-        } else if ((lead & 0xE0) == 0xC0) {
-            length = 2;
-            c = lead & 0x1F;
-            min = 0x80;
-        } else if ((lead & 0xF0) == 0xE0) {
-            length = 3;
-            c = lead & 0x0F;
-            min = 0x800;
-        } else if ((lead & 0xF8) == 0xF0) {
-            length = 4;
-            c = lead & 0x07;
-            min = 0x10000;
-        } else
-            return i;
-        if (i + length > text.size()) return i;
-        for (size_t k = 1; k < length; ++k) {
-            if ((byte(i + k) & 0xC0) != 0x80) return i;
-            c = (c << 6) | (byte(i + k) & 0x3F);
-        }
-        // Overlong forms, surrogates and values past U+10FFFF are not text.
-        if (c < min || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return i;
-        out += c;
-        i += length;
-    }
-    return std::string::npos;
-}
 
 std::string table_problem(const float* wavelength, const float* weight, size_t points,
                           size_t& bad_value) {

@@ -3,6 +3,7 @@
 #include "converters/formats/codecs.h"
 #include "converters/formats/tm25_layout.h"
 #include "converters/rays/io.h"
+#include "core/text_encoding.h"
 
 #include <algorithm>
 #include <climits>
@@ -171,10 +172,9 @@ void Tm25Encoder::note_dropped() {
 }
 
 void Tm25Encoder::write_text(const std::string& text, size_t chars, const std::string& what) {
+    // 8-bit text from another format (a Latin-1 Zemax description) is made UTF-8 first.
     std::u32string code_points;
-    size_t bad = utf8_to_utf32(text, code_points);
-    if (bad != std::string::npos)
-        fail_here(what + " is not valid UTF-8 (byte " + std::to_string(bad) + " of the text)");
+    utf8_to_utf32(to_utf8(text), code_points);
     if (code_points.size() > chars) {
         code_points.resize(chars);
         dropped_.push_back(what + " past its first " + std::to_string(chars) + " characters");
@@ -205,8 +205,7 @@ void Tm25Encoder::write_header() {
     out_.put(
         static_cast<int32_t>(columns_.additional >= 0 ? columns_.count - columns_.additional : 0));
     std::u32string additional_text;
-    if (utf8_to_utf32(h.additional_text, additional_text) != std::string::npos)
-        fail_here("the additional text is not valid UTF-8");
+    utf8_to_utf32(to_utf8(h.additional_text), additional_text);
     const size_t text_chars = padded(4 * additional_text.size()) / 4;
     if (text_chars > INT32_MAX / 4) fail_here("the additional text is too long");
     out_.put(static_cast<int32_t>(4 * text_chars));

@@ -103,12 +103,6 @@ inline uint64_t padded(uint64_t bytes) {
     return (bytes + kBlockAlign - 1) / kBlockAlign * kBlockAlign;
 }
 
-// UTF-32 text up to its first NUL (or all n code points) as UTF-8. Returns the index of the
-// first code point that is not a Unicode scalar value, or npos when all are valid.
-size_t utf32_to_utf8(const char32_t* text, size_t n, std::string& out);
-// UTF-8 as code points. Returns the byte index of the first malformed sequence, or npos.
-size_t utf8_to_utf32(std::string_view text, std::u32string& out);
-
 // Why a spectral table cannot be used ("" if it can). bad_value is the offending value's index
 // as the file interleaves them: 2k for the k-th wavelength, 2k + 1 for its weight.
 std::string table_problem(const float* wavelength, const float* weight, size_t points,

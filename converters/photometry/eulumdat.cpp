@@ -263,8 +263,6 @@ EulumdatFile read_eulumdat(const std::string& path) {
     LineReader r(in);
     EulumdatFile f;
     f.company = r.text("line 1 (company identification)");
-    if (f.company.compare(0, 3, "\xEF\xBB\xBF") == 0)
-        f.company.erase(0, 3);  // UTF-8 byte order mark
     const uint64_t isym_line = read_counts(r, f);
     check_counts_fit(r, f, in.size());
     read_text_lines(r, f);

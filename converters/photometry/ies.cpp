@@ -149,7 +149,6 @@ std::string read_header(TextInput& in, IesFile& f) {
         std::string text = trim(line);
         if (first) {
             first = false;
-            if (starts_with(text, "\xEF\xBB\xBF")) text.erase(0, 3);  // UTF-8 byte order mark
             if (starts_with(text, "IESNA") || starts_with(text, "IES:")) {
                 f.version = version_of(text, in);
                 continue;

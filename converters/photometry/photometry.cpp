@@ -265,9 +265,10 @@ double Photometry::max_candela() const {
 }
 
 PhotometryFormat detect_photometry_format(const std::string& path) {
-    auto head = read_head(path, 1 << 16);
-    std::string_view text(reinterpret_cast<const char*>(head.data()), head.size());
-    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
+    const auto head = read_head(path, 1 << 16);
+    const std::string utf8 =
+        text_head_as_utf8({reinterpret_cast<const char*>(head.data()), head.size()});
+    const std::string_view text = utf8;
     // IES: a version line. EULUMDAT: numbers on lines 2-7 (checked before looking for a TILT=
     // line, since EULUMDAT text lines may contain anything). IES LM-63-1986: a TILT= line.
     size_t start = text.find_first_not_of(" \t\r\n");

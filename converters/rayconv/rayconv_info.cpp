@@ -3,6 +3,7 @@
 #include "converters/rayconv/rayconv.h"
 #include "converters/rays/ray_summary.h"
 #include "core/progress.h"
+#include "core/text_encoding.h"
 
 #include <fmt/format.h>
 #include <cmath>
@@ -139,11 +140,12 @@ void info_photometry(const std::string& path, bool as_json) {
     j["opening_m"] = {
         {"width", p.width_m}, {"length", p.length_m}, {"height", p.height_m}, {"round", p.round}};
     j["keywords"] = p.keywords;
+    j = with_utf8_strings(j);
     if (as_json) {
         std::cout << j.dump(2) << "\n";
         return;
     }
-    fmt::print("file        {}\nformat      {}\ntype        {}\n", path,
+    fmt::print("file        {}\nformat      {}\ntype        {}\n", j["file"].get<std::string>(),
                j["format"].get<std::string>(), type_name(p.type));
     fmt::print("angles      {} vertical ({:g} .. {:g} deg), {} horizontal ({:g} .. {:g} deg)\n",
                p.vertical_deg.size(), j["vertical_angles"]["min"].get<double>(),
@@ -153,7 +155,8 @@ void info_photometry(const std::string& path, bool as_json) {
     fmt::print("flux        {:.6g} lm from the intensities", p.total_flux());
     if (p.rated_lumens > 0) fmt::print(", lamps rated {:.6g} lm", p.rated_lumens);
     fmt::print("\nmaximum     {:.6g} cd\n", p.max_candela());
-    for (const auto& [key, value] : p.keywords) fmt::print("{:<16}{}\n", key, value);
+    for (const auto& [key, value] : j["keywords"].items())
+        fmt::print("{:<16}{}\n", key, value.get<std::string>());
 }
 
 }  // namespace
@@ -181,7 +184,7 @@ void register_info(CLI::App& app) {
         ProgressBar bar("reading");
         RaySummary s = summarise_rays(*reader, [&](double f) { bar.update(f); });
         bar.done();
-        json j = ray_json(args->file, *reader, s);
+        const json j = with_utf8_strings(ray_json(args->file, *reader, s));
         if (args->json) {
             std::cout << j.dump(2) << "\n";
         } else {

@@ -162,17 +162,29 @@ size_t BinaryInput::read_some(void* out, size_t n) {
 // ---------------------------------------------------------------------------------------------
 TextInput::TextInput(const std::string& path) : path_(path) {
     file_ = open_for_reading(path, size_);
+    char head[8];  // two UTF-32 characters: enough to tell the encoding without a mark
+    head_.assign(head, std::fread(head, 1, sizeof head, file_));
+    const TextStart start = text_start(head_);
+    encoding_ = start.encoding;
+    head_used_ = start.mark_bytes;
+    offset_ = start.mark_bytes;
 }
 
 TextInput::~TextInput() {
     if (file_) std::fclose(file_);
 }
 
+int TextInput::get_byte() {
+    if (head_used_ < head_.size()) return static_cast<unsigned char>(head_[head_used_++]);
+    return std::getc(file_);
+}
+
 bool TextInput::next(std::string& line) {
+    if (code_unit_bytes(encoding_) > 1) return next_wide(line);
     line.clear();
     int c;
     bool any = false;
-    while ((c = std::getc(file_)) != EOF) {
+    while ((c = get_byte()) != EOF) {
         any = true;
         ++offset_;
         if (c == '\n') break;
@@ -182,6 +194,41 @@ bool TextInput::next(std::string& line) {
         }
         line.push_back(static_cast<char>(c));
     }
+    if (!any) return false;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    ++line_number_;
+    return true;
+}
+
+bool TextInput::next_wide(std::string& line) {
+    line.clear();
+    std::string window;  // the bytes of the next character, at most 4
+    bool any = false;
+    for (;;) {
+        for (int c; window.size() < 4 && (c = get_byte()) != EOF;)
+            window.push_back(static_cast<char>(c));
+        if (window.empty()) break;
+        any = true;
+        const WideCharacter c = decode_wide(window, encoding_);
+        if (!c.bytes || !c.valid) {
+            ++line_number_;
+            fail(path_, Location::byte(offset_),
+                 std::string(c.bytes ? "not a Unicode character"
+                                     : "the file ends inside a character") +
+                     " in " + to_string(encoding_) + " text");
+        }
+        offset_ += c.bytes;
+        window.erase(0, c.bytes);
+        if (c.code == '\n') break;
+        if (c.code == 0) {
+            ++line_number_;
+            fail_here(std::string("NUL character in ") + to_string(encoding_) + " text");
+        }
+        append_utf8(c.code, line);
+    }
+    // Bytes read past the line's end go back in front of the file's.
+    head_ = window + head_.substr(head_used_);
+    head_used_ = 0;
     if (!any) return false;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     ++line_number_;
@@ -359,28 +406,16 @@ void write_atomically(const std::string& path,
     }
     if (!written) fail("");
     if (target.in_place) return;
+    // Writers that go through a file name do not flush to the disk: a disk that fills up while
+    // the kernel writes the data back must fail here, not after the rename.
+    const int fd = ::open(to.c_str(), O_RDONLY | O_CLOEXEC);
+    const bool synced = fd >= 0 && ::fsync(fd) == 0;
+    const std::string sync_error = synced ? "" : system_error_text();
+    if (fd >= 0) ::close(fd);
+    if (!synced) fail(sync_error);
     std::error_code error;
     fs::rename(to, target.file, error);
     if (error) fail(error.message());
-}
-
-void append_utf8(char32_t code, std::string& out) {
-    const auto c = static_cast<uint32_t>(code);
-    if (c < 0x80) {
-        out += static_cast<char>(c);
-    } else if (c < 0x800) {
-        out += static_cast<char>(0xC0 | (c >> 6));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    } else if (c < 0x10000) {
-        out += static_cast<char>(0xE0 | (c >> 12));
-        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    } else {
-        out += static_cast<char>(0xF0 | (c >> 18));
-        out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    }
 }
 
 }  // namespace rayset

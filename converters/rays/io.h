@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/error.h"
+#include "core/text_encoding.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -60,7 +61,9 @@ private:
     size_t buffered_begin_ = 0, buffered_end_ = 0;  // the unread part of buffer_
 };
 
-// Line-oriented text input; strips "\r\n" and "\n". Line numbers are 1-based.
+// Line-oriented text input; strips "\r\n" and "\n". Line numbers are 1-based. A byte-order
+// mark is skipped; UTF-16 and UTF-32 text (with a mark, or recognised by its zero bytes) is
+// handed out as UTF-8, 8-bit text as its bytes are (core/text_encoding.h).
 class TextInput {
 public:
     explicit TextInput(const std::string& path);
@@ -74,17 +77,24 @@ public:
     uint64_t line_number() const { return line_number_; }  // of the line last returned
     uint64_t offset() const { return offset_; }            // byte offset after it
     uint64_t size() const { return size_; }
+    TextEncoding encoding() const { return encoding_; }
 
     [[noreturn]] void fail_here(const std::string& what, uint32_t column = 0) const {
         rayset::fail(path_, Location::line(line_number_, column), what);
     }
 
 private:
+    int get_byte();  // the next byte of the file, or EOF
+    bool next_wide(std::string& line);
+
     std::string path_;
     std::FILE* file_ = nullptr;
     uint64_t size_ = 0;
     uint64_t offset_ = 0;
     uint64_t line_number_ = 0;
+    TextEncoding encoding_ = TextEncoding::eight_bit;
+    std::string head_;  // the first bytes, read to tell the encoding, not yet handed out
+    size_t head_used_ = 0;
 };
 
 // For writers that take a file name (OpenVDB, VTK): `write` gets the path of an empty temporary
@@ -148,8 +158,6 @@ bool parse_double(std::string_view token, double& out);
 bool parse_float(std::string_view token, float& out);
 // Splits on spaces, tabs and (if commas) commas; empty fields between commas are kept.
 std::vector<std::string_view> split_fields(std::string_view line, bool commas = false);
-// Appends a code point (at most 0x10FFFF) to UTF-8 text.
-void append_utf8(char32_t code, std::string& out);
 // Shortest decimal text that reads back to the same float (round trips are bit-exact).
 std::string format_float(float value);
 std::string format_double(double value);

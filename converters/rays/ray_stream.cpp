@@ -95,6 +95,14 @@ RayFormat detect_ray_format(const std::string& path) {
     if (size == 0) fail(path, "the file is empty");
     for (const auto& e : kFormats)
         if (e.sniff(head, size)) return e.format;
+    // Text formats saved as UTF-16 or UTF-32 (TextInput reads them as UTF-8).
+    const std::string_view raw(reinterpret_cast<const char*>(head.data()), head.size());
+    if (code_unit_bytes(text_start(raw).encoding) > 1) {
+        const std::string text = text_head_as_utf8(raw);
+        const Head utf8(text.begin(), text.end());
+        for (const auto& e : kFormats)
+            if (e.sniff(utf8, size)) return e.format;
+    }
     fail(path,
          "not a ray file of a known format: no TM-25 ('TM25') or LightTools ('LTRF', '# "
          "LightTools') "

@@ -1,5 +1,6 @@
 #include "converters/rays/text_row_count.h"
 
+#include "converters/rays/io.h"
 #include "core/error.h"
 
 #include <cerrno>
@@ -42,10 +43,27 @@ private:
     std::string_view end_marker_;
 };
 
+// UTF-16 and UTF-32 text, line by line as TextInput decodes it (newline bytes are not lines).
+RowCount count_wide_rows(TextInput& in, uint64_t offset, uint64_t first_line,
+                         std::string_view end_marker) {
+    std::string line;
+    while (in.offset() < offset && in.next(line)) {
+    }
+    RowCount count;
+    LineClassifier classify(count, first_line, end_marker);
+    while (in.next(line)) classify.line(line);
+    return count;
+}
+
 }  // namespace
 
 RowCount count_rows(const std::string& path, uint64_t offset, uint64_t first_line,
                     std::string_view end_marker) {
+    {
+        TextInput in(path);
+        if (code_unit_bytes(in.encoding()) > 1)
+            return count_wide_rows(in, offset, first_line, end_marker);
+    }
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) fail(path, std::string("cannot open: ") + std::strerror(errno));
     if (std::fseek(file.get(), static_cast<long>(offset), SEEK_SET) != 0)

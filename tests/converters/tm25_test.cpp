@@ -400,24 +400,6 @@ TEST(Tm25, UnfinishedEncoderLeavesNoFile) {
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 
-TEST(Tm25, Utf32ConversionCoversEveryEncodingLength) {
-    const std::u32string points = {0x41, 0x7F, 0x80, 0x7FF, 0x800, 0xFFFF, 0x10000, 0x10FFFF};
-    std::string utf8;
-    EXPECT_EQ(tm25::utf32_to_utf8(points.data(), points.size(), utf8), std::string::npos);
-    // Lengths 1+1+2+2+3+3+4+4 and the bytes of U+10FFFF.
-    EXPECT_EQ(utf8.size(), 20u);
-    EXPECT_EQ(utf8.substr(16), "\xF4\x8F\xBF\xBF");
-    std::u32string back;
-    EXPECT_EQ(tm25::utf8_to_utf32(utf8, back), std::string::npos);
-    EXPECT_EQ(back, points);
-    // Overlong, surrogate, past U+10FFFF, cut short, stray continuation byte.
-    for (const char* bad :
-         {"ab\xC0\x80", "ab\xED\xA0\x80", "ab\xF4\x90\x80\x80", "ab\xE2\x82", "ab\x80"})
-        EXPECT_EQ(tm25::utf8_to_utf32(bad, back), 2u) << bad;
-    const std::u32string surrogate = {0x41, 0xDC00};
-    EXPECT_EQ(tm25::utf32_to_utf8(surrogate.data(), 2, utf8), 1u);
-}
-
 TEST(Tm25, SniffsTheMagic) {
     EXPECT_TRUE(sniff_tm25({'T', 'M', '2', '5', 0xDD, 7}, 6));
     EXPECT_FALSE(sniff_tm25({'L', 'T', 'R', 'F'}, 4));

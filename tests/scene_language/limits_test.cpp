@@ -153,3 +153,34 @@ TEST(SceneLanguageFiles, WritingNeedsAWriteRootAndStaysInsideIt) {
 
 }  // namespace
 }  // namespace rayset::tracer
+
+namespace rayset::tracer {
+namespace {
+
+TEST(SceneLanguageLimits, ALoopThatNeverEndsStopsAtTheLightOrObjectLimit) {
+    // cornell.pov's light loop with j = j + 0: light sources without end, each one more.
+    ParseOptions options;
+    options.max_lights = 1000;
+    const std::string lights =
+        "#declare J = 0;\n#while (J < 3)\n  light_source { <J, 1, 0> rgb 1 }\n"
+        "  #declare J = J + 0;\n#end\n";
+    EXPECT_EQ(error_of(lights, options),
+              "light limit: more than 1000 light sources in the scene (ParseOptions::max_lights, "
+              "raytrace --max-lights) at test.pov:3:3");
+    options.max_objects = 1000;
+    EXPECT_EQ(error_of("#while (1)\n  union { sphere { 0, 1 } sphere { 1, 1 } }\n#end\n", options),
+              "object limit: more than 1000 objects in the scene (ParseOptions::max_objects, "
+              "raytrace --max-objects) at test.pov:2:3");
+    // At the limit exactly is fine.
+    EXPECT_EQ(error_of("#for (I, 1, 1000) light_source { <I, 1, 0> rgb 1 } #end", options),
+              "no error");
+    // The defaults stop cornell.pov's runaway loop within seconds, not gigabytes.
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_NE(error_of(lights).find("light limit: more than 100000 light sources"),
+              std::string::npos);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+              30.0);
+}
+
+}  // namespace
+}  // namespace rayset::tracer

@@ -29,6 +29,8 @@ const std::string kExamples = "/usr/share/doc/povray/examples/";
 // rendering in a second or two each.
 // A sample scene, or a frame of an animated one with the shape it shows.
 struct Sample {
+    Sample(std::string path, SampleFrame frame = {}, std::string shows = {})
+        : path(std::move(path)), frame(frame), shows(std::move(shows)) {}
     std::string path;
     SampleFrame frame;
     std::string shows;  // a frame's shape (its file names them all)
@@ -147,10 +149,10 @@ TEST(PovSampleCoverage, TheScenesUseEveryShapeCsgOperationAndCamera) {
         EXPECT_TRUE(camera_words.count(camera)) << camera;
 }
 
-// The copy's rules on a small scene: what is given is removed (uv_mapping too), what is declared kept (a layered
-// texture with its layers, a macro's texture argument, an array's textures), each top-level
-// object statement coloured
-// (in a macro body too), the objects inside a CSG left to inherit.
+// The copy's rules on a small scene: what is given is removed (uv_mapping too), what is declared
+// kept (a layered texture with its layers, a macro's texture argument, an array's textures), each
+// top-level object statement coloured (in a macro body too), the objects inside a CSG left to
+// inherit.
 TEST(FlatColourCopy, RewritesAsDocumented) {
     ScratchDir source, target;
     write_file(source.file("scene.pov"), R"(#include "parts.inc"

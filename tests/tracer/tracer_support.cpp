@@ -190,10 +190,15 @@ bool povray_render(const std::string& scene, int width, int height, std::vector<
         (library_path.empty() ? "" : "+L'" + library_path + "' ") + "+W" + std::to_string(width) +
         " +H" + std::to_string(height) +
         " +Opov.ppm +FP -D -GA File_Gamma=" + std::to_string(file_gamma) + more_options + " 2>&1");
-    // An animation's frame is written with its number (pov13.ppm): the one image there is.
-    std::string image = dir.file("pov.ppm");
-    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
-        if (entry.path().extension() == ".ppm") image = entry.path().string();
+    // An animation's frame is written with its number (pov13.ppm): the one image so named.
+    std::string image;
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("pov", 0) != 0 || entry.path().extension() != ".ppm") continue;
+        if (!image.empty())
+            throw std::runtime_error("povray wrote more than one image of " + scene);
+        image = entry.path().string();
+    }
     int w = 0, h = 0;
     if (pov.status != 0 || !read_ppm(image, w, h, rgb) || w != width || h != height) {
         throw std::runtime_error("povray failed on " + scene + ": " + pov.output);

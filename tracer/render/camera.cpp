@@ -87,18 +87,18 @@ CameraRay SceneCamera::ray(double px, double py) const {
             const double lx = wide ? right_over_up_ * x0 : kOmnimaxReach * x0;
             const double ly = wide ? y0 + kOmnimaxReach - 1 : kOmnimaxReach * y0 / right_over_up_;
             const double r = std::hypot(lx, ly);
-            if (r > kOmnimaxReach) return {c.location, d_, false};
+            if (r > kOmnimaxReach) return CameraRay::none();
             const double theta = omnimax_angle(r), phi = std::atan2(ly, lx);
             const double along_up = std::sin(theta) * std::sin(phi), along_d = std::cos(theta);
             // The dome: only the half of the view within 90 degrees of D + U.
-            if (along_up + along_d < 0) return {c.location, d_, false};
+            if (along_up + along_d < 0) return CameraRay::none();
             return {c.location,
                     std::sin(theta) * std::cos(phi) * r_ + along_up * u_ + along_d * d_};
         }
         case CameraProjection::mesh: return mesh_->ray(px, py, width_, height_);
         case CameraProjection::fisheye: {
             const double fx = x * right_over_up_, r = std::hypot(fx, y);
-            if (r > 0.5) return {c.location, d_, false};
+            if (r > 0.5) return CameraRay::none();
             const double theta = r * angle_, phi = std::atan2(y, fx);
             return {c.location, std::sin(theta) * (std::cos(phi) * r_ + std::sin(phi) * u_) +
                                     std::cos(theta) * d_};

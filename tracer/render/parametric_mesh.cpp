@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "core/bounds.h"
 #include "core/error.h"
 #include "tracer/scene_language/functions.h"
 
@@ -22,32 +23,8 @@ constexpr int kInitialCells = 16;          // per side of the rectangle
 constexpr int kSizeSamples = 64;           // per side, to measure the surface's size
 constexpr size_t kMaxTriangles = 1 << 20;  // beyond this, refused
 
-struct Box {
-    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    void add(Vec3 p) {
-        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-    Box grown(double by) const {
-        Box b = *this;
-        b.lo = lo - Vec3{by, by, by}, b.hi = hi + Vec3{by, by, by};
-        return b;
-    }
-    bool overlaps(const Box& o) const {
-        return lo.x <= o.hi.x && o.lo.x <= hi.x && lo.y <= o.hi.y && o.lo.y <= hi.y &&
-               lo.z <= o.hi.z && o.lo.z <= hi.z;
-    }
-    Box overlap(const Box& o) const {
-        Box b;
-        b.lo = {std::max(lo.x, o.lo.x), std::max(lo.y, o.lo.y), std::max(lo.z, o.lo.z)};
-        b.hi = {std::min(hi.x, o.hi.x), std::min(hi.y, o.hi.y), std::min(hi.z, o.hi.z)};
-        return b;
-    }
-    double largest_side() const { return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}); }
-};
-
-Box container_box(const ContainedBy& c) {
-    Box b;
+Bounds3 container_box(const ContainedBy& c) {
+    Bounds3 b;
     if (c.kind == ContainedBy::Kind::sphere) {
         const double r = std::abs(c.radius);
         b.add(c.centre - Vec3{r, r, r}), b.add(c.centre + Vec3{r, r, r});
@@ -131,7 +108,7 @@ private:
     double size() const {
         const std::vector<double> us = evenly(u0_, u1_, kSizeSamples);
         const std::vector<double> vs = evenly(v0_, v1_, kSizeSamples);
-        Box samples;
+        Bounds3 samples;
         for (double v : vs)
             for (double u : us) samples.add(at(u, v));
         const double cut = samples.overlap(container_).largest_side();
@@ -149,8 +126,8 @@ private:
             for (size_t i = 0; i < us_.size(); ++i) point(i, j) = at(us_[i], vs_[j]);
     }
 
-    Box cell_box(size_t i, size_t j) {
-        Box b;
+    Bounds3 cell_box(size_t i, size_t j) {
+        Bounds3 b;
         for (Vec3 p : {point(i, j), point(i + 1, j), point(i, j + 1), point(i + 1, j + 1)})
             b.add(p);
         return b;
@@ -158,7 +135,7 @@ private:
 
     // Whether the cell may reach into the container: its corners' box grown by its diagonal.
     bool near_container(size_t i, size_t j) {
-        const Box b = cell_box(i, j);
+        const Bounds3 b = cell_box(i, j);
         return b.grown(length(b.hi - b.lo) + tolerance_).overlaps(container_);
     }
 
@@ -193,7 +170,7 @@ private:
             for (size_t i = 0; i < nu; ++i) mesh.uvs[j * nu + i] = {us_[i], vs_[j]};
         const ContainedBy& c = shape_.contained_by;
         auto add = [&](unsigned a, unsigned b, unsigned d) {
-            Box box;
+            Bounds3 box;
             for (unsigned k : {a, b, d}) box.add(grid_[k]);
             if (!box.grown(tolerance_).overlaps(container_)) return;
             mesh.triangles.push_back({a, b, d});
@@ -212,7 +189,7 @@ private:
 
     const ParametricShape& shape_;
     const std::string& where_;
-    const Box container_;
+    const Bounds3 container_;
     double u0_ = 0, u1_ = 0, v0_ = 0, v1_ = 0;
     double tolerance_ = 0;
     std::vector<double> us_, vs_;

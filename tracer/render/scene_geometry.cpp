@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "core/bounds.h"
 #include "core/error.h"
 #include "tracer/render/mesh_loader.h"
 #include "tracer/render/solids.h"
@@ -93,8 +94,8 @@ void refuse_unrendered(const ObjectInstance& o) {
         std::holds_alternative<SorShape>(s) || std::holds_alternative<PolygonShape>(s) ||
         std::holds_alternative<JuliaFractalShape>(s) ||
         std::holds_alternative<BicubicPatchShape>(s) ||
-        std::holds_alternative<HeightFieldShape>(s) || std::holds_alternative<SphereSweepShape>(s) ||
-        std::holds_alternative<ParametricShape>(s);
+        std::holds_alternative<HeightFieldShape>(s) ||
+        std::holds_alternative<SphereSweepShape>(s) || std::holds_alternative<ParametricShape>(s);
     if (!rendered_shape) refuse(shape_keyword(s));
     if (const auto* julia = std::get_if<JuliaFractalShape>(&s);
         julia && !julia_default_slice(*julia))
@@ -189,14 +190,6 @@ bool analytic(const Shape& s) {
            std::holds_alternative<SphereSweepShape>(s);
 }
 
-struct Box3 {
-    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    void add(Vec3 p) {
-        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-};
-
 struct TriangleSoup {
     std::vector<float> vertices;
     std::vector<unsigned> indices;
@@ -256,7 +249,7 @@ public:
         attach_triangles(flagged, flagged_soup, true);
         if (!user.user_prims.empty()) {
             // Planes reach 10^5 times beyond everything placed in the scene.
-            Box3 placed = bounds_;
+            Bounds3 placed = bounds_;
             placed.add(description_.camera.location);
             for (const LightSource& l : description_.lights) placed.add(l.position);
             for (const IlluminanceReceiver& r : description_.receivers)
@@ -451,7 +444,7 @@ private:
     // A bounded user primitive whose own coordinates hold it in the box lower..upper.
     void add_user_prim(UserPrim prim, const Matrix4& local_to_world, Vec3 lower, Vec3 upper,
                        LeafTable& user) {
-        Box3 box;
+        Bounds3 box;
         for (int i = 0; i < 8; ++i)
             box.add(local_to_world.point(
                 {i & 1 ? upper.x : lower.x, i & 2 ? upper.y : lower.y, i & 4 ? upper.z : lower.z}));
@@ -534,7 +527,7 @@ private:
     RTCScene scene_;
     const SceneDescription& description_;
     std::unique_ptr<GeometryTables> tables_;
-    Box3 bounds_;
+    Bounds3 bounds_;
     std::vector<Pending> pending_;
     std::map<std::string, std::shared_ptr<const TriangleMesh>> loaded_;
 };

@@ -12,6 +12,7 @@
 #include <fmt/printf.h>
 
 #include "converters/rays/io.h"
+#include "core/text_encoding.h"
 #include "tracer/scene_language/grammar.h"
 #include "tracer/scene_language/noise.h"
 #include "tracer/scene_language/object_tree.h"

@@ -20,7 +20,7 @@ namespace rayset::tracer {
 bool starts_object(Parser& parser, const Token& token);
 ObjectRef parse_object(Parser& parser);  // the object keyword is the next token
 // Flattens an object tree into the scene's instances and lights.
-void add_to_scene(Parser& parser, const ObjectRef& object);
+void add_to_scene(Parser& parser, const ObjectRef& object, const Token& at);
 // Parse-time geometry of a declared object, for min_extent, max_extent, inside and trace
 // (object space of the tree, its transforms applied). Each returns false when it cannot
 // answer for this kind of object; the caller reports that as not supported.

@@ -608,10 +608,20 @@ private:
 
 }  // namespace
 
-void add_to_scene(Parser& parser, const ObjectRef& object) {
+void add_to_scene(Parser& parser, const ObjectRef& object, const Token& at) {
     Inherited root;
     root.appearance = scene_default_appearance(parser);  // the #default texture of this moment
+    const SceneDescription& scene = parser.scene();
     Flattener(parser.scene()).add(*object, root);
+    const ParseOptions& options = parser.options();
+    if (long(scene.objects.size()) > options.max_objects)
+        parser.fail(at, fmt::format("object limit: more than {} objects in the scene "
+                                    "(ParseOptions::max_objects, raytrace --max-objects)",
+                                    options.max_objects));
+    if (long(scene.lights.size()) > options.max_lights)
+        parser.fail(at, fmt::format("light limit: more than {} light sources in the scene "
+                                    "(ParseOptions::max_lights, raytrace --max-lights)",
+                                    options.max_lights));
 }
 
 }  // namespace rayset::tracer

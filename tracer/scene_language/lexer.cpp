@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/text_encoding.h"
 #include "tracer/scene_language/parse_error.h"
 
 namespace rayset::tracer {
@@ -152,19 +153,6 @@ private:
         return std::strtod(text_.substr(start, pos_ - start).c_str(), nullptr);
     }
 
-    static void append_utf8(std::string& out, unsigned code) {
-        if (code < 0x80) {
-            out += static_cast<char>(code);
-        } else if (code < 0x800) {
-            out += static_cast<char>(0xC0 | (code >> 6));
-            out += static_cast<char>(0x80 | (code & 0x3F));
-        } else {
-            out += static_cast<char>(0xE0 | (code >> 12));
-            out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-            out += static_cast<char>(0x80 | (code & 0x3F));
-        }
-    }
-
     // POV-Ray's escapes; any other character after a backslash is an error, as in POV-Ray.
     std::string read_string(const Token& opened) {
         advance();  // opening quote
@@ -203,7 +191,7 @@ private:
                         code = code * 16 + static_cast<unsigned>(
                                                is_digit(h) ? h - '0' : std::tolower(h) - 'a' + 10);
                     }
-                    append_utf8(value, code);
+                    append_utf8(code, value);
                     break;
                 }
                 default:

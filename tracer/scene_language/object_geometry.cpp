@@ -20,6 +20,7 @@
 #include <cmath>
 #include <optional>
 
+#include "core/bounds.h"
 #include "core/error.h"
 #include "tracer/scene_language/object_grammar.h"
 #include "tracer/scene_language/shape_geometry.h"
@@ -29,10 +30,6 @@ namespace rayset::tracer {
 namespace {
 
 constexpr double kUnbounded = 1e10;  // POV-Ray's coordinate for an unbounded side
-
-struct Box {
-    Vec3 lo, hi;
-};
 
 // The inverse of a node's transform; false when it is singular.
 bool inverse_of(const Matrix4& m, Matrix4& inverse) {
@@ -51,18 +48,11 @@ Vec3 normal_through(const Matrix4& inverse, Vec3 n) {
             inverse(0, 2) * n.x + inverse(1, 2) * n.y + inverse(2, 2) * n.z};
 }
 
-Box empty_box() { return {{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}}; }
-
-void add_point(Box& box, Vec3 p) {
-    box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y), std::min(box.lo.z, p.z)};
-    box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y), std::max(box.hi.z, p.z)};
-}
-
-Box transformed(const Box& box, const Matrix4& m) {
-    Box out = empty_box();
+Bounds3 transformed(const Bounds3& box, const Matrix4& m) {
+    Bounds3 out;
     for (int i = 0; i < 8; ++i)
-        add_point(out, m.point({i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
-                                i & 4 ? box.hi.z : box.lo.z}));
+        out.add(m.point({i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
+                         i & 4 ? box.hi.z : box.lo.z}));
     return out;
 }
 
@@ -103,8 +93,8 @@ bool is_similarity(const Matrix4& m) {
 // out negative components and the threshold). A component moved only by a similarity keeps a
 // tight box; otherwise POV-Ray widens its radius by the transform's largest row sum. False
 // with a positive cylinder component, whose box is not computed here.
-bool blob_box(const BlobShape& blob, Box& box) {
-    box = empty_box();
+bool blob_box(const BlobShape& blob, Bounds3& box) {
+    box = Bounds3{};
     for (const BlobComponent& component : blob.components) {
         if (component.strength <= 0) continue;
         if (component.kind == BlobComponent::Kind::cylinder) return false;
@@ -118,10 +108,10 @@ bool blob_box(const BlobShape& blob, Box& box) {
         }
         const Vec3 c = m.point(component.centre);
         const double r = std::abs(component.radius) * scale;
-        add_point(box, {c.x - r, c.y - r, c.z - r});
-        add_point(box, {c.x + r, c.y + r, c.z + r});
+        box.add({c.x - r, c.y - r, c.z - r});
+        box.add({c.x + r, c.y + r, c.z + r});
     }
-    if (box.lo.x > box.hi.x) box = {};  // no positive component
+    if (box.empty()) box = Bounds3{Vec3{}, Vec3{}};  // no positive component: a point
     return true;
 }
 
@@ -138,7 +128,7 @@ bool spline_box(SplineKind spline, const std::vector<Vec2>& points, Vec2& lo, Ve
     return true;
 }
 
-bool lathe_box(const LatheShape& lathe, Box& box) {
+bool lathe_box(const LatheShape& lathe, Bounds3& box) {
     Vec2 lo, hi;
     if (!spline_box(lathe.spline, lathe.points, lo, hi)) return false;
     const double r = std::max(std::abs(lo.x), std::abs(hi.x));
@@ -147,7 +137,7 @@ bool lathe_box(const LatheShape& lathe, Box& box) {
 }
 
 // A conic prism's outline scales with the height, from height1 to height2.
-bool prism_box(const PrismShape& prism, Box& box) {
+bool prism_box(const PrismShape& prism, Bounds3& box) {
     Vec2 lo, hi;
     if (!spline_box(prism.spline, prism.points, lo, hi)) return false;
     const double y0 = std::min(prism.height1, prism.height2),
@@ -157,13 +147,13 @@ bool prism_box(const PrismShape& prism, Box& box) {
         box.lo.x = box.lo.z = 1e300, box.hi.x = box.hi.z = -1e300;
         for (double h : {prism.height1, prism.height2})
             for (double x : {lo.x * h, hi.x * h})
-                for (double z : {lo.y * h, hi.y * h}) add_point(box, {x, y0, z});
+                for (double z : {lo.y * h, hi.y * h}) box.add({x, y0, z});
     }
     return true;
 }
 
 // The shapes whose box is their own and moves with their transforms as a whole.
-bool own_box(const Shape& shape, Box& box) {
+bool own_box(const Shape& shape, Bounds3& box) {
     if (const auto* blob = std::get_if<BlobShape>(&shape)) return blob_box(*blob, box);
     if (const auto* lathe = std::get_if<LatheShape>(&shape)) return lathe_box(*lathe, box);
     if (const auto* prism = std::get_if<PrismShape>(&shape)) return prism_box(*prism, box);
@@ -175,19 +165,19 @@ bool own_box(const Shape& shape, Box& box) {
         const ContainedBy& c = iso->contained_by;
         const double r = std::abs(c.radius);
         box = c.kind == ContainedBy::Kind::box
-                  ? Box{c.minimum, c.maximum}
-                  : Box{c.centre - Vec3{r, r, r}, c.centre + Vec3{r, r, r}};
+                  ? Bounds3{c.minimum, c.maximum}
+                  : Bounds3{c.centre - Vec3{r, r, r}, c.centre + Vec3{r, r, r}};
     } else if (const auto* sweep = std::get_if<SphereSweepShape>(&shape)) {
         if (sweep->kind != SphereSweepShape::Kind::linear_spline) return false;
-        box = empty_box();
+        box = Bounds3{};
         for (const auto& sphere : sweep->spheres) {
             const double r = std::abs(sphere.radius);
-            add_point(box, sphere.centre - Vec3{r, r, r});
-            add_point(box, sphere.centre + Vec3{r, r, r});
+            box.add(sphere.centre - Vec3{r, r, r});
+            box.add(sphere.centre + Vec3{r, r, r});
         }
     } else if (const auto* patch = std::get_if<BicubicPatchShape>(&shape)) {
-        box = empty_box();
-        for (const Vec3& p : patch->points) add_point(box, p);
+        box = Bounds3{};
+        for (const Vec3& p : patch->points) box.add(p);
     } else if (const auto* text = std::get_if<TextShape>(&shape)) {
         if (!text->outline) return false;
         const TextOutline& o = *text->outline;
@@ -201,8 +191,8 @@ bool own_box(const Shape& shape, Box& box) {
 
 // The box POV-Ray gives a shape in the coordinates `to_parent` maps from; false for the
 // shapes not covered (and spheres, planes and meshes, handled apart).
-bool exact_box(const Shape& shape, const Matrix4& to_parent, Box& box) {
-    Box own;
+bool exact_box(const Shape& shape, const Matrix4& to_parent, Bounds3& box) {
+    Bounds3 own;
     if (own_box(shape, own)) {
         box = transformed(own, to_parent);
         return true;
@@ -226,18 +216,18 @@ bool exact_box(const Shape& shape, const Matrix4& to_parent, Box& box) {
         box = transformed({{-r, -r, -1e-3}, {r, r, 1e-3}},
                           to_parent * translation(d->centre) * z_onto(n));
     } else if (const auto* t = std::get_if<TriangleShape>(&shape)) {
-        box = empty_box();
-        for (Vec3 p : {t->a, t->b, t->c}) add_point(box, to_parent.point(p));
+        box = Bounds3{};
+        for (Vec3 p : {t->a, t->b, t->c}) box.add(to_parent.point(p));
     } else if (const auto* t = std::get_if<SmoothTriangleShape>(&shape)) {
-        box = empty_box();
-        for (Vec3 p : {t->a, t->b, t->c}) add_point(box, to_parent.point(p));
+        box = Bounds3{};
+        for (Vec3 p : {t->a, t->b, t->c}) box.add(to_parent.point(p));
     } else {
         return false;
     }
     return true;
 }
 
-void set_box(ParseBounds& bounds, const Box& box) {
+void set_box(ParseBounds& bounds, const Bounds3& box) {
     bounds.known = true;
     bounds.infinite = false;
     bounds.minimum = box.lo;
@@ -250,18 +240,18 @@ void set_unbounded(ParseBounds& bounds) {
     bounds.maximum = {kUnbounded, kUnbounded, kUnbounded};
 }
 
-Box box_of(const ParseBounds& bounds) { return {bounds.minimum, bounds.maximum}; }
+Bounds3 box_of(const ParseBounds& bounds) { return {bounds.minimum, bounds.maximum}; }
 
 void set_sphere_box(ParseBounds& bounds) {
     const double r = bounds.sphere_radius;
     const Vec3 c = bounds.sphere_centre;
-    const Box own{{c.x - r, c.y - r, c.z - r}, {c.x + r, c.y + r, c.z + r}};
+    const Bounds3 own{{c.x - r, c.y - r, c.z - r}, {c.x + r, c.y + r, c.z + r}};
     set_box(bounds, bounds.sphere_transformed ? transformed(own, bounds.sphere_transform) : own);
 }
 
 // An intersection's box cut by a plane child whose normal (in the intersection's
 // coordinates, turned over when the child counts inverted) lies along an axis.
-void cut_by_plane(Box& box, const ObjectNode& child, bool inverted) {
+void cut_by_plane(Bounds3& box, const ObjectNode& child, bool inverted) {
     const auto& plane = std::get<PlaneShape>(child.shape);
     Matrix4 inverse;
     if (!inverse_of(child.transform, inverse)) return;
@@ -284,14 +274,14 @@ void cut_by_plane(Box& box, const ObjectNode& child, bool inverted) {
     }
 }
 
-bool touches_unbounded(const Box& box) {
+bool touches_unbounded(const Bounds3& box) {
     for (double v : {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z})
         if (std::abs(v) >= kUnbounded) return true;
     return box.lo.x > box.hi.x || box.lo.y > box.hi.y || box.lo.z > box.hi.z;
 }
 
 void intersection_bounds(ObjectNode& node, bool difference) {
-    Box box{{-kUnbounded, -kUnbounded, -kUnbounded}, {kUnbounded, kUnbounded, kUnbounded}};
+    Bounds3 box{{-kUnbounded, -kUnbounded, -kUnbounded}, {kUnbounded, kUnbounded, kUnbounded}};
     for (size_t i = 0; i < node.children.size(); ++i) {
         const ObjectNode& child = *node.children[i];
         const bool inverted = child.inverse != (difference && i > 0);
@@ -320,12 +310,12 @@ void intersection_bounds(ObjectNode& node, bool difference) {
 }
 
 // The overlap of the boxes of `objects` (clipped_by, bounded_by), if all are known.
-std::optional<Box> overlap_of(const std::vector<ObjectRef>& objects) {
-    Box box{{-kUnbounded, -kUnbounded, -kUnbounded}, {kUnbounded, kUnbounded, kUnbounded}};
+std::optional<Bounds3> overlap_of(const std::vector<ObjectRef>& objects) {
+    Bounds3 box{{-kUnbounded, -kUnbounded, -kUnbounded}, {kUnbounded, kUnbounded, kUnbounded}};
     for (const ObjectRef& object : objects) {
         if (!object->bounds.known) return std::nullopt;
         if (object->bounds.infinite) continue;
-        const Box b = box_of(object->bounds);
+        const Bounds3 b = box_of(object->bounds);
         box.lo = {std::max(box.lo.x, b.lo.x), std::max(box.lo.y, b.lo.y),
                   std::max(box.lo.z, b.lo.z)};
         box.hi = {std::min(box.hi.x, b.hi.x), std::min(box.hi.y, b.hi.y),
@@ -334,7 +324,7 @@ std::optional<Box> overlap_of(const std::vector<ObjectRef>& objects) {
     return box;
 }
 
-double volume(const Box& b) {
+double volume(const Bounds3& b) {
     return std::max(0.0, b.hi.x - b.lo.x) * std::max(0.0, b.hi.y - b.lo.y) *
            std::max(0.0, b.hi.z - b.lo.z);
 }
@@ -345,7 +335,7 @@ void compute_shape_bounds(ObjectNode& node) {
     ParseBounds& bounds = node.bounds;
     bounds = ParseBounds{};
     const Shape& shape = node.shape;
-    Box box;
+    Bounds3 box;
     if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
         bounds.sphere_centre = node.transform.point(sphere->centre);
         bounds.sphere_radius = std::abs(sphere->radius);
@@ -353,8 +343,8 @@ void compute_shape_bounds(ObjectNode& node) {
     } else if (std::holds_alternative<PlaneShape>(shape)) {
         set_unbounded(bounds);
     } else if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
-        box = empty_box();
-        for (const Vec3& v : mesh->mesh->vertices) add_point(box, v);
+        box = Bounds3{};
+        for (const Vec3& v : mesh->mesh->vertices) box.add(v);
         set_box(bounds, transformed(box, node.transform));
     } else if (exact_box(shape, node.transform, box)) {
         set_box(bounds, box);
@@ -367,17 +357,18 @@ void compute_csg_bounds(ObjectNode& node) {
         return intersection_bounds(node, false);
     if (node.kind == ObjectNode::Kind::csg && csg.operation == CsgShape::Operation::difference)
         return intersection_bounds(node, true);
-    Box box = empty_box();
+    Bounds3 box;
     for (const ObjectRef& child : node.children) {
         if (!child->bounds.known) {
             node.bounds.known = false;
             return;
         }
         if (child->bounds.infinite) return set_unbounded(node.bounds);
-        add_point(box, child->bounds.minimum);
-        add_point(box, child->bounds.maximum);
+        box.add(child->bounds.minimum);
+        box.add(child->bounds.maximum);
     }
-    if (node.children.empty()) box = {};  // an empty union: POV-Ray's box is then a point
+    if (node.children.empty())
+        box = Bounds3{Vec3{}, Vec3{}};  // an empty union: POV-Ray's box is a point
     set_box(node.bounds, box);
 }
 
@@ -394,7 +385,7 @@ void transform_bounds(ObjectNode& node, const Matrix4& step, bool similarity) {
         }
         return set_sphere_box(bounds);
     }
-    Box box;
+    Bounds3 box;
     if (node.kind == ObjectNode::Kind::shape && exact_box(node.shape, node.transform, box))
         return set_box(bounds, box);
     set_box(bounds, transformed(box_of(bounds), step));
@@ -407,7 +398,7 @@ void apply_bounding_rules(ObjectNode& node) {
     double best = bounds.infinite ? HUGE_VAL : volume(box_of(bounds));
     for (const std::vector<ObjectRef>* objects : {&node.clipped_by, &node.bounded_by}) {
         if (objects->empty()) continue;
-        const std::optional<Box> box = overlap_of(*objects);
+        const std::optional<Bounds3> box = overlap_of(*objects);
         if (!box) {
             bounds.known = false;
             return;

@@ -123,7 +123,7 @@ SceneDescription Parser::parse(const std::string& text, const std::string& path)
         const Token token = peek();
         if (token.kind == TokenKind::end) break;
         if (starts_object(*this, token)) {
-            add_to_scene(*this, parse_object(*this));
+            add_to_scene(*this, parse_object(*this), token);
             continue;
         }
         if (token.is(Symbol::semicolon)) {  // a stray ';' (POV-Ray ignores it)

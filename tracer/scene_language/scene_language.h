@@ -46,7 +46,11 @@ struct ParseOptions {
     long max_loop_iterations = 100000000;  // #while and #for iterations in total
     long max_array_elements = 100000000;   // elements of one array
     long max_string_length = 100000000;    // bytes of one string
-    long max_memory_megabytes = 0;         // growth of the process while parsing; 0: half the RAM
+    // Objects and light sources placed in the scene (a union counts its parts, a mesh one): far
+    // above real scenes, they stop a loop that never ends long before memory runs out.
+    long max_objects = 10000000;
+    long max_lights = 100000;
+    long max_memory_megabytes = 0;  // growth of the process while parsing; 0: half the RAM
 };
 
 // POV-Ray's include folder when the package is installed (/usr/share/povray-3.7/include), as

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The CMake package from outside: installs the build tree into a scratch prefix, builds
+# examples/consumer against that copy only (find_package(rayset CONFIG)), and runs it on the model
+# of a Lambertian disk (radius 1 mm, 1 W). Its figures against closed forms: the model's flux is
+# the rays' (1 W to float rounding), the mean photon flux is that flux within 4 standard errors
+# (fixed seed), and the irradiance 100 mm above the disk is 1 / (pi (100^2 + 1^2)) W/mm^2 within
+# 2% (the model's far-field error).
+# Usage: consumer_test.sh SOURCE_DIR BUILD_DIR
+set -euo pipefail
+source_dir=$1 build_dir=$2
+work=$build_dir/package-test
+rm -rf "$work" && mkdir -p "$work"
+cmake --install "$build_dir" --prefix "$work/prefix" > "$work/install.log"
+# Nothing of the build tree may be reachable: only the installed copy.
+cmake -S "$source_dir/examples/consumer" -B "$work/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
+cmake --build "$work/consumer" > "$work/build.log"
+"$work/prefix/bin/rayconv" synth disk radius=1 flux=1 --rays 200000 --seed 5 -o "$work/disk.tm25ray" > /dev/null
+"$work/prefix/bin/raymodel" build "$work/disk.tm25ray" -o "$work/disk.vdb" > /dev/null
+"$work/consumer/consumer" "$work/disk.vdb" 200000 | tee "$work/consumer.txt"
+awk '
+  /^flux / { flux = $2 }
+  /^photon mean / { mean = $3; error = $5 }
+  /^irradiance / { irradiance = $5 }
+  END {
+    expected = 1 / (3.14159265358979 * (100 * 100 + 1))
+    bad = 0
+    if (flux < 1 - 1e-5 || flux > 1 + 1e-5) { print "flux " flux " is not 1 W"; bad = 1 }
+    if (mean - flux > 4 * error || flux - mean > 4 * error) { print "photon mean off"; bad = 1 }
+    if (irradiance < 0.98 * expected || irradiance > 1.02 * expected) {
+      print "irradiance " irradiance " against " expected; bad = 1 }
+    exit bad
+  }' "$work/consumer.txt"
