@@ -11,9 +11,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -212,12 +215,25 @@ struct MetadataReader {
         text(key, t);
         value = parse_frame(t, path, key);
     }
+    // Bins as a build makes them: a finite start, a positive width and as many bins of that
+    // width as cover the 400 nm of 380..780 (model_build.cpp), which also bounds the per-cell
+    // spectra read for them.
     void bins(const char* key, SpectralBins& b) {
-        if (auto m = meta.getMetadata<openvdb::Vec3DMetadata>(key)) {
-            b.first_nm = m->value().x();
-            b.width_nm = m->value().y();
-            b.count = int(m->value().z());
+        auto m = meta.getMetadata<openvdb::Vec3DMetadata>(key);
+        if (!m) return;
+        const double first = m->value().x(), width = m->value().y(), count = m->value().z();
+        const double covering = width > 0 ? std::max(1.0, std::round(400 / width)) : 0;
+        if (!std::isfinite(first) || !(width > 0) || !std::isfinite(width) ||
+            !(covering <= std::numeric_limits<int>::max()) || count != covering) {
+            std::ostringstream text;
+            text << first << " " << width << " " << count;
+            throw Error(path + ": metadata '" + key + "' is '" + text.str() +
+                        "': expected the first bin (nm), a positive width (nm) and the number of "
+                        "bins of that width over the 400 nm from 380 to 780");
         }
+        b.first_nm = first;
+        b.width_nm = width;
+        b.count = int(count);
     }
     template <class T>
     void option(const char* key, T& value) {
@@ -234,7 +250,17 @@ struct MetadataReader {
         std::istringstream in(t);
         for (std::string kv; in >> kv;) {
             const auto eq = kv.find('=');
-            option_values[kv.substr(0, eq)] = std::stoll(kv.substr(eq + 1));
+            long long value = 0;
+            bool whole_number = eq != std::string::npos && eq > 0;
+            if (whole_number) {
+                const char* end = kv.data() + kv.size();
+                const auto [stop, error] = std::from_chars(kv.data() + eq + 1, end, value);
+                whole_number = error == std::errc() && stop == end;
+            }
+            if (!whole_number)
+                throw Error(path + ": metadata '" + key + "' holds '" + kv +
+                            "': expected name=integer pairs separated by spaces");
+            option_values[kv.substr(0, eq)] = value;
         }
         describe_options(*this, o);
     }
@@ -322,12 +348,20 @@ ModelFile open_model_file(const std::string& path) {
     ModelFile file;
     try {
         openvdb::io::File vdb_file(path);
-        vdb_file.open();
+        // Read whole, without delayed loading: that takes each leaf's compressed size from a
+        // table in the file and, when a corrupt file's table is short, OpenVDB 10 asserts
+        // (Debian's build aborts the process) or reads past it. A model is read whole anyway.
+        vdb_file.open(/*delayLoad=*/false);
         file.grids = vdb_file.getGrids();
         file.meta = vdb_file.getMetadata();
         vdb_file.close();
     } catch (const std::exception& e) {
-        throw Error(path + ": cannot read as an OpenVDB model file: " + e.what());
+        // OpenVDB quotes what it read, such as a grid type of the length a corrupt file states
+        // (128 MB): only the beginning of its message is kept.
+        constexpr size_t kLongest = 300;
+        std::string what = e.what();
+        if (what.size() > kLongest) what = what.substr(0, kLongest) + "...";
+        throw Error(path + ": cannot read as an OpenVDB model file: " + what);
     }
     auto version = file.meta->getMetadata<openvdb::Int32Metadata>(kVersionKey);
     if (!version) throw Error(path + ": not a rayset model (no " + kVersionKey + " metadata)");
