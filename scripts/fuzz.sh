@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Coverage-guided fuzzing of the readers of untrusted files (fuzz/README.md): builds the libFuzzer
 # harnesses with clang in build-fuzz/, makes their seed corpora, runs each harness for SECONDS
-# and prints one line per harness. Exits non-zero when a harness crashed, hung or ran out of
-# memory; the input that did it is in build-fuzz/crashes/<harness>/ and the harness's output in
-# build-fuzz/logs/<harness>.log. Replay an input with build-fuzz/fuzz/fuzz_<harness> FILE.
+# or 10^7 executions, whichever comes first, and prints one line per harness. Exits non-zero
+# when a harness crashed, hung or ran out of memory; the input that did it is in
+# build-fuzz/crashes/<harness>/ and the harness's output in build-fuzz/logs/<harness>.log.
+# Replay an input with build-fuzz/fuzz/fuzz_<harness> FILE.
 # Usage: scripts/fuzz.sh SECONDS [HARNESS...]     (default: every harness, one after the other)
 #   harnesses: the names of fuzz/*_fuzzer.cpp (tm25, ies, scene, mesh, model, checkpoint, ...)
 #   RAYSET_SHARED_DATA: folder of the real sample files (default ../shared/data)
@@ -96,7 +97,8 @@ main() {
     inputs=("$corpus")
     [ -d "$seeds/$h" ] && inputs+=("$seeds/$h")
     [ -d "tests/fuzz/regressions/$h" ] && inputs+=("tests/fuzz/regressions/$h")
-    options=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len="$(max_len "$h")"
+    options=(-max_total_time="$seconds" -runs=10000000 -timeout=10 -rss_limit_mb=2048
+      -max_len="$(max_len "$h")"
       -artifact_prefix="$crashes/" -print_final_stats=1)
     [ -f "fuzz/dictionaries/$h.dict" ] && options+=(-dict="fuzz/dictionaries/$h.dict")
     before=$(ls "$crashes" | wc -l)

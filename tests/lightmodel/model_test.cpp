@@ -12,6 +12,7 @@
 #include "support/statistics.h"
 
 #include <gtest/gtest.h>
+#include <openvdb/openvdb.h>
 
 #include <algorithm>
 #include <cmath>
@@ -102,6 +103,38 @@ TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
 // pdf_direction(w), estimated with points uniform in the lattice box and uniform directions,
 // independent of the model's own sampling: checks that pdf_Le's two factors each integrate to 1.
 // The bound is 4 standard errors (a normal two-sided 99.99% interval).
+// A model file is untrusted input: metadata that no build writes is refused with the key and
+// what it should hold, not used to size arrays (a corrupt bin count) or thrown as a bare
+// std::invalid_argument (a non-numeric option). The files are a built model's with one item of
+// metadata rewritten through OpenVDB, as a corrupt or hand-edited file has it.
+TEST(Model, ReadingRefusesMetadataNoBuildWrites) {
+    ScratchDir dir;
+    write_model(*built_source("disk").model, dir.file("disk.vdb"));
+    const auto read_with = [&](const char* key, const openvdb::Metadata& value) {
+        openvdb::io::File original(dir.file("disk.vdb"));
+        original.open(false);
+        openvdb::GridPtrVecPtr grids = original.getGrids();
+        openvdb::MetaMap::Ptr meta = original.getMetadata();
+        original.close();
+        meta->removeMeta(key);
+        meta->insertMeta(key, value);
+        openvdb::io::File(dir.file("edited.vdb")).write(*grids, *meta);
+        try {
+            lightmodel::read_model(dir.file("edited.vdb"));
+            return std::string("read without an error");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+    };
+    // Bins of 10 nm over 380..780 are 40, not a million.
+    const std::string bins = read_with(
+        "spectral_bins_nm", openvdb::Vec3DMetadata(openvdb::Vec3d(380, 10, 1e6)));
+    EXPECT_NE(bins.find("'spectral_bins_nm' is '380 10 1e+06'"), std::string::npos) << bins;
+    const std::string options =
+        read_with("build_options", openvdb::StringMetadata("density_resolution=x"));
+    EXPECT_NE(options.find("holds 'density_resolution=x'"), std::string::npos) << options;
+}
+
 TEST(Model, MonteCarloFluxFromEmissionDensities) {
     for (const char* name : {"disk", "sphere", "cluster"}) {
         const BuiltSource& b = built_source(name);
