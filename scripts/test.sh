@@ -25,13 +25,5 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 # A short run of every fuzzing harness (clang, libFuzzer; fuzz/README.md), then every input that
 # once crashed a reader replayed through its harness. About seven minutes on two cores, most of
 # it the build.
-# The model file's harness is not in the short run: OpenVDB's GridDescriptor::read allocates a
-# string of the length a file states (up to 4 GB) before reading it, which libFuzzer reports as
-# out of memory within seconds; `scripts/fuzz.sh SECONDS model` runs it.
-harnesses=()
-for source in fuzz/*_fuzzer.cpp; do
-  name=$(basename "$source" _fuzzer.cpp)
-  [ "$name" = model ] || harnesses+=("$name")
-done
-scripts/fuzz.sh 10 "${harnesses[@]}"
+scripts/fuzz.sh 10
 ctest --test-dir build-fuzz -L fuzz --output-on-failure -j "$jobs"
