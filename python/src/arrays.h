@@ -1,0 +1,65 @@
+// What the binding sources share: numpy arrays made from C++ memory, the array types the
+// vectorised functions take, and the registration functions of each area.
+#pragma once
+
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+
+#include <cstddef>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "core/geometry.h"
+
+namespace rayset::python {
+
+namespace nb = nanobind;
+
+template <class T>
+using Array = nb::ndarray<nb::numpy, T>;
+// Arguments: nanobind converts other dtypes and layouts (float32, slices, lists) to these.
+using Points = nb::ndarray<const double, nb::shape<-1, 3>, nb::c_contig, nb::device::cpu>;
+using Values = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+using Randoms = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+
+// A new C-contiguous numpy array over memory it owns: filled through `data` before it reaches
+// Python (also without the GIL), freed when Python drops the last reference.
+template <class T>
+struct NewArray {
+    T* data = nullptr;
+    Array<T> array;
+
+    explicit NewArray(std::initializer_list<size_t> shape) : NewArray(std::vector<size_t>(shape)) {}
+    explicit NewArray(const std::vector<size_t>& shape) {
+        size_t count = 1;
+        for (size_t n : shape) count *= n;
+        data = new T[count > 0 ? count : 1]();
+        nb::capsule owner(data, [](void* p) noexcept { delete[] static_cast<T*>(p); });
+        array = Array<T>(data, shape.size(), shape.data(), owner);
+    }
+};
+
+template <class T>
+Array<T> to_array(const std::vector<T>& values) {
+    NewArray<T> out({values.size()});
+    std::copy(values.begin(), values.end(), out.data);
+    return out.array;
+}
+
+inline Vec3 point(const Points& points, size_t i) {
+    return {points(i, 0), points(i, 1), points(i, 2)};
+}
+inline void put(double* out, size_t i, Vec3 v) {
+    out[3 * i] = v.x, out[3 * i + 1] = v.y, out[3 * i + 2] = v.z;
+}
+
+// Rows of two arrays that go together must be as many.
+void check_rows(size_t a, size_t b, const char* what);
+
+void bind_rays(nb::module_& m);
+void bind_photometry(nb::module_& m);
+void bind_model(nb::module_& m);
+void bind_render(nb::module_& m);
+
+}  // namespace rayset::python

@@ -1,0 +1,338 @@
+// Light-source models: build from a ray file, load, save, and the emitter interface
+// (lightmodel/emitter.h) over arrays: one query per row, rows spread over TBB's threads without
+// the GIL (each row's result depends on its inputs alone, so the split changes no value).
+#include "arrays.h"
+
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+#include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <limits>
+#include <memory>
+
+#include "core/error.h"
+#include "lightmodel/complex_source.h"
+#include "lightmodel/model_build.h"
+#include "lightmodel/model_file.h"
+
+namespace rayset::python {
+
+namespace {
+
+using lightmodel::ComplexSource;
+using lightmodel::LightModel;
+using lightmodel::ModelOptions;
+using lightmodel::SpectralSelect;
+
+template <class F>
+void each_row(size_t rows, const F& f) {
+    nb::gil_scoped_release release;
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rows, 256),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t i = r.begin(); i != r.end(); ++i) f(i);
+                      });
+}
+
+SpectralSelect select_of(const std::string& quantity, int band) {
+    SpectralSelect s;
+    if (quantity == "luminous")
+        s.quantity = SpectralSelect::luminous;
+    else if (quantity != "flux")
+        throw nb::value_error("quantity must be 'flux' (the model's flux unit) or 'luminous' (lm)");
+    s.band = band;
+    return s;
+}
+
+void put_rgb(double* out, size_t i, const Rgb& c) {
+    out[3 * i] = c.red, out[3 * i + 1] = c.green, out[3 * i + 2] = c.blue;
+}
+
+ModelOptions options_from(const nb::kwargs& kwargs) {
+    ModelOptions o;
+    for (auto [key, value] : kwargs) {
+        const std::string k = nb::cast<std::string>(key);
+        auto integer = [&] { return nb::cast<int>(value); };
+        if (k == "density_resolution")
+            o.density_resolution = integer();
+        else if (k == "max_density_resolution")
+            o.max_density_resolution = integer();
+        else if (k == "flux_resolution")
+            o.flux_resolution = integer();
+        else if (k == "intensity_resolution")
+            o.intensity_resolution = integer();
+        else if (k == "max_spheres_per_cell" || k == "max_spheres")
+            o.max_spheres_per_cell = integer();
+        else if (k == "samples_per_cell")
+            o.samples_per_cell = integer();
+        else if (k == "diagram_smoothing") {
+            const std::string s = nb::cast<std::string>(value);
+            if (s != "auto" && s != "none")
+                throw nb::value_error("diagram_smoothing must be 'auto' or 'none'");
+            o.smooth_diagrams = s == "auto";
+        } else if (k == "diagram_bands")
+            o.diagram_bands = integer();
+        else if (k == "diagram_sectors")
+            o.diagram_sectors = integer();
+        else if (k == "spectral_bin_nm")
+            o.spectral_bin_nm = nb::cast<double>(value);
+        else if (k == "coverage_lines")
+            o.coverage_lines = integer();
+        else if (k == "threads")
+            o.threads = integer();
+        else if (k == "seed")
+            o.seed = nb::cast<uint64_t>(value);
+        else if (k == "progress")
+            o.progress = nb::cast<bool>(value);
+        else
+            throw nb::type_error(fmt::format("Model.build: unknown option '{}'", k).c_str());
+    }
+    return o;
+}
+
+nb::dict options_dict(const ModelOptions& o) {
+    nb::dict d;
+    d["density_resolution"] = o.density_resolution;
+    d["max_density_resolution"] = o.max_density_resolution;
+    d["flux_resolution"] = o.flux_resolution;
+    d["intensity_resolution"] = o.intensity_resolution;
+    d["max_spheres_per_cell"] = o.max_spheres_per_cell;
+    d["samples_per_cell"] = o.samples_per_cell;
+    d["diagram_smoothing"] = o.smooth_diagrams ? "auto" : "none";
+    d["diagram_bands"] = o.diagram_bands;
+    d["diagram_sectors"] = o.diagram_sectors;
+    d["spectral_bin_nm"] = o.spectral_bin_nm;
+    d["coverage_lines"] = o.coverage_lines;
+    d["threads"] = o.threads;
+    d["seed"] = o.seed;
+    return d;
+}
+
+class Model {
+public:
+    explicit Model(LightModel model)
+        : model_(std::make_shared<const LightModel>(std::move(model))), source_(model_) {}
+
+    static Model build(const std::string& ray_path, const nb::kwargs& kwargs) {
+        const ModelOptions options = options_from(kwargs);
+        nb::gil_scoped_release release;
+        return Model(lightmodel::build_model(ray_path, options));
+    }
+    static Model load(const std::string& path) {
+        nb::gil_scoped_release release;
+        return Model(lightmodel::read_model(path));
+    }
+    void save(const std::string& path) const {
+        nb::gil_scoped_release release;
+        lightmodel::write_model(*model_, path);
+    }
+
+    double phi(const std::string& quantity, int band) const {
+        return source_.phi(select_of(quantity, band));
+    }
+    nb::tuple phi_colour() const {
+        const Rgb c = source_.phi_colour();
+        return nb::make_tuple(c.red, c.green, c.blue);
+    }
+    nb::tuple bounds() const {
+        const lightmodel::Box b = source_.bounds();
+        return nb::make_tuple(nb::make_tuple(b.lower.x, b.lower.y, b.lower.z),
+                              nb::make_tuple(b.upper.x, b.upper.y, b.upper.z));
+    }
+    nb::dict info() const {
+        const LightModel& m = *model_;
+        nb::dict d;
+        d["flux_unit"] = m.flux_unit;
+        d["total_flux"] = m.total_flux();
+        d["total_luminous"] = m.total_luminous();
+        d["flux_cells"] = m.flux_cells.size();
+        d["voxels"] = m.voxels.size();
+        d["diagrams"] = m.diagrams.size();
+        d["spheres"] = m.spheres.size();
+        d["options"] = options_dict(m.options);
+        nb::dict source;
+        source["path"] = m.source.path;
+        source["format"] = m.source.format;
+        source["rays"] = m.source.rays;
+        source["radiant"] = m.source.radiant;
+        source["luminous"] = m.source.luminous;
+        source["unit"] = m.source.unit;
+        d["source"] = source;
+        return d;
+    }
+    Array<float> spheres() const {
+        NewArray<float> out({model_->spheres.size(), 4});
+        for (size_t i = 0; i < model_->spheres.size(); ++i) {
+            const auto& s = model_->spheres[i];
+            float* row = out.data + 4 * i;
+            row[0] = s.x, row[1] = s.y, row[2] = s.z, row[3] = s.r;
+        }
+        return out.array;
+    }
+
+    nb::dict intersect(const Points& origin, const Points& direction, double tmax) const {
+        const size_t n = origin.shape(0);
+        check_rows(n, direction.shape(0), "direction");
+        NewArray<bool> hit({n});
+        NewArray<double> t({n}), point({n, 3}), normal({n, 3});
+        each_row(n, [&](size_t i) {
+            lightmodel::EmitterHit h;
+            hit.data[i] = source_.intersect(python::point(origin, i), python::point(direction, i),
+                                            tmax, h);
+            t.data[i] = hit.data[i] ? h.t : std::numeric_limits<double>::infinity();
+            put(point.data, i, h.point), put(normal.data, i, h.normal);
+        });
+        nb::dict d;
+        d["hit"] = hit.array, d["t"] = t.array, d["point"] = point.array;
+        d["normal"] = normal.array;
+        return d;
+    }
+
+    nb::dict L(const Points& origin, const Points& direction, double tmax,
+               const std::string& quantity, int band) const {
+        const SpectralSelect select = select_of(quantity, band);
+        const size_t n = origin.shape(0);
+        check_rows(n, direction.shape(0), "direction");
+        NewArray<double> radiance({n}), colour({n, 3});
+        NewArray<bool> hit({n});
+        each_row(n, [&](size_t i) {
+            const Vec3 o = python::point(origin, i), w = python::point(direction, i);
+            lightmodel::EmitterHit h;
+            hit.data[i] = source_.intersect(o, w, tmax, h);
+            if (!hit.data[i]) return;
+            radiance.data[i] = source_.L(o, w, h, select);
+            put_rgb(colour.data, i, source_.L_colour(o, w, h));
+        });
+        nb::dict d;
+        d["L"] = radiance.array, d["colour"] = colour.array, d["hit"] = hit.array;
+        return d;
+    }
+
+    nb::dict sample_Li(const Points& ref, const Randoms& u, const std::string& quantity,
+                       int band) const {
+        const SpectralSelect select = select_of(quantity, band);
+        const size_t n = ref.shape(0);
+        check_rows(n, u.shape(0), "u");
+        if (u.shape(1) != 5) throw nb::value_error("u must have 5 columns (cell, voxel, point)");
+        NewArray<bool> valid({n});
+        NewArray<double> wi({n, 3}), distance({n}), Li({n}), pdf({n}), colour({n, 3});
+        each_row(n, [&](size_t i) {
+            const double* r = u.data() + 5 * i;
+            const auto s = source_.sample_Li(python::point(ref, i), r[0], r[1], {r[2], r[3], r[4]},
+                                             select);
+            valid.data[i] = bool(s);
+            if (!s) return;
+            put(wi.data, i, s->wi);
+            distance.data[i] = s->distance, Li.data[i] = s->Li, pdf.data[i] = s->pdf;
+            put_rgb(colour.data, i, s->Li_colour);
+        });
+        nb::dict d;
+        d["valid"] = valid.array, d["wi"] = wi.array, d["distance"] = distance.array;
+        d["Li"] = Li.array, d["pdf"] = pdf.array, d["colour"] = colour.array;
+        return d;
+    }
+
+    Array<double> pdf_Li(const Points& ref, const Points& wi) const {
+        const size_t n = ref.shape(0);
+        check_rows(n, wi.shape(0), "wi");
+        NewArray<double> pdf({n});
+        each_row(n, [&](size_t i) {
+            pdf.data[i] = source_.pdf_Li(python::point(ref, i), python::point(wi, i));
+        });
+        return pdf.array;
+    }
+
+    nb::dict sample_Le(const Randoms& u, const std::string& quantity, int band) const {
+        const SpectralSelect select = select_of(quantity, band);
+        const size_t n = u.shape(0);
+        if (u.shape(1) != 7) throw nb::value_error("u must have 7 columns");
+        NewArray<double> origin({n, 3}), direction({n, 3}), flux({n}), pdf_position({n}),
+            pdf_direction({n}), colour({n, 3});
+        NewArray<int32_t> cell({n});
+        each_row(n, [&](size_t i) {
+            const auto s = source_.sample_Le(u.data() + 7 * i, select);
+            put(origin.data, i, s.origin), put(direction.data, i, s.direction);
+            flux.data[i] = s.flux, pdf_position.data[i] = s.pdf_position;
+            pdf_direction.data[i] = s.pdf_direction, cell.data[i] = s.cell;
+            put_rgb(colour.data, i, s.flux_colour);
+        });
+        nb::dict d;
+        d["origin"] = origin.array, d["direction"] = direction.array, d["flux"] = flux.array;
+        d["pdf_position"] = pdf_position.array, d["pdf_direction"] = pdf_direction.array;
+        d["cell"] = cell.array, d["colour"] = colour.array;
+        return d;
+    }
+
+    nb::tuple pdf_Le(const Points& origin, const Points& direction) const {
+        const size_t n = origin.shape(0);
+        check_rows(n, direction.shape(0), "direction");
+        NewArray<double> position({n}), dir({n});
+        each_row(n, [&](size_t i) {
+            source_.pdf_Le(python::point(origin, i), python::point(direction, i),
+                           position.data[i], dir.data[i]);
+        });
+        return nb::make_tuple(position.array, dir.array);
+    }
+
+    Array<double> intensity(const Points& direction, const std::string& quantity,
+                            int band) const {
+        const SpectralSelect select = select_of(quantity, band);
+        const size_t n = direction.shape(0);
+        NewArray<double> out({n});
+        each_row(n, [&](size_t i) {
+            out.data[i] = source_.intensity(python::point(direction, i), select);
+        });
+        return out.array;
+    }
+
+private:
+    std::shared_ptr<const LightModel> model_;
+    ComplexSource source_;
+};
+
+}  // namespace
+
+void bind_model(nb::module_& m) {
+    const double inf = std::numeric_limits<double>::infinity();
+    nb::class_<Model>(m, "Model",
+                      "The paper's light-source model behind the emitter interface "
+                      "(lightmodel/emitter.h). Lengths mm; radiance in the selected quantity per "
+                      "(mm^2 sr).")
+        .def_static("build", &Model::build, nb::arg("ray_path"), nb::arg("options"),
+                    "Builds the model of a ray file (raymodel build's options as keywords).")
+        .def_static("load", &Model::load, nb::arg("path"), "Reads a model file (.vdb).")
+        .def("save", &Model::save, nb::arg("path"), "Writes the model as one .vdb file.")
+        .def("phi", &Model::phi, nb::arg("quantity") = "flux", nb::arg("band") = -1,
+             "Total flux: 'flux' in the model's flux unit, or 'luminous' (lm); band >= 0 "
+             "selects one spectral bin.")
+        .def("phi_colour", &Model::phi_colour, "The whole flux as a linear-sRGB colour.")
+        .def_prop_ro("bounds", &Model::bounds, "Box of the body, mm: (lower, upper).")
+        .def("info", &Model::info, "Flux unit, totals, sizes, build options and source file.")
+        .def("spheres", &Model::spheres, "The body's spheres: rows x, y, z, radius (mm).")
+        .def("intersect", &Model::intersect, nb::arg("origin"), nb::arg("direction"),
+             nb::arg("tmax") = inf,
+             "Where rays meet the body: hit, t, point, normal (arrays; rows of N x 3).")
+        .def("L", &Model::L, nb::arg("origin"), nb::arg("direction"), nb::arg("tmax") = inf,
+             nb::arg("quantity") = "flux", nb::arg("band") = -1,
+             "Radiance arriving at each origin along its direction from the body it meets: "
+             "L, colour (linear sRGB), hit; 0 where the ray misses the body.")
+        .def("sample_Li", &Model::sample_Li, nb::arg("ref"), nb::arg("u"),
+             nb::arg("quantity") = "flux", nb::arg("band") = -1,
+             "Light sampling from points ref (N x 3) with uniform numbers u (N x 5: cell, "
+             "voxel, point x 3): valid, wi, distance, Li, pdf (sr^-1), colour.")
+        .def("pdf_Li", &Model::pdf_Li, nb::arg("ref"), nb::arg("wi"),
+             "Solid-angle density of sample_Li drawing wi from ref.")
+        .def("sample_Le", &Model::sample_Le, nb::arg("u"), nb::arg("quantity") = "flux",
+             nb::arg("band") = -1,
+             "Photon emission from uniform numbers u (N x 7): origin, direction, flux, "
+             "pdf_position (mm^-3), pdf_direction (sr^-1), cell, colour.")
+        .def("pdf_Le", &Model::pdf_Le, nb::arg("origin"), nb::arg("direction"),
+             "Densities of sample_Le emitting from origin along direction: (pdf_position, "
+             "pdf_direction).")
+        .def("intensity", &Model::intensity, nb::arg("direction"), nb::arg("quantity") = "flux",
+             nb::arg("band") = -1, "Far-field intensity toward each direction, flux per sr.");
+}
+
+}  // namespace rayset::python
