@@ -14,16 +14,31 @@ packages=(
   # POV-Ray 3.7: the reference renderer of the framing and differential tests, its include
   # folder (on raytrace's default include path) and its sample scenes (scripts/pov_compat.sh)
   povray povray-includes povray-examples
+  # Python's headers and venv for the Python module (python/) when python3 is Debian's
+  python3-dev python3-venv
 )
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "Installing: ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
 
-echo "Installing: ${missing[*]}"
-sudo=""
-[ "$(id -u)" -eq 0 ] || sudo="sudo"
-$sudo apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# The Python module's build (nanobind, scikit-build-core) and tests (numpy, pytest, OpenEXR to
+# read raytrace's images), from PyPI into a virtual environment in the build folder: pip
+# installing into the system's Python would shadow Debian's python3-* packages (Debian 12 refuses
+# it without --break-system-packages), and removing the build folder removes it with the rest.
+# CMake builds the module for this environment's Python (-DPython_EXECUTABLE, scripts/test.sh).
+venv="${RAYSET_VENV:-$(cd "$(dirname "$0")/.." && pwd)/build/venv}"
+python_packages=("nanobind>=2.4" "scikit-build-core>=0.10" "numpy>=1.21" "pytest>=7" "OpenEXR>=3.2")
+[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
+if ! "$venv/bin/python" -c "import nanobind, scikit_build_core, numpy, pytest, OpenEXR" 2>/dev/null; then
+  echo "Installing into $venv: ${python_packages[*]}"
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check "${python_packages[@]}"
+fi

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds everything and runs every test, then builds the converters and the scene language (the
+# Builds everything and runs every test (the Python module's with pytest), then builds the converters and the scene language (the
 # parsers of untrusted files) with AddressSanitizer and UndefinedBehaviorSanitizer and runs their
 # tests again, and last fuzzes their readers for a little while (scripts/fuzz.sh).
 # Usage: scripts/test.sh        (installs missing Debian packages first)
@@ -8,10 +8,17 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 
 jobs=$(nproc)
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+# The Python module (python/) is built for the virtual environment install-deps.sh made.
+python="$PWD/build/venv/bin/python"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE="$python"
 cmake --build build -j "$jobs"
 # VTK tests need an X server: xvfb-run gives them one on machines without a display.
 xvfb-run -a ctest --test-dir build --output-on-failure -j "$jobs"
+
+# The Python module installed as users install it (pip install .): scikit-build-core builds in
+# the same folder (pyproject.toml), where the module is already compiled, so pip only packs it.
+"$python" -m pip install -q --disable-pip-version-check --no-build-isolation --no-deps .
+"$python" -m pytest -q python/tests
 
 # -O1 -g1: half the compile time of RelWithDebInfo's -O2 -g under the sanitizers, and reports
 # still name the function and line.
