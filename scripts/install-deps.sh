@@ -38,7 +38,8 @@ fi
 venv="${RAYSET_VENV:-$(cd "$(dirname "$0")/.." && pwd)/build/venv}"
 python_packages=("nanobind>=2.4" "scikit-build-core>=0.10" "numpy>=1.21" "pytest>=7" "OpenEXR>=3.2")
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
-if ! "$venv/bin/python" -c "import nanobind, scikit_build_core, numpy, pytest, OpenEXR" 2>/dev/null; then
+imports="import nanobind, scikit_build_core, numpy, pytest, OpenEXR"
+if ! "$venv/bin/python" -c "$imports" 2> /dev/null; then
   echo "Installing into $venv: ${python_packages[*]}"
   "$venv/bin/python" -m pip install -q --disable-pip-version-check "${python_packages[@]}"
 fi

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds everything and runs every test (the Python module's with pytest), then builds the converters and the scene language (the
-# parsers of untrusted files) with AddressSanitizer and UndefinedBehaviorSanitizer and runs their
-# tests again, and last fuzzes their readers for a little while (scripts/fuzz.sh).
+# Builds everything and runs every test (the Python module's with pytest), then builds the
+# converters and the scene language (the parsers of untrusted files) with AddressSanitizer and
+# UndefinedBehaviorSanitizer and runs their tests again, and last fuzzes their readers for a
+# little while (scripts/fuzz.sh).
 # Usage: scripts/test.sh        (installs missing Debian packages first)
 set -euo pipefail
 cd "$(dirname "$0")/.."

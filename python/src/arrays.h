@@ -30,11 +30,14 @@ struct NewArray {
     T* data = nullptr;
     Array<T> array;
 
-    explicit NewArray(std::initializer_list<size_t> shape) : NewArray(std::vector<size_t>(shape)) {}
-    explicit NewArray(const std::vector<size_t>& shape) {
+    // zeroed = false leaves the values undefined, for arrays the caller fills whole: zeroing
+    // 400 MB of rays first would cost a pass over memory of its own.
+    explicit NewArray(std::initializer_list<size_t> shape, bool zeroed = true)
+        : NewArray(std::vector<size_t>(shape), zeroed) {}
+    explicit NewArray(const std::vector<size_t>& shape, bool zeroed = true) {
         size_t count = 1;
         for (size_t n : shape) count *= n;
-        data = new T[count > 0 ? count : 1]();
+        data = zeroed ? new T[count > 0 ? count : 1]() : new T[count > 0 ? count : 1];
         nb::capsule owner(data, [](void* p) noexcept { delete[] static_cast<T*>(p); });
         array = Array<T>(data, shape.size(), shape.data(), owner);
     }

@@ -179,8 +179,8 @@ public:
         NewArray<double> t({n}), point({n, 3}), normal({n, 3});
         each_row(n, [&](size_t i) {
             lightmodel::EmitterHit h;
-            hit.data[i] = source_.intersect(python::point(origin, i), python::point(direction, i),
-                                            tmax, h);
+            hit.data[i] =
+                source_.intersect(python::point(origin, i), python::point(direction, i), tmax, h);
             t.data[i] = hit.data[i] ? h.t : std::numeric_limits<double>::infinity();
             put(point.data, i, h.point), put(normal.data, i, h.normal);
         });
@@ -220,8 +220,8 @@ public:
         NewArray<double> wi({n, 3}), distance({n}), Li({n}), pdf({n}), colour({n, 3});
         each_row(n, [&](size_t i) {
             const double* r = u.data() + 5 * i;
-            const auto s = source_.sample_Li(python::point(ref, i), r[0], r[1], {r[2], r[3], r[4]},
-                                             select);
+            const auto s =
+                source_.sample_Li(python::point(ref, i), r[0], r[1], {r[2], r[3], r[4]}, select);
             valid.data[i] = bool(s);
             if (!s) return;
             put(wi.data, i, s->wi);
@@ -270,14 +270,13 @@ public:
         check_rows(n, direction.shape(0), "direction");
         NewArray<double> position({n}), dir({n});
         each_row(n, [&](size_t i) {
-            source_.pdf_Le(python::point(origin, i), python::point(direction, i),
-                           position.data[i], dir.data[i]);
+            source_.pdf_Le(python::point(origin, i), python::point(direction, i), position.data[i],
+                           dir.data[i]);
         });
         return nb::make_tuple(position.array, dir.array);
     }
 
-    Array<double> intensity(const Points& direction, const std::string& quantity,
-                            int band) const {
+    Array<double> intensity(const Points& direction, const std::string& quantity, int band) const {
         const SpectralSelect select = select_of(quantity, band);
         const size_t n = direction.shape(0);
         NewArray<double> out({n});

@@ -105,8 +105,9 @@ void bind_photometry(nb::module_& m) {
             [](Photometry& p, const std::string& t) {
                 if (t != "A" && t != "B" && t != "C")
                     throw nb::value_error("type must be 'A', 'B' or 'C'");
-                p.type = t == "A" ? PhotometricType::A
-                                  : t == "B" ? PhotometricType::B : PhotometricType::C;
+                p.type = t == "A"   ? PhotometricType::A
+                         : t == "B" ? PhotometricType::B
+                                    : PhotometricType::C;
             },
             "Photometric type: 'C' (gamma from nadir, C planes), 'B' or 'A'.")
         .def_prop_rw(
@@ -167,7 +168,7 @@ void bind_photometry(nb::module_& m) {
         "detect_photometry_format",
         [](const std::string& path) {
             return std::string(detect_photometry_format(path) == PhotometryFormat::ies ? "ies"
-                                                                                        : "ldt");
+                                                                                       : "ldt");
         },
         nb::arg("path"), "'ies' or 'ldt', from the file's content.");
 

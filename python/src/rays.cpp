@@ -25,8 +25,8 @@ namespace {
 
 const char* const kSpectralKinds[] = {"none", "single_wavelength", "per_ray_wavelength",
                                       "shared_table", "per_ray_table"};
-const char* const kExtraKinds[] = {"stokes_s1", "stokes_s2",     "stokes_s3",
-                                   "ellipse_x", "ellipse_y",     "ellipse_z",
+const char* const kExtraKinds[] = {"stokes_s1",     "stokes_s2",     "stokes_s3",
+                                   "ellipse_x",     "ellipse_y",     "ellipse_z",
                                    "tristimulus_x", "tristimulus_z", "additional"};
 const LengthUnit kUnits[] = {LengthUnit::mm, LengthUnit::cm, LengthUnit::m, LengthUnit::inch,
                              LengthUnit::ft, LengthUnit::um, LengthUnit::nm};
@@ -48,9 +48,8 @@ RayFormat format_named(const std::string& name) {
                               .c_str());
 }
 
-RayReadOptions read_options(const std::optional<std::string>& format,
-                            const std::string& trust, bool normalise, double tolerance,
-                            size_t chunk_size) {
+RayReadOptions read_options(const std::optional<std::string>& format, const std::string& trust,
+                            bool normalise, double tolerance, size_t chunk_size) {
     RayReadOptions o;
     if (format) o.format = format_named(*format);
     if (trust == "header")
@@ -152,7 +151,8 @@ RayHeader header_from(const nb::dict& d) {
     if (has("extras"))
         for (nb::handle extra : nb::cast<nb::list>(d["extras"])) {
             nb::object pair = nb::borrow(extra);
-            if (nb::len(pair) != 2) throw nb::value_error("an extra column is a pair (kind, label)");
+            if (nb::len(pair) != 2)
+                throw nb::value_error("an extra column is a pair (kind, label)");
             h.extras.push_back(
                 {ExtraKind(index_of(kExtraKinds, nb::cast<std::string>(pair[0]), "extra kind")),
                  nb::cast<std::string>(pair[1])});
@@ -197,14 +197,15 @@ struct RayArrays {
     NewArray<int32_t> spectrum;
     size_t extras;
 
+    // Every row is filled (read_rays checks the count), so the memory is not zeroed first.
     RayArrays(size_t rows, size_t extras)
-        : origin({rows, 3}),
-          direction({rows, 3}),
-          radiant({rows}),
-          luminous({rows}),
-          wavelength({rows}),
-          extra({rows, extras}),
-          spectrum({rows}),
+        : origin({rows, 3}, false),
+          direction({rows, 3}, false),
+          radiant({rows}, false),
+          luminous({rows}, false),
+          wavelength({rows}, false),
+          extra({rows, extras}, false),
+          spectrum({rows}, false),
           extras(extras) {}
 
     // Rays columns[0, n) at row `at`.
@@ -441,8 +442,8 @@ void bind_rays(nb::module_& m) {
         .def_prop_ro("path", &RayFile::path, "The file's path.");
 
     nb::class_<RayWriter>(m, "RayWriter", "A ray file written in chunks.")
-        .def(nb::init<const std::string&, const std::string&, const nb::dict&>(),
-             nb::arg("path"), nb::arg("format"), nb::arg("header"),
+        .def(nb::init<const std::string&, const std::string&, const nb::dict&>(), nb::arg("path"),
+             nb::arg("format"), nb::arg("header"),
              "Starts a file of `format` whose rays `header` describes.")
         .def("write", &RayWriter::write, nb::arg("origin"), nb::arg("direction"),
              nb::arg("radiant"), nb::arg("luminous"), nb::arg("wavelength"), nb::arg("spectrum"),

@@ -69,8 +69,8 @@ nb::dict render_scene(const std::string& scene_path, int width, int height, int 
                       const std::vector<std::string>& include_paths,
                       const std::map<std::string, double>& declarations,
                       std::optional<double> clock, const std::vector<std::string>& allow_write,
-                      int photons_per_pass, double photon_radius, bool naive_sources,
-                      bool spectral, bool progress) {
+                      int photons_per_pass, double photon_radius, bool naive_sources, bool spectral,
+                      bool progress) {
     if (width <= 0 || height <= 0) throw nb::value_error("width and height must be positive");
     ParseOptions parse;
     parse.include_paths = include_paths;
@@ -151,11 +151,10 @@ void bind_render(nb::module_& m) {
           nb::arg("height") = 240, nb::arg("passes") = 0, nb::arg("time_limit") = nb::none(),
           nb::arg("seed") = 0, nb::arg("threads") = 0,
           nb::arg("include_paths") = std::vector<std::string>(),
-          nb::arg("declarations") = std::map<std::string, double>(),
-          nb::arg("clock") = nb::none(), nb::arg("allow_write") = std::vector<std::string>(),
-          nb::arg("photons_per_pass") = 0, nb::arg("photon_radius") = 0.0,
-          nb::arg("naive_sources") = false, nb::arg("spectral") = false,
-          nb::arg("progress") = false,
+          nb::arg("declarations") = std::map<std::string, double>(), nb::arg("clock") = nb::none(),
+          nb::arg("allow_write") = std::vector<std::string>(), nb::arg("photons_per_pass") = 0,
+          nb::arg("photon_radius") = 0.0, nb::arg("naive_sources") = false,
+          nb::arg("spectral") = false, nb::arg("progress") = false,
           "Renders a scene file as raytrace does: rgb (H x W x 3 radiance, W/(m^2 sr)), Y "
           "(luminance, cd/m^2) and Y_stderr as float32, the values of raytrace's OpenEXR; "
           "receivers and layers by name; passes, seconds, rays.");

@@ -42,7 +42,11 @@ rounds=${ROUNDS:-5}
 ratios=()
 printf "%-6s %12s %12s %12s %12s %8s\n" round "C++ s" "C++ Mrays/s" "Python s" "Py Mrays/s" ratio
 for round in $(seq "$rounds"); do
-  if [ $((round % 2)) -eq 1 ]; then c=$(cpp_seconds); p=$(py_seconds); else p=$(py_seconds); c=$(cpp_seconds); fi
+  if [ $((round % 2)) -eq 1 ]; then
+    c=$(cpp_seconds); p=$(py_seconds)
+  else
+    p=$(py_seconds); c=$(cpp_seconds)
+  fi
   ratio=$(awk -v c="$c" -v p="$p" 'BEGIN{printf "%.3f", c / p}')
   ratios+=("$ratio")
   awk -v r="$round" -v c="$c" -v p="$p" -v n="$rays" -v q="$ratio" \
