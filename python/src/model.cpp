@@ -112,8 +112,10 @@ nb::dict options_dict(const ModelOptions& o) {
 
 class Model {
 public:
+    // The source (with its Embree scene) stays where it was made: a Model moves as a pointer.
     explicit Model(LightModel model)
-        : model_(std::make_shared<const LightModel>(std::move(model))), source_(model_) {}
+        : model_(std::make_shared<const LightModel>(std::move(model))),
+          source_(std::make_shared<const ComplexSource>(model_)) {}
 
     static Model build(const std::string& ray_path, const nb::kwargs& kwargs) {
         const ModelOptions options = options_from(kwargs);
@@ -130,14 +132,14 @@ public:
     }
 
     double phi(const std::string& quantity, int band) const {
-        return source_.phi(select_of(quantity, band));
+        return source_->phi(select_of(quantity, band));
     }
     nb::tuple phi_colour() const {
-        const Rgb c = source_.phi_colour();
+        const Rgb c = source_->phi_colour();
         return nb::make_tuple(c.red, c.green, c.blue);
     }
     nb::tuple bounds() const {
-        const lightmodel::Box b = source_.bounds();
+        const lightmodel::Box b = source_->bounds();
         return nb::make_tuple(nb::make_tuple(b.lower.x, b.lower.y, b.lower.z),
                               nb::make_tuple(b.upper.x, b.upper.y, b.upper.z));
     }
@@ -180,7 +182,7 @@ public:
         each_row(n, [&](size_t i) {
             lightmodel::EmitterHit h;
             hit.data[i] =
-                source_.intersect(python::point(origin, i), python::point(direction, i), tmax, h);
+                source_->intersect(python::point(origin, i), python::point(direction, i), tmax, h);
             t.data[i] = hit.data[i] ? h.t : std::numeric_limits<double>::infinity();
             put(point.data, i, h.point), put(normal.data, i, h.normal);
         });
@@ -200,10 +202,10 @@ public:
         each_row(n, [&](size_t i) {
             const Vec3 o = python::point(origin, i), w = python::point(direction, i);
             lightmodel::EmitterHit h;
-            hit.data[i] = source_.intersect(o, w, tmax, h);
+            hit.data[i] = source_->intersect(o, w, tmax, h);
             if (!hit.data[i]) return;
-            radiance.data[i] = source_.L(o, w, h, select);
-            put_rgb(colour.data, i, source_.L_colour(o, w, h));
+            radiance.data[i] = source_->L(o, w, h, select);
+            put_rgb(colour.data, i, source_->L_colour(o, w, h));
         });
         nb::dict d;
         d["L"] = radiance.array, d["colour"] = colour.array, d["hit"] = hit.array;
@@ -221,7 +223,7 @@ public:
         each_row(n, [&](size_t i) {
             const double* r = u.data() + 5 * i;
             const auto s =
-                source_.sample_Li(python::point(ref, i), r[0], r[1], {r[2], r[3], r[4]}, select);
+                source_->sample_Li(python::point(ref, i), r[0], r[1], {r[2], r[3], r[4]}, select);
             valid.data[i] = bool(s);
             if (!s) return;
             put(wi.data, i, s->wi);
@@ -239,7 +241,7 @@ public:
         check_rows(n, wi.shape(0), "wi");
         NewArray<double> pdf({n});
         each_row(n, [&](size_t i) {
-            pdf.data[i] = source_.pdf_Li(python::point(ref, i), python::point(wi, i));
+            pdf.data[i] = source_->pdf_Li(python::point(ref, i), python::point(wi, i));
         });
         return pdf.array;
     }
@@ -252,7 +254,7 @@ public:
             pdf_direction({n}), colour({n, 3});
         NewArray<int32_t> cell({n});
         each_row(n, [&](size_t i) {
-            const auto s = source_.sample_Le(u.data() + 7 * i, select);
+            const auto s = source_->sample_Le(u.data() + 7 * i, select);
             put(origin.data, i, s.origin), put(direction.data, i, s.direction);
             flux.data[i] = s.flux, pdf_position.data[i] = s.pdf_position;
             pdf_direction.data[i] = s.pdf_direction, cell.data[i] = s.cell;
@@ -270,8 +272,8 @@ public:
         check_rows(n, direction.shape(0), "direction");
         NewArray<double> position({n}), dir({n});
         each_row(n, [&](size_t i) {
-            source_.pdf_Le(python::point(origin, i), python::point(direction, i), position.data[i],
-                           dir.data[i]);
+            source_->pdf_Le(python::point(origin, i), python::point(direction, i), position.data[i],
+                            dir.data[i]);
         });
         return nb::make_tuple(position.array, dir.array);
     }
@@ -281,14 +283,14 @@ public:
         const size_t n = direction.shape(0);
         NewArray<double> out({n});
         each_row(n, [&](size_t i) {
-            out.data[i] = source_.intensity(python::point(direction, i), select);
+            out.data[i] = source_->intensity(python::point(direction, i), select);
         });
         return out.array;
     }
 
 private:
     std::shared_ptr<const LightModel> model_;
-    ComplexSource source_;
+    std::shared_ptr<const ComplexSource> source_;
 };
 
 }  // namespace
