@@ -6,6 +6,7 @@
 #include <nanobind/ndarray.h>
 
 #include <cstddef>
+#include <filesystem>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -15,6 +16,9 @@
 namespace rayset::python {
 
 namespace nb = nanobind;
+
+// Paths: nanobind takes str and os.PathLike (pathlib) for these.
+using Path = std::filesystem::path;
 
 template <class T>
 using Array = nb::ndarray<nb::numpy, T>;

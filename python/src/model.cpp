@@ -3,6 +3,7 @@
 // the GIL (each row's result depends on its inputs alone, so the split changes no value).
 #include "arrays.h"
 
+#include <nanobind/stl/filesystem.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
@@ -117,18 +118,18 @@ public:
         : model_(std::make_shared<const LightModel>(std::move(model))),
           source_(std::make_shared<const ComplexSource>(model_)) {}
 
-    static Model build(const std::string& ray_path, const nb::kwargs& kwargs) {
+    static Model build(const Path& ray_path, const nb::kwargs& kwargs) {
         const ModelOptions options = options_from(kwargs);
         nb::gil_scoped_release release;
-        return Model(lightmodel::build_model(ray_path, options));
+        return Model(lightmodel::build_model(ray_path.string(), options));
     }
-    static Model load(const std::string& path) {
+    static Model load(const Path& path) {
         nb::gil_scoped_release release;
-        return Model(lightmodel::read_model(path));
+        return Model(lightmodel::read_model(path.string()));
     }
-    void save(const std::string& path) const {
+    void save(const Path& path) const {
         nb::gil_scoped_release release;
-        lightmodel::write_model(*model_, path);
+        lightmodel::write_model(*model_, path.string());
     }
 
     double phi(const std::string& quantity, int band) const {

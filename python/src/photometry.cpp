@@ -2,6 +2,7 @@
 // tables, and the far field of a ray file by the function `rayconv farfield` uses.
 #include "arrays.h"
 
+#include <nanobind/stl/filesystem.h>
 #include <nanobind/stl/map.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
@@ -65,10 +66,10 @@ const char* type_name(PhotometricType t) {
     return t == PhotometricType::A ? "A" : t == PhotometricType::B ? "B" : "C";
 }
 
-FarField far_field_of(const std::string& path, double c_step, double gamma_step,
-                      const std::string& axis, bool radiometric, const std::string& smoothing,
-                      bool round, const std::optional<std::string>& format,
-                      const std::string& trust, bool normalise) {
+FarField far_field_of(const Path& path, double c_step, double gamma_step, const std::string& axis,
+                      bool radiometric, const std::string& smoothing, bool round,
+                      const std::optional<std::string>& format, const std::string& trust,
+                      bool normalise) {
     FarFieldOptions o;
     o.c_step_deg = c_step, o.gamma_step_deg = gamma_step;
     if (axis != "+z" && axis != "-z") throw nb::value_error("axis must be '+z' or '-z'");
@@ -85,7 +86,7 @@ FarField far_field_of(const std::string& path, double c_step, double gamma_step,
     if (trust == "rays") r.flux_policy = FluxPolicy::rays;
     r.normalise_directions = normalise;
     nb::gil_scoped_release release;
-    auto reader = open_rays(path, r);
+    auto reader = open_rays(path.string(), r);
     FarField far = far_field(*reader, o);
     if (round) round_to_uncertainty(far);
     return far;
@@ -149,26 +150,26 @@ void bind_photometry(nb::module_& m) {
 
     m.def(
         "read_photometry",
-        [](const std::string& path) {
+        [](const Path& path) {
             nb::gil_scoped_release release;
-            return read_photometry(path);
+            return read_photometry(path.string());
         },
         nb::arg("path"), "Reads an IES LM-63 or EULUMDAT file (told apart by content).");
     m.def(
         "write_photometry",
-        [](const std::string& path, const Photometry& p, const std::optional<std::string>& f) {
-            const PhotometryFormat format = photometry_format(path, f);
+        [](const Path& path, const Photometry& p, const std::optional<std::string>& f) {
+            const PhotometryFormat format = photometry_format(path.string(), f);
             nb::gil_scoped_release release;
-            write_photometry(path, p, format);
+            write_photometry(path.string(), p, format);
         },
         nb::arg("path"), nb::arg("photometry"), nb::arg("format") = nb::none(),
         "Writes IES LM-63 ('ies') or EULUMDAT ('ldt'); the format follows the name's extension "
         "unless given.");
     m.def(
         "detect_photometry_format",
-        [](const std::string& path) {
-            return std::string(detect_photometry_format(path) == PhotometryFormat::ies ? "ies"
-                                                                                       : "ldt");
+        [](const Path& path) {
+            return std::string(
+                detect_photometry_format(path.string()) == PhotometryFormat::ies ? "ies" : "ldt");
         },
         nb::arg("path"), "'ies' or 'ldt', from the file's content.");
 

@@ -4,6 +4,7 @@
 // these a class of their own (Rays) and its header a dict.
 #include "arrays.h"
 
+#include <nanobind/stl/filesystem.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
@@ -248,9 +249,10 @@ struct RayArrays {
     }
 };
 
-nb::dict read_rays(const std::string& path, const std::optional<std::string>& format,
+nb::dict read_rays(const Path& file, const std::optional<std::string>& format,
                    const std::string& trust, bool normalise, double tolerance) {
     const RayReadOptions options = read_options(format, trust, normalise, tolerance, 1 << 12);
+    const std::string path = file.string();
     std::unique_ptr<RayReader> reader;
     {
         nb::gil_scoped_release release;
@@ -285,11 +287,11 @@ nb::dict read_rays(const std::string& path, const std::optional<std::string>& fo
 // A file read in chunks of any size, in file order, in constant memory.
 class RayFile {
 public:
-    RayFile(const std::string& path, const std::optional<std::string>& format,
-            const std::string& trust, bool normalise, double tolerance) {
+    RayFile(const Path& path, const std::optional<std::string>& format, const std::string& trust,
+            bool normalise, double tolerance) {
         const RayReadOptions o = read_options(format, trust, normalise, tolerance, 1 << 14);
         nb::gil_scoped_release release;
-        reader_ = open_rays(path, o);
+        reader_ = open_rays(path.string(), o);
     }
 
     // The next up to `count` rays, or None after the last.
@@ -343,12 +345,12 @@ using F32Table = nb::ndarray<const float, nb::ndim<2>, nb::c_contig, nb::device:
 // A file written in chunks; nothing is left at the path unless finish() completes.
 class RayWriter {
 public:
-    RayWriter(const std::string& path, const std::string& format, const nb::dict& header)
+    RayWriter(const Path& path, const std::string& format, const nb::dict& header)
         : header_(header_from(header)) {
         const RayFormat f = format_named(format);
         header_.format = f;
         nb::gil_scoped_release release;
-        encoder_ = create_rays(path, f, header_);
+        encoder_ = create_rays(path.string(), f, header_);
     }
 
     void write(const F32Rows& origin, const F32Rows& direction, const F32& radiant,
@@ -422,12 +424,12 @@ void bind_rays(nb::module_& m) {
           "warnings. Parts of the file are read on all cores.");
     m.def(
         "detect_ray_format",
-        [](const std::string& path) { return std::string(to_string(detect_ray_format(path))); },
+        [](const Path& path) { return std::string(to_string(detect_ray_format(path.string()))); },
         nb::arg("path"), "The format of a ray file, from its content.");
 
     nb::class_<RayFile>(m, "RayFile", "A ray file read in chunks, in file order.")
-        .def(nb::init<const std::string&, const std::optional<std::string>&, const std::string&,
-                      bool, double>(),
+        .def(nb::init<const Path&, const std::optional<std::string>&, const std::string&, bool,
+                      double>(),
              nb::arg("path"), nb::arg("format") = nb::none(), nb::arg("trust") = "",
              nb::arg("normalise") = false, nb::arg("direction_tolerance") = 1e-3,
              "Opens and checks the file's structure; rays are read by read().")
@@ -442,7 +444,7 @@ void bind_rays(nb::module_& m) {
         .def_prop_ro("path", &RayFile::path, "The file's path.");
 
     nb::class_<RayWriter>(m, "RayWriter", "A ray file written in chunks.")
-        .def(nb::init<const std::string&, const std::string&, const nb::dict&>(), nb::arg("path"),
+        .def(nb::init<const Path&, const std::string&, const nb::dict&>(), nb::arg("path"),
              nb::arg("format"), nb::arg("header"),
              "Starts a file of `format` whose rays `header` describes.")
         .def("write", &RayWriter::write, nb::arg("origin"), nb::arg("direction"),

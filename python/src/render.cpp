@@ -3,6 +3,7 @@
 // OpenEXR holds them (float32 R, G, B radiance and Y luminance), and its receivers and layers.
 #include "arrays.h"
 
+#include <nanobind/stl/filesystem.h>
 #include <nanobind/stl/map.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
@@ -64,7 +65,7 @@ nb::dict receivers_dict(const std::vector<ReceiverMap>& receivers) {
     return d;
 }
 
-nb::dict render_scene(const std::string& scene_path, int width, int height, int passes,
+nb::dict render_scene(const Path& scene_path, int width, int height, int passes,
                       std::optional<double> time_limit, uint64_t seed, int threads,
                       const std::vector<std::string>& include_paths,
                       const std::map<std::string, double>& declarations,
@@ -90,7 +91,7 @@ nb::dict render_scene(const std::string& scene_path, int width, int height, int 
     RenderResult result;
     {
         nb::gil_scoped_release release;
-        const SceneDescription description = parse_scene_file(scene_path, parse);
+        const SceneDescription description = parse_scene_file(scene_path.string(), parse);
         const RenderScene scene(description);
         for (const std::string& note : scene.notes())
             std::fprintf(stderr, "rayset.render: note: %s\n", note.c_str());

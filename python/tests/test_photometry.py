@@ -50,8 +50,8 @@ def test_read_and_write_ies_and_ldt(disk, tmp_path):
     p = rayset.read_photometry(ies)
     assert rayset.detect_photometry_format(ies) == "ies"
     assert p.candela.shape == (len(p.horizontal_deg), len(p.vertical_deg))
-    assert p.max_candela() == pytest.approx(truth["max_candela"], rel=1e-9)
-    assert p.total_flux() == pytest.approx(truth["lumens"], rel=1e-9)
+    assert p.max_candela() == pytest.approx(truth["max_intensity_cd"], rel=1e-9)
+    assert p.total_flux() == pytest.approx(truth["total_flux_lm"], rel=1e-9)
     # Intensity at grid angles is the table; between them, bilinear.
     h, v = np.array([0.0, 90.0, 45.0]), np.array([0.0, 30.0, 1.25])
     i = p.intensity(h, v)
@@ -79,9 +79,9 @@ def test_photometry_from_arrays(tmp_path):
     out = tmp_path / "cos.ies"
     rayset.write_photometry(out, p)
     truth = json.loads(rayconv("info", out, "--json"))
-    assert truth["max_candela"] == 100
+    assert truth["max_intensity_cd"] == 100
     # 100 cd x cos over the upper hemisphere: 100 pi lm, to the trapezoidal rule's error.
-    assert truth["lumens"] == pytest.approx(100 * np.pi, rel=5e-3)
+    assert truth["total_flux_lm"] == pytest.approx(100 * np.pi, rel=5e-3)
     back = rayset.read_photometry(out)
     assert back.keywords["MANUFAC"] == "rayset"
     with pytest.raises(ValueError, match="candela"):
