@@ -54,6 +54,13 @@ Array<T> to_array(const std::vector<T>& values) {
     return out.array;
 }
 
+// An array as a plain Python object: a property getter's result would otherwise be tied to the
+// C++ object (reference_internal), which nanobind refuses for an array owning its memory.
+template <class T>
+nb::object object(Array<T> array) {
+    return nb::cast(std::move(array), nb::rv_policy::move);
+}
+
 inline Vec3 point(const Points& points, size_t i) {
     return {points(i, 0), points(i, 1), points(i, 2)};
 }

@@ -6,6 +6,7 @@
 #include <nanobind/stl/map.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
 
 #include <fmt/format.h>
 
@@ -21,10 +22,6 @@ namespace rayset::python {
 
 namespace {
 
-std::vector<double> to_vector(const Values& values) {
-    return std::vector<double>(values.data(), values.data() + values.shape(0));
-}
-
 // A table indexed [h * vertical + v] as a (horizontal, vertical) array.
 Array<double> table(const std::vector<double>& values, size_t horizontal, size_t vertical) {
     if (values.size() != horizontal * vertical)
@@ -39,8 +36,14 @@ Array<double> candela_of(const Photometry& p) {
     return table(p.candela, p.horizontal_deg.size(), p.vertical_deg.size());
 }
 
-void set_candela(Photometry& p,
-                 const nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>& c) {
+// Any array-like (lists too), through numpy.
+void set_candela(Photometry& p, nb::handle value) {
+    using Table = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+    nb::object array = nb::module_::import_("numpy").attr("ascontiguousarray")(
+        value, nb::arg("dtype") = "float64");
+    if (nb::cast<size_t>(array.attr("ndim")) != 2)
+        throw nb::value_error("candela must be a (horizontal, vertical) array");
+    const Table c = nb::cast<Table>(array);
     if (c.shape(0) != p.horizontal_deg.size() || c.shape(1) != p.vertical_deg.size())
         throw nb::value_error(fmt::format("candela must be (horizontal, vertical) = ({}, {}) "
                                           "values: set the angles first; got ({}, {})",
@@ -112,15 +115,17 @@ void bind_photometry(nb::module_& m) {
             },
             "Photometric type: 'C' (gamma from nadir, C planes), 'B' or 'A'.")
         .def_prop_rw(
-            "vertical_deg", [](const Photometry& p) { return to_array(p.vertical_deg); },
-            [](Photometry& p, const Values& v) { p.vertical_deg = to_vector(v); },
+            "vertical_deg", [](const Photometry& p) { return object(to_array(p.vertical_deg)); },
+            [](Photometry& p, const std::vector<double>& v) { p.vertical_deg = v; },
             "Vertical angles, degrees, ascending.")
         .def_prop_rw(
-            "horizontal_deg", [](const Photometry& p) { return to_array(p.horizontal_deg); },
-            [](Photometry& p, const Values& v) { p.horizontal_deg = to_vector(v); },
+            "horizontal_deg",
+            [](const Photometry& p) { return object(to_array(p.horizontal_deg)); },
+            [](Photometry& p, const std::vector<double>& v) { p.horizontal_deg = v; },
             "Horizontal angles, degrees, ascending (possibly only a symmetric part).")
-        .def_prop_rw("candela", &candela_of, &set_candela,
-                     "Intensity, cd, as a (horizontal, vertical) array.")
+        .def_prop_rw(
+            "candela", [](const Photometry& p) { return object(candela_of(p)); }, &set_candela,
+            "Intensity, cd, as a (horizontal, vertical) array.")
         .def_rw("lamp_count", &Photometry::lamp_count, "Number of lamps.")
         .def_rw("rated_lumens", &Photometry::rated_lumens,
                 "Rated lamp flux, lm; not above zero for absolute photometry.")
@@ -182,30 +187,30 @@ void bind_photometry(nb::module_& m) {
         .def_prop_ro(
             "flux",
             [](const FarField& f) {
-                return table(f.flux, f.photometry.horizontal_deg.size(),
-                             f.photometry.vertical_deg.size());
+                return object(table(f.flux, f.photometry.horizontal_deg.size(),
+                                    f.photometry.vertical_deg.size()));
             },
             "Flux of each cell, lm or W, (C, gamma).")
         .def_prop_ro(
             "solid_angle",
             [](const FarField& f) {
-                return table(f.solid_angle, f.photometry.horizontal_deg.size(),
-                             f.photometry.vertical_deg.size());
+                return object(table(f.solid_angle, f.photometry.horizontal_deg.size(),
+                                    f.photometry.vertical_deg.size()));
             },
             "Solid angle of each cell, sr, (C, gamma).")
         .def_prop_ro(
             "variance",
             [](const FarField& f) {
-                return table(f.variance, f.photometry.horizontal_deg.size(),
-                             f.photometry.vertical_deg.size());
+                return object(table(f.variance, f.photometry.horizontal_deg.size(),
+                                    f.photometry.vertical_deg.size()));
             },
             "Estimated variance of each intensity (its standard error squared), (C, gamma).")
         .def_prop_ro(
             "sigma_deg",
             [](const FarField& f) {
-                if (f.sigma_deg.empty()) return to_array(f.sigma_deg);
-                return table(f.sigma_deg, f.photometry.horizontal_deg.size(),
-                             f.photometry.vertical_deg.size());
+                if (f.sigma_deg.empty()) return object(to_array(f.sigma_deg));
+                return object(table(f.sigma_deg, f.photometry.horizontal_deg.size(),
+                                    f.photometry.vertical_deg.size()));
             },
             "Smoothed: the kernel bandwidth of each value, degrees (C, gamma); else empty.")
         .def_ro("method", &FarField::method, "How the values were made (keyword _SMOOTHING).")

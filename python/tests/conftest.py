@@ -51,8 +51,8 @@ def disk(data) -> Path:
 
 @pytest.fixture(scope="session")
 def cluster(data) -> Path:
-    """The three-colour cluster with a wavelength per ray and luminous flux: 30000 rays."""
+    """Seven chips of three colours, a wavelength per ray (TM-25 then holds radiant flux
+    only): 30000 rays."""
     path = data / "cluster.tm25ray"
-    rayconv("synth", "cluster", "rings=1,6", "--rays", 30000, "--seed", 11, "--luminous",
-            "-o", path)
+    rayconv("synth", "cluster", "rings=1,6", "--rays", 30000, "--seed", 11, "-o", path)
     return path

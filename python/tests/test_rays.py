@@ -49,7 +49,8 @@ def test_columns_and_missing_values(disk, cluster):
     truth = info(cluster)
     assert c.header["spectral"] == "per_ray_wavelength"
     assert set(np.unique(c.wavelength)) == {630, 530, 460}
-    assert c.luminous_total == pytest.approx(truth["rays_total"]["luminous_lm"], rel=1e-12)
+    assert np.isnan(c.luminous).all() and truth["rays_total"]["luminous_lm"] is None
+    assert c.radiant_total == pytest.approx(truth["rays_total"]["radiant_W"], rel=1e-12)
 
 
 @pytest.mark.parametrize("source", ["disk", "cluster"])
