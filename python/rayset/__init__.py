@@ -43,6 +43,10 @@ __all__ = [
 
 _COLUMNS = ("origin", "direction", "radiant", "luminous", "wavelength", "spectrum", "extra")
 
+# What a ray holds for a value its file does not carry (converters/rays/ray.h).
+_ABSENT = {"radiant": np.float32(np.nan), "luminous": np.float32(np.nan),
+           "wavelength": np.float32(np.nan), "spectrum": np.int32(-1)}
+
 # Extensions that name one format; ".ray" and ".txt" are used by several.
 _EXTENSIONS = {".tm25ray": "tm25", ".dat": "zemax", ".sdf": "zemax", ".csv": "csv"}
 
@@ -53,6 +57,9 @@ class Rays:
     origin, direction: (N, 3), lengths in header["unit"], directions unit vectors.
     radiant (W), luminous (lm), wavelength (nm): (N,), NaN where the file has no value.
     spectrum: (N,) int32 index into header["spectral_tables"], -1 for none.
+    A column the file does not carry at all (header has_radiant, has_luminous false; wavelength
+    unless header["spectral"] is "per_ray_wavelength"; spectrum unless it is a table kind) is a
+    read-only view of NaN (-1) taking no memory: np.array(column) gives a writable copy.
     extra: (N, E) the per-ray columns header["extras"] names (TM-25 Stokes, tristimulus...).
     header: the file's metadata (a dict; totals as the rays sum after any scaling);
     file_header: the same as the file states it; totals: sums of the rays read; warnings:
@@ -91,8 +98,12 @@ class Rays:
     @classmethod
     def _from_dict(cls, d: dict, header: dict, file_header: dict, totals=None, warnings=()):
         rays = cls.__new__(cls)
+        n = len(d["origin"])
         for name in _COLUMNS:
-            setattr(rays, name, d[name])
+            value = d[name]
+            if value is None:  # a column the file does not carry: the same value in every ray
+                value = np.broadcast_to(_ABSENT[name], (n,))
+            setattr(rays, name, value)
         rays.header, rays.file_header = header, file_header
         rays.totals = dict(totals or {})
         rays.warnings = list(warnings)

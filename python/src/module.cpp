@@ -5,8 +5,25 @@
 #include "core/error.h"
 
 #include <fmt/format.h>
+#include <sys/mman.h>
+
+#include <new>
 
 namespace rayset::python {
+
+void* allocate(size_t bytes) {
+    constexpr size_t kHuge = size_t(2) << 20;
+    void* p = nullptr;
+    if (bytes >= 2 * kHuge) {
+        bytes = (bytes + kHuge - 1) / kHuge * kHuge;  // aligned_alloc wants a multiple
+        p = std::aligned_alloc(kHuge, bytes);
+        if (p) madvise(p, bytes, MADV_HUGEPAGE);  // a hint: without it, ordinary pages
+    } else {
+        p = std::malloc(bytes);
+    }
+    if (!p) throw std::bad_alloc();
+    return p;
+}
 
 void check_rows(size_t a, size_t b, const char* what) {
     if (a != b) throw nb::value_error(fmt::format("{}: {} rows against {}", what, a, b).c_str());

@@ -193,21 +193,29 @@ nb::dict totals_dict(const RayTotals& t) {
 }
 
 // Arrays for `rows` rays: what read_rays and RayFile::read return, filled without the GIL.
+// A column the header says the file does not carry holds NaN (spectrum -1) in every ray
+// (ray.h): it is not copied, and the package stands a constant view in for it.
 struct RayArrays {
+    bool radiant_read, luminous_read, wavelength_read, spectrum_read;
+    size_t extras;
     NewArray<float> origin, direction, radiant, luminous, wavelength, extra;
     NewArray<int32_t> spectrum;
-    size_t extras;
 
-    // Every row is filled (read_rays checks the count), so the memory is not zeroed first.
-    RayArrays(size_t rows, size_t extras)
-        : origin({rows, 3}, false),
+    // Every row is filled (the callers check the count), so the memory is not zeroed first.
+    RayArrays(size_t rows, const RayHeader& h)
+        : radiant_read(h.has_radiant),
+          luminous_read(h.has_luminous),
+          wavelength_read(h.spectral == SpectralKind::per_ray_wavelength),
+          spectrum_read(h.spectral == SpectralKind::shared_table ||
+                        h.spectral == SpectralKind::per_ray_table),
+          extras(h.extras.size()),
+          origin({rows, 3}, false),
           direction({rows, 3}, false),
-          radiant({rows}, false),
-          luminous({rows}, false),
-          wavelength({rows}, false),
+          radiant({radiant_read ? rows : 0}, false),
+          luminous({luminous_read ? rows : 0}, false),
+          wavelength({wavelength_read ? rows : 0}, false),
           extra({rows, extras}, false),
-          spectrum({rows}, false),
-          extras(extras) {}
+          spectrum({spectrum_read ? rows : 0}, false) {}
 
     // Rays columns[0, n) at row `at`.
     void put(const RayColumns& c, size_t n, size_t at) {
@@ -217,10 +225,11 @@ struct RayArrays {
             o[0] = c.ox[i], o[1] = c.oy[i], o[2] = c.oz[i];
             d[0] = c.dx[i], d[1] = c.dy[i], d[2] = c.dz[i];
         }
-        std::memcpy(radiant.data + at, c.radiant.data(), n * sizeof(float));
-        std::memcpy(luminous.data + at, c.luminous.data(), n * sizeof(float));
-        std::memcpy(wavelength.data + at, c.wavelength.data(), n * sizeof(float));
-        std::memcpy(spectrum.data + at, c.spectrum.data(), n * sizeof(int32_t));
+        if (radiant_read) std::memcpy(radiant.data + at, c.radiant.data(), n * sizeof(float));
+        if (luminous_read) std::memcpy(luminous.data + at, c.luminous.data(), n * sizeof(float));
+        if (wavelength_read)
+            std::memcpy(wavelength.data + at, c.wavelength.data(), n * sizeof(float));
+        if (spectrum_read) std::memcpy(spectrum.data + at, c.spectrum.data(), n * sizeof(int32_t));
         if (extras) std::memcpy(extra.data + at * extras, c.extra.data(), n * extras * 4);
     }
     // Rays chunk.rays[first, first + n) at row `at`.
@@ -232,18 +241,23 @@ struct RayArrays {
             float* d = direction.data + 3 * row;
             o[0] = r.origin.x, o[1] = r.origin.y, o[2] = r.origin.z;
             d[0] = r.direction.x, d[1] = r.direction.y, d[2] = r.direction.z;
-            radiant.data[row] = r.radiant, luminous.data[row] = r.luminous;
-            wavelength.data[row] = r.wavelength, spectrum.data[row] = r.spectrum;
+            if (radiant_read) radiant.data[row] = r.radiant;
+            if (luminous_read) luminous.data[row] = r.luminous;
+            if (wavelength_read) wavelength.data[row] = r.wavelength;
+            if (spectrum_read) spectrum.data[row] = r.spectrum;
         }
         if (extras)
             std::memcpy(extra.data + at * extras, chunk.extra.data() + first * extras,
                         n * extras * sizeof(float));
     }
+    // Columns not read are None.
     nb::dict dict() const {
         nb::dict d;
         d["origin"] = origin.array, d["direction"] = direction.array;
-        d["radiant"] = radiant.array, d["luminous"] = luminous.array;
-        d["wavelength"] = wavelength.array, d["spectrum"] = spectrum.array;
+        d["radiant"] = radiant_read ? nb::cast(radiant.array) : nb::none();
+        d["luminous"] = luminous_read ? nb::cast(luminous.array) : nb::none();
+        d["wavelength"] = wavelength_read ? nb::cast(wavelength.array) : nb::none();
+        d["spectrum"] = spectrum_read ? nb::cast(spectrum.array) : nb::none();
         d["extra"] = extra.array;
         return d;
     }
@@ -259,7 +273,7 @@ nb::dict read_rays(const Path& file, const std::optional<std::string>& format,
         reader = open_rays(path, options);
     }
     const uint64_t rows = reader->header().ray_count;
-    RayArrays arrays(size_t(rows), reader->header().extras.size());
+    RayArrays arrays(size_t(rows), reader->header());
     {
         nb::gil_scoped_release release;
         // The parts cover disjoint ranges of rays, so their threads write disjoint rows.
@@ -300,7 +314,7 @@ public:
         const uint64_t left = reader_->header().ray_count - position_;
         const size_t rows = size_t(std::min<uint64_t>(count, left));
         if (rows == 0) return std::nullopt;
-        RayArrays arrays(rows, reader_->header().extras.size());
+        RayArrays arrays(rows, reader_->header());
         {
             nb::gil_scoped_release release;
             size_t filled = 0;
