@@ -3,6 +3,7 @@
 #pragma once
 
 #include "converters/rays/ray.h"
+#include "converters/rays/ray_names.h"
 
 #include <string>
 #include <string_view>
@@ -16,29 +17,10 @@ inline constexpr std::string_view kLuminous = "luminous_lm";
 inline constexpr std::string_view kWavelength = "wavelength_nm";
 inline constexpr std::string_view kSpectrum = "spectrum";
 
-struct NamedExtra {
-    ExtraKind kind;
-    std::string_view name;
-};
-inline constexpr NamedExtra kNamedExtras[] = {
-    {ExtraKind::stokes_s1, "stokes_s1"},         {ExtraKind::stokes_s2, "stokes_s2"},
-    {ExtraKind::stokes_s3, "stokes_s3"},         {ExtraKind::ellipse_x, "ellipse_x"},
-    {ExtraKind::ellipse_y, "ellipse_y"},         {ExtraKind::ellipse_z, "ellipse_z"},
-    {ExtraKind::tristimulus_x, "tristimulus_x"}, {ExtraKind::tristimulus_z, "tristimulus_z"},
-};
-
-// Indexed by SpectralKind.
-inline constexpr std::string_view kSpectralNames[] = {
-    "none", "single_wavelength", "per_ray_wavelength", "shared_table", "per_ray_table"};
-
 // Keys of RayHeader::text, in its order.
 inline constexpr std::string_view kTextKeys[9] = {
     "name",   "manufacturer",         "model_creator",   "ray_file_creator", "equipment",
     "camera", "operating_conditions", "additional_info", "data_reference"};
-
-inline constexpr LengthUnit kUnits[] = {LengthUnit::mm,   LengthUnit::cm, LengthUnit::m,
-                                        LengthUnit::inch, LengthUnit::ft, LengthUnit::um,
-                                        LengthUnit::nm};
 
 // Whether `name` is a column with a fixed meaning (an additional extra may not use it).
 inline bool is_reserved_column(std::string_view name) {

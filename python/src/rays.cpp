@@ -17,6 +17,7 @@
 #include <cstring>
 #include <memory>
 
+#include "converters/rays/ray_names.h"
 #include "converters/rays/ray_stream.h"
 #include "core/error.h"
 
@@ -24,21 +25,31 @@ namespace rayset::python {
 
 namespace {
 
-const char* const kSpectralKinds[] = {"none", "single_wavelength", "per_ray_wavelength",
-                                      "shared_table", "per_ray_table"};
-const char* const kExtraKinds[] = {"stokes_s1",     "stokes_s2",     "stokes_s3",
-                                   "ellipse_x",     "ellipse_y",     "ellipse_z",
-                                   "tristimulus_x", "tristimulus_z", "additional"};
-const LengthUnit kUnits[] = {LengthUnit::mm, LengthUnit::cm, LengthUnit::m, LengthUnit::inch,
-                             LengthUnit::ft, LengthUnit::um, LengthUnit::nm};
-
-template <size_t N>
-size_t index_of(const char* const (&names)[N], const std::string& name, const char* what) {
-    for (size_t i = 0; i < N; ++i)
-        if (name == names[i]) return i;
+SpectralKind spectral_kind_named(const std::string& name) {
     std::string known;
-    for (const char* n : names) known += std::string(known.empty() ? "" : ", ") + n;
-    throw nb::value_error(fmt::format("unknown {} '{}' ({})", what, name, known).c_str());
+    for (size_t i = 0; i < std::size(kSpectralNames); ++i) {
+        if (name == kSpectralNames[i]) return SpectralKind(i);
+        known += (known.empty() ? "" : ", ") + std::string(kSpectralNames[i]);
+    }
+    throw nb::value_error(fmt::format("unknown spectral kind '{}' ({})", name, known).c_str());
+}
+
+// The named extra kinds, and "additional" for a column that is none of them.
+constexpr std::string_view kAdditional = "additional";
+std::string_view extra_kind_name(ExtraKind kind) {
+    for (const NamedExtra& e : kNamedExtras)
+        if (e.kind == kind) return e.name;
+    return kAdditional;
+}
+ExtraKind extra_kind_named(const std::string& name) {
+    std::string known;
+    for (const NamedExtra& e : kNamedExtras) {
+        if (name == e.name) return e.kind;
+        known += std::string(e.name) + ", ";
+    }
+    if (name == kAdditional) return ExtraKind::additional;
+    throw nb::value_error(
+        fmt::format("unknown extra kind '{}' ({}{})", name, known, kAdditional).c_str());
 }
 
 RayFormat format_named(const std::string& name) {
@@ -82,7 +93,7 @@ nb::dict header_dict(const RayHeader& h) {
     d["stated_radiant"] = h.stated_radiant;
     d["stated_luminous"] = h.stated_luminous;
     d["ray_set_flux"] = h.ray_set_flux;
-    d["spectral"] = kSpectralKinds[int(h.spectral)];
+    d["spectral"] = std::string(kSpectralNames[int(h.spectral)]);
     d["single_wavelength"] = h.single_wavelength;
     d["min_wavelength"] = h.min_wavelength;
     d["max_wavelength"] = h.max_wavelength;
@@ -92,7 +103,7 @@ nb::dict header_dict(const RayHeader& h) {
     d["spectral_tables"] = tables;
     nb::list extras;
     for (const ExtraColumn& e : h.extras)
-        extras.append(nb::make_tuple(kExtraKinds[int(e.kind)], e.label));
+        extras.append(nb::make_tuple(std::string(extra_kind_name(e.kind)), e.label));
     d["extras"] = extras;
     d["creation_method"] = h.creation_method;
     d["creation_date"] = h.creation_date;
@@ -134,9 +145,7 @@ RayHeader header_from(const nb::dict& d) {
     h.stated_radiant = number("stated_radiant", h.stated_radiant);
     h.stated_luminous = number("stated_luminous", h.stated_luminous);
     h.ray_set_flux = number("ray_set_flux", h.ray_set_flux);
-    if (has("spectral"))
-        h.spectral = SpectralKind(
-            index_of(kSpectralKinds, nb::cast<std::string>(d["spectral"]), "spectral kind"));
+    if (has("spectral")) h.spectral = spectral_kind_named(nb::cast<std::string>(d["spectral"]));
     h.single_wavelength = float(number("single_wavelength", h.single_wavelength));
     h.min_wavelength = float(number("min_wavelength", h.min_wavelength));
     h.max_wavelength = float(number("max_wavelength", h.max_wavelength));
@@ -155,8 +164,7 @@ RayHeader header_from(const nb::dict& d) {
             if (nb::len(pair) != 2)
                 throw nb::value_error("an extra column is a pair (kind, label)");
             h.extras.push_back(
-                {ExtraKind(index_of(kExtraKinds, nb::cast<std::string>(pair[0]), "extra kind")),
-                 nb::cast<std::string>(pair[1])});
+                {extra_kind_named(nb::cast<std::string>(pair[0])), nb::cast<std::string>(pair[1])});
         }
     if (has("creation_method")) h.creation_method = nb::cast<int32_t>(d["creation_method"]);
     if (has("creation_date")) h.creation_date = nb::cast<std::string>(d["creation_date"]);
