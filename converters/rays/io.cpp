@@ -162,7 +162,7 @@ size_t BinaryInput::read_some(void* out, size_t n) {
 // ---------------------------------------------------------------------------------------------
 TextInput::TextInput(const std::string& path) : path_(path) {
     file_ = open_for_reading(path, size_);
-    char head[8];  // two UTF-32 characters: enough to tell the encoding without a mark
+    char head[kTextStartBytes];
     head_.assign(head, std::fread(head, 1, sizeof head, file_));
     const TextStart start = text_start(head_);
     encoding_ = start.encoding;
