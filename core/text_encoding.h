@@ -30,6 +30,8 @@ struct TextStart {
     TextEncoding encoding = TextEncoding::eight_bit;
     size_t mark_bytes = 0;
 };
+// The first bytes of a file are enough to tell it from this many: two UTF-32 characters.
+inline constexpr size_t kTextStartBytes = 8;
 TextStart text_start(std::string_view head);
 // "UTF-16LE", ... for messages.
 const char* to_string(TextEncoding encoding);

@@ -45,6 +45,9 @@ struct SpectralBins {
     double first_nm = 380, width_nm = 10;
     int count = 40;
     int bin_of(double wavelength_nm) const;  // clamped to the range; -1 for NaN
+    // How many bins of `width_nm` cover the 400 nm from 380 to 780 (at least one), as a build
+    // makes them; 0 for a width that is not positive and finite or too small for an int count.
+    static int count_covering(double width_nm);
     double centre(int bin) const { return first_nm + (bin + 0.5) * width_nm; }
 };
 

@@ -18,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 namespace rayset::lightmodel {
 
@@ -382,7 +383,9 @@ LightModel build_model(const std::string& ray_file, const ModelOptions& options,
     LightModel model;
     model.options = options;
     model.bins.width_nm = options.spectral_bin_nm;
-    model.bins.count = std::max(1, int(std::lround(400 / options.spectral_bin_nm)));
+    model.bins.count = SpectralBins::count_covering(options.spectral_bin_nm);
+    if (model.bins.count == 0)
+        throw std::invalid_argument("spectral_bin_nm must be a positive width in nm");
 
     Box bounds;
     const double scale = read_bounds(ray_file, model, bounds, report);

@@ -215,16 +215,14 @@ struct MetadataReader {
         text(key, t);
         value = parse_frame(t, path, key);
     }
-    // Bins as a build makes them: a finite start, a positive width and as many bins of that
-    // width as cover the 400 nm of 380..780 (model_build.cpp), which also bounds the per-cell
-    // spectra read for them.
+    // Bins as a build makes them (SpectralBins::count_covering), which also bounds the
+    // per-cell spectra read for them.
     void bins(const char* key, SpectralBins& b) {
         auto m = meta.getMetadata<openvdb::Vec3DMetadata>(key);
         if (!m) return;
         const double first = m->value().x(), width = m->value().y(), count = m->value().z();
-        const double covering = width > 0 ? std::max(1.0, std::round(400 / width)) : 0;
-        if (!std::isfinite(first) || !(width > 0) || !std::isfinite(width) ||
-            !(covering <= std::numeric_limits<int>::max()) || count != covering) {
+        const int covering = SpectralBins::count_covering(width);
+        if (!std::isfinite(first) || covering == 0 || count != covering) {
             std::ostringstream text;
             text << first << " " << width << " " << count;
             throw Error(path + ": metadata '" + key + "' is '" + text.str() +

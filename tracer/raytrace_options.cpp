@@ -39,8 +39,9 @@ the state after a completed pass: written after the first pass, then at most eve
 SIGTERM abandons the pass under way, writes the outputs and the checkpoint of the last
 completed pass and exits with 130 or 143; a second Ctrl-C exits at once. The same command with
 --resume continues: the result is bit for bit that of an uninterrupted render (--passes and
---time count what is already done). After a kill -9 the last checkpoint is intact; --resume
-with the budget already reached only writes its outputs. A checkpoint of another scene, size,
+--time count what is already done). After a kill -9 the last checkpoint is intact (a hidden
+.OUT.tmpNNNNNN.EXT file beside an output is what a killed write left: delete it); --resume with the
+budget already reached only writes its outputs. A checkpoint of another scene, size,
 seed or integrator setting is refused, naming what differs. A completed render removes the
 checkpoint (--keep-checkpoint keeps it, to add passes later).
 

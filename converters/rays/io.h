@@ -95,6 +95,8 @@ private:
     TextEncoding encoding_ = TextEncoding::eight_bit;
     std::string head_;  // the first bytes, read to tell the encoding, not yet handed out
     size_t head_used_ = 0;
+    char* line_buffer_ = nullptr;  // getline's, grown to the longest line
+    size_t line_buffer_size_ = 0;
 };
 
 // For writers that take a file name (OpenVDB, VTK): `write` gets the path of an empty temporary

@@ -59,13 +59,14 @@ RowCount count_wide_rows(TextInput& in, uint64_t offset, uint64_t first_line,
 
 RowCount count_rows(const std::string& path, uint64_t offset, uint64_t first_line,
                     std::string_view end_marker) {
-    {
-        TextInput in(path);
-        if (code_unit_bytes(in.encoding()) > 1)
-            return count_wide_rows(in, offset, first_line, end_marker);
-    }
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) fail(path, std::string("cannot open: ") + std::strerror(errno));
+    char head[kTextStartBytes];
+    const size_t head_size = std::fread(head, 1, sizeof head, file.get());
+    if (code_unit_bytes(text_start(std::string_view(head, head_size)).encoding) > 1) {
+        TextInput in(path);
+        return count_wide_rows(in, offset, first_line, end_marker);
+    }
     if (std::fseek(file.get(), static_cast<long>(offset), SEEK_SET) != 0)
         fail(path, std::string("cannot seek: ") + std::strerror(errno));
 

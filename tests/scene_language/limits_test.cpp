@@ -151,6 +151,20 @@ TEST(SceneLanguageFiles, WritingNeedsAWriteRootAndStaysInsideIt) {
     std::filesystem::current_path(previous);
 }
 
+// A name longer than the system allows (ENAMETOOLONG): read, it is not found; written, the
+// system's reason is given. Both are scene errors at the name, not a std::filesystem exception.
+TEST(SceneLanguageFiles, NamesTooLongForTheSystemAreSceneErrors) {
+    const std::string name(5000, 'a');
+    const std::string read = error_of("#fopen F \"" + name + "\" read\n");
+    EXPECT_NE(read.find("#fopen file \"" + name + "\" not found"), std::string::npos) << read;
+    EXPECT_NE(read.find("at test.pov:1:10"), std::string::npos) << read;
+    ParseOptions options;
+    options.write_roots = {std::filesystem::current_path().string()};
+    const std::string written = error_of("#fopen F \"" + name + "\" write\n", options);
+    EXPECT_NE(written.find("for write: File name too long at test.pov:1:10"), std::string::npos)
+        << written;
+}
+
 }  // namespace
 }  // namespace rayset::tracer
 

@@ -75,7 +75,8 @@ CommandResult run_command(const std::string& command_line) {
     return result;
 }
 
-bool killed_after(const std::vector<std::string>& argv, double seconds) {
+bool killed_after(const std::vector<std::string>& argv, double seconds,
+                  const std::string& folder) {
     std::vector<std::string> words = argv;
     std::vector<char*> pointers;
     for (std::string& w : words) pointers.push_back(w.data());
@@ -84,6 +85,7 @@ bool killed_after(const std::vector<std::string>& argv, double seconds) {
     if (pid == 0) {  // only async-signal-safe calls until exec
         const int null = ::open("/dev/null", O_WRONLY);
         if (null < 0 || ::dup2(null, 1) < 0 || ::dup2(null, 2) < 0) ::_exit(126);
+        if (!folder.empty() && ::chdir(folder.c_str()) != 0) ::_exit(126);
         ::execv(pointers[0], pointers.data());
         ::_exit(127);
     }

@@ -50,9 +50,11 @@ struct CommandResult {
 };
 CommandResult run_command(const std::string& command_line);
 
-// Starts `argv` (stdout and stderr to /dev/null), sends it SIGKILL after `seconds` unless it
-// has ended by then, and waits for it. Returns true when the kill came first.
-bool killed_after(const std::vector<std::string>& argv, double seconds);
+// Starts `argv` (stdout and stderr to /dev/null; in `folder` unless empty), sends it SIGKILL
+// after `seconds` unless it has ended by then, and waits for it. Returns true when the kill came
+// first.
+bool killed_after(const std::vector<std::string>& argv, double seconds,
+                  const std::string& folder = "");
 
 // Writes bytes to a file (for hand-made bad inputs).
 void write_file(const std::string& path, const std::string& bytes);

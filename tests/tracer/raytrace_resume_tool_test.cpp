@@ -5,6 +5,7 @@
 // seed, not a checkpoint, missing) are refused with a message naming the fault, and no file
 // in the folder changes.
 #include <chrono>
+#include <cstdio>
 #include <csignal>
 #include <filesystem>
 #include <map>
@@ -19,6 +20,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/random.h"
 #include "support/test_support.h"
 #include "tracer/film/checkpoint.h"
 #include "tracer/scene_language/scene_language.h"
@@ -177,6 +179,59 @@ TEST(RaytraceResume, InterruptedRendersResumeToTheUninterruptedFiles) {
         EXPECT_FALSE(fs::exists(f.dir.file("out.checkpoint")));
         EXPECT_TRUE(test::read_file(f.dir.file("out.exr")) == expected.at("out.exr"));
     }
+}
+
+// SIGKILL at moments drawn uniformly over 1.2 times an uninterrupted render, a checkpoint after
+// every pass: whatever moment the kill lands on (a pass, a checkpoint or the outputs being
+// written), each output holds what was there before or a whole file, the checkpoint reads, and
+// resuming from it (or starting again when there is none) writes the uninterrupted render's
+// very files. A killed process can leave nothing else but its hidden temporary files.
+TEST(RaytraceResume, RendersKilledAtRandomMomentsResumeToTheUninterruptedFiles) {
+    const std::vector<std::string> kill_arguments = arguments(100);
+    RenderFolder reference;
+    const auto start = std::chrono::steady_clock::now();
+    ASSERT_EQ(raytrace(kill_arguments, reference.folder()).status, 0);
+    const double whole =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto expected = reference.files();
+
+    Pcg32 rng(5);
+    int killed = 0, with_checkpoint = 0, temporaries = 0;
+    for (int round = 0; round < 8; ++round) {
+        SCOPED_TRACE("round " + std::to_string(round));
+        RenderFolder f;
+        test::write_file(f.dir.file("out.exr"), "previous");
+        killed += test::killed_after(with({kRaytrace}, kill_arguments), 1.2 * whole * rng.uniform(),
+                                     f.folder());
+        const std::string exr = test::read_file(f.dir.file("out.exr"));
+        if (exr != "previous") {
+            const int samples = exr_samples(f.dir.file("out.exr"));
+            EXPECT_GE(samples, 1);
+            EXPECT_LE(samples, 100);
+        }
+        std::vector<std::string> resume = kill_arguments;
+        if (fs::exists(f.dir.file("out.checkpoint"))) {
+            const RenderResult stopped = read_tool_checkpoint(f);
+            EXPECT_GE(stopped.passes, 1);
+            EXPECT_LE(stopped.passes, 100);
+            resume.push_back("--resume");
+            ++with_checkpoint;
+        }
+        for (const auto& [name, contents] : f.files()) {
+            if (name == "scene.pov" || name == "out.checkpoint" || expected.count(name)) continue;
+            const bool temporary = name[0] == '.' && name.find(".tmp") != std::string::npos;
+            EXPECT_TRUE(temporary) << "a killed render left " << name;
+            temporaries += temporary;
+        }
+        const auto resumed = raytrace(resume, f.folder());
+        ASSERT_EQ(resumed.status, 0) << resumed.output;
+        for (const auto& [name, contents] : expected)
+            EXPECT_TRUE(test::read_file(f.dir.file(name)) == contents) << name << " differs";
+    }
+    EXPECT_GE(killed, 4);  // P(fewer than 4 of 8 kills before the end) ~ 0.5% at p = 5/6
+    EXPECT_GE(with_checkpoint, 1);
+    std::printf("[ figures  ] %d of 8 renders killed, %d left a checkpoint, %d temporary files\n",
+                killed, with_checkpoint, temporaries);
 }
 
 TEST(RaytraceResume, BadCheckpointsAreRefusedAndNothingChanges) {

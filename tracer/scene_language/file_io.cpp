@@ -156,12 +156,13 @@ void Parser::directive_fopen(const Token& directive) {
     const Token mode = next();
     auto file = std::make_shared<FileHandle>();
     if (mode.is(Keyword::read)) {
-        // A file the scene wrote itself is read back from where it was written.
-        const fs::path written = fs::weakly_canonical(fs::current_path() / name);
+        // A file the scene wrote itself is read back from where it was written; a name the
+        // system cannot resolve (too long, say) is looked up as any other and not found.
+        std::error_code error;
+        const fs::path written = fs::weakly_canonical(fs::current_path() / name, error);
         bool in_write_root = false;
         for (const std::string& root : write_roots_)
-            in_write_root = in_write_root || within(written, fs::path(root));
-        std::error_code error;
+            in_write_root = in_write_root || (!error && within(written, fs::path(root)));
         file->path = in_write_root && fs::is_regular_file(written, error)
                          ? written.string()
                          : resolve_file(name, name_token, "#fopen file");
@@ -179,8 +180,12 @@ void Parser::directive_fopen(const Token& directive) {
     } else if (mode.is(Keyword::write) || mode.is(Keyword::append)) {
         const fs::path given(name);
         // Relative to the working directory, as POV-Ray writes.
+        std::error_code error;
         const fs::path target =
-            fs::weakly_canonical(given.is_absolute() ? given : fs::current_path() / given);
+            fs::weakly_canonical(given.is_absolute() ? given : fs::current_path() / given, error);
+        if (error)
+            fail(name_token, fmt::format("#fopen \"{}\" for {}: {}", name, word(mode),
+                                         error.message()));
         bool allowed = false;
         for (const std::string& root : write_roots_)
             allowed = allowed || within(target, fs::path(root));
