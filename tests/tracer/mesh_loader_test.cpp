@@ -69,5 +69,33 @@ TEST(MeshFileLoader, FaceNamingANormalPastTheLastIsRefused) {
         << loaded.error;
 }
 
+// A subdivision tag states how many values follow; tinyobjloader would allocate that many
+// (here 1777777777 strings, 57 GB) before reading them. Tags are not used for triangles: the
+// faces load as if the tags were not there.
+TEST(MeshFileLoader, TagsAreIgnored) {
+    test::ScratchDir dir;
+    const Loaded loaded = load(dir, std::string(kTriangle) +
+                                        "  t crease 2/2/1777777777 1 2 0.5 0.5\n"
+                                        "\tt interpolateboundary 1/0/0 1\nf 1 2 3\n");
+    ASSERT_TRUE(loaded.mesh) << loaded.error;
+    ASSERT_EQ(loaded.mesh->faces.size(), 1u);
+    EXPECT_EQ(loaded.mesh->faces[0], (std::array<int, 3>{0, 1, 2}));
+}
+
+TEST(MeshFileLoader, MissingFileIsNamed) {
+    test::ScratchDir dir;
+    MeshFileShape shape;
+    shape.path = dir.file("absent.obj");
+    shape.format = "obj";
+    try {
+        load_mesh_file(shape, "scene.pov:3:1");
+        FAIL() << "a missing mesh file loaded";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), shape.path +
+                                             ": cannot open OBJ mesh: No such file or directory "
+                                             "(mesh_file at scene.pov:3:1)");
+    }
+}
+
 }  // namespace
 }  // namespace rayset::tracer

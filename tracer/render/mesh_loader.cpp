@@ -5,6 +5,11 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
 #include "core/error.h"
 
 namespace rayset::tracer {
@@ -33,6 +38,28 @@ void check_indices(const std::vector<std::array<int, 3>>& faces, size_t count, c
         }
 }
 
+// The file's text with its subdivision-surface tags ('t' statements) made comments: a tag states
+// counts that tinyobjloader allocates before it reads the values (1777777777 strings from one
+// line of a corrupt file), and a mesh rendered as triangles has no use for them.
+std::string text_without_tags(const std::string& path, const std::string& where) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw Error(fmt::format("{}: cannot open OBJ mesh: {} (mesh_file at {})", path,
+                                std::strerror(errno), where));
+    std::ostringstream text;
+    text << in.rdbuf();  // an empty file inserts nothing: the parser then finds no faces
+    std::string s = std::move(text).str();
+    auto blank = [](char c) { return c == ' ' || c == '\t'; };
+    for (size_t line = 0; line < s.size();) {
+        size_t i = line;
+        while (i < s.size() && blank(s[i])) ++i;
+        if (i + 1 < s.size() && s[i] == 't' && blank(s[i + 1])) s[i] = '#';
+        const size_t end = s.find('\n', i);
+        line = end == std::string::npos ? s.size() : end + 1;
+    }
+    return s;
+}
+
 }  // namespace
 
 std::shared_ptr<const TriangleMesh> load_mesh_file(const MeshFileShape& shape,
@@ -43,9 +70,9 @@ std::shared_ptr<const TriangleMesh> load_mesh_file(const MeshFileShape& shape,
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
-    config.mtl_search_path = "";  // materials come from the scene, not from .mtl files
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(shape.path, config))
+    // Materials come from the scene: no .mtl file is read (the second text, empty).
+    if (!reader.ParseFromString(text_without_tags(shape.path, where), "", config))
         throw Error(fmt::format("{}: cannot read OBJ mesh: {} (mesh_file at {})", shape.path,
                                 reader.Error(), where));
     auto mesh = std::make_shared<TriangleMesh>();
