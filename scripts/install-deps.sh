@@ -32,14 +32,15 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # The Python module's build (nanobind, scikit-build-core) and tests (numpy, pytest, OpenEXR to
-# read raytrace's images), from PyPI into a virtual environment in the build folder: pip
+# read raytrace's images, Mitsuba 3 for its emitter plugin), from PyPI into a virtual environment in the build folder: pip
 # installing into the system's Python would shadow Debian's python3-* packages (Debian 12 refuses
 # it without --break-system-packages), and removing the build folder removes it with the rest.
 # CMake builds the module for this environment's Python (-DPython_EXECUTABLE, scripts/test.sh).
 venv="${RAYSET_VENV:-$(cd "$(dirname "$0")/.." && pwd)/build/venv}"
-python_packages=("nanobind>=2.4" "scikit-build-core>=0.10" "numpy>=1.21" "pytest>=7" "OpenEXR>=3.2")
+python_packages=("nanobind>=2.4" "scikit-build-core>=0.10" "numpy>=1.21" "pytest>=7" "OpenEXR>=3.2"
+                 "mitsuba>=3.9,<4")
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
-imports="import nanobind, scikit_build_core, numpy, pytest, OpenEXR"
+imports="import nanobind, scikit_build_core, numpy, pytest, OpenEXR, mitsuba"
 if ! "$venv/bin/python" -c "$imports" 2> /dev/null; then
   echo "Installing into $venv: ${python_packages[*]}"
   "$venv/bin/python" -m pip install -q --disable-pip-version-check "${python_packages[@]}"

@@ -4,6 +4,7 @@
 #include "arrays.h"
 
 #include <nanobind/stl/filesystem.h>
+#include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
@@ -45,6 +46,19 @@ SpectralSelect select_of(const std::string& quantity, int band) {
         throw nb::value_error("quantity must be 'flux' (the model's flux unit) or 'luminous' (lm)");
     s.band = band;
     return s;
+}
+
+// The wavelengths of row i of an N x 4 array (nm) as a query whose values start at zero.
+lightmodel::SpectralQuery query_of(const Randoms& wavelengths, size_t i) {
+    lightmodel::SpectralQuery q;
+    for (int k = 0; k < 4; ++k) q.nm[k] = wavelengths(i, k);
+    return q;
+}
+
+void check_wavelengths(const std::optional<Randoms>& wavelengths, size_t rows) {
+    if (!wavelengths) return;
+    check_rows(rows, wavelengths->shape(0), "wavelengths");
+    if (wavelengths->shape(1) != 4) throw nb::value_error("wavelengths must have 4 columns (nm)");
 }
 
 void put_rgb(double* out, size_t i, const Rgb& c) {
@@ -194,11 +208,13 @@ public:
     }
 
     nb::dict L(const Points& origin, const Points& direction, double tmax,
-               const std::string& quantity, int band) const {
+               const std::string& quantity, int band,
+               const std::optional<Randoms>& wavelengths) const {
         const SpectralSelect select = select_of(quantity, band);
         const size_t n = origin.shape(0);
         check_rows(n, direction.shape(0), "direction");
-        NewArray<double> radiance({n}), colour({n, 3});
+        check_wavelengths(wavelengths, n);
+        NewArray<double> radiance({n}), colour({n, 3}), spectral({wavelengths ? n : 0, 4});
         NewArray<bool> hit({n});
         each_row(n, [&](size_t i) {
             const Vec3 o = python::point(origin, i), w = python::point(direction, i);
@@ -207,33 +223,44 @@ public:
             if (!hit.data[i]) return;
             radiance.data[i] = source_->L(o, w, h, select);
             put_rgb(colour.data, i, source_->L_colour(o, w, h));
+            if (!wavelengths) return;
+            lightmodel::SpectralQuery q = query_of(*wavelengths, i);
+            source_->L_spectral(o, w, h, q);
+            std::copy(q.value, q.value + 4, spectral.data + 4 * i);
         });
         nb::dict d;
         d["L"] = radiance.array, d["colour"] = colour.array, d["hit"] = hit.array;
+        if (wavelengths) d["spectral"] = spectral.array;
         return d;
     }
 
-    nb::dict sample_Li(const Points& ref, const Randoms& u, const std::string& quantity,
-                       int band) const {
+    nb::dict sample_Li(const Points& ref, const Randoms& u, const std::string& quantity, int band,
+                       const std::optional<Randoms>& wavelengths) const {
         const SpectralSelect select = select_of(quantity, band);
         const size_t n = ref.shape(0);
         check_rows(n, u.shape(0), "u");
         if (u.shape(1) != 5) throw nb::value_error("u must have 5 columns (cell, voxel, point)");
+        check_wavelengths(wavelengths, n);
         NewArray<bool> valid({n});
-        NewArray<double> wi({n, 3}), distance({n}), Li({n}), pdf({n}), colour({n, 3});
+        NewArray<double> wi({n, 3}), distance({n}), Li({n}), pdf({n}), colour({n, 3}),
+            spectral({wavelengths ? n : 0, 4});
         each_row(n, [&](size_t i) {
             const double* r = u.data() + 5 * i;
-            const auto s =
-                source_->sample_Li(python::point(ref, i), r[0], r[1], {r[2], r[3], r[4]}, select);
+            lightmodel::SpectralQuery q;
+            if (wavelengths) q = query_of(*wavelengths, i);
+            const auto s = source_->sample_Li(python::point(ref, i), r[0], r[1], {r[2], r[3], r[4]},
+                                              select, wavelengths ? &q : nullptr);
             valid.data[i] = bool(s);
             if (!s) return;
             put(wi.data, i, s->wi);
             distance.data[i] = s->distance, Li.data[i] = s->Li, pdf.data[i] = s->pdf;
             put_rgb(colour.data, i, s->Li_colour);
+            if (wavelengths) std::copy(q.value, q.value + 4, spectral.data + 4 * i);
         });
         nb::dict d;
         d["valid"] = valid.array, d["wi"] = wi.array, d["distance"] = distance.array;
         d["Li"] = Li.array, d["pdf"] = pdf.array, d["colour"] = colour.array;
+        if (wavelengths) d["spectral"] = spectral.array;
         return d;
     }
 
@@ -318,12 +345,17 @@ void bind_model(nb::module_& m) {
              "Where rays meet the body: hit, t, point, normal (arrays; rows of N x 3).")
         .def("L", &Model::L, nb::arg("origin"), nb::arg("direction"), nb::arg("tmax") = inf,
              nb::arg("quantity") = "flux", nb::arg("band") = -1,
+             nb::arg("wavelengths") = nb::none(),
              "Radiance arriving at each origin along its direction from the body it meets: "
-             "L, colour (linear sRGB), hit; 0 where the ray misses the body.")
+             "L, colour (linear sRGB), hit; 0 where the ray misses the body. With wavelengths "
+             "(N x 4, nm) also spectral (N x 4): the radiance per nm there, scaled so that its "
+             "integral against V(lambda) is the colour's luminance.")
         .def("sample_Li", &Model::sample_Li, nb::arg("ref"), nb::arg("u"),
              nb::arg("quantity") = "flux", nb::arg("band") = -1,
+             nb::arg("wavelengths") = nb::none(),
              "Light sampling from points ref (N x 3) with uniform numbers u (N x 5: cell, "
-             "voxel, point x 3): valid, wi, distance, Li, pdf (sr^-1), colour.")
+             "voxel, point x 3): valid, wi, distance, Li, pdf (sr^-1), colour; with "
+             "wavelengths (N x 4, nm) also spectral, as L gives it.")
         .def("pdf_Li", &Model::pdf_Li, nb::arg("ref"), nb::arg("wi"),
              "Solid-angle density of sample_Li drawing wi from ref.")
         .def("sample_Le", &Model::sample_Le, nb::arg("u"), nb::arg("quantity") = "flux",

@@ -44,4 +44,8 @@ NB_MODULE(_rayset, m) {
     bind_photometry(m);
     bind_model(m);
     bind_render(m);
+    // A plugin registered with another extension (Mitsuba's emitter registry) keeps this module's
+    // types alive past the interpreter's shutdown, where nanobind would report them as leaks.
+    m.def("set_leak_warnings", &nb::set_leak_warnings, nb::arg("enabled"),
+          "Whether nanobind reports this module's objects still alive at shutdown.");
 }

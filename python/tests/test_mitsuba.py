@@ -1,0 +1,178 @@
+"""The "rayset" emitter in Mitsuba 3 (scalar variants) against independent truths: the
+luminance raytrace's direct-visibility layer gives the same body, Mitsuba's own disk area light
+for a Lambertian disk given as rays, and the RGB variant for the spectral one."""
+
+import math
+
+import numpy as np
+import pytest
+
+import rayset
+from conftest import rayconv, run, tool
+
+mi = pytest.importorskip("mitsuba", reason="Mitsuba 3 is not installed (pip install mitsuba)")
+import rayset.mitsuba  # noqa: E402
+
+# Linear-sRGB luminance weights (the colour convention of the model, lightmodel/srgb.h).
+LUMA = np.array([0.2126, 0.7152, 0.0722])
+# raytrace's luminance is in cd/m^2: the model's colour is per mm^2 and its Y is lm / 683.
+CD_PER_M2 = 683.0 * 1e6
+
+
+@pytest.fixture(scope="module")
+def chips(data):
+    """Seven chips of three colours (1 W), built into a model: 200000 rays, seed 5."""
+    rays = data / "chips.tm25ray"
+    rayconv("synth", "cluster", "rings=1,6", "--rays", 200000, "--seed", 5, "-o", rays)
+    model = data / "chips.vdb"
+    run(tool("raymodel"), "build", rays, "-o", model, "--threads", 2)
+    return model
+
+
+@pytest.fixture(scope="module")
+def white_disk(data):
+    """A Lambertian disk of radius 3 mm with a flat spectrum over 400-700 nm: 50000 rays."""
+    spectrum = data / "flat.txt"
+    spectrum.write_text("400 1\n500 1\n600 1\n700 1\n")
+    rays = data / "white_disk.tm25ray"
+    rayconv("synth", "disk", "radius=3", f"spectrum={spectrum}", "--rays", 50000, "--seed", 4,
+            "-o", rays)
+    model = data / "white_disk.vdb"
+    run(tool("raymodel"), "build", rays, "-o", model, "--threads", 2)
+    return model
+
+
+@pytest.fixture(scope="module")
+def lambertian_disk(data):
+    """A 1 W Lambertian disk of radius 50 mm at 555 nm: 200000 rays, seed 3, and its model."""
+    rays = data / "disk50.tm25ray"
+    rayconv("synth", "disk", "radius=50", "flux=1", "--rays", 200000, "--seed", 3, "-o", rays)
+    model = data / "disk50.vdb"
+    run(tool("raymodel"), "build", rays, "-o", model, "--threads", 2)
+    return model
+
+
+def variant(name):
+    mi.set_variant(name)
+    rayset.mitsuba.register()
+    return mi.ScalarTransform4f
+
+
+def luminance(image) -> np.ndarray:
+    return np.asarray(image, dtype=np.float64)[..., :3] @ LUMA
+
+
+def front_view(model, width, height, spp, seed):
+    """The chips seen head-on from 40 mm, 30 degrees across, nothing behind them."""
+    T = mi.ScalarTransform4f
+    scene = mi.load_dict({
+        "type": "scene",
+        "integrator": {"type": "path", "max_depth": 3},
+        "sensor": {"type": "perspective", "fov": 30, "fov_axis": "x",
+                   "to_world": T().look_at(origin=[0, 0, 40], target=[0, 0, 0], up=[0, 1, 0]),
+                   "film": {"type": "hdrfilm", "width": width, "height": height,
+                            "rfilter": {"type": "box"}},
+                   "sampler": {"type": "independent"}},
+        "chips": rayset.mitsuba.source(model),
+    })
+    return luminance(mi.render(scene, spp=spp, seed=seed))
+
+
+def test_register_refuses_jit_variants():
+    if "llvm_ad_rgb" not in mi.variants():
+        pytest.skip("no llvm variant in this Mitsuba")
+    # Setting the variant is enough: the refusal comes before any JIT code runs.
+    mi.set_variant("llvm_ad_rgb")
+    with pytest.raises(RuntimeError, match="scalar"):
+        rayset.mitsuba.register()
+
+
+def test_body_seen_with_the_luminance_raytrace_gives(chips, tmp_path):
+    variant("scalar_rgb")
+    mitsuba_mean = front_view(chips, 48, 48, 64, seed=1).mean() * CD_PER_M2
+    scene = tmp_path / "front.pov"
+    scene.write_text(
+        '#version 3.7;\n'
+        'global_settings { length_unit "mm" integrator "bidirectional" }\n'
+        'camera { location <0, 0, 40> right x up y look_at <0, 0, 0> angle 30 }\n'
+        f'ray_source {{ "{chips}" }}\n')
+    image = rayset.render(scene, width=48, height=48, passes=64, seed=1,
+                          include_paths=[str(chips.parent)])
+    direct = image["layers"]["direct_visibility"]
+    raytrace_mean = float(np.mean(direct["Y"]))
+    print(f"mean luminance: Mitsuba {mitsuba_mean:.6g} cd/m^2, raytrace {raytrace_mean:.6g}")
+    assert raytrace_mean > 0
+    # Both means carry Monte Carlo noise of well under 0.5% at these sample counts (the
+    # chips cover about a tenth of the view); 2% is the agreement asked of the emitter.
+    assert mitsuba_mean == pytest.approx(raytrace_mean, rel=0.02)
+
+
+def test_spectral_variant_gives_the_rgb_luminance(white_disk):
+    means = {}
+    for name in ("scalar_rgb", "scalar_spectral"):
+        variant(name)
+        means[name] = np.array([front_view(white_disk, 16, 16, 512, seed=s).mean()
+                                for s in range(8)])
+    rgb, spectral = means["scalar_rgb"], means["scalar_spectral"]
+    joint = math.sqrt(rgb.var(ddof=1) / 8 + spectral.var(ddof=1) / 8)
+    print(f"mean: RGB {rgb.mean():.6g}, spectral {spectral.mean():.6g} (joint error {joint:.2g})")
+    # Student's t with about 7 degrees of freedom: 4 standard errors is a two-sided 99.5% bound.
+    assert abs(spectral.mean() - rgb.mean()) < 4 * joint
+    assert joint < 0.01 * rgb.mean()  # the bound is tight enough to mean something
+
+
+def grey_box(light, width, height):
+    """The closed grey box of tests/bench/grey_box (mm): walls 0.6, floor 0.4, a block."""
+    T = mi.ScalarTransform4f
+
+    def box(lower, upper, reflectance, inward=False):
+        lower, upper = np.array(lower, float), np.array(upper, float)
+        return {"type": "cube", "flip_normals": inward,
+                "to_world": T().translate(((lower + upper) / 2).tolist())
+                .scale(((upper - lower) / 2).tolist()),
+                "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb",
+                                                            "value": [reflectance] * 3}}}
+
+    return mi.load_dict({
+        "type": "scene",
+        "integrator": {"type": "path", "max_depth": -1},
+        "sensor": {"type": "perspective", "fov": 90, "fov_axis": "x",
+                   "to_world": T().look_at(origin=[0, 1000, -950], target=[0, 700, 0],
+                                           up=[0, 1, 0]),
+                   "film": {"type": "hdrfilm", "width": width, "height": height,
+                            "rfilter": {"type": "box"}},
+                   "sampler": {"type": "independent"}},
+        "room": box([-1000, 0, -1000], [1000, 2000, 1000], 0.6, inward=True),
+        "floor": box([-999, 0, -999], [999, 1, 999], 0.4),
+        "block": box([-300, 1, -200], [100, 500, 300], 0.6),
+        "light": light,
+    }, optimize=False)
+
+
+def test_grey_box_lit_as_by_mitsubas_disk_light(lambertian_disk):
+    T = variant("scalar_rgb")
+    # The disk on the ceiling facing down: its model turned as Mitsuba's disk is.
+    to_world = T().translate([0, 1999, 0]).rotate([1, 0, 0], 90)
+    colour = np.array(rayset.Model.load(lambertian_disk).phi_colour())
+    radiance = colour / (math.pi * math.pi * 50**2)  # Lambertian: L = phi / (pi area)
+    ours = grey_box(rayset.mitsuba.source(lambertian_disk, to_world), 16, 16)
+    theirs = grey_box({"type": "disk", "to_world": to_world.scale(50),
+                       "bsdf": {"type": "diffuse", "reflectance": 0.0},
+                       "emitter": {"type": "area",
+                                   "radiance": {"type": "rgb", "value": radiance.tolist()}}},
+                      16, 16)
+    # Four independent renders of each give every pixel's mean and standard error.
+    a = np.array([luminance(mi.render(ours, spp=32, seed=s)) for s in range(4)])
+    b = np.array([luminance(mi.render(theirs, spp=32, seed=10 + s)) for s in range(4)])
+    joint = np.sqrt(a.var(axis=0, ddof=1) / 4 + b.var(axis=0, ddof=1) / 4)
+    z = (a.mean(axis=0) - b.mean(axis=0)) / joint
+    mean_error = math.sqrt(a.mean(axis=(1, 2)).var(ddof=1) / 4
+                           + b.mean(axis=(1, 2)).var(ddof=1) / 4) / b.mean()
+    print(f"grey box mean: rayset {a.mean():.6g}, area light {b.mean():.6g} (joint error "
+          f"{100 * mean_error:.2f}%); RMS of the pixels' z {math.sqrt(np.mean(z**2)):.3f}")
+    assert mean_error < 0.004  # so that 1% is 2.5 or more standard errors
+    assert a.mean() == pytest.approx(b.mean(), rel=0.01)
+    # Each z is about Student's t with 6 degrees of freedom: mean z^2 = 1.5, with a standard
+    # error of 0.21 over 256 independent pixels. RMS 1.6 (mean z^2 2.56, five standard errors
+    # above) fails a systematic difference of about one standard error in every pixel.
+    assert math.sqrt(np.mean(z**2)) < 1.6
