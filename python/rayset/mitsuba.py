@@ -84,15 +84,16 @@ def source(filename: str, to_world=None, build_options: Optional[dict] = None,
 
     model = load_model(filename, build_options)
     lower, upper = (np.array(c, dtype=float) for c in model.bounds)
-    centre = (lower + upper) / 2
     radius = float(np.linalg.norm(upper - lower)) / 2 * (1 + margin) + margin
     to_world = to_world if to_world is not None else mi.ScalarTransform4f()
+    frame = _Frame(to_world)
+    centre = frame.scene_point((lower + upper) / 2)
     emitter = {"type": "rayset", "filename": os.fspath(filename), "to_world": to_world,
                "quantity": quantity}
     if build_options:
         emitter["build_options"] = build_options
-    return {"type": "sphere", "center": centre.tolist(), "radius": radius,
-            "to_world": to_world, "emitter": emitter,
+    return {"type": "sphere", "center": centre.tolist(), "radius": radius * frame.scale,
+            "emitter": emitter,
             "bsdf": {"type": "dielectric", "int_ior": 1.0, "ext_ior": 1.0}}
 
 
@@ -133,8 +134,10 @@ class _Frame:
         return (self.A_inverse @ (np.array([p[0], p[1], p[2]], dtype=float) - self.t))[None]
 
     def model_direction(self, d) -> np.ndarray:
+        """A scene direction as a unit row (1 x 3) in the model's frame; zero for none."""
         v = self.A_inverse @ np.array([d[0], d[1], d[2]], dtype=float)
-        return (v / np.linalg.norm(v))[None]
+        length = np.linalg.norm(v)
+        return (v / length if length > 0 and np.isfinite(length) else v * 0.0)[None]
 
     def scene_point(self, p) -> np.ndarray:
         return self.A @ p + self.t
@@ -175,7 +178,7 @@ def register() -> None:
             self.m_needs_sample_2 = True
             self.m_needs_sample_3 = True
 
-        def _radiance(self, result, i, wavelengths) -> mi.Spectrum:
+        def _radiance(self, result, i) -> mi.Spectrum:
             """The Spectrum of row i of a query result, in the scene's units."""
             if spectral:
                 values = result["spectral"][i] * (spectral_scale * self.radiance_scale)
@@ -186,18 +189,25 @@ def register() -> None:
         def _wavelength_rows(self, wavelengths):
             return np.array([[float(w) for w in wavelengths]]) if spectral else None
 
+        def _L(self, p, d, wavelengths) -> mi.Spectrum:
+            """Radiance arriving at scene point p from the body along scene direction d."""
+            direction = self.frame.model_direction(d)
+            if not direction.any():
+                return mi.Spectrum(0.0)
+            r = self.model.L(self.frame.model_point(p), direction, quantity=self.quantity,
+                             wavelengths=self._wavelength_rows(wavelengths))
+            return self._radiance(r, 0) if r["hit"][0] else mi.Spectrum(0.0)
+
         # Emitter interface ----------------------------------------------------------------
         def eval(self, si, active=True):
-            if mi.Frame3f.cos_theta(si.wi) <= 0:
+            if not active or mi.Frame3f.cos_theta(si.wi) <= 0:
                 return mi.Spectrum(0.0)
-            d = -si.to_world(si.wi)
-            r = self.model.L(self.frame.model_point(si.p), self.frame.model_direction(d),
-                             quantity=self.quantity,
-                             wavelengths=self._wavelength_rows(si.wavelengths))
-            return self._radiance(r, 0, si.wavelengths) if r["hit"][0] else mi.Spectrum(0.0)
+            return self._L(si.p, -si.to_world(si.wi), si.wavelengths)
 
         def sample_direction(self, it, sample, active=True):
             ds = mi.DirectionSample3f()
+            if not active:
+                return ds, mi.Spectrum(0.0)
             ref = self.frame.model_point(it.p)
             u = np.array([_uniforms(float(sample[0]), float(sample[1]), 3)])
             u = np.array([[u[0, 0], u[0, 1], float(sample[0]), float(sample[1]), u[0, 2]]])
@@ -218,7 +228,7 @@ def register() -> None:
             else:
                 ds.p, ds.n, ds.delta = entry
                 ds.dist = _norm(ds.p - it.p)
-            weight = self._radiance(s, 0, it.wavelengths) / ds.pdf
+            weight = self._radiance(s, 0) / ds.pdf
             return ds, weight
 
         def _entry(self, p, w):
@@ -237,16 +247,15 @@ def register() -> None:
             return si.p, si.n, False
 
         def pdf_direction(self, it, ds, active=True):
-            if ds.delta:
+            direction = self.frame.model_direction(ds.d)
+            if not active or ds.delta or not direction.any():
                 return 0.0
-            return float(self.model.pdf_Li(self.frame.model_point(it.p),
-                                           self.frame.model_direction(ds.d))[0])
+            return float(self.model.pdf_Li(self.frame.model_point(it.p), direction)[0])
 
         def eval_direction(self, it, ds, active=True):
-            r = self.model.L(self.frame.model_point(it.p), self.frame.model_direction(ds.d),
-                             quantity=self.quantity,
-                             wavelengths=self._wavelength_rows(it.wavelengths))
-            return self._radiance(r, 0, it.wavelengths) if r["hit"][0] else mi.Spectrum(0.0)
+            if not active:
+                return mi.Spectrum(0.0)
+            return self._L(it.p, ds.d, it.wavelengths)
 
         def sample_ray(self, time, wavelength_sample, sample2, sample3, active=True):
             if spectral:
@@ -260,6 +269,32 @@ def register() -> None:
                            mi.Vector3f(*self.frame.scene_direction(s["direction"][0])), time)
             c = s["colour"][0]
             return ray, mi.Spectrum(float(c[0]), float(c[1]), float(c[2]))
+
+        def sample_position(self, time, sample, active=True):
+            # Light tracing's direct view of the body: a point on the enclosing shape, uniform in
+            # area; eval() gives the radiance the body sends through it toward the camera.
+            ps = self._shape("light tracing").sample_position(time, sample)
+            return ps, mi.Float(1.0 / ps.pdf if ps.pdf > 0 else 0.0)
+
+        def pdf_position(self, ps, active=True):
+            return self._shape("light tracing").pdf_position(ps)
+
+        def sample_wavelengths(self, si, sample, active=True):
+            # Light tracing's direct view: the radiance that leaves si.p toward si.wi (a scene
+            # direction, toward the camera), which is what the body sends through that point.
+            if spectral:
+                raise RuntimeError("rayset emitter: light tracing is not available in spectral "
+                                   "variants; use an RGB variant")
+            if not active:
+                return si.wavelengths, mi.Spectrum(0.0)
+            return si.wavelengths, self._L(si.p, -si.wi, si.wavelengths)
+
+        def _shape(self, purpose):
+            shape = self.get_shape()
+            if shape is None:
+                raise RuntimeError(f"rayset emitter {self.filename}: {purpose} needs the emitter "
+                                   "on a shape around the body (rayset.mitsuba.source())")
+            return shape
 
         def sampling_weight(self):
             return float(self.model.phi(self.quantity))

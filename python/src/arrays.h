@@ -78,6 +78,12 @@ inline void put(double* out, size_t i, Vec3 v) {
 
 // Rows of two arrays that go together must be as many.
 void check_rows(size_t a, size_t b, const char* what);
+// Values a query cannot use are refused with the first row that holds one (ValueError), before
+// they reach Embree, which asserts on a ray that is not finite: points finite, directions finite
+// and not zero, uniform numbers in [0, 1].
+void check_points(const Points& points, const char* what);
+void check_directions(const Points& directions, const char* what);
+void check_uniforms(const Randoms& u, const char* what);
 
 void bind_rays(nb::module_& m);
 void bind_photometry(nb::module_& m);

@@ -192,6 +192,7 @@ public:
     nb::dict intersect(const Points& origin, const Points& direction, double tmax) const {
         const size_t n = origin.shape(0);
         check_rows(n, direction.shape(0), "direction");
+        check_points(origin, "origin"), check_directions(direction, "direction");
         NewArray<bool> hit({n});
         NewArray<double> t({n}), point({n, 3}), normal({n, 3});
         each_row(n, [&](size_t i) {
@@ -213,6 +214,7 @@ public:
         const SpectralSelect select = select_of(quantity, band);
         const size_t n = origin.shape(0);
         check_rows(n, direction.shape(0), "direction");
+        check_points(origin, "origin"), check_directions(direction, "direction");
         check_wavelengths(wavelengths, n);
         NewArray<double> radiance({n}), colour({n, 3}), spectral({wavelengths ? n : 0, 4});
         NewArray<bool> hit({n});
@@ -240,6 +242,7 @@ public:
         const size_t n = ref.shape(0);
         check_rows(n, u.shape(0), "u");
         if (u.shape(1) != 5) throw nb::value_error("u must have 5 columns (cell, voxel, point)");
+        check_points(ref, "ref"), check_uniforms(u, "u");
         check_wavelengths(wavelengths, n);
         NewArray<bool> valid({n});
         NewArray<double> wi({n, 3}), distance({n}), Li({n}), pdf({n}), colour({n, 3}),
@@ -267,6 +270,7 @@ public:
     Array<double> pdf_Li(const Points& ref, const Points& wi) const {
         const size_t n = ref.shape(0);
         check_rows(n, wi.shape(0), "wi");
+        check_points(ref, "ref"), check_directions(wi, "wi");
         NewArray<double> pdf({n});
         each_row(n, [&](size_t i) {
             pdf.data[i] = source_->pdf_Li(python::point(ref, i), python::point(wi, i));
@@ -278,6 +282,7 @@ public:
         const SpectralSelect select = select_of(quantity, band);
         const size_t n = u.shape(0);
         if (u.shape(1) != 7) throw nb::value_error("u must have 7 columns");
+        check_uniforms(u, "u");
         NewArray<double> origin({n, 3}), direction({n, 3}), flux({n}), pdf_position({n}),
             pdf_direction({n}), colour({n, 3});
         NewArray<int32_t> cell({n});
@@ -298,6 +303,7 @@ public:
     nb::tuple pdf_Le(const Points& origin, const Points& direction) const {
         const size_t n = origin.shape(0);
         check_rows(n, direction.shape(0), "direction");
+        check_points(origin, "origin"), check_directions(direction, "direction");
         NewArray<double> position({n}), dir({n});
         each_row(n, [&](size_t i) {
             source_->pdf_Le(python::point(origin, i), python::point(direction, i), position.data[i],
@@ -309,6 +315,7 @@ public:
     Array<double> intensity(const Points& direction, const std::string& quantity, int band) const {
         const SpectralSelect select = select_of(quantity, band);
         const size_t n = direction.shape(0);
+        check_directions(direction, "direction");
         NewArray<double> out({n});
         each_row(n, [&](size_t i) {
             out.data[i] = source_->intensity(python::point(direction, i), select);

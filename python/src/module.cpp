@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <sys/mman.h>
 
+#include <cmath>
 #include <new>
 
 namespace rayset::python {
@@ -27,6 +28,32 @@ void* allocate(size_t bytes) {
 
 void check_rows(size_t a, size_t b, const char* what) {
     if (a != b) throw nb::value_error(fmt::format("{}: {} rows against {}", what, a, b).c_str());
+}
+
+void check_points(const Points& points, const char* what) {
+    for (size_t i = 0; i < points.shape(0); ++i)
+        for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(points(i, k)))
+                throw nb::value_error(
+                    fmt::format("{}: row {} holds {} (finite values only)", what, i, points(i, k))
+                        .c_str());
+}
+
+void check_directions(const Points& directions, const char* what) {
+    check_points(directions, what);
+    for (size_t i = 0; i < directions.shape(0); ++i)
+        if (directions(i, 0) == 0 && directions(i, 1) == 0 && directions(i, 2) == 0)
+            throw nb::value_error(
+                fmt::format("{}: row {} is zero, not a direction", what, i).c_str());
+}
+
+void check_uniforms(const Randoms& u, const char* what) {
+    const double* v = u.data();
+    for (size_t i = 0; i < u.size(); ++i)
+        if (!(v[i] >= 0 && v[i] <= 1))
+            throw nb::value_error(fmt::format("{}: row {} holds {} (uniform numbers lie in [0, 1])",
+                                              what, i / u.shape(1), v[i])
+                                      .c_str());
 }
 
 }  // namespace rayset::python

@@ -149,7 +149,8 @@ def grey_box(light, width, height):
     }, optimize=False)
 
 
-def test_grey_box_lit_as_by_mitsubas_disk_light(lambertian_disk):
+def grey_boxes(lambertian_disk):
+    """The grey box lit by the disk's model and by Mitsuba's disk area light of its radiance."""
     T = variant("scalar_rgb")
     # The disk on the ceiling facing down: its model turned as Mitsuba's disk is.
     to_world = T().translate([0, 1999, 0]).rotate([1, 0, 0], 90)
@@ -161,6 +162,24 @@ def test_grey_box_lit_as_by_mitsubas_disk_light(lambertian_disk):
                        "emitter": {"type": "area",
                                    "radiance": {"type": "rgb", "value": radiance.tolist()}}},
                       16, 16)
+    return ours, theirs
+
+
+def test_light_tracing_lights_the_grey_box_as_mitsubas_disk_light(lambertian_disk):
+    ours, theirs = grey_boxes(lambertian_disk)
+    ptracer = mi.load_dict({"type": "ptracer", "max_depth": -1})
+    a, b = (np.array([luminance(mi.render(scene, integrator=ptracer, spp=32, seed=s)).mean()
+                      for s in range(4)]) for scene in (ours, theirs))
+    joint = math.sqrt(a.var(ddof=1) / 4 + b.var(ddof=1) / 4)
+    print(f"grey box, light tracing: rayset {a.mean():.6g}, area light {b.mean():.6g} "
+          f"(joint error {100 * joint / b.mean():.2f}%)")
+    assert joint < 0.015 * b.mean()
+    # Student's t with about 6 degrees of freedom: 4 standard errors is a two-sided 99% bound.
+    assert abs(a.mean() - b.mean()) < 4 * joint
+
+
+def test_grey_box_lit_as_by_mitsubas_disk_light(lambertian_disk):
+    ours, theirs = grey_boxes(lambertian_disk)
     # Four independent renders of each give every pixel's mean and standard error.
     a = np.array([luminance(mi.render(ours, spp=32, seed=s)) for s in range(4)])
     b = np.array([luminance(mi.render(theirs, spp=32, seed=10 + s)) for s in range(4)])

@@ -136,3 +136,19 @@ def test_radiance_seen_from_above(model):
     assert hit["t"][0] == pytest.approx(10 - hit["point"][0][2])
     with pytest.raises(ValueError, match="rows"):
         model.pdf_Li(origin, direction[:2])
+
+
+def test_queries_refuse_values_they_cannot_use(model):
+    """Non-finite points, zero directions and numbers outside [0, 1] are refused with the row,
+    before they reach Embree (which asserts on a ray that is not finite and ends the process)."""
+    good, zero = np.array([[0.0, 0.0, 10.0]]), np.zeros((1, 3))
+    with pytest.raises(ValueError, match="direction: row 0 is zero"):
+        model.L(good, zero)
+    with pytest.raises(ValueError, match="direction: row 1 holds nan"):
+        model.intersect(np.repeat(good, 2, axis=0), np.array([[0, 0, -1.0], [0, np.nan, 1]]))
+    with pytest.raises(ValueError, match="ref: row 0 holds inf"):
+        model.pdf_Li(np.array([[np.inf, 0, 0]]), np.array([[0, 0, -1.0]]))
+    with pytest.raises(ValueError, match=r"u: row 0 holds 1.5 \(uniform numbers lie in \[0, 1\]\)"):
+        model.sample_Li(good, np.array([[0.5, 0.5, 1.5, 0.5, 0.5]]))
+    with pytest.raises(ValueError, match="u: row 0 holds nan"):
+        model.sample_Le(np.array([[0.5] * 6 + [np.nan]]))
