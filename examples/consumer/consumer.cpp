@@ -4,17 +4,13 @@
 // Usage: consumer MODEL.vdb [PHOTONS]
 // Prints the model's flux, the mean flux of the photons drawn (the flux again, within its
 // Monte Carlo error) and the irradiance estimated by light sampling 100 mm above the source.
+#include <rayset/model.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-
-#include "core/error.h"
-#include "core/random.h"
-#include "lightmodel/complex_source.h"
-#include "lightmodel/model_file.h"
-
-using namespace rayset;
 
 int main(int argc, char** argv) {
     if (argc < 2) {
@@ -23,10 +19,9 @@ int main(int argc, char** argv) {
     }
     const long photons = argc > 2 ? std::atol(argv[2]) : 100000;
     try {
-        auto model =
-            std::make_shared<const lightmodel::LightModel>(lightmodel::read_model(argv[1]));
-        const lightmodel::ComplexSource source(model);
-        Pcg32 rng(1);
+        auto model = std::make_shared<const rayset::LightModel>(rayset::read_model(argv[1]));
+        const rayset::ComplexSource source(model);
+        rayset::Pcg32 rng(1);
 
         // Photon emission: each photon carries its flux divided by the densities it was drawn
         // with, so their mean is the source's flux.
@@ -41,7 +36,7 @@ int main(int argc, char** argv) {
         const double error = std::sqrt(std::max(0.0, square / photons - mean * mean) / photons);
 
         // Light sampling: irradiance at a point 100 mm above the source, normal toward it.
-        const Vec3 point{0, 0, 100};
+        const rayset::Vec3 point{0, 0, 100};
         double irradiance = 0;
         for (long i = 0; i < photons; ++i) {
             const auto s = source.sample_Li(point, rng.uniform(), rng.uniform(),
@@ -50,7 +45,7 @@ int main(int argc, char** argv) {
         }
         std::printf("flux %.9g\nphoton mean %.9g +- %.3g\nirradiance at 100 mm %.6g\n",
                     source.phi(), mean, error, irradiance / photons);
-    } catch (const Error& e) {
+    } catch (const rayset::Error& e) {
         std::fprintf(stderr, "consumer: %s\n", e.what());
         return 1;
     }

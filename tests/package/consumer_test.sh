@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The CMake package from outside: installs the build tree into a scratch prefix, builds
-# examples/consumer against that copy only (find_package(rayset CONFIG)), and runs it on the model
+# examples/consumer against that copy only (find_package(rayset CONFIG)), compiles each public
+# header (P/include/rayset/*.h) alone against it, and runs the consumer on the model
 # of a Lambertian disk (radius 1 mm, 1 W). Its figures against closed forms: the model's flux is
 # the rays' (1 W to float rounding), the mean photon flux is that flux (the model samples photons
 # in proportion to flux, so each carries the same flux / pdf: equal to 1e-6 of it, the printed
@@ -16,6 +17,30 @@ cmake --install "$build_dir" --prefix "$work/prefix" > "$work/install.log"
 cmake -S "$source_dir/examples/consumer" -B "$work/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
 cmake --build "$work/consumer" > "$work/build.log"
+# Each public header compiles alone, the first include of a file of its own, against the installed
+# copy and linked to the library its top comment names ("Link rayset::NAME"): a header that
+# leans on something its users would have to include first, or names the wrong library, fails.
+headers=$work/headers
+mkdir -p "$headers"
+{
+  echo 'cmake_minimum_required(VERSION 3.22)'
+  echo 'project(rayset_public_headers LANGUAGES C CXX)'
+  echo 'set(CMAKE_CXX_STANDARD 17)'
+  echo 'set(CMAKE_CXX_STANDARD_REQUIRED ON)'
+  echo 'find_package(rayset CONFIG REQUIRED)'
+  for header in "$work/prefix/include/rayset/"*.h; do
+    name=$(basename "$header" .h)
+    library=$(grep -o -m1 'Link rayset::[a-z_]*' "$header" | cut -d' ' -f2) ||
+      { echo "$header: its top comment names no library (Link rayset::NAME)" >&2; exit 1; }
+    echo "#include <rayset/$name.h>" > "$headers/$name.cpp"
+    echo "add_library(header_$name OBJECT $name.cpp)"
+    echo "target_link_libraries(header_$name PRIVATE $library)"
+  done
+} > "$headers/CMakeLists.txt"
+cmake -S "$headers" -B "$headers/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" \
+  > "$work/headers-configure.log"
+cmake --build "$headers/build" > "$work/headers-build.log"
+echo "public headers compile alone: $(cd "$work/prefix/include/rayset" && echo *.h)"
 "$work/prefix/bin/rayconv" synth disk radius=1 flux=1 --rays 200000 --seed 5 -o "$work/disk.tm25ray" > /dev/null
 "$work/prefix/bin/raymodel" build "$work/disk.tm25ray" -o "$work/disk.vdb" > /dev/null
 "$work/consumer/consumer" "$work/disk.vdb" 200000 | tee "$work/consumer.txt"
