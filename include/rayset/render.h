@@ -1,7 +1,7 @@
 // rayset's public API: a POV-Ray 3.7 scene file read and rendered as `raytrace` reads and
 // renders it (path tracer, or the bidirectional integrator that renders ray-file sources through
-// their models), and the image and illuminance maps written as raytrace writes them. Link
-// rayset::tracer. docs/api.md has the whole public API and examples.
+// their models), and the image and illuminance maps written as raytrace writes them.
+// Link rayset::tracer. docs/api.md has the whole public API and examples.
 //
 // Units: scene lengths in the scene's unit (global_settings { length_unit }, mm by default).
 // The image holds linear-sRGB radiance in W/(m^2 sr) per channel, receivers irradiance in W/m^2
