@@ -64,6 +64,10 @@ if [ "$(cat "$paraview_root/version" 2> /dev/null)" != "$paraview_version" ]; th
   rm -rf "$paraview_root"
   dpkg-deb -x "$deb_dir"/python3-paraview_*.deb "$paraview_root"
   cp /usr/bin/paraview "$paraview_root/usr/bin/paraview"
+  # ParaView 5.11.0's loader of Python plugins imports inspect.getargspec, which Python 3.11 no
+  # longer has, so no Python plugin loads; getfullargspec is its replacement (same .args).
+  sed -i 's/\bgetargspec\b/getfullargspec/g' \
+    "$paraview_root/usr/lib/python3/dist-packages/paraview/detail/pythonalgorithm.py"
   echo "$paraview_version" > "$paraview_root/version"
   rm -rf "$deb_dir"
 fi

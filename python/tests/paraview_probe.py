@@ -27,9 +27,8 @@ def describe(data):
         out["dims"] = list(data.GetDimensions())
         out["origin"] = list(data.GetOrigin())
         out["spacing"] = list(data.GetSpacing())
-    if data.GetNumberOfPoints():
-        xyz = numpy_support.vtk_to_numpy(data.GetPoints().GetData()).astype(np.float64) \
-            if data.GetPoints() is not None else None
+    if data.GetNumberOfPoints() and hasattr(data, "GetPoints"):  # not vtkImageData
+        xyz = numpy_support.vtk_to_numpy(data.GetPoints().GetData()).astype(np.float64)
         if xyz is not None:
             radius = np.linalg.norm(xyz, axis=1)
             out["max_radius"] = float(radius.max())
@@ -105,7 +104,7 @@ def vtk_libraries():
 def main():
     plugin, reader, path = sys.argv[1:4]
     properties = dict(arg.split("=", 1) for arg in sys.argv[4:])
-    namespace = {}
+    namespace = globals()
     LoadPlugin(plugin, ns=namespace)
     if reader == "open":
         proxy = OpenDataFile(path)
