@@ -2,10 +2,9 @@
 reader plugin beside this file (docs/gallery/paraview-model-rays.png).
 
     PYTHONPATH=build/python xvfb-run -a build/paraview/usr/bin/pvpython \\
-        python/paraview/screenshot.py MODEL.vdb RAYS.tm25ray OUT.png [--rays 4000]
+        python/paraview/screenshot.py MODEL.vdb RAYS.tm25ray OUT.png [--rays-shown 1200]
 
-The spheres are drawn as ParaView's Point Gaussian spheres of their own radius, coloured by
-radius; a random sample of the rays as short segments from their origins along their directions,
+The spheres are drawn as ParaView's Point Gaussian spheres of their own radius; a random sample of the rays as short segments from their origins along their directions,
 coloured by wavelength (by flux when the file gives none). scripts/gallery.sh makes the gallery's
 picture from the synthetic 39-chip cluster.
 """
@@ -35,13 +34,14 @@ def main():
     parser.add_argument("model", help="model file (.vdb) of raymodel build")
     parser.add_argument("rays", help="ray file (any format rayset reads)")
     parser.add_argument("png", help="picture to write")
-    parser.add_argument("--rays-shown", type=int, default=4000, dest="shown",
+    parser.add_argument("--rays-shown", type=int, default=1200, dest="shown",
                         help="rays drawn, a random sample of the file's")
     parser.add_argument("--size", default="900x675", help="WIDTHxHEIGHT in pixels")
     args = parser.parse_args()
     width, height = (int(v) for v in args.size.lower().split("x"))
 
-    plugin = {}
+    # The readers' constructors land in this namespace (an empty dict would be taken for none).
+    plugin = globals()
     LoadPlugin(os.path.join(HERE, "rayset_reader.py"), ns=plugin)
     view = GetActiveViewOrCreate("RenderView")
     view.ViewSize = [width, height]
@@ -64,11 +64,8 @@ def main():
     spheres.ScaleTransferFunction.Points = [0, 0, 0.5, 0, 1, 1, 0.5, 0]
     spheres.GaussianRadius = 1.0
     spheres.ShaderPreset = "Sphere"
-    ColorBy(spheres, ("POINTS", "radius"))
-    radius_colours = GetColorTransferFunction("radius")
-    radius_colours.ApplyPreset("Grayscale", True)
-    spheres.SetScalarBarVisibility(view, True)
-    GetScalarBar(radius_colours, view).Title = "sphere radius (mm)"
+    ColorBy(spheres, None)
+    spheres.AmbientColor = spheres.DiffuseColor = [0.55, 0.58, 0.65]
 
     rays = plugin["raysetRayFileReader"](FileName=args.rays)
     rays.UpdatePipeline()
@@ -84,7 +81,7 @@ def main():
     segments = Glyph(Input=sample, GlyphType="Line")
     segments.OrientationArray = ["POINTS", "direction"]
     segments.ScaleArray = ["POINTS", "No scale array"]
-    segments.ScaleFactor = 0.6 * extent
+    segments.ScaleFactor = 0.35 * extent
     segments.GlyphMode = "All Points"
     # A line glyph is centred on its point: shift it to start at the ray's origin.
     segments.GlyphTransform.Translate = [0.5, 0, 0]
@@ -95,22 +92,31 @@ def main():
     ColorBy(lines, ("POINTS", colour))
     ray_colours = GetColorTransferFunction(colour)
     ray_colours.ApplyPreset("Rainbow Uniform", True)
-    lines.Opacity = 0.6
+    lines.Opacity = 0.5
     lines.SetScalarBarVisibility(view, True)
     bar = GetScalarBar(ray_colours, view)
     bar.Title = "ray wavelength (nm)" if colour == "wavelength" else f"ray {colour} flux"
-    for b in (bar, GetScalarBar(radius_colours, view)):
-        b.TitleColor = b.LabelColor = [0.1, 0.1, 0.1]
-    GetScalarBar(radius_colours, view).WindowLocation = "Upper Left Corner"
+    bar.TitleColor = bar.LabelColor = [0.1, 0.1, 0.1]
 
+    Render(view)  # the first render resets the camera: place it after
+    # Obliquely from above the emitting side (+z), so that both the body and the rays show.
+    centre = [(bounds[2 * a] + bounds[2 * a + 1]) / 2 for a in range(3)]
+    view.CameraFocalPoint = centre
+    view.CameraPosition = [centre[0] + 0.9 * extent, centre[1] - 1.6 * extent,
+                           centre[2] + 1.3 * extent]
+    view.CameraViewUp = [0, 0, 1]
     view.ResetCamera()
-    camera = view.GetActiveCamera()
-    camera.Elevation(-55)
-    camera.Azimuth(25)
-    view.ResetCamera()
-    camera.Zoom(1.3)
+    view.GetActiveCamera().Zoom(1.6)
     Render(view)
     SaveScreenshot(args.png, view, ImageResolution=[width, height], CompressionLevel="9")
+    try:
+        from PIL import Image  # python3-pil, which ParaView's matplotlib brings
+    except ImportError:
+        return
+    # 256 colours show this picture alike (flat background, a few hues) at a third of the bytes.
+    with Image.open(args.png) as image:
+        palette = image.convert("RGB").quantize(256, dither=Image.Dither.NONE)
+    palette.save(args.png, optimize=True)
 
 
 main()
