@@ -323,17 +323,37 @@ def test_model_diagrams_as_rayview_exports_them(model_file, model_truth):
 
 
 @pytest.mark.skipif(not (BUILD / "viz" / "rayview").is_file(), reason="rayview is not built")
-def test_model_lattices_equal_rayview_export(model_file, tmp_path):
+def test_model_equals_rayview_export(model_file, tmp_path):
+    """rayview --export writes the model's datasets with the project's VTK: ParaView's reader
+    of those files sees what the plugin makes of the model file itself."""
     folder = tmp_path / "export"
     run(tool("rayview"), model_file, "--export", folder)
-    ours = probe("raysetModelReader", model_file)["blocks"]
+    ours = probe("raysetModelReader", model_file, DiagramsAtCells=0)["blocks"]
     for name in ("density", "flux"):
         theirs = probe("open", folder / f"{name}.vti")
         assert ours[name]["dims"] == theirs["dims"]
         assert ours[name]["origin"] == pytest.approx(theirs["origin"], rel=1e-12, abs=1e-12)
+        assert ours[name]["spacing"] == pytest.approx(theirs["spacing"], rel=1e-12)
         for array, entry in theirs["arrays"].items():
             assert ours[name]["arrays"][array]["sum"] == pytest.approx(entry["sum"], rel=1e-9)
             assert ours[name]["arrays"][array]["nonzero"] == entry["nonzero"]
+    theirs = probe("open", folder / "spheres.vtp")
+    assert ours["spheres"]["points"] == theirs["points"]
+    assert ours["spheres"]["bounds"] == pytest.approx(theirs["bounds"], rel=1e-6)
+    assert ours["spheres"]["arrays"]["radius"]["sum"] == pytest.approx(
+        theirs["arrays"]["radius"]["sum"], rel=1e-6)
+    exported = sorted(p.stem for p in folder.glob("diagram_*.vtp"))
+    assert sorted(ours["diagrams"]["blocks"]) == exported
+    for name in exported[:3]:  # three: each file is one more start of pvpython
+        # The same directions (theta every 2, phi every 5 degrees), the poles repeated here.
+        theirs = probe("open", folder / f"{name}.vtp")
+        mine = ours["diagrams"]["blocks"][name]
+        for key in ("min", "max"):
+            assert mine["arrays"]["intensity"][key] == pytest.approx(
+                theirs["arrays"]["intensity"][key], rel=1e-9)
+        assert mine["bounds"] == pytest.approx(theirs["bounds"], rel=1e-9, abs=1e-15)
+        assert mine["fields"]["cell_flux"] == pytest.approx(theirs["fields"]["cell_flux"],
+                                                            rel=1e-12)
 
 
 def test_without_rayset_the_error_says_what_to_do(disk):
