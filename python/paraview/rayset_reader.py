@@ -11,29 +11,35 @@ Making `rayset` importable in ParaView
     repository makes it in BUILD/python (the module `_rayset` next to rayset/__init__.py), and it
     holds nothing else, so ParaView keeps Debian's numpy (python3-numpy):
 
-        PYTHONPATH=/path/to/rayset/build/python pvpython ...
-        PYTHONPATH=/path/to/rayset/build/python paraview --plugin .../rayset_reader.py
+        cmake --build build -j2 --target _rayset
+        PYTHONPATH=/path/to/rayset/build/python build/paraview/usr/bin/pvpython ...
 
     Any CPython 3.11 build of the module works (scripts/install-deps.sh builds it for the
     3.11 of build/venv). Without it, opening a file fails with a message that says this.
 
-Getting pvpython
-    Debian 12's python3-paraview (pvpython, ParaView's Python) conflicts with python3-vtk9, which
-    the project's build needs (libvtk9-dev): on a machine without the project's build
-    dependencies `apt-get install paraview python3-paraview`; on a developer's machine
-    scripts/install-deps.sh installs `paraview` and unpacks python3-paraview into
-    build/paraview, whose pvpython is build/paraview/usr/bin/pvpython (and whose
-    build/paraview/usr/bin/paraview is the GUI with that Python).
+Getting ParaView with its Python
+    Debian 12's python3-paraview (pvpython, and the GUI's Python) conflicts with python3-vtk9,
+    which the project's build needs (libvtk9-dev). scripts/install-deps.sh therefore installs
+    `paraview` and unpacks python3-paraview into build/paraview: build/paraview/usr/bin/pvpython,
+    and build/paraview/usr/bin/paraview, the GUI with that Python. It also mends the unpacked
+    ParaView 5.11.0, whose loader of Python plugins imports inspect.getargspec, gone from Python
+    3.11. With Debian's own python3-paraview (on a machine without libvtk9-dev) no Python plugin
+    loads until that name exists: run `import inspect; inspect.getargspec =
+    inspect.getfullargspec` first (in pvpython, or in the GUI's View > Python Shell).
 
 Loading the plugin
-    GUI: Tools > Manage Plugins > Load New... > this file (tick "Auto Load" to keep it), or start
-    `paraview --plugin /path/to/rayset_reader.py`. File > Open then offers the readers below.
+    GUI: start it with PYTHONPATH set as above, then Tools > Manage Plugins > Load New... > this
+    file (tick "Auto Load" to have it at every start). File > Open then offers the readers below
+    for their extensions (and asks which reader where ParaView has one too, as for .csv).
     pvpython:
 
         from paraview.simple import *
         LoadPlugin("/path/to/rayset_reader.py", ns=globals())
         rays = raysetRayFileReader(FileName="LED.TM25RAY")   # or OpenDataFile("LED.TM25RAY")
         Show(rays); Render()
+
+    (`ns` must be a namespace that already holds names, as globals() does: LoadPlugin takes an
+    empty dict for none.)
 
 What each file becomes
     Ray files (.tm25ray TM-25, .ray LightTools / SPEOS, .txt LightTools / Zemax text, .dat .sdf
