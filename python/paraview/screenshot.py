@@ -4,9 +4,10 @@ reader plugin beside this file (docs/gallery/paraview-model-rays.png).
     PYTHONPATH=build/python xvfb-run -a build/paraview/usr/bin/pvpython \\
         python/paraview/screenshot.py MODEL.vdb RAYS.tm25ray OUT.png [--rays-shown 1200]
 
-The spheres are drawn as ParaView's Point Gaussian spheres of their own radius; a random sample of the rays as short segments from their origins along their directions,
-coloured by wavelength (by flux when the file gives none). scripts/gallery.sh makes the gallery's
-picture from the synthetic 39-chip cluster.
+The spheres are drawn as ParaView's Point Gaussian spheres of their own radius; a random sample
+of the rays as short segments from their origins along their directions, coloured by wavelength
+(by flux when the file gives none). scripts/gallery.sh makes the gallery's picture from the
+synthetic 39-chip cluster.
 """
 
 import argparse
