@@ -21,6 +21,14 @@ view "$work/cluster.vdb" --show flux --png "$out/cluster-flux.png"
 view "$work/cluster.vdb" --show diagram --cell 2,2,0 --png "$out/cluster-diagram.png"
 view "$work/cluster.tm25ray" --show rays --points 3000 --png "$out/cluster-rays.png"
 view "$work/cluster.tm25ray" --show polar --png "$out/cluster-polar.png"
+# The same model's spheres with its rays in ParaView, through the reader plugin in the pvpython
+# scripts/install-deps.sh unpacks (python/README.md, "ParaView").
+pvpython="$build/paraview/usr/bin/pvpython"
+if [ -x "$pvpython" ]; then
+  cmake --build "$build" --target _rayset -j 2
+  PYTHONPATH="$(cd "$build" && pwd)/python" run "$pvpython" python/paraview/screenshot.py \
+    "$work/cluster.vdb" "$work/cluster.tm25ray" "$out/paraview-model-rays.png"
+fi
 # The tracer's image view: POV-Ray's Cornell box rendered by raytrace, its luminance layer Y.
 "$build/tracer/raytrace" tests/tracer/scenes/cornell.pov +W320 +H240 --passes 64 --no-png -q \
   -o "$work/cornell.exr" >/dev/null

@@ -189,6 +189,91 @@ public:
         return out.array;
     }
 
+    // One lattice as arrays: its frame as the file stores it and, per cell, what the model
+    // keeps there; arrays indexed [z, y, x] (the frame's linear order, x fastest).
+    nb::dict lattice(const std::string& name) const {
+        const LightModel& m = *model_;
+        const lightmodel::LatticeFrame* frame = name == "density"     ? &m.density_frame
+                                                : name == "flux"      ? &m.flux_frame
+                                                : name == "intensity" ? &m.intensity_frame
+                                                                      : nullptr;
+        if (!frame)
+            throw nb::value_error("lattice must be 'density', 'flux' or 'intensity'");
+        const auto& d = frame->dims();
+        const std::vector<size_t> shape{size_t(d[2]), size_t(d[1]), size_t(d[0])};
+        nb::dict out;
+        out["dims"] = nb::make_tuple(d[0], d[1], d[2]);
+        out["origin"] = nb::make_tuple(frame->origin().x, frame->origin().y, frame->origin().z);
+        out["cell_size"] = frame->cell_size();
+        out["resolution"] = frame->resolution();
+        if (frame == &m.density_frame) {
+            NewArray<float> density(shape);
+            for (size_t v = 0; v < m.voxels.size(); ++v)
+                density.data[frame->linear(m.voxels[v])] = m.voxel_density[v];
+            out["density"] = density.array;
+        } else if (frame == &m.flux_frame) {
+            NewArray<double> flux(shape), luminous(shape);
+            NewArray<int32_t> diagram(shape);
+            std::fill(diagram.data, diagram.data + frame->cell_count(), -1);
+            for (const auto& c : m.flux_cells) {
+                const int64_t i = frame->linear(c.coord);
+                flux.data[i] = c.flux, luminous.data[i] = c.luminous;
+                diagram.data[i] = c.intensity_cell;
+            }
+            out["flux"] = flux.array, out["luminous"] = luminous.array;
+            out["diagram"] = diagram.array;
+        } else {
+            NewArray<int32_t> diagram(shape);
+            std::fill(diagram.data, diagram.data + frame->cell_count(), -1);
+            for (size_t k = 0; k < m.diagram_cells.size(); ++k)
+                diagram.data[frame->linear(m.diagram_cells[k])] = int32_t(k);
+            out["diagram"] = diagram.array;
+        }
+        return out;
+    }
+
+    // The goniometric diagrams: per diagram its intensity cell, that cell's centre, the flux of
+    // the flux cells using it and whether it holds any light.
+    nb::dict diagrams() const {
+        const LightModel& m = *model_;
+        const size_t n = m.diagrams.size();
+        NewArray<int32_t> cell({n, 3});
+        NewArray<double> centre({n, 3}), flux({n});
+        NewArray<bool> empty({n});
+        for (size_t k = 0; k < n; ++k) {
+            for (int a = 0; a < 3; ++a) cell.data[3 * k + a] = m.diagram_cells[k][a];
+            put(centre.data, k, m.intensity_frame.cell_centre(m.diagram_cells[k]));
+            empty.data[k] = m.diagrams[k].empty();
+        }
+        for (const auto& c : m.flux_cells)
+            if (c.intensity_cell >= 0 && size_t(c.intensity_cell) < n)
+                flux.data[c.intensity_cell] += c.flux;
+        nb::dict d;
+        d["cell"] = cell.array, d["centre"] = centre.array, d["flux"] = flux.array;
+        d["empty"] = empty.array;
+        return d;
+    }
+
+    // Far-field intensity of the light leaving diagram k's cell toward each direction:
+    // Phi_k D_k(w), the radius of the diagram's polar surface.
+    Array<double> diagram_intensity(int64_t k, const Points& direction) const {
+        const LightModel& m = *model_;
+        if (k < 0 || size_t(k) >= m.diagrams.size())
+            throw nb::index_error(
+                fmt::format("diagram {} of {}", k, m.diagrams.size()).c_str());
+        double flux = 0;
+        for (const auto& c : m.flux_cells)
+            if (c.intensity_cell == k) flux += c.flux;
+        const auto& diagram = m.diagrams[size_t(k)];
+        const size_t n = direction.shape(0);
+        NewArray<double> out({n});
+        if (diagram.empty()) return out.array;
+        each_row(n, [&](size_t i) {
+            out.data[i] = flux * diagram.pdf(python::point(direction, i));
+        });
+        return out.array;
+    }
+
     nb::dict intersect(const Points& origin, const Points& direction, double tmax) const {
         const size_t n = origin.shape(0);
         check_rows(n, direction.shape(0), "direction");
@@ -347,6 +432,18 @@ void bind_model(nb::module_& m) {
         .def_prop_ro("bounds", &Model::bounds, "Box of the body, mm: (lower, upper).")
         .def("info", &Model::info, "Flux unit, totals, sizes, build options and source file.")
         .def("spheres", &Model::spheres, "The body's spheres: rows x, y, z, radius (mm).")
+        .def("lattice", &Model::lattice, nb::arg("name"),
+             "One lattice ('density', 'flux' or 'intensity') as arrays: dims (x, y, z), origin "
+             "(lower corner of cell 0, mm), cell_size (mm), resolution, and per cell [z, y, x]: "
+             "density (rays per voxel); flux (flux_unit), luminous (lm) and diagram (index, -1 "
+             "for none); or diagram (the intensity cell's diagram index, -1 for none).")
+        .def("diagrams", &Model::diagrams,
+             "The goniometric diagrams, one row each: cell (intensity-lattice coordinates), "
+             "centre (mm), flux (of the flux cells using it, flux_unit), empty.")
+        .def("diagram_intensity", &Model::diagram_intensity, nb::arg("index"),
+             nb::arg("direction"),
+             "Intensity (flux_unit/sr) of the light leaving diagram `index`'s cell toward each "
+             "unit direction (N x 3): its flux times the diagram's density; 0 for an empty one.")
         .def("intersect", &Model::intersect, nb::arg("origin"), nb::arg("direction"),
              nb::arg("tmax") = inf,
              "Where rays meet the body: hit, t, point, normal (arrays; rows of N x 3).")

@@ -14,7 +14,7 @@ BUILD = Path(os.environ.get("RAYSET_BUILD_DIR", ROOT / "build"))
 
 
 def tool(name: str) -> Path:
-    for folder in ("converters", "lightmodel", "tracer"):
+    for folder in ("converters", "lightmodel", "tracer", "viz"):
         path = BUILD / folder / name
         if path.is_file():
             return path

@@ -152,3 +152,65 @@ def test_queries_refuse_values_they_cannot_use(model):
         model.sample_Li(good, np.array([[0.5, 0.5, 1.5, 0.5, 0.5]]))
     with pytest.raises(ValueError, match="u: row 0 holds nan"):
         model.sample_Le(np.array([[0.5] * 6 + [np.nan]]))
+
+
+@pytest.fixture(scope="module")
+def cluster_model(cluster, tmp_path_factory):
+    """The cluster's model as raymodel builds it, with raymodel info's summary of it."""
+    path = tmp_path_factory.mktemp("lattices") / "cluster.vdb"
+    run(tool("raymodel"), "build", cluster, "-o", path, "--flux-resolution", 12,
+        "--intensity-resolution", 3, "--threads", 2, "--seed", 5)
+    summary = json.loads(run(tool("raymodel"), "info", path, "--json"))
+    return rayset.Model.load(path), summary
+
+
+def test_lattices_against_raymodel_info(cluster_model):
+    model, truth = cluster_model
+    for name in ("density", "flux", "intensity"):
+        lattice, frame = model.lattice(name), truth[f"{name}_lattice"]
+        assert list(lattice["dims"]) == frame["dims"]
+        assert list(lattice["origin"]) == frame["origin_mm"]
+        assert lattice["cell_size"] == frame["cell_mm"]
+        assert lattice["resolution"] == frame["resolution"]
+    dims = tuple(reversed(truth["density_lattice"]["dims"]))  # arrays are [z, y, x]
+    density = model.lattice("density")["density"]
+    assert density.shape == dims
+    assert np.count_nonzero(density) == truth["density_lattice"]["occupied_cells"]
+    assert density.sum(dtype=np.float64) == truth["source"]["rays"]
+    flux = model.lattice("flux")
+    assert np.count_nonzero(flux["flux"]) == truth["flux_lattice"]["cells_with_light"]
+    assert flux["flux"].sum() == pytest.approx(truth["total_flux"], rel=1e-12)
+    assert flux["luminous"].sum() == pytest.approx(truth["total_luminous_lm"], rel=1e-12)
+    # Every cell with light draws its directions from a diagram; cells without have none.
+    assert ((flux["diagram"] >= 0) == (flux["flux"] > 0)).all()
+    intensity = model.lattice("intensity")["diagram"]
+    assert sorted(intensity[intensity >= 0]) == list(range(truth["intensity_lattice"]["diagrams"]))
+    with pytest.raises(ValueError, match="density"):
+        model.lattice("voxels")
+
+
+def test_diagrams_sum_to_the_far_field(cluster_model):
+    model, truth = cluster_model
+    d = model.diagrams()
+    k = truth["intensity_lattice"]["diagrams"]
+    assert d["cell"].shape == d["centre"].shape == (k, 3) and d["flux"].shape == (k,)
+    assert d["flux"].sum() == pytest.approx(truth["total_flux"], rel=1e-12)
+    frame = truth["intensity_lattice"]
+    np.testing.assert_allclose(
+        d["centre"], np.array(frame["origin_mm"]) + (d["cell"] + 0.5) * frame["cell_mm"],
+        rtol=1e-12, atol=1e-12)
+    intensity = model.lattice("intensity")["diagram"]
+    for i, (x, y, z) in enumerate(d["cell"]):
+        assert intensity[z, y, x] == i
+    # The source's far field (the emitter interface) is the sum of its cells' diagrams, and
+    # each diagram's intensity over the sphere is its cell's flux (Monte Carlo, uniform w).
+    n = 200000
+    w = np.random.default_rng(3).normal(size=(n, 3))
+    w /= np.linalg.norm(w, axis=1, keepdims=True)
+    each = np.array([model.diagram_intensity(i, w) for i in range(k)])
+    np.testing.assert_allclose(each.sum(axis=0), model.intensity(w), rtol=1e-12, atol=1e-15)
+    estimate = 4 * np.pi * each.mean(axis=1)
+    error = 4 * np.pi * each.std(axis=1) / np.sqrt(n)
+    assert (np.abs(estimate - d["flux"]) < 4 * error).all(), (estimate, d["flux"], error)
+    with pytest.raises(IndexError):
+        model.diagram_intensity(k, w[:1])
