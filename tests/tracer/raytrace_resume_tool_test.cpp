@@ -5,8 +5,8 @@
 // seed, not a checkpoint, missing) are refused with a message naming the fault, and no file
 // in the folder changes.
 #include <chrono>
-#include <cstdio>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <thread>
@@ -185,7 +185,10 @@ TEST(RaytraceResume, InterruptedRendersResumeToTheUninterruptedFiles) {
 // every pass: whatever moment the kill lands on (a pass, a checkpoint or the outputs being
 // written), each output holds what was there before or a whole file, the checkpoint reads, and
 // resuming from it (or starting again when there is none) writes the uninterrupted render's
-// very files. A killed process can leave nothing else but its hidden temporary files.
+// very files. A killed process can leave nothing else but its hidden temporary files. The
+// moments are measured against one render timed first; should the machine slow down after it so
+// that no kill lands after the first checkpoint, one more render is killed once its checkpoint
+// is there, so that resuming a killed render is always exercised.
 TEST(RaytraceResume, RendersKilledAtRandomMomentsResumeToTheUninterruptedFiles) {
     const std::vector<std::string> kill_arguments = arguments(100);
     RenderFolder reference;
@@ -195,14 +198,9 @@ TEST(RaytraceResume, RendersKilledAtRandomMomentsResumeToTheUninterruptedFiles) 
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto expected = reference.files();
 
-    Pcg32 rng(5);
-    int killed = 0, with_checkpoint = 0, temporaries = 0;
-    for (int round = 0; round < 8; ++round) {
-        SCOPED_TRACE("round " + std::to_string(round));
-        RenderFolder f;
-        test::write_file(f.dir.file("out.exr"), "previous");
-        killed += test::killed_after(with({kRaytrace}, kill_arguments), 1.2 * whole * rng.uniform(),
-                                     f.folder());
+    int with_checkpoint = 0, temporaries = 0;
+    // What a killed render left, and its resumption.
+    auto check_and_resume = [&](RenderFolder& f) {
         const std::string exr = test::read_file(f.dir.file("out.exr"));
         if (exr != "previous") {
             const int samples = exr_samples(f.dir.file("out.exr"));
@@ -227,11 +225,31 @@ TEST(RaytraceResume, RendersKilledAtRandomMomentsResumeToTheUninterruptedFiles) 
         ASSERT_EQ(resumed.status, 0) << resumed.output;
         for (const auto& [name, contents] : expected)
             EXPECT_TRUE(test::read_file(f.dir.file(name)) == contents) << name << " differs";
+    };
+
+    Pcg32 rng(5);
+    int killed = 0;
+    for (int round = 0; round < 8; ++round) {
+        SCOPED_TRACE("round " + std::to_string(round));
+        RenderFolder f;
+        test::write_file(f.dir.file("out.exr"), "previous");
+        killed += test::killed_after(with({kRaytrace}, kill_arguments), 1.2 * whole * rng.uniform(),
+                                     f.folder());
+        check_and_resume(f);
+    }
+    const int random_with_checkpoint = with_checkpoint;
+    if (with_checkpoint == 0) {
+        SCOPED_TRACE("killed once its checkpoint is there");
+        RenderFolder f;
+        test::write_file(f.dir.file("out.exr"), "previous");
+        EXPECT_EQ(interrupt_when_present(kill_arguments, f.folder(), "out.checkpoint", SIGKILL),
+                  128 + SIGKILL);
+        check_and_resume(f);
     }
     EXPECT_GE(killed, 4);  // P(fewer than 4 of 8 kills before the end) ~ 0.5% at p = 5/6
     EXPECT_GE(with_checkpoint, 1);
     std::printf("[ figures  ] %d of 8 renders killed, %d left a checkpoint, %d temporary files\n",
-                killed, with_checkpoint, temporaries);
+                killed, random_with_checkpoint, temporaries);
 }
 
 TEST(RaytraceResume, BadCheckpointsAreRefusedAndNothingChanges) {
