@@ -11,12 +11,6 @@ int SpectralBins::bin_of(double wavelength_nm) const {
     return std::clamp(int(std::floor((wavelength_nm - first_nm) / width_nm)), 0, count - 1);
 }
 
-int SpectralBins::count_covering(double width_nm) {
-    if (!(width_nm > 0) || !std::isfinite(width_nm)) return 0;
-    const double count = std::max(1.0, std::round(400 / width_nm));
-    return count <= std::numeric_limits<int>::max() ? int(count) : 0;
-}
-
 double LightModel::total_flux() const {
     double sum = 0;
     for (const FluxCell& c : flux_cells) sum += c.flux;

@@ -11,7 +11,10 @@
 #include "lightmodel/lattice.h"
 #include "lightmodel/sphere.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -47,7 +50,11 @@ struct SpectralBins {
     int bin_of(double wavelength_nm) const;  // clamped to the range; -1 for NaN
     // How many bins of `width_nm` cover the 400 nm from 380 to 780 (at least one), as a build
     // makes them; 0 for a width that is not positive and finite or too small for an int count.
-    static int count_covering(double width_nm);
+    static int count_covering(double width_nm) {
+        if (!(width_nm > 0) || !std::isfinite(width_nm)) return 0;
+        const double count = std::max(1.0, std::round(400 / width_nm));
+        return count <= std::numeric_limits<int>::max() ? int(count) : 0;
+    }
     double centre(int bin) const { return first_nm + (bin + 0.5) * width_nm; }
 };
 
