@@ -19,16 +19,21 @@ LUMA = np.array([0.2126, 0.7152, 0.0722])
 CD_PER_M2 = 683.0 * 1e6
 
 
+def synthesised_model(data, name, rays, seed, *source):
+    """A ray file of `rayconv synth SOURCE...` and the model raymodel builds of it."""
+    path = data / f"{name}.tm25ray"
+    rayconv("synth", *source, "--rays", rays, "--seed", seed, "-o", path)
+    model = data / f"{name}.vdb"
+    run(tool("raymodel"), "build", path, "-o", model, "--threads", 2)
+    return model
+
+
 @pytest.fixture(scope="module")
 def chips(data):
     """The example's cluster (scripts/example.sh: 39 chips of three colours, 1 W) with 300000
-    rays, seed 5, built into a model."""
-    rays = data / "chips.tm25ray"
-    rayconv("synth", "cluster", "rings=1,6,12,20", "chip=1", "pitch=2", "flux=1",
-            "wavelength=630,530,460", "--rays", 300000, "--seed", 5, "-o", rays)
-    model = data / "chips.vdb"
-    run(tool("raymodel"), "build", rays, "-o", model, "--threads", 2)
-    return model
+    rays, seed 5."""
+    return synthesised_model(data, "chips", 300000, 5, "cluster", "rings=1,6,12,20", "chip=1",
+                             "pitch=2", "flux=1", "wavelength=630,530,460")
 
 
 @pytest.fixture(scope="module")
@@ -36,22 +41,14 @@ def white_disk(data):
     """A Lambertian disk of radius 3 mm with a flat spectrum over 400-700 nm: 50000 rays."""
     spectrum = data / "flat.txt"
     spectrum.write_text("400 1\n500 1\n600 1\n700 1\n")
-    rays = data / "white_disk.tm25ray"
-    rayconv("synth", "disk", "radius=3", f"spectrum={spectrum}", "--rays", 50000, "--seed", 4,
-            "-o", rays)
-    model = data / "white_disk.vdb"
-    run(tool("raymodel"), "build", rays, "-o", model, "--threads", 2)
-    return model
+    return synthesised_model(data, "white_disk", 50000, 4, "disk", "radius=3",
+                             f"spectrum={spectrum}")
 
 
 @pytest.fixture(scope="module")
 def lambertian_disk(data):
-    """A 1 W Lambertian disk of radius 50 mm at 555 nm: 200000 rays, seed 3, and its model."""
-    rays = data / "disk50.tm25ray"
-    rayconv("synth", "disk", "radius=50", "flux=1", "--rays", 200000, "--seed", 3, "-o", rays)
-    model = data / "disk50.vdb"
-    run(tool("raymodel"), "build", rays, "-o", model, "--threads", 2)
-    return model
+    """A 1 W Lambertian disk of radius 50 mm at 555 nm: 200000 rays, seed 3."""
+    return synthesised_model(data, "disk50", 200000, 3, "disk", "radius=50", "flux=1")
 
 
 def variant(name):
