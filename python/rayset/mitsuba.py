@@ -47,7 +47,6 @@ about 30 times as long as with Mitsuba's own disk light.
 
 from __future__ import annotations
 
-import math
 import os
 from typing import Dict, Optional, Tuple
 
@@ -108,10 +107,6 @@ def _uniforms(a: float, b: float, count: int):
         z ^= z >> 31
         out.append((z >> 11) * (1.0 / 9007199254740992.0))
     return out
-
-
-def _norm(v) -> float:
-    return math.sqrt(float(v[0]) ** 2 + float(v[1]) ** 2 + float(v[2]) ** 2)
 
 
 class _Frame:
@@ -205,8 +200,8 @@ def register() -> None:
             if not active:
                 return ds, mi.Spectrum(0.0)
             ref = self.frame.model_point(it.p)
-            u = np.array([_uniforms(float(sample[0]), float(sample[1]), 3)])
-            u = np.array([[u[0, 0], u[0, 1], float(sample[0]), float(sample[1]), u[0, 2]]])
+            cell, voxel, depth = _uniforms(float(sample[0]), float(sample[1]), 3)
+            u = np.array([[cell, voxel, float(sample[0]), float(sample[1]), depth]])
             s = self.model.sample_Li(ref, u,
                                      wavelengths=self._wavelength_rows(it.wavelengths))
             if not s["valid"][0] or not s["pdf"][0] > 0:
@@ -220,10 +215,10 @@ def register() -> None:
                 # No shape to meet on the way (a scene emitter) or the point is inside it: this
                 # direction is found by light sampling alone.
                 ds.p, ds.n, ds.delta = body, -w, True
-                ds.dist = _norm(body - it.p)
+                ds.dist = float(dr.norm(body - it.p))
             else:
                 ds.p, ds.n, ds.delta = entry
-                ds.dist = _norm(ds.p - it.p)
+                ds.dist = float(dr.norm(ds.p - it.p))
             weight = self._radiance(s, 0) / ds.pdf
             return ds, weight
 

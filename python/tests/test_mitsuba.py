@@ -3,12 +3,15 @@ luminance raytrace's direct-visibility layer gives the same body, Mitsuba's own 
 for a Lambertian disk given as rays, and the RGB variant for the spectral one."""
 
 import math
+import sys
 
 import numpy as np
 import pytest
 
 import rayset
-from conftest import rayconv, run, tool
+from conftest import ROOT, rayconv, run, tool
+
+sys.path.insert(0, str(ROOT / "tests" / "bench" / "grey_box"))  # the bench's scene
 
 mi = pytest.importorskip("mitsuba", reason="Mitsuba 3 is not installed (pip install mitsuba)")
 import rayset.mitsuba  # noqa: E402
@@ -120,48 +123,20 @@ def test_spectral_variant_gives_the_rgb_luminance(white_disk):
     assert joint < 0.01 * rgb.mean()  # the bound is tight enough to mean something
 
 
-def grey_box(light, width, height):
-    """The closed grey box of tests/bench/grey_box (mm): walls 0.6, floor 0.4, a block."""
-    T = mi.ScalarTransform4f
-
-    def box(lower, upper, reflectance, inward=False):
-        lower, upper = np.array(lower, float), np.array(upper, float)
-        return {"type": "cube", "flip_normals": inward,
-                "to_world": T().translate(((lower + upper) / 2).tolist())
-                .scale(((upper - lower) / 2).tolist()),
-                "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb",
-                                                            "value": [reflectance] * 3}}}
-
-    return mi.load_dict({
-        "type": "scene",
-        "integrator": {"type": "path", "max_depth": -1},
-        "sensor": {"type": "perspective", "fov": 90, "fov_axis": "x",
-                   "to_world": T().look_at(origin=[0, 1000, -950], target=[0, 700, 0],
-                                           up=[0, 1, 0]),
-                   "film": {"type": "hdrfilm", "width": width, "height": height,
-                            "rfilter": {"type": "box"}},
-                   "sampler": {"type": "independent"}},
-        "room": box([-1000, 0, -1000], [1000, 2000, 1000], 0.6, inward=True),
-        "floor": box([-999, 0, -999], [999, 1, 999], 0.4),
-        "block": box([-300, 1, -200], [100, 500, 300], 0.6),
-        "light": light,
-    }, optimize=False)
-
-
 def grey_boxes(lambertian_disk):
-    """The grey box lit by the disk's model and by Mitsuba's disk area light of its radiance."""
+    """The bench's grey box (tests/bench/grey_box) lit by the disk's model and by Mitsuba's disk
+    area light of its radiance, 16 x 16 pixels."""
     T = variant("scalar_rgb")
-    # The disk on the ceiling facing down: its model turned as Mitsuba's disk is.
+    import mitsuba_grey_box as bench  # sets scalar_rgb, as variant() just did
+
+    # The disk on the ceiling facing down: its model turned as the bench's disk is.
     to_world = T().translate([0, 1999, 0]).rotate([1, 0, 0], 90)
     colour = np.array(rayset.Model.load(lambertian_disk).phi_colour())
     radiance = colour / (math.pi * math.pi * 50**2)  # Lambertian: L = phi / (pi area)
-    ours = grey_box(rayset.mitsuba.source(lambertian_disk, to_world), 16, 16)
-    theirs = grey_box({"type": "disk", "to_world": to_world.scale(50),
-                       "bsdf": {"type": "diffuse", "reflectance": 0.0},
-                       "emitter": {"type": "area",
-                                   "radiance": {"type": "rgb", "value": radiance.tolist()}}},
-                      16, 16)
-    return ours, theirs
+    ours = bench.grey_box(16, 16, rayset.mitsuba.source(lambertian_disk, to_world))
+    theirs = bench.disk_light(radiance.tolist())
+    theirs["bsdf"] = {"type": "diffuse", "reflectance": 0.0}
+    return ours, bench.grey_box(16, 16, theirs)
 
 
 def test_light_tracing_lights_the_grey_box_as_mitsubas_disk_light(lambertian_disk):

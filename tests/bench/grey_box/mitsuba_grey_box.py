@@ -25,8 +25,17 @@ def diffuse_box(lower, upper, reflectance, inward=False):
             "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": [reflectance] * 3}}}
 
 
-def grey_box(width, height):
-    radiance = 1.0 / (math.pi * math.pi * 50 ** 2)  # W/(mm^2 sr): 1 W Lambertian disk, r = 50 mm
+def disk_light(radiance):
+    """The bench's light: a Lambertian disk (r = 50 mm) on the ceiling facing down."""
+    return {"type": "disk",
+            "to_world": T().translate([0, 1999, 0]).rotate([1, 0, 0], 90).scale(50),
+            "emitter": {"type": "area", "radiance": {"type": "rgb", "value": list(radiance)}}}
+
+
+def grey_box(width, height, light=None):
+    """The room with `light` (a scene-dict entry); by default a 1 W disk_light."""
+    if light is None:
+        light = disk_light([1.0 / (math.pi * math.pi * 50 ** 2)] * 3)  # W/(mm^2 sr)
     return mi.load_dict({
         "type": "scene",
         "integrator": {"type": "path", "max_depth": -1},
@@ -38,9 +47,7 @@ def grey_box(width, height):
         "room": diffuse_box([-1000, 0, -1000], [1000, 2000, 1000], 0.6, inward=True),
         "floor": diffuse_box([-999, 0, -999], [999, 1, 999], 0.4),
         "block": diffuse_box([-300, 1, -200], [100, 500, 300], 0.6),
-        "light": {"type": "disk",
-                  "to_world": T().translate([0, 1999, 0]).rotate([1, 0, 0], 90).scale(50),
-                  "emitter": {"type": "area", "radiance": {"type": "rgb", "value": [radiance] * 3}}},
+        "light": light,
     }, optimize=False)  # merging the room's mesh with the block's would lose its flipped normals
 
 
