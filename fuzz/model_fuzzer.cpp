@@ -1,7 +1,8 @@
 // Fuzzes the reader of light-model files (.vdb, lightmodel/model_file.h): each input is a file
-// that read_model() reads - OpenVDB's file layer (Debian's library, not instrumented: its
-// branches do not guide the fuzzer, but a crash in it is still caught) and
-// our reading of the grids and metadata into a LightModel (instrumented).
+// that read_model() reads - our guarded archive reading (lightmodel/vdb_file.h), OpenVDB's
+// file layer beneath it (Debian's library, not instrumented: its branches do not guide the
+// fuzzer, but a crash in it is still caught) and our reading of the grids and metadata into a
+// LightModel (instrumented).
 #include "core/error.h"
 #include "fuzz/fuzz_support.h"
 #include "lightmodel/model_file.h"
@@ -14,7 +15,7 @@
 extern "C" const char* __lsan_default_suppressions() { return "leak:readTopology\n"; }
 
 // OpenVDB allocates what a file's length fields say before it finds the file too short: a
-// corrupt grid descriptor asks for a 1.6 GB name, a blosc block for terabytes (a real run gets
+// corrupt grid descriptor asks for a 1.6 GB name, a metadata value for gigabytes (a real run gets
 // what the machine has, fills it and frees it when the read then fails, or throws
 // std::bad_alloc). Here an allocation above 256 MB throws std::bad_alloc, which read_model turns
 // into its error when OpenVDB throws it; so such files do not stop the fuzzer at libFuzzer's

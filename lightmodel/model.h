@@ -20,7 +20,7 @@
 
 namespace rayset::lightmodel {
 
-inline constexpr int kModelVersion = 1;
+inline constexpr int kModelVersion = 2;
 
 // Every number of the paper is an option with its value as the default.
 struct ModelOptions {

@@ -2,12 +2,9 @@
 
 #include "converters/rays/io.h"
 #include "core/error.h"
+#include "lightmodel/vdb_file.h"
 
 #include <openvdb/openvdb.h>
-#include <openvdb/points/PointAttribute.h>
-#include <openvdb/points/PointConversion.h>
-#include <openvdb/points/PointDataGrid.h>
-#include <openvdb/tools/PointIndexGrid.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -31,7 +28,6 @@ constexpr char density[] = "density", boundary[] = "boundary", flux[] = "flux",
                luminous[] = "luminous", visible_fraction[] = "visible_fraction",
                spectra[] = "spectra", intensity_cell[] = "intensity_cell", diagrams[] = "diagrams",
                spheres[] = "spheres";
-constexpr char sphere_radius[] = "radius";  // the spheres' attribute
 }  // namespace grid
 
 void initialise_openvdb() {
@@ -82,42 +78,65 @@ typename GridT::Ptr find_grid(const openvdb::GridPtrVecPtr& grids, const std::st
                 "' is missing (is this a model written by raymodel?)");
 }
 
-openvdb::points::PointDataGrid::Ptr sphere_grid(const std::vector<Sphere>& spheres,
-                                                double voxel_size) {
-    using namespace openvdb::points;
-    std::vector<openvdb::Vec3R> positions;
-    std::vector<float> radii;
-    positions.reserve(spheres.size());
-    for (const Sphere& s : spheres) {
-        positions.emplace_back(s.x, s.y, s.z);
-        radii.push_back(s.r);
-    }
-    const PointAttributeVector<openvdb::Vec3R> position_wrapper(positions);
-    auto transform = openvdb::math::Transform::createLinearTransform(voxel_size);
-    auto index = openvdb::tools::createPointIndexGrid<openvdb::tools::PointIndexGrid>(
-        position_wrapper, *transform);
-    auto points =
-        createPointDataGrid<NullCodec, PointDataGrid>(*index, position_wrapper, *transform);
-    appendAttribute<float>(points->tree(), grid::sphere_radius);
-    const PointAttributeVector<float> radius_wrapper(radii);
-    populateAttribute<PointDataTree, openvdb::tools::PointIndexTree, PointAttributeVector<float>>(
-        points->tree(), index->tree(), grid::sphere_radius, radius_wrapper);
-    points->setName(grid::spheres);
-    return points;
+// A table stored as a grid: value (column, row, 0). Rows are numbered from 0 without gaps, and
+// each row's columns too; a row may be empty only at the end.
+openvdb::FloatGrid::Ptr table_grid(const char* name, const std::vector<std::vector<float>>& rows) {
+    auto table = openvdb::FloatGrid::create(0.f);
+    table->setName(name);
+    auto accessor = table->getAccessor();
+    for (size_t row = 0; row < rows.size(); ++row)
+        for (size_t column = 0; column < rows[row].size(); ++column)
+            accessor.setValue(openvdb::Coord(int(column), int(row), 0), rows[row][column]);
+    return table;
 }
 
-std::vector<Sphere> read_spheres(const openvdb::points::PointDataGrid& points) {
-    using namespace openvdb::points;
+// The rows of a table grid, checked: a corrupt file's coordinates must not size what is read.
+std::vector<std::vector<float>> read_table(const openvdb::FloatGrid& table,
+                                           const std::string& path) {
+    const std::string where = path + ": grid '" + table.getName() + "' ";
+    if (table.tree().activeTileCount() != 0) throw Error(where + "is not a table (it has tiles)");
+    struct Entry {
+        openvdb::Coord at;
+        float value;
+    };
+    std::vector<Entry> entries;
+    for (auto it = table.cbeginValueOn(); it; ++it) entries.push_back({it.getCoord(), *it});
+    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+        return std::make_pair(a.at.y(), a.at.x()) < std::make_pair(b.at.y(), b.at.x());
+    });
+    auto voxel = [](const openvdb::Coord& c) {
+        return "(" + std::to_string(c.x()) + ", " + std::to_string(c.y()) + ", " +
+               std::to_string(c.z()) + ")";
+    };
+    std::vector<std::vector<float>> rows;
+    for (const Entry& e : entries) {
+        if (e.at.z() != 0 || e.at.y() < 0 || size_t(e.at.y()) > rows.size())
+            throw Error(where + "has a value outside its rows, at " + voxel(e.at));
+        if (size_t(e.at.y()) == rows.size()) rows.emplace_back();
+        std::vector<float>& row = rows[size_t(e.at.y())];
+        if (e.at.x() < 0 || size_t(e.at.x()) != row.size())
+            throw Error(where + "has a gap in row " + std::to_string(e.at.y()) + ", at " +
+                        voxel(e.at));
+        row.push_back(e.value);
+    }
+    return rows;
+}
+
+// The body: one table row (x, y, z, r) per sphere.
+openvdb::FloatGrid::Ptr sphere_grid(const std::vector<Sphere>& spheres) {
+    std::vector<std::vector<float>> rows;
+    rows.reserve(spheres.size());
+    for (const Sphere& s : spheres) rows.push_back({s.x, s.y, s.z, s.r});
+    return table_grid(grid::spheres, rows);
+}
+
+std::vector<Sphere> read_spheres(const openvdb::FloatGrid& table, const std::string& path) {
     std::vector<Sphere> spheres;
-    for (auto leaf = points.tree().cbeginLeaf(); leaf; ++leaf) {
-        const AttributeHandle<openvdb::Vec3f> position(leaf->constAttributeArray("P"));
-        const AttributeHandle<float> radius(leaf->constAttributeArray(grid::sphere_radius));
-        for (auto i = leaf->beginIndexOn(); i; ++i) {
-            const openvdb::Vec3d world =
-                points.transform().indexToWorld(position.get(*i) + i.getCoord().asVec3d());
-            spheres.push_back(
-                {float(world.x()), float(world.y()), float(world.z()), radius.get(*i)});
-        }
+    for (const std::vector<float>& row : read_table(table, path)) {
+        if (row.size() != 4)
+            throw Error(path + ": sphere " + std::to_string(spheres.size()) + " has " +
+                        std::to_string(row.size()) + " numbers, not x y z r");
+        spheres.push_back({row[0], row[1], row[2], row[3]});
     }
     return spheres;
 }
@@ -275,11 +294,13 @@ void add_density_grids(const LightModel& model, openvdb::GridPtrVec& grids) {
         counts.setValue(vdb(model.voxels[v]), model.voxel_density[v]);
     grids.push_back(density);
 
-    auto boundary = openvdb::BoolGrid::create(false);
+    // Int32, not bool: OpenVDB reads a bool from whatever byte a corrupt file holds, which is
+    // undefined behaviour.
+    auto boundary = openvdb::Int32Grid::create(0);
     boundary->setName(grid::boundary);
     boundary->setTransform(frame_transform(model.density_frame));
     auto flags = boundary->getAccessor();
-    for (const Coord& c : model.boundary_voxels) flags.setValue(vdb(c), true);
+    for (const Coord& c : model.boundary_voxels) flags.setValue(vdb(c), 1);
     grids.push_back(boundary);
 }
 
@@ -323,72 +344,43 @@ void add_diagram_grids(const LightModel& model, openvdb::GridPtrVec& grids) {
     auto intensity_cell = openvdb::Int32Grid::create(-1);
     intensity_cell->setName(grid::intensity_cell);
     intensity_cell->setTransform(frame_transform(model.intensity_frame));
-    auto diagrams = openvdb::FloatGrid::create(0.f);
-    diagrams->setName(grid::diagrams);
     auto ia = intensity_cell->getAccessor();
-    auto da = diagrams->getAccessor();
+    std::vector<std::vector<float>> rows;
     for (size_t k = 0; k < model.diagrams.size(); ++k) {
         ia.setValue(vdb(model.diagram_cells[k]), int32_t(k));
-        const std::vector<float> data = model.diagrams[k].serialize();
-        for (size_t i = 0; i < data.size(); ++i)
-            da.setValue(openvdb::Coord(int(i), int(k), 0), data[i]);
+        rows.push_back(model.diagrams[k].serialize());
     }
     grids.push_back(intensity_cell);
-    grids.push_back(diagrams);
+    grids.push_back(table_grid(grid::diagrams, rows));
 }
 
-struct ModelFile {
-    openvdb::GridPtrVecPtr grids;
-    openvdb::MetaMap::Ptr meta;
-};
+// The grid types of a model: plain trees, read only after the version is known.
+const VdbGridTypes kModelGridTypes = {openvdb::FloatGrid::gridType(),
+                                      openvdb::DoubleGrid::gridType(),
+                                      openvdb::Int32Grid::gridType()};
 
-ModelFile open_model_file(const std::string& path) {
-    ModelFile file;
-    try {
-        openvdb::io::File vdb_file(path);
-        // Read whole, without delayed loading: that takes each leaf's compressed size from a
-        // table in the file and, when a corrupt file's table is short, OpenVDB 10 asserts
-        // (Debian's build aborts the process) or reads past it. A model is read whole anyway.
-        vdb_file.open(/*delayLoad=*/false);
-        file.grids = vdb_file.getGrids();
-        file.meta = vdb_file.getMetadata();
-        vdb_file.close();
-    } catch (const std::exception& e) {
-        // OpenVDB quotes what it read, such as a grid type of the length a corrupt file states
-        // (128 MB): only the beginning of its message is kept.
-        constexpr size_t kLongest = 300;
-        std::string what = e.what();
-        if (what.size() > kLongest) what = what.substr(0, kLongest) + "...";
-        throw Error(path + ": cannot read as an OpenVDB model file: " + what);
-    }
-    auto version = file.meta->getMetadata<openvdb::Int32Metadata>(kVersionKey);
+void check_model_version(const openvdb::MetaMap& meta, const std::string& path) {
+    auto version = meta.getMetadata<openvdb::Int32Metadata>(kVersionKey);
     if (!version) throw Error(path + ": not a rayset model (no " + kVersionKey + " metadata)");
     if (version->value() != kModelVersion)
         throw Error(path + ": model version " + std::to_string(version->value()) +
                     ", this raymodel reads version " + std::to_string(kModelVersion) +
                     ": rebuild the model with raymodel build");
-    return file;
 }
 
 // Diagrams, in index order, and the intensity cell of each.
-void read_diagrams(const ModelFile& file, const std::string& path, LightModel& model) {
+void read_diagrams(const VdbFile& file, const std::string& path, LightModel& model) {
     auto intensity_cell = find_grid<openvdb::Int32Grid>(file.grids, grid::intensity_cell, path);
-    auto diagram_grid = find_grid<openvdb::FloatGrid>(file.grids, grid::diagrams, path);
-    std::vector<std::vector<float>> diagram_data;
-    for (auto it = diagram_grid->cbeginValueOn(); it; ++it) {
-        const size_t k = size_t(it.getCoord().y()), i = size_t(it.getCoord().x());
-        if (diagram_data.size() <= k) diagram_data.resize(k + 1);
-        if (diagram_data[k].size() <= i) diagram_data[k].resize(i + 1, 0.f);
-        diagram_data[k][i] = *it;
-    }
-    model.diagram_cells.resize(diagram_data.size());
+    const std::vector<std::vector<float>> rows =
+        read_table(*find_grid<openvdb::FloatGrid>(file.grids, grid::diagrams, path), path);
+    model.diagram_cells.resize(rows.size());
     for (auto it = intensity_cell->cbeginValueOn(); it; ++it) {
-        if (*it < 0 || size_t(*it) >= diagram_data.size())
+        if (*it < 0 || size_t(*it) >= rows.size())
             throw Error(path + ": intensity_cell names a missing diagram");
         model.diagram_cells[size_t(*it)] = {it.getCoord().x(), it.getCoord().y(),
                                             it.getCoord().z()};
     }
-    for (const auto& data : diagram_data) {
+    for (const auto& data : rows) {
         try {
             model.diagrams.push_back(GoniometricDiagram::deserialize(data));
         } catch (const std::exception& e) {
@@ -399,7 +391,7 @@ void read_diagrams(const ModelFile& file, const std::string& path, LightModel& m
 
 // Flux cells in the order of their linear index, as the build made them; returns the index of
 // each cell by its linear index.
-std::map<int64_t, size_t> read_flux_cells(const ModelFile& file, const std::string& path,
+std::map<int64_t, size_t> read_flux_cells(const VdbFile& file, const std::string& path,
                                           LightModel& model) {
     auto flux = find_grid<openvdb::DoubleGrid>(file.grids, grid::flux, path);
     auto la = find_grid<openvdb::DoubleGrid>(file.grids, grid::luminous, path)->getConstAccessor();
@@ -426,7 +418,7 @@ std::map<int64_t, size_t> read_flux_cells(const ModelFile& file, const std::stri
 
 // Voxels grouped by flux cell, in the density grid's order (as the build grouped them), and
 // each flux cell's diagram.
-void read_voxels(const ModelFile& file, const std::string& path,
+void read_voxels(const VdbFile& file, const std::string& path,
                  const std::map<int64_t, size_t>& cell_index, LightModel& model) {
     auto density = find_grid<openvdb::FloatGrid>(file.grids, grid::density, path);
     auto ia =
@@ -457,12 +449,12 @@ void read_voxels(const ModelFile& file, const std::string& path,
             model.voxel_density.push_back(count);
         }
     }
-    auto boundary = find_grid<openvdb::BoolGrid>(file.grids, grid::boundary, path);
+    auto boundary = find_grid<openvdb::Int32Grid>(file.grids, grid::boundary, path);
     for (auto it = boundary->cbeginValueOn(); it; ++it)
         model.boundary_voxels.push_back({it.getCoord().x(), it.getCoord().y(), it.getCoord().z()});
 }
 
-void read_spectra(const ModelFile& file, const std::string& path, LightModel& model) {
+void read_spectra(const VdbFile& file, const std::string& path, LightModel& model) {
     auto spectra = find_grid<openvdb::FloatGrid>(file.grids, grid::spectra, path);
     model.spectra.assign(model.flux_cells.size() * size_t(model.bins.count), 0.f);
     for (auto it = spectra->cbeginValueOn(); it; ++it) {
@@ -472,17 +464,6 @@ void read_spectra(const ModelFile& file, const std::string& path, LightModel& mo
     }
 }
 
-// openvdb::io::File::write ignores a failing stream: on a full disk it leaves a truncated model
-// and reports success. This writes the same archive (seekable, so that readers can load grids
-// lazily, as File writes it) to a stream whose state the caller checks.
-class CheckedArchive : public openvdb::io::Archive {
-public:
-    void write_seekable(std::ostream& out, const openvdb::GridPtrVec& grids,
-                        const openvdb::MetaMap& meta) const {
-        write(out, openvdb::GridCPtrVec(grids.begin(), grids.end()), true, meta);
-    }
-};
-
 }  // namespace
 
 void write_model(const LightModel& model, const std::string& path) {
@@ -491,28 +472,21 @@ void write_model(const LightModel& model, const std::string& path) {
     add_density_grids(model, grids);
     add_flux_grids(model, grids);
     add_diagram_grids(model, grids);
-    grids.push_back(sphere_grid(model.spheres, model.density_frame.cell_size()));
+    grids.push_back(sphere_grid(model.spheres));
 
     openvdb::MetaMap meta;
     meta.insertMeta(kVersionKey, openvdb::Int32Metadata(kModelVersion));
     MetadataWriter writer(meta);
     describe_metadata(writer, model);
 
-    // Written beside the target and renamed into place: no half-written model on failure.
-    write_atomically(path, [&](const std::string& temporary) {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        CheckedArchive archive;
-        archive.setCompression(openvdb::io::COMPRESS_BLOSC);
-        archive.write_seekable(out, grids, meta);
-        out.flush();
-        if (!out) throw std::runtime_error(std::strerror(errno));
-        return true;
-    });
+    write_vdb_file(path, grids, meta);
 }
 
 LightModel read_model(const std::string& path) {
     initialise_openvdb();
-    const ModelFile file = open_model_file(path);
+    const VdbFile file = read_vdb_file(path, kModelGridTypes, [&](const openvdb::MetaMap& meta) {
+        check_model_version(meta, path);
+    });
     LightModel model;
     model.options.smooth_diagrams = false;  // files that do not say so were built with histograms
     MetadataReader reader(*file.meta, path);
@@ -521,7 +495,7 @@ LightModel read_model(const std::string& path) {
     read_voxels(file, path, read_flux_cells(file, path, model), model);
     read_spectra(file, path, model);
     model.spheres =
-        read_spheres(*find_grid<openvdb::points::PointDataGrid>(file.grids, grid::spheres, path));
+        read_spheres(*find_grid<openvdb::FloatGrid>(file.grids, grid::spheres, path), path);
     return model;
 }
 

@@ -1,6 +1,6 @@
 // One .vdb file holds a whole model: the lattices as grids (density, flux, luminous), the
-// spheres as a point grid with a radius attribute, and the diagrams, spectra, frames and
-// provenance as metadata (docs/light-model.md lists every name). OpenVDB's vdb_print lists it.
+// spheres, diagrams and spectra as tables in index space, and the frames and provenance as
+// metadata (docs/light-model.md lists every name). OpenVDB's vdb_print lists it.
 #pragma once
 
 #include "lightmodel/model.h"

@@ -35,7 +35,7 @@ def test_equals_raymodel_build(model, disk, tmp_path):
                              "--threads", 2, "--seed", 3, "--json"))
     assert model.phi() == summary["total_flux"]
     theirs = rayset.Model.load(vdb)
-    # The file keeps the spheres in the order of its point grid: compare the models as read.
+    # The file keeps some values in single precision (visible fractions): compare models as read.
     ours = tmp_path / "py.vdb"
     model.save(ours)
     ours = rayset.Model.load(ours)
