@@ -15,7 +15,6 @@
 #include <fstream>
 #include <limits>
 #include <map>
-#include <mutex>
 #include <sstream>
 
 namespace rayset::lightmodel {
@@ -29,11 +28,6 @@ constexpr char density[] = "density", boundary[] = "boundary", flux[] = "flux",
                spectra[] = "spectra", intensity_cell[] = "intensity_cell", diagrams[] = "diagrams",
                spheres[] = "spheres";
 }  // namespace grid
-
-void initialise_openvdb() {
-    static std::once_flag once;
-    std::call_once(once, [] { openvdb::initialize(); });
-}
 
 // Index space = lattice cells, voxel centres at cell centres (as DensityLattice does).
 openvdb::math::Transform::Ptr frame_transform(const LatticeFrame& frame) {
@@ -467,7 +461,6 @@ void read_spectra(const VdbFile& file, const std::string& path, LightModel& mode
 }  // namespace
 
 void write_model(const LightModel& model, const std::string& path) {
-    initialise_openvdb();
     openvdb::GridPtrVec grids;
     add_density_grids(model, grids);
     add_flux_grids(model, grids);
@@ -483,7 +476,6 @@ void write_model(const LightModel& model, const std::string& path) {
 }
 
 LightModel read_model(const std::string& path) {
-    initialise_openvdb();
     const VdbFile file = read_vdb_file(path, kModelGridTypes, [&](const openvdb::MetaMap& meta) {
         check_model_version(meta, path);
     });

@@ -1,13 +1,15 @@
 // OpenVDB files read as untrusted input and written so that a failure leaves nothing.
 //
-// Debian's OpenVDB 10.0 reads a zip or blosc chunk of the length the file states into a buffer of
-// the length the grid needs before it compares the two, and reads a point attribute of one length
-// and indexes it by another: a corrupt file overflows the heap. Its io::File is therefore not used
-// for reading. read_vdb_file follows the same archive layout but refuses, before OpenVDB reads a
-// grid's data, every grid that is not a plain tree of the value types given or whose data are zip-
-// or blosc-compressed, and it stops at the first read past the end of the file instead of letting
-// OpenVDB's loops go on over a failed stream. write_vdb_file writes only what it reads: plain
-// trees, no zip or blosc (active-value masks only).
+// Debian's OpenVDB 10.0 trusts what a file states: it reads a zip or blosc chunk of the stated
+// length into a buffer of the length the grid needs before it compares the two, indexes a point
+// attribute by a length other than the one it read, decompresses delayed-load metadata by its
+// own counts, and allocates every string and metadata value at the stated length before reading
+// it. So io::File is not used for reading. read_vdb_file reads the same archive, but first walks
+// every length-prefixed item and refuses a length beyond the end of the file, refuses a grid
+// that is not a plain tree of the value types given or whose data are zip- or blosc-compressed,
+// skips delayed-load metadata unread, and stops at the first read past the end of the file
+// instead of letting OpenVDB's loops run on over a failed stream. write_vdb_file writes what it
+// reads: plain trees without zip or blosc (active-value masks only).
 #pragma once
 
 #include <openvdb/openvdb.h>
@@ -28,7 +30,7 @@ using VdbGridTypes = std::vector<std::string>;
 
 // Reads a whole file; `check_metadata` sees the file's metadata before any grid is read and
 // throws rayset::Error to refuse the file (a model of another version, say). Throws
-// rayset::Error naming the file and what is wrong with it. openvdb::initialize() must have run.
+// rayset::Error naming the file and what is wrong with it.
 VdbFile read_vdb_file(const std::string& path, const VdbGridTypes& accepted,
                       const std::function<void(const openvdb::MetaMap&)>& check_metadata);
 

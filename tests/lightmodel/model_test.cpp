@@ -156,7 +156,8 @@ TEST(Model, ReadingRefusesMetadataNoBuildWrites) {
 
 // Debian's OpenVDB 10.0 overflows the heap on corrupt zip or blosc chunks and point attributes
 // (found by fuzz_model): a model file with either, or with a grid of a type no model holds, is
-// refused before its grids are read, and a file cut short stops at its end.
+// refused before its grids are read; a length beyond the end of the file is refused before
+// OpenVDB allocates it, and a file cut short stops at its end.
 TEST(Model, ReadingRefusesWhatOpenVdbCannotReadSafely) {
     ScratchDir dir;
     const auto keep = [](openvdb::GridPtrVec&, openvdb::MetaMap&) {};
@@ -174,7 +175,27 @@ TEST(Model, ReadingRefusesWhatOpenVdbCannotReadSafely) {
               std::string::npos)
         << vectors;
 
+    // Lengths OpenVDB would allocate before reading: a grid's name and a metadata text.
     const std::string whole = read_file(dir.file("disk.vdb"));
+    for (const std::string& text : {std::string("density"), std::string("flux_unit")}) {
+        const std::string length_and_text =
+            std::string(1, char(text.size())) + std::string(3, '\0') + text;
+        std::string corrupt = whole;
+        const size_t at = corrupt.find(length_and_text);
+        ASSERT_NE(at, std::string::npos) << text;
+        corrupt.replace(at, 4, std::string("\xf0\xff\xff\x7f", 4));
+        write_file(dir.file("long.vdb"), corrupt);
+        try {
+            lightmodel::read_model(dir.file("long.vdb"));
+            ADD_FAILURE() << "a model whose " << text << " claims 2 GB was read";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("a length of 2147483632 bytes at byte " +
+                                                 std::to_string(at)),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+
     for (const size_t length : {size_t(10), size_t(200), whole.size() / 2, whole.size() - 1}) {
         write_file(dir.file("cut.vdb"), whole.substr(0, length));
         try {
