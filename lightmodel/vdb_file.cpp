@@ -35,7 +35,7 @@ public:
         : in_(in), start_(in.tellg()), file_size_(file_size) {}
 
     LengthScan& skip(std::streamoff bytes) {
-        check(bytes);
+        check(bytes, in_.tellg());
         in_.seekg(bytes, std::ios::cur);
         return *this;
     }
@@ -89,16 +89,18 @@ private:
         return value;
     }
     uint32_t length() {
+        const std::streamoff field = in_.tellg();
         const uint32_t bytes = number();
-        check(bytes);
+        check(bytes, field);
         return bytes;
     }
-    void check(std::streamoff bytes) {
-        const std::streamoff at = in_.tellg();
-        if (bytes > file_size_ - at)
+    // `bytes` from the current position on, as the item at `field` states.
+    void check(std::streamoff bytes, std::streamoff field) {
+        const std::streamoff left = file_size_ - in_.tellg();
+        if (bytes > left)
             throw Corrupt("a length of " + std::to_string(bytes) + " bytes at byte " +
-                          std::to_string(at - 4) + ", where the file has " +
-                          std::to_string(file_size_ - at) + " left");
+                          std::to_string(field) + ", where the file has " + std::to_string(left) +
+                          " left");
     }
 
     std::istream& in_;
@@ -213,14 +215,16 @@ VdbFile read_vdb_file(const std::string& path, const VdbGridTypes& accepted,
         openvdb::io::clearStreamMetadataPtr(in);
         return file;
     } catch (const std::ios_base::failure&) {
-        throw Error(path + ": cannot read as an OpenVDB file: it ends early");
+        throw Error(path +
+                    ": cannot read as an OpenVDB file: it ends early or its structure is "
+                    "corrupt");
     } catch (const Error&) {
         throw;  // check_metadata's, which names the file
     } catch (const Corrupt& e) {
         throw Error(path + ": cannot read as an OpenVDB file: " + e.what());
     } catch (const std::exception& e) {
-        // OpenVDB quotes what it read, such as a grid type of the length a corrupt file states
-        // (128 MB): only the beginning of its message is kept.
+        // OpenVDB quotes what it read, such as a grid type as long as the file: only the
+        // beginning of its message is kept.
         constexpr size_t kLongest = 300;
         std::string what = e.what();
         if (what.size() > kLongest) what = what.substr(0, kLongest) + "...";
@@ -229,8 +233,7 @@ VdbFile read_vdb_file(const std::string& path, const VdbGridTypes& accepted,
 }
 
 // openvdb::io::File::write ignores a failing stream: on a full disk it leaves a truncated file
-// and reports success. This writes the archive to a stream
-// whose state is checked.
+// and reports success. This writes the same archive to a stream whose state is checked.
 void write_vdb_file(const std::string& path, const openvdb::GridPtrVec& grids,
                     const openvdb::MetaMap& meta) {
     prepare_openvdb();
