@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <mutex>
+#include <vector>
 
 namespace rayset::lightmodel {
 
@@ -27,19 +28,21 @@ struct Corrupt : std::runtime_error {
 constexpr int32_t kMostGrids = 64;
 
 // OpenVDB allocates a string or a metadata value of the length the file states before it reads
-// it, so that a corrupt length asks for up to 4 GB. A scan walks the same structures first, from
-// the stream's position, refuses a length beyond the end of the file and goes back.
-class LengthScan {
+// it, so that a corrupt length asks for up to 4 GB; and when a tree's topology ends early it
+// leaks the node it was reading (RootNode adopts a child only once the child is read). A scan
+// walks the same structures first, from the stream's position, refuses a length or a node
+// beyond the end of the file and goes back.
+class LayoutScan {
 public:
-    LengthScan(std::istream& in, std::streamoff file_size)
+    LayoutScan(std::istream& in, std::streamoff file_size)
         : in_(in), start_(in.tellg()), file_size_(file_size) {}
 
-    LengthScan& skip(std::streamoff bytes) {
+    LayoutScan& skip(std::streamoff bytes) {
         check(bytes, in_.tellg());
         in_.seekg(bytes, std::ios::cur);
         return *this;
     }
-    LengthScan& strings(int count) {
+    LayoutScan& strings(int count) {
         for (int i = 0; i < count; ++i) skip(length());
         return *this;
     }
@@ -47,7 +50,7 @@ public:
     // OpenVDB knows, only texts and the fixed-size types OpenVDB and the model write are taken,
     // at their own sizes: OpenVDB reads those at their size whatever the file states, and
     // others by counts of their own. Types it does not know it skips by the stated size.
-    LengthScan& metadata() {
+    LayoutScan& metadata() {
         const uint32_t count = number();
         for (uint32_t i = 0; i < count; ++i) {
             strings(1);
@@ -61,6 +64,19 @@ public:
                               " bytes at byte " + std::to_string(at) +
                               ", which this reader refuses");
             skip(bytes);
+        }
+        return *this;
+    }
+    // A tree's topology as Tree, RootNode, InternalNode and LeafNode read it (file version 222
+    // and later, a 5-4-3 tree of values of `value_bytes`): buffer count, background, tiles, then
+    // each child of the root (origin and node) down to the leaves' value masks.
+    LayoutScan& tree(std::streamoff value_bytes, bool mask_compressed) {
+        skip(sizeof(int32_t) + value_bytes);
+        const uint32_t tiles = number(), children = number();
+        skip(std::streamoff(tiles) * (3 * sizeof(int32_t) + value_bytes + sizeof(bool)));
+        for (uint32_t i = 0; i < children; ++i) {
+            skip(3 * sizeof(int32_t));
+            internal_node(5, value_bytes, mask_compressed);
         }
         return *this;
     }
@@ -81,6 +97,46 @@ private:
               {Vec3DMetadata::staticTypeName(), sizeof(Vec3d)}})
             if (type == name) return size;
         return 0;
+    }
+
+    // An InternalNode of 2^(3 log2dim) values: child mask, value mask, values, children (a
+    // LeafNode below log2dim 4 reads its value mask alone).
+    void internal_node(int log2dim, std::streamoff value_bytes, bool mask_compressed) {
+        const size_t size = size_t(1) << (3 * log2dim);
+        const std::vector<uint64_t> child_mask = mask(size), value_mask = mask(size);
+        node_values(size, ones(value_mask), value_bytes, mask_compressed);
+        for (size_t n = ones(child_mask); n > 0; --n) {
+            if (log2dim > 4)
+                internal_node(log2dim - 1, value_bytes, mask_compressed);
+            else
+                skip(512 / 8);
+        }
+    }
+    // io::readCompressedValues: a metadata byte, then inactive values and a selection mask as it
+    // says, then the active values alone (mask compression) or all of them.
+    void node_values(size_t size, size_t active, std::streamoff value_bytes, bool mask_compressed) {
+        char metadata = 0;
+        in_.read(&metadata, 1);
+        using namespace openvdb::io;
+        if (metadata == NO_MASK_AND_ONE_INACTIVE_VAL || metadata == MASK_AND_ONE_INACTIVE_VAL)
+            skip(value_bytes);
+        if (metadata == MASK_AND_TWO_INACTIVE_VALS) skip(2 * value_bytes);
+        if (metadata == MASK_AND_NO_INACTIVE_VALS || metadata == MASK_AND_ONE_INACTIVE_VAL ||
+            metadata == MASK_AND_TWO_INACTIVE_VALS)
+            skip(std::streamoff(size / 8));
+        const bool only_active = mask_compressed && metadata != NO_MASK_AND_ALL_VALS;
+        skip(std::streamoff(only_active ? active : size) * value_bytes);
+    }
+    std::vector<uint64_t> mask(size_t bits) {
+        std::vector<uint64_t> words(bits / 64);
+        check(std::streamoff(bits / 8), in_.tellg());
+        in_.read(reinterpret_cast<char*>(words.data()), std::streamsize(bits / 8));
+        return words;
+    }
+    static size_t ones(const std::vector<uint64_t>& words) {
+        size_t count = 0;
+        for (uint64_t w : words) count += size_t(__builtin_popcountll(w));
+        return count;
     }
 
     uint32_t number() {
@@ -127,7 +183,7 @@ public:
                        const std::function<void(const openvdb::MetaMap&)>& check_metadata) {
         VdbFile file;
         file.meta = std::make_shared<openvdb::MetaMap>();
-        LengthScan(in, file_size).metadata().back();
+        LayoutScan(in, file_size).metadata().back();
         file.meta->readMeta(in);
         check_metadata(*file.meta);
         const int32_t count = readGridCount(in);
@@ -137,12 +193,11 @@ public:
         file.grids = std::make_shared<openvdb::GridPtrVec>();
         for (int32_t i = 0; i < count; ++i) {
             openvdb::io::GridDescriptor descriptor;
-            LengthScan(in, file_size).strings(3).back();  // name, type, instance parent
+            LayoutScan(in, file_size).strings(3).back();  // name, type, instance parent
             openvdb::GridBase::Ptr grid = descriptor.read(in);
             check_grid(descriptor, accepted);
             check_compression(in, descriptor);
-            // The compression flags, the grid's metadata, its transform's type name.
-            LengthScan(in, file_size).skip(4).metadata().strings(1).back();
+            check_layout(in, file_size, *grid);
             readGrid(grid, descriptor, in);
             file.grids->push_back(grid);
         }
@@ -164,6 +219,37 @@ private:
                           ", which this file cannot hold");
         if (descriptor.isInstance())
             throw Corrupt("grid '" + name + "' shares the tree of another grid (instancing)");
+        if (descriptor.saveFloatAsHalf())
+            throw Corrupt("grid '" + name + "' is stored in half precision");
+    }
+
+    // What Archive::readGrid reads, walked before it reads it: the compression flags, the
+    // metadata, the transform's type name, then (after the transform, read into a scratch grid
+    // to find its end) the topology.
+    static void check_layout(std::istream& in, std::streamoff file_size,
+                             const openvdb::GridBase& grid) {
+        const std::streampos start = in.tellg();
+        LayoutScan(in, file_size).skip(sizeof(uint32_t)).metadata().strings(1).back();
+        uint32_t flags = 0;
+        in.read(reinterpret_cast<char*>(&flags), sizeof flags);
+        openvdb::GridBase::Ptr scratch = grid.copyGridWithNewTree();
+        scratch->readMeta(in);
+        scratch->readTransform(in);
+        LayoutScan(in, file_size)
+            .tree(value_bytes(grid), flags & openvdb::io::COMPRESS_ACTIVE_MASK);
+        in.seekg(start);
+    }
+
+    static std::streamoff value_bytes(const openvdb::GridBase& grid) {
+        using Walked = openvdb::TypeList<openvdb::FloatGrid, openvdb::DoubleGrid,
+                                         openvdb::Int32Grid, openvdb::Int64Grid>;
+        std::streamoff bytes = 0;
+        grid.apply<Walked>([&](const auto& typed) {
+            bytes = sizeof(typename std::decay_t<decltype(typed)>::ValueType);
+        });
+        if (bytes == 0)
+            throw Corrupt("grid type " + grid.type() + " is not one this reader can walk");
+        return bytes;
     }
 
     // Peeks at the flags Archive::readGrid reads first.

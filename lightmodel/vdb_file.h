@@ -3,13 +3,15 @@
 // Debian's OpenVDB 10.0 trusts what a file states: it reads a zip or blosc chunk of the stated
 // length into a buffer of the length the grid needs before it compares the two, indexes a point
 // attribute by a length other than the one it read, decompresses delayed-load metadata by its
-// own counts, and allocates every string and metadata value at the stated length before reading
-// it. So io::File is not used for reading. read_vdb_file reads the same archive, but first walks
-// every length-prefixed item and refuses a length beyond the end of the file, refuses a grid
-// that is not a plain tree of the value types given or whose data are zip- or blosc-compressed,
-// skips delayed-load metadata unread, and stops at the first read past the end of the file
-// instead of letting OpenVDB's loops run on over a failed stream. write_vdb_file writes what it
-// reads: plain trees without zip or blosc (active-value masks only).
+// own counts, allocates every string and metadata value at the stated length before reading it,
+// and leaks the node it was reading when a tree's topology ends early. So io::File is not used
+// for reading. read_vdb_file reads the same archive, but first walks every length-prefixed item
+// and every tree's topology and refuses a length or node beyond the end of the file; refuses a
+// grid that is not a plain tree of the value types given (in full precision) or whose data are
+// zip- or blosc-compressed; skips delayed-load metadata unread; and stops at the first read past
+// the end of the file instead of letting OpenVDB's loops run on over a failed stream.
+// write_vdb_file writes what it reads: plain trees without zip or blosc (active-value masks
+// only).
 #pragma once
 
 #include <openvdb/openvdb.h>
