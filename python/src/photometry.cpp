@@ -95,9 +95,7 @@ FarField far_field_of(const Path& path, double c_step, double gamma_step, const 
     return far;
 }
 
-}  // namespace
-
-void bind_photometry(nb::module_& m) {
+void bind_photometry_class(nb::module_& m) {
     nb::class_<Photometry>(
         m, "Photometry",
         "Far-field photometry as IES LM-63 and EULUMDAT hold it: intensity (cd) on a grid of "
@@ -152,7 +150,9 @@ void bind_photometry(nb::module_& m) {
         .def("total_flux", &Photometry::total_flux,
              "Luminous flux, lm: the intensity integrated over the sphere.")
         .def("max_candela", &Photometry::max_candela, "The largest value of the table, cd.");
+}
 
+void bind_photometry_files(nb::module_& m) {
     m.def(
         "read_photometry",
         [](const Path& path) {
@@ -177,7 +177,9 @@ void bind_photometry(nb::module_& m) {
                 detect_photometry_format(path.string()) == PhotometryFormat::ies ? "ies" : "ldt");
         },
         nb::arg("path"), "'ies' or 'ldt', from the file's content.");
+}
 
+void bind_far_field(nb::module_& m) {
     nb::class_<FarField>(m, "FarField",
                          "The far field of a ray file: type C photometry and, per cell, its "
                          "flux, solid angle, variance and kernel bandwidth.")
@@ -233,6 +235,14 @@ void bind_photometry(nb::module_& m) {
           "(kernel density, local fits, bandwidth from the rays), 'none' (the histogram) or a "
           "bandwidth in degrees given as text; round=True rounds the intensities to the digits "
           "their standard errors support, as rayconv does before writing.");
+}
+
+}  // namespace
+
+void bind_photometry(nb::module_& m) {
+    bind_photometry_class(m);
+    bind_photometry_files(m);
+    bind_far_field(m);
 }
 
 }  // namespace rayset::python
