@@ -22,6 +22,14 @@ namespace rayset::lightmodel {
 
 inline constexpr int kModelVersion = 2;
 
+// How the goniometric diagrams are made: kernel estimates whose widths and grid follow the rays
+// (diagram_estimate.h), or each intensity cell's histogram.
+enum class DiagramSmoothing { none = 0, automatic = 1 };
+// "auto" or "none", as raymodel build and rayset.Model.build take them.
+inline const char* diagram_smoothing_name(DiagramSmoothing s) {
+    return s == DiagramSmoothing::automatic ? "auto" : "none";
+}
+
 // Every number of the paper is an option with its value as the default.
 struct ModelOptions {
     int density_resolution = 0;        // 0: adapted to the ray count (adapted_resolution)
@@ -30,10 +38,9 @@ struct ModelOptions {
     int intensity_resolution = 5;      // the paper's 5^3
     int max_spheres_per_cell = 16;     // the paper's 16
     int samples_per_cell = 64;         // origins kept per boundary cell for the sphere fit
-    // Goniometric diagrams: smoothed (diagram_estimate.h) or each cell's histogram; bands of
-    // cos(theta) and sectors of phi (goniometric_diagram.h), 0 for the grid the estimate chooses
-    // from the rays or the histogram's 40 x 12.
-    bool smooth_diagrams = true;
+    // Goniometric diagrams: bands of cos(theta) and sectors of phi (goniometric_diagram.h), 0
+    // for the grid the estimate chooses from the rays or the histogram's 40 x 12.
+    DiagramSmoothing diagram_smoothing = DiagramSmoothing::automatic;
     int diagram_bands = 0;
     int diagram_sectors = 0;
     double spectral_bin_nm = 10;  // width of the per-cell spectrum bins, 380..780 nm
@@ -42,6 +49,36 @@ struct ModelOptions {
     uint64_t seed = 1;            // reservoir sampling of origins
     bool progress = false;        // progress bar on stderr
 };
+
+// The options that decide what a build makes, each by its one name: model files record them
+// (build_options), raymodel build takes them as --NAME (dashes for underscores) and
+// rayset.Model.build as keywords. visit(name, member, help) for each, in one order.
+// spectral_bin_nm (a file records the bins themselves), threads and progress are not among them.
+template <class Options, class Visit>
+void visit_model_options(Options& o, Visit&& visit) {
+    visit("density_resolution", o.density_resolution,
+          "Cells along the longest axis of the density lattice; 0 adapts it to the ray count "
+          "(round(sqrt(rays / 64)), at most max_density_resolution)");
+    visit("max_density_resolution", o.max_density_resolution,
+          "Upper bound of the adapted density resolution");
+    visit("flux_resolution", o.flux_resolution, "Cells along the longest axis of the flux lattice");
+    visit("intensity_resolution", o.intensity_resolution,
+          "Cells along the longest axis of the intensity lattice (one goniometric diagram each)");
+    visit("max_spheres_per_cell", o.max_spheres_per_cell, "Most spheres in one boundary cell");
+    visit("samples_per_cell", o.samples_per_cell,
+          "Origins kept per boundary cell for the sphere fit");
+    visit("coverage_lines", o.coverage_lines,
+          "Lines per flux cell measuring the fraction of it that is seen from outside");
+    visit("diagram_smoothing", o.diagram_smoothing,
+          "Goniometric diagrams: 'auto' estimates each intensity cell's density of directions "
+          "with kernels whose width (per direction, from all rays) and grid follow the rays; "
+          "'none' keeps each cell's histogram (40 x 12 cells unless set below)");
+    visit("diagram_bands", o.diagram_bands,
+          "Bands of cos(theta) of each goniometric diagram (even); 0: chosen from the rays");
+    visit("diagram_sectors", o.diagram_sectors,
+          "Sectors of phi of each goniometric diagram; 0: chosen from the rays");
+    visit("seed", o.seed, "Seed of the reservoir sampling of origins");
+}
 
 // Wavelength bins of the per-cell spectra: [first + i*width, first + (i+1)*width).
 struct SpectralBins {

@@ -122,7 +122,7 @@ private:
 class DiagramRays {
 public:
     DiagramRays(const ModelOptions& options, size_t cells) : options_(options) {
-        if (options.smooth_diagrams)
+        if (options.diagram_smoothing == DiagramSmoothing::automatic)
             estimate_.emplace(cells);
         else
             histograms_.resize(cells);

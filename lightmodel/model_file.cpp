@@ -142,17 +142,8 @@ constexpr char kVersionKey[] = "rayset_model_version";
 
 template <class Io, class Options>
 void describe_options(Io& io, Options& o) {
-    io.option("density_resolution", o.density_resolution);
-    io.option("max_density_resolution", o.max_density_resolution);
-    io.option("flux_resolution", o.flux_resolution);
-    io.option("intensity_resolution", o.intensity_resolution);
-    io.option("max_spheres_per_cell", o.max_spheres_per_cell);
-    io.option("samples_per_cell", o.samples_per_cell);
-    io.option("coverage_lines", o.coverage_lines);
-    io.option("diagram_bands", o.diagram_bands);
-    io.option("diagram_sectors", o.diagram_sectors);
-    io.option("smooth_diagrams", o.smooth_diagrams);
-    io.option("seed", o.seed);
+    visit_model_options(o,
+                        [&](const char* key, auto& value, const char*) { io.option(key, value); });
 }
 
 template <class Io, class Model>
@@ -195,7 +186,7 @@ struct MetadataWriter {
         options_text +=
             (options_text.empty() ? "" : " ") + std::string(key) + "=" + std::to_string(value);
     }
-    void option(const char* key, bool value) { option(key, int(value)); }
+    void option(const char* key, DiagramSmoothing value) { option(key, int(value)); }
     void options(const char* key, const ModelOptions& o) {
         options_text.clear();
         describe_options(*this, o);
@@ -251,9 +242,14 @@ struct MetadataReader {
         if (auto found = option_values.find(key); found != option_values.end())
             value = T(found->second);
     }
-    void option(const char* key, bool& value) {
-        if (auto found = option_values.find(key); found != option_values.end())
-            value = found->second != 0;
+    void option(const char* key, DiagramSmoothing& value) {
+        const auto found = option_values.find(key);
+        if (found == option_values.end()) return;
+        if (found->second != int(DiagramSmoothing::none) &&
+            found->second != int(DiagramSmoothing::automatic))
+            throw Error(path + ": metadata 'build_options' holds '" + key + "=" +
+                        std::to_string(found->second) + "': expected 0 (none) or 1 (auto)");
+        value = DiagramSmoothing(found->second);
     }
     void options(const char* key, ModelOptions& o) {
         std::string t;
@@ -480,7 +476,6 @@ LightModel read_model(const std::string& path) {
         check_model_version(meta, path);
     });
     LightModel model;
-    model.options.smooth_diagrams = false;  // files that do not say so were built with histograms
     MetadataReader reader(*file.meta, path);
     describe_metadata(reader, model);
     read_diagrams(file, path, model);

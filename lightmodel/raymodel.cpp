@@ -9,10 +9,12 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 
 namespace {
@@ -82,9 +84,25 @@ void print(const nlohmann::json& j) {
 // The command line of `raymodel build` and `raymodel info`.
 struct Command {
     ModelOptions options;
-    std::string input, output, diagram_smoothing = "auto";
+    std::string input, output;
     bool json = false;
 };
+
+// One of visit_model_options' options as --NAME, dashes for underscores.
+template <class T>
+void add_model_option(CLI::App& build, std::string name, T& value, const char* help) {
+    std::replace(name.begin(), name.end(), '_', '-');
+    CLI::Option* option = build.add_option("--" + name, value, help);
+    if constexpr (std::is_same_v<T, DiagramSmoothing>) {
+        const std::map<std::string, DiagramSmoothing> names = {
+            {diagram_smoothing_name(DiagramSmoothing::automatic), DiagramSmoothing::automatic},
+            {diagram_smoothing_name(DiagramSmoothing::none), DiagramSmoothing::none}};
+        option->transform(CLI::CheckedTransformer(names).description(""));
+        option->type_name("auto|none")->default_str(diagram_smoothing_name(value));
+    } else {
+        option->capture_default_str();
+    }
+}
 
 CLI::App* add_build_command(CLI::App& app, Command& c) {
     ModelOptions& o = c.options;
@@ -94,50 +112,10 @@ CLI::App* add_build_command(CLI::App& app, Command& c) {
         ->required()
         ->check(CLI::ExistingFile);
     build->add_option("-o,--output", c.output, "Model file to write (.vdb)")->required();
-    build->add_option(
-        "--density-resolution", o.density_resolution,
-        "Cells along the longest axis of the density lattice; 0 adapts it to the ray count "
-        "(round(sqrt(rays / 64)), at most --max-density-resolution)");
-    build
-        ->add_option("--max-density-resolution", o.max_density_resolution,
-                     "Upper bound of the adapted density resolution")
-        ->capture_default_str();
-    build
-        ->add_option("--flux-resolution", o.flux_resolution,
-                     "Cells along the longest axis of the flux lattice")
-        ->capture_default_str();
-    build
-        ->add_option(
-            "--intensity-resolution", o.intensity_resolution,
-            "Cells along the longest axis of the intensity lattice (one goniometric diagram each)")
-        ->capture_default_str();
-    build->add_option("--max-spheres", o.max_spheres_per_cell, "Most spheres in one boundary cell")
-        ->capture_default_str();
-    build
-        ->add_option("--samples-per-cell", o.samples_per_cell,
-                     "Origins kept per boundary cell for the sphere fit")
-        ->capture_default_str();
-    build
-        ->add_option("--diagram-smoothing", c.diagram_smoothing,
-                     "Goniometric diagrams: 'auto' estimates each intensity cell's density of "
-                     "directions with kernels "
-                     "whose width (per direction, from all rays) and grid follow the rays; 'none' "
-                     "keeps each cell's "
-                     "histogram (40 x 12 cells unless set below)")
-        ->check(CLI::IsMember({"auto", "none"}))
-        ->capture_default_str();
-    build
-        ->add_option(
-            "--diagram-bands", o.diagram_bands,
-            "Bands of cos(theta) of each goniometric diagram (even); 0: chosen from the rays")
-        ->capture_default_str();
-    build
-        ->add_option("--diagram-sectors", o.diagram_sectors,
-                     "Sectors of phi of each goniometric diagram; 0: chosen from the rays")
-        ->capture_default_str();
+    visit_model_options(o, [&](const std::string& name, auto& value, const char* help) {
+        add_model_option(*build, name, value, help);
+    });
     build->add_option("--threads", o.threads, "Worker threads; 0 = all cores")
-        ->capture_default_str();
-    build->add_option("--seed", o.seed, "Seed of the reservoir sampling of origins")
         ->capture_default_str();
     build->add_flag("--json", c.json, "Print the summary as JSON");
     return build;
@@ -145,7 +123,6 @@ CLI::App* add_build_command(CLI::App& app, Command& c) {
 
 // The model built with a progress bar per pass, written, and summarised.
 void run_build(Command& c) {
-    c.options.smooth_diagrams = c.diagram_smoothing == "auto";
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<rayset::ProgressBar> bar;
     int current = 0;
@@ -213,7 +190,7 @@ int main(int argc, char** argv) {
         else if (*info)
             run_info(command);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        return app.exit(e) == 0 ? 0 : 2;  // --help, or a usage error
     } catch (const std::exception& e) {
         std::fprintf(stderr, "raymodel: error: %s\n", e.what());
         return 1;

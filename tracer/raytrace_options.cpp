@@ -548,7 +548,7 @@ bool parse_raytrace_options(int argc, char** argv, RaytraceOptions& o, int& exit
         std::reverse(rest.begin(), rest.end());  // CLI11 takes the arguments in reverse order
         app.parse(rest);
     } catch (const CLI::ParseError& e) {
-        exit_code = app.exit(e);
+        exit_code = app.exit(e) == 0 ? 0 : 2;  // --help, or a usage error
         return false;
     }
     for (const std::string& ini : ini_files) apply_ini_file(ini, o);

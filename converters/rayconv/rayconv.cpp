@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        return app.exit(e) == 0 ? 0 : 2;  // --help, or a usage error
     } catch (const rayset::Error& e) {
         std::fprintf(stderr, "rayconv: error: %s\n", e.what());
         return 1;

@@ -47,9 +47,11 @@ namespace rayset {
 //   Every number of the paper, its value the default (what `raymodel build` takes):
 //   density_resolution (0: adapted to the ray count, at most max_density_resolution 128),
 //   flux_resolution 32, intensity_resolution 5, max_spheres_per_cell 16, samples_per_cell 64,
-//   smooth_diagrams true (kernel estimates; false: histograms), diagram_bands and
-//   diagram_sectors (0: chosen from the rays), spectral_bin_nm 10, coverage_lines 512,
-//   threads 0 (all cores), seed 1, progress false (a progress bar on stderr).
+//   diagram_smoothing DiagramSmoothing::automatic (kernel estimates; none: histograms),
+//   coverage_lines 512, diagram_bands and diagram_sectors (0: chosen from the rays),
+//   spectral_bin_nm 10, threads 0 (all cores), seed 1, progress false (a progress bar on
+//   stderr). visit_model_options(options, visit) calls visit(name, member, help) for each
+//   option a build records, by the name raymodel build and rayset.Model.build give it.
 //
 // LightModel read_model(const std::string& path);
 //   Reads a model file (.vdb). Throws Error naming the file and what is missing or
@@ -128,6 +130,7 @@ using lightmodel::Box;
 using lightmodel::build_model;
 using lightmodel::BuildProgress;
 using lightmodel::ComplexSource;
+using lightmodel::DiagramSmoothing;
 using lightmodel::Emitter;
 using lightmodel::EmitterHit;
 using lightmodel::LeSample;
@@ -138,6 +141,7 @@ using lightmodel::ModelSource;
 using lightmodel::read_model;
 using lightmodel::SpectralQuery;
 using lightmodel::SpectralSelect;
+using lightmodel::visit_model_options;
 using lightmodel::write_model;
 
 }  // namespace rayset

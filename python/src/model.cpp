@@ -25,9 +25,12 @@ namespace rayset::python {
 namespace {
 
 using lightmodel::ComplexSource;
+using lightmodel::diagram_smoothing_name;
+using lightmodel::DiagramSmoothing;
 using lightmodel::LightModel;
 using lightmodel::ModelOptions;
 using lightmodel::SpectralSelect;
+using lightmodel::visit_model_options;
 
 template <class F>
 void each_row(size_t rows, const F& f) {
@@ -65,40 +68,36 @@ void put_rgb(double* out, size_t i, const Rgb& c) {
     out[3 * i] = c.red, out[3 * i + 1] = c.green, out[3 * i + 2] = c.blue;
 }
 
+// A keyword's value as the option's type: diagram_smoothing by its name, 'auto' or 'none'.
+template <class T>
+T option_value(nb::handle value, const char* name) {
+    if constexpr (std::is_same_v<T, DiagramSmoothing>) {
+        const std::string text = nb::cast<std::string>(value);
+        for (DiagramSmoothing s : {DiagramSmoothing::automatic, DiagramSmoothing::none})
+            if (text == diagram_smoothing_name(s)) return s;
+        throw nb::value_error(fmt::format("{} must be 'auto' or 'none'", name).c_str());
+    } else {
+        return nb::cast<T>(value);
+    }
+}
+
+// raymodel build's options by the names of visit_model_options, and those that do not decide
+// what is built (spectral_bin_nm, threads, progress).
 ModelOptions options_from(const nb::kwargs& kwargs) {
     ModelOptions o;
     for (auto [key, value] : kwargs) {
         const std::string k = nb::cast<std::string>(key);
-        auto integer = [&] { return nb::cast<int>(value); };
-        if (k == "density_resolution")
-            o.density_resolution = integer();
-        else if (k == "max_density_resolution")
-            o.max_density_resolution = integer();
-        else if (k == "flux_resolution")
-            o.flux_resolution = integer();
-        else if (k == "intensity_resolution")
-            o.intensity_resolution = integer();
-        else if (k == "max_spheres_per_cell" || k == "max_spheres")
-            o.max_spheres_per_cell = integer();
-        else if (k == "samples_per_cell")
-            o.samples_per_cell = integer();
-        else if (k == "diagram_smoothing") {
-            const std::string s = nb::cast<std::string>(value);
-            if (s != "auto" && s != "none")
-                throw nb::value_error("diagram_smoothing must be 'auto' or 'none'");
-            o.smooth_diagrams = s == "auto";
-        } else if (k == "diagram_bands")
-            o.diagram_bands = integer();
-        else if (k == "diagram_sectors")
-            o.diagram_sectors = integer();
-        else if (k == "spectral_bin_nm")
+        bool known = false;
+        visit_model_options(o, [&](const char* name, auto& member, const char*) {
+            if (k != name) return;
+            member = option_value<std::decay_t<decltype(member)>>(value, name);
+            known = true;
+        });
+        if (known) continue;
+        if (k == "spectral_bin_nm")
             o.spectral_bin_nm = nb::cast<double>(value);
-        else if (k == "coverage_lines")
-            o.coverage_lines = integer();
         else if (k == "threads")
-            o.threads = integer();
-        else if (k == "seed")
-            o.seed = nb::cast<uint64_t>(value);
+            o.threads = nb::cast<int>(value);
         else if (k == "progress")
             o.progress = nb::cast<bool>(value);
         else
@@ -109,19 +108,14 @@ ModelOptions options_from(const nb::kwargs& kwargs) {
 
 nb::dict options_dict(const ModelOptions& o) {
     nb::dict d;
-    d["density_resolution"] = o.density_resolution;
-    d["max_density_resolution"] = o.max_density_resolution;
-    d["flux_resolution"] = o.flux_resolution;
-    d["intensity_resolution"] = o.intensity_resolution;
-    d["max_spheres_per_cell"] = o.max_spheres_per_cell;
-    d["samples_per_cell"] = o.samples_per_cell;
-    d["diagram_smoothing"] = o.smooth_diagrams ? "auto" : "none";
-    d["diagram_bands"] = o.diagram_bands;
-    d["diagram_sectors"] = o.diagram_sectors;
+    visit_model_options(o, [&](const char* name, const auto& member, const char*) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(member)>, DiagramSmoothing>)
+            d[name] = diagram_smoothing_name(member);
+        else
+            d[name] = member;
+    });
     d["spectral_bin_nm"] = o.spectral_bin_nm;
-    d["coverage_lines"] = o.coverage_lines;
     d["threads"] = o.threads;
-    d["seed"] = o.seed;
     return d;
 }
 
@@ -197,8 +191,7 @@ public:
                                                 : name == "flux"      ? &m.flux_frame
                                                 : name == "intensity" ? &m.intensity_frame
                                                                       : nullptr;
-        if (!frame)
-            throw nb::value_error("lattice must be 'density', 'flux' or 'intensity'");
+        if (!frame) throw nb::value_error("lattice must be 'density', 'flux' or 'intensity'");
         const auto& d = frame->dims();
         const std::vector<size_t> shape{size_t(d[2]), size_t(d[1]), size_t(d[0])};
         nb::dict out;
@@ -259,8 +252,7 @@ public:
     Array<double> diagram_intensity(int64_t k, const Points& direction) const {
         const LightModel& m = *model_;
         if (k < 0 || size_t(k) >= m.diagrams.size())
-            throw nb::index_error(
-                fmt::format("diagram {} of {}", k, m.diagrams.size()).c_str());
+            throw nb::index_error(fmt::format("diagram {} of {}", k, m.diagrams.size()).c_str());
         double flux = 0;
         for (const auto& c : m.flux_cells)
             if (c.intensity_cell == k) flux += c.flux;
@@ -268,9 +260,8 @@ public:
         const size_t n = direction.shape(0);
         NewArray<double> out({n});
         if (diagram.empty()) return out.array;
-        each_row(n, [&](size_t i) {
-            out.data[i] = flux * diagram.pdf(python::point(direction, i));
-        });
+        each_row(n,
+                 [&](size_t i) { out.data[i] = flux * diagram.pdf(python::point(direction, i)); });
         return out.array;
     }
 
@@ -422,7 +413,9 @@ void bind_model(nb::module_& m) {
                       "(lightmodel/emitter.h). Lengths mm; radiance in the selected quantity per "
                       "(mm^2 sr).")
         .def_static("build", &Model::build, nb::arg("ray_path"), nb::arg("options"),
-                    "Builds the model of a ray file (raymodel build's options as keywords).")
+                    "Builds the model of a ray file; raymodel build's options as keywords, dashes "
+                    "made underscores (flux_resolution=16, diagram_smoothing='none', threads=2, "
+                    "...), and spectral_bin_nm, progress.")
         .def_static("load", &Model::load, nb::arg("path"), "Reads a model file (.vdb).")
         .def("save", &Model::save, nb::arg("path"), "Writes the model as one .vdb file.")
         .def("phi", &Model::phi, nb::arg("quantity") = "flux", nb::arg("band") = -1,
@@ -440,8 +433,7 @@ void bind_model(nb::module_& m) {
         .def("diagrams", &Model::diagrams,
              "The goniometric diagrams, one row each: cell (intensity-lattice coordinates), "
              "centre (mm), flux (of the flux cells using it, flux_unit), empty.")
-        .def("diagram_intensity", &Model::diagram_intensity, nb::arg("index"),
-             nb::arg("direction"),
+        .def("diagram_intensity", &Model::diagram_intensity, nb::arg("index"), nb::arg("direction"),
              "Intensity (flux_unit/sr) of the light leaving diagram `index`'s cell toward each "
              "unit direction (N x 3): its flux times the diagram's density; 0 for an empty one.")
         .def("intersect", &Model::intersect, nb::arg("origin"), nb::arg("direction"),

@@ -163,6 +163,8 @@ TEST_F(RayconvCli, MissingInputAndHelp) {
     auto missing = run_command(rayconv("info " + dir.file("nope.tm25ray")));
     EXPECT_NE(missing.status, 0);
     EXPECT_NE(missing.output.find("nope.tm25ray"), std::string::npos);
+    EXPECT_EQ(missing.status, 2);  // a usage error (docs/architecture.md)
+    EXPECT_EQ(run_command(rayconv("info --no-such-option x")).status, 2);
     auto help = run_command(rayconv("--help"));
     EXPECT_EQ(help.status, 0);
     EXPECT_NE(help.output.find("convert"), std::string::npos);

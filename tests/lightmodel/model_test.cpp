@@ -71,7 +71,7 @@ TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
         }
         EXPECT_EQ(back.bins.first_nm, m.bins.first_nm);
         EXPECT_EQ(back.bins.count, m.bins.count);
-        EXPECT_EQ(back.options.smooth_diagrams, m.options.smooth_diagrams);
+        EXPECT_EQ(back.options.diagram_smoothing, m.options.diagram_smoothing);
         std::printf(
             "[ figures  ] %s: %zu flux cells, %zu voxels, %zu boundary voxels, %zu spheres, %zu "
             "diagrams\n",
@@ -84,7 +84,7 @@ TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
     p.density_resolution = 77, p.max_density_resolution = 96, p.flux_resolution = 24;
     p.intensity_resolution = 3, p.max_spheres_per_cell = 9, p.samples_per_cell = 33;
     p.coverage_lines = 100, p.diagram_bands = 44, p.diagram_sectors = 28;
-    p.smooth_diagrams = !p.smooth_diagrams, p.seed = 1234567890123;
+    p.diagram_smoothing = lightmodel::DiagramSmoothing::none, p.seed = 1234567890123;
     write_model(changed, dir.file("options.vdb"));
     const lightmodel::ModelOptions o = lightmodel::read_model(dir.file("options.vdb")).options;
     EXPECT_EQ(o.density_resolution, p.density_resolution);
@@ -96,7 +96,7 @@ TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
     EXPECT_EQ(o.coverage_lines, p.coverage_lines);
     EXPECT_EQ(o.diagram_bands, p.diagram_bands);
     EXPECT_EQ(o.diagram_sectors, p.diagram_sectors);
-    EXPECT_EQ(o.smooth_diagrams, p.smooth_diagrams);
+    EXPECT_EQ(o.diagram_smoothing, p.diagram_smoothing);
     EXPECT_EQ(o.seed, p.seed);
 }
 

@@ -49,8 +49,22 @@ TEST(RaymodelCli, RefusesAFileThatIsNotAModel) {
     const std::string bad = dir.file("bad.vdb");
     write_file(bad, "not openvdb");
     const CommandResult r = run_command(std::string(RAYMODEL_EXE) + " info " + bad);
-    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("bad.vdb"), std::string::npos) << r.output;
+}
+
+// Exit codes as docs/architecture.md gives them: 2 for a usage error (here a value outside an
+// option's choices, which the option table's diagram_smoothing has), nothing written.
+TEST(RaymodelCli, AUsageErrorExitsWith2) {
+    ScratchDir dir;
+    write_file(dir.file("x.tm25ray"), "the options are read before the file");
+    const CommandResult r =
+        run_command(std::string(RAYMODEL_EXE) + " build " + dir.file("x.tm25ray") + " -o " +
+                    dir.file("m.vdb") + " --diagram-smoothing maybe");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("--diagram-smoothing"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("m.vdb")));
+    EXPECT_EQ(run_command(std::string(RAYMODEL_EXE) + " build --help").status, 0);
 }
 
 }  // namespace

@@ -85,10 +85,11 @@ NearFieldError near_field_error(uint64_t rays, uint64_t seed,
         error.rms[plane] = std::sqrt(sum_squares / (kCells * kCells));
     }
     std::printf(
-        "[ figures  ] tilted disk, %8llu rays, %s diagrams: illuminance RMS %.4f at 1 source size, "
+        "[ figures  ] tilted disk, %8llu rays, diagram smoothing %s: illuminance RMS %.4f at 1 "
+        "source size, "
         "%.4f at 5; receivers' largest standard error %.4f\n",
-        (unsigned long long)rays, options.smooth_diagrams ? "smoothed" : "histogram", error.rms[0],
-        error.rms[1], error.worst_se);
+        (unsigned long long)rays, lightmodel::diagram_smoothing_name(options.diagram_smoothing),
+        error.rms[0], error.rms[1], error.worst_se);
     return error;
 }
 
@@ -106,7 +107,7 @@ TEST(ModelNearField, TiltedDiskAtOneAndFiveSourceSizes) {
         EXPECT_LT(e.rms[1], bound) << rays << " rays, 5 source sizes";
     }
     lightmodel::ModelOptions histogram;
-    histogram.smooth_diagrams = false;
+    histogram.diagram_smoothing = lightmodel::DiagramSmoothing::none;
     const NearFieldError binned = near_field_error(100000, 23, histogram);
     EXPECT_GT(binned.rms[1], 0.02);
     for (int plane = 0; plane < 2; ++plane) EXPECT_LT(e.rms[plane], binned.rms[plane]) << plane;

@@ -132,6 +132,8 @@ TEST(RaytraceTool, BadIniAndSwitchesAreReported) {
         EXPECT_NE(r.status, 0) << line;
         EXPECT_NE(r.output.find(std::string("y.ini:2: ") + message), std::string::npos) << r.output;
     }
+    r = raytrace("'" + kCornell + "' --no-such-option", dir.path().string());
+    EXPECT_EQ(r.status, 2) << r.output;  // a usage error (docs/architecture.md)
     r = raytrace("'" + kCornell + "' +Q9", dir.path().string());
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.output.find("'+Q9' is not supported"), std::string::npos) << r.output;
