@@ -196,8 +196,7 @@ public:
             LayoutScan(in, file_size).strings(3).back();  // name, type, instance parent
             openvdb::GridBase::Ptr grid = descriptor.read(in);
             check_grid(descriptor, accepted);
-            check_compression(in, descriptor);
-            check_layout(in, file_size, *grid);
+            check_layout(in, file_size, descriptor, *grid);
             readGrid(grid, descriptor, in);
             file.grids->push_back(grid);
         }
@@ -223,15 +222,22 @@ private:
             throw Corrupt("grid '" + name + "' is stored in half precision");
     }
 
-    // What Archive::readGrid reads, walked before it reads it: the compression flags, the
-    // metadata, the transform's type name, then (after the transform, read into a scratch grid
-    // to find its end) the topology.
+    // What Archive::readGrid reads, walked before it reads it: the compression flags (zip and
+    // blosc refused: OpenVDB reads their chunks by the lengths they state), the metadata, the
+    // transform's type name, then (after the transform, read into a scratch grid to find its
+    // end) the topology.
     static void check_layout(std::istream& in, std::streamoff file_size,
+                             const openvdb::io::GridDescriptor& descriptor,
                              const openvdb::GridBase& grid) {
         const std::streampos start = in.tellg();
         LayoutScan(in, file_size).skip(sizeof(uint32_t)).metadata().strings(1).back();
         uint32_t flags = 0;
         in.read(reinterpret_cast<char*>(&flags), sizeof flags);
+        if (flags & (openvdb::io::COMPRESS_ZIP | openvdb::io::COMPRESS_BLOSC))
+            throw Corrupt(
+                "grid '" + openvdb::io::GridDescriptor::nameAsString(descriptor.uniqueName()) +
+                "' is stored with " + openvdb::io::compressionToString(flags) +
+                " compression, which this reader refuses (files from raymodel have none)");
         openvdb::GridBase::Ptr scratch = grid.copyGridWithNewTree();
         scratch->readMeta(in);
         scratch->readTransform(in);
@@ -250,19 +256,6 @@ private:
         if (bytes == 0)
             throw Corrupt("grid type " + grid.type() + " is not one this reader can walk");
         return bytes;
-    }
-
-    // Peeks at the flags Archive::readGrid reads first.
-    static void check_compression(std::istream& in, const openvdb::io::GridDescriptor& descriptor) {
-        const std::streampos start = in.tellg();
-        uint32_t flags = 0;
-        in.read(reinterpret_cast<char*>(&flags), sizeof flags);
-        in.seekg(start);
-        if (flags & (openvdb::io::COMPRESS_ZIP | openvdb::io::COMPRESS_BLOSC))
-            throw Corrupt(
-                "grid '" + openvdb::io::GridDescriptor::nameAsString(descriptor.uniqueName()) +
-                "' is stored with " + openvdb::io::compressionToString(flags) +
-                " compression, which this reader refuses (files from raymodel have none)");
     }
 };
 
