@@ -403,15 +403,21 @@ DirectionHistogram::Estimate DirectionHistogram::adaptive(double x, double y, do
     }
     // The bias of an estimate bounded by how far it lies from those of the same or smaller
     // bandwidths beyond the noise of their difference; the estimate with the least bound plus
-    // noise.
+    // noise. A log-quadratic fit is not held to kernels wider than half its width: they flatten
+    // a lobe the fit follows (their bias grows as sigma^4: 1/16 of it at half the width).
     size_t best = 0;
     double best_score = HUGE_VAL;
     for (size_t s = 0; s < ladder.size(); ++s) {
+        const bool lobe_fit = ladder[s].kind == Kind::log_quadratic;
         double bias = 0;
-        for (size_t r = 0; r < ladder.size(); ++r)
-            if (r != s && ladder[r].sigma_deg <= ladder[s].sigma_deg)
+        for (size_t r = 0; r < ladder.size(); ++r) {
+            const double reach = lobe_fit && ladder[r].kind == Kind::kernel
+                                     ? ladder[s].sigma_deg / 2 * 1.0001
+                                     : ladder[s].sigma_deg;
+            if (r != s && ladder[r].sigma_deg <= reach)
                 bias = std::max(bias, std::abs(ladder[s].intensity - ladder[r].intensity) -
                                           kMargin * difference_error(ladder[s], ladder[r]));
+        }
         const double score = bias + kMargin * ladder[s].standard_error;
         if (score < best_score) best_score = score, best = s;
     }
