@@ -35,11 +35,11 @@
 // estimate is bounded by how far it lies from those of the same or smaller bandwidths beyond the
 // noise of their difference (estimates from the same rays are correlated, as their kernels
 // overlap: the noise of a difference is far below either's), and the estimate with the least
-// bound plus noise wins. A local fit is held only to the kernels of at most half its width: a
-// kernel as wide as a fit that follows a lobe flattens it (the twiced kernel's bias grows as
-// sigma^4, so at half the width it is a sixteenth). Where the intensity is flat the kernel grows
-// and the noise falls; where it curves the estimates of larger kernels move away and it stops,
-// or a local fit that agrees with the smaller ones wins.
+// bound plus noise wins. A log-quadratic fit is held only to the kernels of at most half its
+// width: a kernel as wide as a fit that follows a lobe flattens it (the twiced kernel's bias
+// grows as sigma^4, so at half the width it is a sixteenth). Where the intensity is flat the
+// kernel grows and the noise falls; where it curves the estimates of larger kernels move away and
+// it stops, or a local fit that agrees with the smaller ones wins.
 //
 // Standard error: the rays as a Poisson sample, sqrt(sum of (flux K)^2) with K the kernel or the
 // fit's equivalent kernel, with one ray of the mean flux at the kernel's peak added, so that a
