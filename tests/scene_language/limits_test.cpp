@@ -63,6 +63,24 @@ TEST(SceneLanguageLimits, LoopsStopAtTheIterationLimit) {
               std::string::npos);
 }
 
+TEST(SceneLanguageLimits, FunctionLoopsStopAtTheirTermLimit) {
+    // A bound of 3e84 would sum for ever (past 2^53 the variable's step of 1 no longer moves it).
+    EXPECT_EQ(error_of("#declare F = function(n) { sum(k, 1, 3e84, k * k) }\n#declare X = F(1);\n"),
+              "not supported: sum() and prod() of more than 10000000 terms in one evaluation of a "
+              "function (this renderer's limit) at test.pov:2:14");
+    // Nested loops and the functions a function calls count together: 4000 x 4000 terms.
+    EXPECT_NE(error_of("#declare G = function(n) { sum(j, 1, 4000, n * j) }\n"
+                       "#declare H = function(n) { prod(i, 1, 4000, G(i) / G(i)) }\n"
+                       "#declare X = H(1);\n")
+                  .find("more than 10000000 terms"),
+              std::string::npos);
+    // Below the limit the value is exact, and each evaluation has the whole budget again:
+    // the sum of i j over 1..1000 squared is 500500^2.
+    EXPECT_EQ(error_of("#declare G = function(n) { sum(i, 1, 1000, sum(j, 1, 1000, i * j)) }\n"
+                       "#for (K, 1, 20) #if (G(K) != 250500250000) #error \"wrong\" #end #end\n"),
+              "no error");
+}
+
 TEST(SceneLanguageLimits, ArraysAndStringsStopAtTheirSizeLimits) {
     EXPECT_EQ(error_of("#declare A = array[1e12];"),
               "array limit: more than 100000000 elements (ParseOptions::max_array_elements) at "

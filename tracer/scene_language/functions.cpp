@@ -26,6 +26,29 @@ using Instruction = UserFunction::Instruction;
 constexpr double kEpsilon = 1e-10;
 constexpr int kMaxStack = 256;
 constexpr int kMaxParameters = 56;  // POV-Ray's limit
+// sum() and prod() terms in one evaluation of a function, its calls of other functions and
+// nested loops counted together: a bound of 1e84 (or any beyond 2^53, where the variable's
+// step of 1 no longer moves it) would loop for ever. POV-Ray has no such limit.
+constexpr long kMostLoopTerms = 10000000;
+
+// The terms left to the evaluation in progress on this thread; negative outside any.
+thread_local long t_loop_terms_left = -1;
+
+// Gives the outermost evaluation of a function on this thread its budget of loop terms.
+class LoopTermBudget {
+public:
+    LoopTermBudget() : outermost_(t_loop_terms_left < 0) {
+        if (outermost_) t_loop_terms_left = kMostLoopTerms;
+    }
+    ~LoopTermBudget() {
+        if (outermost_) t_loop_terms_left = -1;
+    }
+    LoopTermBudget(const LoopTermBudget&) = delete;
+    LoopTermBudget& operator=(const LoopTermBudget&) = delete;
+
+private:
+    bool outermost_;
+};
 
 struct Builtin {
     const char* name;
@@ -160,6 +183,11 @@ double UserFunction::run_loop(const Instruction& loop, double first, double last
                               const double* parameters, double* locals) const {
     double result = loop.op == Op::sum ? 0.0 : 1.0;
     for (double i = first; i <= last; i += 1) {
+        if (--t_loop_terms_left < 0)
+            throw FunctionNotSupported(
+                fmt::format("sum() and prod() of more than {} terms in one evaluation of a "
+                            "function (this renderer's limit)",
+                            kMostLoopTerms));
         locals[loop.index] = i;
         const double term = run(&loop + 1, &loop + 1 + loop.length, parameters, locals);
         result = loop.op == Op::sum ? result + term : result * term;
@@ -169,6 +197,7 @@ double UserFunction::run_loop(const Instruction& loop, double first, double last
 
 double UserFunction::evaluate_float(const double* arguments) const {
     if (kind_ == Kind::expression) {
+        const LoopTermBudget budget;
         std::array<double, kMaxParameters> locals{};
         return run(code_.data(), code_.data() + code_.size(), arguments, locals.data());
     }
