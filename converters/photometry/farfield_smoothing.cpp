@@ -390,9 +390,12 @@ double difference_error(const DirectionHistogram::Estimate& s,
 }  // namespace
 
 DirectionHistogram::Estimate DirectionHistogram::adaptive(double x, double y, double polar) const {
+    // The ladder of bandwidths, each sqrt(2) times the one below: the estimates and their rungs.
     std::vector<Estimate> ladder;
+    std::vector<int> rung;
+    int r = 0;
     for (double sigma = resolution_.min_sigma_deg; sigma <= resolution_.max_sigma_deg * 1.0001;
-         sigma *= std::sqrt(2.0)) {
+         sigma *= std::sqrt(2.0), ++r) {
         ladder.push_back(at(x, y, polar, sigma));
         if (resolution_.local_fits) {
             ladder.push_back(local_fit(x, y, polar, sigma));
@@ -400,23 +403,23 @@ DirectionHistogram::Estimate DirectionHistogram::adaptive(double x, double y, do
             const Estimate edge = edge_fit(x, y, polar, sigma, edge_like);
             if (edge_like) ladder.push_back(edge);
         }
+        rung.resize(ladder.size(), r);
     }
     // The bias of an estimate bounded by how far it lies from those of the same or smaller
     // bandwidths beyond the noise of their difference; the estimate with the least bound plus
-    // noise. A log-quadratic fit is not held to kernels wider than half its width: they flatten
-    // a lobe the fit follows (their bias grows as sigma^4: 1/16 of it at half the width).
+    // noise. A log-quadratic fit is not held to kernels wider than half its width (two rungs
+    // down): they flatten a lobe the fit follows (their bias grows as sigma^4: 1/16 of it at half
+    // the width).
     size_t best = 0;
     double best_score = HUGE_VAL;
     for (size_t s = 0; s < ladder.size(); ++s) {
         const bool lobe_fit = ladder[s].kind == Kind::log_quadratic;
         double bias = 0;
-        for (size_t r = 0; r < ladder.size(); ++r) {
-            const double reach = lobe_fit && ladder[r].kind == Kind::kernel
-                                     ? ladder[s].sigma_deg / 2 * 1.0001
-                                     : ladder[s].sigma_deg;
-            if (r != s && ladder[r].sigma_deg <= reach)
-                bias = std::max(bias, std::abs(ladder[s].intensity - ladder[r].intensity) -
-                                          kMargin * difference_error(ladder[s], ladder[r]));
+        for (size_t t = 0; t < ladder.size(); ++t) {
+            const int reach = lobe_fit && ladder[t].kind == Kind::kernel ? rung[s] - 2 : rung[s];
+            if (t != s && rung[t] <= reach)
+                bias = std::max(bias, std::abs(ladder[s].intensity - ladder[t].intensity) -
+                                          kMargin * difference_error(ladder[s], ladder[t]));
         }
         const double score = bias + kMargin * ladder[s].standard_error;
         if (score < best_score) best_score = score, best = s;

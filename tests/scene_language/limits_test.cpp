@@ -66,18 +66,19 @@ TEST(SceneLanguageLimits, LoopsStopAtTheIterationLimit) {
 TEST(SceneLanguageLimits, FunctionLoopsStopAtTheirTermLimit) {
     // A bound of 3e84 would sum for ever (past 2^53 the variable's step of 1 no longer moves it).
     EXPECT_EQ(error_of("#declare F = function(n) { sum(k, 1, 3e84, k * k) }\n#declare X = F(1);\n"),
-              "not supported: sum() and prod() of more than 10000000 terms in one evaluation of a "
-              "function (this renderer's limit) at test.pov:2:14");
-    // Nested loops and the functions a function calls count together: 4000 x 4000 terms.
-    EXPECT_NE(error_of("#declare G = function(n) { sum(j, 1, 4000, n * j) }\n"
-                       "#declare H = function(n) { prod(i, 1, 4000, G(i) / G(i)) }\n"
+              "not supported: sum() or prod() of more than 1000000 terms, nested loops and called "
+              "functions' loops included (this renderer's limit) at test.pov:2:14");
+    // Nested loops and the loops of the functions a loop calls count together: 1001 x 1001 terms.
+    EXPECT_NE(error_of("#declare G = function(n) { sum(j, 1, 1001, n * j) }\n"
+                       "#declare H = function(n) { prod(i, 1, 1001, G(i) / G(i)) }\n"
                        "#declare X = H(1);\n")
-                  .find("more than 10000000 terms"),
+                  .find("more than 1000000 terms"),
               std::string::npos);
-    // Below the limit the value is exact, and each evaluation has the whole budget again:
-    // the sum of i j over 1..1000 squared is 500500^2.
-    EXPECT_EQ(error_of("#declare G = function(n) { sum(i, 1, 1000, sum(j, 1, 1000, i * j)) }\n"
-                       "#for (K, 1, 20) #if (G(K) != 250500250000) #error \"wrong\" #end #end\n"),
+    // Below the limit the value is exact, and each outermost loop has the whole budget again:
+    // the sum of i j over 1..700 squared is 245350^2 (700 + 700^2 terms, twice per evaluation).
+    EXPECT_EQ(error_of("#declare G = function(n) { sum(i, 1, 700, sum(j, 1, 700, i * j)) }\n"
+                       "#declare H = function(n) { G(n) + G(n) }\n"
+                       "#for (K, 1, 20) #if (H(K) != 120393245000) #error \"wrong\" #end #end\n"),
               "no error");
 }
 

@@ -26,15 +26,16 @@ using Instruction = UserFunction::Instruction;
 constexpr double kEpsilon = 1e-10;
 constexpr int kMaxStack = 256;
 constexpr int kMaxParameters = 56;  // POV-Ray's limit
-// sum() and prod() terms in one evaluation of a function, its calls of other functions and
-// nested loops counted together: a bound of 1e84 (or any beyond 2^53, where the variable's
-// step of 1 no longer moves it) would loop for ever. POV-Ray has no such limit.
-constexpr long kMostLoopTerms = 10000000;
+// Terms of one sum() or prod(), its nested loops and the loops of the functions it calls counted
+// together: a bound of 1e84 (or any beyond 2^53, where the variable's step of 1 no longer moves
+// it) would loop for ever. POV-Ray has no such limit.
+constexpr long kMostLoopTerms = 1000000;
 
-// The terms left to the evaluation in progress on this thread; negative outside any.
+// The terms left to the outermost loop in progress on this thread; negative outside any.
 thread_local long t_loop_terms_left = -1;
 
-// Gives the outermost evaluation of a function on this thread its budget of loop terms.
+// Gives the outermost loop on this thread its budget of terms (functions without loops, such as
+// an isosurface's at every step of a ray, never touch it).
 class LoopTermBudget {
 public:
     LoopTermBudget() : outermost_(t_loop_terms_left < 0) {
@@ -181,12 +182,13 @@ double UserFunction::call_function(const Instruction& call, const double* argume
 // sum() or product() of the loop body that follows `loop`, its variable from first to last.
 double UserFunction::run_loop(const Instruction& loop, double first, double last,
                               const double* parameters, double* locals) const {
+    const LoopTermBudget budget;
     double result = loop.op == Op::sum ? 0.0 : 1.0;
     for (double i = first; i <= last; i += 1) {
         if (--t_loop_terms_left < 0)
             throw FunctionNotSupported(
-                fmt::format("sum() and prod() of more than {} terms in one evaluation of a "
-                            "function (this renderer's limit)",
+                fmt::format("sum() or prod() of more than {} terms, nested loops and called "
+                            "functions' loops included (this renderer's limit)",
                             kMostLoopTerms));
         locals[loop.index] = i;
         const double term = run(&loop + 1, &loop + 1 + loop.length, parameters, locals);
@@ -197,7 +199,6 @@ double UserFunction::run_loop(const Instruction& loop, double first, double last
 
 double UserFunction::evaluate_float(const double* arguments) const {
     if (kind_ == Kind::expression) {
-        const LoopTermBudget budget;
         std::array<double, kMaxParameters> locals{};
         return run(code_.data(), code_.data() + code_.size(), arguments, locals.data());
     }
