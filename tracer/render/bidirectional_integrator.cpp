@@ -122,7 +122,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
                            wavelengths);
         medium = attenuate_inside(beta, medium, origin, direction, found, hit, rng);
         if (!found) break;
-        Material scratch;
+        std::optional<Material> scratch;
         const Material& material = scene_.material(hit, scratch);
         const Vec3 wo = -direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
@@ -202,7 +202,7 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
                 scene_.intersect(origin, direction, 0, kInfinity, RayKind::indirect, hit);
             medium = attenuate_inside(power, medium, origin, direction, found, hit, rng);
             if (!found) break;
-            Material scratch;
+            std::optional<Material> scratch;
             const BsdfOf<Q> bsdf(scene_.material(hit, scratch), hit.normal, hit.shading_normal,
                                  -direction, wavelengths);
             if (bsdf.has_smooth_lobes() && (scattered || keep_direct)) {
@@ -233,7 +233,7 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
 template <class Q>
 void BidirectionalIntegratorOf<Q>::gather(const Point& vp, const Grid& grid, Rgb& direct,
                                           Rgb& scattered) const {
-    Material scratch;
+    std::optional<Material> scratch;
     const Material& material = scene_.material(vp.object, vp.part, vp.point, vp.normal, scratch);
     const Bsdf bsdf(material, vp.normal, vp.shading_normal, vp.wo);
     const Vec3 n = bsdf.facing_normal();

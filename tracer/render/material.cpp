@@ -392,14 +392,15 @@ ObjectMaterial::Maker ObjectMaterial::maker(Vec3 normal) const {
     return {ior_, emission_scale_, decoding_, normal};
 }
 
-const Material& ObjectMaterial::at(Vec3 point, Vec3 normal, Material& scratch) const {
+const Material& ObjectMaterial::at(Vec3 point, Vec3 normal,
+                                   std::optional<Material>& scratch) const {
     if (!texture_) return uniform_;
-    if (!maker(normal).make(*texture_, point, scratch))
+    if (!maker(normal).make(*texture_, point, scratch.emplace()))
         throw Error(
             fmt::format("not supported: the texture at {} (its value at ({}, {}, {}) is "
                         "not known)",
                         texture_->location.str(), point.x, point.y, point.z));
-    return scratch;
+    return *scratch;
 }
 
 LobeColours<Rgb> lobe_colours(const Material& m, NoWavelengths) {

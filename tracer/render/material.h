@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "tracer/render/colour_decoding.h"
 #include "tracer/render/rgb.h"
@@ -68,8 +69,9 @@ public:
 
     // The material at `point`, where the outward geometric normal is `normal`: the uniform
     // one, or one made in `scratch` (without the spectra of spectral transport, which refuses
-    // materials that vary).
-    const Material& at(Vec3 point, Vec3 normal, Material& scratch) const;
+    // materials that vary). `scratch` is constructed only then: a Material is 520 bytes,
+    // and most objects' materials are uniform.
+    const Material& at(Vec3 point, Vec3 normal, std::optional<Material>& scratch) const;
     bool patterned() const { return texture_ != nullptr; }
     // Whether some point may emit (a texture that varies: some part has finish emission).
     bool emits() const { return emits_; }

@@ -27,7 +27,7 @@ inline Rgb shadow_transmittance(const RenderScene& scene, Vec3 origin, Vec3 dire
     constexpr int kMaxCrossings = 64;
     const Interiors& interiors = scene.interiors();
     Rgb through{1, 1, 1};
-    Material scratch;
+    std::optional<Material> scratch;
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         SurfaceHit hit;
         ++rays;

@@ -81,7 +81,7 @@ template <class Q>
     Q sum{};
     SurfaceHit hit;
     BsdfSampleOf<Q> sample;
-    Material scratch;
+    std::optional<Material> scratch;
     for (;; ++s.depth) {
         ++rays;
         const bool found = scene_.intersect(s.origin, s.direction, 0, kInfinity, s.kind, hit);

@@ -57,10 +57,10 @@ public:
     // The material at a point of an object's surface, or of a part of a solid, where the
     // outward geometric normal is `normal` (ObjectMaterial::at).
     const Material& material(int object, int part, Vec3 point, Vec3 normal,
-                             Material& scratch) const {
+                             std::optional<Material>& scratch) const {
         return object_material(object, part).at(point, normal, scratch);
     }
-    const Material& material(const SurfaceHit& hit, Material& scratch) const {
+    const Material& material(const SurfaceHit& hit, std::optional<Material>& scratch) const {
         return material(hit.object, hit.part, hit.point, hit.normal, scratch);
     }
     // Whether some point of the object emits light.
