@@ -355,7 +355,7 @@ bool geometry_agreement(const std::string& scene, int width, int height, Geometr
     const double per_square_metre = ours.units().per_square_metre();
     out = {};
     out.statements = copy.statements, out.words = copy.words, out.camera_words = copy.camera_words;
-    tracer::Material scratch;
+    std::optional<tracer::Material> scratch;
     const std::vector<tracer::SurfaceHit> hits = tracer::centre_hits(ours, width, height);
     for (size_t i = 0; i < hits.size(); ++i) {
         int seen = 0;

@@ -40,7 +40,7 @@ void expect_fog_agrees(const std::string& fog_type) {
     const std::vector<SurfaceHit> hits = centre_hits(scene, width, height);
     const double to_colour = scene.units().per_square_metre();  // radiance -> POV-Ray colour
     int agree = 0;
-    Material scratch;
+    std::optional<Material> scratch;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const size_t i = size_t(y) * width + x;

@@ -67,7 +67,7 @@ double flat_colours_agreement(const std::string& scene_file, int width, int heig
     const std::vector<SurfaceHit> hits = centre_hits(scene, width, height);
     const double to_pigment = scene.units().per_square_metre();
     int agree = 0, seen = 0;
-    Material scratch;
+    std::optional<Material> scratch;
     for (size_t i = 0; i < hits.size(); ++i) {
         Rgb ours{};
         if (hits[i].object >= 0) ours = to_pigment * scene.material(hits[i], scratch).emission;
@@ -94,7 +94,7 @@ TEST(RenderImages, ImageMapsAgreeWithPovRayPixelForPixel) {
 Vec3 bump_of(const test::ScratchDir& dir, const std::string& object, Vec3 point, Vec3 n) {
     test::write_file(dir.file("bump.pov"), object);
     const RenderScene scene(parse_scene_file(dir.file("bump.pov")));
-    Material scratch;
+    std::optional<Material> scratch;
     return scene.material(0, -1, point, n, scratch).bump;
 }
 

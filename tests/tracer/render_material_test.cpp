@@ -20,7 +20,7 @@ namespace {
 // The material of the scene's first object at `point`.
 Material material_of(const std::string& object, Vec3 point = {}) {
     const SceneDescription d = parse_scene_text(object, "test.pov");
-    Material scratch;
+    std::optional<Material> scratch;
     return ObjectMaterial(d.objects.at(0), 1.0, ColourDecoding(d.global))
         .at(point, {0, 0, 1}, scratch);
 }
@@ -209,7 +209,7 @@ TEST(RenderMaterial, CrandDarkensTheDiffuseAlbedoAsPovRayDoes) {
         const ObjectMaterial material(d.objects.at(0), 1.0, ColourDecoding(d.global));
         Pcg32 random(7);
         std::vector<double> values;
-        Material scratch;
+        std::optional<Material> scratch;
         for (int i = 0; i < 20000; ++i) {
             const Vec3 p{100 * random.uniform() - 50, 0, 100 * random.uniform() - 50};
             values.push_back(material.at(p, {0, 1, 0}, scratch).diffuse.red);
@@ -270,7 +270,7 @@ plane { y, 0 pigment { rgb <1, 0.5, 0.2> }
     const SceneDescription d = parse_scene_file(scene_file);
     const ObjectMaterial material(d.objects.at(0), 1.0, ColourDecoding(d.global));
     const Vec3 up{0, 1, 0};
-    Material scratch;
+    std::optional<Material> scratch;
     auto reflected = [&](Vec3 wo) {
         const Material& m = material.at({0, 0, 0}, up, scratch);
         const BsdfOf<Rgb> bsdf(m, up, up, wo, NoWavelengths{});

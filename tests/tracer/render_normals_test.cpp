@@ -20,7 +20,7 @@ namespace {
 // The bump the first object's material has at `point` of a surface with outward normal `n`.
 Vec3 bump_of(const std::string& object, Vec3 point, Vec3 n) {
     const RenderScene scene(parse_scene_text(object, "test.pov"));
-    Material scratch;
+    std::optional<Material> scratch;
     return scene.material(0, -1, point, n, scratch).bump;
 }
 

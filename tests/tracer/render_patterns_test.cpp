@@ -94,7 +94,7 @@ void expect_flat_colours_agree(const std::string& scene_name, double assumed_gam
     auto encoded = [&](double v) { return std::pow(to_pigment * v, 1 / assumed_gamma); };
     std::vector<Rgb> ours(hits.size());
     int patterned = 0;
-    Material scratch;
+    std::optional<Material> scratch;
     for (size_t i = 0; i < hits.size(); ++i) {
         if (hits[i].object < 0) continue;
         const Rgb e = scene.material(hits[i], scratch).emission;
@@ -325,7 +325,7 @@ TEST(RenderPatterns, MeshCameraRaysFollowPovRaysRules) {
 TEST(RenderPatterns, MaterialFollowsThePatternAndTheObject) {
     auto diffuse_at = [](const std::string& text, Vec3 point) {
         const RenderScene scene(parse_scene_text(text, "test.pov"));
-        Material scratch;
+        std::optional<Material> scratch;
         return scene.material(0, -1, point, {0, 0, 1}, scratch).diffuse;
     };
     const std::string checker =

@@ -155,7 +155,7 @@ bool render_lit_tiles(const std::string& scene_file, Vec3 light, int width, int 
         return false;
     }
     const tracer::RenderScene scene(tracer::parse_scene_file(scene_file));
-    tracer::Material scratch;
+    std::optional<tracer::Material> scratch;
     for (const tracer::SurfaceHit& hit : tracer::centre_hits(scene, width, height)) {
         out.object.push_back(hit.object);
         if (hit.object < 0) {
