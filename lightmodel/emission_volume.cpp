@@ -41,12 +41,12 @@ EmissionVolume::EmissionVolume(const LightModel& model) : model_(model) {
             voxel_cell_[size_t(frame.linear(model.voxels[v]))] = int32_t(c);
     }
     voxel_volume_ = std::pow(frame.cell_size(), 3);
-    cell_cdf_.resize(model.flux_cells.size());
-    double running = 0;
+    std::vector<double> fluxes(model.flux_cells.size());
     for (size_t c = 0; c < model.flux_cells.size(); ++c) {
-        running += model.flux_cells[c].flux;
-        cell_cdf_[c] = running;
+        fluxes[c] = model.flux_cells[c].flux;
+        total_flux_ += fluxes[c];
     }
+    if (total_flux_ > 0) cells_ = AliasTable(fluxes);
     cell_colour_ = cell_colours(model);
     cell_spectrum_ = cell_spectra(model);
 }
@@ -117,7 +117,7 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
 }
 
 double EmissionVolume::point_density(uint32_t cell) const {
-    return model_.flux_cells[cell].flux / cell_cdf_.back() / cell_volume(cell);
+    return model_.flux_cells[cell].flux / total_flux_ / cell_volume(cell);
 }
 
 double EmissionVolume::direction_density(uint32_t cell, double t0, double t1) const {
@@ -132,10 +132,7 @@ double EmissionVolume::pdf_direction(Vec3 origin, Vec3 dir) const {
 }
 
 VolumeSample EmissionVolume::sample_point(double u_cell, double u_voxel, Vec3 u_point) const {
-    const double target = u_cell * cell_cdf_.back();
-    const size_t c = std::min(
-        size_t(std::upper_bound(cell_cdf_.begin(), cell_cdf_.end(), target) - cell_cdf_.begin()),
-        cell_cdf_.size() - 1);
+    const size_t c = size_t(cells_.sample(u_cell).index);
     VolumeSample s;
     s.point = sample_in_cell(uint32_t(c), u_voxel, u_point);
     s.flux_cell = uint32_t(c);

@@ -13,6 +13,7 @@
 // never vanishes, so no grazing cosine is ever divided by.
 #pragma once
 
+#include "core/alias_table.h"
 #include "lightmodel/colour.h"
 #include "lightmodel/emission_spectrum.h"
 #include "lightmodel/model.h"
@@ -39,7 +40,7 @@ public:
 
     const LightModel& model() const { return model_; }
     double total(const SpectralSelect& select) const;
-    double total_flux() const { return cell_cdf_.empty() ? 0 : cell_cdf_.back(); }  // flux_unit
+    double total_flux() const { return total_flux_; }  // flux_unit
     // Flux of one cell in the selected quantity.
     double cell_flux(uint32_t cell, const SpectralSelect& select) const;
 
@@ -87,7 +88,8 @@ private:
 
     const LightModel& model_;
     std::vector<int32_t> voxel_cell_;  // dense density lattice -> flux cell, -1 empty
-    std::vector<double> cell_cdf_;     // over flux cells, by flux
+    AliasTable cells_;                 // flux cells, drawn by flux
+    double total_flux_ = 0;
     std::vector<Rgb> cell_colour_;
     std::vector<BinnedSpectrum> cell_spectrum_;
     double voxel_volume_ = 0;

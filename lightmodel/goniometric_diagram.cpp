@@ -144,26 +144,25 @@ void GoniometricDiagram::normalise_nodes() {
     // A bilinear patch integrates to the mean of its corners times its extent in (u, phi),
     // which is its solid angle. The two horizon rows are one line: that patch has no extent.
     const double sector_width = 2 * kPi / sectors_;
-    patch_cdf_.assign(size_t(row_count() - 1) * sectors_ + 1, 0.0);
+    std::vector<double> masses(size_t(row_count() - 1) * sectors_);
+    double integral = 0;
     for (int r = 0; r + 1 < row_count(); ++r) {
         const double extent = (row_u(r + 1) - row_u(r)) * sector_width;
         for (int j = 0; j < sectors_; ++j) {
             const int j1 = (j + 1) % sectors_;
-            const size_t p = size_t(r) * sectors_ + j;
             const double mean =
                 0.25 * (node(r, j) + node(r, j1) + node(r + 1, j) + node(r + 1, j1));
-            patch_cdf_[p + 1] = patch_cdf_[p] + mean * extent;
+            masses[size_t(r) * sectors_ + j] = mean * extent;
+            integral += mean * extent;
         }
     }
-    const double integral = patch_cdf_.back();
     if (!(integral > 0)) {
         std::fill(nodes_.begin(), nodes_.end(), 0.0);
-        patch_cdf_.clear();
+        patches_ = AliasTable();
         return;
     }
     for (double& value : nodes_) value /= integral;
-    for (double& value : patch_cdf_) value /= integral;
-    patch_cdf_.back() = 1;
+    patches_ = AliasTable(masses);
 }
 
 void GoniometricDiagram::require_finalized() const {
@@ -172,7 +171,7 @@ void GoniometricDiagram::require_finalized() const {
 
 bool GoniometricDiagram::empty() const {
     require_finalized();
-    return patch_cdf_.empty();
+    return patches_.empty();
 }
 
 double GoniometricDiagram::density(double u, double phi) const {
@@ -211,13 +210,10 @@ double GoniometricDiagram::bin_average(int cell) const {
 
 DirectionSample GoniometricDiagram::sample(Vec2 u) const {
     if (empty()) throw std::logic_error("cannot sample an empty goniometric diagram");
-    // The patch whose CDF interval holds u.x; zero-probability patches have empty intervals and
-    // upper_bound steps over them.
-    const double ux = std::clamp(u.x, 0.0, kOneMinusEpsilon);
-    const auto above = std::upper_bound(patch_cdf_.begin(), patch_cdf_.end(), ux);
-    const int patch = int(above - patch_cdf_.begin()) - 1;
-    const double low = patch_cdf_[patch], high = patch_cdf_[patch + 1];
-    const double u_in_patch = std::clamp((ux - low) / (high - low), 0.0, kOneMinusEpsilon);
+    // A patch drawn by its mass, and the rest of u.x to place the sample within it.
+    const AliasTable::Sample drawn = patches_.sample(std::clamp(u.x, 0.0, kOneMinusEpsilon));
+    const int patch = drawn.index;
+    const double u_in_patch = std::clamp(drawn.u_remapped, 0.0, kOneMinusEpsilon);
 
     const int r = patch / sectors_, j0 = patch % sectors_, j1 = (j0 + 1) % sectors_;
     const double v00 = node(r, j0), v10 = node(r, j1), v01 = node(r + 1, j0), v11 = node(r + 1, j1);

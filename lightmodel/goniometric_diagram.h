@@ -26,6 +26,7 @@
 // throw std::logic_error.
 #pragma once
 
+#include "core/alias_table.h"
 #include "lightmodel/direction_map.h"
 
 #include <vector>
@@ -104,7 +105,7 @@ private:
     double& node(int row, int column) { return nodes_[size_t(row) * sectors_ + column]; }
     // Fills the centre rows from `centres` (index as cell_of) and derives pole and horizon rows.
     void build_nodes(const std::vector<double>& centres);
-    // Scales the nodes so the density integrates to 1 and builds the patch CDF.
+    // Scales the nodes so the density integrates to 1 and builds the patches' alias table.
     void normalise_nodes();
     // The density at (u, phi), phi in [0, 2 pi).
     double density(double u, double phi) const;
@@ -115,8 +116,7 @@ private:
     double total_weight_ = 0;
     bool finalized_ = false;
     std::vector<double> nodes_;  // row_count() x sectors, node (row, column) at the sector's centre
-    std::vector<double>
-        patch_cdf_;  // (row_count() - 1) x sectors + 1 entries from 0 to 1; empty if empty
+    AliasTable patches_;  // the (row_count() - 1) x sectors patches by mass; empty if empty
 };
 
 }  // namespace rayset::lightmodel
