@@ -116,7 +116,7 @@ private:
     double total_weight_ = 0;
     bool finalized_ = false;
     std::vector<double> nodes_;  // row_count() x sectors, node (row, column) at the sector's centre
-    AliasTable patches_;  // the (row_count() - 1) x sectors patches by mass; empty if empty
+    AliasTable patches_;         // the (row_count() - 1) x sectors patches by mass; empty if empty
 };
 
 }  // namespace rayset::lightmodel
