@@ -14,7 +14,7 @@ NaiveRaySource::NaiveRaySource(const std::string& ray_file) {
     const PhotometricWeights photometric(header);
     const double scale = millimetres_per(header.unit);
     RayChunk chunk;
-    double running = 0;
+    std::vector<double> weights;
     while (reader->read(chunk)) {
         for (const Ray& r : chunk.rays) {
             const Vec3 o{r.origin.x * scale, r.origin.y * scale, r.origin.z * scale};
@@ -29,12 +29,14 @@ NaiveRaySource::NaiveRaySource(const std::string& ray_file) {
                                  : r.wavelength;
             band_.push_back(int16_t(bins_.bin_of(wl)));
             wavelength_.push_back(wl);
-            running += phi;
-            cdf_.push_back(running);
+            weights.push_back(phi);
+            total_flux_ += phi;
             bounds_.extend(o);
         }
     }
-    if (cdf_.empty() || !(running > 0)) throw Error(ray_file + ": no rays with flux to emit");
+    if (weights.empty() || !(total_flux_ > 0))
+        throw Error(ray_file + ": no rays with flux to emit");
+    rays_ = AliasTable(weights);
     luminous_known_ = photometric.luminous_known();
     default_efficacy_ = header.has_radiant ? kRgbLumensPerWatt : 1.0;
     grey_ = d65_spectrum();
@@ -68,19 +70,17 @@ double NaiveRaySource::phi(const SpectralSelect& select) const {
 }
 
 LeSample NaiveRaySource::sample_Le(const double u[7], const SpectralSelect& select) const {
-    const size_t i = std::min(
-        size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u[0] * cdf_.back()) - cdf_.begin()),
-        cdf_.size() - 1);
+    const size_t i = size_t(rays_.sample(u[0]).index);
     LeSample s;
     s.origin = origins_[i];
     s.direction = directions_[i];
-    s.pdf_position = flux_[i] / cdf_.back();
+    s.pdf_position = flux_[i] / total_flux_;
     s.pdf_direction = 0;
     const double part = select.quantity == SpectralSelect::luminous    ? luminous_[i]
                         : (select.band < 0 || band_[i] == select.band) ? flux_[i]
                                                                        : 0.0;
-    s.flux = flux_[i] > 0 ? cdf_.back() * part / flux_[i] : 0;
-    s.flux_colour = flux_[i] > 0 ? (cdf_.back() / flux_[i]) * ray_colour(i) : Rgb{};
+    s.flux = flux_[i] > 0 ? total_flux_ * part / flux_[i] : 0;
+    s.flux_colour = flux_[i] > 0 ? (total_flux_ / flux_[i]) * ray_colour(i) : Rgb{};
     if (std::isfinite(wavelength_[i]))
         s.wavelength_nm = wavelength_[i];
     else

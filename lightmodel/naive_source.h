@@ -4,6 +4,7 @@
 // Holds every ray in memory (28 bytes each).
 #pragma once
 
+#include "core/alias_table.h"
 #include "lightmodel/emitter.h"
 
 #include <string>
@@ -43,7 +44,8 @@ private:
     std::vector<int16_t> band_;      // spectral bin of the ray's wavelength, -1 unknown
     std::vector<float> wavelength_;  // nm, NaN unknown
     BinnedSpectrum grey_;            // of rays without a wavelength
-    std::vector<double> cdf_;
+    AliasTable rays_;                // the rays, drawn by flux
+    double total_flux_ = 0;
     SpectralBins bins_;
     // Colour of a unit of flux of each ray's spectral bin at 1 lm per unit (index bin + 1; 0:
     // unknown wavelength, grey), scaled per ray by its efficacy.
