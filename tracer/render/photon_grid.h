@@ -17,6 +17,7 @@
 
 namespace rayset::tracer {
 
+// The photon's wavelengths when spectral (a base, so that RGB photons hold nothing more).
 template <class Q>
 struct PhotonWavelengths {};
 template <>
