@@ -49,7 +49,7 @@ public:
     bool empty() const { return bins_.empty(); }
     std::size_t size() const { return bins_.size(); }
 
-    // u in [0, 1).
+    // u in [0, 1); the table not empty.
     Sample sample(double u) const {
         const double x = u * double(bins_.size());
         std::size_t i = std::size_t(x);
