@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "lightmodel/vdb_file.h"
 
+#include <fmt/format.h>
 #include <openvdb/openvdb.h>
 
 #include <algorithm>
@@ -379,6 +380,24 @@ void read_diagrams(const VdbFile& file, const std::string& path, LightModel& mod
     }
 }
 
+// A cell's values as a build writes them: a corrupt one would be sampled as light (a negative
+// or NaN flux draws nonsense in every render).
+void check_flux_cell(const FluxCell& c, const std::string& path) {
+    const auto refuse = [&](const char* what, double value, const char* rule) {
+        throw Error(
+            fmt::format("{}: the flux cell at ({}, {}, {}) holds {} {}, where {}: the "
+                        "file is corrupt (build the model again with raymodel build)",
+                        path, c.coord[0], c.coord[1], c.coord[2], what, value, rule));
+    };
+    if (!(std::isfinite(c.flux) && c.flux >= 0))
+        refuse("flux", c.flux, "a flux is finite and not negative");
+    if (!(std::isnan(c.luminous) || (std::isfinite(c.luminous) && c.luminous >= 0)))
+        refuse("luminous flux", c.luminous,
+               "a luminous flux is finite and not negative (or NaN, unknown)");
+    if (!(c.visible_fraction >= 0 && c.visible_fraction <= 1))
+        refuse("visible fraction", c.visible_fraction, "a fraction is between 0 and 1");
+}
+
 // Flux cells in the order of their linear index, as the build made them; returns the index of
 // each cell by its linear index.
 std::map<int64_t, size_t> read_flux_cells(const VdbFile& file, const std::string& path,
@@ -394,6 +413,7 @@ std::map<int64_t, size_t> read_flux_cells(const VdbFile& file, const std::string
         c.flux = *it;
         c.luminous = la.getValue(it.getCoord());
         c.visible_fraction = va.getValue(it.getCoord());
+        check_flux_cell(c, path);
         cells.emplace_back(model.flux_frame.linear(c.coord), c);
     }
     std::sort(cells.begin(), cells.end(),

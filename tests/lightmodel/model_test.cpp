@@ -154,6 +154,38 @@ TEST(Model, ReadingRefusesMetadataNoBuildWrites) {
         << old;
 }
 
+// A flux cell's values are refused when no build writes them (a negative or NaN flux would be
+// drawn as light), naming the cell and the rule.
+TEST(Model, ReadingRefusesFluxCellsNoBuildWrites) {
+    ScratchDir dir;
+    // The first active value of grid `name` set to `value`.
+    const auto read_with = [&](const char* name, auto value) {
+        return read_edited(dir, openvdb::io::COMPRESS_ACTIVE_MASK,
+                           [&](openvdb::GridPtrVec& grids, openvdb::MetaMap&) {
+                               for (auto& g : grids) {
+                                   if (g->getName() != name) continue;
+                                   using Grid = typename std::conditional_t<
+                                       std::is_same_v<decltype(value), float>, openvdb::FloatGrid,
+                                       openvdb::DoubleGrid>;
+                                   auto grid = openvdb::gridPtrCast<Grid>(g);
+                                   grid->beginValueOn().setValue(value);
+                               }
+                           });
+    };
+    const double nan = std::nan("");
+    const std::string negative = read_with("flux", -1.0);
+    EXPECT_NE(negative.find("holds flux -1, where a flux is finite and not negative: the file is "
+                            "corrupt (build the model again with raymodel build)"),
+              std::string::npos)
+        << negative;
+    EXPECT_NE(read_with("flux", nan).find("holds flux nan"), std::string::npos);
+    EXPECT_NE(read_with("luminous", -2.0).find("holds luminous flux -2"), std::string::npos);
+    EXPECT_EQ(read_with("luminous", nan), "read without an error");  // unknown: allowed
+    EXPECT_NE(read_with("visible_fraction", 1.5f).find("holds visible fraction 1.5"),
+              std::string::npos);
+    EXPECT_EQ(read_with("visible_fraction", 0.5f), "read without an error");
+}
+
 // Debian's OpenVDB 10.0 overflows the heap on corrupt zip or blosc chunks and point attributes
 // (found by fuzz_model): a model file with either, or with a grid of a type no model holds, is
 // refused before its grids are read; a length beyond the end of the file is refused before
