@@ -164,9 +164,9 @@ TEST(Model, ReadingRefusesFluxCellsNoBuildWrites) {
                            [&](openvdb::GridPtrVec& grids, openvdb::MetaMap&) {
                                for (auto& g : grids) {
                                    if (g->getName() != name) continue;
-                                   using Grid = typename std::conditional_t<
-                                       std::is_same_v<decltype(value), float>, openvdb::FloatGrid,
-                                       openvdb::DoubleGrid>;
+                                   using Grid =
+                                       std::conditional_t<std::is_same_v<decltype(value), float>,
+                                                          openvdb::FloatGrid, openvdb::DoubleGrid>;
                                    auto grid = openvdb::gridPtrCast<Grid>(g);
                                    grid->beginValueOn().setValue(value);
                                }
