@@ -131,7 +131,15 @@ std::vector<Sphere> read_spheres(const openvdb::FloatGrid& table, const std::str
         if (row.size() != 4)
             throw Error(path + ": sphere " + std::to_string(spheres.size()) + " has " +
                         std::to_string(row.size()) + " numbers, not x y z r");
-        spheres.push_back({row[0], row[1], row[2], row[3]});
+        const Sphere s{row[0], row[1], row[2], row[3]};
+        if (!(std::isfinite(s.x) && std::isfinite(s.y) && std::isfinite(s.z) &&
+              std::isfinite(s.r) && s.r > 0))
+            throw Error(
+                fmt::format("{}: sphere {} is ({}, {}, {}) of radius {}, where a centre is "
+                            "finite and a radius finite and positive: the file is corrupt "
+                            "(build the model again with raymodel build)",
+                            path, spheres.size(), s.x, s.y, s.z, s.r));
+        spheres.push_back(s);
     }
     return spheres;
 }

@@ -154,9 +154,9 @@ TEST(Model, ReadingRefusesMetadataNoBuildWrites) {
         << old;
 }
 
-// A flux cell's values are refused when no build writes them (a negative or NaN flux would be
-// drawn as light), naming the cell and the rule.
-TEST(Model, ReadingRefusesFluxCellsNoBuildWrites) {
+// A flux cell's values and the body's spheres are refused when no build writes them (a negative
+// or NaN flux would be drawn as light), naming the cell or sphere and the rule.
+TEST(Model, ReadingRefusesCellsAndSpheresNoBuildWrites) {
     ScratchDir dir;
     // The first active value of grid `name` set to `value`.
     const auto read_with = [&](const char* name, auto value) {
@@ -184,6 +184,11 @@ TEST(Model, ReadingRefusesFluxCellsNoBuildWrites) {
     EXPECT_NE(read_with("visible_fraction", 1.5f).find("holds visible fraction 1.5"),
               std::string::npos);
     EXPECT_EQ(read_with("visible_fraction", 0.5f), "read without an error");
+    // The body's first sphere, its first number (x, or any of x y z r) made NaN.
+    EXPECT_NE(read_with("spheres", float(nan))
+                  .find("where a centre is finite and a radius finite "
+                        "and positive: the file is corrupt"),
+              std::string::npos);
 }
 
 // Debian's OpenVDB 10.0 overflows the heap on corrupt zip or blosc chunks and point attributes
