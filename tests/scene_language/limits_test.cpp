@@ -63,6 +63,31 @@ TEST(SceneLanguageLimits, LoopsStopAtTheIterationLimit) {
               std::string::npos);
 }
 
+TEST(SceneLanguageLimits, MacroCallsStopAtTheirLimit) {
+    // Fib(51) calls itself about 4e10 times, never deeper than 51 (found by fuzzing).
+    const std::string fib =
+        "#macro Fib(N) #if (N < 2) #local R = N; #else #local R = Fib(N - 1) + Fib(N - 2); "
+        "#end R #end\n"
+        "#declare X = Fib(NUMBER);\n";
+    const auto fib_of = [&](int n) {
+        std::string text = fib;
+        text.replace(text.find("NUMBER"), 6, std::to_string(n));
+        return text;
+    };
+    ParseOptions options;
+    options.max_macro_calls = 1000;
+    const std::string error = error_of(fib_of(51), options);
+    EXPECT_EQ(error.rfind("macro limit: more than 1000 macro calls in total "
+                          "(ParseOptions::max_macro_calls) at test.pov:1:58 (in macro Fib called "
+                          "at test.pov:1:58)",
+                          0),
+              0u)
+        << error;
+    // Fib(14) takes 2 Fib(15) - 1 = 1219 calls, Fib(13) 753.
+    EXPECT_NE(error_of(fib_of(14), options).find("macro limit"), std::string::npos);
+    EXPECT_EQ(error_of(fib_of(13), options), "no error");
+}
+
 TEST(SceneLanguageLimits, FunctionLoopsStopAtTheirTermLimit) {
     // A bound of 3e84 would sum for ever (past 2^53 the variable's step of 1 no longer moves it).
     EXPECT_EQ(error_of("#declare F = function(n) { sum(k, 1, 3e84, k * k) }\n#declare X = F(1);\n"),

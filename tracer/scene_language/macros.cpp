@@ -50,6 +50,12 @@ void Parser::directive_macro(const Token& directive) {
 }
 
 void Parser::invoke_macro(const Token& name, const MacroRef& macro) {
+    // A macro that calls itself twice runs 2^N times at a depth of only N: the nesting limit
+    // does not stop it.
+    if (++macro_calls_ > options_.max_macro_calls)
+        fail(name, fmt::format("macro limit: more than {} macro calls in total "
+                               "(ParseOptions::max_macro_calls)",
+                               options_.max_macro_calls));
     const Token open = expect(Symbol::lparen, [&] {
         return fmt::format("after macro {} (its call needs parentheses)", word(name));
     });

@@ -325,6 +325,7 @@ private:
     bool operator_position_ = false;  // peek_operator() is looking
     int nesting_ = 0;
     long loop_iterations_ = 0;
+    long macro_calls_ = 0;
     double version_ = 3.7;
     bool version_seen_ = false;
     size_t tokens_since_memory_check_ = 0;

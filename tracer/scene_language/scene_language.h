@@ -44,6 +44,7 @@ struct ParseOptions {
     int max_include_depth = 64;            // nested #include levels
     int max_nesting = 1000;                // macro calls, include files and {} blocks in progress
     long max_loop_iterations = 100000000;  // #while and #for iterations in total
+    long max_macro_calls = 100000000;      // macro calls in total (a recursion may branch)
     long max_array_elements = 100000000;   // elements of one array
     long max_string_length = 100000000;    // bytes of one string
     // Objects and light sources placed in the scene (a union counts its parts, a mesh one): far
