@@ -125,6 +125,30 @@ TEST(SceneLanguageLimits, ArraysAndStringsStopAtTheirSizeLimits) {
         "test.pov:3:16");
 }
 
+TEST(SceneLanguageLimits, HugeIndicesAndSizesAreErrorsNotConversions) {
+    // Checked before they become integers (a float past the integer's range has none; the
+    // first was found by fuzzing the scene reader, under UBSan).
+    EXPECT_EQ(error_of("#declare S = array[3] {\"a\", \"b\", \"c\"}\n"
+                       "#debug concat(S[6.6e71], \"x\")\n"),
+              "array index 6.6e+71 out of range: dimension 1 has 3 elements (0 to 2) at "
+              "test.pov:2:17");
+    EXPECT_EQ(error_of("#declare A = array[3] {1, 2, 3}\n#declare X = A[2.9];\n"), "no error");
+    EXPECT_EQ(error_of("#declare A = array[3] {1, 2, 3}\n#declare X = dimension_size(A, 1e30);\n"),
+              "dimension_size: the array has 1 dimension, asked for dimension 2147483647 at "
+              "test.pov:2:32");
+    const std::string receiver =
+        "illuminance_receiver { <0, 0, 0>, <1, 0, 0>, <0, 0, 1> resolution SIZE }\n";
+    const auto with = [&](const std::string& size) {
+        std::string text = receiver;
+        return text.replace(text.find("SIZE"), 4, size);
+    };
+    EXPECT_EQ(error_of(with("<1e12, 1>")),
+              "expected 'resolution <nx, ny>' with two whole numbers from 1 to 65536, at most "
+              "16777216 cells in all, found <1000000000000, 1> at test.pov:1:67");
+    EXPECT_NE(error_of(with("<4097, 4096>")).find("at most 16777216 cells"), std::string::npos);
+    EXPECT_EQ(error_of(with("<4096, 4096>")), "no error");
+}
+
 TEST(SceneLanguageLimits, MemoryStopsAtItsLimitBeforeTheAllocationThatWouldPassIt) {
     ParseOptions options;
     options.max_memory_megabytes = 200;

@@ -487,7 +487,7 @@ Numeric Parser::Builtins::dimension_size(Call& call) {
     const ArrayRef array = array_argument(call);
     call.comma();
     const Token dimension_at = call.parser.peek();
-    const int dimension = static_cast<int>(call.float_argument());
+    const int dimension = call.int_argument("dimension");
     call.close();
     const size_t dimensions = array->sizes.size();
     if (dimension < 1 || dimension > static_cast<int>(dimensions))

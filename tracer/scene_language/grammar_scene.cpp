@@ -93,9 +93,15 @@ void parse_receiver(Parser& p, const Token& keyword) {
             p.next();
             const Token at = p.peek();
             const Numeric n = p.parse_numeric();
-            if (n.terms != 2 || n.v[0] < 1 || n.v[1] < 1 || n.v[0] != std::floor(n.v[0]) ||
-                n.v[1] != std::floor(n.v[1]))
-                p.fail(at, "expected 'resolution <nx, ny>' with two positive integers");
+            // Each side at most an image's (65536), the cells at most 2^24 (their sums take
+            // 40 bytes a cell for the receiver and as much for each light layer).
+            const auto whole = [](double v) { return v >= 1 && v <= 65536 && v == std::floor(v); };
+            if (n.terms != 2 || !whole(n.v[0]) || !whole(n.v[1]) || n.v[0] * n.v[1] > 16777216)
+                p.fail(at,
+                       fmt::format("expected 'resolution <nx, ny>' with two whole numbers from 1 "
+                                   "to 65536, at most 16777216 cells in all, found {}",
+                                   n.terms == 2 ? fmt::format("<{}, {}>", n.v[0], n.v[1])
+                                                : fmt::format("{} terms", n.terms)));
             receiver.nx = static_cast<int>(n.v[0]);
             receiver.ny = static_cast<int>(n.v[1]);
             have_resolution = true;

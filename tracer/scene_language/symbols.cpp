@@ -104,12 +104,12 @@ Value* Parser::array_element(const Token& at, Array& array, bool for_assignment)
         const double raw = parse_expression().v[0];
         expect(Symbol::rbracket,
                [&] { return fmt::format("to close '[' opened at {}", location_of(open).str()); });
-        const long i = static_cast<long>(raw);  // POV-Ray truncates
-        if (raw < 0 || i >= array.sizes[d])
+        // Checked as a float: a huge or NaN index has no integer to truncate to.
+        if (!(raw >= 0 && raw < double(array.sizes[d])))
             fail(at_index,
                  fmt::format("array index {} out of range: dimension {} has {} elements (0 to {})",
                              raw, d + 1, array.sizes[d], array.sizes[d] - 1));
-        index = index * array.sizes[d] + static_cast<size_t>(i);
+        index = index * array.sizes[d] + static_cast<size_t>(raw);  // POV-Ray truncates
     }
     Value& element = array.elements[index];
     if (!for_assignment && std::holds_alternative<std::monostate>(element))
