@@ -70,8 +70,7 @@ std::vector<std::string> write_all_outputs(const RenderResult& result,
                                            const OutputRequest& request) {
     std::vector<std::string> written =
         write_render_outputs(&result.film, result.receivers, request);
-    for (const RenderLayer& layer :
-         result.layers) {  // bidirectional: OUT.LAYER.exr, .png, receiver maps
+    for (const RenderLayer& layer : result.layers) {  // OUT.LAYER.exr, .png, receiver maps
         OutputRequest layer_request = request;
         auto with_layer = [&](const std::string& path) {
             return path.empty() ? path

@@ -23,8 +23,11 @@ constexpr const char* kDescription =
 Writes OUT.exr (linear R,G,B radiance in W/(m^2 sr) per linear-sRGB channel, and Y, the
 luminance in cd/m^2 = 683 * (0.2126 R + 0.7152 G + 0.0722 B)), a PNG preview (sRGB, auto
 exposure) and, for each illuminance_receiver of the scene, OUT.NAME.exr and OUT.NAME.csv
-(illuminance in lux with its standard error, irradiance in W/m^2). Files appear only when
-complete. Light units: a light's colour is its radiant intensity in W/sr per channel; see
+(illuminance in lux with its standard error, irradiance in W/m^2), and the same again for
+each light layer, OUT.direct_visibility.*, OUT.primary.* and OUT.secondary.*: a light's body
+seen straight or in mirrors, light straight from a light reflected once, and the rest; what
+no layer holds (emitting surfaces, the background, fog) is in OUT.exr only. Files appear only
+when complete. Light units: a light's colour is its radiant intensity in W/sr per channel; see
 tracer/render/README.md for every convention.
 
 Examples:

@@ -97,13 +97,19 @@ TEST(BidirectionalDisk, PrimaryIlluminanceMatchesClosedForm) {
                      primary.irradiance.mean(1, 1).green);
 }
 
-TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
+// The camera tests hold for the path tracer's direct-visibility layer too: both integrators
+// split light alike (integrator.h).
+constexpr const char* kIntegrators[] = {"bidirectional", "path"};
+
+void expect_camera_sees_the_disk(const std::string& integrator) {
+    SCOPED_TRACE(integrator);
     // A camera on the disk's axis at D = 30 mm looking at it. Pixels well inside its image see
     // the Lambertian radiance Phi / (pi^2 r^2); the image, summed as irradiance at the camera
     // (sum of L dOmega cos), gives the intensity along the axis over D^2: Phi / (pi D^2).
     const double D = 30;
     const std::string scene = R"(
-        global_settings { integrator "bidirectional" }
+        global_settings { integrator ")" +
+                              integrator + R"(" }
         camera { location <0, 0, 30> direction <0, 0, -1> right <1, 0, 0> up <0, 1, 0> angle 6 }
         ray_source { ")" + test::disk_files().model +
                               R"(" }
@@ -136,9 +142,9 @@ TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
     const double radiance_truth = 1e6 * kDiskFlux / (kPi * kPi * kDiskRadius * kDiskRadius);
     const double irradiance_truth = 1e6 * kDiskFlux / (kPi * D * D);
     std::printf(
-        "disk seen by the camera: mean radiance %.6g W/(m^2 sr) over %d pixels (truth %.6g), "
-        "image irradiance %.6g W/m^2 (truth %.6g)\n",
-        inner_sum / inner, inner, radiance_truth, irradiance, irradiance_truth);
+        "%s: disk seen by the camera: mean radiance %.6g W/(m^2 sr) over %d pixels (truth "
+        "%.6g), image irradiance %.6g W/m^2 (truth %.6g)\n",
+        integrator.c_str(), inner_sum / inner, inner, radiance_truth, irradiance, irradiance_truth);
     ASSERT_GT(inner, 100);
     EXPECT_NEAR(inner_sum / inner, radiance_truth, 0.02 * radiance_truth);
     EXPECT_NEAR(irradiance, irradiance_truth, 0.02 * irradiance_truth);
@@ -154,12 +160,18 @@ TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
     EXPECT_DOUBLE_EQ(r.film.mean(48, 48).green, direct.mean(48, 48).green);
 }
 
-TEST(BidirectionalDisk, CameraSeesTheDiskInAMirror) {
+TEST(BidirectionalDisk, CameraSeesTheDiskRadianceAndIntensity) {
+    for (const char* integrator : kIntegrators) expect_camera_sees_the_disk(integrator);
+}
+
+void expect_camera_sees_the_disk_in_a_mirror(const std::string& integrator) {
+    SCOPED_TRACE(integrator);
     // The camera looks at the disk's back (it emits nothing that way) and at a perfect mirror
     // 15 mm in front of the disk: the direct-visibility image is the disk seen at 60 mm along
     // the specular chain, its summed irradiance the model's axial intensity over 60^2.
     const std::string scene = R"(
-        global_settings { integrator "bidirectional" }
+        global_settings { integrator ")" +
+                              integrator + R"(" }
         camera { location <0, 0, -30> direction <0, 0, 1> right <1, 0, 0> up <0, 1, 0> angle 4 }
         plane { z, 15 pigment { rgb 0 } finish { reflection 1 diffuse 0 ambient 0 } }
         ray_source { ")" + test::disk_files().model +
@@ -186,10 +198,15 @@ TEST(BidirectionalDisk, CameraSeesTheDiskInAMirror) {
         std::make_shared<lightmodel::LightModel>(lightmodel::read_model(test::disk_files().model)));
     const double truth = 1e6 * model.intensity({0, 0, 1}) / (60 * 60);
     std::printf(
-        "disk in a mirror: image irradiance %.6g W/m^2, model's axial intensity / 60^2 %.6g\n",
-        irradiance, truth);
+        "%s: disk in a mirror: image irradiance %.6g W/m^2, model's axial intensity / 60^2 "
+        "%.6g\n",
+        integrator.c_str(), irradiance, truth);
     EXPECT_NEAR(irradiance, truth, 0.01 * truth);
     EXPECT_EQ(r.layers[1].film.mean(32, 32).green, 0);  // the black mirror has no smooth lobe
+}
+
+TEST(BidirectionalDisk, CameraSeesTheDiskInAMirror) {
+    for (const char* integrator : kIntegrators) expect_camera_sees_the_disk_in_a_mirror(integrator);
 }
 
 // The disk at the centre of the closed box of tracer_support.h, white walls of albedo a: the

@@ -114,8 +114,5 @@ using BidirectionalIntegrator = BidirectionalIntegratorOf<Rgb>;
 std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene,
                                                           const RenderSettings& settings,
                                                           const RenderResult& start);
-// Its light components: direct visibility of the lights' bodies, primary light (straight
-// from a light to the first smooth surface), secondary light (scattered before).
-const std::vector<std::string>& bidirectional_layers();
 
 }  // namespace rayset::tracer

@@ -38,10 +38,6 @@ bool has_ordinary_light(const RenderScene& scene) {
     return false;
 }
 
-// The pass values' components: the layers, then the light of emitting surfaces and the
-// background (the path tracer's).
-enum Component { kDirectVisibility, kPrimary, kSecondary, kOrdinary };
-
 template <class Point>
 double default_radius(const std::vector<std::vector<Point>>& points,
                       const std::vector<ReceiverMap>& receivers) {
@@ -178,14 +174,15 @@ void BidirectionalPasses<Q>::camera_sample(const CameraRay& ray, const SampleSin
         visible[v].beta = sink.weight * visible[v].beta;
     sink.add(kDirectVisibility, s.direct_visibility);
     sink.add(kPrimary, s.primary);
-    if (ordinary_) sink.add(kOrdinary, path_.radiance(ray.origin, ray.direction, rng, rays));
+    if (ordinary_)
+        sink.add(kUnlayered, path_.radiance(ray.origin, ray.direction, rng, rays).total());
 }
 
 template <class Q>
 void BidirectionalPasses<Q>::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink,
                                              Pcg32& rng, uint64_t& rays) const {
     sink.add(kPrimary, integrator_.receiver_primary(point, normal, rng, rays));
-    if (ordinary_) sink.add(kOrdinary, path_.irradiance(point, normal, rng, rays));
+    if (ordinary_) sink.add(kUnlayered, path_.irradiance(point, normal, rng, rays).total());
 }
 
 template <class Q>
@@ -265,11 +262,6 @@ void BidirectionalPasses<Q>::pass_completed(RenderResult& result) {
 }
 
 }  // namespace
-
-const std::vector<std::string>& bidirectional_layers() {
-    static const std::vector<std::string> names = {"direct_visibility", "primary", "secondary"};
-    return names;
-}
 
 std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene,
                                                           const RenderSettings& settings,

@@ -19,8 +19,8 @@ struct IntegratorEntry {
 
 const std::vector<IntegratorEntry>& integrators() {
     static const std::vector<IntegratorEntry> entries = {
-        {"path", {}, make_path_integrator},
-        {"bidirectional", bidirectional_layers(), make_bidirectional_integrator},
+        {"path", light_layers(), make_path_integrator},
+        {"bidirectional", light_layers(), make_bidirectional_integrator},
     };
     return entries;
 }
@@ -32,6 +32,11 @@ const IntegratorEntry& integrator_named(const std::string& name) {
 }
 
 }  // namespace
+
+const std::vector<std::string>& light_layers() {
+    static const std::vector<std::string> names = {"direct_visibility", "primary", "secondary"};
+    return names;
+}
 
 SamplePoints::SamplePoints(const RenderSettings& settings,
                            const std::vector<ReceiverMap>& receivers)

@@ -9,6 +9,7 @@
 // pass's visible points). The driver adds the pass to the films only once it is complete.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -18,6 +19,7 @@
 #include "core/random.h"
 #include "tracer/film/film.h"
 #include "tracer/render/camera.h"
+#include "tracer/render/spectrum.h"
 
 namespace rayset::tracer {
 
@@ -42,6 +44,49 @@ struct SamplePoints {
     int tiles_x() const { return (width + tile_size - 1) / tile_size; }
     int tiles() const { return tiles_x() * ((height + tile_size - 1) / tile_size); }
 };
+
+// The light components every integrator keeps apart (the paper's decomposition), the first
+// three written out as layers:
+//   direct visibility  a light's body seen from the camera, through specular chains only;
+//   primary            light straight from a light to the first smooth (non-delta) scattering
+//                      of a camera path (or a receiver point), reflected there;
+//   secondary          light that scattered smoothly before that;
+//   unlayered          light of no layer: emitting surfaces, the background, fog, media
+//                      emission.
+enum LightComponent { kDirectVisibility, kPrimary, kSecondary, kUnlayered, kLightComponents };
+// The names of the layers, in that order.
+const std::vector<std::string>& light_layers();
+
+// A quantity Q (Rgb, or SampledSpectrum at a path's wavelengths) split by LightComponent.
+template <class Q>
+struct LightComponentsOf {
+    std::array<Q, kLightComponents> of{};
+
+    LightComponentsOf& operator+=(const LightComponentsOf& other) {
+        for (int c = 0; c < kLightComponents; ++c) of[size_t(c)] += other.of[size_t(c)];
+        return *this;
+    }
+    friend LightComponentsOf operator*(double k, const LightComponentsOf& a) {
+        LightComponentsOf scaled;
+        for (int c = 0; c < kLightComponents; ++c) scaled.of[size_t(c)] = k * a.of[size_t(c)];
+        return scaled;
+    }
+    Q total() const {
+        Q sum = of[0];
+        for (int c = 1; c < kLightComponents; ++c) sum += of[size_t(c)];
+        return sum;
+    }
+};
+
+// Each component made linear sRGB (spectrum.h's to_rgb).
+template <class Q>
+LightComponentsOf<Rgb> to_rgb(const LightComponentsOf<Q>& light,
+                              const WavelengthsFor<Q>& wavelengths) {
+    LightComponentsOf<Rgb> rgb;
+    for (int c = 0; c < kLightComponents; ++c)
+        rgb.of[size_t(c)] = to_rgb(light.of[size_t(c)], wavelengths);
+    return rgb;
+}
 
 // A pass's light at every sample point, renderer units: one array per component.
 struct PassValues {

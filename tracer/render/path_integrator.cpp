@@ -43,7 +43,8 @@ PathIntegratorOf<Q>::PathIntegratorOf(const RenderScene& scene, const LightSet& 
 }
 
 template <class Q>
-Rgb PathIntegratorOf<Q>::radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const {
+LightComponentsOf<Rgb> PathIntegratorOf<Q>::radiance(Vec3 origin, Vec3 direction, Pcg32& rng,
+                                                     uint64_t& rays) const {
     const Wavelengths wavelengths = sample_wavelengths<Q>(wavelength_density_, rng);
     PathState state;
     state.origin = origin;
@@ -52,11 +53,15 @@ Rgb PathIntegratorOf<Q>::radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint6
 }
 
 template <class Q>
-Rgb PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const {
+LightComponentsOf<Rgb> PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng,
+                                                       uint64_t& rays) const {
     return white_lambertian_irradiance<Q>(
         normal, wavelength_density_, rng,
         [&](const BsdfOf<Q>& bsdf, const Wavelengths& wavelengths) {
-            return direct_light(scene_, lights_, bsdf, point, normal, wavelengths, rng, rays);
+            LightComponentsOf<Q> light;
+            light.of[kPrimary] =
+                direct_light(scene_, lights_, bsdf, point, normal, wavelengths, rng, rays);
+            return light;
         },
         [&](const BsdfSampleOf<Q>& s, const Wavelengths& wavelengths) {
             PathState state;
@@ -66,6 +71,7 @@ Rgb PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_
             state.beta = s.weight;
             state.bsdf_pdf = s.pdf;
             state.depth = 1;
+            state.segment_layer = kPrimary;  // the receiver is the first smooth scattering
             return trace(state, wavelengths, rng, rays);
         });
 }
@@ -74,11 +80,13 @@ Rgb PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_
 // the BSDF) is inlined into it. Left as calls across files, they pass their Vec3 arguments
 // through memory and cost about a tenth of the renderer's time per ray (raytrace --bench).
 template <class Q>
-[[gnu::flatten]] Q PathIntegratorOf<Q>::trace(PathState& s, const Wavelengths& wavelengths,
-                                              Pcg32& rng, uint64_t& rays) const {
+[[gnu::flatten]] LightComponentsOf<Q> PathIntegratorOf<Q>::trace(PathState& s,
+                                                                 const Wavelengths& wavelengths,
+                                                                 Pcg32& rng, uint64_t& rays) const {
     const LightSet& lights = lights_;
     const Interiors& interiors = scene_.interiors();
-    Q sum{};
+    LightComponentsOf<Q> sum;
+    Q& unlayered = sum.of[kUnlayered];
     SurfaceHit hit;
     BsdfSampleOf<Q> sample;
     std::optional<Material> scratch;
@@ -101,7 +109,7 @@ template <class Q>
                 Rgb through, added;
                 scene_.fog().along(s.origin, s.direction, found ? hit.t : kInfinity, through,
                                    added);
-                sum += s.beta * added;
+                unlayered += s.beta * added;
                 s.beta *= through;
             }
         }
@@ -109,18 +117,20 @@ template <class Q>
             // Lights are not geometry: a ray collects one if it crosses its body before the
             // first surface that casts shadows, which is exactly what light sampling tests.
             const double t_block = scene_.light_horizon(s.origin, s.direction, found, hit, rays);
-            sum += s.beta * lights.template crossed_radiance<Q>(s.origin, s.direction,
-                                                                t_block + scene_.epsilon(),
-                                                                s.bsdf_pdf, wavelengths);
+            sum.of[s.segment_layer] +=
+                s.beta * lights.template crossed_radiance<Q>(s.origin, s.direction,
+                                                             t_block + scene_.epsilon(), s.bsdf_pdf,
+                                                             wavelengths);
         }
         if (!found) {
             const Sky& sky = scene_.sky();
-            sum += s.beta * emitted(sky.radiance(s.direction), sky.spectrum(), wavelengths);
+            unlayered += s.beta * emitted(sky.radiance(s.direction), sky.spectrum(), wavelengths);
             break;
         }
         const Material& material = scene_.material(hit, scratch);
         if (!is_black(material.emission))
-            sum += s.beta * emitted(material.emission, material.emission_spectrum, wavelengths);
+            unlayered +=
+                s.beta * emitted(material.emission, material.emission_spectrum, wavelengths);
         const Vec3 wo = -s.direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         const bool light_sampled = bsdf.has_smooth_lobes();
@@ -134,22 +144,25 @@ template <class Q>
                      u2 = rng.uniform_float();
         const bool sampled = bsdf.sample(u_lobe, u1, u2, sample);
         if (light_sampled) {
+            Q& sampled_light = sum.of[sampled_at_vertex(s)];
             if constexpr (std::is_same_v<Q, Rgb>) {
                 if (interiors.any()) {
                     const int shadow_medium =
                         interiors.medium_after(medium, s.direction, hit, shadow.direction);
-                    sum += s.beta *
-                           (interiors.participating()
-                                ? through_media(scene_, shadow, shadow_medium, rng, rays)
-                                : dimmed_unless_occluded(scene_, shadow, shadow_medium, rng, rays));
+                    sampled_light +=
+                        s.beta *
+                        (interiors.participating()
+                             ? through_media(scene_, shadow, shadow_medium, rng, rays)
+                             : dimmed_unless_occluded(scene_, shadow, shadow_medium, rng, rays));
                 } else {
-                    sum += s.beta * unless_occluded(scene_, shadow, rays);
+                    sampled_light += s.beta * unless_occluded(scene_, shadow, rays);
                 }
             } else {
-                sum += s.beta * unless_occluded(scene_, shadow, rays);
+                sampled_light += s.beta * unless_occluded(scene_, shadow, rays);
             }
         }
         if (s.depth + 1 >= kMaxDepth || !sampled || is_black(sample.weight)) break;
+        scattered(s, sample.delta);
         if (interiors.any()) s.medium = interiors.medium_after(medium, s.direction, hit, sample.wi);
         s.beta *= sample.weight;
         s.bsdf_pdf = sample.delta ? -1 : sample.pdf;
@@ -172,15 +185,17 @@ bool PathIntegratorOf<Q>::survives_roulette(PathState& s, Pcg32& rng) {
 
 template <class Q>
 bool PathIntegratorOf<Q>::cross_medium(PathState& s, int medium, double length, Pcg32& rng,
-                                       uint64_t& rays, Rgb& sum) const {
+                                       uint64_t& rays, LightComponentsOf<Rgb>& sum) const {
     if constexpr (std::is_same_v<Q, Rgb>) {
         const InteriorMedium& m = scene_.interiors().medium(medium);
         const FreeFlight flight = m.fly(s.origin, s.direction, length, rng);
-        sum += s.beta * flight.emitted;
+        sum.of[kUnlayered] += s.beta * flight.emitted;
         s.beta *= flight.weight;
         if (!flight.scattered) return false;
         const Vec3 point = s.origin + flight.t * s.direction;
-        sum += s.beta * medium_direct_light(scene_, lights_, medium, point, s.direction, rng, rays);
+        sum.of[sampled_at_vertex(s)] +=
+            s.beta * medium_direct_light(scene_, lights_, medium, point, s.direction, rng, rays);
+        scattered(s, false);
         const double u_choice = rng.uniform_float(), u1 = rng.uniform_float(),
                      u2 = rng.uniform_float();
         const Vec3 wi = m.sample_phase(s.direction, u_choice, u1, u2);
@@ -210,14 +225,17 @@ public:
         : lights_(std::move(lights)), path_(scene, lights_) {}
     void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
                        uint64_t& rays) const override {
-        sink.add(0, path_.radiance(ray.origin, ray.direction, rng, rays));
+        add_components(sink, path_.radiance(ray.origin, ray.direction, rng, rays));
     }
     void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
                          uint64_t& rays) const override {
-        sink.add(0, path_.irradiance(point, normal, rng, rays));
+        add_components(sink, path_.irradiance(point, normal, rng, rays));
     }
 
 private:
+    static void add_components(const SampleSink& sink, const LightComponentsOf<Rgb>& light) {
+        for (int c = 0; c < kLightComponents; ++c) sink.add(c, light.of[size_t(c)]);
+    }
     LightSet lights_;
     PathIntegratorOf<Q> path_;
 };

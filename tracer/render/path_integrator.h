@@ -2,7 +2,13 @@
 // light (light.h: POV-Ray lights and ray-file sources), multiple importance sampling (power
 // heuristic) between light sampling and BSDF sampling for lights with a body, and Russian
 // roulette. Emitting surfaces and the background are collected where paths meet them.
-// Radiance and irradiance in renderer units (units.h).
+// Radiance and irradiance in renderer units (units.h), split into the light components of
+// integrator.h as the bidirectional integrator splits them, so that both agree on every
+// layer's mean: a light's body met through specular (delta) bounces only is direct
+// visibility; met on the segment right after the path's first smooth scattering, primary; met
+// after any scattering beyond, secondary. A light sample at a vertex that specular bounces
+// alone led to is primary (a vertex with a smooth lobe, whichever lobe the path then takes, or
+// a scattering in a medium), secondary beyond.
 //
 // Q: what paths carry, Rgb or SampledSpectrum (spectral transport, spectrum.h). Spectral paths
 // draw their own hero wavelength in proportion to the lights' spectra times (x-bar + y-bar +
@@ -32,11 +38,12 @@ public:
 
     // Radiance arriving along a camera ray (origin, unit direction), linear sRGB whatever the
     // transport; `rays` counts every ray cast.
-    Rgb radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const;
+    LightComponentsOf<Rgb> radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const;
     // Irradiance at `point` on a virtual receiver of unit `normal` (not part of the scene),
     // from the half-space the normal points into: pi times the radiance a white Lambertian
-    // surface there would reflect, estimated with the same path tracer.
-    Rgb irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
+    // surface there would reflect, estimated with the same path tracer. The receiver point is
+    // the first smooth scattering.
+    LightComponentsOf<Rgb> irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
 
     static constexpr int kMaxDepth = 256;  // a cap far beyond what Russian roulette lets live
     // Bounces before Russian roulette starts. Earlier is cheaper per path but noisier: in a
@@ -52,17 +59,30 @@ private:
         Q beta = constant_value<Q>(1);
         double bsdf_pdf = -1;  // pdf of the sampled direction; < 0: no light sampling competes
         int depth = 0;
+        // The component a light's body met on the coming segment belongs to.
+        LightComponent segment_layer = kDirectVisibility;
         int medium = -1;  // the object whose interior the path is in, if known (interior_media.h)
     };
     // Follows the path from `state` (advanced in place: a by-value copy of this struct cost
     // more than some of the arithmetic per bounce).
-    Q trace(PathState& state, const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const;
+    LightComponentsOf<Q> trace(PathState& state, const Wavelengths& wavelengths, Pcg32& rng,
+                               uint64_t& rays) const;
     // Across a segment of `length` in the medium of object `medium` (RGB transport): adds its
     // emission to `sum`, draws a free flight and scales the throughput by it. If the medium
     // scatters the path there, adds the light sampled at that point, turns the path by the
     // phase function and returns true.
     bool cross_medium(PathState& state, int medium, double length, Pcg32& rng, uint64_t& rays,
-                      Rgb& sum) const;
+                      LightComponentsOf<Rgb>& sum) const;
+    // The component of a light sample at the path's vertex.
+    static LightComponent sampled_at_vertex(const PathState& s) {
+        return s.segment_layer == kDirectVisibility ? kPrimary : kSecondary;
+    }
+    // The path scattered at its vertex: specularly (delta) or not.
+    static void scattered(PathState& s, bool delta) {
+        s.segment_layer = s.segment_layer != kDirectVisibility ? kSecondary
+                          : delta                              ? kDirectVisibility
+                                                               : kPrimary;
+    }
     // Russian roulette from kRouletteDepth on: whether the path goes on (its throughput then
     // rescaled).
     static bool survives_roulette(PathState& state, Pcg32& rng);
@@ -73,9 +93,9 @@ private:
 using PathIntegrator = PathIntegratorOf<Rgb>;
 
 // The path tracer as the renderer's integrator over every light of the scene: one radiance
-// sample per camera ray, one irradiance sample per receiver sample, no layers; RGB or
-// spectral transport. Throws rayset::Error for the naive ray set (no body, no light sampling:
-// only photons can carry its light).
+// sample per camera ray, one irradiance sample per receiver sample, split into the light
+// layers; RGB or spectral transport. Throws rayset::Error for the naive ray set (no body, no light
+// sampling: only photons can carry its light).
 std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene,
                                                  const RenderSettings& settings,
                                                  const RenderResult& start);

@@ -7,13 +7,15 @@
 #pragma once
 
 #include "core/random.h"
+#include "tracer/render/integrator.h"
 #include "tracer/render/material.h"
 #include "tracer/render/spectrum.h"
 
 namespace rayset::tracer {
 
 // Q: what the estimate carries (Rgb or SampledSpectrum), with wavelengths drawn from
-// `wavelength_density` (spectral only). The callables return Q:
+// `wavelength_density` (spectral only). The callables return Q, or both LightComponentsOf<Q>
+// (integrator.h) for an estimate split into components (returned as linear sRGB the same way):
 //   sample_light(bsdf, wavelengths)      the light sample: f |cos| Li / pdf x its MIS weight;
 //   follow_bsdf_sample(s, wavelengths)   what the ray along the BSDF sample s brings, times
 //                                        s.weight, each light it meets weighted against
@@ -21,12 +23,12 @@ namespace rayset::tracer {
 // Random numbers: the wavelength, sample_light's, then the lobe and direction (3 floats),
 // then follow_bsdf_sample's.
 template <class Q, class SampleLight, class FollowBsdfSample>
-Rgb white_lambertian_irradiance(Vec3 normal, const lightmodel::BinnedSpectrum& wavelength_density,
-                                Pcg32& rng, SampleLight&& sample_light,
-                                FollowBsdfSample&& follow_bsdf_sample) {
+auto white_lambertian_irradiance(Vec3 normal, const lightmodel::BinnedSpectrum& wavelength_density,
+                                 Pcg32& rng, SampleLight&& sample_light,
+                                 FollowBsdfSample&& follow_bsdf_sample) {
     const WavelengthsFor<Q> wavelengths = sample_wavelengths<Q>(wavelength_density, rng);
     const BsdfOf<Q> bsdf(white_lambertian(), normal, normal, normal, wavelengths);
-    Q reflected = sample_light(bsdf, wavelengths);
+    auto reflected = sample_light(bsdf, wavelengths);
     BsdfSampleOf<Q> s;
     const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
     if (bsdf.sample(u_lobe, u1, u2, s) && !is_black(s.weight))
