@@ -146,39 +146,40 @@ void expect_path_balance(const std::string& light, double power, const char* wha
                          std::string("path tracer, ") + what);
 }
 
+// POV-Ray lights of 1e-3 W/sr per channel and their power: a point light emits 4 pi I, a
+// two-sided area light the same, a cosine spotlight pi I.
+struct PovLight {
+    const char* text;
+    double power;
+    const char* what;
+};
+constexpr double kIntensity = 1e-3;
+const PovLight kPovLights[] = {
+    {"light_source { <0, 10, 0> color rgb 0.001 }", 4 * kPi* kIntensity, "point light"},
+    {"light_source { <0, 10, 0> color rgb 0.001 area_light <10, 0, 0>, <0, 0, 10>, 2, 2 }",
+     4 * kPi* kIntensity, "area light"},
+    {"light_source { <0, 10, 0> color rgb 0.001 area_light <10, 0, 0>, <0, 0, 10>, 2, 2 "
+     "circular }",
+     4 * kPi* kIntensity, "circular area light"},
+    {"light_source { <0, 10, 0> color rgb 0.001 area_light <10, 0, 0>, <0, 0, 10>, 2, 2 "
+     "circular orient }",
+     4 * kPi* kIntensity, "oriented area light"},
+    {"light_source { <0, 10, 0> color rgb 0.001 spotlight point_at <0, -50, 0> radius -90 "
+     "falloff 90 tightness 1 }",
+     kPi* kIntensity, "cosine spotlight"},
+    {"light_source { <0, 10, 0> color rgb 0.001 spotlight point_at <0, -50, 0> radius -90 "
+     "falloff 90 tightness 1 area_light <10, 0, 0>, <0, 0, 10>, 2, 2 circular orient }",
+     kPi* kIntensity, "oriented cosine area spotlight"},
+};
+
 TEST(LightInterface, BidirectionalSamplesAndEmitsPovRayLights) {
-    const double intensity = 1e-3;  // W/sr per channel
-    // A point light emits 4 pi I; a two-sided area light the same; a cosine spotlight pi I.
-    expect_bidirectional_balance("light_source { <0, 10, 0> color rgb 0.001 }", 4 * kPi * intensity,
-                                 "point light");
-    expect_bidirectional_balance(
-        "light_source { <0, 10, 0> color rgb 0.001 area_light <10, 0, 0>, <0, 0, 10>, 2, 2 }",
-        4 * kPi * intensity, "area light");
-    expect_bidirectional_balance(
-        "light_source { <0, 10, 0> color rgb 0.001 area_light <10, 0, 0>, "
-        "<0, 0, 10>, 2, 2 circular }",
-        4 * kPi * intensity, "circular area light");
-    expect_bidirectional_balance(
-        "light_source { <0, 10, 0> color rgb 0.001 area_light <10, 0, 0>, "
-        "<0, 0, 10>, 2, 2 circular orient }",
-        4 * kPi * intensity, "oriented area light");
-    expect_bidirectional_balance(
-        "light_source { <0, 10, 0> color rgb 0.001 spotlight point_at <0, -50, 0> radius -90 "
-        "falloff 90 tightness 1 }",
-        kPi * intensity, "cosine spotlight");
-    expect_bidirectional_balance(
-        "light_source { <0, 10, 0> color rgb 0.001 spotlight point_at <0, -50, 0> radius -90 "
-        "falloff 90 tightness 1 area_light <10, 0, 0>, <0, 0, 10>, 2, 2 circular orient }",
-        kPi * intensity, "oriented cosine area spotlight");
+    for (const PovLight& light : kPovLights)
+        expect_bidirectional_balance(light.text, light.power, light.what);
 }
 
 TEST(LightInterface, PathTracerSplitsPovRayLightsAsTheBidirectionalDoes) {
-    const double intensity = 1e-3;  // W/sr per channel
-    expect_path_balance("light_source { <0, 10, 0> color rgb 0.001 }", 4 * kPi * intensity,
-                        "point light");
-    expect_path_balance(
-        "light_source { <0, 10, 0> color rgb 0.001 area_light <10, 0, 0>, <0, 0, 10>, 2, 2 }",
-        4 * kPi * intensity, "area light");
+    for (const PovLight& light : kPovLights)
+        expect_path_balance(light.text, light.power, light.what);
 }
 
 TEST(LightInterface, LightThroughAMirrorIsSecondaryInBothIntegrators) {
