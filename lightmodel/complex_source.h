@@ -36,6 +36,9 @@ public:
     LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const override;
     void pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position,
                 double& pdf_direction) const override;
+    double pdf_Le_line(Vec3 origin, Vec3 dir) const override {
+        return volume_.line_density(origin, dir);
+    }
 
     // Far-field radiant intensity of the model toward `w` (flux/sr): sum over flux cells of
     // Phi_c D_k(w). What sample_Le emits and what the camera sees from far away.

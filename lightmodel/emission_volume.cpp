@@ -131,6 +131,18 @@ double EmissionVolume::pdf_direction(Vec3 origin, Vec3 dir) const {
     return sum;
 }
 
+double EmissionVolume::line_density(Vec3 origin, Vec3 dir) const {
+    const double inf = std::numeric_limits<double>::infinity();
+    double sum = 0, d = 0;
+    int32_t diagram = -1;
+    traverse(origin, dir, -inf, inf, [&](uint32_t c, double t0, double t1) {
+        const int32_t k = model_.flux_cells[c].intensity_cell;
+        if (k != diagram) diagram = k, d = model_.diagrams[size_t(k)].pdf(-dir);
+        sum += point_density(c) * d * (t1 - t0);
+    });
+    return sum;
+}
+
 VolumeSample EmissionVolume::sample_point(double u_cell, double u_voxel, Vec3 u_point) const {
     const size_t c = size_t(cells_.sample(u_cell).index);
     VolumeSample s;

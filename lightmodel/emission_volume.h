@@ -62,6 +62,10 @@ public:
     BinnedSpectrum total_spectrum() const;
     // Solid-angle density at `origin` of the direction `dir` under sample_point().
     double pdf_direction(Vec3 origin, Vec3 dir) const;
+    // Density of the photon lines (a point by sample_point(), a direction by its intensity
+    // cell's diagram) along the whole line through `origin` for light leaving toward -dir: per
+    // unit area across the line and per steradian, the line integral of point_density D_k.
+    double line_density(Vec3 origin, Vec3 dir) const;
 
     // A point of the volume with density proportional to the emission (cell by flux, then
     // uniform in the cell's occupied voxels: the same distribution as rejection sampling of a

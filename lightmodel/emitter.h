@@ -79,6 +79,10 @@ public:
     virtual LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const = 0;
     virtual void pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position,
                         double& pdf_direction) const = 0;
+    // Density of sample_Le's rays along the line through `origin` with light leaving toward
+    // -dir (dir unit), per mm^2 across the line and per sr: what a bidirectional integrator
+    // weighs a path that met the body with. 0 for an emitter without a body.
+    virtual double pdf_Le_line(Vec3 origin, Vec3 dir) const = 0;
 };
 
 }  // namespace rayset::lightmodel

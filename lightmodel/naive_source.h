@@ -37,6 +37,7 @@ public:
     void pdf_Le(Vec3, Vec3, double& pdf_position, double& pdf_direction) const override {
         pdf_position = pdf_direction = 0;
     }
+    double pdf_Le_line(Vec3, Vec3) const override { return 0; }
 
 private:
     std::vector<Vec3> origins_, directions_;

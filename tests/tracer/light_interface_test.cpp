@@ -10,10 +10,12 @@
 
 #include "converters/analytic/analytic_sources.h"
 #include "core/error.h"
+#include "core/random.h"
 #include "lightmodel/complex_source.h"
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 #include "support/test_support.h"
+#include "tracer/render/light.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
 #include "tracer/tracer_support.h"
@@ -233,6 +235,116 @@ TEST(LightInterface, LightThroughAMirrorIsSecondaryInBothIntegrators) {
             integrator.c_str(), measured, truth, std::sqrt(variance));
         EXPECT_LT(std::sqrt(variance), bound / 4 * truth);  // the bound is 4 se or more
         EXPECT_NEAR(measured, truth, bound * truth);
+    }
+}
+
+// The lights of a scene, as the integrators see them.
+LightSet lights_of(const std::string& text) {
+    return LightSet(parse_scene_text(text, test::disk_files().scratch.file("lights.pov")),
+                    SceneUnits{}, false);
+}
+
+TEST(LightInterface, APhotonsFluxIsTheRadianceItCarriesOverItsEmissionDensity) {
+    // What a bidirectional weight rests on: sample_Le's flux is the light's radiance along the
+    // photon's ray (a point light's intensity) over pdf_Le's density for that ray, per channel.
+    // Radiance comes from the queries a camera ray uses (crossed, radiance, sample_Li), the
+    // density from pdf_Le: two codes, one photon.
+    for (const PovLight& pov : kPovLights) {
+        SCOPED_TRACE(pov.what);
+        const LightSet lights = lights_of(pov.text);
+        ASSERT_EQ(lights.size(), 1u);
+        const Light& light = lights[0];
+        Pcg32 rng(11, 0);
+        for (int n = 0; n < 2000; ++n) {
+            double u[7];
+            for (double& x : u) x = rng.uniform();
+            const LightPhotonOf<Rgb> photon = light.sample_Le<Rgb>(u, 0.5);
+            const Vec3 origin = photon.origin + 100 * photon.direction, wi = -photon.direction;
+            double t = 0, arriving = 0;
+            if (light.delta_position()) {
+                t = 100;
+                LightUniforms none;
+                const auto li = light.sample_Li<Rgb>(origin, none, 1, {});
+                ASSERT_TRUE(li);
+                arriving = li->Li.green * t * t;  // the intensity toward `origin`
+            } else {
+                ASSERT_TRUE(light.crossed(origin, wi, 1e300, t)) << "photon " << n;
+                EXPECT_NEAR(t, 100, 1e-9) << "photon " << n;
+                arriving = light.radiance<Rgb>(origin, wi, {}).green;
+            }
+            const double pdf = light.pdf_Le(origin, wi, t, 1);
+            ASSERT_GT(pdf, 0) << "photon " << n;
+            EXPECT_NEAR(photon.flux.green, arriving / pdf, 1e-9 * photon.flux.green)
+                << "photon " << n;
+        }
+    }
+}
+
+// The integral of pdf_Le over every direction leaving the light and the plane across each,
+// through the light's centre (a square of side `side` holding the body seen from anywhere):
+// directions stratified over the sphere, points jittered on a grid.
+double integrated_emission_density(const Light& light, Vec3 centre, double side, int directions,
+                                   int grid) {
+    Pcg32 rng(5, 1);
+    double sum = 0;
+    for (int k = 0; k < directions; ++k) {
+        const int rows = int(std::sqrt(double(directions)));
+        const Vec3 w = uniform_sphere((k % rows + rng.uniform()) / rows,
+                                      (k / rows + rng.uniform()) / (directions / rows));
+        const Frame frame(w);
+        const double h = side / grid;
+        for (int j = 0; j < grid; ++j)
+            for (int i = 0; i < grid; ++i) {
+                const Vec3 q = centre + ((i + rng.uniform()) * h - side / 2) * frame.s +
+                               ((j + rng.uniform()) * h - side / 2) * frame.t;
+                const Vec3 origin = q + 10 * side * w;
+                double t = 0;
+                if (light.crossed(origin, -w, 1e300, t))
+                    sum += light.pdf_Le(origin, -w, t, 1) * h * h;
+            }
+    }
+    return 4 * kPi * sum / directions;
+}
+
+TEST(LightInterface, EmissionDensitiesOfLightsWithABodyIntegrateToOne) {
+    // Every photon leaves its light in some direction across some point: pdf_Le integrates to
+    // 1. Points jittered in a 40 x 40 grid over 1024 stratified directions: the error is that
+    // of the body's outline in the grid and of the stratified cosine, 0.2% here at most.
+    for (const PovLight& pov : kPovLights) {
+        const LightSet lights = lights_of(pov.text);
+        if (lights[0].delta_position()) continue;
+        const double integral = integrated_emission_density(lights[0], {0, 10, 0}, 16, 1024, 40);
+        std::printf("%s: emission density integrates to %.5f\n", pov.what, integral);
+        EXPECT_NEAR(integral, 1, 0.005) << pov.what;
+    }
+}
+
+TEST(LightInterface, ARaySourcesLineDensityIntegratesToItsFarField) {
+    // Across a direction, the photon lines of a ray source's model add up to the share of its
+    // flux sent that way, its far-field intensity over its flux: the model's diagrams alone
+    // (ComplexSource::intensity), against pdf_Le's lines through the voxels.
+    const LightSet lights = lights_of("ray_source { \"" + test::disk_files().model + "\" }");
+    const lightmodel::ComplexSource model(disk_light_model());
+    const Light& light = lights[0];
+    for (const Vec3 w : {Vec3{0, 0, 1}, normalized(Vec3{0.3, 0.2, 1}), normalized(Vec3{1, 0, 1}),
+                         normalized(Vec3{-1, 0.5, 0.3})}) {
+        const Frame frame(w);
+        Pcg32 rng(3, 2);
+        const int grid = 400;
+        const double side = 4, h = side / grid;  // the disk: radius 1 mm
+        double sum = 0;
+        for (int j = 0; j < grid; ++j)
+            for (int i = 0; i < grid; ++i) {
+                const Vec3 q = ((i + rng.uniform()) * h - side / 2) * frame.s +
+                               ((j + rng.uniform()) * h - side / 2) * frame.t;
+                sum += light.pdf_Le(q + 100 * w, -w, 100, 1) * h * h;
+            }
+        const double truth = model.intensity(w) / model.phi();
+        std::printf(
+            "ray source, photon lines toward (%.2f, %.2f, %.2f): %.6g per sr (far "
+            "field %.6g)\n",
+            w.x, w.y, w.z, sum, truth);
+        EXPECT_NEAR(sum, truth, 0.005 * truth);
     }
 }
 

@@ -10,7 +10,10 @@
 //   crossed     where a ray meets the light's body (area lights, ray-source bodies): lights are
 //               not geometry, a ray collects every body it crosses before the first surface;
 //   radiance    the radiance such a ray brings; pdf_Li the density sample_Li has for it;
-//   sample_Le   a photon: origin, direction and flux.
+//   sample_Le   a photon: origin, direction and flux; pdf_Le the density it has for a given
+//               ray, per steradian and per unit area across the ray (the light's projected
+//               area, so that no cosine at the light enters), for weighing bidirectional
+//               strategies against each other.
 // Densities include the probability `chosen` with which the light was picked, passed in.
 // Emitting surfaces and the background are not lights: paths collect them where they meet them.
 #pragma once
@@ -82,6 +85,14 @@ public:
         return std::visit([&](const auto& l) { return l.template sample_Le<Q>(u, u_wavelength); },
                           kind_);
     }
+    // The density with which sample_Le emits the light that arrives at `origin` along `wi`
+    // (unit, toward the light) from distance t: where the ray crossed the body, or a point
+    // light's distance. Per steradian, times per unit area across the ray for a body.
+    double pdf_Le(Vec3 origin, Vec3 wi, double t, double chosen) const {
+        return std::visit([&](const auto& l) { return l.pdf_Le(origin, wi, t, chosen); }, kind_);
+    }
+    // A point or spot light: photons leave one point, which no ray can meet.
+    bool delta_position() const { return std::holds_alternative<PointLight>(kind_); }
     // The emitted light's spectral shape (any scale; zero when unknown), where paths that
     // carry it are worth sampling.
     lightmodel::BinnedSpectrum spectrum() const {

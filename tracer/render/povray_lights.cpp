@@ -57,6 +57,30 @@ double SpotProfile::sample_cone(double u1, double u2, Vec3& direction) const {
     return 2 * kPi * (1 - cos_edge);
 }
 
+double SpotProfile::cone_pdf(Vec3 direction) const {
+    const double cos_edge = std::max(0.0, cos_radius > 0 ? cos_falloff : 0.0);
+    return dot(direction, axis) > cos_edge ? 1 / (2 * kPi * (1 - cos_edge)) : 0;
+}
+
+double PointLight::pdf_Le(Vec3, Vec3 wi, double, double chosen) const {
+    return chosen * (spot ? spot->cone_pdf(-wi) : 1 / (4 * kPi));
+}
+
+// A uniform point (1 / A) and side, a cosine-distributed direction (cos / pi): per unit area
+// across the ray the cosines cancel.
+double RectLight::pdf_Le(Vec3, Vec3 wi, double, double chosen) const {
+    if (!two_sided && dot(wi, normal) >= 0) return 0;
+    return chosen / ((two_sided ? 2 : 1) * area * kPi);
+}
+
+// Without a spot, a uniform point of the sphere (1 / (4 pi r^2)) and a cosine-distributed
+// direction (cos / pi); with one, a direction of the cone and a uniform point of the disc of
+// area pi r^2 across it.
+double SphereLight::pdf_Le(Vec3, Vec3 wi, double, double chosen) const {
+    if (!spot) return chosen / (4 * kPi * kPi * radius * radius);
+    return chosen * spot->cone_pdf(-wi) / (kPi * radius * radius);
+}
+
 bool RectLight::crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const {
     const double denom = dot(direction, normal);
     if (denom == 0 || (!two_sided && denom > 0)) return false;

@@ -25,6 +25,8 @@ struct SpotProfile {
     // A direction uniform over the cone the factor is not zero in, for uniform u1, u2; returns
     // the cone's solid angle.
     double sample_cone(double u1, double u2, Vec3& direction) const;
+    // The density sample_cone draws a unit direction with (sr^-1).
+    double cone_pdf(Vec3 direction) const;
 };
 
 // A point or spot light: radiant intensity `intensity` W/sr along the axis (spot) or in every
@@ -54,6 +56,7 @@ struct PointLight {
     // Directions uniform over the cone the spot factor is not zero in (the sphere for a point).
     template <class Q>
     LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const;
+    double pdf_Le(Vec3 origin, Vec3 wi, double t, double chosen) const;
     lightmodel::BinnedSpectrum spectrum() const;
 };
 
@@ -86,6 +89,7 @@ struct RectLight {
     // A uniform point, a cosine-distributed direction on an emitting side.
     template <class Q>
     LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const;
+    double pdf_Le(Vec3 origin, Vec3 wi, double t, double chosen) const;
     lightmodel::BinnedSpectrum spectrum() const;
     void extend_bounds(Vec3& low, Vec3& high) const;  // by the body's box
 
@@ -123,6 +127,7 @@ struct SphereLight {
     // spot, a direction in the spot's cone and a point uniform over the disc facing it.
     template <class Q>
     LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const;
+    double pdf_Le(Vec3 origin, Vec3 wi, double t, double chosen) const;
     lightmodel::BinnedSpectrum spectrum() const;
     void extend_bounds(Vec3& low, Vec3& high) const;  // by the body's box
 

@@ -137,6 +137,11 @@ double PlacedRaySource::pdf_Li(Vec3 ref, Vec3 wi, double, double chosen) const {
     return chosen * emitter_->pdf_Li(to_local_.point(ref), k_ * to_local_.vector(wi));
 }
 
+double PlacedRaySource::pdf_Le(Vec3 origin, Vec3 wi, double, double chosen) const {
+    const Local l = to_local(origin, wi);
+    return chosen * radiance_scale_ * emitter_->pdf_Le_line(l.origin, l.direction);
+}
+
 template <class Q>
 LightPhotonOf<Q> PlacedRaySource::sample_Le(const double u[7], double u_wavelength) const {
     const lightmodel::LeSample s = emitter_->sample_Le(u);

@@ -61,6 +61,9 @@ public:
     // `u_wavelength` (hero sampling, spectrum.h), or carry a ray's single wavelength.
     template <class Q>
     LightPhotonOf<Q> sample_Le(const double u[7], double u_wavelength) const;
+    // Photons leave points of the emitting volume: the density of the line through `origin`
+    // along `wi` (lightmodel's pdf_Le_line), whether or not the body shows it.
+    double pdf_Le(Vec3 origin, Vec3 wi, double t, double chosen) const;
     // The whole light's spectrum weighted by luminance (zero when a camera cannot see it).
     lightmodel::BinnedSpectrum spectrum() const { return emitter_->phi_spectrum(); }
 
