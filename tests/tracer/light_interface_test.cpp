@@ -174,6 +174,27 @@ const PovLight kPovLights[] = {
      kPi* kIntensity, "oriented cosine area spotlight"},
 };
 
+// The same box through vertex connection and merging: every light's light subpaths, light
+// samples, connections and merges weighted together, split into the same layers.
+void expect_vcm_balance(const std::string& light, std::vector<std::string> sources, double power,
+                        const char* what) {
+    const double albedo = 0.5;
+    test::ClosedBox box;
+    box.diffuse = albedo, box.more = light, box.integrator = "vcm";
+    box.sources = std::move(sources);
+    RenderSettings settings;
+    settings.render_image = false, settings.passes = 8, settings.seed = 6;
+    settings.photon_radius = 2;
+    expect_layer_balance(render_text(test::closed_box_scene(box), settings), power, albedo,
+                         std::string("vcm, ") + what);
+}
+
+TEST(LightInterface, VcmBalancesARayFileSourceAndPovRayLights) {
+    expect_vcm_balance("", {test::disk_files().model}, 1, "ray-file source");
+    for (const PovLight& light : kPovLights)
+        expect_vcm_balance(light.text, {}, light.power, light.what);
+}
+
 TEST(LightInterface, BidirectionalSamplesAndEmitsPovRayLights) {
     for (const PovLight& light : kPovLights)
         expect_bidirectional_balance(light.text, light.power, light.what);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "tracer/render/gather_radius.h"
 #include "tracer/render/medium_light.h"
 #include "tracer/render/receiver_irradiance.h"
 
@@ -15,9 +16,6 @@ namespace rayset::tracer {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// Photons count at a point only if they landed on a surface facing nearly the same way, so
-// that light on a neighbouring wall near a corner is not spread onto this one.
-constexpr double kSameSurfaceCos = 0.9;
 
 // The photon's light reflected toward a camera path, made RGB at the photon's wavelengths.
 Rgb reflected(const Bsdf& bsdf, const Material&, const Photon& p, double cos_i) {

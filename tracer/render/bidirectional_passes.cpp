@@ -1,12 +1,6 @@
 // The bidirectional integrator over the renderer's passes: the camera samples of a pass keep
-// their visible points, then a photon pass and density estimation at those points.
-//
-// Progressive photon mapping in the probabilistic form of Knaus & Zwicker 2011 ("Progressive
-// photon mapping: a probabilistic approach", ACM TOG 30(3)): every pass has fresh visible
-// points and photons, all gathers of pass i use one radius r_i, and the image is the average
-// of the passes. r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1) with alpha = 2/3 (the rule and value of
-// Hachisuka, Ogaki & Jensen 2008, "Progressive photon mapping"), so both the variance and the
-// bias of the average vanish as passes grow.
+// their visible points, then a photon pass and density estimation at those points, every pass
+// with fresh visible points and photons and the radius of gather_radius.h.
 #include "tracer/render/bidirectional_integrator.h"
 
 #include <algorithm>
@@ -16,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
+#include "tracer/render/gather_radius.h"
 #include "tracer/render/path_integrator.h"
 #include "tracer/render/renderer.h"
 
@@ -23,7 +18,6 @@ namespace rayset::tracer {
 
 namespace {
 
-constexpr double kAlpha = 2.0 / 3.0;
 constexpr uint64_t kPhotonBlock = 4096;
 constexpr uint64_t kMinimumPhotons = 65536;
 constexpr uint64_t kPhotonSeedSalt =
@@ -38,44 +32,23 @@ bool has_ordinary_light(const RenderScene& scene) {
     return false;
 }
 
+// Where the pass's gathers happen: its visible points and the receiver cells.
 template <class Point>
-double default_radius(const std::vector<std::vector<Point>>& points,
-                      const std::vector<ReceiverMap>& receivers) {
-    // The extent of the middle 90% of the points along each axis: a floor plane seen to its
-    // horizon must not make the radius (and so every gather) as wide as the floor.
-    std::vector<double> coordinates[3];
-    auto add = [&](Vec3 p) {
-        coordinates[0].push_back(p.x), coordinates[1].push_back(p.y), coordinates[2].push_back(p.z);
-    };
+std::vector<Vec3> gather_points(const std::vector<std::vector<Point>>& points,
+                                const std::vector<ReceiverMap>& receivers) {
+    std::vector<Vec3> out;
     for (const auto& tile : points)
-        for (const Point& vp : tile) add(vp.point);
+        for (const Point& vp : tile) out.push_back(vp.point);
     for (const ReceiverMap& map : receivers)
         for (int j = 0; j < map.receiver.ny; ++j)
-            for (int i = 0; i < map.receiver.nx; ++i) add(map.cell_centre(i, j));
-    if (coordinates[0].empty()) return 1;
-    double squares = 0;
-    for (std::vector<double>& c : coordinates) {
-        auto at = [&](double fraction) {
-            const auto k = c.begin() + std::ptrdiff_t(fraction * double(c.size() - 1));
-            std::nth_element(c.begin(), k, c.end());
-            return *k;
-        };
-        const double low = at(0.05), high = at(0.95);
-        squares += (high - low) * (high - low);
-    }
-    const double diagonal = std::sqrt(squares);
-    return diagonal > 0 ? diagonal / 100 : 1;
+            for (int i = 0; i < map.receiver.nx; ++i) out.push_back(map.cell_centre(i, j));
+    return out;
 }
 
 // Camera samples per pixel and receiver cell in one pass: as many as make the pass's camera
 // paths about as many as its photons, at least one.
 int camera_samples_per_pass(uint64_t photons_per_pass, size_t camera_points) {
     return int(std::max<uint64_t>(1, photons_per_pass / std::max<uint64_t>(1, camera_points)));
-}
-
-// The radius after `passes_done` passes, the last of them gathered with `radius`.
-double shrunk_radius(double radius, int passes_done) {
-    return radius * std::sqrt((passes_done + kAlpha) / (passes_done + 1));
 }
 
 template <class Q>
@@ -88,7 +61,7 @@ public:
     BidirectionalPasses(const RenderScene& scene, const RenderSettings& settings,
                         const RenderResult& start);
     int samples_per_pass() const override { return samples_; }
-    void begin_pass(int, const SamplePoints& points) override {
+    void begin_pass(int, const SamplePoints& points, std::atomic<uint64_t>&) override {
         visible_.assign(size_t(points.tiles()), {});
         receivers_ = points.receivers;
     }
@@ -103,7 +76,8 @@ public:
         return !lights_.empty() && !(base_radius_ > 0);
     }
     std::vector<double> first_pass_outcome() override {
-        if (!(base_radius_ > 0)) base_radius_ = default_radius(visible_, *receivers_);
+        if (!(base_radius_ > 0))
+            base_radius_ = default_radius(gather_points(visible_, *receivers_));
         return {base_radius_};
     }
     void set_first_pass_outcome(const std::vector<double>& outcome) override {
@@ -189,7 +163,8 @@ template <class Q>
 void BidirectionalPasses<Q>::end_pass(int pass, const SamplePoints& points, PassValues& values,
                                       std::atomic<uint64_t>& rays, StopFlag stop) {
     if (lights_.empty() || points.size() == 0 || stopped(stop)) return;
-    if (!(base_radius_ > 0)) base_radius_ = default_radius(visible_, *points.receivers);
+    if (!(base_radius_ > 0))
+        base_radius_ = default_radius(gather_points(visible_, *points.receivers));
     std::vector<Photon> photons = trace_photons(pass, rays, stop);
     if (stopped(stop)) return;
     const Grid grid(std::move(photons), radius(pass));

@@ -5,6 +5,7 @@
 #include "tracer/render/bidirectional_integrator.h"
 #include "tracer/render/path_integrator.h"
 #include "tracer/render/renderer.h"
+#include "tracer/render/vcm_integrator.h"
 
 namespace rayset::tracer {
 
@@ -21,6 +22,7 @@ const std::vector<IntegratorEntry>& integrators() {
     static const std::vector<IntegratorEntry> entries = {
         {"path", light_layers(), make_path_integrator},
         {"bidirectional", light_layers(), make_bidirectional_integrator},
+        {"vcm", light_layers(), make_vcm_integrator},
     };
     return entries;
 }
@@ -28,7 +30,7 @@ const std::vector<IntegratorEntry>& integrators() {
 const IntegratorEntry& integrator_named(const std::string& name) {
     for (const IntegratorEntry& entry : integrators())
         if (name == entry.name) return entry;
-    throw Error("unknown integrator \"" + name + "\" (path or bidirectional)");
+    throw Error("unknown integrator \"" + name + "\" (path, bidirectional or vcm)");
 }
 
 }  // namespace

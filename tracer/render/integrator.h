@@ -122,8 +122,10 @@ public:
     // Camera samples per pixel and receiver cell in each pass.
     virtual int samples_per_pass() const { return 1; }
 
-    // Before a pass's samples (on the driver's thread).
-    virtual void begin_pass(int /*pass*/, const SamplePoints& /*points*/) {}
+    // Before a pass's samples, inside the driver's thread arena (the vcm integrator traces the
+    // pass's light subpaths here; `rays` counts their rays).
+    virtual void begin_pass(int /*pass*/, const SamplePoints& /*points*/,
+                            std::atomic<uint64_t>& /*rays*/) {}
     // One camera ray's light (and whatever the integrator keeps of it for end_pass). Called
     // concurrently for different tiles and receiver cells.
     virtual void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
@@ -150,7 +152,7 @@ public:
 };
 
 // The integrators by the name global_settings { integrator NAME } gives: "path" (the
-// default) or "bidirectional". `start`: the state a continued render goes on from.
+// default), "bidirectional" or "vcm". `start`: the state a continued render goes on from.
 std::unique_ptr<Integrator> make_integrator(const RenderScene& scene,
                                             const RenderSettings& settings,
                                             const RenderResult& start);

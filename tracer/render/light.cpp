@@ -76,25 +76,22 @@ std::optional<LightLiSampleOf<Q>> LightSet::sample_Li(Vec3 ref, const LightUnifo
     if (!(total_power_ > 0)) return std::nullopt;
     LightUniforms chosen = u;
     const size_t i = choose(chosen.select);
-    return lights_[i].sample_Li<Q>(ref, chosen, probability_[i], wavelengths);
+    auto sample = lights_[i].sample_Li<Q>(ref, chosen, probability_[i], wavelengths);
+    if (sample) sample->light = int(i);
+    return sample;
 }
 
 template <class Q>
 Q LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
                              const WavelengthsFor<Q>& wavelengths) const {
     Q sum{};
-    auto add = [&](size_t i) {
-        double t = 0;
-        if (!lights_[i].crossed(origin, direction, t_max, t)) return;
+    for_each_crossed(origin, direction, t_max, [&](size_t i, double t) {
         double weight = 1;
         if (bsdf_pdf >= 0)
             weight =
                 power_heuristic(bsdf_pdf, lights_[i].pdf_Li(origin, direction, t, probability_[i]));
         sum += weight * lights_[i].radiance<Q>(origin, direction, wavelengths);
-    };
-    if (!area_bodies_.empty() && ray_crosses_box(origin, direction, t_max, area_low_, area_high_))
-        for (size_t i : area_bodies_) add(i);
-    for (size_t i : ray_source_bodies_) add(i);
+    });
     return sum;
 }
 
@@ -105,6 +102,7 @@ LightPhotonOf<Q> LightSet::sample_Le(double u[7], double u_wavelength, uint64_t 
     LightPhotonOf<Q> photon = lights_[i].sample_Le<Q>(u, u_wavelength);
     photon.flux = (1 / (probability_[i] * double(emitted))) * photon.flux;
     photon.counts_first_hit = lights_[i].photons_only();
+    photon.light = int(i);
     return photon;
 }
 

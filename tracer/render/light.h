@@ -24,6 +24,7 @@
 
 #include "core/random.h"
 #include "tracer/render/povray_lights.h"
+#include "tracer/render/ray_box.h"
 #include "tracer/render/ray_sources.h"
 #include "tracer/render/spectrum.h"
 #include "tracer/render/units.h"
@@ -133,6 +134,18 @@ public:
     template <class Q>
     Q crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double bsdf_pdf,
                        const WavelengthsFor<Q>& wavelengths) const;
+    // Calls f(light index, t) for every light body the ray (origin, unit direction) crosses
+    // before t_max, at distance t.
+    template <class F>
+    void for_each_crossed(Vec3 origin, Vec3 direction, double t_max, F&& f) const {
+        double t = 0;
+        if (!area_bodies_.empty() &&
+            ray_crosses_box(origin, direction, t_max, area_low_, area_high_))
+            for (size_t i : area_bodies_)
+                if (lights_[i].crossed(origin, direction, t_max, t)) f(i, t);
+        for (size_t i : ray_source_bodies_)
+            if (lights_[i].crossed(origin, direction, t_max, t)) f(i, t);
+    }
     // A photon of a pass of `emitted`: a light chosen by u[0] (rescaled for the light's own
     // use), its flux divided by the choice and by `emitted`; zero flux when no light shines.
     template <class Q>

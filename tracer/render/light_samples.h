@@ -25,6 +25,7 @@ struct LightLiSampleOf {
     bool delta = false;       // a point light: no other strategy can find it, no MIS
     bool shadowless = false;  // POV-Ray's shadowless light: nothing blocks it, no shadow ray
     bool media_interaction = true;  // false: media do not scatter its light (POV-Ray's flag)
+    int light = -1;                 // the light's index in its LightSet (set by the set)
 };
 
 template <class Q>
@@ -35,6 +36,7 @@ struct LightPhotonOf {
     // Its light has no other estimate of its direct light (the naive ray set: no body, no
     // light sampling), so the photon counts from its first hit.
     bool counts_first_hit = false;
+    int light = -1;  // the light's index in its LightSet (set by the set)
 };
 
 }  // namespace rayset::tracer

@@ -33,5 +33,6 @@ PhotonGridOf<PhotonType>::PhotonGridOf(std::vector<Photon> photons, double radiu
 
 template class PhotonGridOf<PhotonOf<Rgb>>;
 template class PhotonGridOf<PhotonOf<SampledSpectrum>>;
+template class PhotonGridOf<IndexedPoint>;
 
 }  // namespace rayset::tracer

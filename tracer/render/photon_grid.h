@@ -35,6 +35,12 @@ struct PhotonOf : PhotonWavelengths<Q> {
 };
 using Photon = PhotonOf<Rgb>;
 
+// A point standing for element `index` of another array: what a grid of references holds.
+struct IndexedPoint {
+    Vec3 position;
+    uint32_t index = 0;
+};
+
 template <class PhotonType>
 class PhotonGridOf {
 public:

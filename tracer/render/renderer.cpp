@@ -51,9 +51,9 @@ public:
     std::optional<PassValues> render_pass(tbb::task_arena& arena, int pass, int components,
                                           std::atomic<uint64_t>& rays, Between&& between) {
         PassValues values(components, points_.size());
-        integrator_.begin_pass(pass, points_);
         const uint64_t seed = pass_seed(seed_, pass);
         arena.execute([&] {
+            integrator_.begin_pass(pass, points_, rays);
             camera_samples(values, seed, rays);
             receiver_samples(values, seed, rays);
         });

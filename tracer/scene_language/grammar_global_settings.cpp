@@ -359,9 +359,9 @@ bool parse_own_key(Parser& p, const Token& token, GlobalSettings& g) {
     } else if (token.is(ContextWord::integrator)) {
         const Token at = p.peek();
         const std::string name = p.parse_string();
-        if (name != "path" && name != "bidirectional")
-            p.fail(at, fmt::format("unknown integrator \"{}\" (expected \"path\" or "
-                                   "\"bidirectional\")",
+        if (name != "path" && name != "bidirectional" && name != "vcm")
+            p.fail(at, fmt::format("unknown integrator \"{}\" (expected \"path\", "
+                                   "\"bidirectional\" or \"vcm\")",
                                    name));
         g.integrator = name;
     } else if (token.is(ContextWord::spectral)) {

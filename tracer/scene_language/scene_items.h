@@ -203,7 +203,7 @@ struct GlobalSettings {
     // Our keys.
     std::string length_unit = "mm";  // mm, cm, m, in, ft
     double millimetres_per_unit = 1.0;
-    std::string integrator = "path";  // "path" or "bidirectional"
+    std::string integrator = "path";  // "path", "bidirectional" or "vcm"
     bool spectral = false;            // bidirectional: spectral transport (`spectral on`)
     int passes = 0;                   // 0: the renderer's default
     double time_limit = 0;            // seconds; 0: no limit

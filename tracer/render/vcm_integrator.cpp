@@ -1,0 +1,512 @@
+// Vertex connection and merging over the renderer's passes (see vcm_integrator.h).
+//
+// Notation of the technical report: a subpath vertex carries three partial weights, vcm, vc
+// and vm, from which the weight of any strategy that uses the vertex follows with a few
+// densities evaluated there. eta = pi r^2 N (N light subpaths a pass) relates merging to
+// connecting.
+#include "tracer/render/vcm_integrator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include "core/error.h"
+#include "tracer/render/gather_radius.h"
+#include "tracer/render/light.h"
+#include "tracer/render/material.h"
+#include "tracer/render/photon_grid.h"
+#include "tracer/render/renderer.h"
+
+namespace rayset::tracer {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr uint64_t kMinimumLightPaths = 65536;
+constexpr uint64_t kLightBlock = 1024;
+constexpr uint64_t kLightSeedSalt = 0xBB67AE8584CAA73BULL;  // light streams apart from camera's
+constexpr int kMaxVertices = 256;  // a cap far beyond what Russian roulette lets live
+constexpr int kCameraRouletteDepth = 5;
+
+// The partial weights of a subpath vertex.
+struct PartialWeights {
+    double vcm = 0, vc = 0, vm = 0;
+};
+
+// A light subpath's vertex at a surface with a smooth lobe.
+struct LightVertex {
+    Vec3 point, normal, shading_normal;  // normal: geometric, as SurfaceHit's
+    Vec3 facing;                         // the normal on the side the light arrived at
+    Vec3 wi;                             // unit, toward the vertex before (the light's side)
+    int object = -1, part = -1;
+    Rgb beta;  // the subpath's weight: W that arrive here
+    PartialWeights weights;
+    int segments = 0;  // from the light: 1 for a light's first hit
+};
+
+// The state of a subpath between its vertices.
+struct Walk {
+    Vec3 origin, direction;
+    Rgb beta{1, 1, 1};
+    PartialWeights weights;
+    int vertices = 0;
+};
+
+// The weights after scattering at a vertex into a direction of density `pdf` (0: a delta lobe),
+// leaving at `cos_out` to the geometric normal; `reverse` the density of sampling the way
+// back. `merging`: whether a subpath can end at this vertex by merging (eta, else nothing).
+void scatter_weights(PartialWeights& w, double pdf, double reverse, double cos_out, double eta,
+                     bool merging) {
+    if (!(pdf > 0)) {
+        w.vcm = 0;
+        w.vc *= cos_out;
+        w.vm *= cos_out;
+        return;
+    }
+    const double here = merging ? eta : 0;
+    const double vc = cos_out / pdf * (w.vc * reverse + w.vcm + here);
+    const double vm = cos_out / pdf * (w.vm * reverse + w.vcm / eta + (merging ? 1 : 0));
+    w = {1 / pdf, vc, vm};
+}
+
+// The weights on arriving at a vertex after a segment of length t, at cos_in to its normal.
+void arrive_weights(PartialWeights& w, double t, double cos_in) {
+    w.vcm *= t * t / cos_in;
+    w.vc /= cos_in;
+    w.vm /= cos_in;
+}
+
+class VcmPasses : public Integrator {
+public:
+    VcmPasses(const RenderScene& scene, const RenderSettings& settings, const RenderResult& start);
+
+    int samples_per_pass() const override { return samples_; }
+    void begin_pass(int pass, const SamplePoints& points, std::atomic<uint64_t>& rays) override;
+    void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+                       uint64_t& rays) const override;
+    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+                         uint64_t& rays) const override;
+    void pass_completed(RenderResult& result) override;
+
+private:
+    // A camera path's vertex, and where its light goes.
+    struct CameraVertex {
+        Vec3 point, normal, shading_normal, wo;
+        const Material* material;
+        bool merging;  // a scene surface (light subpaths end there), not a receiver point
+    };
+    struct CameraWalk : Walk {
+        RayKind kind = RayKind::camera;
+        LightComponent segment_layer = kDirectVisibility;
+    };
+
+    double radius(int pass) const;
+    // The light subpaths of `pass`: their vertices, path after path, and where each path's
+    // begin (path_first_).
+    void trace_light_paths(int pass, std::atomic<uint64_t>& rays);
+    void trace_light_path(uint64_t index, uint64_t seed, std::vector<LightVertex>& out,
+                          uint64_t& rays) const;
+    // The first segment of a light subpath, from its light to the first surface: the weight
+    // and partial weights on arrival; false when it brings nothing.
+    bool emit(Pcg32& rng, Walk& walk, SurfaceHit& hit, uint64_t& rays) const;
+
+    // Follows a camera path from the walk's ray on, adding its light to `sum`.
+    void trace_camera(CameraWalk& walk, Pcg32& rng, uint64_t& rays,
+                      LightComponentsOf<Rgb>& sum) const;
+    // At a camera vertex: its light (with a smooth lobe) and the next direction; false when
+    // the path ends.
+    bool scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& walk, Pcg32& rng,
+                 uint64_t& rays, LightComponentsOf<Rgb>& sum) const;
+    Rgb light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Pcg32& rng,
+                     uint64_t& rays) const;
+    Rgb connection(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
+                   const LightVertex& y, uint64_t& rays) const;
+    // Merged light, the part whose light vertex is its subpath's first apart.
+    void merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Rgb& first,
+               Rgb& later) const;
+    // The density of sampling `from` at vertex x when the path arrives from `to`'s side.
+    double reverse_pdf(const CameraVertex& x, Vec3 to, Vec3 from) const;
+
+    const RenderScene& scene_;
+    LightSet lights_;
+    uint64_t seed_;
+    uint64_t light_paths_;
+    int samples_;
+    int base_pass_;
+    double base_radius_;  // 0 until pass 0's light vertices give it
+    // The pass under way.
+    double eta_ = 1, merge_normalisation_ = 0;
+    std::vector<LightVertex> vertices_;
+    std::vector<uint32_t> path_first_;
+    std::unique_ptr<PhotonGridOf<IndexedPoint>> grid_;
+    size_t vertex_bytes_ = 0;
+};
+
+VcmPasses::VcmPasses(const RenderScene& scene, const RenderSettings& settings,
+                     const RenderResult& start)
+    : scene_(scene), lights_(scene.description(), scene.units(), false), seed_(settings.seed) {
+    size_t points = settings.render_image ? size_t(settings.width) * settings.height : 0;
+    for (const IlluminanceReceiver& r : scene.description().receivers)
+        points += size_t(r.nx) * r.ny;
+    light_paths_ = settings.photons_per_pass > 0 ? uint64_t(settings.photons_per_pass)
+                                                 : std::max<uint64_t>(kMinimumLightPaths, points);
+    samples_ = int(std::max<uint64_t>(1, light_paths_ / std::max<size_t>(1, points)));
+    base_pass_ = start.passes;
+    base_radius_ = start.passes > 0 ? shrunk_radius(start.photon_radius, start.passes)
+                                    : settings.photon_radius;
+}
+
+double VcmPasses::radius(int pass) const {
+    double r = base_radius_;
+    for (int k = base_pass_ + 1; k <= pass; ++k) r = shrunk_radius(r, k);
+    return r;
+}
+
+void VcmPasses::begin_pass(int pass, const SamplePoints&, std::atomic<uint64_t>& rays) {
+    if (!(base_radius_ > 0)) {
+        // Where pass 0's light subpaths end: the same radius in every process.
+        eta_ = 1;
+        trace_light_paths(0, rays);
+        std::vector<Vec3> points;
+        for (const LightVertex& v : vertices_) points.push_back(v.point);
+        base_radius_ = default_radius(std::move(points));
+        base_pass_ = 0;
+    }
+    const double r = radius(pass);
+    eta_ = kPi * r * r * double(light_paths_);
+    merge_normalisation_ = 1 / eta_;
+    trace_light_paths(pass, rays);
+    std::vector<IndexedPoint> points(vertices_.size());
+    for (size_t i = 0; i < vertices_.size(); ++i) points[i] = {vertices_[i].point, uint32_t(i)};
+    grid_ = std::make_unique<PhotonGridOf<IndexedPoint>>(std::move(points), r);
+    vertex_bytes_ =
+        std::max(vertex_bytes_, vertices_.size() * sizeof(LightVertex) + grid_->memory_bytes());
+}
+
+// In fixed blocks, so that the vertices' order does not depend on threads.
+void VcmPasses::trace_light_paths(int pass, std::atomic<uint64_t>& rays) {
+    const uint64_t seed = pass_seed(seed_ ^ kLightSeedSalt, pass);
+    const size_t blocks = size_t((light_paths_ + kLightBlock - 1) / kLightBlock);
+    std::vector<std::vector<LightVertex>> traced(blocks);
+    std::vector<std::vector<uint32_t>> sizes(blocks);
+    tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+        uint64_t counted = 0;
+        const uint64_t first = b * kLightBlock, last = std::min(light_paths_, first + kLightBlock);
+        for (uint64_t i = first; i < last; ++i) {
+            const size_t before = traced[b].size();
+            trace_light_path(i, seed, traced[b], counted);
+            sizes[b].push_back(uint32_t(traced[b].size() - before));
+        }
+        rays += counted;
+    });
+    vertices_.clear();
+    path_first_.assign(1, 0);
+    for (size_t b = 0; b < blocks; ++b) {
+        vertices_.insert(vertices_.end(), traced[b].begin(), traced[b].end());
+        for (uint32_t n : sizes[b]) path_first_.push_back(path_first_.back() + n);
+    }
+}
+
+bool VcmPasses::emit(Pcg32& rng, Walk& walk, SurfaceHit& hit, uint64_t& rays) const {
+    double u[7];
+    for (double& v : u) v = rng.uniform();
+    const LightPhotonOf<Rgb> photon = lights_.sample_Le<Rgb>(u, 0, 1);
+    if (photon.light < 0 || is_black(photon.flux)) return false;
+    const Light& light = lights_[size_t(photon.light)];
+    const double chosen = lights_.probability(size_t(photon.light));
+    ++rays;
+    if (!scene_.intersect(photon.origin, photon.direction, 0, kInfinity, RayKind::indirect, hit))
+        return false;
+    const Vec3 back = -photon.direction;
+    const double emission_pdf = light.pdf_Le(hit.point, back, hit.t, chosen);
+    const double cos_in = std::fabs(dot(hit.normal, photon.direction));
+    if (!(emission_pdf > 0) || !(cos_in > 0)) return false;
+    walk.origin = photon.origin, walk.direction = photon.direction;
+    walk.beta = photon.flux;
+    if (light.is_ray_source()) {
+        // What a camera at the hit sees along the photon's line: nothing unless the line meets
+        // the body before a shadow caster (beyond the photon's origin the scene may block it).
+        double t_body = 0;
+        if (!light.crossed(hit.point, back, kInfinity, t_body)) return false;
+        if (t_body > hit.t) {
+            ++rays;
+            if (scene_.occluded(photon.origin, back, 0, t_body - hit.t)) return false;
+        }
+        walk.beta = (1 / emission_pdf) * light.radiance<Rgb>(hit.point, back, {});
+    }
+    if (light.delta_position()) {
+        walk.weights = {chosen * hit.t * hit.t / (emission_pdf * cos_in), 0, 0};
+    } else {
+        const double direct_pdf = light.pdf_Li(hit.point, back, hit.t, chosen);
+        const double vc = 1 / (emission_pdf * cos_in);
+        walk.weights = {direct_pdf * vc, vc, vc / eta_};
+    }
+    walk.vertices = 1;
+    return true;
+}
+
+void VcmPasses::trace_light_path(uint64_t index, uint64_t seed, std::vector<LightVertex>& out,
+                                 uint64_t& rays) const {
+    if (lights_.empty()) return;
+    Pcg32 rng(seed, index);
+    Walk walk;
+    SurfaceHit hit;
+    if (!emit(rng, walk, hit, rays)) return;
+    std::optional<Material> scratch;
+    for (;;) {
+        const Vec3 wi = -walk.direction;
+        const Material& material = scene_.material(hit, scratch);
+        const Bsdf bsdf(material, hit.normal, hit.shading_normal, wi);
+        const bool smooth = bsdf.has_smooth_lobes();
+        if (smooth) {
+            LightVertex v;
+            v.point = hit.point, v.normal = hit.normal, v.shading_normal = hit.shading_normal;
+            v.facing = bsdf.facing_normal(), v.wi = wi;
+            v.object = hit.object, v.part = hit.part;
+            v.beta = walk.beta, v.weights = walk.weights, v.segments = walk.vertices;
+            out.push_back(v);
+        }
+        BsdfSample s;
+        const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
+                     u2 = rng.uniform_float();
+        if (walk.vertices >= kMaxVertices || !bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight))
+            return;
+        const double reverse =
+            s.delta ? 0 : Bsdf(material, hit.normal, hit.shading_normal, s.wi).pdf(wi);
+        scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse,
+                        std::fabs(dot(hit.normal, s.wi)), eta_, smooth);
+        // Roulette keeps the surviving subpaths' weight near the emitted one.
+        const Rgb next = walk.beta * s.weight;
+        const double survive = std::min(1.0, max_component(next) / max_component(walk.beta));
+        if (!(survive > 0) || rng.uniform_float() >= survive) return;
+        walk.beta = (1 / survive) * next;
+        walk.origin = scene_.offset(hit.point, hit.normal, s.wi);
+        walk.direction = s.wi;
+        ++rays;
+        if (!scene_.intersect(walk.origin, walk.direction, 0, kInfinity, RayKind::indirect, hit))
+            return;
+        const double cos_in = std::fabs(dot(hit.normal, walk.direction));
+        if (!(cos_in > 0)) return;
+        arrive_weights(walk.weights, hit.t, cos_in);
+        ++walk.vertices;
+    }
+}
+
+void VcmPasses::camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+                              uint64_t& rays) const {
+    CameraWalk walk;
+    walk.origin = ray.origin, walk.direction = ray.direction;
+    LightComponentsOf<Rgb> sum;
+    trace_camera(walk, rng, rays, sum);
+    for (int c = 0; c < kLightComponents; ++c) sink.add(c, sum.of[size_t(c)]);
+}
+
+// The receiver point as the camera path's first vertex: a white Lambertian surface, pi times
+// whose reflected radiance is the irradiance.
+void VcmPasses::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+                                uint64_t& rays) const {
+    const CameraVertex x{point, normal, normal, normal, &white_lambertian(), false};
+    const Bsdf bsdf(white_lambertian(), normal, normal, normal);
+    CameraWalk walk;
+    walk.beta = Rgb{kPi, kPi, kPi};
+    walk.vertices = 1;
+    LightComponentsOf<Rgb> sum;
+    if (scatter(x, bsdf, walk, rng, rays, sum)) trace_camera(walk, rng, rays, sum);
+    for (int c = 0; c < kLightComponents; ++c) sink.add(c, sum.of[size_t(c)]);
+}
+
+void VcmPasses::trace_camera(CameraWalk& walk, Pcg32& rng, uint64_t& rays,
+                             LightComponentsOf<Rgb>& sum) const {
+    SurfaceHit hit;
+    std::optional<Material> scratch;
+    for (;;) {
+        ++rays;
+        const bool found =
+            scene_.intersect(walk.origin, walk.direction, 0, kInfinity, walk.kind, hit);
+        if (lights_.has_bodies()) {
+            // A body met on the segment, weighted against sampling it from the vertex before
+            // and against light subpaths that leave it along the segment.
+            const double t_block =
+                scene_.light_horizon(walk.origin, walk.direction, found, hit, rays);
+            lights_.for_each_crossed(
+                walk.origin, walk.direction, t_block + scene_.epsilon(), [&](size_t i, double t) {
+                    const Light& light = lights_[i];
+                    const double chosen = lights_.probability(i);
+                    const double others =
+                        light.pdf_Li(walk.origin, walk.direction, t, chosen) * walk.weights.vcm +
+                        light.pdf_Le(walk.origin, walk.direction, t, chosen) * walk.weights.vc;
+                    sum.of[walk.segment_layer] +=
+                        (1 / (1 + others)) *
+                        (walk.beta * light.radiance<Rgb>(walk.origin, walk.direction, {}));
+                });
+        }
+        if (!found) {
+            sum.of[kUnlayered] += walk.beta * scene_.sky().radiance(walk.direction);
+            return;
+        }
+        const Material& material = scene_.material(hit, scratch);
+        if (!is_black(material.emission)) sum.of[kUnlayered] += walk.beta * material.emission;
+        const double cos_in = std::fabs(dot(hit.normal, walk.direction));
+        if (!(cos_in > 0)) return;
+        arrive_weights(walk.weights, hit.t, cos_in);
+        ++walk.vertices;
+        const CameraVertex x{hit.point,       hit.normal, hit.shading_normal,
+                             -walk.direction, &material,  true};
+        const Bsdf bsdf(material, hit.normal, hit.shading_normal, x.wo);
+        if (!scatter(x, bsdf, walk, rng, rays, sum)) return;
+    }
+}
+
+bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& walk, Pcg32& rng,
+                        uint64_t& rays, LightComponentsOf<Rgb>& sum) const {
+    const bool smooth = bsdf.has_smooth_lobes();
+    if (smooth && !lights_.empty()) {
+        // Light straight from a light is primary at the path's first smooth vertex.
+        const bool first = walk.segment_layer == kDirectVisibility;
+        Rgb primary = light_sample(x, bsdf, walk, rng, rays), secondary;
+        if (!path_first_.empty() && path_first_.size() > 1) {
+            const uint32_t path = rng.below(uint32_t(path_first_.size() - 1));
+            for (uint32_t k = path_first_[path]; k < path_first_[path + 1]; ++k)
+                secondary += connection(x, bsdf, walk, vertices_[k], rays);
+        }
+        Rgb merged_first, merged_later;
+        if (x.merging) merge(x, bsdf, walk, merged_first, merged_later);
+        primary += merged_first;
+        secondary += merged_later;
+        if (!first) secondary += primary, primary = {};
+        sum.of[kPrimary] += walk.beta * primary;
+        sum.of[kSecondary] += walk.beta * secondary;
+    }
+    BsdfSample s;
+    const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
+    if (walk.vertices >= kMaxVertices || !bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight))
+        return false;
+    const double reverse = s.delta ? 0 : reverse_pdf(x, s.wi, x.wo);
+    scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse, std::fabs(dot(x.normal, s.wi)),
+                    eta_, smooth && x.merging);
+    walk.segment_layer = walk.segment_layer != kDirectVisibility ? kSecondary
+                         : s.delta                               ? kDirectVisibility
+                                                                 : kPrimary;
+    walk.beta *= s.weight;
+    walk.origin = scene_.offset(x.point, x.normal, s.wi);
+    walk.direction = s.wi;
+    walk.kind = RayKind::indirect;
+    if (walk.vertices + 1 >= kCameraRouletteDepth) {
+        const double survive = std::min(0.95, max_component(walk.beta));
+        if (rng.uniform_float() >= survive) return false;
+        walk.beta = (1 / survive) * walk.beta;
+    }
+    return true;
+}
+
+double VcmPasses::reverse_pdf(const CameraVertex& x, Vec3 to, Vec3 from) const {
+    return Bsdf(*x.material, x.normal, x.shading_normal, to).pdf(from);
+}
+
+Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
+                            Pcg32& rng, uint64_t& rays) const {
+    const auto sample = lights_.sample_Li<Rgb>(x.point, lights_.draw(rng), {});
+    if (!sample) return {};
+    const Rgb f = bsdf.eval(sample->wi);
+    if (is_black(f) || is_black(sample->Li)) return {};
+    const Light& light = lights_[size_t(sample->light)];
+    const double chosen = lights_.probability(size_t(sample->light));
+    const double d = sample->distance;
+    // The light sample's density per unit area across the ray at the light, times d^2 (a point
+    // light's position is certain: its choice alone).
+    const double direct = sample->delta ? sample->pdf * d * d : sample->pdf;
+    const double bsdf_pdf = sample->delta ? 0 : bsdf.pdf(sample->wi);
+    const double emission_pdf = light.pdf_Le(x.point, sample->wi, d, chosen);
+    const double cos_x = std::fabs(dot(x.normal, sample->wi));
+    const double w_light = bsdf_pdf / sample->pdf;
+    const double w_camera = emission_pdf * cos_x / direct *
+                            ((x.merging ? eta_ : 0) + walk.weights.vcm +
+                             walk.weights.vc * reverse_pdf(x, sample->wi, x.wo));
+    const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), sample->wi);
+    ++rays;
+    if (scene_.occluded(origin, sample->wi, 0, d - scene_.epsilon())) return {};
+    return (1 / ((1 + w_light + w_camera) * sample->pdf)) * (f * sample->Li);
+}
+
+Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
+                          const LightVertex& y, uint64_t& rays) const {
+    const Vec3 d = y.point - x.point;
+    const double distance2 = dot(d, d);
+    if (!(distance2 > 0)) return {};
+    const double distance = std::sqrt(distance2);
+    const Vec3 w = (1 / distance) * d;
+    const Rgb f_x = bsdf.eval(w);
+    if (is_black(f_x)) return {};
+    std::optional<Material> scratch;
+    const Material& material = scene_.material(y.object, y.part, y.point, y.normal, scratch);
+    const Bsdf bsdf_y(material, y.normal, y.shading_normal, y.wi);
+    const Rgb f_y = bsdf_y.eval(-w);
+    if (is_black(f_y)) return {};
+    const double cos_x = std::fabs(dot(x.normal, w)), cos_y = std::fabs(dot(y.normal, w));
+    // Each side's density of reaching the other's vertex, per unit area there.
+    const double camera_to_y = bsdf.pdf(w) * cos_y / distance2;
+    const double light_to_x = bsdf_y.pdf(-w) * cos_x / distance2;
+    const double y_reverse = Bsdf(material, y.normal, y.shading_normal, -w).pdf(y.wi);
+    const double w_light = camera_to_y * (eta_ + y.weights.vcm + y.weights.vc * y_reverse);
+    const double w_camera = light_to_x * ((x.merging ? eta_ : 0) + walk.weights.vcm +
+                                          walk.weights.vc * reverse_pdf(x, w, x.wo));
+    const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), w);
+    const Vec3 target = scene_.offset(y.point, y.facing, -w);
+    const Vec3 between = target - origin;
+    const double length = std::sqrt(dot(between, between));
+    ++rays;
+    if (!(length > 0) || scene_.occluded(origin, (1 / length) * between, 0, length)) return {};
+    return (1 / ((1 + w_light + w_camera) * distance2)) * (f_x * f_y * y.beta);
+}
+
+void VcmPasses::merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Rgb& first,
+                      Rgb& later) const {
+    const Vec3 n = bsdf.facing_normal();
+    grid_->for_each_near(x.point, [&](const IndexedPoint& p) {
+        const LightVertex& y = vertices_[p.index];
+        if (dot(y.facing, n) < kSameSurfaceCos) return;
+        const double cos_i = std::fabs(dot(y.wi, n));
+        if (!(cos_i > 0)) return;
+        const Rgb f = bsdf.eval(y.wi);
+        if (is_black(f)) return;
+        const double w_light = y.weights.vcm / eta_ + y.weights.vm * bsdf.pdf(y.wi);
+        const double w_camera =
+            walk.weights.vcm / eta_ + walk.weights.vm * reverse_pdf(x, y.wi, x.wo);
+        // The vertex's weight holds the projected area on its own surface: its cosine out.
+        const Rgb light =
+            (merge_normalisation_ / ((1 + w_light + w_camera) * cos_i)) * (f * y.beta);
+        (y.segments == 1 ? first : later) += light;
+    });
+}
+
+void VcmPasses::pass_completed(RenderResult& result) {
+    result.photons += lights_.empty() ? 0 : light_paths_;
+    result.photon_radius = radius(result.passes - 1);
+    result.photon_bytes = std::max(result.photon_bytes, vertex_bytes_);
+}
+
+}  // namespace
+
+std::unique_ptr<Integrator> make_vcm_integrator(const RenderScene& scene,
+                                                const RenderSettings& settings,
+                                                const RenderResult& start) {
+    const std::string refuse =
+        "not supported with integrator \"vcm\" (the path integrator "
+        "renders it): ";
+    if (spectral_transport(scene, settings)) throw Error(refuse + "spectral transport");
+    if (scene.interiors().any()) throw Error(refuse + "interior fade or media");
+    if (scene.fog().present()) throw Error(refuse + "fog");
+    for (const LightSource& light : scene.description().lights)
+        if (light.shadowless)
+            throw Error(
+                fmt::format("{}a shadowless light_source at {}", refuse, light.location.str()));
+    if (settings.naive_sources && !scene.description().ray_sources.empty())
+        throw Error(refuse + "the naive ray set (--naive-sources)");
+    return std::make_unique<VcmPasses>(scene, settings, start);
+}
+
+}  // namespace rayset::tracer
