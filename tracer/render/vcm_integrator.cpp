@@ -39,9 +39,9 @@ struct PartialWeights {
 
 // A light subpath's vertex at a surface with a smooth lobe.
 struct LightVertex {
-    Vec3 point, normal, shading_normal;  // normal: geometric, as SurfaceHit's
-    Vec3 facing;                         // the normal on the side the light arrived at
-    Vec3 wi;                             // unit, toward the vertex before (the light's side)
+    Vec3 position, normal, shading_normal;  // normal: geometric, as SurfaceHit's
+    Vec3 facing;                            // the normal on the side the light arrived at
+    Vec3 wi;                                // unit, toward the vertex before (the light's side)
     int object = -1, part = -1;
     Rgb beta;  // the subpath's weight: W that arrive here
     PartialWeights weights;
@@ -142,7 +142,7 @@ private:
     double eta_ = 1, merge_normalisation_ = 0;
     std::vector<LightVertex> vertices_;
     std::vector<uint32_t> path_first_;
-    std::unique_ptr<PhotonGridOf<IndexedPoint>> grid_;
+    std::unique_ptr<PhotonGridOf<LightVertex>> grid_;  // the same vertices, for merging
     size_t vertex_bytes_ = 0;
 };
 
@@ -172,7 +172,7 @@ void VcmPasses::begin_pass(int pass, const SamplePoints&, std::atomic<uint64_t>&
         eta_ = 1;
         trace_light_paths(0, rays);
         std::vector<Vec3> points;
-        for (const LightVertex& v : vertices_) points.push_back(v.point);
+        for (const LightVertex& v : vertices_) points.push_back(v.position);
         base_radius_ = default_radius(std::move(points));
         base_pass_ = 0;
     }
@@ -180,9 +180,7 @@ void VcmPasses::begin_pass(int pass, const SamplePoints&, std::atomic<uint64_t>&
     eta_ = kPi * r * r * double(light_paths_);
     merge_normalisation_ = 1 / eta_;
     trace_light_paths(pass, rays);
-    std::vector<IndexedPoint> points(vertices_.size());
-    for (size_t i = 0; i < vertices_.size(); ++i) points[i] = {vertices_[i].point, uint32_t(i)};
-    grid_ = std::make_unique<PhotonGridOf<IndexedPoint>>(std::move(points), r);
+    grid_ = std::make_unique<PhotonGridOf<LightVertex>>(vertices_, r);
     vertex_bytes_ =
         std::max(vertex_bytes_, vertices_.size() * sizeof(LightVertex) + grid_->memory_bytes());
 }
@@ -264,7 +262,7 @@ void VcmPasses::trace_light_path(uint64_t index, uint64_t seed, std::vector<Ligh
         const bool smooth = bsdf.has_smooth_lobes();
         if (smooth) {
             LightVertex v;
-            v.point = hit.point, v.normal = hit.normal, v.shading_normal = hit.shading_normal;
+            v.position = hit.point, v.normal = hit.normal, v.shading_normal = hit.shading_normal;
             v.facing = bsdf.facing_normal(), v.wi = wi;
             v.object = hit.object, v.part = hit.part;
             v.beta = walk.beta, v.weights = walk.weights, v.segments = walk.vertices;
@@ -434,7 +432,7 @@ Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const Camer
 
 Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
                           const LightVertex& y, uint64_t& rays) const {
-    const Vec3 d = y.point - x.point;
+    const Vec3 d = y.position - x.point;
     const double distance2 = dot(d, d);
     if (!(distance2 > 0)) return {};
     const double distance = std::sqrt(distance2);
@@ -442,7 +440,7 @@ Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraW
     const Rgb f_x = bsdf.eval(w);
     if (is_black(f_x)) return {};
     std::optional<Material> scratch;
-    const Material& material = scene_.material(y.object, y.part, y.point, y.normal, scratch);
+    const Material& material = scene_.material(y.object, y.part, y.position, y.normal, scratch);
     const Bsdf bsdf_y(material, y.normal, y.shading_normal, y.wi);
     const Rgb f_y = bsdf_y.eval(-w);
     if (is_black(f_y)) return {};
@@ -455,7 +453,7 @@ Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraW
     const double w_camera = light_to_x * ((x.merging ? eta_ : 0) + walk.weights.vcm +
                                           walk.weights.vc * reverse_pdf(x, w, x.wo));
     const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), w);
-    const Vec3 target = scene_.offset(y.point, y.facing, -w);
+    const Vec3 target = scene_.offset(y.position, y.facing, -w);
     const Vec3 between = target - origin;
     const double length = std::sqrt(dot(between, between));
     ++rays;
@@ -466,8 +464,7 @@ Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraW
 void VcmPasses::merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Rgb& first,
                       Rgb& later) const {
     const Vec3 n = bsdf.facing_normal();
-    grid_->for_each_near(x.point, [&](const IndexedPoint& p) {
-        const LightVertex& y = vertices_[p.index];
+    grid_->for_each_near(x.point, [&](const LightVertex& y) {
         if (dot(y.facing, n) < kSameSurfaceCos) return;
         const double cos_i = std::fabs(dot(y.wi, n));
         if (!(cos_i > 0)) return;
