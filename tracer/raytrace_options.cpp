@@ -479,14 +479,16 @@ void add_tool_options(CLI::App& app, RaytraceOptions& o) {
 }
 
 void add_transport_options(CLI::App& app, RaytraceOptions& o) {
-    app.add_option("--photons", o.photons_per_pass,
-                   "Bidirectional: photons per pass (default: the pass's camera "
-                   "samples, at least 65536; a pass takes photons / (pixels + "
-                   "receiver cells) samples per pixel and cell, at least 1)")
+    app.add_option(
+           "--photons", o.photons_per_pass,
+           "Bidirectional and vcm: photons (light subpaths) per pass (default: the pass's camera "
+           "samples, at least 65536; a pass takes photons / (pixels + "
+           "receiver cells) samples per pixel and cell, at least 1)")
         ->check(CLI::PositiveNumber);
     app.add_option("--photon-radius", o.photon_radius,
-                   "Bidirectional: gather radius of the first pass in scene "
-                   "units (default: 1/100 of the visible points' extent)")
+                   "Bidirectional and vcm: gather radius of the first pass in scene "
+                   "units (default: 1/100 of the extent of the visible points, or of "
+                   "the first pass's light vertices for vcm)")
         ->check(CLI::PositiveNumber);
     app.add_flag("--naive-sources", o.naive_sources,
                  "Bidirectional: ray sources as their stored rays (the naive "

@@ -218,9 +218,8 @@ TEST(LightInterface, VcmAgreesWithThePathTracerLayerByLayerOnAnImage) {
     // Inside the closed box, lit by the ray-file source and a point light, a camera sees the
     // walls: light that reaches the image through connections and merges of light subpaths,
     // against the path tracer, layer by layer, each within 4 combined standard errors.
-    const std::string view =
-        "camera { location <0, 0, -45> look_at <0, -10, 50> angle 90 }\n" +
-        std::string(kPovLights[0].text) + "\n";
+    const std::string view = "camera { location <0, 0, -45> look_at <0, -10, 50> angle 90 }\n" +
+                             std::string(kPovLights[0].text) + "\n";
     ImageLayer path[3], vcm[3];
     for (const std::string integrator : {"path", "vcm"}) {
         test::ClosedBox box;
@@ -414,6 +413,29 @@ TEST(LightInterface, ARaySourcesLineDensityIntegratesToItsFarField) {
             "field %.6g)\n",
             w.x, w.y, w.z, sum, truth);
         EXPECT_NEAR(sum, truth, 0.005 * truth);
+    }
+}
+
+TEST(LightInterface, VcmRefusesWhatItDoesNotRenderNamingThePathIntegrator) {
+    const std::string box = "global_settings { integrator \"vcm\" }\nplane { y, 0 }\n";
+    RenderSettings settings;
+    settings.render_image = false, settings.passes = 1;
+    const std::pair<std::string, std::string> refused[] = {
+        {"light_source { <0, 10, 0> color rgb 1 shadowless }", "shadowless"},
+        {"fog { distance 100 color rgb 0.5 }", "fog"},
+        {"sphere { 0, 1 pigment { rgbf 1 } interior { media { scattering { 1, 0.1 } } } "
+         "hollow }",
+         "media"},
+        {"global_settings { spectral on }", "spectral"},
+    };
+    for (const auto& [text, what] : refused) {
+        try {
+            render_text(box + text, settings);
+            ADD_FAILURE() << "rendered " << what;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("path integrator"), std::string::npos) << e.what();
+        }
     }
 }
 

@@ -1,7 +1,7 @@
 // Stop and resume (issue 6), library level: a render continued from a checkpoint after k
 // passes, or stopped by its stop flag after k passes and continued, ends with every
-// accumulator equal bit for bit to an uninterrupted render of N passes, for the path and the
-// bidirectional integrators. The tool level is raytrace_resume_tool_test.cpp.
+// accumulator equal bit for bit to an uninterrupted render of N passes, for the path,
+// bidirectional and vcm integrators. The tool level is raytrace_resume_tool_test.cpp.
 #include <atomic>
 #include <cstring>
 
@@ -135,6 +135,23 @@ TEST(RenderResume, BidirectionalIntegratorContinuesBitForBit) {
         }
     }
     EXPECT_GT(r.photons, 0u);
+}
+
+TEST(RenderResume, VcmIntegratorContinuesBitForBit) {
+    // Its gather radius comes from pass 0's light vertices: a continued render goes on from
+    // the radius the checkpoint holds, and the threads do not change the image either.
+    test::ScratchDir dir;
+    std::string scene = bidirectional_box(dir);
+    scene.replace(scene.find("\"bidirectional\""), 15, "\"vcm\"");
+    RenderSettings settings;
+    settings.width = 24, settings.height = 18, settings.seed = 4, settings.photons_per_pass = 5000;
+    const RenderResult r = check_resume(scene, settings, 2, 4, dir);
+    for (const RenderLayer& layer : r.layers) EXPECT_GT(total_green(layer.film), 0) << layer.name;
+    EXPECT_GT(r.photons, 0u);
+    RenderSettings one_thread = settings;
+    one_thread.passes = 4, one_thread.threads = 1;
+    const RenderScene parsed(parse_scene_text(scene, dir.file("scene.pov")));
+    expect_same_state(render(parsed, one_thread), r);
 }
 
 TEST(RenderResume, ContinuedStateMustFitTheScene) {

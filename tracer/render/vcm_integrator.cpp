@@ -7,6 +7,7 @@
 #include "tracer/render/vcm_integrator.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -168,9 +169,11 @@ double VcmPasses::radius(int pass) const {
 
 void VcmPasses::begin_pass(int pass, const SamplePoints&, std::atomic<uint64_t>& rays) {
     if (!(base_radius_ > 0)) {
-        // Where pass 0's light subpaths end: the same radius in every process.
+        // Where pass 0's light subpaths end: the same radius in every process. (Their rays are
+        // not the pass's: the count stays that of the passes, one process or many.)
         eta_ = 1;
-        trace_light_paths(0, rays);
+        std::atomic<uint64_t> uncounted{0};
+        trace_light_paths(0, uncounted);
         std::vector<Vec3> points;
         for (const LightVertex& v : vertices_) points.push_back(v.position);
         base_radius_ = default_radius(std::move(points));
