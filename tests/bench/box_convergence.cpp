@@ -11,6 +11,7 @@
 // layers, else the whole image (then sources seen directly count too).
 // The reference's own noise adds (passes / REFERENCE_PASSES) of a render's squared error; it
 // is divided out, and both figures are printed.
+// An integrator named INTEGRATOR:N stops its series at N passes (default REFERENCE_PASSES / 4).
 // Usage: box_convergence SCENE INCLUDE_DIR [WIDTH HEIGHT REFERENCE_PASSES [INTEGRATOR...]]
 //   e.g. box_convergence examples/led_box.pov out/example 160 120 1024
 //        box_convergence grey_box.pov . 160 160 1024 path bidirectional
@@ -65,8 +66,16 @@ int main(int argc, char** argv) {
     options.include_paths = {argv[2]};
     const SceneDescription description = parse_scene_file(argv[1], options);
     std::vector<std::string> integrators;
-    for (int i = 6; i < argc; ++i) integrators.push_back(argv[i]);
-    if (integrators.empty()) integrators.push_back(description.global.integrator);
+    std::vector<int> last_passes;
+    for (int i = 6; i < argc; ++i) {
+        const std::string named = argv[i];
+        const size_t colon = named.find(':');
+        integrators.push_back(named.substr(0, colon));
+        last_passes.push_back(colon == std::string::npos ? 0
+                                                         : std::atoi(named.c_str() + colon + 1));
+    }
+    if (integrators.empty())
+        integrators.push_back(description.global.integrator), last_passes.push_back(0);
     auto scene_with = [&](const std::string& integrator) {
         SceneDescription d = description;
         d.global.integrator = integrator;
@@ -89,13 +98,15 @@ int main(int argc, char** argv) {
         pixels * reference.passes * reference.samples_per_pass / reference.seconds,
         reference.photons / reference.seconds, reference.rays / reference.seconds,
         reference.photon_bytes / 1048576.0, reference.visible_point_bytes / 1048576.0);
-    for (const std::string& integrator : integrators) {
+    for (size_t k = 0; k < integrators.size(); ++k) {
+        const std::string& integrator = integrators[k];
+        const int last = last_passes[k] > 0 ? last_passes[k] : reference_passes / 4;
         const std::unique_ptr<RenderScene> scene = scene_with(integrator);
         std::printf("%s\n%8s %10s %12s %14s\n", integrator.c_str(), "passes", "seconds",
                     "rel. RMSE", "without ref noise");
         settings.seed = 2;  // independent of the reference
         bool reached = false;
-        for (int passes = 1; passes <= reference_passes / 4; passes *= 2) {
+        for (int passes = 1; passes <= last; passes *= 2) {
             settings.passes = passes;
             const RenderResult r = render(*scene, settings);
             const double raw = relative_rmse(r, reference);

@@ -129,8 +129,9 @@ private:
     // Merged light, the part whose light vertex is its subpath's first apart.
     void merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Rgb& first,
                Rgb& later) const;
-    // The density of sampling `from` at vertex x when the path arrives from `to`'s side.
-    double reverse_pdf(const CameraVertex& x, Vec3 to, Vec3 from) const;
+    // The density of sampling x.wo at vertex x for a path that arrives from `wi`: the way back
+    // to the camera side. Evaluated only where it has a weight (a BSDF costs a few divisions).
+    double reverse_pdf(const CameraVertex& x, double weight, Vec3 wi) const;
 
     const RenderScene& scene_;
     LightSet lights_;
@@ -386,7 +387,7 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
     if (walk.vertices >= kMaxVertices || !bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight))
         return false;
-    const double reverse = s.delta ? 0 : reverse_pdf(x, s.wi, x.wo);
+    const double reverse = s.delta ? 0 : reverse_pdf(x, walk.weights.vc + walk.weights.vm, s.wi);
     scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse, std::fabs(dot(x.normal, s.wi)),
                     eta_, smooth && x.merging);
     walk.segment_layer = walk.segment_layer != kDirectVisibility ? kSecondary
@@ -404,8 +405,8 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     return true;
 }
 
-double VcmPasses::reverse_pdf(const CameraVertex& x, Vec3 to, Vec3 from) const {
-    return Bsdf(*x.material, x.normal, x.shading_normal, to).pdf(from);
+double VcmPasses::reverse_pdf(const CameraVertex& x, double weight, Vec3 wi) const {
+    return weight > 0 ? Bsdf(*x.material, x.normal, x.shading_normal, wi).pdf(x.wo) : 0;
 }
 
 Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
@@ -426,7 +427,7 @@ Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const Camer
     const double w_light = bsdf_pdf / sample->pdf;
     const double w_camera = emission_pdf * cos_x / direct *
                             ((x.merging ? eta_ : 0) + walk.weights.vcm +
-                             walk.weights.vc * reverse_pdf(x, sample->wi, x.wo));
+                             walk.weights.vc * reverse_pdf(x, walk.weights.vc, sample->wi));
     const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), sample->wi);
     ++rays;
     if (scene_.occluded(origin, sample->wi, 0, d - scene_.epsilon())) return {};
@@ -454,7 +455,7 @@ Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraW
     const double y_reverse = Bsdf(material, y.normal, y.shading_normal, -w).pdf(y.wi);
     const double w_light = camera_to_y * (eta_ + y.weights.vcm + y.weights.vc * y_reverse);
     const double w_camera = light_to_x * ((x.merging ? eta_ : 0) + walk.weights.vcm +
-                                          walk.weights.vc * reverse_pdf(x, w, x.wo));
+                                          walk.weights.vc * reverse_pdf(x, walk.weights.vc, w));
     const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), w);
     const Vec3 target = scene_.offset(y.position, y.facing, -w);
     const Vec3 between = target - origin;
@@ -475,7 +476,7 @@ void VcmPasses::merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk&
         if (is_black(f)) return;
         const double w_light = y.weights.vcm / eta_ + y.weights.vm * bsdf.pdf(y.wi);
         const double w_camera =
-            walk.weights.vcm / eta_ + walk.weights.vm * reverse_pdf(x, y.wi, x.wo);
+            walk.weights.vcm / eta_ + walk.weights.vm * reverse_pdf(x, walk.weights.vm, y.wi);
         // The vertex's weight holds the projected area on its own surface: its cosine out.
         const Rgb light =
             (merge_normalisation_ / ((1 + w_light + w_camera) * cos_i)) * (f * y.beta);
