@@ -370,7 +370,7 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
         // Light straight from a light is primary at the path's first smooth vertex.
         const bool first = walk.segment_layer == kDirectVisibility;
         Rgb primary = light_sample(x, bsdf, walk, rng, rays), secondary;
-        if (!path_first_.empty() && path_first_.size() > 1) {
+        if (path_first_.size() > 1) {
             const uint32_t path = rng.below(uint32_t(path_first_.size() - 1));
             for (uint32_t k = path_first_[path]; k < path_first_[path + 1]; ++k)
                 secondary += connection(x, bsdf, walk, vertices_[k], rays);
