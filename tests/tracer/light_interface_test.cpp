@@ -238,7 +238,9 @@ TEST(LightInterface, VcmAgreesWithThePathTracerLayerByLayerOnAnImage) {
                     light_layers()[l].c_str(), path[l].mean, path[l].standard_error, vcm[l].mean,
                     vcm[l].standard_error);
         EXPECT_NEAR(vcm[l].mean, path[l].mean, 4 * se) << light_layers()[l];
-        if (l > 0) EXPECT_LT(se, 0.01 * path[l].mean) << light_layers()[l];  // 4 se: 4% at most
+        if (l > 0) {
+            EXPECT_LT(se, 0.01 * path[l].mean) << light_layers()[l];  // 4 se: 4% at most
+        }
     }
 }
 
