@@ -20,6 +20,10 @@ struct Box {
         upper = {std::max(upper.x, p.x), std::max(upper.y, p.y), std::max(upper.z, p.z)};
     }
     bool empty() const { return lower.x > upper.x; }
+    bool contains(Vec3 p) const {
+        return p.x >= lower.x && p.x <= upper.x && p.y >= lower.y && p.y <= upper.y &&
+               p.z >= lower.z && p.z <= upper.z;
+    }
     Vec3 extent() const { return upper - lower; }
     double longest() const {
         const Vec3 e = extent();

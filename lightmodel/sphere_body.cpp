@@ -135,7 +135,7 @@ SphereBody::~SphereBody() {
 }
 
 bool SphereBody::inside(Vec3 p) const {
-    if (spheres_.empty()) return false;
+    if (!bounds_.contains(p)) return false;  // also when there are no spheres
     InsideContext c;
     rtcInitIntersectContext(&c.context);
     c.context.filter = record_inside;
