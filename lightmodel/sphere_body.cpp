@@ -115,12 +115,12 @@ SphereBody::SphereBody(std::vector<Sphere> spheres, RTCDevice device)
     rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
     if (!spheres_.empty()) {
+        // Embree reads the balls from spheres_ itself: the ball a hit names is then in cache
+        // when intersect() recomputes it in double.
         RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-        auto* vertices = static_cast<Sphere*>(
-            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
-                                    sizeof(Sphere), spheres_.size()));
-        throw_on_error(device_, "allocating the sphere buffer");
-        std::copy(spheres_.begin(), spheres_.end(), vertices);
+        rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                   spheres_.data(), 0, sizeof(Sphere), spheres_.size());
+        throw_on_error(device_, "sharing the sphere buffer");
         rtcCommitGeometry(geometry);
         rtcAttachGeometry(scene_, geometry);
         rtcReleaseGeometry(geometry);
