@@ -47,6 +47,12 @@ EmissionVolume::EmissionVolume(const LightModel& model) : model_(model) {
         total_flux_ += fluxes[c];
     }
     if (total_flux_ > 0) cells_ = AliasTable(fluxes);
+    line_terms_.resize(model.flux_cells.size());
+    for (uint32_t c = 0; c < model.flux_cells.size(); ++c) {
+        const FluxCell& cell = model.flux_cells[c];
+        line_terms_[c] = {cell.flux, 1 / (cell_volume(c) * cell.visible_fraction),
+                          cell.flux / total_flux_ / cell_volume(c), cell.intensity_cell};
+    }
     cell_colour_ = cell_colours(model);
     cell_spectrum_ = cell_spectra(model);
 }
@@ -95,14 +101,15 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
     // Neighbouring voxels mostly share an intensity cell: its diagram is evaluated once for them.
     int32_t diagram = -1;
     double d = 0;
+    const bool plain_flux = select.quantity == SpectralSelect::flux && select.band < 0;
     traverse(origin, dir, tmin, tmax, [&](uint32_t c, double t0, double t1) {
-        const FluxCell& cell = model_.flux_cells[c];
-        if (cell.intensity_cell != diagram) {
-            diagram = cell.intensity_cell;
+        const LineTerms& cell = line_terms_[c];
+        if (cell.diagram != diagram) {
+            diagram = cell.diagram;
             d = model_.diagrams[size_t(diagram)].pdf(emitted);
         }
-        const double per_flux = d / (cell_volume(c) * cell.visible_fraction) * (t1 - t0);
-        sum += cell_flux(c, select) * per_flux;
+        const double per_flux = d * cell.emission * (t1 - t0);
+        sum += (plain_flux ? cell.flux : cell_flux(c, select)) * per_flux;
         if (colour) colour_sum += (cell.flux * per_flux) * cell_colour_[c];
         if (spectral) {
             const double weight = cell.flux * per_flux * luminance(cell_colour_[c]);
@@ -117,11 +124,11 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
 }
 
 double EmissionVolume::point_density(uint32_t cell) const {
-    return model_.flux_cells[cell].flux / total_flux_ / cell_volume(cell);
+    return line_terms_[cell].point_density;
 }
 
 double EmissionVolume::direction_density(uint32_t cell, double t0, double t1) const {
-    return point_density(cell) * (t1 * t1 * t1 - t0 * t0 * t0) / 3;
+    return line_terms_[cell].point_density * (t1 * t1 * t1 - t0 * t0 * t0) * (1.0 / 3);
 }
 
 double EmissionVolume::pdf_direction(Vec3 origin, Vec3 dir) const {
@@ -136,7 +143,7 @@ double EmissionVolume::line_density(Vec3 origin, Vec3 dir) const {
     double sum = 0, d = 0;
     int32_t diagram = -1;
     traverse(origin, dir, -inf, inf, [&](uint32_t c, double t0, double t1) {
-        const int32_t k = model_.flux_cells[c].intensity_cell;
+        const int32_t k = line_terms_[c].diagram;
         if (k != diagram) diagram = k, d = model_.diagrams[size_t(k)].pdf(-dir);
         sum += point_density(c) * d * (t1 - t0);
     });

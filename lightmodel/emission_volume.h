@@ -86,12 +86,21 @@ public:
     void traverse(Vec3 origin, Vec3 dir, double tmin, double tmax, F&& f) const;
 
 private:
+    // What a line integral reads of a flux cell, together for the cache and free of divisions.
+    struct LineTerms {
+        double flux = 0;           // Phi_c
+        double emission = 0;       // 1 / (V_c g_c): eps per unit flux and diagram density
+        double point_density = 0;  // P_c / V_c
+        int32_t diagram = -1;      // intensity cell k
+    };
+
     // Solid-angle density, seen from a line's origin, that the voxels of `cell` between t0 and
     // t1 along it give its direction under sample_point(): the integral of point_density t^2.
     double direction_density(uint32_t cell, double t0, double t1) const;
 
     const LightModel& model_;
     std::vector<int32_t> voxel_cell_;  // dense density lattice -> flux cell, -1 empty
+    std::vector<LineTerms> line_terms_;  // per flux cell
     AliasTable cells_;                 // flux cells, drawn by flux
     double total_flux_ = 0;
     std::vector<Rgb> cell_colour_;
