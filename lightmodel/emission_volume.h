@@ -99,9 +99,9 @@ private:
     double direction_density(uint32_t cell, double t0, double t1) const;
 
     const LightModel& model_;
-    std::vector<int32_t> voxel_cell_;  // dense density lattice -> flux cell, -1 empty
+    std::vector<int32_t> voxel_cell_;    // dense density lattice -> flux cell, -1 empty
     std::vector<LineTerms> line_terms_;  // per flux cell
-    AliasTable cells_;                 // flux cells, drawn by flux
+    AliasTable cells_;                   // flux cells, drawn by flux
     double total_flux_ = 0;
     std::vector<Rgb> cell_colour_;
     std::vector<BinnedSpectrum> cell_spectrum_;

@@ -150,11 +150,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
         origin = next_origin;
         direction = s.wi;
         kind = RayKind::indirect;
-        if (depth + 1 >= kRouletteDepth) {
-            const double survive = std::min(0.95, max_component(beta));
-            if (rng.uniform_float() >= survive) break;
-            beta = (1 / survive) * beta;
-        }
+        if (depth + 1 >= kRouletteDepth && !survives_roulette(beta, rng)) break;
     }
     return {to_rgb(direct_visibility, wavelengths), to_rgb(primary, wavelengths)};
 }

@@ -9,6 +9,7 @@
 // pass's visible points). The driver adds the pass to the films only once it is complete.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -56,6 +57,28 @@ struct SamplePoints {
 enum LightComponent { kDirectVisibility, kPrimary, kSecondary, kUnlayered, kLightComponents };
 // The names of the layers, in that order.
 const std::vector<std::string>& light_layers();
+
+// The layers read along a camera path. `segment` is the component of a light's body met on the
+// path's current segment: kDirectVisibility from the camera on, until the first smooth
+// scattering.
+// The component of light sampled (or connected, or merged) at the segment's end vertex.
+inline LightComponent layer_of_light_at_vertex(LightComponent segment) {
+    return segment == kDirectVisibility ? kPrimary : kSecondary;
+}
+// The component of the next segment after the path scattered, specularly (delta) or not.
+inline LightComponent layer_after_scattering(LightComponent segment, bool delta) {
+    return segment != kDirectVisibility ? kSecondary : delta ? kDirectVisibility : kPrimary;
+}
+
+// Russian roulette on a camera path's throughput `beta` (Rgb or SampledSpectrum): the path goes
+// on with probability min(0.95, the largest component), `beta` then divided by it.
+template <class Q>
+bool survives_roulette(Q& beta, Pcg32& rng) {
+    const double survive = std::min(0.95, max_component(beta));
+    if (rng.uniform_float() >= survive) return false;
+    beta = (1 / survive) * beta;
+    return true;
+}
 
 // A quantity Q (Rgb, or SampledSpectrum at a path's wavelengths) split by LightComponent.
 template <class Q>

@@ -99,7 +99,7 @@ template <class Q>
                 medium = interiors.segment_medium(s.medium, s.direction, found, hit);
                 if (medium >= 0 &&
                     cross_medium(s, medium, found ? hit.t : kInfinity, rng, rays, sum)) {
-                    if (s.depth + 1 >= kMaxDepth || !survives_roulette(s, rng)) break;
+                    if (s.depth + 1 >= kMaxDepth || !goes_on(s, rng)) break;
                     continue;
                 }
             }
@@ -144,7 +144,7 @@ template <class Q>
                      u2 = rng.uniform_float();
         const bool sampled = bsdf.sample(u_lobe, u1, u2, sample);
         if (light_sampled) {
-            Q& sampled_light = sum.of[sampled_at_vertex(s)];
+            Q& sampled_light = sum.of[layer_of_light_at_vertex(s.segment_layer)];
             if constexpr (std::is_same_v<Q, Rgb>) {
                 if (interiors.any()) {
                     const int shadow_medium =
@@ -162,25 +162,16 @@ template <class Q>
             }
         }
         if (s.depth + 1 >= kMaxDepth || !sampled || is_black(sample.weight)) break;
-        scattered(s, sample.delta);
+        s.segment_layer = layer_after_scattering(s.segment_layer, sample.delta);
         if (interiors.any()) s.medium = interiors.medium_after(medium, s.direction, hit, sample.wi);
         s.beta *= sample.weight;
         s.bsdf_pdf = sample.delta ? -1 : sample.pdf;
         s.origin = scene_.offset(hit.point, hit.normal, sample.wi);
         s.direction = sample.wi;
         s.kind = RayKind::indirect;
-        if (!survives_roulette(s, rng)) break;
+        if (!goes_on(s, rng)) break;
     }
     return sum;
-}
-
-template <class Q>
-bool PathIntegratorOf<Q>::survives_roulette(PathState& s, Pcg32& rng) {
-    if (s.depth + 1 < kRouletteDepth) return true;
-    const double survive = std::min(0.95, max_component(s.beta));
-    if (rng.uniform_float() >= survive) return false;
-    s.beta = (1 / survive) * s.beta;
-    return true;
 }
 
 template <class Q>
@@ -193,9 +184,9 @@ bool PathIntegratorOf<Q>::cross_medium(PathState& s, int medium, double length, 
         s.beta *= flight.weight;
         if (!flight.scattered) return false;
         const Vec3 point = s.origin + flight.t * s.direction;
-        sum.of[sampled_at_vertex(s)] +=
+        sum.of[layer_of_light_at_vertex(s.segment_layer)] +=
             s.beta * medium_direct_light(scene_, lights_, medium, point, s.direction, rng, rays);
-        scattered(s, false);
+        s.segment_layer = layer_after_scattering(s.segment_layer, false);
         const double u_choice = rng.uniform_float(), u1 = rng.uniform_float(),
                      u2 = rng.uniform_float();
         const Vec3 wi = m.sample_phase(s.direction, u_choice, u1, u2);

@@ -73,19 +73,10 @@ private:
     // phase function and returns true.
     bool cross_medium(PathState& state, int medium, double length, Pcg32& rng, uint64_t& rays,
                       LightComponentsOf<Rgb>& sum) const;
-    // The component of a light sample at the path's vertex.
-    static LightComponent sampled_at_vertex(const PathState& s) {
-        return s.segment_layer == kDirectVisibility ? kPrimary : kSecondary;
+    // Russian roulette from kRouletteDepth on: whether the path goes on.
+    static bool goes_on(PathState& s, Pcg32& rng) {
+        return s.depth + 1 < kRouletteDepth || survives_roulette(s.beta, rng);
     }
-    // The path scattered at its vertex: specularly (delta) or not.
-    static void scattered(PathState& s, bool delta) {
-        s.segment_layer = s.segment_layer != kDirectVisibility ? kSecondary
-                          : delta                              ? kDirectVisibility
-                                                               : kPrimary;
-    }
-    // Russian roulette from kRouletteDepth on: whether the path goes on (its throughput then
-    // rescaled).
-    static bool survives_roulette(PathState& state, Pcg32& rng);
     const RenderScene& scene_;
     const LightSet& lights_;
     lightmodel::BinnedSpectrum wavelength_density_;  // spectral only

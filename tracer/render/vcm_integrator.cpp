@@ -367,21 +367,20 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
                         uint64_t& rays, LightComponentsOf<Rgb>& sum) const {
     const bool smooth = bsdf.has_smooth_lobes();
     if (smooth && !lights_.empty()) {
-        // Light straight from a light is primary at the path's first smooth vertex.
-        const bool first = walk.segment_layer == kDirectVisibility;
-        Rgb primary = light_sample(x, bsdf, walk, rng, rays), secondary;
+        // Light straight from a light (sampled, or merged from a light subpath's first vertex),
+        // and light that scattered on the light subpath (connected or merged).
+        Rgb straight = light_sample(x, bsdf, walk, rng, rays), scattered;
         if (path_first_.size() > 1) {
             const uint32_t path = rng.below(uint32_t(path_first_.size() - 1));
             for (uint32_t k = path_first_[path]; k < path_first_[path + 1]; ++k)
-                secondary += connection(x, bsdf, walk, vertices_[k], rays);
+                scattered += connection(x, bsdf, walk, vertices_[k], rays);
         }
         Rgb merged_first, merged_later;
         if (x.merging) merge(x, bsdf, walk, merged_first, merged_later);
-        primary += merged_first;
-        secondary += merged_later;
-        if (!first) secondary += primary, primary = {};
-        sum.of[kPrimary] += walk.beta * primary;
-        sum.of[kSecondary] += walk.beta * secondary;
+        straight += merged_first;
+        scattered += merged_later;
+        sum.of[layer_of_light_at_vertex(walk.segment_layer)] += walk.beta * straight;
+        sum.of[kSecondary] += walk.beta * scattered;
     }
     BsdfSample s;
     const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
@@ -390,19 +389,12 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     const double reverse = s.delta ? 0 : reverse_pdf(x, walk.weights.vc + walk.weights.vm, s.wi);
     scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse, std::fabs(dot(x.normal, s.wi)),
                     eta_, smooth && x.merging);
-    walk.segment_layer = walk.segment_layer != kDirectVisibility ? kSecondary
-                         : s.delta                               ? kDirectVisibility
-                                                                 : kPrimary;
+    walk.segment_layer = layer_after_scattering(walk.segment_layer, s.delta);
     walk.beta *= s.weight;
     walk.origin = scene_.offset(x.point, x.normal, s.wi);
     walk.direction = s.wi;
     walk.kind = RayKind::indirect;
-    if (walk.vertices + 1 >= kCameraRouletteDepth) {
-        const double survive = std::min(0.95, max_component(walk.beta));
-        if (rng.uniform_float() >= survive) return false;
-        walk.beta = (1 / survive) * walk.beta;
-    }
-    return true;
+    return walk.vertices + 1 < kCameraRouletteDepth || survives_roulette(walk.beta, rng);
 }
 
 double VcmPasses::reverse_pdf(const CameraVertex& x, double weight, Vec3 wi) const {
