@@ -107,11 +107,17 @@ void expect_layer_balance(const RenderResult& r, double power, double albedo,
         "%s: primary %.5g W/m^2 (truth %.5g, se %.2g), secondary %.5g (truth %.5g, se %.2g)\n",
         what.c_str(), primary.mean, primary_truth, primary.standard_error, secondary.mean,
         secondary_truth, secondary.standard_error);
-    // The bounds below are then 4 standard errors or more.
+    // Noise small enough for the comparison to mean something.
     EXPECT_LT(primary.standard_error, 0.0025 * primary_truth) << what;
     EXPECT_LT(secondary.standard_error, 0.005 * secondary_truth) << what;
-    EXPECT_NEAR(primary.mean, primary_truth, 0.01 * primary_truth) << what;
-    EXPECT_NEAR(secondary.mean, secondary_truth, 0.02 * secondary_truth) << what;
+    // Each mean within 4 of its standard errors (a normal mean misses by more 6e-5 of the time)
+    // plus 0.2% for the walls' midpoint rule: the receivers read the exact light of a point
+    // light 0.06% high, of a cosine spotlight 0.13%.
+    auto bound = [](const test::WallAverage& a, double truth) {
+        return 4 * a.standard_error + 0.002 * truth;
+    };
+    EXPECT_NEAR(primary.mean, primary_truth, bound(primary, primary_truth)) << what;
+    EXPECT_NEAR(secondary.mean, secondary_truth, bound(secondary, secondary_truth)) << what;
 }
 
 TEST(LightInterface, PathTracerSplitsARayFileSourcesLightAsTheBidirectionalDoes) {
@@ -232,15 +238,17 @@ TEST(LightInterface, VcmAgreesWithThePathTracerLayerByLayerOnAnImage) {
         const RenderResult r = render_text(test::closed_box_scene(box), settings);
         for (size_t l = 0; l < 3; ++l) (integrator == "path" ? path : vcm)[l] = image_layer(r, l);
     }
-    for (size_t l = 0; l < 3; ++l) {
+    // Direct visibility is left out: the few pixels that see the source's body, 1e4 times as
+    // bright as the walls, make its image mean a matter of sub-pixel coverage (a standard error
+    // as large as the mean at this size); both integrators see the body through the same camera
+    // rays.
+    for (size_t l = 1; l < 3; ++l) {
         const double se = std::hypot(path[l].standard_error, vcm[l].standard_error);
         std::printf("%s: path %.6g (se %.2g), vcm %.6g (se %.2g) W/(m^2 sr)\n",
                     light_layers()[l].c_str(), path[l].mean, path[l].standard_error, vcm[l].mean,
                     vcm[l].standard_error);
         EXPECT_NEAR(vcm[l].mean, path[l].mean, 4 * se) << light_layers()[l];
-        if (l > 0) {
-            EXPECT_LT(se, 0.01 * path[l].mean) << light_layers()[l];  // 4 se: 4% at most
-        }
+        EXPECT_LT(se, 0.005 * path[l].mean) << light_layers()[l];  // 4 se: 2% at most
     }
 }
 
