@@ -39,9 +39,7 @@ std::vector<Vec3> gather_points(const std::vector<std::vector<Point>>& points,
     std::vector<Vec3> out;
     for (const auto& tile : points)
         for (const Point& vp : tile) out.push_back(vp.point);
-    for (const ReceiverMap& map : receivers)
-        for (int j = 0; j < map.receiver.ny; ++j)
-            for (int i = 0; i < map.receiver.nx; ++i) out.push_back(map.cell_centre(i, j));
+    append_receiver_cells(receivers, out);
     return out;
 }
 

@@ -31,4 +31,10 @@ double default_radius(std::vector<Vec3> points) {
     return diagonal > 0 ? diagonal / 100 : 1;
 }
 
+void append_receiver_cells(const std::vector<ReceiverMap>& receivers, std::vector<Vec3>& points) {
+    for (const ReceiverMap& map : receivers)
+        for (int j = 0; j < map.receiver.ny; ++j)
+            for (int i = 0; i < map.receiver.nx; ++i) points.push_back(map.cell_centre(i, j));
+}
+
 }  // namespace rayset::tracer

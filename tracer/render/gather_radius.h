@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/geometry.h"
+#include "tracer/film/film.h"
 
 namespace rayset::tracer {
 
@@ -26,5 +27,8 @@ double shrunk_radius(double radius, int passes_done);
 // middle 90% of `points` along each axis (where gathers happen), so that a floor plane seen to
 // its horizon does not make every gather as wide as the floor; 1 without points.
 double default_radius(std::vector<Vec3> points);
+
+// The centres of the receivers' cells, which gather as pixels do: appended to `points`.
+void append_receiver_cells(const std::vector<ReceiverMap>& receivers, std::vector<Vec3>& points);
 
 }  // namespace rayset::tracer

@@ -148,6 +148,23 @@ private:
     size_t vertex_bytes_ = 0;
 };
 
+// Where camera paths first meet the scene, as the radius rule wants the points where merges
+// happen: the hits of the pixel centres of an image of at most 256 x 256 over the same view,
+// and the receivers' cells. The same in every process; their rays are not counted.
+std::vector<Vec3> camera_hits(const RenderScene& scene, const SamplePoints& points) {
+    std::vector<Vec3> out;
+    if (points.pixels() > 0) {
+        const int longest = std::max(points.width, points.height);
+        const double scale = std::min(1.0, 256.0 / longest);
+        const int w = std::max(1, int(points.width * scale)),
+                  h = std::max(1, int(points.height * scale));
+        for (const SurfaceHit& hit : centre_hits(scene, w, h))
+            if (hit.object >= 0) out.push_back(hit.point);
+    }
+    append_receiver_cells(*points.receivers, out);
+    return out;
+}
+
 VcmPasses::VcmPasses(const RenderScene& scene, const RenderSettings& settings,
                      const RenderResult& start)
     : scene_(scene), lights_(scene.description(), scene.units(), false), seed_(settings.seed) {
@@ -168,16 +185,9 @@ double VcmPasses::radius(int pass) const {
     return r;
 }
 
-void VcmPasses::begin_pass(int pass, const SamplePoints&, std::atomic<uint64_t>& rays) {
+void VcmPasses::begin_pass(int pass, const SamplePoints& points, std::atomic<uint64_t>& rays) {
     if (!(base_radius_ > 0)) {
-        // Where pass 0's light subpaths end: the same radius in every process. (Their rays are
-        // not the pass's: the count stays that of the passes, one process or many.)
-        eta_ = 1;
-        std::atomic<uint64_t> uncounted{0};
-        trace_light_paths(0, uncounted);
-        std::vector<Vec3> points;
-        for (const LightVertex& v : vertices_) points.push_back(v.position);
-        base_radius_ = default_radius(std::move(points));
+        base_radius_ = default_radius(camera_hits(scene_, points));
         base_pass_ = 0;
     }
     const double r = radius(pass);
