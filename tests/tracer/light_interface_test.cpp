@@ -203,6 +203,37 @@ TEST(LightInterface, VcmBalancesARayFileSourceAndPovRayLights) {
         expect_vcm_balance(light.text, {}, light.power, light.what);
 }
 
+TEST(LightInterface, VcmGathersWithinARadiusOfTheViewNotOfWhereLightLands) {
+    // A point light 10 mm over an open floor lights it out to the horizon; the camera sees a
+    // patch 40 mm wide. The first radius is a hundredth of the diagonal of where merges happen,
+    // the view, as the bidirectional integrator's: not of where light subpaths end (a point
+    // light's flux on a plane falls off only as 1/d^3: their middle 90% spans about 12 times its
+    // height, three times the view).
+    const std::string scene_text = R"(
+        global_settings { integrator "INTEGRATOR" }
+        camera { location <0, 60, 0> look_at <0, 0, 0> angle 37 }
+        plane { y, 0 pigment { rgb 0.8 } finish { diffuse 1 ambient 0 } }
+        light_source { <0, 10, 0> color rgb 1 }
+    )";
+    double radius[2];
+    int k = 0;
+    for (const std::string integrator : {"bidirectional", "vcm"}) {
+        std::string text = scene_text;
+        text.replace(text.find("INTEGRATOR"), 10, integrator);
+        RenderSettings settings;
+        settings.width = 32, settings.height = 32, settings.passes = 1, settings.seed = 3;
+        settings.photons_per_pass = 4096;
+        radius[k++] = render_text(text, settings).photon_radius;
+    }
+    std::printf("first radius: bidirectional %.4g mm, vcm %.4g mm\n", radius[0], radius[1]);
+    // The view at the floor: 2 x 60 tan(18.5 deg) = 40.2 mm wide, 3/4 of that high (POV-Ray's
+    // default right and up); the middle 90% of it has a diagonal of 0.9 x 1.25 x 40.2 mm. Pixel
+    // centres and jittered visible points differ by a pixel's share of it.
+    const double view = 2 * 60 * std::tan(37.0 / 2 * kPi / 180);
+    EXPECT_NEAR(radius[1], 0.9 * 1.25 * view / 100, 0.05 * radius[1]);
+    EXPECT_NEAR(radius[1], radius[0], 0.05 * radius[0]);
+}
+
 // The mean over an image of each layer's luminance weight (W/m^2 sr for grey light) and its
 // standard error, from the pixels' own.
 struct ImageLayer {
