@@ -55,12 +55,8 @@ std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double
     s.wi = (1 / distance) * to_point;
     // Light counts only where a camera would see the body: the same condition BSDF sampling
     // has (its ray must hit the body), so both estimate the same integrand.
-    // The point is mostly inside the body, so its entry mostly comes before the point: asked
-    // first, the shorter ray is the cheaper query.
     BodyHit hit;
-    if (!body_.intersect(ref, s.wi, distance, hit) &&
-        !body_.intersect(ref, s.wi, kInfinity, hit))
-        return std::nullopt;
+    if (!body_.intersect(ref, s.wi, kInfinity, hit)) return std::nullopt;
     s.distance = hit.t;
     s.Li =
         volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour, spectral, &s.pdf);
