@@ -58,8 +58,7 @@ std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double
     BodyHit hit;
     if (!body_.intersect(ref, s.wi, kInfinity, hit)) return std::nullopt;
     s.distance = hit.t;
-    s.Li =
-        volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour, spectral, &s.pdf);
+    s.Li = volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour, spectral, &s.pdf);
     if (!(s.pdf > 0)) return std::nullopt;
     return s;
 }
@@ -98,7 +97,7 @@ void ComplexSource::pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position,
 
 double ComplexSource::intensity(Vec3 w, const SpectralSelect& select) const {
     double sum = 0;
-    if (select.quantity == SpectralSelect::flux && select.band < 0) {
+    if (select.whole_flux()) {
         for (size_t k = 0; k < diagram_flux_.size(); ++k)
             sum += diagram_flux_[k] * model_->diagrams[k].pdf(w);
         return sum;

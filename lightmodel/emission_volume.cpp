@@ -75,11 +75,10 @@ Rgb EmissionVolume::total_colour() const {
 }
 
 double EmissionVolume::cell_flux(uint32_t cell, const SpectralSelect& select) const {
+    if (select.whole_flux()) return line_terms_[cell].flux;
     const FluxCell& c = model_.flux_cells[cell];
     if (select.quantity == SpectralSelect::luminous) return c.luminous;
-    if (select.band >= 0)
-        return c.flux * model_.spectra[size_t(cell) * model_.bins.count + select.band];
-    return c.flux;
+    return c.flux * model_.spectra[size_t(cell) * model_.bins.count + select.band];
 }
 
 double EmissionVolume::total(const SpectralSelect& select) const {
@@ -101,7 +100,6 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
     // Neighbouring voxels mostly share an intensity cell: its diagram is evaluated once for them.
     int32_t diagram = -1;
     double d = 0;
-    const bool plain_flux = select.quantity == SpectralSelect::flux && select.band < 0;
     traverse(origin, dir, tmin, tmax, [&](uint32_t c, double t0, double t1) {
         const LineTerms& cell = line_terms_[c];
         if (cell.diagram != diagram) {
@@ -109,7 +107,7 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
             d = model_.diagrams[size_t(diagram)].pdf(emitted);
         }
         const double per_flux = d * cell.emission * (t1 - t0);
-        sum += (plain_flux ? cell.flux : cell_flux(c, select)) * per_flux;
+        sum += cell_flux(c, select) * per_flux;
         if (colour) colour_sum += (cell.flux * per_flux) * cell_colour_[c];
         if (spectral) {
             const double weight = cell.flux * per_flux * luminance(cell_colour_[c]);

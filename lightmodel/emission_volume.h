@@ -26,6 +26,8 @@ namespace rayset::lightmodel {
 struct SpectralSelect {
     enum Quantity { flux, luminous } quantity = flux;  // flux_unit, or lm (luminous flux)
     int band = -1;                                     // >= 0: only that spectral bin of flux
+
+    bool whole_flux() const { return quantity == flux && band < 0; }
 };
 
 struct VolumeSample {

@@ -118,7 +118,7 @@ namespace rayset {
 //   model()                      the LightModel
 //   Its const functions may be called from any number of threads at once.
 //
-// struct SpectralSelect { Quantity quantity = flux; int band = -1; }
+// struct SpectralSelect { Quantity quantity = flux; int band = -1; bool whole_flux() const; }
 // struct SpectralQuery { double nm[4]; double value[4]; }
 // class BinnedSpectrum
 //   A spectrum over 360-830 nm in 10 nm bins: operator()(nm), sample(u) (a wavelength with
