@@ -108,7 +108,7 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
     Q beta = constant_value<Q>(1);
     RayKind kind = RayKind::camera;
     int medium = -1;  // the object whose interior the path is in, if known (interior_media.h)
-    for (int depth = 0; depth < kMaxDepth; ++depth) {
+    for (int depth = 0; depth < kMaxPathVertices; ++depth) {
         SurfaceHit hit;
         ++rays;
         const bool found = scene_.intersect(origin, direction, 0, kInfinity, kind, hit);
@@ -189,7 +189,7 @@ BidirectionalIntegratorOf<Q>::trace_photons(uint64_t first, uint64_t count, uint
         Vec3 origin = emission.origin, direction = emission.direction;
         bool scattered = false;
         int medium = -1;
-        for (int depth = 0; depth < kMaxDepth; ++depth) {
+        for (int depth = 0; depth < kMaxPathVertices; ++depth) {
             SurfaceHit hit;
             ++rays;
             const bool found =

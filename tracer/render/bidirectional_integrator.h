@@ -83,7 +83,6 @@ public:
     void gather_irradiance(Vec3 point, Vec3 normal, const Grid& grid, Rgb& direct,
                            Rgb& scattered) const;
 
-    static constexpr int kMaxDepth = 256;
     static constexpr int kRouletteDepth = 3;
 
 private:

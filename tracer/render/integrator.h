@@ -70,6 +70,10 @@ inline LightComponent layer_after_scattering(LightComponent segment, bool delta)
     return segment != kDirectVisibility ? kSecondary : delta ? kDirectVisibility : kPrimary;
 }
 
+// The most vertices a path may have in any integrator: a cap far beyond what Russian roulette
+// lets live.
+constexpr int kMaxPathVertices = 256;
+
 // Russian roulette on a camera path's throughput `beta` (Rgb or SampledSpectrum): the path goes
 // on with probability min(0.95, the largest component), `beta` then divided by it.
 template <class Q>

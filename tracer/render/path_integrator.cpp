@@ -99,7 +99,7 @@ template <class Q>
                 medium = interiors.segment_medium(s.medium, s.direction, found, hit);
                 if (medium >= 0 &&
                     cross_medium(s, medium, found ? hit.t : kInfinity, rng, rays, sum)) {
-                    if (s.depth + 1 >= kMaxDepth || !goes_on(s, rng)) break;
+                    if (s.depth + 1 >= kMaxPathVertices || !goes_on(s, rng)) break;
                     continue;
                 }
             }
@@ -161,7 +161,7 @@ template <class Q>
                 sampled_light += s.beta * unless_occluded(scene_, shadow, rays);
             }
         }
-        if (s.depth + 1 >= kMaxDepth || !sampled || is_black(sample.weight)) break;
+        if (s.depth + 1 >= kMaxPathVertices || !sampled || is_black(sample.weight)) break;
         s.segment_layer = layer_after_scattering(s.segment_layer, sample.delta);
         if (interiors.any()) s.medium = interiors.medium_after(medium, s.direction, hit, sample.wi);
         s.beta *= sample.weight;

@@ -45,7 +45,6 @@ public:
     // the first smooth scattering.
     LightComponentsOf<Rgb> irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
 
-    static constexpr int kMaxDepth = 256;  // a cap far beyond what Russian roulette lets live
     // Bounces before Russian roulette starts. Earlier is cheaper per path but noisier: in a
     // closed room of albedo 0.6 (tests/bench/grey_box.sh), starting at 3 kills two paths in
     // three at their third vertex and needs 1.5 times the time of starting at 5 for the same

@@ -30,7 +30,6 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr uint64_t kMinimumLightPaths = 65536;
 constexpr uint64_t kLightBlock = 1024;
 constexpr uint64_t kLightSeedSalt = 0xBB67AE8584CAA73BULL;  // light streams apart from camera's
-constexpr int kMaxVertices = 256;  // a cap far beyond what Russian roulette lets live
 constexpr int kCameraRouletteDepth = 5;
 
 // The partial weights of a subpath vertex.
@@ -139,7 +138,7 @@ private:
     uint64_t light_paths_;
     int samples_;
     int base_pass_;
-    double base_radius_;  // 0 until pass 0's light vertices give it
+    double base_radius_;  // 0 until the first pass measures it over the view
     // The pass under way.
     double eta_ = 1, merge_normalisation_ = 0;
     std::vector<LightVertex> vertices_;
@@ -285,7 +284,8 @@ void VcmPasses::trace_light_path(uint64_t index, uint64_t seed, std::vector<Ligh
         BsdfSample s;
         const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
                      u2 = rng.uniform_float();
-        if (walk.vertices >= kMaxVertices || !bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight))
+        if (walk.vertices >= kMaxPathVertices || !bsdf.sample(u_lobe, u1, u2, s) ||
+            is_black(s.weight))
             return;
         const double reverse =
             s.delta ? 0 : Bsdf(material, hit.normal, hit.shading_normal, s.wi).pdf(wi);
@@ -394,7 +394,7 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     }
     BsdfSample s;
     const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
-    if (walk.vertices >= kMaxVertices || !bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight))
+    if (walk.vertices >= kMaxPathVertices || !bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight))
         return false;
     const double reverse = s.delta ? 0 : reverse_pdf(x, walk.weights.vc + walk.weights.vm, s.wi);
     scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse, std::fabs(dot(x.normal, s.wi)),
