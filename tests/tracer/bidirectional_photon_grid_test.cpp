@@ -1,7 +1,8 @@
 // The photon grid's gathers against brute force: every photon within the radius is visited
 // exactly once, at random points and at the symmetric ones (coordinates 0 and whole cells)
 // where neighbouring cells of the spatial hash are most likely to share a slot, and with so few
-// photons that the rows' runs of slots overlap and wrap past the table's end in most gathers.
+// photons that the rows' runs of slots overlap and wrap past the table's end in most gathers;
+// and each photon found again by the order it was given in.
 #include <gtest/gtest.h>
 
 #include "core/random.h"
@@ -22,6 +23,8 @@ void expect_each_photon_within_the_radius_visited_once(int count) {
     // Few photons crowd into a few cells around the middle, so that gathers find some.
     const double radius = count < 100 ? 30 : 3;
     const PhotonGrid grid(photons, radius);
+    for (size_t i = 0; i < photons.size(); ++i)
+        ASSERT_EQ(grid.input(i).power.red, double(i)) << "the photon given " << i << "-th";
     std::vector<Vec3> points{{0, 0, 0},   {0, 50, 0}, {50, 0, 0},
                              {0, -50, 0}, {3, 3, -3}, {-3, 0, 3}};
     for (int i = 0; i < 500; ++i)

@@ -45,8 +45,11 @@ public:
     double radius() const { return radius_; }
     size_t size() const { return photons_.size(); }
     size_t memory_bytes() const {
-        return photons_.size() * (sizeof(Photon) + sizeof(Vec3)) + start_.size() * sizeof(uint32_t);
+        return photons_.size() * (sizeof(Photon) + sizeof(Vec3) + sizeof(uint32_t)) +
+               start_.size() * sizeof(uint32_t);
     }
+    // The photon given i-th to the constructor.
+    const Photon& input(size_t i) const { return photons_[stored_at_[i]]; }
 
     // Calls f(photon) for every photon within the radius of p.
     template <class F>
@@ -88,27 +91,33 @@ private:
     };
     int64_t cell_of(double v) const { return int64_t(std::floor(v / radius_)); }
     // Cell (x, y, z)'s slot: its row's hash plus x, so that x and x + 1 are neighbouring slots.
+    // The table is a power of two, so wrapping is a mask: the hash is Teschner et al. 2003's of
+    // the row, mixed by Fibonacci hashing into the table's bits (distinct cells may share a
+    // slot; the distance test above keeps gathers exact).
     size_t slot(int64_t x, int64_t y, int64_t z) const {
-        // Teschner et al. 2003's spatial hash of the row; distinct cells may share a slot (the
-        // distance test above keeps gathers exact).
         const uint64_t row = uint64_t(y) * 19349663ULL ^ uint64_t(z) * 83492791ULL;
-        const int64_t t = int64_t(table_size_);
-        const int64_t s = (int64_t(row % table_size_) + x % t) % t;
-        return size_t(s < 0 ? s + t : s);
+        return size_t(((row * 0x9E3779B97F4A7C15ULL) >> hash_shift_) + uint64_t(x)) & slot_mask_;
     }
 
     std::vector<Photon> photons_;  // in slot order
     std::vector<Vec3> positions_;  // photons_[k].position
     double radius_;
     size_t table_size_ = 1;
-    std::vector<uint32_t> start_;  // photons of slot h: [start_[h], start_[h + 1])
+    uint64_t slot_mask_ = 0;           // table_size_ - 1
+    int hash_shift_ = 63;              // 64 - log2(table_size_)
+    std::vector<uint32_t> start_;      // photons of slot h: [start_[h], start_[h + 1])
+    std::vector<uint32_t> stored_at_;  // the i-th photon given is photons_[stored_at_[i]]
 };
 
 template <class PhotonType>
 PhotonGridOf<PhotonType>::PhotonGridOf(std::vector<Photon> photons, double radius)
     : photons_(std::move(photons)), radius_(radius) {
-    // At least a row's three slots, so that a run wraps past the table's end at most once.
-    table_size_ = std::max<size_t>(3, 2 * photons_.size());
+    // At least twice the photons, and a row's three slots, so that a run wraps past the table's
+    // end at most once.
+    table_size_ = 4;
+    hash_shift_ = 62;
+    while (table_size_ < 2 * photons_.size()) table_size_ *= 2, --hash_shift_;
+    slot_mask_ = table_size_ - 1;
     start_.assign(table_size_ + 1, 0);
     // Slots and photon indices fit 32 bits: a pass's photons are far fewer than 2^31 (200 GB).
     std::vector<uint32_t> slots(photons_.size());
@@ -122,8 +131,10 @@ PhotonGridOf<PhotonType>::PhotonGridOf(std::vector<Photon> photons, double radiu
     std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
     std::vector<Photon> sorted(photons_.size());
     positions_.resize(photons_.size());
+    stored_at_.resize(photons_.size());
     for (size_t i = 0; i < photons_.size(); ++i) {
         const uint32_t k = fill[slots[i]]++;
+        stored_at_[i] = k;
         sorted[k] = photons_[i];
         positions_[k] = photons_[i].position;
     }
