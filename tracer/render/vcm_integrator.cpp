@@ -105,9 +105,9 @@ private:
     };
 
     double radius(int pass) const;
-    // The light subpaths of `pass`: their vertices, path after path, and where each path's
-    // begin (path_first_).
-    void trace_light_paths(int pass, std::atomic<uint64_t>& rays);
+    // The light subpaths of `pass`: their vertices, path after path (where each path's begin
+    // is kept in path_first_).
+    std::vector<LightVertex> trace_light_paths(int pass, std::atomic<uint64_t>& rays);
     void trace_light_path(uint64_t index, uint64_t seed, std::vector<LightVertex>& out,
                           uint64_t& rays) const;
     // The first segment of a light subpath, from its light to the first surface: the weight
@@ -141,9 +141,8 @@ private:
     double base_radius_;  // 0 until the first pass measures it over the view
     // The pass under way.
     double eta_ = 1, merge_normalisation_ = 0;
-    std::vector<LightVertex> vertices_;
     std::vector<uint32_t> path_first_;
-    std::unique_ptr<PhotonGridOf<LightVertex>> grid_;  // the same vertices, for merging
+    std::unique_ptr<PhotonGridOf<LightVertex>> grid_;  // the vertices, path after path
     size_t vertex_bytes_ = 0;
 };
 
@@ -192,14 +191,12 @@ void VcmPasses::begin_pass(int pass, const SamplePoints& points, std::atomic<uin
     const double r = radius(pass);
     eta_ = kPi * r * r * double(light_paths_);
     merge_normalisation_ = 1 / eta_;
-    trace_light_paths(pass, rays);
-    grid_ = std::make_unique<PhotonGridOf<LightVertex>>(vertices_, r);
-    vertex_bytes_ =
-        std::max(vertex_bytes_, vertices_.size() * sizeof(LightVertex) + grid_->memory_bytes());
+    grid_ = std::make_unique<PhotonGridOf<LightVertex>>(trace_light_paths(pass, rays), r);
+    vertex_bytes_ = std::max(vertex_bytes_, grid_->memory_bytes());
 }
 
 // In fixed blocks, so that the vertices' order does not depend on threads.
-void VcmPasses::trace_light_paths(int pass, std::atomic<uint64_t>& rays) {
+std::vector<LightVertex> VcmPasses::trace_light_paths(int pass, std::atomic<uint64_t>& rays) {
     const uint64_t seed = pass_seed(seed_ ^ kLightSeedSalt, pass);
     const size_t blocks = size_t((light_paths_ + kLightBlock - 1) / kLightBlock);
     std::vector<std::vector<LightVertex>> traced(blocks);
@@ -214,12 +211,13 @@ void VcmPasses::trace_light_paths(int pass, std::atomic<uint64_t>& rays) {
         }
         rays += counted;
     });
-    vertices_.clear();
+    std::vector<LightVertex> vertices;
     path_first_.assign(1, 0);
     for (size_t b = 0; b < blocks; ++b) {
-        vertices_.insert(vertices_.end(), traced[b].begin(), traced[b].end());
+        vertices.insert(vertices.end(), traced[b].begin(), traced[b].end());
         for (uint32_t n : sizes[b]) path_first_.push_back(path_first_.back() + n);
     }
+    return vertices;
 }
 
 bool VcmPasses::emit(Pcg32& rng, Walk& walk, SurfaceHit& hit, uint64_t& rays) const {
@@ -383,7 +381,7 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
         if (path_first_.size() > 1) {
             const uint32_t path = rng.below(uint32_t(path_first_.size() - 1));
             for (uint32_t k = path_first_[path]; k < path_first_[path + 1]; ++k)
-                scattered += connection(x, bsdf, walk, vertices_[k], rays);
+                scattered += connection(x, bsdf, walk, grid_->input(k), rays);
         }
         Rgb merged_first, merged_later;
         if (x.merging) merge(x, bsdf, walk, merged_first, merged_later);
