@@ -35,6 +35,16 @@ double extrapolate(double near, double far, bool has_far) {
     return has_far ? std::max(0.0, 1.5 * near - 0.5 * far) : near;
 }
 
+// u of node row `row` of a diagram of `bands` bands (see row_count()).
+double u_of_row(int row, int bands) {
+    const int half = bands / 2;
+    if (row == 0) return -1;
+    if (row == bands + 3) return 1;
+    if (row == half + 1 || row == half + 2) return 0;
+    const int band = row <= half ? row - 1 : row - 3;
+    return -1 + (band + 0.5) * 2 / bands;
+}
+
 }  // namespace
 
 GoniometricDiagram::GoniometricDiagram(int bands, int sectors) : bands_(bands), sectors_(sectors) {
@@ -43,18 +53,10 @@ GoniometricDiagram::GoniometricDiagram(int bands, int sectors) : bands_(bands), 
     if (sectors < 1 || sectors > kMaxGridSize)
         throw std::invalid_argument("goniometric diagram sectors must be in [1, 4096]");
     histogram_.assign(size_t(cell_count()), 0.0);
+    for (int row = 0; row < row_count(); ++row) row_u_.push_back(u_of_row(row, bands_));
 }
 
 double GoniometricDiagram::cell_solid_angle() const { return 4 * kPi / cell_count(); }
-
-double GoniometricDiagram::row_u(int row) const {
-    const int half = bands_ / 2;
-    if (row == 0) return -1;
-    if (row == row_count() - 1) return 1;
-    if (row == half + 1 || row == half + 2) return 0;
-    const int band = row <= half ? row - 1 : row - 3;
-    return -1 + (band + 0.5) * 2 / bands_;
-}
 
 int GoniometricDiagram::band_of(double u) const {
     // The hemisphere is decided by the sign of u itself, so that no rounding of u + 1 can put
@@ -183,7 +185,9 @@ double GoniometricDiagram::density(double u, double phi) const {
     const double x = phi * sectors_ / (2 * kPi) - 0.5;
     const double column = std::floor(x);
     const double f = std::clamp(x - column, 0.0, 1.0);
-    const int j0 = ((int(column) % sectors_) + sectors_) % sectors_, j1 = (j0 + 1) % sectors_;
+    int j0 = int(column);  // -1 to sectors_ - 1 for phi in [0, 2 pi)
+    if (j0 < 0 || j0 >= sectors_) j0 = (j0 % sectors_ + sectors_) % sectors_;
+    const int j1 = j0 + 1 < sectors_ ? j0 + 1 : 0;
     const double lower = (1 - f) * node(r, j0) + f * node(r, j1);
     const double upper = (1 - f) * node(r + 1, j0) + f * node(r + 1, j1);
     return (1 - t) * lower + t * upper;

@@ -98,7 +98,7 @@ private:
     // from below, horizon seen from above, centres of the northern bands, north pole.
     int row_count() const { return bands_ + 4; }
     int centre_row(int band) const { return band < bands_ / 2 ? band + 1 : band + 3; }
-    double row_u(int row) const;
+    double row_u(int row) const { return row_u_[size_t(row)]; }
     int band_of(double u) const;
     int sector_of(double phi) const;
     double node(int row, int column) const { return nodes_[size_t(row) * sectors_ + column]; }
@@ -117,6 +117,7 @@ private:
     bool finalized_ = false;
     std::vector<double> nodes_;  // row_count() x sectors, node (row, column) at the sector's centre
     AliasTable patches_;         // the (row_count() - 1) x sectors patches by mass; empty if empty
+    std::vector<double> row_u_;  // u of each row
 };
 
 }  // namespace rayset::lightmodel
