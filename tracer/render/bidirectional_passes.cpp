@@ -239,17 +239,7 @@ void BidirectionalPasses<Q>::pass_completed(RenderResult& result) {
 std::unique_ptr<Integrator> make_bidirectional_integrator(const RenderScene& scene,
                                                           const RenderSettings& settings,
                                                           const RenderResult& start) {
-    for (const LightSource& light : scene.description().lights)
-        if (light.shadowless)
-            throw Error(
-                fmt::format("not supported: a shadowless light_source with integrator "
-                            "\"bidirectional\" at {} (the path integrator renders it)",
-                            light.location.str()));
-    if (scene.fog().present())
-        throw Error(
-            fmt::format("not supported: fog with integrator \"bidirectional\" at {} "
-                        "(the path integrator renders it)",
-                        scene.description().atmosphere.fogs.front().location.str()));
+    refuse_what_light_paths_do_not_carry(scene, "bidirectional");
     if (scene.interiors().participating())
         throw Error(
             "not supported: media that scatter or emit with integrator \"bidirectional\" (the "

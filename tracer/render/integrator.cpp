@@ -1,6 +1,8 @@
 // The integrators by name, and the records the pass driver shares with them (integrator.h).
 #include "tracer/render/integrator.h"
 
+#include <fmt/format.h>
+
 #include "core/error.h"
 #include "tracer/render/bidirectional_integrator.h"
 #include "tracer/render/path_integrator.h"
@@ -87,6 +89,20 @@ bool spectral_transport(const RenderScene& scene, const RenderSettings& settings
             "RGB: without "
             "--spectral and without global_settings { spectral on })");
     return spectral;
+}
+
+void refuse_what_light_paths_do_not_carry(const RenderScene& scene, const std::string& integrator) {
+    for (const LightSource& light : scene.description().lights)
+        if (light.shadowless)
+            throw Error(
+                fmt::format("not supported: a shadowless light_source with integrator "
+                            "\"{}\" at {} (the path integrator renders it)",
+                            integrator, light.location.str()));
+    if (scene.fog().present())
+        throw Error(
+            fmt::format("not supported: fog with integrator \"{}\" at {} (the path "
+                        "integrator renders it)",
+                        integrator, scene.description().atmosphere.fogs.front().location.str()));
 }
 
 }  // namespace rayset::tracer

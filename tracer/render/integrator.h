@@ -188,5 +188,9 @@ std::unique_ptr<Integrator> make_integrator(const RenderScene& scene,
 std::vector<std::string> integrator_layers(const std::string& name);
 // Whether paths carry spectra (--spectral or global_settings { spectral on }) or RGB.
 bool spectral_transport(const RenderScene& scene, const RenderSettings& settings);
+// Throws for what an integrator that traces light from the lights does not render and the path
+// integrator does: a shadowless light (its light reaches a point through any occluder, which no
+// light path does) and fog (light paths are not dimmed along their segments).
+void refuse_what_light_paths_do_not_carry(const RenderScene& scene, const std::string& integrator);
 
 }  // namespace rayset::tracer

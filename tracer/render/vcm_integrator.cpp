@@ -495,16 +495,11 @@ void VcmPasses::pass_completed(RenderResult& result) {
 std::unique_ptr<Integrator> make_vcm_integrator(const RenderScene& scene,
                                                 const RenderSettings& settings,
                                                 const RenderResult& start) {
+    refuse_what_light_paths_do_not_carry(scene, "vcm");
     const std::string refuse =
-        "not supported with integrator \"vcm\" (the path integrator "
-        "renders it): ";
+        "not supported with integrator \"vcm\" (the path integrator renders it): ";
     if (spectral_transport(scene, settings)) throw Error(refuse + "spectral transport");
     if (scene.interiors().any()) throw Error(refuse + "interior fade or media");
-    if (scene.fog().present()) throw Error(refuse + "fog");
-    for (const LightSource& light : scene.description().lights)
-        if (light.shadowless)
-            throw Error(
-                fmt::format("{}a shadowless light_source at {}", refuse, light.location.str()));
     if (settings.naive_sources && !scene.description().ray_sources.empty())
         throw Error(refuse + "the naive ray set (--naive-sources)");
     return std::make_unique<VcmPasses>(scene, settings, start);
