@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/error.h"
+#include "tracer/render/integrator.h"
 
 namespace rayset::tracer {
 
@@ -75,11 +76,11 @@ int parse_size(const std::string& value, const std::string& what, const std::str
     try {
         size_t used = 0;
         const long v = std::stol(value, &used);
-        if (used == value.size() && v >= 1 && v <= 65536) return int(v);
+        if (used == value.size() && v >= 1 && v <= kMaxImageSide) return int(v);
     } catch (const std::exception&) {
     }
-    throw Error(
-        fmt::format("{}: {} must be a whole number from 1 to 65536, got '{}'", where, what, value));
+    throw Error(fmt::format("{}: {} must be a whole number from 1 to {}, got '{}'", where, what,
+                            kMaxImageSide, value));
 }
 
 double parse_number(const std::string& value, const std::string& what, const std::string& where) {
@@ -428,9 +429,9 @@ void add_image_options(CLI::App& app, RaytraceOptions& o, CommandLine& c) {
     app.add_option("--png", c.png, "Preview PNG file (default: the output's name with .png)");
     app.add_flag("--no-png", o.no_png, "Write no PNG preview");
     app.add_option("--width", c.width, "Image width in pixels (default 320); or +Wn")
-        ->check(CLI::Range(1, 65536));
+        ->check(CLI::Range(1, kMaxImageSide));
     app.add_option("--height", c.height, "Image height in pixels (default 240); or +Hn")
-        ->check(CLI::Range(1, 65536));
+        ->check(CLI::Range(1, kMaxImageSide));
     app.add_option("--passes", c.passes,
                    "Progressive passes (default: the scene's `passes`, else 16, "
                    "or unlimited with a time limit)")
@@ -481,14 +482,15 @@ void add_tool_options(CLI::App& app, RaytraceOptions& o) {
 void add_transport_options(CLI::App& app, RaytraceOptions& o) {
     app.add_option(
            "--photons", o.photons_per_pass,
-           "Bidirectional and vcm: photons (light subpaths) per pass (default: the pass's camera "
-           "samples, at least 65536; a pass takes photons / (pixels + "
-           "receiver cells) samples per pixel and cell, at least 1)")
+           fmt::format("Bidirectional and vcm: photons (light subpaths) per pass (default: the "
+                       "pass's camera samples, at least {}; a pass takes photons / (pixels + "
+                       "receiver cells) samples per pixel and cell, at least 1)",
+                       kMinimumLightPathsPerPass))
         ->check(CLI::PositiveNumber);
     app.add_option("--photon-radius", o.photon_radius,
                    "Bidirectional and vcm: gather radius of the first pass in scene "
-                   "units (default: 1/100 of the extent of the visible points, or of "
-                   "the first pass's light vertices for vcm)")
+                   "units (default: 1/100 of the extent of the first hits of the view and "
+                   "the receiver cells)")
         ->check(CLI::PositiveNumber);
     app.add_flag("--naive-sources", o.naive_sources,
                  "Bidirectional: ray sources as their stored rays (the naive "

@@ -138,8 +138,8 @@ TEST(RenderResume, BidirectionalIntegratorContinuesBitForBit) {
 }
 
 TEST(RenderResume, VcmIntegratorContinuesBitForBit) {
-    // Its gather radius comes from pass 0's light vertices: a continued render goes on from
-    // the radius the checkpoint holds, and the threads do not change the image either.
+    // Its gather radius is measured in pass 0: a continued render goes on from the radius the
+    // checkpoint holds, and the threads do not change the image either.
     test::ScratchDir dir;
     std::string scene = bidirectional_box(dir);
     scene.replace(scene.find("\"bidirectional\""), 15, "\"vcm\"");

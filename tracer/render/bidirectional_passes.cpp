@@ -19,7 +19,6 @@ namespace rayset::tracer {
 namespace {
 
 constexpr uint64_t kPhotonBlock = 4096;
-constexpr uint64_t kMinimumPhotons = 65536;
 constexpr uint64_t kPhotonSeedSalt =
     0x6A09E667F3BCC909ULL;  // photon streams apart from camera streams
 
@@ -116,8 +115,9 @@ BidirectionalPasses<Q>::BidirectionalPasses(const RenderScene& scene,
     size_t points = settings.render_image ? size_t(settings.width) * settings.height : 0;
     for (const IlluminanceReceiver& r : scene.description().receivers)
         points += size_t(r.nx) * r.ny;
-    photons_per_pass_ = settings.photons_per_pass > 0 ? uint64_t(settings.photons_per_pass)
-                                                      : std::max<uint64_t>(kMinimumPhotons, points);
+    photons_per_pass_ = settings.photons_per_pass > 0
+                            ? uint64_t(settings.photons_per_pass)
+                            : std::max<uint64_t>(kMinimumLightPathsPerPass, points);
     // Camera work balanced against photon work: a small image or a receiver-only render takes
     // several samples per pixel and cell in each pass rather than leave the photon pass (and its
     // fixed cost) to dominate; the primary light and antialiasing converge that much faster.

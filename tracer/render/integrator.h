@@ -70,6 +70,10 @@ inline LightComponent layer_after_scattering(LightComponent segment, bool delta)
     return segment != kDirectVisibility ? kSecondary : delta ? kDirectVisibility : kPrimary;
 }
 
+// The fewest light paths (photons) an integrator that traces light from the lights starts in a
+// pass: a small image's pass would otherwise carry too few to gather from.
+constexpr uint64_t kMinimumLightPathsPerPass = 65536;
+
 // The most vertices a path may have in any integrator: a cap far beyond what Russian roulette
 // lets live.
 constexpr int kMaxPathVertices = 256;

@@ -27,7 +27,6 @@ namespace rayset::tracer {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr uint64_t kMinimumLightPaths = 65536;
 constexpr uint64_t kLightBlock = 1024;
 constexpr uint64_t kLightSeedSalt = 0xBB67AE8584CAA73BULL;  // light streams apart from camera's
 constexpr int kCameraRouletteDepth = 5;
@@ -169,8 +168,9 @@ VcmPasses::VcmPasses(const RenderScene& scene, const RenderSettings& settings,
     size_t points = settings.render_image ? size_t(settings.width) * settings.height : 0;
     for (const IlluminanceReceiver& r : scene.description().receivers)
         points += size_t(r.nx) * r.ny;
-    light_paths_ = settings.photons_per_pass > 0 ? uint64_t(settings.photons_per_pass)
-                                                 : std::max<uint64_t>(kMinimumLightPaths, points);
+    light_paths_ = settings.photons_per_pass > 0
+                       ? uint64_t(settings.photons_per_pass)
+                       : std::max<uint64_t>(kMinimumLightPathsPerPass, points);
     samples_ = int(std::max<uint64_t>(1, light_paths_ / std::max<size_t>(1, points)));
     base_pass_ = start.passes;
     base_radius_ = start.passes > 0 ? shrunk_radius(start.photon_radius, start.passes)

@@ -93,13 +93,16 @@ void parse_receiver(Parser& p, const Token& keyword) {
             p.next();
             const Token at = p.peek();
             const Numeric n = p.parse_numeric();
-            // Each side at most an image's (65536), the cells at most 2^24 (their sums take
-            // 40 bytes a cell for the receiver and as much for each light layer).
-            const auto whole = [](double v) { return v >= 1 && v <= 65536 && v == std::floor(v); };
+            // Each side at most an image's, the cells at most 2^24 (their sums take 40 bytes a
+            // cell for the receiver and as much for each light layer).
+            const auto whole = [](double v) {
+                return v >= 1 && v <= kMaxImageSide && v == std::floor(v);
+            };
             if (n.terms != 2 || !whole(n.v[0]) || !whole(n.v[1]) || n.v[0] * n.v[1] > 16777216)
                 p.fail(at,
                        fmt::format("expected 'resolution <nx, ny>' with two whole numbers from 1 "
-                                   "to 65536, at most 16777216 cells in all, found {}",
+                                   "to {}, at most 16777216 cells in all, found {}",
+                                   kMaxImageSide,
                                    n.terms == 2 ? fmt::format("<{}, {}>", n.v[0], n.v[1])
                                                 : fmt::format("{} terms", n.terms)));
             receiver.nx = static_cast<int>(n.v[0]);

@@ -115,6 +115,9 @@ struct Camera {
     SourceLocation normal_location;      // the normal keyword
 };
 
+// The most pixels of an image, or cells of a receiver, along one side.
+constexpr int kMaxImageSide = 65536;
+
 // Extension: an illuminance map on a parallelogram.
 struct IlluminanceReceiver {
     std::string name;           // from `name "..."`, else "receiver<N>"
