@@ -85,24 +85,25 @@ int BidirectionalIntegratorOf<Q>::attenuate_inside(Q& beta, int start, Vec3 orig
 template <class Q>
 Q BidirectionalIntegratorOf<Q>::primary_light(const BsdfOf<Q>& bsdf, const SurfaceHit& hit,
                                               int medium, Vec3 direction,
-                                              const Wavelengths& wavelengths, Pcg32& rng,
+                                              const Wavelengths& wavelengths, Sampler& sampler,
                                               uint64_t& rays) const {
-    const ShadowRayOf<Q> shadow = sample_direct_light(scene_, lights_, bsdf, hit.point,
-                                                      bsdf.facing_normal(), wavelengths, rng);
+    const ShadowRayOf<Q> shadow = sample_direct_light(
+        scene_, lights_, bsdf, hit.point, bsdf.facing_normal(), wavelengths, lights_.draw(sampler));
     if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses fade and media
         const Interiors& interiors = scene_.interiors();
         if (interiors.any())
             return dimmed_unless_occluded(
                 scene_, shadow, interiors.medium_after(medium, direction, hit, shadow.direction),
-                rng, rays);
+                sampler.rng(), rays);
     }
     return unless_occluded(scene_, shadow, rays);
 }
 
 template <class Q>
 CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 direction, uint32_t pixel,
-                                                       Pcg32& rng, uint64_t& rays,
+                                                       Sampler& sampler, uint64_t& rays,
                                                        std::vector<Point>& visible) const {
+    Pcg32& rng = sampler.rng();
     const Wavelengths wavelengths = sample_wavelengths<Q>(camera_wavelength_density_, rng);
     Q direct_visibility{}, primary{};
     Q beta = constant_value<Q>(1);
@@ -125,7 +126,8 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
         const Vec3 wo = -direction;
         const BsdfOf<Q> bsdf(material, hit.normal, hit.shading_normal, wo, wavelengths);
         if (bsdf.has_smooth_lobes()) {
-            primary += beta * primary_light(bsdf, hit, medium, direction, wavelengths, rng, rays);
+            primary +=
+                beta * primary_light(bsdf, hit, medium, direction, wavelengths, sampler, rays);
             Point vp;
             vp.point = hit.point, vp.normal = hit.normal, vp.shading_normal = hit.shading_normal,
             vp.wo = wo;
@@ -134,8 +136,9 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
             visible.push_back(vp);
         }
         BsdfSampleOf<Q> s;
-        const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
-                     u2 = rng.uniform_float();
+        const double u_lobe = sampler.get_1d();
+        double u1, u2;
+        sampler.get_2d(u1, u2);
         if (!bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight)) break;
         if (scene_.interiors().any())
             medium = scene_.interiors().medium_after(medium, direction, hit, s.wi);
@@ -156,12 +159,12 @@ CameraSample BidirectionalIntegratorOf<Q>::camera_path(Vec3 origin, Vec3 directi
 }
 
 template <class Q>
-Rgb BidirectionalIntegratorOf<Q>::receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng,
+Rgb BidirectionalIntegratorOf<Q>::receiver_primary(Vec3 point, Vec3 normal, Sampler& sampler,
                                                    uint64_t& rays) const {
     return white_lambertian_irradiance<Q>(
-        normal, camera_wavelength_density_, rng,
+        normal, camera_wavelength_density_, sampler,
         [&](const BsdfOf<Q>& bsdf, const Wavelengths& wavelengths) {
-            return direct_light(scene_, lights_, bsdf, point, normal, wavelengths, rng, rays);
+            return direct_light(scene_, lights_, bsdf, point, normal, wavelengths, sampler, rays);
         },
         [&](const BsdfSampleOf<Q>& s, const Wavelengths& wavelengths) {
             return s.weight * bodies_crossed(scene_.offset(point, normal, s.wi), s.wi, s.pdf,

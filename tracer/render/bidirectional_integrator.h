@@ -60,11 +60,12 @@ public:
     BidirectionalIntegratorOf(const RenderScene& scene, const LightSet& lights);
 
     // Camera pass of one camera ray; visible points are appended to `visible` with `pixel`.
-    CameraSample camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Pcg32& rng,
+    // Light and BSDF samples take pairs of `sampler`, everything else its stream.
+    CameraSample camera_path(Vec3 origin, Vec3 direction, uint32_t pixel, Sampler& sampler,
                              uint64_t& rays, std::vector<Point>& visible) const;
     // Primary irradiance of the lights at a virtual receiver point (pi x the radiance a white
     // Lambertian surface there would reflect), from the side `normal` points into.
-    Rgb receiver_primary(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
+    Rgb receiver_primary(Vec3 point, Vec3 normal, Sampler& sampler, uint64_t& rays) const;
 
     // Photons [first, first + count) of a pass of `emitted` photons; each photon i draws from
     // stream i of `seed`, so the result does not depend on how the range is split.
@@ -96,7 +97,7 @@ private:
     // The light sample of a visible point at `hit`, reached along `direction` through
     // `medium`, its shadow ray dimmed by the medium it starts in.
     Q primary_light(const BsdfOf<Q>& bsdf, const SurfaceHit& hit, int medium, Vec3 direction,
-                    const Wavelengths& wavelengths, Pcg32& rng, uint64_t& rays) const;
+                    const Wavelengths& wavelengths, Sampler& sampler, uint64_t& rays) const;
     int attenuate_inside(Q& beta, int start, Vec3 origin, Vec3 direction, bool found,
                          const SurfaceHit& hit, Pcg32& rng) const;
 

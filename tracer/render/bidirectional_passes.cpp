@@ -62,9 +62,9 @@ public:
         visible_.assign(size_t(points.tiles()), {});
         receivers_ = points.receivers;
     }
-    void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+    void camera_sample(const CameraRay& ray, const SampleSink& sink, Sampler& sampler,
                        uint64_t& rays) const override;
-    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Sampler& sampler,
                          uint64_t& rays) const override;
     void end_pass(int pass, const SamplePoints& points, PassValues& values,
                   std::atomic<uint64_t>& rays, StopFlag stop) override;
@@ -136,25 +136,25 @@ double BidirectionalPasses<Q>::radius(int pass) const {
 }
 
 template <class Q>
-void BidirectionalPasses<Q>::camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
-                                           uint64_t& rays) const {
+void BidirectionalPasses<Q>::camera_sample(const CameraRay& ray, const SampleSink& sink,
+                                           Sampler& sampler, uint64_t& rays) const {
     std::vector<Point>& visible = visible_[size_t(sink.tile)];
     const size_t first_point = visible.size();
     const CameraSample s = integrator_.camera_path(ray.origin, ray.direction, uint32_t(sink.index),
-                                                   rng, rays, visible);
+                                                   sampler, rays, visible);
     for (size_t v = first_point; v < visible.size(); ++v)
         visible[v].beta = sink.weight * visible[v].beta;
     sink.add(kDirectVisibility, s.direct_visibility);
     sink.add(kPrimary, s.primary);
     if (ordinary_)
-        sink.add(kUnlayered, path_.radiance(ray.origin, ray.direction, rng, rays).total());
+        sink.add(kUnlayered, path_.radiance(ray.origin, ray.direction, sampler, rays).total());
 }
 
 template <class Q>
 void BidirectionalPasses<Q>::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink,
-                                             Pcg32& rng, uint64_t& rays) const {
-    sink.add(kPrimary, integrator_.receiver_primary(point, normal, rng, rays));
-    if (ordinary_) sink.add(kUnlayered, path_.irradiance(point, normal, rng, rays).total());
+                                             Sampler& sampler, uint64_t& rays) const {
+    sink.add(kPrimary, integrator_.receiver_primary(point, normal, sampler, rays));
+    if (ordinary_) sink.add(kUnlayered, path_.irradiance(point, normal, sampler, rays).total());
 }
 
 template <class Q>

@@ -12,6 +12,7 @@
 #include "tracer/render/light.h"
 #include "tracer/render/material.h"
 #include "tracer/render/render_scene.h"
+#include "tracer/render/sampler.h"
 #include "tracer/render/sampling.h"
 
 namespace rayset::tracer {
@@ -27,15 +28,15 @@ struct ShadowRayOf {
     Q contribution{};
 };
 
-// One light sample for the BSDF `bsdf` at `point` (offset along `normal`); draws nothing from
-// `rng` when the scene has no light.
+// The light sample `u` (LightSet::draw) for the BSDF `bsdf` at `point` (offset along
+// `normal`).
 template <class Q>
 ShadowRayOf<Q> sample_direct_light(const RenderScene& scene, const LightSet& lights,
                                    const BsdfOf<Q>& bsdf, Vec3 point, Vec3 normal,
-                                   const WavelengthsFor<Q>& wavelengths, Pcg32& rng) {
+                                   const WavelengthsFor<Q>& wavelengths, const LightUniforms& u) {
     ShadowRayOf<Q> shadow;
     if (lights.empty()) return shadow;
-    const auto light = lights.sample_Li<Q>(point, lights.draw(rng), wavelengths);
+    const auto light = lights.sample_Li<Q>(point, u, wavelengths);
     if (!light) return shadow;
     const Q f = bsdf.eval(light->wi);
     if (is_black(f) || is_black(light->Li)) return shadow;
@@ -59,12 +60,14 @@ Q unless_occluded(const RenderScene& scene, const ShadowRayOf<Q>& shadow, uint64
     return shadow.contribution;
 }
 
-// Both halves at once.
+// Both halves at once, the light sample drawn from `sampler`.
 template <class Q>
 Q direct_light(const RenderScene& scene, const LightSet& lights, const BsdfOf<Q>& bsdf, Vec3 point,
-               Vec3 normal, const WavelengthsFor<Q>& wavelengths, Pcg32& rng, uint64_t& rays) {
+               Vec3 normal, const WavelengthsFor<Q>& wavelengths, Sampler& sampler,
+               uint64_t& rays) {
+    const LightUniforms u = lights.draw(sampler);
     return unless_occluded(
-        scene, sample_direct_light(scene, lights, bsdf, point, normal, wavelengths, rng), rays);
+        scene, sample_direct_light(scene, lights, bsdf, point, normal, wavelengths, u), rays);
 }
 
 }  // namespace rayset::tracer

@@ -20,6 +20,7 @@
 #include "core/random.h"
 #include "tracer/film/film.h"
 #include "tracer/render/camera.h"
+#include "tracer/render/sampler.h"
 #include "tracer/render/spectrum.h"
 
 namespace rayset::tracer {
@@ -157,13 +158,14 @@ public:
     // pass's light subpaths here; `rays` counts their rays).
     virtual void begin_pass(int /*pass*/, const SamplePoints& /*points*/,
                             std::atomic<uint64_t>& /*rays*/) {}
-    // One camera ray's light (and whatever the integrator keeps of it for end_pass). Called
+    // One camera ray's light (and whatever the integrator keeps of it for end_pass), its
+    // random numbers from `sampler` (the pixel's position took its first pair). Called
     // concurrently for different tiles and receiver cells.
-    virtual void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+    virtual void camera_sample(const CameraRay& ray, const SampleSink& sink, Sampler& sampler,
                                uint64_t& rays) const = 0;
     // One sample of the irradiance at a receiver cell's centre `point`, from the side `normal`
     // points into. Called concurrently for different cells.
-    virtual void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+    virtual void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Sampler& sampler,
                                  uint64_t& rays) const = 0;
     // After every sample of the pass: work over the whole pass, inside the driver's thread
     // arena; returns early (the pass is then dropped) once `stop` is set.

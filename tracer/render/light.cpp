@@ -62,11 +62,16 @@ size_t LightSet::choose(double& u) const {
     return i;
 }
 
-LightUniforms LightSet::draw(Pcg32& rng) const {
+LightUniforms LightSet::draw(Sampler& sampler) const {
     LightUniforms u;
-    u.select = rng.uniform_float();
-    const int count = has_ray_sources_ ? 4 : 2;
-    for (int k = 0; k < count; ++k) u.u[k] = rng.uniform_float();
+    if (has_ray_sources_) {
+        sampler.get_2d(u.select, u.u[0]);
+        sampler.get_2d(u.u[1], u.u[2]);
+        u.u[3] = sampler.get_1d();
+    } else {
+        u.select = sampler.get_1d();
+        sampler.get_2d(u.u[0], u.u[1]);
+    }
     return u;
 }
 

@@ -26,6 +26,7 @@
 #include "tracer/render/povray_lights.h"
 #include "tracer/render/ray_box.h"
 #include "tracer/render/ray_sources.h"
+#include "tracer/render/sampler.h"
 #include "tracer/render/spectrum.h"
 #include "tracer/render/units.h"
 
@@ -121,9 +122,14 @@ public:
     bool has_bodies() const { return !area_bodies_.empty() || !ray_source_bodies_.empty(); }
     bool has_ray_sources() const { return has_ray_sources_; }
 
-    // The canonical numbers of one light sample (floats: 24 bits are ample for a choice among
-    // lights, cells and voxels and a point within a voxel).
-    LightUniforms draw(Pcg32& rng) const;
+    // The canonical numbers of one light sample: the choice of a light, then a pair (a point
+    // of a light's area; the voxel and the first coordinate within it for a ray source), then a
+    // ray source's two other coordinates.
+    LightUniforms draw(Sampler& sampler) const;
+    LightUniforms draw(Pcg32& rng) const {
+        Sampler random(rng);
+        return draw(random);
+    }
     // A light chosen by u.select, then a sample of it; the pdf includes the choice.
     template <class Q>
     std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u,

@@ -43,24 +43,24 @@ PathIntegratorOf<Q>::PathIntegratorOf(const RenderScene& scene, const LightSet& 
 }
 
 template <class Q>
-LightComponentsOf<Rgb> PathIntegratorOf<Q>::radiance(Vec3 origin, Vec3 direction, Pcg32& rng,
+LightComponentsOf<Rgb> PathIntegratorOf<Q>::radiance(Vec3 origin, Vec3 direction, Sampler& sampler,
                                                      uint64_t& rays) const {
-    const Wavelengths wavelengths = sample_wavelengths<Q>(wavelength_density_, rng);
+    const Wavelengths wavelengths = sample_wavelengths<Q>(wavelength_density_, sampler.rng());
     PathState state;
     state.origin = origin;
     state.direction = direction;
-    return to_rgb(trace(state, wavelengths, rng, rays), wavelengths);
+    return to_rgb(trace(state, wavelengths, sampler, rays), wavelengths);
 }
 
 template <class Q>
-LightComponentsOf<Rgb> PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Pcg32& rng,
+LightComponentsOf<Rgb> PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, Sampler& sampler,
                                                        uint64_t& rays) const {
     return white_lambertian_irradiance<Q>(
-        normal, wavelength_density_, rng,
+        normal, wavelength_density_, sampler,
         [&](const BsdfOf<Q>& bsdf, const Wavelengths& wavelengths) {
             LightComponentsOf<Q> light;
             light.of[kPrimary] =
-                direct_light(scene_, lights_, bsdf, point, normal, wavelengths, rng, rays);
+                direct_light(scene_, lights_, bsdf, point, normal, wavelengths, sampler, rays);
             return light;
         },
         [&](const BsdfSampleOf<Q>& s, const Wavelengths& wavelengths) {
@@ -72,7 +72,7 @@ LightComponentsOf<Rgb> PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, 
             state.bsdf_pdf = s.pdf;
             state.depth = 1;
             state.segment_layer = kPrimary;  // the receiver is the first smooth scattering
-            return trace(state, wavelengths, rng, rays);
+            return trace(state, wavelengths, sampler, rays);
         });
 }
 
@@ -82,8 +82,10 @@ LightComponentsOf<Rgb> PathIntegratorOf<Q>::irradiance(Vec3 point, Vec3 normal, 
 template <class Q>
 [[gnu::flatten]] LightComponentsOf<Q> PathIntegratorOf<Q>::trace(PathState& s,
                                                                  const Wavelengths& wavelengths,
-                                                                 Pcg32& rng, uint64_t& rays) const {
+                                                                 Sampler& sampler,
+                                                                 uint64_t& rays) const {
     const LightSet& lights = lights_;
+    Pcg32& rng = sampler.rng();
     const Interiors& interiors = scene_.interiors();
     LightComponentsOf<Q> sum;
     Q& unlayered = sum.of[kUnlayered];
@@ -91,6 +93,12 @@ template <class Q>
     BsdfSampleOf<Q> sample;
     std::optional<Material> scratch;
     for (;; ++s.depth) {
+        // The vertex's light and BSDF samples, drawn before its ray is cast: they do not
+        // depend on what the ray hits, and their hashing (sampler.h) overlaps the query.
+        const LightUniforms light_u = lights.draw(sampler);
+        const double u_lobe = sampler.get_1d();
+        double u1, u2;
+        sampler.get_2d(u1, u2);
         ++rays;
         const bool found = scene_.intersect(s.origin, s.direction, 0, kInfinity, s.kind, hit);
         int medium = -1;
@@ -137,11 +145,9 @@ template <class Q>
         ShadowRayOf<Q> shadow;
         if (light_sampled)
             shadow = sample_direct_light(scene_, lights, bsdf, hit.point, bsdf.facing_normal(),
-                                         wavelengths, rng);
+                                         wavelengths, light_u);
 
         // The BSDF sample before the shadow ray (it does not depend on it; direct_light.h).
-        const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(),
-                     u2 = rng.uniform_float();
         const bool sampled = bsdf.sample(u_lobe, u1, u2, sample);
         if (light_sampled) {
             Q& sampled_light = sum.of[layer_of_light_at_vertex(s.segment_layer)];
@@ -214,13 +220,13 @@ class PathTracing : public Integrator {
 public:
     PathTracing(const RenderScene& scene, LightSet lights)
         : lights_(std::move(lights)), path_(scene, lights_) {}
-    void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+    void camera_sample(const CameraRay& ray, const SampleSink& sink, Sampler& sampler,
                        uint64_t& rays) const override {
-        add_components(sink, path_.radiance(ray.origin, ray.direction, rng, rays));
+        add_components(sink, path_.radiance(ray.origin, ray.direction, sampler, rays));
     }
-    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Sampler& sampler,
                          uint64_t& rays) const override {
-        add_components(sink, path_.irradiance(point, normal, rng, rays));
+        add_components(sink, path_.irradiance(point, normal, sampler, rays));
     }
 
 private:

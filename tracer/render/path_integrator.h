@@ -37,13 +37,16 @@ public:
     PathIntegratorOf(const RenderScene& scene, const LightSet& lights);
 
     // Radiance arriving along a camera ray (origin, unit direction), linear sRGB whatever the
-    // transport; `rays` counts every ray cast.
-    LightComponentsOf<Rgb> radiance(Vec3 origin, Vec3 direction, Pcg32& rng, uint64_t& rays) const;
+    // transport; `rays` counts every ray cast. Light and BSDF samples take pairs of `sampler`,
+    // everything else its stream.
+    LightComponentsOf<Rgb> radiance(Vec3 origin, Vec3 direction, Sampler& sampler,
+                                    uint64_t& rays) const;
     // Irradiance at `point` on a virtual receiver of unit `normal` (not part of the scene),
     // from the half-space the normal points into: pi times the radiance a white Lambertian
     // surface there would reflect, estimated with the same path tracer. The receiver point is
     // the first smooth scattering.
-    LightComponentsOf<Rgb> irradiance(Vec3 point, Vec3 normal, Pcg32& rng, uint64_t& rays) const;
+    LightComponentsOf<Rgb> irradiance(Vec3 point, Vec3 normal, Sampler& sampler,
+                                      uint64_t& rays) const;
 
     // Bounces before Russian roulette starts. Earlier is cheaper per path but noisier: in a
     // closed room of albedo 0.6 (tests/bench/grey_box.sh), starting at 3 kills two paths in
@@ -64,7 +67,7 @@ private:
     };
     // Follows the path from `state` (advanced in place: a by-value copy of this struct cost
     // more than some of the arithmetic per bounce).
-    LightComponentsOf<Q> trace(PathState& state, const Wavelengths& wavelengths, Pcg32& rng,
+    LightComponentsOf<Q> trace(PathState& state, const Wavelengths& wavelengths, Sampler& sampler,
                                uint64_t& rays) const;
     // Across a segment of `length` in the medium of object `medium` (RGB transport): adds its
     // emission to `sum`, draws a free flight and scales the throughput by it. If the medium

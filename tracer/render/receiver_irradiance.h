@@ -20,17 +20,19 @@ namespace rayset::tracer {
 //   follow_bsdf_sample(s, wavelengths)   what the ray along the BSDF sample s brings, times
 //                                        s.weight, each light it meets weighted against
 //                                        light sampling.
-// Random numbers: the wavelength, sample_light's, then the lobe and direction (3 floats),
-// then follow_bsdf_sample's.
+// Random numbers: the wavelength (the stream), sample_light's, then the lobe (one value) and
+// direction (a pair), then follow_bsdf_sample's.
 template <class Q, class SampleLight, class FollowBsdfSample>
 auto white_lambertian_irradiance(Vec3 normal, const lightmodel::BinnedSpectrum& wavelength_density,
-                                 Pcg32& rng, SampleLight&& sample_light,
+                                 Sampler& sampler, SampleLight&& sample_light,
                                  FollowBsdfSample&& follow_bsdf_sample) {
-    const WavelengthsFor<Q> wavelengths = sample_wavelengths<Q>(wavelength_density, rng);
+    const WavelengthsFor<Q> wavelengths = sample_wavelengths<Q>(wavelength_density, sampler.rng());
     const BsdfOf<Q> bsdf(white_lambertian(), normal, normal, normal, wavelengths);
     auto reflected = sample_light(bsdf, wavelengths);
     BsdfSampleOf<Q> s;
-    const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
+    const double u_lobe = sampler.get_1d();
+    double u1, u2;
+    sampler.get_2d(u1, u2);
     if (bsdf.sample(u_lobe, u1, u2, s) && !is_black(s.weight))
         reflected += follow_bsdf_sample(s, wavelengths);
     return kPi * to_rgb(reflected, wavelengths);

@@ -54,8 +54,8 @@ public:
         const uint64_t seed = pass_seed(seed_, pass);
         arena.execute([&] {
             integrator_.begin_pass(pass, points_, rays);
-            camera_samples(values, seed, rays);
-            receiver_samples(values, seed, rays);
+            camera_samples(values, seed, pass, rays);
+            receiver_samples(values, seed, pass, rays);
         });
         between();
         if (!stopped(stop_))
@@ -102,7 +102,10 @@ private:
         total.add(x, y, to_si_ * values.total(i));
     }
 
-    void camera_samples(PassValues& values, uint64_t seed, std::atomic<uint64_t>& rays) const {
+    // Sample k of pass p is sample p * samples_ + k of its pixel's sequence (sampler.h); the
+    // pass's seed starts each pixel's stream for what the sequence does not cover.
+    void camera_samples(PassValues& values, uint64_t seed, int pass,
+                        std::atomic<uint64_t>& rays) const {
         const int w = points_.width, h = points_.height, tile = points_.tile_size,
                   tiles_x = points_.tiles_x();
         tbb::parallel_for(
@@ -116,10 +119,12 @@ private:
                             Pcg32 rng(seed, p);
                             const SampleSink sink{values, p, t, weight_};
                             for (int k = 0; k < samples_; ++k) {
-                                const double px = x + rng.uniform_float(),
-                                             py = y + rng.uniform_float();
-                                const CameraRay ray = camera_.ray(px, py);
-                                if (ray.exists) integrator_.camera_sample(ray, sink, rng, counted);
+                                Sampler sampler(rng, seed_, p, sample_index(pass, k));
+                                double px, py;
+                                sampler.get_2d(px, py);
+                                const CameraRay ray = camera_.ray(x + px, y + py);
+                                if (ray.exists)
+                                    integrator_.camera_sample(ray, sink, sampler, counted);
                             }
                         }
                 }
@@ -127,7 +132,8 @@ private:
             });
     }
 
-    void receiver_samples(PassValues& values, uint64_t seed, std::atomic<uint64_t>& rays) const {
+    void receiver_samples(PassValues& values, uint64_t seed, int pass,
+                          std::atomic<uint64_t>& rays) const {
         for (size_t r = 0; r < points_.receivers->size(); ++r) {
             const ReceiverMap& map = (*points_.receivers)[r];
             const int nx = map.irradiance.nx(), ny = map.irradiance.ny();
@@ -139,16 +145,21 @@ private:
                     uint64_t counted = 0;
                     for (int k = range.begin(); k != range.end(); ++k) {
                         const size_t c = first + size_t(k);
-                        Pcg32 rng(seed, points_.first_cell_stream + c);
+                        const uint64_t stream = points_.first_cell_stream + c;
+                        Pcg32 rng(seed, stream);
                         const SampleSink sink{values, points_.pixels() + c, -1, weight_};
                         const Vec3 point = map.cell_centre(k % nx, k / nx);
-                        for (int n = 0; n < samples_; ++n)
-                            integrator_.receiver_sample(point, normal, sink, rng, counted);
+                        for (int n = 0; n < samples_; ++n) {
+                            Sampler sampler(rng, seed_, stream, sample_index(pass, n));
+                            integrator_.receiver_sample(point, normal, sink, sampler, counted);
+                        }
                     }
                     rays += counted;
                 });
         }
     }
+
+    uint32_t sample_index(int pass, int k) const { return uint32_t(pass) * samples_ + k; }
 
     Integrator& integrator_;
     const SceneCamera camera_;

@@ -85,9 +85,9 @@ public:
 
     int samples_per_pass() const override { return samples_; }
     void begin_pass(int pass, const SamplePoints& points, std::atomic<uint64_t>& rays) override;
-    void camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+    void camera_sample(const CameraRay& ray, const SampleSink& sink, Sampler& sampler,
                        uint64_t& rays) const override;
-    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+    void receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Sampler& sampler,
                          uint64_t& rays) const override;
     void pass_completed(RenderResult& result) override;
 
@@ -113,15 +113,16 @@ private:
     // and partial weights on arrival; false when it brings nothing.
     bool emit(Pcg32& rng, Walk& walk, SurfaceHit& hit, uint64_t& rays) const;
 
-    // Follows a camera path from the walk's ray on, adding its light to `sum`.
-    void trace_camera(CameraWalk& walk, Pcg32& rng, uint64_t& rays,
+    // Follows a camera path from the walk's ray on, adding its light to `sum`. Light and BSDF
+    // samples take pairs of `sampler`, everything else its stream.
+    void trace_camera(CameraWalk& walk, Sampler& sampler, uint64_t& rays,
                       LightComponentsOf<Rgb>& sum) const;
     // At a camera vertex: its light (with a smooth lobe) and the next direction; false when
     // the path ends.
-    bool scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& walk, Pcg32& rng,
+    bool scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& walk, Sampler& sampler,
                  uint64_t& rays, LightComponentsOf<Rgb>& sum) const;
-    Rgb light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Pcg32& rng,
-                     uint64_t& rays) const;
+    Rgb light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
+                     const LightUniforms& u, uint64_t& rays) const;
     Rgb connection(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
                    const LightVertex& y, uint64_t& rays) const;
     // Merged light, the part whose light vertex is its subpath's first apart.
@@ -306,18 +307,18 @@ void VcmPasses::trace_light_path(uint64_t index, uint64_t seed, std::vector<Ligh
     }
 }
 
-void VcmPasses::camera_sample(const CameraRay& ray, const SampleSink& sink, Pcg32& rng,
+void VcmPasses::camera_sample(const CameraRay& ray, const SampleSink& sink, Sampler& sampler,
                               uint64_t& rays) const {
     CameraWalk walk;
     walk.origin = ray.origin, walk.direction = ray.direction;
     LightComponentsOf<Rgb> sum;
-    trace_camera(walk, rng, rays, sum);
+    trace_camera(walk, sampler, rays, sum);
     for (int c = 0; c < kLightComponents; ++c) sink.add(c, sum.of[size_t(c)]);
 }
 
 // The receiver point as the camera path's first vertex: a white Lambertian surface, pi times
 // whose reflected radiance is the irradiance.
-void VcmPasses::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Pcg32& rng,
+void VcmPasses::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Sampler& sampler,
                                 uint64_t& rays) const {
     const CameraVertex x{point, normal, normal, normal, &white_lambertian(), false};
     const Bsdf bsdf(white_lambertian(), normal, normal, normal);
@@ -325,11 +326,11 @@ void VcmPasses::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink,
     walk.beta = Rgb{kPi, kPi, kPi};
     walk.vertices = 1;
     LightComponentsOf<Rgb> sum;
-    if (scatter(x, bsdf, walk, rng, rays, sum)) trace_camera(walk, rng, rays, sum);
+    if (scatter(x, bsdf, walk, sampler, rays, sum)) trace_camera(walk, sampler, rays, sum);
     for (int c = 0; c < kLightComponents; ++c) sink.add(c, sum.of[size_t(c)]);
 }
 
-void VcmPasses::trace_camera(CameraWalk& walk, Pcg32& rng, uint64_t& rays,
+void VcmPasses::trace_camera(CameraWalk& walk, Sampler& sampler, uint64_t& rays,
                              LightComponentsOf<Rgb>& sum) const {
     SurfaceHit hit;
     std::optional<Material> scratch;
@@ -367,17 +368,18 @@ void VcmPasses::trace_camera(CameraWalk& walk, Pcg32& rng, uint64_t& rays,
         const CameraVertex x{hit.point,       hit.normal, hit.shading_normal,
                              -walk.direction, &material,  true};
         const Bsdf bsdf(material, hit.normal, hit.shading_normal, x.wo);
-        if (!scatter(x, bsdf, walk, rng, rays, sum)) return;
+        if (!scatter(x, bsdf, walk, sampler, rays, sum)) return;
     }
 }
 
-bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& walk, Pcg32& rng,
+bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& walk, Sampler& sampler,
                         uint64_t& rays, LightComponentsOf<Rgb>& sum) const {
+    Pcg32& rng = sampler.rng();
     const bool smooth = bsdf.has_smooth_lobes();
     if (smooth && !lights_.empty()) {
         // Light straight from a light (sampled, or merged from a light subpath's first vertex),
         // and light that scattered on the light subpath (connected or merged).
-        Rgb straight = light_sample(x, bsdf, walk, rng, rays), scattered;
+        Rgb straight = light_sample(x, bsdf, walk, lights_.draw(sampler), rays), scattered;
         if (path_first_.size() > 1) {
             const uint32_t path = rng.below(uint32_t(path_first_.size() - 1));
             for (uint32_t k = path_first_[path]; k < path_first_[path + 1]; ++k)
@@ -391,7 +393,9 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
         sum.of[kSecondary] += walk.beta * scattered;
     }
     BsdfSample s;
-    const double u_lobe = rng.uniform_float(), u1 = rng.uniform_float(), u2 = rng.uniform_float();
+    const double u_lobe = sampler.get_1d();
+    double u1, u2;
+    sampler.get_2d(u1, u2);
     if (walk.vertices >= kMaxPathVertices || !bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight))
         return false;
     const double reverse = s.delta ? 0 : reverse_pdf(x, walk.weights.vc + walk.weights.vm, s.wi);
@@ -410,8 +414,8 @@ double VcmPasses::reverse_pdf(const CameraVertex& x, double weight, Vec3 wi) con
 }
 
 Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
-                            Pcg32& rng, uint64_t& rays) const {
-    const auto sample = lights_.sample_Li<Rgb>(x.point, lights_.draw(rng), {});
+                            const LightUniforms& u, uint64_t& rays) const {
+    const auto sample = lights_.sample_Li<Rgb>(x.point, u, {});
     if (!sample) return {};
     const Rgb f = bsdf.eval(sample->wi);
     if (is_black(f) || is_black(sample->Li)) return {};
