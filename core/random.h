@@ -9,6 +9,14 @@
 
 namespace rayset {
 
+// SplitMix64's finaliser (Steele et al. 2014): a bijection of 64-bit words whose outputs for
+// neighbouring inputs look unrelated, used to derive seeds and hashes from small integers.
+inline uint64_t splitmix64_finalise(uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
 class Pcg32 {
 public:
     // `stream` selects one of 2^63 independent sequences for the same seed.

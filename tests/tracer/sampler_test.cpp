@@ -113,7 +113,7 @@ TEST(Sampler, PairsAndPointsAreUncorrelatedAndValuesUniform) {
     EXPECT_LT(std::abs(correlation(column(a, true), column(c, true))), bound);
 
     // The value of pair 3 at sample 0 across 20 000 points: uniform (chi-square, 20 bins,
-    // 19 degrees of freedom; 50.0 is exceeded with probability 1e-4).
+    // 19 degrees of freedom; 50.0 is exceeded with probability 1.3e-4).
     std::vector<int> bins(20, 0);
     Pcg32 rng;
     for (uint64_t point = 0; point < 20000; ++point) {

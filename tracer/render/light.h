@@ -122,9 +122,10 @@ public:
     bool has_bodies() const { return !area_bodies_.empty() || !ray_source_bodies_.empty(); }
     bool has_ray_sources() const { return has_ray_sources_; }
 
-    // The canonical numbers of one light sample: the choice of a light, then a pair (a point
-    // of a light's area; the voxel and the first coordinate within it for a ray source), then a
-    // ray source's two other coordinates.
+    // The canonical numbers of one light sample. Without ray sources: the choice of a light
+    // alone, then a pair for a point of its area. With them: the choice (whose remainder picks
+    // a ray source's flux cell) paired with its voxel, then a pair for two coordinates of the
+    // point in the voxel, then the third alone.
     LightUniforms draw(Sampler& sampler) const;
     LightUniforms draw(Pcg32& rng) const {
         Sampler random(rng);

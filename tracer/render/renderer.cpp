@@ -20,11 +20,8 @@
 namespace rayset::tracer {
 
 uint64_t pass_seed(uint64_t seed, int pass) {
-    // SplitMix64 finaliser: neighbouring (seed, pass) pairs give unrelated seeds.
-    uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (uint64_t(pass) + 1);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
+    // Neighbouring (seed, pass) pairs give unrelated seeds.
+    return splitmix64_finalise(seed + 0x9E3779B97F4A7C15ULL * (uint64_t(pass) + 1));
 }
 
 namespace {

@@ -102,12 +102,7 @@ public:
     }
 
 private:
-    // SplitMix64's finaliser.
-    static uint64_t mix(uint64_t z) {
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-        return z ^ (z >> 31);
-    }
+    static uint64_t mix(uint64_t z) { return splitmix64_finalise(z); }
     static double to_unit(uint32_t x) { return x * 0x1p-32; }
     uint64_t next_pair_hash() {
         --pairs_left_;
