@@ -504,6 +504,9 @@ TEST(SceneLanguageErrors, UnknownIdentifierWrongTypeAndNotSupported) {
               "the camera type 'orthographic' must come first in the camera at test.pov:1:21");
     EXPECT_EQ(error_of("#declare sphere = 1;"),
               "cannot #declare 'sphere': it is a reserved word at test.pov:1:10");
+    EXPECT_EQ(error_of("global_settings { integrator \"photon\" }"),
+              "unknown integrator \"photon\" (expected \"path\", \"bidirectional\" or \"vcm\") "
+              "at test.pov:1:30");
 }
 
 TEST(SceneLanguageErrors, UnclosedBlocksAndExpectedTokens) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string_view>
 
 #include <gtest/gtest.h>
 
@@ -280,6 +281,26 @@ TEST(LightInterface, VcmAgreesWithThePathTracerLayerByLayerOnAnImage) {
                     vcm[l].standard_error);
         EXPECT_NEAR(vcm[l].mean, path[l].mean, 4 * se) << light_layers()[l];
         EXPECT_LT(se, 0.005 * path[l].mean) << light_layers()[l];  // 4 se: 2% at most
+    }
+}
+
+TEST(LightInterface, EveryIntegratorTheSceneLanguageNamesRenders) {
+    // The renderer makes an integrator of every name a scene may give, with the light layers,
+    // and each lights the closed box's walls.
+    for (const std::string_view name : kIntegratorNames) {
+        const std::string integrator(name);
+        SCOPED_TRACE(integrator);
+        EXPECT_EQ(integrator_layers(integrator), light_layers());
+        test::ClosedBox box;
+        box.cells = 2, box.integrator = integrator;
+        box.more = "camera { location <0, 0, -45> look_at <0, -10, 50> angle 90 }\n" +
+                   std::string(kPovLights[0].text);
+        RenderSettings settings;
+        settings.width = 8, settings.height = 6, settings.passes = 1, settings.seed = 3;
+        settings.photons_per_pass = 4096;
+        const RenderResult r = render_text(test::closed_box_scene(box), settings);
+        ASSERT_EQ(r.layers.size(), 3u);
+        EXPECT_GT(image_layer(r, kPrimary).mean, 0);
     }
 }
 

@@ -42,12 +42,6 @@ std::vector<Vec3> gather_points(const std::vector<std::vector<Point>>& points,
     return out;
 }
 
-// Camera samples per pixel and receiver cell in one pass: as many as make the pass's camera
-// paths about as many as its photons, at least one.
-int camera_samples_per_pass(uint64_t photons_per_pass, size_t camera_points) {
-    return int(std::max<uint64_t>(1, photons_per_pass / std::max<uint64_t>(1, camera_points)));
-}
-
 template <class Q>
 class BidirectionalPasses : public Integrator {
 public:
@@ -69,21 +63,17 @@ public:
     void end_pass(int pass, const SamplePoints& points, PassValues& values,
                   std::atomic<uint64_t>& rays, StopFlag stop) override;
     void pass_completed(RenderResult& result) override;
-    bool first_pass_sets_outcome() const override {
-        return !lights_.empty() && !(base_radius_ > 0);
-    }
+    bool first_pass_sets_outcome() const override { return !lights_.empty() && !radius_.known(); }
     std::vector<double> first_pass_outcome() override {
-        if (!(base_radius_ > 0))
-            base_radius_ = default_radius(gather_points(visible_, *receivers_));
-        return {base_radius_};
+        if (!radius_.known())
+            radius_.set_first(default_radius(gather_points(visible_, *receivers_)));
+        return {radius_.first()};
     }
     void set_first_pass_outcome(const std::vector<double>& outcome) override {
-        base_radius_ = outcome.at(0);
+        radius_.set_first(outcome.at(0));
     }
 
 private:
-    // The gather radius of a pass: shrinking pass after pass from that of pass base_pass_.
-    double radius(int pass) const;
     std::vector<Photon> trace_photons(int pass, std::atomic<uint64_t>& rays, StopFlag stop) const;
     void gather(const SamplePoints& points, const Grid& grid, PassValues& values) const;
 
@@ -95,8 +85,7 @@ private:
     uint64_t seed_;
     uint64_t photons_per_pass_;
     int samples_;
-    int base_pass_;
-    double base_radius_;  // 0 until the first pass's visible points give it
+    PassRadius radius_;  // unknown until the first pass's visible points give it
     // The pass under way: visible points by tile (each tile's written by one thread), memory.
     mutable std::vector<std::vector<Point>> visible_;
     const std::vector<ReceiverMap>* receivers_ = nullptr;
@@ -111,28 +100,11 @@ BidirectionalPasses<Q>::BidirectionalPasses(const RenderScene& scene,
       integrator_(scene, lights_),
       path_(scene, no_lights_),
       ordinary_(has_ordinary_light(scene)),
-      seed_(settings.seed) {
-    size_t points = settings.render_image ? size_t(settings.width) * settings.height : 0;
-    for (const IlluminanceReceiver& r : scene.description().receivers)
-        points += size_t(r.nx) * r.ny;
-    photons_per_pass_ = settings.photons_per_pass > 0
-                            ? uint64_t(settings.photons_per_pass)
-                            : std::max<uint64_t>(kMinimumLightPathsPerPass, points);
-    // Camera work balanced against photon work: a small image or a receiver-only render takes
-    // several samples per pixel and cell in each pass rather than leave the photon pass (and its
-    // fixed cost) to dominate; the primary light and antialiasing converge that much faster.
-    samples_ = camera_samples_per_pass(photons_per_pass_, points);
-    // A continued render goes on from the radius its last pass used.
-    base_pass_ = start.passes;
-    base_radius_ = start.passes > 0 ? shrunk_radius(start.photon_radius, start.passes)
-                                    : settings.photon_radius;
-}
-
-template <class Q>
-double BidirectionalPasses<Q>::radius(int pass) const {
-    double r = base_radius_;
-    for (int k = base_pass_ + 1; k <= pass; ++k) r = shrunk_radius(r, k);
-    return r;
+      seed_(settings.seed),
+      radius_(settings.photon_radius, start.passes, start.photon_radius) {
+    const LightPathBudget budget = light_path_budget(scene, settings);
+    photons_per_pass_ = budget.light_paths;
+    samples_ = budget.camera_samples;
 }
 
 template <class Q>
@@ -161,11 +133,11 @@ template <class Q>
 void BidirectionalPasses<Q>::end_pass(int pass, const SamplePoints& points, PassValues& values,
                                       std::atomic<uint64_t>& rays, StopFlag stop) {
     if (lights_.empty() || points.size() == 0 || stopped(stop)) return;
-    if (!(base_radius_ > 0))
-        base_radius_ = default_radius(gather_points(visible_, *points.receivers));
+    if (!radius_.known())
+        radius_.set_first(default_radius(gather_points(visible_, *points.receivers)));
     std::vector<Photon> photons = trace_photons(pass, rays, stop);
     if (stopped(stop)) return;
-    const Grid grid(std::move(photons), radius(pass));
+    const Grid grid(std::move(photons), radius_.at(pass));
     size_t visible_points = 0;
     for (const auto& tile_points : visible_) visible_points += tile_points.size();
     photon_bytes_ = std::max(photon_bytes_, grid.memory_bytes());
@@ -229,7 +201,7 @@ void BidirectionalPasses<Q>::gather(const SamplePoints& points, const Grid& grid
 template <class Q>
 void BidirectionalPasses<Q>::pass_completed(RenderResult& result) {
     result.photons += lights_.empty() ? 0 : photons_per_pass_;
-    result.photon_radius = radius(result.passes - 1);
+    result.photon_radius = radius_.at(result.passes - 1);
     result.photon_bytes = std::max(result.photon_bytes, photon_bytes_);
     result.visible_point_bytes = std::max(result.visible_point_bytes, visible_point_bytes_);
 }

@@ -23,6 +23,31 @@ constexpr double kSameSurfaceCos = 0.9;
 // The radius after `passes_done` passes, the last of them gathered with `radius`.
 double shrunk_radius(double radius, int passes_done);
 
+// The gather radius of every pass of one render. A continued render goes on from the radius
+// its last pass used (`passes_done` passes, the last gathered with `last_radius`); a new one
+// starts from `radius`, where 0 means unknown until the integrator measures it over the first
+// pass (default_radius) and sets it.
+class PassRadius {
+public:
+    PassRadius(double radius, int passes_done, double last_radius)
+        : first_(passes_done > 0 ? shrunk_radius(last_radius, passes_done) : radius),
+          first_pass_(passes_done) {}
+    bool known() const { return first_ > 0; }
+    // The radius of this render's first pass.
+    double first() const { return first_; }
+    void set_first(double radius) { first_ = radius; }
+    // The radius of `pass`, from the first pass's shrunk pass after pass.
+    double at(int pass) const {
+        double r = first_;
+        for (int k = first_pass_ + 1; k <= pass; ++k) r = shrunk_radius(r, k);
+        return r;
+    }
+
+private:
+    double first_;
+    int first_pass_;
+};
+
 // The first pass's radius when none is given: a hundredth of the diagonal of the box holding the
 // middle 90% of `points` along each axis (where gathers happen), so that a floor plane seen to
 // its horizon does not make every gather as wide as the floor; 1 without points.

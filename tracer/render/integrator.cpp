@@ -32,7 +32,7 @@ const std::vector<IntegratorEntry>& integrators() {
 const IntegratorEntry& integrator_named(const std::string& name) {
     for (const IntegratorEntry& entry : integrators())
         if (name == entry.name) return entry;
-    throw Error("unknown integrator \"" + name + "\" (path, bidirectional or vcm)");
+    throw Error("unknown integrator \"" + name + "\" (expected " + integrator_names_text() + ")");
 }
 
 }  // namespace
@@ -77,6 +77,19 @@ std::unique_ptr<Integrator> make_integrator(const RenderScene& scene,
 
 std::vector<std::string> integrator_layers(const std::string& name) {
     return integrator_named(name).layers;
+}
+
+LightPathBudget light_path_budget(const RenderScene& scene, const RenderSettings& settings) {
+    size_t points = settings.render_image ? size_t(settings.width) * settings.height : 0;
+    for (const IlluminanceReceiver& r : scene.description().receivers)
+        points += size_t(r.nx) * r.ny;
+    LightPathBudget budget;
+    budget.light_paths = settings.photons_per_pass > 0
+                             ? uint64_t(settings.photons_per_pass)
+                             : std::max<uint64_t>(kMinimumLightPathsPerPass, points);
+    budget.camera_samples =
+        int(std::max<uint64_t>(1, budget.light_paths / std::max<uint64_t>(1, points)));
+    return budget;
 }
 
 bool spectral_transport(const RenderScene& scene, const RenderSettings& settings) {

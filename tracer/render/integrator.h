@@ -75,6 +75,18 @@ inline LightComponent layer_after_scattering(LightComponent segment, bool delta)
 // pass: a small image's pass would otherwise carry too few to gather from.
 constexpr uint64_t kMinimumLightPathsPerPass = 65536;
 
+// The light paths a pass of such an integrator starts, and the camera samples per pixel and
+// receiver cell that balance them: the settings' photons a pass when given, else one for each
+// sample point but at least kMinimumLightPathsPerPass; as many camera samples as make the
+// pass's camera paths about as many as its light paths, at least one. A small image or a
+// receiver-only render so takes several samples in each pass rather than leave the light paths
+// (and their fixed cost) to dominate.
+struct LightPathBudget {
+    uint64_t light_paths = 0;
+    int camera_samples = 1;
+};
+LightPathBudget light_path_budget(const RenderScene& scene, const RenderSettings& settings);
+
 // The most vertices a path may have in any integrator: a cap far beyond what Russian roulette
 // lets live.
 constexpr int kMaxPathVertices = 256;

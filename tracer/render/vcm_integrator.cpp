@@ -103,7 +103,6 @@ private:
         LightComponent segment_layer = kDirectVisibility;
     };
 
-    double radius(int pass) const;
     // The light subpaths of `pass`: their vertices, path after path (where each path's begin
     // is kept in path_first_).
     std::vector<LightVertex> trace_light_paths(int pass, std::atomic<uint64_t>& rays);
@@ -137,8 +136,7 @@ private:
     uint64_t seed_;
     uint64_t light_paths_;
     int samples_;
-    int base_pass_;
-    double base_radius_;  // 0 until the first pass measures it over the view
+    PassRadius radius_;  // unknown until the first pass measures it over the view
     // The pass under way.
     double eta_ = 1, merge_normalisation_ = 0;
     std::vector<uint32_t> path_first_;
@@ -165,31 +163,18 @@ std::vector<Vec3> camera_hits(const RenderScene& scene, const SamplePoints& poin
 
 VcmPasses::VcmPasses(const RenderScene& scene, const RenderSettings& settings,
                      const RenderResult& start)
-    : scene_(scene), lights_(scene.description(), scene.units(), false), seed_(settings.seed) {
-    size_t points = settings.render_image ? size_t(settings.width) * settings.height : 0;
-    for (const IlluminanceReceiver& r : scene.description().receivers)
-        points += size_t(r.nx) * r.ny;
-    light_paths_ = settings.photons_per_pass > 0
-                       ? uint64_t(settings.photons_per_pass)
-                       : std::max<uint64_t>(kMinimumLightPathsPerPass, points);
-    samples_ = int(std::max<uint64_t>(1, light_paths_ / std::max<size_t>(1, points)));
-    base_pass_ = start.passes;
-    base_radius_ = start.passes > 0 ? shrunk_radius(start.photon_radius, start.passes)
-                                    : settings.photon_radius;
-}
-
-double VcmPasses::radius(int pass) const {
-    double r = base_radius_;
-    for (int k = base_pass_ + 1; k <= pass; ++k) r = shrunk_radius(r, k);
-    return r;
+    : scene_(scene),
+      lights_(scene.description(), scene.units(), false),
+      seed_(settings.seed),
+      radius_(settings.photon_radius, start.passes, start.photon_radius) {
+    const LightPathBudget budget = light_path_budget(scene, settings);
+    light_paths_ = budget.light_paths;
+    samples_ = budget.camera_samples;
 }
 
 void VcmPasses::begin_pass(int pass, const SamplePoints& points, std::atomic<uint64_t>& rays) {
-    if (!(base_radius_ > 0)) {
-        base_radius_ = default_radius(camera_hits(scene_, points));
-        base_pass_ = 0;
-    }
-    const double r = radius(pass);
+    if (!radius_.known()) radius_.set_first(default_radius(camera_hits(scene_, points)));
+    const double r = radius_.at(pass);
     eta_ = kPi * r * r * double(light_paths_);
     merge_normalisation_ = 1 / eta_;
     grid_ = std::make_unique<PhotonGridOf<LightVertex>>(trace_light_paths(pass, rays), r);
@@ -490,7 +475,7 @@ void VcmPasses::merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk&
 
 void VcmPasses::pass_completed(RenderResult& result) {
     result.photons += lights_.empty() ? 0 : light_paths_;
-    result.photon_radius = radius(result.passes - 1);
+    result.photon_radius = radius_.at(result.passes - 1);
     result.photon_bytes = std::max(result.photon_bytes, vertex_bytes_);
 }
 

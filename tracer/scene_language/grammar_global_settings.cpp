@@ -1,6 +1,7 @@
 // global_settings { }: every POV-Ray 3.7 key (the radiosity, photons and subsurface blocks with
 // POV-Ray's checks) and our own keys. Several global_settings statements add up, a later value
 // replacing an earlier one, as in POV-Ray.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -359,10 +360,10 @@ bool parse_own_key(Parser& p, const Token& token, GlobalSettings& g) {
     } else if (token.is(ContextWord::integrator)) {
         const Token at = p.peek();
         const std::string name = p.parse_string();
-        if (name != "path" && name != "bidirectional" && name != "vcm")
-            p.fail(at, fmt::format("unknown integrator \"{}\" (expected \"path\", "
-                                   "\"bidirectional\" or \"vcm\")",
-                                   name));
+        if (std::find(kIntegratorNames.begin(), kIntegratorNames.end(), name) ==
+            kIntegratorNames.end())
+            p.fail(at, fmt::format("unknown integrator \"{}\" (expected {})", name,
+                                   integrator_names_text()));
         g.integrator = name;
     } else if (token.is(ContextWord::spectral)) {
         g.spectral = p.parse_float("after 'spectral' (on or off)") != 0;

@@ -5,10 +5,12 @@
 // POV-Ray).
 #pragma once
 
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tracer/scene_language/appearance.h"
@@ -186,6 +188,22 @@ struct SubsurfaceSettings {
 
 enum class Charset { ascii, utf8, sys };
 
+// The integrators a scene may name (global_settings { integrator "..." }), the default first.
+// The renderer has one of each name (tracer/render/integrator.cpp).
+inline constexpr std::array<std::string_view, 3> kIntegratorNames = {"path", "bidirectional",
+                                                                     "vcm"};
+// The names for a message: "path", "bidirectional" or "vcm".
+inline std::string integrator_names_text() {
+    std::string text;
+    for (size_t i = 0; i < kIntegratorNames.size(); ++i) {
+        if (i > 0) text += i + 1 < kIntegratorNames.size() ? ", " : " or ";
+        text += '"';
+        text += kIntegratorNames[i];
+        text += '"';
+    }
+    return text;
+}
+
 struct GlobalSettings {
     double adc_bailout = 1.0 / 255;   // adaptive depth control: smallest ray contribution traced
     Rgb ambient_light{1, 1, 1};       // factor on every finish's ambient
@@ -206,10 +224,10 @@ struct GlobalSettings {
     // Our keys.
     std::string length_unit = "mm";  // mm, cm, m, in, ft
     double millimetres_per_unit = 1.0;
-    std::string integrator = "path";  // "path", "bidirectional" or "vcm"
-    bool spectral = false;            // bidirectional: spectral transport (`spectral on`)
-    int passes = 0;                   // 0: the renderer's default
-    double time_limit = 0;            // seconds; 0: no limit
+    std::string integrator{kIntegratorNames[0]};  // one of kIntegratorNames
+    bool spectral = false;  // bidirectional: spectral transport (`spectral on`)
+    int passes = 0;         // 0: the renderer's default
+    double time_limit = 0;  // seconds; 0: no limit
 };
 
 // fog { }: a colour blended in with the distance a ray travels.
