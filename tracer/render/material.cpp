@@ -448,7 +448,11 @@ Vec3 tilted(Vec3 shading_normal, Vec3 bump) {
 template <class Q>
 BsdfOf<Q>::BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo,
                   const WavelengthsFor<Q>& wavelengths)
-    : m_(material), c_(lobe_colours(material, wavelengths)), wo_(wo) {
+    : m_(material),
+      c_(lobe_colours(material, wavelengths)),
+      wo_(wo),
+      normal_(normal),
+      shading_normal_(shading_normal) {
     entering_ = dot(wo, normal) >= 0;
     n_ = entering_ ? normal : -normal;
     shading_normal = tilted(shading_normal, material.bump);
@@ -536,15 +540,29 @@ Q BsdfOf<Q>::eval(Vec3 wi) const {
 
 template <class Q>
 double BsdfOf<Q>::pdf(Vec3 wi) const {
-    const double cos_i = dot(wi, ns_);
-    if (cos_i <= 0 || dot(wi, n_) <= 0) return 0;
+    return smooth_pdf(wi, wo_);
+}
+
+template <class Q>
+double BsdfOf<Q>::smooth_pdf(Vec3 sampled, Vec3 given) const {
+    const double cos_i = dot(sampled, ns_);
+    if (cos_i <= 0 || dot(sampled, n_) <= 0) return 0;
     double p = p_diffuse_ * cos_i / kPi;
     if (p_glossy_ > 0) {
-        const double c = dot(wi, reflect(wo_, ns_));
+        const double c = dot(sampled, reflect(given, ns_));
         if (c > 0)
             p += p_glossy_ * (m_.glossy_exponent + 1) / (2 * kPi) * std::pow(c, m_.glossy_exponent);
     }
     return p;
+}
+
+template <class Q>
+double BsdfOf<Q>::pdf_reversed(Vec3 wi) const {
+    if (!is_black(m_.mirror_max)) return BsdfOf<Rgb>(m_, normal_, shading_normal_, wi).pdf(wo_);
+    // The BSDF made for wi has the same lobe probabilities, and the same normals when wi is on
+    // wo's side; from the other side it reflects nothing toward wo.
+    if (!((dot(wi, normal_) >= 0) == entering_)) return 0;
+    return smooth_pdf(wo_, wi);
 }
 
 template <class Q>

@@ -114,6 +114,11 @@ public:
     // glossy_factor x glossy albedo, for light carried at other wavelengths (photons).
     void smooth_factors(Vec3 wi, double& diffuse_factor, double& glossy_factor) const;
     double pdf(Vec3 wi) const;
+    // The density with which the BSDF of the same point made for `wi` samples the direction
+    // this one was made for: the way back along a path, as bidirectional weights want it.
+    // Without a mirror lobe the lobes' probabilities do not depend on the outgoing direction,
+    // and it is this BSDF's pdf with the two directions exchanged (no second BSDF to make).
+    double pdf_reversed(Vec3 wi) const;
     bool sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out) const;
     // The normal on the side `wo` is on: where reflected rays leave from.
     Vec3 facing_normal() const { return n_; }
@@ -121,6 +126,8 @@ public:
     Vec3 shading_normal() const { return ns_; }
 
 private:
+    // The smooth lobes' density of sampling `sampled` given the other direction `given`.
+    double smooth_pdf(Vec3 sampled, Vec3 given) const;
     double mirror_fraction() const;  // of the way from mirror_min to mirror_max
     Rgb mirror_weight_rgb() const;   // what the lobe choice uses
     Q mirror_weight() const;
@@ -131,6 +138,7 @@ private:
     const Material& m_;
     LobeColours<Q> c_;
     Vec3 wo_, n_, ns_;
+    Vec3 normal_, shading_normal_;  // as given, for pdf_reversed()
     bool entering_;
     // The diffuse lobe's scale: 1, or more where the shading normal is tilted off the
     // geometric one, so that the lobe still reflects its whole albedo above the surface.

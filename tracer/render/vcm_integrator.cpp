@@ -94,8 +94,7 @@ public:
 private:
     // A camera path's vertex, and where its light goes.
     struct CameraVertex {
-        Vec3 point, normal, shading_normal, wo;
-        const Material* material;
+        Vec3 point, normal, wo;
         bool merging;  // a scene surface (light subpaths end there), not a receiver point
     };
     struct CameraWalk : Walk {
@@ -127,9 +126,9 @@ private:
     // Merged light, the part whose light vertex is its subpath's first apart.
     void merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Rgb& first,
                Rgb& later) const;
-    // The density of sampling x.wo at vertex x for a path that arrives from `wi`: the way back
-    // to the camera side. Evaluated only where it has a weight (a BSDF costs a few divisions).
-    double reverse_pdf(const CameraVertex& x, double weight, Vec3 wi) const;
+    // The density of sampling x.wo at a camera vertex x (`bsdf` its BSDF) for a path that
+    // arrives from `wi`: the way back to the camera side. Evaluated only where it has a weight.
+    double reverse_pdf(const Bsdf& bsdf, double weight, Vec3 wi) const;
 
     const RenderScene& scene_;
     LightSet lights_;
@@ -271,8 +270,7 @@ void VcmPasses::trace_light_path(uint64_t index, uint64_t seed, std::vector<Ligh
         if (walk.vertices >= kMaxPathVertices || !bsdf.sample(u_lobe, u1, u2, s) ||
             is_black(s.weight))
             return;
-        const double reverse =
-            s.delta ? 0 : Bsdf(material, hit.normal, hit.shading_normal, s.wi).pdf(wi);
+        const double reverse = s.delta ? 0 : bsdf.pdf_reversed(s.wi);
         scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse,
                         std::fabs(dot(hit.normal, s.wi)), eta_, smooth);
         // Roulette keeps the surviving subpaths' weight near the emitted one.
@@ -305,7 +303,7 @@ void VcmPasses::camera_sample(const CameraRay& ray, const SampleSink& sink, Samp
 // whose reflected radiance is the irradiance.
 void VcmPasses::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink, Sampler& sampler,
                                 uint64_t& rays) const {
-    const CameraVertex x{point, normal, normal, normal, &white_lambertian(), false};
+    const CameraVertex x{point, normal, normal, false};
     const Bsdf bsdf(white_lambertian(), normal, normal, normal);
     CameraWalk walk;
     walk.beta = Rgb{kPi, kPi, kPi};
@@ -350,8 +348,7 @@ void VcmPasses::trace_camera(CameraWalk& walk, Sampler& sampler, uint64_t& rays,
         if (!(cos_in > 0)) return;
         arrive_weights(walk.weights, hit.t, cos_in);
         ++walk.vertices;
-        const CameraVertex x{hit.point,       hit.normal, hit.shading_normal,
-                             -walk.direction, &material,  true};
+        const CameraVertex x{hit.point, hit.normal, -walk.direction, true};
         const Bsdf bsdf(material, hit.normal, hit.shading_normal, x.wo);
         if (!scatter(x, bsdf, walk, sampler, rays, sum)) return;
     }
@@ -383,7 +380,7 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     sampler.get_2d(u1, u2);
     if (walk.vertices >= kMaxPathVertices || !bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight))
         return false;
-    const double reverse = s.delta ? 0 : reverse_pdf(x, walk.weights.vc + walk.weights.vm, s.wi);
+    const double reverse = s.delta ? 0 : reverse_pdf(bsdf, walk.weights.vc + walk.weights.vm, s.wi);
     scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse, std::fabs(dot(x.normal, s.wi)),
                     eta_, smooth && x.merging);
     walk.segment_layer = layer_after_scattering(walk.segment_layer, s.delta);
@@ -394,8 +391,8 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     return walk.vertices + 1 < kCameraRouletteDepth || survives_roulette(walk.beta, rng);
 }
 
-double VcmPasses::reverse_pdf(const CameraVertex& x, double weight, Vec3 wi) const {
-    return weight > 0 ? Bsdf(*x.material, x.normal, x.shading_normal, wi).pdf(x.wo) : 0;
+double VcmPasses::reverse_pdf(const Bsdf& bsdf, double weight, Vec3 wi) const {
+    return weight > 0 ? bsdf.pdf_reversed(wi) : 0;
 }
 
 Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
@@ -416,7 +413,7 @@ Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const Camer
     const double w_light = bsdf_pdf / sample->pdf;
     const double w_camera = emission_pdf * cos_x / direct *
                             ((x.merging ? eta_ : 0) + walk.weights.vcm +
-                             walk.weights.vc * reverse_pdf(x, walk.weights.vc, sample->wi));
+                             walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, sample->wi));
     const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), sample->wi);
     ++rays;
     if (scene_.occluded(origin, sample->wi, 0, d - scene_.epsilon())) return {};
@@ -441,10 +438,10 @@ Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraW
     // Each side's density of reaching the other's vertex, per unit area there.
     const double camera_to_y = bsdf.pdf(w) * cos_y / distance2;
     const double light_to_x = bsdf_y.pdf(-w) * cos_x / distance2;
-    const double y_reverse = Bsdf(material, y.normal, y.shading_normal, -w).pdf(y.wi);
+    const double y_reverse = bsdf_y.pdf_reversed(-w);
     const double w_light = camera_to_y * (eta_ + y.weights.vcm + y.weights.vc * y_reverse);
     const double w_camera = light_to_x * ((x.merging ? eta_ : 0) + walk.weights.vcm +
-                                          walk.weights.vc * reverse_pdf(x, walk.weights.vc, w));
+                                          walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, w));
     const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), w);
     const Vec3 target = scene_.offset(y.position, y.facing, -w);
     const Vec3 between = target - origin;
@@ -465,7 +462,7 @@ void VcmPasses::merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk&
         if (is_black(f)) return;
         const double w_light = y.weights.vcm / eta_ + y.weights.vm * bsdf.pdf(y.wi);
         const double w_camera =
-            walk.weights.vcm / eta_ + walk.weights.vm * reverse_pdf(x, walk.weights.vm, y.wi);
+            walk.weights.vcm / eta_ + walk.weights.vm * reverse_pdf(bsdf, walk.weights.vm, y.wi);
         // The vertex's weight holds the projected area on its own surface: its cosine out.
         const Rgb light =
             (merge_normalisation_ / ((1 + w_light + w_camera) * cos_i)) * (f * y.beta);
