@@ -448,11 +448,7 @@ Vec3 tilted(Vec3 shading_normal, Vec3 bump) {
 template <class Q>
 BsdfOf<Q>::BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo,
                   const WavelengthsFor<Q>& wavelengths)
-    : m_(material),
-      c_(lobe_colours(material, wavelengths)),
-      wo_(wo),
-      normal_(normal),
-      shading_normal_(shading_normal) {
+    : m_(material), c_(lobe_colours(material, wavelengths)), wo_(wo) {
     entering_ = dot(wo, normal) >= 0;
     n_ = entering_ ? normal : -normal;
     shading_normal = tilted(shading_normal, material.bump);
@@ -462,23 +458,28 @@ BsdfOf<Q>::BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Ve
     // scaled up to carry the whole albedo.
     diffuse_scale_ = 2 / (1 + dot(ns_, n_));
     cos_o_ = std::max(0.0, dot(wo, ns_));
+    const LobeOdds odds = lobe_odds(wo);
+    p_diffuse_ = odds.diffuse, p_glossy_ = odds.glossy, p_mirror_ = odds.mirror,
+    p_dielectric_ = odds.dielectric;
+}
+
+template <class Q>
+typename BsdfOf<Q>::LobeOdds BsdfOf<Q>::lobe_odds(Vec3 wo) const {
     // Lobes are picked in proportion to their average albedo; the channel sums give the same
     // ratios with one division instead of eight (this runs at every hit).
     auto sum = [](Rgb a) { return a.red + a.green + a.blue; };
     const double d = sum(m_.diffuse), g = sum(m_.glossy),
-                 r = is_black(m_.mirror_max) ? 0 : sum(mirror_weight_rgb()),
+                 r = is_black(m_.mirror_max) ? 0 : sum(mirror_weight_rgb(wo)),
                  t = sum(m_.transmission);
     const double total = d + g + r + t;
-    if (total > 0) {
-        const double inverse = 1 / total;
-        p_diffuse_ = d * inverse, p_glossy_ = g * inverse, p_mirror_ = r * inverse,
-        p_dielectric_ = t * inverse;
-    }
+    if (!(total > 0)) return {};
+    const double inverse = 1 / total;
+    return {d * inverse, g * inverse, r * inverse, t * inverse};
 }
 
 template <class Q>
-double BsdfOf<Q>::mirror_fraction() const {
-    const double c = std::max(0.0, dot(wo_, n_));
+double BsdfOf<Q>::mirror_fraction(Vec3 wo) const {
+    const double c = std::max(0.0, dot(wo, n_));
     return m_.mirror_fresnel ? fresnel_dielectric(c, m_.ior > 1 ? m_.ior : 1.5)
                              : std::pow(1 - c, m_.mirror_falloff);
 }
@@ -496,22 +497,24 @@ double metallic_grazing(double cos_o) {
 template <class Q>
 template <class Colour>
 Colour BsdfOf<Q>::mirror_weight_of(const Colour& min, const Colour& max, const Colour& min_metal,
-                                   const Colour& max_metal) const {
-    const double fraction = mirror_fraction();
+                                   const Colour& max_metal, Vec3 wo) const {
+    const double fraction = mirror_fraction(wo);
     const Colour plain = min + fraction * (max - min);
     if (m_.mirror_metallic == 0) return plain;
-    const double metal = m_.mirror_metallic * (1 - metallic_grazing(std::max(0.0, dot(wo_, n_))));
+    const double metal = m_.mirror_metallic * (1 - metallic_grazing(std::max(0.0, dot(wo, n_))));
     return (1 - metal) * plain + metal * (min_metal + fraction * (max_metal - min_metal));
 }
 
 template <class Q>
-Rgb BsdfOf<Q>::mirror_weight_rgb() const {
-    return mirror_weight_of(m_.mirror_min, m_.mirror_max, m_.mirror_min_metal, m_.mirror_max_metal);
+Rgb BsdfOf<Q>::mirror_weight_rgb(Vec3 wo) const {
+    return mirror_weight_of(m_.mirror_min, m_.mirror_max, m_.mirror_min_metal, m_.mirror_max_metal,
+                            wo);
 }
 
 template <class Q>
 Q BsdfOf<Q>::mirror_weight() const {
-    return mirror_weight_of(c_.mirror_min, c_.mirror_max, c_.mirror_min_metal, c_.mirror_max_metal);
+    return mirror_weight_of(c_.mirror_min, c_.mirror_max, c_.mirror_min_metal, c_.mirror_max_metal,
+                            wo_);
 }
 
 template <class Q>
@@ -540,29 +543,31 @@ Q BsdfOf<Q>::eval(Vec3 wi) const {
 
 template <class Q>
 double BsdfOf<Q>::pdf(Vec3 wi) const {
-    return smooth_pdf(wi, wo_);
+    return smooth_pdf(wi, wo_, p_diffuse_, p_glossy_);
 }
 
 template <class Q>
-double BsdfOf<Q>::smooth_pdf(Vec3 sampled, Vec3 given) const {
+double BsdfOf<Q>::smooth_pdf(Vec3 sampled, Vec3 given, double p_diffuse, double p_glossy) const {
     const double cos_i = dot(sampled, ns_);
     if (cos_i <= 0 || dot(sampled, n_) <= 0) return 0;
-    double p = p_diffuse_ * cos_i / kPi;
-    if (p_glossy_ > 0) {
+    double p = p_diffuse * cos_i / kPi;
+    if (p_glossy > 0) {
         const double c = dot(sampled, reflect(given, ns_));
         if (c > 0)
-            p += p_glossy_ * (m_.glossy_exponent + 1) / (2 * kPi) * std::pow(c, m_.glossy_exponent);
+            p += p_glossy * (m_.glossy_exponent + 1) / (2 * kPi) * std::pow(c, m_.glossy_exponent);
     }
     return p;
 }
 
 template <class Q>
 double BsdfOf<Q>::pdf_reversed(Vec3 wi) const {
-    if (!is_black(m_.mirror_max)) return BsdfOf<Rgb>(m_, normal_, shading_normal_, wi).pdf(wo_);
-    // The BSDF made for wi has the same lobe probabilities, and the same normals when wi is on
-    // wo's side; from the other side it reflects nothing toward wo.
-    if (!((dot(wi, normal_) >= 0) == entering_)) return 0;
-    return smooth_pdf(wo_, wi);
+    // The BSDF made for wi has the same normals when wi is on wo's side (from the other side
+    // it reflects nothing toward wo), and the same lobe odds unless a mirror lobe's weight
+    // changes with the direction.
+    if (dot(wi, n_) < 0 || (dot(wi, n_) == 0 && !entering_)) return 0;
+    if (is_black(m_.mirror_max)) return smooth_pdf(wo_, wi, p_diffuse_, p_glossy_);
+    const LobeOdds odds = lobe_odds(wi);
+    return smooth_pdf(wo_, wi, odds.diffuse, odds.glossy);
 }
 
 template <class Q>

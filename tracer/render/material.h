@@ -116,8 +116,8 @@ public:
     double pdf(Vec3 wi) const;
     // The density with which the BSDF of the same point made for `wi` samples the direction
     // this one was made for: the way back along a path, as bidirectional weights want it.
-    // Without a mirror lobe the lobes' probabilities do not depend on the outgoing direction,
-    // and it is this BSDF's pdf with the two directions exchanged (no second BSDF to make).
+    // Computed here with the two directions exchanged and, for a mirror lobe, the lobe odds
+    // of `wi`: no second BSDF to make.
     double pdf_reversed(Vec3 wi) const;
     bool sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out) const;
     // The normal on the side `wo` is on: where reflected rays leave from.
@@ -126,19 +126,24 @@ public:
     Vec3 shading_normal() const { return ns_; }
 
 private:
-    // The smooth lobes' density of sampling `sampled` given the other direction `given`.
-    double smooth_pdf(Vec3 sampled, Vec3 given) const;
-    double mirror_fraction() const;  // of the way from mirror_min to mirror_max
-    Rgb mirror_weight_rgb() const;   // what the lobe choice uses
+    // The probabilities of picking each lobe for light leaving toward `wo`.
+    struct LobeOdds {
+        double diffuse = 0, glossy = 0, mirror = 0, dielectric = 0;
+    };
+    LobeOdds lobe_odds(Vec3 wo) const;
+    // The smooth lobes' density of sampling `sampled` given the other direction `given`, with
+    // the lobes picked by these odds.
+    double smooth_pdf(Vec3 sampled, Vec3 given, double p_diffuse, double p_glossy) const;
+    double mirror_fraction(Vec3 wo) const;  // of the way from mirror_min to mirror_max
+    Rgb mirror_weight_rgb(Vec3 wo) const;   // what the lobe choice uses
     Q mirror_weight() const;
     template <class Colour>
     Colour mirror_weight_of(const Colour& min, const Colour& max, const Colour& min_metal,
-                            const Colour& max_metal) const;
+                            const Colour& max_metal, Vec3 wo) const;
 
     const Material& m_;
     LobeColours<Q> c_;
     Vec3 wo_, n_, ns_;
-    Vec3 normal_, shading_normal_;  // as given, for pdf_reversed()
     bool entering_;
     // The diffuse lobe's scale: 1, or more where the shading normal is tilted off the
     // geometric one, so that the lobe still reflects its whole albedo above the surface.

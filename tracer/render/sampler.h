@@ -40,7 +40,8 @@ public:
     // past the sequence, from `rng`.
     Sampler(Pcg32& rng, uint64_t seed, uint64_t point, uint32_t index)
         : rng_(rng),
-          point_hash_(mix(seed ^ mix(point + 0x9E3779B97F4A7C15ULL))),
+          point_hash_(
+              splitmix64_finalise(seed ^ splitmix64_finalise(point + 0x9E3779B97F4A7C15ULL))),
           reversed_index_(reverse_bits(index)),
           pairs_left_(kSequencePairs) {}
 
@@ -63,7 +64,8 @@ public:
         const uint64_t h = next_pair_hash();
         const uint32_t i = shuffled(h);
         u1 = to_unit(reverse_bits(laine_karras(i, uint32_t(h >> 32))));
-        u2 = to_unit(reverse_bits(laine_karras(second_dimension_reversed(i), uint32_t(mix(h)))));
+        u2 = to_unit(reverse_bits(
+            laine_karras(second_dimension_reversed(i), uint32_t(splitmix64_finalise(h)))));
     }
 
     // The stream past the sequence, for what the sequence does not cover.
@@ -102,11 +104,11 @@ public:
     }
 
 private:
-    static uint64_t mix(uint64_t z) { return splitmix64_finalise(z); }
     static double to_unit(uint32_t x) { return x * 0x1p-32; }
     uint64_t next_pair_hash() {
         --pairs_left_;
-        return mix(point_hash_ + uint64_t(kSequencePairs - pairs_left_) * 0x9E3779B97F4A7C15ULL);
+        return splitmix64_finalise(point_hash_ +
+                                   uint64_t(kSequencePairs - pairs_left_) * 0x9E3779B97F4A7C15ULL);
     }
     // The pair's shuffled index: the sample index Owen-scrambled with its least significant
     // bit as the top digit.
