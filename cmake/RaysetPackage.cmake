@@ -1,6 +1,7 @@
 # The CMake package: `cmake --install build --prefix P` puts the public headers (include/rayset/)
 # in P/include/rayset/ and the internal ones they include beside them (P/include/rayset/core/,
-# converters/, lightmodel/, tracer/, viz/), the libraries under P/lib, the tools under P/bin and
+# converters/, lightmodel/, tracer/, viz/), the libraries under P/lib, the modules loaded at run
+# time (the image reader) under P/lib/rayset, the tools under P/bin and
 # rayset-config.cmake under P/lib/cmake/rayset, so that another project's
 # find_package(rayset CONFIG) gives it rayset::core, rayset::converters, rayset::scene_language,
 # rayset::lightmodel, rayset::tracer and rayset::viz (examples/consumer/ is such a project).
@@ -10,6 +11,8 @@ include(GNUInstallDirs)
 
 set(RAYSET_INSTALL_INCLUDEDIR "${CMAKE_INSTALL_INCLUDEDIR}/rayset")
 set(RAYSET_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/rayset")
+# Modules loaded at run time (the image reader), at the same place in the build tree.
+set(RAYSET_INSTALL_MODULEDIR "${CMAKE_INSTALL_LIBDIR}/rayset")
 
 # Two include directories, in the source tree and installed alike: include/ (P/include), where
 # the public headers are <rayset/NAME.h> (docs/api.md), and the source root (P/include/rayset),

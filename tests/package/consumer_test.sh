@@ -41,6 +41,53 @@ cmake -S "$headers" -B "$headers/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/pref
   > "$work/headers-configure.log"
 cmake --build "$headers/build" > "$work/headers-build.log"
 echo "public headers compile alone: $(cd "$work/prefix/include/rayset" && echo *.h)"
+# Images are read through a module loaded on the first image (image_reader_module.h), found
+# through the run path: the installed raytrace renders a PNG and then a scene that maps it, and
+# a project linking rayset::scene_language parses that scene, both failing if it is not found.
+cat > "$work/gradient.pov" <<'POV'
+#version 3.7;
+camera { orthographic location <0.5, 0.5, -1> look_at <0.5, 0.5, 0> right x up y }
+plane { z, 0 pigment { gradient x } finish { emission 1 ambient 0 diffuse 0 } }
+POV
+(cd "$work" && "$work/prefix/bin/raytrace" gradient.pov +W8 +H8 --passes 1 -o gradient.png \
+  > /dev/null)
+cat > "$work/mapped.pov" <<'POV'
+#version 3.7;
+camera { orthographic location <0.5, 0.5, -1> look_at <0.5, 0.5, 0> right x up y }
+plane { z, 0 pigment { image_map { png "gradient.png" } }
+  finish { emission 1 ambient 0 diffuse 0 } }
+POV
+(cd "$work" && "$work/prefix/bin/raytrace" mapped.pov +W8 +H8 --passes 1 -o mapped.png \
+  > /dev/null)
+reader=$work/scene-reader
+mkdir -p "$reader"
+cat > "$reader/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.22)
+project(rayset_scene_reader LANGUAGES C CXX)
+set(CMAKE_CXX_STANDARD 17)
+find_package(rayset CONFIG REQUIRED)
+add_executable(scene_reader scene_reader.cpp)
+target_link_libraries(scene_reader PRIVATE rayset::scene_language)
+CMAKE
+cat > "$reader/scene_reader.cpp" <<'CPP'
+#include <cstdio>
+#include "tracer/scene_language/scene_language.h"
+int main(int argc, char** argv) {
+    const auto scene = rayset::tracer::parse_scene_file(argv[1]);
+    std::printf("%s: %zu objects, %zu files read\n", argv[1], scene.objects.size(),
+                scene.files.size());
+}
+CPP
+cmake -S "$reader" -B "$reader/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" \
+  > "$work/reader-configure.log"
+cmake --build "$reader/build" > "$work/reader-build.log"
+"$reader/build/scene_reader" "$work/mapped.pov"
+for program in "$work/prefix/bin/raytrace" "$reader/build/scene_reader"; do
+  if ldd "$program" | grep -q libOpenImageIO; then
+    echo "$program loads OpenImageIO at start: it belongs in the image reader module" >&2
+    exit 1
+  fi
+done
 "$work/prefix/bin/rayconv" synth disk radius=1 flux=1 --rays 200000 --seed 5 -o "$work/disk.tm25ray" > /dev/null
 "$work/prefix/bin/raymodel" build "$work/disk.tm25ray" -o "$work/disk.vdb" > /dev/null
 "$work/consumer/consumer" "$work/disk.vdb" 200000 | tee "$work/consumer.txt"

@@ -1,17 +1,19 @@
-// Image files read through OpenImageIO (image_file.h).
+// Image files read through the image reader module (image_file.h, image_reader_module.h).
 #include "tracer/scene_language/image_file.h"
+
+#include <dlfcn.h>
 
 #include <cmath>
 #include <csetjmp>
 #include <cstdio>
 #include <fstream>
 
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 #include <png.h>
 
 #include "core/colour.h"
 #include "core/error.h"
+#include "tracer/scene_language/image_reader_module.h"
 
 namespace rayset::tracer {
 namespace {
@@ -99,12 +101,29 @@ void read_palette_indices(const std::string& path, ImagePixels& pixels) {
     std::fclose(file);
 }
 
-// OpenImageIO's messages, one line each, as one line.
-std::string one_line(std::string text) {
-    while (!text.empty() && text.back() == '\n') text.pop_back();
-    for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at))
-        text.replace(at, 1, "; ");
-    return text;
+// The module's entry point, the module loaded on the first call; throws when it cannot be.
+ReadImagePixels image_reader() {
+    struct Loaded {
+        ReadImagePixels read = nullptr;
+        std::string error;
+    };
+    static const Loaded loaded = [] {
+        Loaded l;
+        void* module = dlopen(kImageReaderModule, RTLD_NOW | RTLD_LOCAL);
+        if (module) l.read = reinterpret_cast<ReadImagePixels>(dlsym(module, kImageReaderEntry));
+        if (!l.read) {
+            const char* why = dlerror();
+            l.error = why ? why : "no entry point";
+        }
+        return l;
+    }();
+    if (!loaded.read)
+        throw Error(fmt::format(
+            "cannot read images: the image reader module did not load ({}); it is installed in "
+            "lib/rayset beside the folder of the rayset programs (in the package folder for the "
+            "Python module): reinstall rayset",
+            loaded.error));
+    return loaded.read;
 }
 
 }  // namespace
@@ -142,54 +161,24 @@ std::shared_ptr<const ImagePixels> read_image_file(const std::string& path,
             fmt::format("cannot read the pixels of the image {}: its PNG data is damaged "
                         "or cut short",
                         path));
-    auto input = OIIO::ImageInput::open(path);
-    if (!input)
-        throw Error(
-            fmt::format("cannot read the image {}: {} (PNG, JPEG, GIF, TGA, BMP, TIFF, "
-                        "PPM/PGM, HDR and EXR are read)",
-                        path, one_line(OIIO::geterror())));
-    const OIIO::ImageSpec& spec = input->spec();
-    const int channels = spec.nchannels;
-    if (spec.width <= 0 || spec.height <= 0 || channels <= 0 || spec.depth > 1)
-        throw Error(fmt::format("the image {} has no pixels of its own", path));
     auto pixels = std::make_shared<ImagePixels>();
-    pixels->width = spec.width;
-    pixels->height = spec.height;
-    pixels->has_alpha = spec.alpha_channel >= 0 || channels == 2 || channels == 4;
-    pixels->grey = channels <= 2;
-    const OIIO::TypeDesc format = spec.format;
-    pixels->floating = format.is_floating_point();
-    pixels->bits = int(format.size()) * 8;
-    const std::string format_name = input->format_name();
-    pixels->palette = format_name == "gif" || (format_name == "png" && png_has_palette(path));
-    // A PNG's gAMA chunk comes as the power that decodes it.
-    const float png_gamma =
-        format_name == "png" && spec.get_string_attribute("oiio:ColorSpace") != "sRGB"
-            ? spec.get_float_attribute("oiio:Gamma", 0)
-            : 0;
-    if (pixels->floating || format_name == "pnm" || std::fabs(png_gamma - 1) < 1e-3)
-        pixels->gamma.kind = ImageGamma::Kind::linear;
-    else if (png_gamma > 0)
-        pixels->gamma = {ImageGamma::Kind::power, png_gamma};
-    else
-        pixels->gamma.kind = ImageGamma::Kind::srgb;
-
-    const size_t count = size_t(spec.width) * size_t(spec.height);
-    std::vector<float> file(count * size_t(channels));
-    if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, file.data()))
-        throw Error(fmt::format("cannot read the pixels of the image {}: {}", path,
-                                one_line(input->geterror())));
-    pixels->values.resize(count * 4);
-    for (size_t i = 0; i < count; ++i) {
-        const float* in = &file[i * size_t(channels)];
-        float* out = &pixels->values[i * 4];
-        if (pixels->grey) {
-            out[0] = out[1] = out[2] = in[0];
-        } else {
-            out[0] = in[0], out[1] = in[1], out[2] = in[2];
-        }
-        out[3] = pixels->has_alpha ? in[channels - 1] : 1.0f;
+    ImageReadOutcome outcome;
+    image_reader()(path.c_str(), *pixels, outcome);
+    switch (outcome.status) {
+        case ImageReadOutcome::Status::read: break;
+        case ImageReadOutcome::Status::cannot_open:
+            throw Error(
+                fmt::format("cannot read the image {}: {} (PNG, JPEG, GIF, TGA, BMP, TIFF, "
+                            "PPM/PGM, HDR and EXR are read)",
+                            path, outcome.message));
+        case ImageReadOutcome::Status::no_pixels:
+            throw Error(fmt::format("the image {} has no pixels of its own", path));
+        case ImageReadOutcome::Status::cannot_read_pixels:
+            throw Error(
+                fmt::format("cannot read the pixels of the image {}: {}", path, outcome.message));
     }
+    const std::string& format_name = outcome.format;
+    pixels->palette = format_name == "gif" || (format_name == "png" && png_has_palette(path));
     if (pixels->palette && format_name == "png") read_palette_indices(path, *pixels);
     return pixels;
 }
