@@ -1,22 +1,34 @@
 #include "support/image_writing.h"
 
-#include <memory>
+#include <dlfcn.h>
+
 #include <stdexcept>
 
-#include <OpenImageIO/imageio.h>
-
 namespace rayset::test {
+namespace {
+
+using WriteImage = bool (*)(const char* path, int width, int height, int channels,
+                            const float* values, bool floating, std::string& error);
+
+// The writer module of this build (RAYSET_TEST_IMAGE_WRITER, its path), loaded on first use.
+WriteImage writer() {
+    static const WriteImage write = [] {
+        void* module = dlopen(RAYSET_TEST_IMAGE_WRITER, RTLD_NOW | RTLD_LOCAL);
+        return module ? reinterpret_cast<WriteImage>(dlsym(module, "rayset_test_write_image"))
+                      : nullptr;
+    }();
+    if (!write) throw std::runtime_error(std::string("cannot load ") + RAYSET_TEST_IMAGE_WRITER);
+    return write;
+}
+
+}  // namespace
 
 void write_image(const std::string& path, int width, int height, int channels,
                  const std::vector<float>& values, bool floating) {
-    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-    if (!out) throw std::runtime_error("cannot write " + path + ": " + OIIO::geterror());
-    const OIIO::ImageSpec spec(width, height, channels,
-                               floating ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    std::string error;
     if (values.size() != size_t(width) * size_t(height) * size_t(channels) ||
-        !out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, values.data()) ||
-        !out->close())
-        throw std::runtime_error("cannot write " + path + ": " + out->geterror());
+        !writer()(path.c_str(), width, height, channels, values.data(), floating, error))
+        throw std::runtime_error("cannot write " + path + ": " + error);
 }
 
 }  // namespace rayset::test

@@ -1,5 +1,5 @@
-// Small images written by the tests that need them (OpenImageIO), so that no binary image
-// lives in the repository.
+// Small images written by the tests that need them, so that no binary image lives in the
+// repository: OpenImageIO, in a module loaded on the first image (image_writer_module.cpp).
 #pragma once
 
 #include <string>

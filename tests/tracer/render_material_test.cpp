@@ -223,7 +223,7 @@ TEST(RenderMaterial, ReversedPdfIsThePdfOfTheBsdfMadeForTheOtherDirection) {
             positive += reversed > 0;
         }
     }
-    EXPECT_GT(positive, 1500);  // a quarter of the pairs lie on one side, with a density
+    EXPECT_GT(positive, 1500);  // about half the pairs have wi on wo's side, with a density
 }
 
 // finish { crand c } darkens the diffuse light by c u, u uniform in [0, 1) at each point
