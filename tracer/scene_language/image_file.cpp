@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <csetjmp>
+#include <cstddef>
 #include <cstdio>
 #include <fstream>
+#include <vector>
 
 #include <fmt/format.h>
 #include <png.h>
@@ -101,6 +103,31 @@ void read_palette_indices(const std::string& path, ImagePixels& pixels) {
     std::fclose(file);
 }
 
+// dlopen searches the run path of the binary that calls it. A sanitizer runtime that intercepts
+// dlopen (GCC's AddressSanitizer) becomes that caller, so the search is made again here over the
+// search path of the binary holding this code: its run path with $ORIGIN expanded, then the
+// system's folders.
+void* open_from_own_search_path(const char* name) {
+    Dl_info info;
+    void* self = nullptr;  // glibc's handle of that binary (its link map)
+    if (!dladdr1(reinterpret_cast<void*>(&open_from_own_search_path), &info, &self,
+                 RTLD_DL_LINKMAP) ||
+        !self)
+        return nullptr;
+    Dl_serinfo size;
+    if (dlinfo(self, RTLD_DI_SERINFOSIZE, &size) != 0) return nullptr;
+    std::vector<std::max_align_t> storage(size.dls_size / sizeof(std::max_align_t) + 1);
+    auto* paths = reinterpret_cast<Dl_serinfo*>(storage.data());
+    *paths = size;
+    if (dlinfo(self, RTLD_DI_SERINFOSIZE, paths) != 0 || dlinfo(self, RTLD_DI_SERINFO, paths) != 0)
+        return nullptr;
+    for (unsigned i = 0; i < paths->dls_cnt; ++i) {
+        const std::string path = std::string(paths->dls_serpath[i].dls_name) + "/" + name;
+        if (void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) return module;
+    }
+    return nullptr;
+}
+
 // The module's entry point, the module loaded on the first call; throws when it cannot be.
 ReadImagePixels image_reader() {
     struct Loaded {
@@ -110,8 +137,13 @@ ReadImagePixels image_reader() {
     static const Loaded loaded = [] {
         Loaded l;
         void* module = dlopen(kImageReaderModule, RTLD_NOW | RTLD_LOCAL);
+        if (!module) {
+            const char* why = dlerror();
+            l.error = why ? why : "";
+            module = open_from_own_search_path(kImageReaderModule);
+        }
         if (module) l.read = reinterpret_cast<ReadImagePixels>(dlsym(module, kImageReaderEntry));
-        if (!l.read) {
+        if (module && !l.read) {
             const char* why = dlerror();
             l.error = why ? why : "no entry point";
         }
