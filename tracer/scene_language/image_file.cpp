@@ -136,11 +136,11 @@ ReadImagePixels image_reader() {
     };
     static const Loaded loaded = [] {
         Loaded l;
-        void* module = dlopen(kImageReaderModule, RTLD_NOW | RTLD_LOCAL);
+        void* module = dlopen(RAYSET_IMAGE_READER_FILE, RTLD_NOW | RTLD_LOCAL);
         if (!module) {
             const char* why = dlerror();
             l.error = why ? why : "";
-            module = open_from_own_search_path(kImageReaderModule);
+            module = open_from_own_search_path(RAYSET_IMAGE_READER_FILE);
         }
         if (module) l.read = reinterpret_cast<ReadImagePixels>(dlsym(module, kImageReaderEntry));
         if (module && !l.read) {

@@ -23,7 +23,8 @@ struct ImageReadOutcome {
 // bits, and the gamma the format and its header give.
 using ReadImagePixels = void (*)(const char* path, ImagePixels& pixels, ImageReadOutcome& outcome);
 
-inline constexpr const char* kImageReaderModule = "librayset_image_reader.so";
+// The entry point's name; the module's file name comes from the build (RAYSET_IMAGE_READER_FILE,
+// given to image_file.cpp).
 inline constexpr const char* kImageReaderEntry = "rayset_read_image_pixels";
 
 }  // namespace rayset::tracer
