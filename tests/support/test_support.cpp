@@ -75,8 +75,7 @@ CommandResult run_command(const std::string& command_line) {
     return result;
 }
 
-bool killed_after(const std::vector<std::string>& argv, double seconds,
-                  const std::string& folder) {
+bool killed_after(const std::vector<std::string>& argv, double seconds, const std::string& folder) {
     std::vector<std::string> words = argv;
     std::vector<char*> pointers;
     for (std::string& w : words) pointers.push_back(w.data());
