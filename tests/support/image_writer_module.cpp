@@ -2,8 +2,11 @@
 // images, so that the other tests of the same binaries do not load its libraries at start.
 #include <memory>
 #include <string>
+#include <type_traits>
 
 #include <OpenImageIO/imageio.h>
+
+#include "support/image_writing.h"
 
 extern "C" __attribute__((visibility("default"))) bool rayset_test_write_image(
     const char* path, int width, int height, int channels, const float* values, bool floating,
@@ -22,3 +25,5 @@ extern "C" __attribute__((visibility("default"))) bool rayset_test_write_image(
     }
     return true;
 }
+static_assert(std::is_same_v<decltype(&rayset_test_write_image), rayset::test::WriteImageEntry>,
+              "the entry point has the type image_writing.cpp calls it by");

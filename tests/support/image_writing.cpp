@@ -7,14 +7,11 @@
 namespace rayset::test {
 namespace {
 
-using WriteImage = bool (*)(const char* path, int width, int height, int channels,
-                            const float* values, bool floating, std::string& error);
-
 // The writer module of this build (RAYSET_TEST_IMAGE_WRITER, its path), loaded on first use.
-WriteImage writer() {
-    static const WriteImage write = [] {
+WriteImageEntry writer() {
+    static const WriteImageEntry write = [] {
         void* module = dlopen(RAYSET_TEST_IMAGE_WRITER, RTLD_NOW | RTLD_LOCAL);
-        return module ? reinterpret_cast<WriteImage>(dlsym(module, "rayset_test_write_image"))
+        return module ? reinterpret_cast<WriteImageEntry>(dlsym(module, kWriteImageEntry))
                       : nullptr;
     }();
     if (!write) throw std::runtime_error(std::string("cannot load ") + RAYSET_TEST_IMAGE_WRITER);

@@ -13,4 +13,9 @@ namespace rayset::test {
 void write_image(const std::string& path, int width, int height, int channels,
                  const std::vector<float>& values, bool floating = false);
 
+// The writer module's entry point (image_writer_module.cpp), which write_image loads and calls.
+using WriteImageEntry = bool (*)(const char* path, int width, int height, int channels,
+                                 const float* values, bool floating, std::string& error);
+inline constexpr const char* kWriteImageEntry = "rayset_test_write_image";
+
 }  // namespace rayset::test

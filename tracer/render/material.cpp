@@ -458,9 +458,7 @@ BsdfOf<Q>::BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Ve
     // scaled up to carry the whole albedo.
     diffuse_scale_ = 2 / (1 + dot(ns_, n_));
     cos_o_ = std::max(0.0, dot(wo, ns_));
-    const LobeOdds odds = lobe_odds(wo);
-    p_diffuse_ = odds.diffuse, p_glossy_ = odds.glossy, p_mirror_ = odds.mirror,
-    p_dielectric_ = odds.dielectric;
+    odds_ = lobe_odds(wo);
 }
 
 template <class Q>
@@ -523,7 +521,7 @@ void BsdfOf<Q>::smooth_factors(Vec3 wi, double& diffuse_factor, double& glossy_f
     const double cos_i = dot(wi, ns_);
     if (cos_i <= 0 || dot(wi, n_) <= 0) return;
     diffuse_factor = diffuse_scale_ * cos_i / kPi;
-    if (p_glossy_ > 0) {
+    if (odds_.glossy > 0) {
         const double c = dot(wi, reflect(wo_, ns_));
         if (c > 0)
             glossy_factor =
@@ -543,18 +541,19 @@ Q BsdfOf<Q>::eval(Vec3 wi) const {
 
 template <class Q>
 double BsdfOf<Q>::pdf(Vec3 wi) const {
-    return smooth_pdf(wi, wo_, p_diffuse_, p_glossy_);
+    return smooth_pdf(wi, wo_, odds_);
 }
 
 template <class Q>
-double BsdfOf<Q>::smooth_pdf(Vec3 sampled, Vec3 given, double p_diffuse, double p_glossy) const {
+double BsdfOf<Q>::smooth_pdf(Vec3 sampled, Vec3 given, const LobeOdds& odds) const {
     const double cos_i = dot(sampled, ns_);
     if (cos_i <= 0 || dot(sampled, n_) <= 0) return 0;
-    double p = p_diffuse * cos_i / kPi;
-    if (p_glossy > 0) {
+    double p = odds.diffuse * cos_i / kPi;
+    if (odds.glossy > 0) {
         const double c = dot(sampled, reflect(given, ns_));
         if (c > 0)
-            p += p_glossy * (m_.glossy_exponent + 1) / (2 * kPi) * std::pow(c, m_.glossy_exponent);
+            p += odds.glossy * (m_.glossy_exponent + 1) / (2 * kPi) *
+                 std::pow(c, m_.glossy_exponent);
     }
     return p;
 }
@@ -564,28 +563,28 @@ double BsdfOf<Q>::pdf_reversed(Vec3 wi) const {
     // The BSDF made for wi has the same normals when wi is on wo's side (from the other side
     // it reflects nothing toward wo), and the same lobe odds unless a mirror lobe's weight
     // changes with the direction.
-    if (dot(wi, n_) < 0 || (dot(wi, n_) == 0 && !entering_)) return 0;
-    if (is_black(m_.mirror_max)) return smooth_pdf(wo_, wi, p_diffuse_, p_glossy_);
-    const LobeOdds odds = lobe_odds(wi);
-    return smooth_pdf(wo_, wi, odds.diffuse, odds.glossy);
+    const double side = dot(wi, n_);
+    if (side < 0 || (side == 0 && !entering_)) return 0;
+    return smooth_pdf(wo_, wi, is_black(m_.mirror_max) ? odds_ : lobe_odds(wi));
 }
 
 template <class Q>
 bool BsdfOf<Q>::sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out) const {
-    if (u_lobe < p_diffuse_ &&
-        p_glossy_ == 0) {  // diffuse alone: f cos / pdf is the albedo over p_diffuse
+    if (u_lobe < odds_.diffuse &&
+        odds_.glossy == 0) {  // diffuse alone: f cos / pdf is the albedo over p_diffuse
         out.wi = normalized(Frame(ns_).to_world(cosine_hemisphere(u1, u2)));
         const double cos_i = dot(out.wi, ns_);
         out.delta = false;
-        out.pdf = p_diffuse_ * cos_i / kPi;
+        out.pdf = odds_.diffuse * cos_i / kPi;
         if (out.pdf <= 0 || dot(out.wi, n_) <= 0) return false;
-        out.weight = (diffuse_scale_ / p_diffuse_) * c_.diffuse;
+        out.weight = (diffuse_scale_ / odds_.diffuse) * c_.diffuse;
         return true;
     }
-    if (u_lobe < p_diffuse_ + p_glossy_) {
-        const Vec3 local = u_lobe < p_diffuse_ ? cosine_hemisphere(u1, u2)
-                                               : phong_lobe(m_.glossy_exponent, u1, u2);
-        out.wi = normalized(Frame(u_lobe < p_diffuse_ ? ns_ : reflect(wo_, ns_)).to_world(local));
+    if (u_lobe < odds_.diffuse + odds_.glossy) {
+        const Vec3 local = u_lobe < odds_.diffuse ? cosine_hemisphere(u1, u2)
+                                                  : phong_lobe(m_.glossy_exponent, u1, u2);
+        out.wi =
+            normalized(Frame(u_lobe < odds_.diffuse ? ns_ : reflect(wo_, ns_)).to_world(local));
         out.pdf = pdf(out.wi);
         out.delta = false;
         if (out.pdf <= 0) return false;
@@ -594,18 +593,18 @@ bool BsdfOf<Q>::sample(double u_lobe, double u1, double u2, BsdfSampleOf<Q>& out
     }
     out.pdf = 0;
     out.delta = true;
-    if (u_lobe < p_diffuse_ + p_glossy_ + p_mirror_) {
+    if (u_lobe < odds_.diffuse + odds_.glossy + odds_.mirror) {
         out.wi = reflect(wo_, n_);
-        out.weight = (1 / p_mirror_) * mirror_weight();
+        out.weight = (1 / odds_.mirror) * mirror_weight();
         return true;
     }
-    if (p_dielectric_ <= 0) return false;
+    if (odds_.dielectric <= 0) return false;
     // Smooth dielectric: reflect with probability F, else refract; radiance is compressed by
     // eta^2 on entering a denser medium (pbrt's non-symmetric BTDF for radiance transport).
     const double eta = entering_ ? m_.ior : 1 / m_.ior;
     const double cos_i = std::max(0.0, dot(wo_, n_));
     const double fresnel = fresnel_dielectric(cos_i, eta);
-    const Q weight = (1 / p_dielectric_) * c_.transmission;
+    const Q weight = (1 / odds_.dielectric) * c_.transmission;
     if (u1 < fresnel) {
         out.wi = reflect(wo_, n_);
         out.weight = weight;

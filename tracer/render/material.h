@@ -107,7 +107,7 @@ public:
     BsdfOf(const Material& material, Vec3 normal, Vec3 shading_normal, Vec3 wo,
            const WavelengthsFor<Q>& wavelengths = {});
 
-    bool has_smooth_lobes() const { return p_diffuse_ + p_glossy_ > 0; }
+    bool has_smooth_lobes() const { return odds_.diffuse + odds_.glossy > 0; }
     // f |cos(wi)| of the non-delta lobes, and their sampling pdf.
     Q eval(Vec3 wi) const;
     // The same as the two factors of f |cos(wi)| = diffuse_factor x diffuse albedo +
@@ -133,7 +133,7 @@ private:
     LobeOdds lobe_odds(Vec3 wo) const;
     // The smooth lobes' density of sampling `sampled` given the other direction `given`, with
     // the lobes picked by these odds.
-    double smooth_pdf(Vec3 sampled, Vec3 given, double p_diffuse, double p_glossy) const;
+    double smooth_pdf(Vec3 sampled, Vec3 given, const LobeOdds& odds) const;
     double mirror_fraction(Vec3 wo) const;  // of the way from mirror_min to mirror_max
     Rgb mirror_weight_rgb(Vec3 wo) const;   // what the lobe choice uses
     Q mirror_weight() const;
@@ -149,7 +149,7 @@ private:
     // geometric one, so that the lobe still reflects its whole albedo above the surface.
     double diffuse_scale_;
     double cos_o_;
-    double p_diffuse_ = 0, p_glossy_ = 0, p_mirror_ = 0, p_dielectric_ = 0;
+    LobeOdds odds_;  // for wo_
 };
 
 using Bsdf = BsdfOf<Rgb>;

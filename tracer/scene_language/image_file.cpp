@@ -2,6 +2,7 @@
 #include "tracer/scene_language/image_file.h"
 
 #include <dlfcn.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <csetjmp>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <png.h>
 
 #include "core/colour.h"
@@ -103,52 +105,57 @@ void read_palette_indices(const std::string& path, ImagePixels& pixels) {
     std::fclose(file);
 }
 
-// dlopen searches the run path of the binary that calls it. A sanitizer runtime that intercepts
-// dlopen (GCC's AddressSanitizer) becomes that caller, so the search is made again here over the
-// search path of the binary holding this code: its run path with $ORIGIN expanded, then the
-// system's folders.
-void* open_from_own_search_path(const char* name) {
+// The search path of the binary holding this code (its run path with $ORIGIN expanded, then the
+// system's folders), as dlopen would search it when this code calls it. dlopen(name) itself is
+// not used: a sanitizer runtime that intercepts dlopen (GCC's AddressSanitizer) becomes the
+// caller whose run path it searches.
+std::vector<std::string> own_search_path() {
     Dl_info info;
     void* self = nullptr;  // glibc's handle of that binary (its link map)
-    if (!dladdr1(reinterpret_cast<void*>(&open_from_own_search_path), &info, &self,
-                 RTLD_DL_LINKMAP) ||
-        !self)
-        return nullptr;
+    if (!dladdr1(reinterpret_cast<void*>(&own_search_path), &info, &self, RTLD_DL_LINKMAP) || !self)
+        return {};
     Dl_serinfo size;
-    if (dlinfo(self, RTLD_DI_SERINFOSIZE, &size) != 0) return nullptr;
+    if (dlinfo(self, RTLD_DI_SERINFOSIZE, &size) != 0) return {};
     std::vector<std::max_align_t> storage(size.dls_size / sizeof(std::max_align_t) + 1);
     auto* paths = reinterpret_cast<Dl_serinfo*>(storage.data());
     *paths = size;
     if (dlinfo(self, RTLD_DI_SERINFOSIZE, paths) != 0 || dlinfo(self, RTLD_DI_SERINFO, paths) != 0)
-        return nullptr;
-    for (unsigned i = 0; i < paths->dls_cnt; ++i) {
-        const std::string path = std::string(paths->dls_serpath[i].dls_name) + "/" + name;
-        if (void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) return module;
+        return {};
+    std::vector<std::string> folders;
+    for (unsigned i = 0; i < paths->dls_cnt; ++i) folders.push_back(paths->dls_serpath[i].dls_name);
+    return folders;
+}
+
+struct LoadedReader {
+    ReadImagePixels read = nullptr;
+    std::string error;  // why there is none
+};
+
+// The first copy of the module on the search path, and its entry point.
+LoadedReader load_image_reader() {
+    LoadedReader loaded;
+    const std::vector<std::string> folders = own_search_path();
+    for (const std::string& folder : folders) {
+        const std::string path = folder + "/" + RAYSET_IMAGE_READER_FILE;
+        if (access(path.c_str(), F_OK) != 0) continue;
+        void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (module)
+            loaded.read = reinterpret_cast<ReadImagePixels>(dlsym(module, kImageReaderEntry));
+        if (!loaded.read) {
+            const char* why = dlerror();
+            loaded.error = why ? why : path + ": no entry point";
+        }
+        return loaded;
     }
-    return nullptr;
+    loaded.error = fmt::format(
+        "{} is in none of {}", RAYSET_IMAGE_READER_FILE,
+        folders.empty() ? "the folders searched" : fmt::format("{}", fmt::join(folders, ", ")));
+    return loaded;
 }
 
 // The module's entry point, the module loaded on the first call; throws when it cannot be.
 ReadImagePixels image_reader() {
-    struct Loaded {
-        ReadImagePixels read = nullptr;
-        std::string error;
-    };
-    static const Loaded loaded = [] {
-        Loaded l;
-        void* module = dlopen(RAYSET_IMAGE_READER_FILE, RTLD_NOW | RTLD_LOCAL);
-        if (!module) {
-            const char* why = dlerror();
-            l.error = why ? why : "";
-            module = open_from_own_search_path(RAYSET_IMAGE_READER_FILE);
-        }
-        if (module) l.read = reinterpret_cast<ReadImagePixels>(dlsym(module, kImageReaderEntry));
-        if (module && !l.read) {
-            const char* why = dlerror();
-            l.error = why ? why : "no entry point";
-        }
-        return l;
-    }();
+    static const LoadedReader loaded = load_image_reader();
     if (!loaded.read)
         throw Error(fmt::format(
             "cannot read images: the image reader module did not load ({}); it is installed in "

@@ -1,5 +1,6 @@
 // The image reader module (image_reader_module.h): image files through OpenImageIO.
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include <OpenImageIO/imageio.h>
@@ -82,3 +83,5 @@ extern "C" __attribute__((visibility("default"))) void rayset_read_image_pixels(
     rayset::tracer::expand_to_rgba(file, channels, pixels);
     outcome.status = Status::read;
 }
+static_assert(std::is_same_v<decltype(&rayset_read_image_pixels), rayset::tracer::ReadImagePixels>,
+              "the entry point has the type image_file.cpp calls it by");
