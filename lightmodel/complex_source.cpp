@@ -12,6 +12,8 @@ ComplexSource::ComplexSource(std::shared_ptr<const LightModel> model)
     : model_(std::move(model)),
       volume_(*model_),
       body_(model_->spheres),
+      voxel_balls_(*model_),
+      bounds_(model_->bounds()),
       diagram_flux_(model_->diagrams.size(), 0) {
     for (const FluxCell& c : model_->flux_cells) diagram_flux_[size_t(c.intensity_cell)] += c.flux;
 }
@@ -46,7 +48,7 @@ void ComplexSource::L_spectral(Vec3 origin, Vec3 dir, const EmitterHit&,
 
 std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double u_voxel,
                                                  Vec3 u_point, const SpectralSelect& select,
-                                                 SpectralQuery* spectral) const {
+                                                 SpectralQuery* spectral, BodyEntry entry) const {
     const VolumeSample point = volume_.sample_point(u_cell, u_voxel, u_point);
     const Vec3 to_point = point.point - ref;
     const double distance = length(to_point);
@@ -55,12 +57,23 @@ std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double
     s.wi = (1 / distance) * to_point;
     // Light counts only where a camera would see the body: the same condition BSDF sampling
     // has (its ray must hit the body), so both estimate the same integrand.
-    BodyHit hit;
-    if (!body_.intersect(ref, s.wi, kInfinity, hit)) return std::nullopt;
-    s.distance = hit.t;
+    if (entry == BodyEntry::wanted) {
+        BodyHit hit;
+        if (!body_.intersect(ref, s.wi, kInfinity, hit)) return std::nullopt;
+        s.distance = hit.t;
+    } else if (!meets_body(ref, s.wi, point.voxel)) {
+        return std::nullopt;
+    }
     s.Li = volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour, spectral, &s.pdf);
     if (!(s.pdf > 0)) return std::nullopt;
     return s;
+}
+
+// From outside the body's box, a ball listed for the sampled point's voxel that the ray enters
+// is the body met; otherwise the body decides (from inside the box too).
+bool ComplexSource::meets_body(Vec3 ref, Vec3 wi, uint32_t voxel) const {
+    if (!bounds_.contains(ref) && voxel_balls_.ray_enters(voxel, ref, wi)) return true;
+    return body_.occluded(ref, wi, kInfinity);
 }
 
 double ComplexSource::pdf_Li(Vec3 ref, Vec3 wi) const { return volume_.pdf_direction(ref, wi); }

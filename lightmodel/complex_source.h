@@ -6,6 +6,7 @@
 #include "lightmodel/emitter.h"
 #include "lightmodel/model.h"
 #include "lightmodel/sphere_body.h"
+#include "lightmodel/voxel_balls.h"
 
 #include <memory>
 
@@ -20,7 +21,7 @@ public:
     const EmissionVolume& volume() const { return volume_; }
 
     double phi(const SpectralSelect& select = {}) const override { return volume_.total(select); }
-    Box bounds() const override { return model_->bounds(); }
+    Box bounds() const override { return bounds_; }
     Rgb phi_colour() const override { return volume_.total_colour(); }
     bool intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hit) const override;
     double L(Vec3 origin, Vec3 dir, const EmitterHit& hit,
@@ -31,7 +32,8 @@ public:
     BinnedSpectrum phi_spectrum() const override { return volume_.total_spectrum(); }
     std::optional<LiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
                                       const SpectralSelect& select = {},
-                                      SpectralQuery* spectral = nullptr) const override;
+                                      SpectralQuery* spectral = nullptr,
+                                      BodyEntry entry = BodyEntry::wanted) const override;
     double pdf_Li(Vec3 ref, Vec3 wi) const override;
     LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const override;
     void pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position,
@@ -45,9 +47,14 @@ public:
     double intensity(Vec3 w, const SpectralSelect& select = {}) const;
 
 private:
+    // Whether the ray from `ref` along `wi` meets the body, `voxel` the sampled point's.
+    bool meets_body(Vec3 ref, Vec3 wi, uint32_t voxel) const;
+
     std::shared_ptr<const LightModel> model_;
     EmissionVolume volume_;
     SphereBody body_;
+    VoxelBalls voxel_balls_;
+    Box bounds_;
     std::vector<double> diagram_flux_;  // flux of the cells that use each diagram
 };
 

@@ -149,20 +149,27 @@ double EmissionVolume::line_density(Vec3 origin, Vec3 dir) const {
 }
 
 VolumeSample EmissionVolume::sample_point(double u_cell, double u_voxel, Vec3 u_point) const {
-    const size_t c = size_t(cells_.sample(u_cell).index);
+    const uint32_t c = uint32_t(cells_.sample(u_cell).index);
     VolumeSample s;
-    s.point = sample_in_cell(uint32_t(c), u_voxel, u_point);
-    s.flux_cell = uint32_t(c);
-    s.pdf_volume = point_density(uint32_t(c));
+    s.voxel = voxel_in_cell(c, u_voxel);
+    s.point = point_in_voxel(s.voxel, u_point);
+    s.flux_cell = c;
+    s.pdf_volume = point_density(c);
     return s;
 }
 
 Vec3 EmissionVolume::sample_in_cell(uint32_t c, double u_voxel, Vec3 u_point) const {
+    return point_in_voxel(voxel_in_cell(c, u_voxel), u_point);
+}
+
+uint32_t EmissionVolume::voxel_in_cell(uint32_t c, double u_voxel) const {
     const FluxCell& cell = model_.flux_cells[c];
-    const uint32_t v =
-        cell.first_voxel + std::min(uint32_t(u_voxel * cell.voxel_count), cell.voxel_count - 1);
+    return cell.first_voxel + std::min(uint32_t(u_voxel * cell.voxel_count), cell.voxel_count - 1);
+}
+
+Vec3 EmissionVolume::point_in_voxel(uint32_t voxel, Vec3 u_point) const {
     const double h = model_.density_frame.cell_size();
-    return model_.density_frame.cell_lower(model_.voxels[v]) +
+    return model_.density_frame.cell_lower(model_.voxels[voxel]) +
            Vec3{u_point.x * h, u_point.y * h, u_point.z * h};
 }
 

@@ -33,6 +33,7 @@ struct SpectralSelect {
 struct VolumeSample {
     Vec3 point;
     uint32_t flux_cell = 0;
+    uint32_t voxel = 0;     // index into LightModel::voxels
     double pdf_volume = 0;  // mm^-3
 };
 
@@ -75,6 +76,10 @@ public:
     VolumeSample sample_point(double u_cell, double u_voxel, Vec3 u_point) const;
     // A point uniform in the occupied voxels of one cell.
     Vec3 sample_in_cell(uint32_t cell, double u_voxel, Vec3 u_point) const;
+    // The occupied voxel of `cell` that sample_in_cell draws with `u_voxel`, and a point
+    // uniform in one voxel.
+    uint32_t voxel_in_cell(uint32_t cell, double u_voxel) const;
+    Vec3 point_in_voxel(uint32_t voxel, Vec3 u_point) const;
     double pdf_point(Vec3 point) const;  // mm^-3, 0 outside the volume
 
     // The flux cell of the occupied voxel holding `point`, -1 if none.

@@ -18,11 +18,17 @@ struct EmitterHit {
     Vec3 point, normal;
 };
 
+// Whether a light sample says where along wi the ray enters the body: what a shadow ray ends
+// at. A caller that knows nothing lies between the body's box and the body (no surface, no
+// medium) may end its shadow rays at the box instead, and spare the source the search for the
+// body's nearest entry: then the sample only checks that the ray meets the body.
+enum class BodyEntry { wanted, not_wanted };
+
 // Light sampling from a shaded point: a direction toward the source with the radiance that
 // arrives along it and the solid-angle density it was drawn with.
 struct LiSample {
     Vec3 wi;              // unit, from the shaded point toward the source
-    double distance = 0;  // to the body hit along wi (for the shadow ray)
+    double distance = 0;  // to the body's entry along wi (BodyEntry::wanted), else 0
     double Li = 0;        // radiance arriving from wi
     double pdf = 0;       // sr^-1
     Rgb Li_colour;        // the same radiance as a colour (colour.h), whatever the selection
@@ -71,7 +77,8 @@ public:
     // With `spectral`, the radiance at its wavelengths is added to its values too.
     virtual std::optional<LiSample> sample_Li(Vec3 ref, double u_cell, double u_voxel, Vec3 u_point,
                                               const SpectralSelect& select = {},
-                                              SpectralQuery* spectral = nullptr) const = 0;
+                                              SpectralQuery* spectral = nullptr,
+                                              BodyEntry entry = BodyEntry::wanted) const = 0;
     // Density of sample_Li drawing `wi` from `ref`, for MIS with BSDF sampling.
     virtual double pdf_Li(Vec3 ref, Vec3 wi) const = 0;
 

@@ -26,7 +26,8 @@ public:
     void L_spectral(Vec3, Vec3, const EmitterHit&, SpectralQuery&) const override {}
     BinnedSpectrum phi_spectrum() const override { return {}; }
     std::optional<LiSample> sample_Li(Vec3, double, double, Vec3, const SpectralSelect& = {},
-                                      SpectralQuery* = nullptr) const override {
+                                      SpectralQuery* = nullptr,
+                                      BodyEntry = BodyEntry::wanted) const override {
         return std::nullopt;
     }
     double pdf_Li(Vec3, Vec3) const override { return 0; }

@@ -69,6 +69,17 @@ void record_crossing(const RTCFilterFunctionNArguments* args) {
     args->valid[0] = 0;
 }
 
+// occluded()'s filter, with a CrossingContext: a hit counts where the segment enters that ball
+// in double precision too (intersect()'s test of its nearest hit); others are passed over.
+void confirm_entry(const RTCFilterFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    const auto* c = reinterpret_cast<const CrossingContext*>(args->context);
+    const uint32_t prim = RTCHitN_primID(args->hit, args->N, 0);
+    double t0, t1;
+    if (!(line_ball((*c->spheres)[prim], c->origin, c->dir, t0, t1) && t0 >= 0 && t0 <= c->tmax))
+        args->valid[0] = 0;
+}
+
 // The context of inside(): a ray from the point finds the exit of every ball holding it within
 // twice the largest radius; the filter tests containment exactly and keeps traversing until
 // one holds the point.
@@ -202,10 +213,13 @@ bool SphereBody::occluded(Vec3 origin, Vec3 dir, double tmax) const {
         BodyHit hit;
         return entry_after_inside(origin, dir, tmax, hit);
     }
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    CrossingContext c;
+    rtcInitIntersectContext(&c.context);
+    c.context.filter = confirm_entry;
+    c.spheres = &spheres_;
+    c.origin = origin, c.dir = dir, c.tmax = tmax;
     RTCRay ray = make_rayhit(origin, dir, tmax).ray;
-    rtcOccluded1(scene_, &context, &ray);
+    rtcOccluded1(scene_, &c.context, &ray);
     return ray.tfar < 0;  // Embree marks an occluded ray with tfar = -inf
 }
 

@@ -9,7 +9,8 @@
 // inside (a ray leaving the body from a point on or in it) the stretch inside is skipped and the
 // next entry returned, if any. The normal is the outward normal of the ball entered, so
 // dot(normal, dir) <= 0. t, point and normal are recomputed in double precision from the ball.
-// occluded() answers "would intersect() hit" in the same sense.
+// occluded() answers "would intersect() hit" in the same sense, each of Embree's hits confirmed
+// in double precision as intersect() confirms its nearest one.
 //
 // A tracer that instances scene() gets Embree's raw sphere hits (inner surfaces included);
 // rays that start outside the body see the same first hit as here.

@@ -9,6 +9,7 @@
 #include "lightmodel/direction_map.h"
 #include "lightmodel/model_file.h"
 #include "lightmodel/naive_source.h"
+#include "lightmodel/voxel_balls.h"
 #include "support/statistics.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <numeric>
 #include <string>
 
@@ -27,6 +29,12 @@ namespace {
 using lightmodel::Vec2;
 
 Vec3 rand3(Pcg32& rng) { return {rng.uniform(), rng.uniform(), rng.uniform()}; }
+
+Vec3 random_direction(Pcg32& rng) {
+    const double z = 1 - 2 * rng.uniform(), phi = 2 * kPi * rng.uniform();
+    const double s = std::sqrt(std::max(0.0, 1 - z * z));
+    return {s * std::cos(phi), s * std::sin(phi), z};
+}
 
 const char* const kSources[] = {"disk", "sphere", "lobe", "cluster"};
 
@@ -396,6 +404,92 @@ TEST(Model, SampleLiDirectionsFollowPdfLi) {
                     chi2, dof, critical);
         EXPECT_LT(chi2, critical) << name;
     }
+}
+
+TEST(Model, LightSamplesThatNeedNotFindTheBodysEntryAreTheSameSamples) {
+    // sample_Li with BodyEntry::not_wanted decides whether the ray meets the body by the balls
+    // listed for the sampled point's voxel (VoxelBalls), else by the body's any-hit query; with
+    // BodyEntry::wanted by the body's nearest entry. Both must keep and drop the same samples
+    // and give them the same direction, radiance and density, from points far and near, and
+    // from inside the body's box (where the listed balls are not asked).
+    for (const char* name : {"disk", "sphere", "cluster"}) {
+        const BuiltSource& b = built_source(name);
+        const lightmodel::Box box = b.model->bounds();
+        const Vec3 centre = 0.5 * (box.lower + box.upper);
+        const double size = box.longest();
+        Pcg32 rng(23);
+        int kept = 0, inside = 0;
+        for (int n = 0; n < 30000; ++n) {
+            const double reach = n % 3 == 0 ? 0.3 : n % 3 == 1 ? 1.5 : 20;
+            const Vec3 ref = centre + reach * size * random_direction(rng);
+            inside += box.contains(ref);
+            const double uc = rng.uniform(), uv = rng.uniform();
+            const Vec3 up = rand3(rng);
+            const auto wanted = b.source->sample_Li(ref, uc, uv, up);
+            const auto quick = b.source->sample_Li(ref, uc, uv, up, {}, nullptr,
+                                                   lightmodel::BodyEntry::not_wanted);
+            ASSERT_EQ(bool(wanted), bool(quick)) << name << " sample " << n;
+            if (!wanted) continue;
+            ++kept;
+            ASSERT_TRUE(wanted->wi.x == quick->wi.x && wanted->wi.y == quick->wi.y &&
+                        wanted->wi.z == quick->wi.z);
+            ASSERT_EQ(wanted->Li, quick->Li);
+            ASSERT_EQ(wanted->pdf, quick->pdf);
+            EXPECT_GT(wanted->distance, 0);
+            EXPECT_EQ(quick->distance, 0);
+        }
+        std::printf(
+            "[ figures  ] %s: %d of 30000 light samples kept, %d drawn from inside the "
+            "body's box\n",
+            name, kept, inside);
+        EXPECT_GT(kept, 10000) << name;
+        EXPECT_GT(inside, 100) << name;
+    }
+}
+
+TEST(Model, VoxelBallsNameOnlyBallsTheRayEnters) {
+    // Every ball is listed for the voxel holding its centre: a ray from outside the body toward
+    // that centre must be found entering one (completeness for the listed balls). Whatever is
+    // found must be a ball the ray enters, checked against all balls (soundness), and rays
+    // pointing away from the body find none.
+    const BuiltSource& b = built_source("cluster");
+    const lightmodel::LightModel& model = *b.model;
+    const lightmodel::VoxelBalls listed(model);
+    const lightmodel::Box box = model.bounds();
+    const Vec3 centre = 0.5 * (box.lower + box.upper);
+    const double size = box.longest();
+    std::map<int64_t, uint32_t> voxel_of;
+    for (uint32_t v = 0; v < model.voxels.size(); ++v)
+        voxel_of[model.density_frame.linear(model.voxels[v])] = v;
+    auto enters_some_ball = [&](Vec3 o, Vec3 d) {
+        for (const lightmodel::Sphere& s : model.spheres) {
+            const Vec3 oc = Vec3{s.x, s.y, s.z} - o;
+            const double tc = dot(oc, d), disc = double(s.r) * s.r - dot(oc - tc * d, oc - tc * d);
+            if (disc >= 0 && tc - std::sqrt(disc) >= 0) return true;
+        }
+        return false;
+    };
+    Pcg32 rng(29);
+    int found = 0, tried = 0;
+    for (int n = 0; n < 2000; ++n) {
+        const lightmodel::Sphere& s = model.spheres[size_t(rng.uniform() * model.spheres.size())];
+        const Vec3 c{s.x, s.y, s.z};
+        const auto it = voxel_of.find(model.density_frame.linear(model.density_frame.cell_of(c)));
+        if (it == voxel_of.end()) continue;  // a ball centred outside every occupied voxel
+        ++tried;
+        const Vec3 origin = centre + 3 * size * random_direction(rng);
+        const Vec3 toward = normalized(c - origin);
+        ASSERT_TRUE(listed.ray_enters(it->second, origin, toward)) << "ball " << n;
+        found += enters_some_ball(origin, toward);
+        const uint32_t v = uint32_t(rng.uniform() * model.voxels.size());
+        const Vec3 d = random_direction(rng);
+        if (listed.ray_enters(v, origin, d)) {
+            ASSERT_TRUE(enters_some_ball(origin, d)) << "ray " << n;
+        }
+        ASSERT_FALSE(listed.ray_enters(it->second, origin, -toward)) << "ray " << n;
+    }
+    EXPECT_EQ(found, tried);
+    EXPECT_GT(tried, 1000);
 }
 
 // Far-field intensity of the model against the analytic intensity over the directions that

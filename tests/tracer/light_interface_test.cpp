@@ -374,6 +374,61 @@ LightSet lights_of(const std::string& text) {
                     SceneUnits{}, false);
 }
 
+TEST(LightInterface, ShadowRaysEndingAtTheBodysBoxMeetWhatTheyMetEndingAtTheBody) {
+    // A room around the disk of the tests, 1 mm under the ceiling, a block on the floor casting
+    // shadows. Nothing lies near the body, so the lights a render uses (LightSet of the
+    // RenderScene) end shadow rays at the body's box: the same samples must be drawn as by the
+    // lights that find the body's entry, and every shadow ray must be blocked or not alike. A
+    // sphere reaching into the body's box takes that away: then the distances are the body's.
+    const std::string room = R"(
+        box { <-50, 0, -50>, <50, 100, 50> }
+        box { <-10, 0, -10>, <10, 60, 10> }
+        ray_source { ")" + test::disk_files().model +
+                             R"(" rotate <90, 0, 0> translate <0, 99, 0> }
+    )";
+    for (const bool near : {false, true}) {
+        SCOPED_TRACE(near ? "a sphere near the body" : "nothing near the body");
+        const RenderScene scene(
+            parse_scene_text(room + (near ? "sphere { <1.5, 99, 0>, 0.6 }" : ""),
+                             test::disk_files().scratch.file("room.pov")));
+        const LightSet exact(scene.description(), scene.units(), false), fast(scene, false);
+        Pcg32 rng(17, 3);
+        int drawn = 0, blocked = 0;
+        for (int n = 0; n < 20000; ++n) {
+            // A point of the floor or of the wall at x = -50, and its normal into the room.
+            const bool floor = n % 2 == 0;
+            const double a = -49 + 98 * rng.uniform(), b = 99 * rng.uniform();
+            const Vec3 point = floor ? Vec3{a, 0, b - 49.5} : Vec3{-50, b, a};
+            const Vec3 normal = floor ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
+            if (floor && std::fabs(point.x) < 10 && std::fabs(point.z) < 10) continue;
+            const LightUniforms u = exact.draw(rng);
+            const auto e = exact.sample_Li<Rgb>(point, u, {});
+            const auto f = fast.sample_Li<Rgb>(point, u, {});
+            ASSERT_EQ(bool(e), bool(f)) << "sample " << n;
+            if (!e) continue;
+            ++drawn;
+            ASSERT_TRUE(e->wi.x == f->wi.x && e->wi.y == f->wi.y && e->wi.z == f->wi.z);
+            ASSERT_TRUE(e->Li.red == f->Li.red && e->Li.green == f->Li.green &&
+                        e->Li.blue == f->Li.blue);
+            ASSERT_EQ(e->pdf, f->pdf);
+            if (near)
+                ASSERT_EQ(f->distance, e->distance);
+            else
+                ASSERT_LT(f->distance, e->distance);  // the box is entered before the body
+            const Vec3 origin = scene.offset(point, normal, e->wi);
+            const bool by_body = scene.occluded(origin, e->wi, 0, e->distance - scene.epsilon());
+            const bool by_box = scene.occluded(origin, f->wi, 0, f->distance - scene.epsilon());
+            ASSERT_EQ(by_body, by_box) << "sample " << n;
+            blocked += by_body;
+        }
+        std::printf("[ figures  ] %s: %d light samples drawn, %d of them blocked\n",
+                    near ? "sphere near" : "clear", drawn, blocked);
+        EXPECT_GT(drawn, 10000);
+        EXPECT_GT(blocked, 500);  // the block's shadow on the floor and the wall
+        EXPECT_LT(blocked, drawn - 500);
+    }
+}
+
 TEST(LightInterface, APhotonsFluxIsTheRadianceItCarriesOverItsEmissionDensity) {
     // What a bidirectional weight rests on: sample_Le's flux is the light's radiance along the
     // photon's ray (a point light's intensity) over pdf_Le's density for that ray, per channel.

@@ -521,6 +521,46 @@ TEST(RenderScene, PlaneIsInfiniteUserGeometry) {
     expect_vec(h.normal, normalized({0, 1, 1}), 1e-12);
 }
 
+TEST(RenderScene, ClearWithinSaysNoOnlyWhereASurfaceOrMediumMayBe) {
+    // What lets a ray source end shadow rays at its body's box: "clear" must never be said of a
+    // box a surface passes through. Planes and triangles count by their planes (a box beside a
+    // room's face, inside the face's bounding box, is clear), other shapes by their bounds.
+    auto clear = [](const std::string& text, Vec3 low, Vec3 high) {
+        return Scene(text).scene.clear_within(low, high);
+    };
+    const std::string room = "box { <-1000, 0, -1000>, <1000, 2000, 1000> }";  // 12 triangles
+    EXPECT_TRUE(clear(room, {-50, 1998, -50}, {50, 1999.8, 50}));              // under the ceiling
+    EXPECT_FALSE(clear(room, {-50, 1998, -50}, {50, 2000.1, 50}));
+    EXPECT_FALSE(clear(room, {999, 10, 10}, {1001, 20, 20}));  // across a wall
+    EXPECT_FALSE(clear(room, {-10, -10, -10}, {10, 10, 10}));  // across the floor at y = 0
+
+    const std::string plane = "plane { <0, 1, 1>, 2 }";     // dot(n, p) = 2, n = (0, 1, 1) / sqrt 2
+    EXPECT_TRUE(clear(plane, {-5, 0, 0}, {5, 1, 1}));       // below: dot(n, corner) <= 1.42
+    EXPECT_FALSE(clear(plane, {-5, 0, 0}, {5, 1.5, 1.5}));  // (0, 1.5, 1.5): 2.12 > 2
+
+    const std::string sphere = "sphere { <0, 0, 0>, 1 }";
+    EXPECT_TRUE(clear(sphere, {1.01, -1, -1}, {3, 1, 1}));
+    EXPECT_FALSE(clear(sphere, {0.99, -1, -1}, {3, 1, 1}));
+
+    const std::string mesh = R"(
+        #declare M = mesh { triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> } }
+        object { M translate <0,0,5> })";
+    EXPECT_TRUE(clear(mesh, {-0.5, -0.5, 5.01}, {0.5, 0.5, 6}));
+    EXPECT_FALSE(clear(mesh, {-0.5, -0.5, 4.9}, {0.5, 0.5, 6}));
+    EXPECT_TRUE(clear("triangle { <0,0,0>, <1,0,0>, <0,1,0> }", {0, 0, -1}, {1, 1, -0.01}));
+    EXPECT_FALSE(clear("triangle { <0,0,0>, <1,0,0>, <0,1,0> }", {0.2, 0.2, -1}, {0.3, 0.3, 1}));
+
+    // An unbounded solid may be anywhere; fog and media change what a ray carries anywhere.
+    EXPECT_FALSE(
+        clear("difference { plane { y, 0 } sphere { <0, -5, 0>, 1 } }", {5, 5, 5}, {6, 6, 6}));
+    EXPECT_TRUE(clear(sphere, {5, 5, 5}, {6, 6, 6}));
+    EXPECT_FALSE(clear(sphere + " fog { distance 100 color rgb 1 }", {5, 5, 5}, {6, 6, 6}));
+    EXPECT_FALSE(
+        clear("sphere { <0, 0, 0>, 1 pigment { rgbf 1 } hollow "
+              "interior { media { absorption 1 } } }",
+              {5, 5, 5}, {6, 6, 6}));
+}
+
 TEST(RenderScene, MeshInstancesShareOnePrototype) {
     const Scene s(R"(
         #declare M = mesh { triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> } }

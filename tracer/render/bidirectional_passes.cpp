@@ -96,7 +96,7 @@ template <class Q>
 BidirectionalPasses<Q>::BidirectionalPasses(const RenderScene& scene,
                                             const RenderSettings& settings,
                                             const RenderResult& start)
-    : lights_(scene.description(), scene.units(), settings.naive_sources),
+    : lights_(scene, settings.naive_sources),
       integrator_(scene, lights_),
       path_(scene, no_lights_),
       ordinary_(has_ordinary_light(scene)),

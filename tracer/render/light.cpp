@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "tracer/render/ray_box.h"
+#include "tracer/render/render_scene.h"
 #include "tracer/render/sampling.h"
 
 namespace rayset::tracer {
@@ -44,6 +45,22 @@ LightSet::LightSet(const SceneDescription& scene, const SceneUnits& units, bool 
     for (PlacedRaySource& s : read_ray_sources(scene, naive_sources))
         lights.emplace_back(std::move(s));
     *this = LightSet(std::move(lights));
+}
+
+LightSet::LightSet(const RenderScene& scene, bool naive_sources)
+    : LightSet(scene.description(), scene.units(), naive_sources) {
+    for (Light& light : lights_) {
+        PlacedRaySource* source = light.ray_source();
+        if (!source || source->photons_only()) continue;
+        const Vec3 low = source->body_low(), high = source->body_high();
+        // Twice the distance the scene keeps a ray's ends from surfaces (offset, epsilon), at
+        // the box's own scale of rounding.
+        const double scale = std::max({std::abs(low.x), std::abs(low.y), std::abs(low.z),
+                                       std::abs(high.x), std::abs(high.y), std::abs(high.z)});
+        const double margin = 2 * (scene.epsilon() + 1e-6 * scale);
+        const Vec3 reach{2 * margin, 2 * margin, 2 * margin};
+        if (scene.clear_within(low - reach, high + reach)) source->end_shadow_rays_at_box(margin);
+    }
 }
 
 size_t LightSet::choose(double& u) const {

@@ -32,6 +32,8 @@
 
 namespace rayset::tracer {
 
+class RenderScene;
+
 class Light {
 public:
     template <class Kind>
@@ -60,6 +62,7 @@ public:
         return false;
     }
     bool is_ray_source() const { return std::holds_alternative<PlacedRaySource>(kind_); }
+    PlacedRaySource* ray_source() { return std::get_if<PlacedRaySource>(&kind_); }
 
     template <class Q>
     std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
@@ -113,6 +116,9 @@ public:
     // The scene's POV-Ray lights, then its ray sources (each model built from its ray file or
     // read from a .vdb; with `naive_sources`, the stored rays themselves).
     LightSet(const SceneDescription& scene, const SceneUnits& units, bool naive_sources);
+    // The lights of a scene ready to render: as above, and each ray source whose body's
+    // surroundings hold no surface and no medium ends its shadow rays at its body's box.
+    LightSet(const RenderScene& scene, bool naive_sources);
 
     bool empty() const { return lights_.empty(); }
     size_t size() const { return lights_.size(); }

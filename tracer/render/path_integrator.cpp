@@ -248,7 +248,7 @@ std::unique_ptr<Integrator> make_path_integrator(const RenderScene& scene,
             "photons carry its light; render it with integrator \"bidirectional\"");
     if (scene.fog().present() && !scene.description().ray_sources.empty())
         throw Error("not supported: fog with ray-file sources (their bodies are not dimmed)");
-    LightSet lights(scene.description(), scene.units(), false);
+    LightSet lights(scene, false);
     check_interiors_renderable(scene, settings, lights);
     if (spectral_transport(scene, settings))
         return std::make_unique<PathTracing<SampledSpectrum>>(scene, std::move(lights));

@@ -37,6 +37,26 @@ inline bool ray_crosses_box(Vec3 origin, Vec3 direction, double t_max, Vec3 low,
     return true;
 }
 
+// Where the ray (origin, unit direction) enters the box [low, high]: 0 when the origin is in
+// it; meaningful only for a ray that meets the box.
+inline double box_entry(Vec3 origin, Vec3 direction, Vec3 low, Vec3 high) {
+    const double o[3] = {origin.x, origin.y, origin.z},
+                 d[3] = {direction.x, direction.y, direction.z};
+    const double lo[3] = {low.x, low.y, low.z}, hi[3] = {high.x, high.y, high.z};
+    double t0 = 0;
+    for (int k = 0; k < 3; ++k) {
+        if (d[k] == 0) continue;  // parallel to the slab, and inside it since the ray meets the box
+        const double near = std::min((lo[k] - o[k]) / d[k], (hi[k] - o[k]) / d[k]);
+        t0 = std::max(t0, near);
+    }
+    return t0;
+}
+
+inline bool box_holds(Vec3 p, Vec3 low, Vec3 high) {
+    return p.x >= low.x && p.x <= high.x && p.y >= low.y && p.y <= high.y && p.z >= low.z &&
+           p.z <= high.z;
+}
+
 // Widens a box by a small relative margin, so that rounding never lets a ray miss what it holds.
 inline void widen_box(Vec3& low, Vec3& high) {
     for (int k = 0; k < 3; ++k) {

@@ -82,6 +82,12 @@ PlacedRaySource::PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emit
     widen_box(body_low_, body_high_);
 }
 
+void PlacedRaySource::end_shadow_rays_at_box(double margin) {
+    shadow_rays_to_box_ = true;
+    shadow_low_ = body_low_ - Vec3{margin, margin, margin};
+    shadow_high_ = body_high_ + Vec3{margin, margin, margin};
+}
+
 PlacedRaySource::Local PlacedRaySource::to_local(Vec3 origin, Vec3 direction) const {
     // A unit scene direction becomes a direction of length 1/k in model mm.
     return {to_local_.point(origin), k_ * to_local_.vector(direction), 1 / k_};
@@ -116,19 +122,22 @@ template <class Q>
 std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
     Vec3 ref, const LightUniforms& u, double chosen, const WavelengthsFor<Q>& wavelengths) const {
     const Vec3 u_point{u.u[1], u.u[2], u.u[3]};
+    const bool to_box = shadow_rays_to_box_ && !box_holds(ref, shadow_low_, shadow_high_);
+    const auto entry = to_box ? lightmodel::BodyEntry::not_wanted : lightmodel::BodyEntry::wanted;
     std::optional<lightmodel::LiSample> s;
     LightLiSampleOf<Q> out;
     if constexpr (std::is_same_v<Q, SampledSpectrum>) {
         lightmodel::SpectralQuery query = spectral_query(wavelengths);
-        s = emitter_->sample_Li(to_local_.point(ref), u.select, u.u[0], u_point, {}, &query);
+        s = emitter_->sample_Li(to_local_.point(ref), u.select, u.u[0], u_point, {}, &query, entry);
         out.Li = radiance_scale_ * spectrum_of(query);
     } else {
-        s = emitter_->sample_Li(to_local_.point(ref), u.select, u.u[0], u_point);
+        s = emitter_->sample_Li(to_local_.point(ref), u.select, u.u[0], u_point, {}, nullptr,
+                                entry);
         if (s) out.Li = radiance_scale_ * s->Li_colour;
     }
     if (!s) return std::nullopt;
     out.wi = normalized(to_world_.vector(s->wi));
-    out.distance = s->distance * k_;
+    out.distance = to_box ? box_entry(ref, out.wi, shadow_low_, shadow_high_) : s->distance * k_;
     out.pdf = chosen * s->pdf;  // a conformal map keeps solid angles
     return out;
 }

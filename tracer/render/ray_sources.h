@@ -51,6 +51,15 @@ public:
     template <class Q>
     std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
                                                 const WavelengthsFor<Q>& wavelengths) const;
+    // The body's box in scene coordinates (widened against rounding).
+    Vec3 body_low() const { return body_low_; }
+    Vec3 body_high() const { return body_high_; }
+    // From now on, light samples from outside the body's box widened by `margin` end their
+    // shadow rays where they enter that box, not where they meet the body, which spares the
+    // source its search for the body's nearest entry. The caller has made sure that no surface
+    // and no medium lies within twice `margin` of the body's box: a shadow ray then meets the
+    // same surfaces either way.
+    void end_shadow_rays_at_box(double margin);
     // The body along a scene ray (unit direction) before t_max; t in scene units.
     bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const;
     double pdf_Li(Vec3 ref, Vec3 wi, double t, double chosen) const;
@@ -82,6 +91,9 @@ private:
     bool naive_ = false;
     // The body's box in the scene frame, widened: most rays miss it, and then the body.
     Vec3 body_low_, body_high_;
+    // Where shadow rays end, when they end at a box (end_shadow_rays_at_box).
+    bool shadow_rays_to_box_ = false;
+    Vec3 shadow_low_, shadow_high_;
 };
 
 // The scene's ray sources, each model built from its ray file or read from a .vdb model file;

@@ -206,6 +206,10 @@ RenderScene::~RenderScene() {
     if (device_) rtcReleaseDevice(device_);
 }
 
+bool RenderScene::clear_within(Vec3 low, Vec3 high) const {
+    return !fog_.present() && !interiors_.any() && !surfaces_may_reach(*tables_, scene_, low, high);
+}
+
 Vec3 RenderScene::offset(Vec3 point, Vec3 normal, Vec3 direction) const {
     const double scale = std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
     const double e = epsilon_ + 1e-6 * scale;  // float rounding of Embree's hit points

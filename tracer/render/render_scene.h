@@ -79,6 +79,9 @@ public:
     const Interiors& interiors() const { return interiors_; }
     // Offset that moves a ray origin off the surface it starts on (scene units).
     double epsilon() const { return epsilon_; }
+    // Whether nothing a ray can meet or pass through lies within the box [low, high]: no
+    // surface (tested conservatively: false when unsure), no fog, no medium, no fade.
+    bool clear_within(Vec3 low, Vec3 high) const;
 
     // Nearest surface along (origin, unit direction) in (t_near, t_far) that this kind of ray sees.
     bool intersect(Vec3 origin, Vec3 direction, double t_near, double t_far, RayKind kind,

@@ -163,7 +163,7 @@ std::vector<Vec3> camera_hits(const RenderScene& scene, const SamplePoints& poin
 VcmPasses::VcmPasses(const RenderScene& scene, const RenderSettings& settings,
                      const RenderResult& start)
     : scene_(scene),
-      lights_(scene.description(), scene.units(), false),
+      lights_(scene, false),
       seed_(settings.seed),
       radius_(settings.photon_radius, start.passes, start.photon_radius) {
     const LightPathBudget budget = light_path_budget(scene, settings);
