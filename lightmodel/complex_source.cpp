@@ -16,6 +16,19 @@ ComplexSource::ComplexSource(std::shared_ptr<const LightModel> model)
       bounds_(model_->bounds()),
       diagram_flux_(model_->diagrams.size(), 0) {
     for (const FluxCell& c : model_->flux_cells) diagram_flux_[size_t(c.intensity_cell)] += c.flux;
+    // The sphere around the occupied voxels, which hold every point sample_point() draws
+    // (widened by a little more than rounding, so that a point at a corner stays in its cone).
+    Box voxels;
+    const LatticeFrame& frame = model_->density_frame;
+    const double h = frame.cell_size();
+    for (const Coord& v : model_->voxels) {
+        voxels.extend(frame.cell_lower(v));
+        voxels.extend(frame.cell_lower(v) + Vec3{h, h, h});
+    }
+    if (!voxels.empty()) {
+        reach_.centre = 0.5 * (voxels.lower + voxels.upper);
+        reach_.radius = (0.5 + 1e-9) * length(voxels.upper - voxels.lower);
+    }
 }
 
 bool ComplexSource::intersect(Vec3 origin, Vec3 dir, double tmax, EmitterHit& hit) const {
@@ -64,9 +77,33 @@ std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double
     } else if (!meets_body(ref, s.wi, point.voxel)) {
         return std::nullopt;
     }
+    if (far_from(ref)) {
+        s.pdf = cone_density(ref, s.wi);
+        if (!(s.pdf > 0)) return std::nullopt;
+        s.Li = volume_.point_estimate(point.flux_cell, s.wi, distance, s.pdf, select, &s.Li_colour,
+                                      spectral);
+        return s;
+    }
     s.Li = volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour, spectral, &s.pdf);
     if (!(s.pdf > 0)) return std::nullopt;
     return s;
+}
+
+bool ComplexSource::far_from(Vec3 ref) const {
+    const Vec3 d = ref - reach_.centre;
+    const double far = kFarRadii * reach_.radius;
+    return reach_.radius > 0 && dot(d, d) > far * far;
+}
+
+// The uniform density over the cone of directions from `ref` that meet the sphere: 1 / (2 pi
+// (1 - cos theta_max)) with sin theta_max = radius / distance, written without the cancellation
+// of 1 - cos for a distant sphere.
+double ComplexSource::cone_density(Vec3 ref, Vec3 wi) const {
+    const Vec3 to_centre = reach_.centre - ref;
+    const double d2 = dot(to_centre, to_centre), r2 = reach_.radius * reach_.radius;
+    const double cos_max = std::sqrt(std::max(0.0, 1 - r2 / d2));
+    if (dot(wi, to_centre) < cos_max * std::sqrt(d2)) return 0;
+    return (1 + cos_max) / (2 * kPi * (r2 / d2));
 }
 
 // From outside the body's box, a ball listed for the sampled point's voxel that the ray enters
@@ -76,7 +113,9 @@ bool ComplexSource::meets_body(Vec3 ref, Vec3 wi, uint32_t voxel) const {
     return body_.occluded(ref, wi, kInfinity);
 }
 
-double ComplexSource::pdf_Li(Vec3 ref, Vec3 wi) const { return volume_.pdf_direction(ref, wi); }
+double ComplexSource::pdf_Li(Vec3 ref, Vec3 wi) const {
+    return far_from(ref) ? cone_density(ref, wi) : volume_.pdf_direction(ref, wi);
+}
 
 LeSample ComplexSource::sample_Le(const double u[7], const SpectralSelect& select) const {
     const VolumeSample point = volume_.sample_point(u[0], u[1], {u[2], u[3], u[4]});

@@ -106,19 +106,35 @@ double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, doubl
             diagram = cell.diagram;
             d = model_.diagrams[size_t(diagram)].pdf(emitted);
         }
-        const double per_flux = d * cell.emission * (t1 - t0);
-        sum += cell_flux(c, select) * per_flux;
-        if (colour) colour_sum += (cell.flux * per_flux) * cell_colour_[c];
-        if (spectral) {
-            const double weight = cell.flux * per_flux * luminance(cell_colour_[c]);
-            for (int i = 0; i < 4; ++i)
-                spectral->value[i] += weight * cell_spectrum_[c](spectral->nm[i]);
-        }
+        sum += emission(c, d * cell.emission * (t1 - t0), select, colour ? &colour_sum : nullptr,
+                        spectral);
         if (pdf) pdf_sum += direction_density(c, t0, t1);
     });
     if (colour) *colour = colour_sum;
     if (pdf) *pdf = pdf_sum;
     return sum;
+}
+
+double EmissionVolume::point_estimate(uint32_t c, Vec3 dir, double distance, double scale,
+                                      const SpectralSelect& select, Rgb* colour,
+                                      SpectralQuery* spectral) const {
+    const LineTerms& cell = line_terms_[c];
+    const double d = model_.diagrams[size_t(cell.diagram)].pdf(-dir);
+    const double per_flux = scale * d * cell.emission / (cell.point_density * distance * distance);
+    if (colour) *colour = Rgb{};
+    return emission(c, per_flux, select, colour, spectral);
+}
+
+double EmissionVolume::emission(uint32_t c, double per_flux, const SpectralSelect& select,
+                                Rgb* colour, SpectralQuery* spectral) const {
+    const LineTerms& cell = line_terms_[c];
+    if (colour) *colour += (cell.flux * per_flux) * cell_colour_[c];
+    if (spectral) {
+        const double weight = cell.flux * per_flux * luminance(cell_colour_[c]);
+        for (int i = 0; i < 4; ++i)
+            spectral->value[i] += weight * cell_spectrum_[c](spectral->nm[i]);
+    }
+    return cell_flux(c, select) * per_flux;
 }
 
 double EmissionVolume::point_density(uint32_t cell) const {

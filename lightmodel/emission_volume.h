@@ -56,6 +56,15 @@ public:
     double radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
                            const SpectralSelect& select, Rgb* colour = nullptr,
                            SpectralQuery* spectral = nullptr, double* pdf = nullptr) const;
+    // The estimate a point drawn by sample_point() in `cell` gives of that line's radiance over
+    // its solid-angle density, seen from `distance` along `dir` (toward the point): the
+    // emission there over the point's density per unit solid angle, eps_c(-dir) / (p_V(c)
+    // distance^2). Its mean over the points of a line is radiance_toward / pdf of that line.
+    // Times `scale`; with `colour` and `spectral`, the same as radiance_toward gives them
+    // (colour overwritten, spectral values added to).
+    double point_estimate(uint32_t cell, Vec3 dir, double distance, double scale,
+                          const SpectralSelect& select, Rgb* colour = nullptr,
+                          SpectralQuery* spectral = nullptr) const;
     // Colour of one unit of a cell's flux (colour.h), and the colour of the whole source.
     const Rgb& cell_colour(uint32_t cell) const { return cell_colour_[cell]; }
     Rgb total_colour() const;
@@ -101,6 +110,11 @@ private:
         int32_t diagram = -1;      // intensity cell k
     };
 
+    // What `cell` emits per unit of its flux, `per_flux` (its diagram's density times a length
+    // or a point's weight, over V_c g_c), in the selected quantity; its colour and spectral
+    // values added to `colour` and `spectral` when given.
+    double emission(uint32_t cell, double per_flux, const SpectralSelect& select, Rgb* colour,
+                    SpectralQuery* spectral) const;
     // Solid-angle density, seen from a line's origin, that the voxels of `cell` between t0 and
     // t1 along it give its direction under sample_point(): the integral of point_density t^2.
     double direction_density(uint32_t cell, double t0, double t1) const;

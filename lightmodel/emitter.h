@@ -24,14 +24,18 @@ struct EmitterHit {
 // body's nearest entry: then the sample only checks that the ray meets the body.
 enum class BodyEntry { wanted, not_wanted };
 
-// Light sampling from a shaded point: a direction toward the source with the radiance that
-// arrives along it and the solid-angle density it was drawn with.
+// Light sampling from a shaded point: a direction toward the source, and Li / pdf, an unbiased
+// estimate of the light arriving from it over its solid-angle density: the sample's weight. pdf
+// is the density multiple importance sampling weighs the sample by, pdf_Li's for wi: the density
+// wi was drawn with, or (the complex model, far from its source) a stand-in for it that MIS
+// weights see alike from both strategies. Li is then the radiance arriving from wi only where
+// pdf is that exact density.
 struct LiSample {
     Vec3 wi;              // unit, from the shaded point toward the source
     double distance = 0;  // to the body's entry along wi (BodyEntry::wanted), else 0
-    double Li = 0;        // radiance arriving from wi
+    double Li = 0;        // in the selected quantity
     double pdf = 0;       // sr^-1
-    Rgb Li_colour;        // the same radiance as a colour (colour.h), whatever the selection
+    Rgb Li_colour;        // the same as a colour (colour.h), whatever the selection
 };
 
 // Photon emission: where and in which direction a photon leaves, and the flux it carries
@@ -79,7 +83,8 @@ public:
                                               const SpectralSelect& select = {},
                                               SpectralQuery* spectral = nullptr,
                                               BodyEntry entry = BodyEntry::wanted) const = 0;
-    // Density of sample_Li drawing `wi` from `ref`, for MIS with BSDF sampling.
+    // The density sample_Li's samples along `wi` from `ref` are weighed by for MIS with BSDF
+    // sampling (LiSample::pdf).
     virtual double pdf_Li(Vec3 ref, Vec3 wi) const = 0;
 
     // Photon emission from seven uniform numbers in [0, 1).

@@ -451,9 +451,14 @@ void bind_model(nb::module_& m) {
              nb::arg("wavelengths") = nb::none(),
              "Light sampling from points ref (N x 3) with uniform numbers u (N x 5: cell, "
              "voxel, point x 3): valid, wi, distance, Li, pdf (sr^-1), colour; with "
-             "wavelengths (N x 4, nm) also spectral, as L gives it.")
+             "wavelengths (N x 4, nm) also spectral, as L gives it. Li / pdf (and colour / "
+             "pdf) estimates the light arriving along wi over its density, without bias; pdf "
+             "is what pdf_Li gives, the density MIS weighs the sample by (far from the source "
+             "a stand-in for the exact one, so Li is then not the radiance itself).")
         .def("pdf_Li", &Model::pdf_Li, nb::arg("ref"), nb::arg("wi"),
-             "Solid-angle density of sample_Li drawing wi from ref.")
+             "Solid-angle density sample_Li's samples along wi from ref are weighed by: the "
+             "density of drawing wi near the source, the uniform density over the cone around "
+             "it far from it.")
         .def("sample_Le", &Model::sample_Le, nb::arg("u"), nb::arg("quantity") = "flux",
              nb::arg("band") = -1,
              "Photon emission from uniform numbers u (N x 7): origin, direction, flux, "

@@ -346,7 +346,10 @@ TEST(Model, SampleLeDirectionsFollowPdfLe) {
 // angle from the axis, phi around it), expected counts from pdf_Li integrated on a sub-grid.
 // sample_Li drops directions that miss the body, so the test draws the underlying points and
 // counts every direction. 99.9% critical value.
-TEST(Model, SampleLiDirectionsFollowPdfLi) {
+TEST(Model, SampledPointsDirectionsFollowTheLinesDensity) {
+    // The points light sampling draws, seen from a shaded point, spread over directions as the
+    // density of their lines says (EmissionVolume::pdf_direction, which near the source is
+    // pdf_Li, and far from it what the point estimate's mean divides by).
     for (const char* name : {"disk", "cluster"}) {
         const BuiltSource& b = built_source(name);
         const lightmodel::EmissionVolume& volume = b.source->volume();
@@ -371,7 +374,7 @@ TEST(Model, SampleLiDirectionsFollowPdfLi) {
                 const double u = cos_max + (1 - cos_max) * (a + 0.5) / (nu * sub);
                 const double phi = 2 * kPi * (c + 0.5) / (nphi * sub);
                 const double area = (1 - cos_max) / (nu * sub) * 2 * kPi / (nphi * sub);
-                const double p = b.source->pdf_Li(ref, direction(u, phi)) * area;
+                const double p = volume.pdf_direction(ref, direction(u, phi)) * area;
                 expected[size_t((a / sub) * nphi + c / sub)] += p;
                 inside += p;
             }
@@ -400,9 +403,43 @@ TEST(Model, SampleLiDirectionsFollowPdfLi) {
             ++dof;
         }
         const double critical = chi_square_critical(dof, 3.0902);
-        std::printf("[ figures  ] %s: sample_Li chi-square %.1f, dof %d, critical %.1f\n", name,
-                    chi2, dof, critical);
+        std::printf("[ figures  ] %s: sampled directions chi-square %.1f, dof %d, critical %.1f\n",
+                    name, chi2, dof, critical);
         EXPECT_LT(chi2, critical) << name;
+    }
+}
+
+TEST(Model, LightSamplesAreWeighedByTheDensityPdfLiGives) {
+    // MIS sees a light sample's pdf and, for a BSDF ray that meets the body, pdf_Li: the two
+    // must be one function of the direction, near the source (the line's exact density) and
+    // far from it (the cone's), and a density: its integral over directions is 1 (estimated
+    // with directions uniform on the sphere, 4 standard errors).
+    const BuiltSource& b = built_source("disk");
+    const lightmodel::Box box = b.model->bounds();
+    const Vec3 centre = 0.5 * (box.lower + box.upper);
+    const double size = box.longest();
+    for (const double reach : {0.8, 1.5, 3.0, 10.0}) {
+        const Vec3 ref = centre + reach * size * normalized(Vec3{0.3, -0.2, 1});
+        Pcg32 rng(31);
+        int kept = 0;
+        for (int n = 0; n < 4000; ++n) {
+            const double uc = rng.uniform(), uv = rng.uniform();
+            const auto s = b.source->sample_Li(ref, uc, uv, rand3(rng));
+            if (!s) continue;
+            ++kept;
+            ASSERT_NEAR(b.source->pdf_Li(ref, s->wi), s->pdf, 1e-9 * s->pdf) << reach;
+        }
+        EXPECT_GT(kept, 3000) << reach;
+        const int n = 2000000;
+        double sum = 0, sum2 = 0;
+        for (int k = 0; k < n; ++k) {
+            const double p = 4 * kPi * b.source->pdf_Li(ref, random_direction(rng));
+            sum += p, sum2 += p * p;
+        }
+        const double mean = sum / n, error = std::sqrt((sum2 / n - mean * mean) / n);
+        std::printf("[ figures  ] pdf_Li from %.1f sizes integrates to %.4f +- %.4f\n", reach, mean,
+                    error);
+        EXPECT_NEAR(mean, 1, 4 * error) << reach;
     }
 }
 
