@@ -9,10 +9,12 @@
 #include <openvdb/io/io.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <mutex>
+#include <set>
 #include <vector>
 
 namespace rayset::lightmodel {
@@ -29,9 +31,10 @@ constexpr int32_t kMostGrids = 64;
 
 // OpenVDB allocates a string or a metadata value of the length the file states before it reads
 // it, so that a corrupt length asks for up to 4 GB; and when a tree's topology ends early it
-// leaks the node it was reading (RootNode adopts a child only once the child is read). A scan
-// walks the same structures first, from the stream's position, refuses a length or a node
-// beyond the end of the file and goes back.
+// leaks the node it was reading (RootNode adopts a child only once the child is read), and the
+// first of two children at one origin (the second replaces it in the root's table). A scan walks
+// the same structures first, from the stream's position, refuses a length or a node beyond the
+// end of the file and a second child at an origin, and goes back.
 class LayoutScan {
 public:
     LayoutScan(std::istream& in, std::streamoff file_size)
@@ -74,8 +77,16 @@ public:
         skip(sizeof(int32_t) + value_bytes);
         const uint32_t tiles = number(), children = number();
         skip(std::streamoff(tiles) * (3 * sizeof(int32_t) + value_bytes + sizeof(bool)));
+        std::set<std::array<int32_t, 3>> origins;
         for (uint32_t i = 0; i < children; ++i) {
-            skip(3 * sizeof(int32_t));
+            const std::streamoff at = in_.tellg();
+            check(3 * sizeof(int32_t), at);
+            std::array<int32_t, 3> origin{};
+            in_.read(reinterpret_cast<char*>(origin.data()), 3 * sizeof(int32_t));
+            if (!origins.insert(origin).second)
+                throw Corrupt("a tree names a second node at (" + std::to_string(origin[0]) + ", " +
+                              std::to_string(origin[1]) + ", " + std::to_string(origin[2]) +
+                              ") at byte " + std::to_string(at));
             internal_node(5, value_bytes, mask_compressed);
         }
         return *this;

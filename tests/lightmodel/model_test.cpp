@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <numeric>
@@ -197,6 +198,23 @@ TEST(Model, ReadingRefusesCellsAndSpheresNoBuildWrites) {
                   .find("where a centre is finite and a radius finite "
                         "and positive: the file is corrupt"),
               std::string::npos);
+}
+
+TEST(Model, ReadingRefusesATreeWithTwoNodesAtOneOrigin) {
+    // OpenVDB's root keeps the second child read at an origin and leaks the first (found by
+    // fuzz_model; the file is its finding): refused before OpenVDB reads the tree.
+    const std::string path = (std::filesystem::path(__FILE__).parent_path() /
+                              "../fuzz/regressions/model/second-child-at-one-origin.vdb")
+                                 .string();
+    try {
+        lightmodel::read_model(path);
+        ADD_FAILURE() << "a tree with two nodes at (0, 0, 0) was read";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(path + ": cannot read as an OpenVDB file: a tree "
+                                                    "names a second node at (0, 0, 0) at byte "),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 // Debian's OpenVDB 10.0 overflows the heap on corrupt zip or blosc chunks and point attributes
