@@ -110,10 +110,10 @@ void GoniometricDiagram::finalize() {
 void GoniometricDiagram::build_nodes(const std::vector<double>& centres) {
     const int half = bands_ / 2;
     const bool two_per_side = half >= 2;
-    nodes_.assign(size_t(row_count()) * sectors_, 0.0);
+    nodes_.assign(size_t(row_count()) * sectors_, 0.0f);
     for (int band = 0; band < bands_; ++band)
         for (int j = 0; j < sectors_; ++j)
-            node(centre_row(band), j) = centres[size_t(band) * sectors_ + j];
+            stored_node(centre_row(band), j) = float(centres[size_t(band) * sectors_ + j]);
 
     auto ring_mean = [&](int band) {
         double sum = 0;
@@ -124,20 +124,20 @@ void GoniometricDiagram::build_nodes(const std::vector<double>& centres) {
     const double north =
         extrapolate(ring_mean(bands_ - 1), two_per_side ? ring_mean(bands_ - 2) : 0, two_per_side);
     for (int j = 0; j < sectors_; ++j) {
-        node(0, j) = south;
-        node(row_count() - 1, j) = north;
-        auto centre = [&](int band) { return node(centre_row(band), j); };
+        stored_node(0, j) = float(south);
+        stored_node(row_count() - 1, j) = float(north);
+        auto centre = [&](int band) { return double(node(centre_row(band), j)); };
         const double below = centre(half - 1), above = centre(half);
         if (below > 0 && above > 0) {
             // Light on both sides: the horizon is an ordinary line between two centres.
-            node(half + 1, j) = node(half + 2, j) = 0.5 * (below + above);
+            stored_node(half + 1, j) = stored_node(half + 2, j) = float(0.5 * (below + above));
         } else {
             // A side without light: each side's own extrapolation, so the cut-off stays sharp
             // (the dark side's is 0).
-            node(half + 1, j) =
-                extrapolate(below, two_per_side ? centre(half - 2) : 0, two_per_side);
-            node(half + 2, j) =
-                extrapolate(above, two_per_side ? centre(half + 1) : 0, two_per_side);
+            stored_node(half + 1, j) =
+                float(extrapolate(below, two_per_side ? centre(half - 2) : 0, two_per_side));
+            stored_node(half + 2, j) =
+                float(extrapolate(above, two_per_side ? centre(half + 1) : 0, two_per_side));
         }
     }
 }
@@ -159,11 +159,12 @@ void GoniometricDiagram::normalise_nodes() {
         }
     }
     if (!(integral > 0)) {
-        std::fill(nodes_.begin(), nodes_.end(), 0.0);
+        std::fill(nodes_.begin(), nodes_.end(), 0.0f);
+        scale_ = 0;
         patches_ = AliasTable();
         return;
     }
-    for (double& value : nodes_) value /= integral;
+    scale_ = 1 / integral;
     patches_ = AliasTable(masses);
 }
 
@@ -190,7 +191,7 @@ double GoniometricDiagram::density(double u, double phi) const {
     const int j1 = j0 + 1 < sectors_ ? j0 + 1 : 0;
     const double lower = (1 - f) * node(r, j0) + f * node(r, j1);
     const double upper = (1 - f) * node(r + 1, j0) + f * node(r + 1, j1);
-    return (1 - t) * lower + t * upper;
+    return scale_ * ((1 - t) * lower + t * upper);
 }
 
 double GoniometricDiagram::pdf(Vec3 w) const {
@@ -235,7 +236,7 @@ DirectionSample GoniometricDiagram::sample(Vec2 u) const {
     const double s = std::sqrt(std::max(0.0, (1 - z) * (1 + z)));
     DirectionSample sample;
     sample.direction = {s * std::cos(phi), s * std::sin(phi), z};
-    sample.pdf = (1 - t) * lower + t * upper;
+    sample.pdf = scale_ * ((1 - t) * lower + t * upper);
     return sample;
 }
 

@@ -78,9 +78,10 @@ public:
     // Storage as a flat float array {bands, sectors, total weight, bands * sectors cell-centre
     // densities (sr^-1, index as cell_of)}; the derived nodes are rebuilt by the same rules.
     // The histogram is not stored, so a deserialised diagram answers queries but cannot
-    // accumulate or merge. deserialize() renormalises in double, so pdf() and sample() stay
-    // consistent and integrate to 1 to double precision; values differ from the original's by
-    // float rounding (about 1e-7 relative). Throws std::invalid_argument on malformed data.
+    // accumulate or merge. The nodes are kept in single precision, the file's, under one
+    // normalising factor in double: pdf() and sample() stay consistent and integrate to 1 to
+    // double precision, and a diagram read back answers exactly as the one written. Throws
+    // std::invalid_argument on malformed data.
     std::vector<float> serialize() const;
     static GoniometricDiagram deserialize(const std::vector<float>& data);
 
@@ -102,7 +103,7 @@ private:
     int band_of(double u) const;
     int sector_of(double phi) const;
     double node(int row, int column) const { return nodes_[size_t(row) * sectors_ + column]; }
-    double& node(int row, int column) { return nodes_[size_t(row) * sectors_ + column]; }
+    float& stored_node(int row, int column) { return nodes_[size_t(row) * sectors_ + column]; }
     // Fills the centre rows from `centres` (index as cell_of) and derives pole and horizon rows.
     void build_nodes(const std::vector<double>& centres);
     // Scales the nodes so the density integrates to 1 and builds the patches' alias table.
@@ -115,7 +116,11 @@ private:
     std::vector<double> histogram_;
     double total_weight_ = 0;
     bool finalized_ = false;
-    std::vector<double> nodes_;  // row_count() x sectors, node (row, column) at the sector's centre
+    // row_count() x sectors, node (row, column) at the sector's centre; single precision, as the
+    // file stores the centres (half the memory a light sample's lookup reads), the density being
+    // scale_ times them.
+    std::vector<float> nodes_;
+    double scale_ = 0;
     AliasTable patches_;         // the (row_count() - 1) x sectors patches by mass; empty if empty
     std::vector<double> row_u_;  // u of each row
 };

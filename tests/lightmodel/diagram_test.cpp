@@ -393,7 +393,9 @@ TEST(DiagramDensity, LambertianIsReproducedWithoutBias) {
         }
         for (const Vec3 w : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, Vec3{1, 0, 0}, Vec3{0, 1, -1e-9}})
             worst = std::max(worst, std::abs(diagram.pdf(w) - std::max(0.0, w.z) / kPi));
-        EXPECT_LT(worst, 1e-14) << bands << " bands";
+        // Exact but for the single precision the nodes are kept in (2^-24 relative of 1 / pi,
+        // carried through the extrapolation): any bias of the build would be far larger.
+        EXPECT_LT(worst, 1e-7) << bands << " bands";
     }
 }
 
@@ -663,9 +665,10 @@ TEST(DiagramFarField, AccuracyAtOneMillionRays) {
                     c.name, int(seed), bands, sectors, error, bias, region.directions.size());
                 if (g == 0) {
                     EXPECT_LT(error, 0.02) << c.name << ", seed " << seed;
-                    // The sources linear in u are reproduced exactly (only rounding remains).
+                    // The sources linear in u are reproduced exactly: only the rounding of the
+                    // nodes to single precision remains.
                     if (c.linear_in_u) {
-                        EXPECT_LT(bias, 1e-12) << c.name;
+                        EXPECT_LT(bias, 1e-7) << c.name;
                     }
                 }
             }
