@@ -14,20 +14,6 @@ namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-Vec3 centre_of(const Sphere& s) { return {s.x, s.y, s.z}; }
-
-// Where the line origin + t dir (dir unit) crosses the ball: t0 <= t1, false when it misses.
-bool line_ball(const Sphere& s, Vec3 origin, Vec3 dir, double& t0, double& t1) {
-    const Vec3 oc = centre_of(s) - origin;
-    const double tc = dot(oc, dir);
-    const Vec3 perp = oc - tc * dir;  // not |oc|^2 - tc^2, which cancels far from the ball
-    const double disc = double(s.r) * s.r - dot(perp, perp);
-    if (disc < 0) return false;
-    const double half = std::sqrt(disc);
-    t0 = tc - half, t1 = tc + half;
-    return true;
-}
-
 void throw_on_error(RTCDevice device, const char* what) {
     const RTCError error = rtcGetDeviceError(device);
     if (error != RTC_ERROR_NONE)

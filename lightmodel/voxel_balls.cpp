@@ -9,8 +9,6 @@ namespace rayset::lightmodel {
 
 namespace {
 
-Vec3 centre_of(const Sphere& s) { return {s.x, s.y, s.z}; }
-
 // Calls f(voxel, ball) for every occupied voxel whose cell the ball's box overlaps.
 template <class F>
 void for_each_listing(const LightModel& model,
@@ -59,15 +57,9 @@ VoxelBalls::VoxelBalls(const LightModel& model) {
 }
 
 bool VoxelBalls::ray_enters(uint32_t voxel, Vec3 origin, Vec3 dir) const {
-    for (uint32_t k = start_[voxel]; k < start_[voxel + 1]; ++k) {
-        const Sphere& s = balls_[k];
-        // As SphereBody's line_ball: the perpendicular offset, not |oc|^2 - tc^2.
-        const Vec3 oc = centre_of(s) - origin;
-        const double tc = dot(oc, dir);
-        const Vec3 perp = oc - tc * dir;
-        const double disc = double(s.r) * s.r - dot(perp, perp);
-        if (disc >= 0 && tc >= std::sqrt(disc)) return true;
-    }
+    double t0, t1;
+    for (uint32_t k = start_[voxel]; k < start_[voxel + 1]; ++k)
+        if (line_ball(balls_[k], origin, dir, t0, t1) && t0 >= 0) return true;
     return false;
 }
 

@@ -53,11 +53,11 @@ LightSet::LightSet(const RenderScene& scene, bool naive_sources)
         PlacedRaySource* source = light.ray_source();
         if (!source || source->photons_only()) continue;
         const Vec3 low = source->body_low(), high = source->body_high();
-        // Twice the distance the scene keeps a ray's ends from surfaces (offset, epsilon), at
-        // the box's own scale of rounding.
-        const double scale = std::max({std::abs(low.x), std::abs(low.y), std::abs(low.z),
-                                       std::abs(high.x), std::abs(high.y), std::abs(high.z)});
-        const double margin = 2 * (scene.epsilon() + 1e-6 * scale);
+        // Twice the distance the scene keeps a ray's ends from surfaces, at the box's scale.
+        const double margin =
+            2 *
+            scene.offset_distance(std::max({std::abs(low.x), std::abs(low.y), std::abs(low.z),
+                                            std::abs(high.x), std::abs(high.y), std::abs(high.z)}));
         const Vec3 reach{2 * margin, 2 * margin, 2 * margin};
         if (scene.clear_within(low - reach, high + reach)) source->end_shadow_rays_at_box(margin);
     }

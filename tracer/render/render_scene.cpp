@@ -211,8 +211,8 @@ bool RenderScene::clear_within(Vec3 low, Vec3 high) const {
 }
 
 Vec3 RenderScene::offset(Vec3 point, Vec3 normal, Vec3 direction) const {
-    const double scale = std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
-    const double e = epsilon_ + 1e-6 * scale;  // float rounding of Embree's hit points
+    const double e =
+        offset_distance(std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)}));
     return point + (dot(direction, normal) >= 0 ? e : -e) * normal;
 }
 

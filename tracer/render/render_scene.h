@@ -79,6 +79,9 @@ public:
     const Interiors& interiors() const { return interiors_; }
     // Offset that moves a ray origin off the surface it starts on (scene units).
     double epsilon() const { return epsilon_; }
+    // How far offset() moves a point whose largest coordinate is `scale`: epsilon plus the float
+    // rounding of Embree's hit points there.
+    double offset_distance(double scale) const { return epsilon_ + 1e-6 * scale; }
     // Whether nothing a ray can meet or pass through lies within the box [low, high]: no
     // surface (tested conservatively: false when unsure), no fog, no medium, no fade.
     bool clear_within(Vec3 low, Vec3 high) const;
