@@ -2,7 +2,9 @@
 // gather at a point visits the 27 cells around it. A row of cells along x hashes to consecutive
 // slots, so a gather reads nine runs of three slots, each one range of photons, instead of 27
 // scattered slots. Built once per pass by a counting sort: the order is fixed by the photons'
-// order, so gathers sum in a deterministic order. The positions are kept apart from the rest of
+// order, so gathers sum in a deterministic order. A grid rebuilt for the next pass (assign())
+// keeps its storage: tens of megabytes a pass, which the system would otherwise map afresh and
+// fault in page by page. The positions are kept apart from the rest of
 // each photon: a gather tests many photons' distance for each one it uses, and reads 24 bytes
 // for a test instead of the whole photon.
 #pragma once
@@ -40,7 +42,11 @@ template <class PhotonType>
 class PhotonGridOf {
 public:
     using Photon = PhotonType;
-    PhotonGridOf(std::vector<Photon> photons, double radius);
+    PhotonGridOf() = default;  // empty
+    PhotonGridOf(const std::vector<Photon>& photons, double radius) { assign(photons, radius); }
+
+    // The grid of `photons` (copied) with cells of `radius`, in place of what it held.
+    void assign(const std::vector<Photon>& photons, double radius);
 
     double radius() const { return radius_; }
     size_t size() const { return photons_.size(); }
@@ -50,6 +56,11 @@ public:
     }
     // The photon given i-th to the constructor.
     const Photon& input(size_t i) const { return photons_[stored_at_[i]]; }
+    // Asks the cache for input(i) ahead of its use.
+    void prefetch_input(size_t i) const {
+        const char* p = reinterpret_cast<const char*>(&photons_[stored_at_[i]]);
+        for (size_t line = 0; line < sizeof(Photon); line += 64) __builtin_prefetch(p + line);
+    }
 
     // Calls f(photon) for every photon within the radius of p.
     template <class F>
@@ -101,44 +112,45 @@ private:
 
     std::vector<Photon> photons_;  // in slot order
     std::vector<Vec3> positions_;  // photons_[k].position
-    double radius_;
+    double radius_ = 1;
     size_t table_size_ = 1;
-    uint64_t slot_mask_ = 0;           // table_size_ - 1
-    int hash_shift_ = 63;              // 64 - log2(table_size_)
-    std::vector<uint32_t> start_;      // photons of slot h: [start_[h], start_[h + 1])
-    std::vector<uint32_t> stored_at_;  // the i-th photon given is photons_[stored_at_[i]]
+    uint64_t slot_mask_ = 0;                // table_size_ - 1
+    int hash_shift_ = 63;                   // 64 - log2(table_size_)
+    std::vector<uint32_t> start_;           // photons of slot h: [start_[h], start_[h + 1])
+    std::vector<uint32_t> stored_at_;       // the i-th photon given is photons_[stored_at_[i]]
+    std::vector<uint32_t> slot_of_, fill_;  // assign()'s scratch: each photon's slot, next free
 };
 
 template <class PhotonType>
-PhotonGridOf<PhotonType>::PhotonGridOf(std::vector<Photon> photons, double radius)
-    : photons_(std::move(photons)), radius_(radius) {
+void PhotonGridOf<PhotonType>::assign(const std::vector<Photon>& photons, double radius) {
+    radius_ = radius;
+    const size_t n = photons.size();
     // At least twice the photons, and a row's three slots, so that a run wraps past the table's
     // end at most once.
     table_size_ = 4;
     hash_shift_ = 62;
-    while (table_size_ < 2 * photons_.size()) table_size_ *= 2, --hash_shift_;
+    while (table_size_ < 2 * n) table_size_ *= 2, --hash_shift_;
     slot_mask_ = table_size_ - 1;
     start_.assign(table_size_ + 1, 0);
     // Slots and photon indices fit 32 bits: a pass's photons are far fewer than 2^31 (200 GB).
-    std::vector<uint32_t> slots(photons_.size());
-    for (size_t i = 0; i < photons_.size(); ++i) {
-        const Vec3 p = photons_[i].position;
-        slots[i] = uint32_t(slot(cell_of(p.x), cell_of(p.y), cell_of(p.z)));
-        ++start_[slots[i] + 1];
+    slot_of_.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const Vec3 p = photons[i].position;
+        slot_of_[i] = uint32_t(slot(cell_of(p.x), cell_of(p.y), cell_of(p.z)));
+        ++start_[slot_of_[i] + 1];
     }
     for (size_t h = 0; h < table_size_; ++h) start_[h + 1] += start_[h];
     // Store the photons in slot order: a gather then reads each slot's photons contiguously.
-    std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
-    std::vector<Photon> sorted(photons_.size());
-    positions_.resize(photons_.size());
-    stored_at_.resize(photons_.size());
-    for (size_t i = 0; i < photons_.size(); ++i) {
-        const uint32_t k = fill[slots[i]]++;
+    fill_.assign(start_.begin(), start_.end() - 1);
+    photons_.resize(n);
+    positions_.resize(n);
+    stored_at_.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t k = fill_[slot_of_[i]]++;
         stored_at_[i] = k;
-        sorted[k] = photons_[i];
-        positions_[k] = photons_[i].position;
+        photons_[k] = photons[i];
+        positions_[k] = photons[i].position;
     }
-    photons_ = std::move(sorted);
 }
 
 using PhotonGrid = PhotonGridOf<Photon>;

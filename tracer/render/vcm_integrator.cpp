@@ -29,7 +29,10 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr uint64_t kLightBlock = 1024;
 constexpr uint64_t kLightSeedSalt = 0xBB67AE8584CAA73BULL;  // light streams apart from camera's
-constexpr int kCameraRouletteDepth = 5;
+// Camera vertices before Russian roulette starts. A vertex here costs a light sample and
+// connections, several times a path tracer's vertex, so roulette starts earlier than there:
+// in examples/led_box.pov at 3 rather than 5 a pass takes 0.7 of the time at the same error.
+constexpr int kCameraRouletteDepth = 3;
 
 // The partial weights of a subpath vertex.
 struct PartialWeights {
@@ -95,16 +98,21 @@ private:
     // A camera path's vertex, and where its light goes.
     struct CameraVertex {
         Vec3 point, normal, wo;
-        bool merging;  // a scene surface (light subpaths end there), not a receiver point
+        bool surface;  // a scene surface (light subpaths end there), not a receiver point
     };
     struct CameraWalk : Walk {
         RayKind kind = RayKind::camera;
         LightComponent segment_layer = kDirectVisibility;
+        // No smooth scene surface met yet: the next one is where this path may merge.
+        bool merge_ahead = true;
+        // The walk started at a receiver point and has not scattered since: a light vertex it
+        // connects to is the path's first scene surface, where merging may happen.
+        bool at_receiver = false;
     };
 
-    // The light subpaths of `pass`: their vertices, path after path (where each path's begin
-    // is kept in path_first_).
-    std::vector<LightVertex> trace_light_paths(int pass, std::atomic<uint64_t>& rays);
+    // The light subpaths of `pass`: their vertices into vertices_, path after path (where each
+    // path's begin is kept in path_first_).
+    void trace_light_paths(int pass, std::atomic<uint64_t>& rays);
     void trace_light_path(uint64_t index, uint64_t seed, std::vector<LightVertex>& out,
                           uint64_t& rays) const;
     // The first segment of a light subpath, from its light to the first surface: the weight
@@ -119,9 +127,10 @@ private:
     // the path ends.
     bool scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& walk, Sampler& sampler,
                  uint64_t& rays, LightComponentsOf<Rgb>& sum) const;
-    Rgb light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
+    // `merges`: whether x is where the path may merge (scatter()).
+    Rgb light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, bool merges,
                      const LightUniforms& u, uint64_t& rays) const;
-    Rgb connection(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
+    Rgb connection(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, bool merges,
                    const LightVertex& y, uint64_t& rays) const;
     // Merged light, the part whose light vertex is its subpath's first apart.
     void merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Rgb& first,
@@ -139,8 +148,13 @@ private:
     // The pass under way.
     double eta_ = 1, merge_normalisation_ = 0;
     std::vector<uint32_t> path_first_;
-    std::unique_ptr<PhotonGridOf<LightVertex>> grid_;  // the vertices, path after path
+    PhotonGridOf<LightVertex> grid_;  // the vertices, path after path
     size_t vertex_bytes_ = 0;
+    // The light vertices as traced, by block and then in path order: kept from pass to pass
+    // with their storage, as grid_ keeps its own.
+    std::vector<std::vector<LightVertex>> traced_;
+    std::vector<std::vector<uint32_t>> path_sizes_;
+    std::vector<LightVertex> vertices_;
 };
 
 // Where camera paths first meet the scene, as the radius rule wants the points where merges
@@ -176,33 +190,35 @@ void VcmPasses::begin_pass(int pass, const SamplePoints& points, std::atomic<uin
     const double r = radius_.at(pass);
     eta_ = kPi * r * r * double(light_paths_);
     merge_normalisation_ = 1 / eta_;
-    grid_ = std::make_unique<PhotonGridOf<LightVertex>>(trace_light_paths(pass, rays), r);
-    vertex_bytes_ = std::max(vertex_bytes_, grid_->memory_bytes());
+    trace_light_paths(pass, rays);
+    grid_.assign(vertices_, r);
+    vertex_bytes_ = std::max(vertex_bytes_, grid_.memory_bytes());
 }
 
 // In fixed blocks, so that the vertices' order does not depend on threads.
-std::vector<LightVertex> VcmPasses::trace_light_paths(int pass, std::atomic<uint64_t>& rays) {
+void VcmPasses::trace_light_paths(int pass, std::atomic<uint64_t>& rays) {
     const uint64_t seed = pass_seed(seed_ ^ kLightSeedSalt, pass);
     const size_t blocks = size_t((light_paths_ + kLightBlock - 1) / kLightBlock);
-    std::vector<std::vector<LightVertex>> traced(blocks);
-    std::vector<std::vector<uint32_t>> sizes(blocks);
+    traced_.resize(blocks);
+    path_sizes_.resize(blocks);
     tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
         uint64_t counted = 0;
+        traced_[b].clear();
+        path_sizes_[b].clear();
         const uint64_t first = b * kLightBlock, last = std::min(light_paths_, first + kLightBlock);
         for (uint64_t i = first; i < last; ++i) {
-            const size_t before = traced[b].size();
-            trace_light_path(i, seed, traced[b], counted);
-            sizes[b].push_back(uint32_t(traced[b].size() - before));
+            const size_t before = traced_[b].size();
+            trace_light_path(i, seed, traced_[b], counted);
+            path_sizes_[b].push_back(uint32_t(traced_[b].size() - before));
         }
         rays += counted;
     });
-    std::vector<LightVertex> vertices;
+    vertices_.clear();
     path_first_.assign(1, 0);
     for (size_t b = 0; b < blocks; ++b) {
-        vertices.insert(vertices.end(), traced[b].begin(), traced[b].end());
-        for (uint32_t n : sizes[b]) path_first_.push_back(path_first_.back() + n);
+        vertices_.insert(vertices_.end(), traced_[b].begin(), traced_[b].end());
+        for (uint32_t n : path_sizes_[b]) path_first_.push_back(path_first_.back() + n);
     }
-    return vertices;
 }
 
 bool VcmPasses::emit(Pcg32& rng, Walk& walk, SurfaceHit& hit, uint64_t& rays) const {
@@ -271,8 +287,10 @@ void VcmPasses::trace_light_path(uint64_t index, uint64_t seed, std::vector<Ligh
             is_black(s.weight))
             return;
         const double reverse = s.delta ? 0 : bsdf.pdf_reversed(s.wi);
+        // Never where the path merges: every strategy that uses this vertex has a smooth
+        // scene surface nearer the sensor (connection() weighs the one exception).
         scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse,
-                        std::fabs(dot(hit.normal, s.wi)), eta_, smooth);
+                        std::fabs(dot(hit.normal, s.wi)), eta_, false);
         // Roulette keeps the surviving subpaths' weight near the emitted one.
         const Rgb next = walk.beta * s.weight;
         const double survive = std::min(1.0, max_component(next) / max_component(walk.beta));
@@ -308,6 +326,7 @@ void VcmPasses::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink,
     CameraWalk walk;
     walk.beta = Rgb{kPi, kPi, kPi};
     walk.vertices = 1;
+    walk.at_receiver = true;
     LightComponentsOf<Rgb> sum;
     if (scatter(x, bsdf, walk, sampler, rays, sum)) trace_camera(walk, sampler, rays, sum);
     for (int c = 0; c < kLightComponents; ++c) sink.add(c, sum.of[size_t(c)]);
@@ -358,17 +377,21 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
                         uint64_t& rays, LightComponentsOf<Rgb>& sum) const {
     Pcg32& rng = sampler.rng();
     const bool smooth = bsdf.has_smooth_lobes();
+    const bool merges = smooth && x.surface && walk.merge_ahead;
     if (smooth && !lights_.empty()) {
+        // The light subpath to connect to, drawn first: its vertices lie anywhere in the
+        // pass's grid, and the light sample's work hides the wait for them.
+        const uint32_t paths = path_first_.empty() ? 0 : uint32_t(path_first_.size() - 1);
+        const uint32_t path = paths > 0 ? rng.below(paths) : 0;
+        for (uint32_t k = path_first_[path]; paths > 0 && k < path_first_[path + 1]; ++k)
+            grid_.prefetch_input(k);
         // Light straight from a light (sampled, or merged from a light subpath's first vertex),
         // and light that scattered on the light subpath (connected or merged).
-        Rgb straight = light_sample(x, bsdf, walk, lights_.draw(sampler), rays), scattered;
-        if (path_first_.size() > 1) {
-            const uint32_t path = rng.below(uint32_t(path_first_.size() - 1));
-            for (uint32_t k = path_first_[path]; k < path_first_[path + 1]; ++k)
-                scattered += connection(x, bsdf, walk, grid_->input(k), rays);
-        }
+        Rgb straight = light_sample(x, bsdf, walk, merges, lights_.draw(sampler), rays), scattered;
+        for (uint32_t k = path_first_[path]; paths > 0 && k < path_first_[path + 1]; ++k)
+            scattered += connection(x, bsdf, walk, merges, grid_.input(k), rays);
         Rgb merged_first, merged_later;
-        if (x.merging) merge(x, bsdf, walk, merged_first, merged_later);
+        if (merges) merge(x, bsdf, walk, merged_first, merged_later);
         straight += merged_first;
         scattered += merged_later;
         sum.of[layer_of_light_at_vertex(walk.segment_layer)] += walk.beta * straight;
@@ -382,7 +405,9 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
         return false;
     const double reverse = s.delta ? 0 : reverse_pdf(bsdf, walk.weights.vc + walk.weights.vm, s.wi);
     scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse, std::fabs(dot(x.normal, s.wi)),
-                    eta_, smooth && x.merging);
+                    eta_, merges);
+    walk.merge_ahead = walk.merge_ahead && !merges;
+    walk.at_receiver = false;
     walk.segment_layer = layer_after_scattering(walk.segment_layer, s.delta);
     walk.beta *= s.weight;
     walk.origin = scene_.offset(x.point, x.normal, s.wi);
@@ -396,7 +421,7 @@ double VcmPasses::reverse_pdf(const Bsdf& bsdf, double weight, Vec3 wi) const {
 }
 
 Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
-                            const LightUniforms& u, uint64_t& rays) const {
+                            bool merges, const LightUniforms& u, uint64_t& rays) const {
     const auto sample = lights_.sample_Li<Rgb>(x.point, u, {});
     if (!sample) return {};
     const Rgb f = bsdf.eval(sample->wi);
@@ -412,7 +437,7 @@ Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const Camer
     const double cos_x = std::fabs(dot(x.normal, sample->wi));
     const double w_light = bsdf_pdf / sample->pdf;
     const double w_camera = emission_pdf * cos_x / direct *
-                            ((x.merging ? eta_ : 0) + walk.weights.vcm +
+                            ((merges ? eta_ : 0) + walk.weights.vcm +
                              walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, sample->wi));
     const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), sample->wi);
     ++rays;
@@ -421,7 +446,7 @@ Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const Camer
 }
 
 Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
-                          const LightVertex& y, uint64_t& rays) const {
+                          bool merges, const LightVertex& y, uint64_t& rays) const {
     const Vec3 d = y.position - x.point;
     const double distance2 = dot(d, d);
     if (!(distance2 > 0)) return {};
@@ -439,8 +464,10 @@ Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraW
     const double camera_to_y = bsdf.pdf(w) * cos_y / distance2;
     const double light_to_x = bsdf_y.pdf(-w) * cos_x / distance2;
     const double y_reverse = bsdf_y.pdf_reversed(-w);
-    const double w_light = camera_to_y * (eta_ + y.weights.vcm + y.weights.vc * y_reverse);
-    const double w_camera = light_to_x * ((x.merging ? eta_ : 0) + walk.weights.vcm +
+    // y is where the path may merge only as the first scene surface after a receiver point.
+    const double w_light =
+        camera_to_y * ((walk.at_receiver ? eta_ : 0) + y.weights.vcm + y.weights.vc * y_reverse);
+    const double w_camera = light_to_x * ((merges ? eta_ : 0) + walk.weights.vcm +
                                           walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, w));
     const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), w);
     const Vec3 target = scene_.offset(y.position, y.facing, -w);
@@ -454,7 +481,7 @@ Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraW
 void VcmPasses::merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Rgb& first,
                       Rgb& later) const {
     const Vec3 n = bsdf.facing_normal();
-    grid_->for_each_near(x.point, [&](const LightVertex& y) {
+    grid_.for_each_near(x.point, [&](const LightVertex& y) {
         if (dot(y.facing, n) < kSameSurfaceCos) return;
         const double cos_i = std::fabs(dot(y.wi, n));
         if (!(cos_i > 0)) return;
