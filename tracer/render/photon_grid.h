@@ -51,15 +51,7 @@ public:
     double radius() const { return radius_; }
     size_t size() const { return photons_.size(); }
     size_t memory_bytes() const {
-        return photons_.size() * (sizeof(Photon) + sizeof(Vec3) + sizeof(uint32_t)) +
-               start_.size() * sizeof(uint32_t);
-    }
-    // The photon given i-th to the constructor.
-    const Photon& input(size_t i) const { return photons_[stored_at_[i]]; }
-    // Asks the cache for input(i) ahead of its use.
-    void prefetch_input(size_t i) const {
-        const char* p = reinterpret_cast<const char*>(&photons_[stored_at_[i]]);
-        for (size_t line = 0; line < sizeof(Photon); line += 64) __builtin_prefetch(p + line);
+        return photons_.size() * (sizeof(Photon) + sizeof(Vec3)) + start_.size() * sizeof(uint32_t);
     }
 
     // Calls f(photon) for every photon within the radius of p.
@@ -117,7 +109,6 @@ private:
     uint64_t slot_mask_ = 0;                // table_size_ - 1
     int hash_shift_ = 63;                   // 64 - log2(table_size_)
     std::vector<uint32_t> start_;           // photons of slot h: [start_[h], start_[h + 1])
-    std::vector<uint32_t> stored_at_;       // the i-th photon given is photons_[stored_at_[i]]
     std::vector<uint32_t> slot_of_, fill_;  // assign()'s scratch: each photon's slot, next free
 };
 
@@ -144,10 +135,8 @@ void PhotonGridOf<PhotonType>::assign(const std::vector<Photon>& photons, double
     fill_.assign(start_.begin(), start_.end() - 1);
     photons_.resize(n);
     positions_.resize(n);
-    stored_at_.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const uint32_t k = fill_[slot_of_[i]]++;
-        stored_at_[i] = k;
         photons_[k] = photons[i];
         positions_[k] = photons[i].position;
     }

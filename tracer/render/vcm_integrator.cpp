@@ -148,13 +148,13 @@ private:
     // The pass under way.
     double eta_ = 1, merge_normalisation_ = 0;
     std::vector<uint32_t> path_first_;
-    PhotonGridOf<LightVertex> grid_;  // the vertices, path after path
-    size_t vertex_bytes_ = 0;
-    // The light vertices as traced, by block and then in path order: kept from pass to pass
-    // with their storage, as grid_ keeps its own.
-    std::vector<std::vector<LightVertex>> traced_;
-    std::vector<std::vector<uint32_t>> path_sizes_;
+    // The light vertices in path order (for connections) and by place (for merges), kept
+    // from pass to pass with their storage.
     std::vector<LightVertex> vertices_;
+    PhotonGridOf<LightVertex> grid_;
+    size_t vertex_bytes_ = 0;
+    std::vector<std::vector<LightVertex>> traced_;  // by block of paths, as traced
+    std::vector<std::vector<uint32_t>> path_sizes_;
 };
 
 // Where camera paths first meet the scene, as the radius rule wants the points where merges
@@ -192,7 +192,8 @@ void VcmPasses::begin_pass(int pass, const SamplePoints& points, std::atomic<uin
     merge_normalisation_ = 1 / eta_;
     trace_light_paths(pass, rays);
     grid_.assign(vertices_, r);
-    vertex_bytes_ = std::max(vertex_bytes_, grid_.memory_bytes());
+    vertex_bytes_ =
+        std::max(vertex_bytes_, grid_.memory_bytes() + vertices_.size() * sizeof(LightVertex));
 }
 
 // In fixed blocks, so that the vertices' order does not depend on threads.
@@ -379,17 +380,21 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     const bool smooth = bsdf.has_smooth_lobes();
     const bool merges = smooth && x.surface && walk.merge_ahead;
     if (smooth && !lights_.empty()) {
-        // The light subpath to connect to, drawn first: its vertices lie anywhere in the
-        // pass's grid, and the light sample's work hides the wait for them.
+        // The light subpath to connect to, drawn first and asked of the cache: the light
+        // sample's work hides the wait for it.
         const uint32_t paths = path_first_.empty() ? 0 : uint32_t(path_first_.size() - 1);
         const uint32_t path = paths > 0 ? rng.below(paths) : 0;
-        for (uint32_t k = path_first_[path]; paths > 0 && k < path_first_[path + 1]; ++k)
-            grid_.prefetch_input(k);
+        const LightVertex* const subpath = vertices_.data() + (paths > 0 ? path_first_[path] : 0);
+        const LightVertex* const subpath_end =
+            vertices_.data() + (paths > 0 ? path_first_[path + 1] : 0);
+        for (auto p = reinterpret_cast<const char*>(subpath);
+             p < reinterpret_cast<const char*>(subpath_end); p += 64)
+            __builtin_prefetch(p);
         // Light straight from a light (sampled, or merged from a light subpath's first vertex),
         // and light that scattered on the light subpath (connected or merged).
         Rgb straight = light_sample(x, bsdf, walk, merges, lights_.draw(sampler), rays), scattered;
-        for (uint32_t k = path_first_[path]; paths > 0 && k < path_first_[path + 1]; ++k)
-            scattered += connection(x, bsdf, walk, merges, grid_.input(k), rays);
+        for (const LightVertex* y = subpath; y < subpath_end; ++y)
+            scattered += connection(x, bsdf, walk, merges, *y, rays);
         Rgb merged_first, merged_later;
         if (merges) merge(x, bsdf, walk, merged_first, merged_later);
         straight += merged_first;
