@@ -526,7 +526,7 @@ TEST(RenderScene, ClearWithinSaysNoOnlyWhereASurfaceOrMediumMayBe) {
     // box a surface passes through. Planes and triangles count by their planes (a box beside a
     // room's face, inside the face's bounding box, is clear), other shapes by their bounds.
     auto clear = [](const std::string& text, Vec3 low, Vec3 high) {
-        return Scene(text).scene.clear_within(low, high);
+        return Scene(text).scene.clear_within({low, high});
     };
     const std::string room = "box { <-1000, 0, -1000>, <1000, 2000, 1000> }";  // 12 triangles
     EXPECT_TRUE(clear(room, {-50, 1998, -50}, {50, 1999.8, 50}));              // under the ceiling

@@ -4,52 +4,44 @@
 // other primitives by their world bounds; unbounded solids always.
 #include <algorithm>
 
+#include "core/bounds.h"
 #include "tracer/render/scene_geometry.h"
 
 namespace rayset::tracer {
 
 namespace {
 
-struct Box3 {
-    Vec3 low, high;
+// Whether the plane dot(normal, p) = offset passes between the box's corners (or touches).
+bool straddles(const Bounds3& box, Vec3 normal, double offset) {
+    bool below = false, above = false;
+    for (int i = 0; i < 8; ++i) {
+        const Vec3 corner{i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
+                          i & 4 ? box.hi.z : box.lo.z};
+        const double side = dot(normal, corner) - offset;
+        below |= side <= 0, above |= side >= 0;
+    }
+    return below && above;
+}
 
-    // Whether the plane dot(normal, p) = offset passes between the box's corners (or touches).
-    bool straddles(Vec3 normal, double offset) const {
-        bool below = false, above = false;
-        for (int i = 0; i < 8; ++i) {
-            const Vec3 corner{i & 1 ? high.x : low.x, i & 2 ? high.y : low.y,
-                              i & 4 ? high.z : low.z};
-            const double side = dot(normal, corner) - offset;
-            below |= side <= 0, above |= side >= 0;
-        }
-        return below && above;
-    }
-    bool overlaps(Vec3 lower, Vec3 upper) const {
-        return lower.x <= high.x && upper.x >= low.x && lower.y <= high.y && upper.y >= low.y &&
-               lower.z <= high.z && upper.z >= low.z;
-    }
-    bool may_meet_triangle(Vec3 a, Vec3 b, Vec3 c) const {
-        const Vec3 lower{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}),
-                         std::min({a.z, b.z, c.z})};
-        const Vec3 upper{std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}),
-                         std::max({a.z, b.z, c.z})};
-        const Vec3 normal = cross(b - a, c - a);
-        return overlaps(lower, upper) && straddles(normal, dot(normal, a));
-    }
-};
+bool may_meet_triangle(const Bounds3& box, Vec3 a, Vec3 b, Vec3 c) {
+    Bounds3 triangle;
+    triangle.add(a), triangle.add(b), triangle.add(c);
+    const Vec3 normal = cross(b - a, c - a);
+    return box.overlaps(triangle) && straddles(box, normal, dot(normal, a));
+}
 
-bool user_prims_may_meet(const LeafTable& leaf, const Box3& box) {
+bool user_prims_may_meet(const LeafTable& leaf, const Bounds3& box) {
     for (const UserPrim& prim : leaf.user_prims) {
         switch (prim.kind) {
             case UserPrim::Kind::plane:
-                if (box.straddles(prim.normal, prim.distance)) return true;
+                if (straddles(box, prim.normal, prim.distance)) return true;
                 break;
             case UserPrim::Kind::solid:
-                if (prim.unbounded || box.overlaps(prim.lower, prim.upper)) return true;
+                if (prim.unbounded || box.overlaps({prim.lower, prim.upper})) return true;
                 break;
             case UserPrim::Kind::sphere:
             case UserPrim::Kind::shape:
-                if (box.overlaps(prim.lower, prim.upper)) return true;
+                if (box.overlaps({prim.lower, prim.upper})) return true;
                 break;
         }
     }
@@ -57,33 +49,32 @@ bool user_prims_may_meet(const LeafTable& leaf, const Box3& box) {
 }
 
 // The triangles as Embree holds them (three floats a vertex, three indices a triangle).
-bool triangles_may_meet(RTCGeometry geometry, size_t count, const Box3& box) {
+bool triangles_may_meet(RTCGeometry geometry, size_t count, const Bounds3& box) {
     const auto* vertex =
         static_cast<const float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
     const auto* index =
         static_cast<const unsigned*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_INDEX, 0));
     auto at = [&](unsigned i) { return Vec3{vertex[3 * i], vertex[3 * i + 1], vertex[3 * i + 2]}; };
     for (size_t k = 0; k < count; ++k)
-        if (box.may_meet_triangle(at(index[3 * k]), at(index[3 * k + 1]), at(index[3 * k + 2])))
+        if (may_meet_triangle(box, at(index[3 * k]), at(index[3 * k + 1]), at(index[3 * k + 2])))
             return true;
     return false;
 }
 
-bool instance_may_meet(const InstanceRecord& instance, const Box3& box) {
+bool instance_may_meet(const InstanceRecord& instance, const Bounds3& box) {
     const TriangleMesh& mesh = *instance.prototype->mesh;
     const Matrix4& m = instance.object_to_world;
     for (const auto& f : mesh.faces)
-        if (box.may_meet_triangle(m.point(mesh.vertices[size_t(f[0])]),
-                                  m.point(mesh.vertices[size_t(f[1])]),
-                                  m.point(mesh.vertices[size_t(f[2])])))
+        if (may_meet_triangle(box, m.point(mesh.vertices[size_t(f[0])]),
+                              m.point(mesh.vertices[size_t(f[1])]),
+                              m.point(mesh.vertices[size_t(f[2])])))
             return true;
     return false;
 }
 
 }  // namespace
 
-bool surfaces_may_reach(const GeometryTables& tables, RTCScene scene, Vec3 low, Vec3 high) {
-    const Box3 box{low, high};
+bool surfaces_may_reach(const GeometryTables& tables, RTCScene scene, const Bounds3& box) {
     for (size_t id = 0; id < tables.leaf_of_geometry.size(); ++id) {
         const LeafTable* leaf = tables.leaf_of_geometry[id];
         const int instance = tables.instance_of_geometry[id];

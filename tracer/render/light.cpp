@@ -52,14 +52,13 @@ LightSet::LightSet(const RenderScene& scene, bool naive_sources)
     for (Light& light : lights_) {
         PlacedRaySource* source = light.ray_source();
         if (!source || source->photons_only()) continue;
-        const Vec3 low = source->body_low(), high = source->body_high();
+        const Bounds3& box = source->body_box();
         // Twice the distance the scene keeps a ray's ends from surfaces, at the box's scale.
         const double margin =
-            2 *
-            scene.offset_distance(std::max({std::abs(low.x), std::abs(low.y), std::abs(low.z),
-                                            std::abs(high.x), std::abs(high.y), std::abs(high.z)}));
-        const Vec3 reach{2 * margin, 2 * margin, 2 * margin};
-        if (scene.clear_within(low - reach, high + reach)) source->end_shadow_rays_at_box(margin);
+            2 * scene.offset_distance(
+                    std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z),
+                              std::abs(box.hi.x), std::abs(box.hi.y), std::abs(box.hi.z)}));
+        if (scene.clear_within(box.grown(2 * margin))) source->end_shadow_rays_at_box(margin);
     }
 }
 

@@ -69,23 +69,16 @@ PlacedRaySource::PlacedRaySource(std::shared_ptr<const lightmodel::Emitter> emit
     power_ = luminance_weight(emitter_->phi_colour());
     radiance_scale_ = 1 / (k_ * k_);
     const lightmodel::Box body = emitter_->bounds();
-    body_low_ = {1e300, 1e300, 1e300}, body_high_ = {-1e300, -1e300, -1e300};
-    for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 c = to_world_.point({corner & 1 ? body.upper.x : body.lower.x,
-                                        corner & 2 ? body.upper.y : body.lower.y,
-                                        corner & 4 ? body.upper.z : body.lower.z});
-        body_low_ = {std::min(body_low_.x, c.x), std::min(body_low_.y, c.y),
-                     std::min(body_low_.z, c.z)};
-        body_high_ = {std::max(body_high_.x, c.x), std::max(body_high_.y, c.y),
-                      std::max(body_high_.z, c.z)};
-    }
-    widen_box(body_low_, body_high_);
+    for (int corner = 0; corner < 8; ++corner)
+        body_box_.add(to_world_.point({corner & 1 ? body.upper.x : body.lower.x,
+                                       corner & 2 ? body.upper.y : body.lower.y,
+                                       corner & 4 ? body.upper.z : body.lower.z}));
+    widen_box(body_box_.lo, body_box_.hi);
 }
 
 void PlacedRaySource::end_shadow_rays_at_box(double margin) {
     shadow_rays_to_box_ = true;
-    shadow_low_ = body_low_ - Vec3{margin, margin, margin};
-    shadow_high_ = body_high_ + Vec3{margin, margin, margin};
+    shadow_box_ = body_box_.grown(margin);
 }
 
 PlacedRaySource::Local PlacedRaySource::to_local(Vec3 origin, Vec3 direction) const {
@@ -94,7 +87,7 @@ PlacedRaySource::Local PlacedRaySource::to_local(Vec3 origin, Vec3 direction) co
 }
 
 bool PlacedRaySource::crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const {
-    if (!ray_crosses_box(origin, direction, t_max, body_low_, body_high_)) return false;
+    if (!ray_crosses_box(origin, direction, t_max, body_box_.lo, body_box_.hi)) return false;
     const Local l = to_local(origin, direction);
     lightmodel::EmitterHit hit;
     if (!emitter_->intersect(l.origin, l.direction, t_max < kInfinity ? t_max * l.scale : kInfinity,
@@ -122,7 +115,7 @@ template <class Q>
 std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
     Vec3 ref, const LightUniforms& u, double chosen, const WavelengthsFor<Q>& wavelengths) const {
     const Vec3 u_point{u.u[1], u.u[2], u.u[3]};
-    const bool to_box = shadow_rays_to_box_ && !box_holds(ref, shadow_low_, shadow_high_);
+    const bool to_box = shadow_rays_to_box_ && !box_holds(ref, shadow_box_.lo, shadow_box_.hi);
     const auto entry = to_box ? lightmodel::BodyEntry::not_wanted : lightmodel::BodyEntry::wanted;
     std::optional<lightmodel::LiSample> s;
     LightLiSampleOf<Q> out;
@@ -137,7 +130,8 @@ std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
     }
     if (!s) return std::nullopt;
     out.wi = normalized(to_world_.vector(s->wi));
-    out.distance = to_box ? box_entry(ref, out.wi, shadow_low_, shadow_high_) : s->distance * k_;
+    out.distance =
+        to_box ? box_entry(ref, out.wi, shadow_box_.lo, shadow_box_.hi) : s->distance * k_;
     out.pdf = chosen * s->pdf;  // a conformal map keeps solid angles
     return out;
 }

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bounds.h"
 #include "lightmodel/emitter.h"
 #include "tracer/render/light_samples.h"
 #include "tracer/render/rgb.h"
@@ -52,8 +53,7 @@ public:
     std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
                                                 const WavelengthsFor<Q>& wavelengths) const;
     // The body's box in scene coordinates (widened against rounding).
-    Vec3 body_low() const { return body_low_; }
-    Vec3 body_high() const { return body_high_; }
+    const Bounds3& body_box() const { return body_box_; }
     // From now on, light samples from outside the body's box widened by `margin` end their
     // shadow rays where they enter that box, not where they meet the body, which spares the
     // source its search for the body's nearest entry. The caller has made sure that no surface
@@ -90,10 +90,10 @@ private:
     double radiance_scale_ = 1;  // per mm^2 -> per unit^2
     bool naive_ = false;
     // The body's box in the scene frame, widened: most rays miss it, and then the body.
-    Vec3 body_low_, body_high_;
+    Bounds3 body_box_;
     // Where shadow rays end, when they end at a box (end_shadow_rays_at_box).
     bool shadow_rays_to_box_ = false;
-    Vec3 shadow_low_, shadow_high_;
+    Bounds3 shadow_box_;
 };
 
 // The scene's ray sources, each model built from its ray file or read from a .vdb model file;

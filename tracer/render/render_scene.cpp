@@ -206,8 +206,8 @@ RenderScene::~RenderScene() {
     if (device_) rtcReleaseDevice(device_);
 }
 
-bool RenderScene::clear_within(Vec3 low, Vec3 high) const {
-    return !fog_.present() && !interiors_.any() && !surfaces_may_reach(*tables_, scene_, low, high);
+bool RenderScene::clear_within(const Bounds3& box) const {
+    return !fog_.present() && !interiors_.any() && !surfaces_may_reach(*tables_, scene_, box);
 }
 
 Vec3 RenderScene::offset(Vec3 point, Vec3 normal, Vec3 direction) const {

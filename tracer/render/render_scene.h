@@ -11,6 +11,7 @@
 
 #include <embree3/rtcore.h>
 
+#include "core/bounds.h"
 #include "tracer/render/fog.h"
 #include "tracer/render/interior_media.h"
 #include "tracer/render/material.h"
@@ -82,9 +83,9 @@ public:
     // How far offset() moves a point whose largest coordinate is `scale`: epsilon plus the float
     // rounding of Embree's hit points there.
     double offset_distance(double scale) const { return epsilon_ + 1e-6 * scale; }
-    // Whether nothing a ray can meet or pass through lies within the box [low, high]: no
-    // surface (tested conservatively: false when unsure), no fog, no medium, no fade.
-    bool clear_within(Vec3 low, Vec3 high) const;
+    // Whether nothing a ray can meet or pass through lies within `box`: no surface (tested
+    // conservatively: false when unsure), no fog, no medium, no fade.
+    bool clear_within(const Bounds3& box) const;
 
     // Nearest surface along (origin, unit direction) in (t_near, t_far) that this kind of ray sees.
     bool intersect(Vec3 origin, Vec3 direction, double t_near, double t_far, RayKind kind,

@@ -85,9 +85,9 @@ struct GeometryTables {
 std::unique_ptr<GeometryTables> build_geometry(RTCDevice device, RTCScene scene,
                                                const SceneDescription& description);
 void add_user_geometry(RTCDevice device, RTCScene scene, GeometryTables& tables, LeafTable& leaf);
-// Whether some surface of the scene may lie within the box [low, high]: false only when none
-// does (box_clearance.cpp says how closely each kind of surface is tested).
-bool surfaces_may_reach(const GeometryTables& tables, RTCScene scene, Vec3 low, Vec3 high);
+// Whether some surface of the scene may lie within `box`: false only when none does
+// (box_clearance.cpp says how closely each kind of surface is tested).
+bool surfaces_may_reach(const GeometryTables& tables, RTCScene scene, const Bounds3& box);
 // Fills the hit's object, normal and shading normal from an Embree hit (point and t set).
 void resolve_hit(const GeometryTables& tables, const RTCHit& embree_hit, SurfaceHit& hit);
 
