@@ -252,73 +252,68 @@ ImageLayer image_layer(const RenderResult& r, size_t layer) {
     return {sum / n, std::sqrt(squares) / n};
 }
 
+// An integrator and the passes it renders.
+struct Rendering {
+    std::string integrator;
+    int passes;
+};
+
+// Renders an image of the closed box lit by the ray-file source, with `more` in the scene,
+// twice, and expects the two images' primary and secondary layers to agree within 4 combined
+// standard errors, each known to 0.5% (so 4 se is 2% at most). Direct visibility is left out:
+// the few pixels that see the source's body, 1e4 times as bright as the walls, make its image
+// mean a matter of sub-pixel coverage (a standard error as large as the mean at this size);
+// every integrator sees the body through the same camera rays.
+void expect_layers_agree(const std::string& more, uint64_t seed, const Rendering& a,
+                         const Rendering& b) {
+    ImageLayer layers[2][3];
+    for (int k = 0; k < 2; ++k) {
+        const Rendering& rendering = k == 0 ? a : b;
+        test::ClosedBox box;
+        box.cells = 2, box.integrator = rendering.integrator, box.more = more;
+        box.sources = {test::disk_files().model};
+        RenderSettings settings;
+        settings.width = 48, settings.height = 36, settings.seed = seed;
+        settings.passes = rendering.passes;
+        settings.photon_radius = 0.5;
+        const RenderResult r = render_text(test::closed_box_scene(box), settings);
+        for (size_t l = 0; l < 3; ++l) layers[k][l] = image_layer(r, l);
+    }
+    for (size_t l = 1; l < 3; ++l) {
+        const ImageLayer &x = layers[0][l], &y = layers[1][l];
+        const double se = std::hypot(x.standard_error, y.standard_error);
+        std::printf("%s: %s %.6g (se %.2g), %s %.6g (se %.2g) W/(m^2 sr)\n",
+                    light_layers()[l].c_str(), a.integrator.c_str(), x.mean, x.standard_error,
+                    b.integrator.c_str(), y.mean, y.standard_error);
+        EXPECT_NEAR(y.mean, x.mean, 4 * se) << light_layers()[l];
+        EXPECT_LT(se, 0.005 * x.mean) << light_layers()[l];
+    }
+}
+
 TEST(LightInterface, VcmAgreesWithThePathTracerLayerByLayerOnAnImage) {
     // Inside the closed box, lit by the ray-file source and a point light, a camera sees the
     // walls: light that reaches the image through connections and merges of light subpaths,
-    // against the path tracer, layer by layer, each within 4 combined standard errors.
+    // against the path tracer, layer by layer.
     const std::string view = "camera { location <0, 0, -45> look_at <0, -10, 50> angle 90 }\n" +
                              std::string(kPovLights[0].text) + "\n";
-    ImageLayer path[3], vcm[3];
-    for (const std::string integrator : {"path", "vcm"}) {
-        test::ClosedBox box;
-        box.cells = 2, box.integrator = integrator, box.more = view;
-        box.sources = {test::disk_files().model};
-        RenderSettings settings;
-        settings.width = 48, settings.height = 36, settings.seed = 2;
-        settings.passes = integrator == "path" ? 128 : 8;
-        settings.photon_radius = 0.5;
-        const RenderResult r = render_text(test::closed_box_scene(box), settings);
-        for (size_t l = 0; l < 3; ++l) (integrator == "path" ? path : vcm)[l] = image_layer(r, l);
-    }
-    // Direct visibility is left out: the few pixels that see the source's body, 1e4 times as
-    // bright as the walls, make its image mean a matter of sub-pixel coverage (a standard error
-    // as large as the mean at this size); both integrators see the body through the same camera
-    // rays.
-    for (size_t l = 1; l < 3; ++l) {
-        const double se = std::hypot(path[l].standard_error, vcm[l].standard_error);
-        std::printf("%s: path %.6g (se %.2g), vcm %.6g (se %.2g) W/(m^2 sr)\n",
-                    light_layers()[l].c_str(), path[l].mean, path[l].standard_error, vcm[l].mean,
-                    vcm[l].standard_error);
-        EXPECT_NEAR(vcm[l].mean, path[l].mean, 4 * se) << light_layers()[l];
-        EXPECT_LT(se, 0.005 * path[l].mean) << light_layers()[l];  // 4 se: 2% at most
-    }
+    expect_layers_agree(view, 2, {"path", 128}, {"vcm", 8});
 }
 
 TEST(LightInterface, VcmAgreesWithTheBidirectionalThroughAMirrorAndGlass) {
     // The closed box with a mirror ball and a glass ball on its floor under the ray-file
     // source: caustics on the floor (light -> mirror or glass -> floor <- camera), which vcm
     // merges at the camera path's first smooth surface and connects elsewhere, and light the
-    // camera sees through both balls. Layer by layer against the bidirectional integrator
-    // (photons gathered at the first smooth surface, path tracing elsewhere), each within 4
-    // combined standard errors: a vcm weight that does not add up to one shows as a
-    // difference. (The path tracer, which finds the small source through a mirror only by
-    // chance, would need 1000 times the passes for the same standard error.)
+    // camera sees through both balls. Against the bidirectional integrator (photons gathered
+    // at the first smooth surface, path tracing elsewhere): a vcm weight that does not add up
+    // to one shows as a difference. (The path tracer, which finds the small source through a
+    // mirror only by chance, would need 1000 times the passes for the same standard error.)
     const std::string scene_more =
         "camera { location <0, 10, -45> look_at <0, -40, 10> angle 80 }\n"
         "sphere { <18, -38, 5>, 12 pigment { rgb 0 } finish { diffuse 0 reflection 1 ambient 0 } "
         "}\n"
         "sphere { <-18, -38, 5>, 12 pigment { rgbt 1 } finish { diffuse 0 ambient 0 } interior { "
         "ior 1.5 } }\n";
-    ImageLayer other[3], vcm[3];
-    for (const std::string integrator : {"bidirectional", "vcm"}) {
-        test::ClosedBox box;
-        box.cells = 2, box.integrator = integrator, box.more = scene_more;
-        box.sources = {test::disk_files().model};
-        RenderSettings settings;
-        settings.width = 48, settings.height = 36, settings.seed = 4;
-        settings.passes = 16;
-        settings.photon_radius = 0.5;
-        const RenderResult r = render_text(test::closed_box_scene(box), settings);
-        for (size_t l = 0; l < 3; ++l) (integrator == "vcm" ? vcm : other)[l] = image_layer(r, l);
-    }
-    for (size_t l = 1; l < 3; ++l) {
-        const double se = std::hypot(other[l].standard_error, vcm[l].standard_error);
-        std::printf("%s: bidirectional %.6g (se %.2g), vcm %.6g (se %.2g) W/(m^2 sr)\n",
-                    light_layers()[l].c_str(), other[l].mean, other[l].standard_error, vcm[l].mean,
-                    vcm[l].standard_error);
-        EXPECT_NEAR(vcm[l].mean, other[l].mean, 4 * se) << light_layers()[l];
-        EXPECT_LT(se, 0.005 * other[l].mean) << light_layers()[l];
-    }
+    expect_layers_agree(scene_more, 4, {"bidirectional", 16}, {"vcm", 16});
 }
 
 TEST(LightInterface, EveryIntegratorTheSceneLanguageNamesRenders) {
