@@ -37,6 +37,15 @@ Vec3 random_direction(Pcg32& rng) {
     return {s * std::cos(phi), s * std::sin(phi), z};
 }
 
+// A direction uniform in the cone of half-angle acos(cos_max) around the unit `axis`.
+Vec3 direction_in_cone(Pcg32& rng, Vec3 axis, double cos_max) {
+    const double z = 1 - rng.uniform() * (1 - cos_max), phi = 2 * kPi * rng.uniform();
+    const double s = std::sqrt(std::max(0.0, 1 - z * z));
+    const Vec3 helper = std::fabs(axis.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    const Vec3 u = normalized(cross(helper, axis)), v = cross(axis, u);
+    return s * std::cos(phi) * u + s * std::sin(phi) * v + z * axis;
+}
+
 const char* const kSources[] = {"disk", "sphere", "lobe", "cluster"};
 
 TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
@@ -431,12 +440,23 @@ TEST(Model, LightSamplesAreWeighedByTheDensityPdfLiGives) {
     // MIS sees a light sample's pdf and, for a BSDF ray that meets the body, pdf_Li: the two
     // must be one function of the direction, near the source (the line's exact density) and
     // far from it (the cone's), and a density: its integral over directions is 1 (estimated
-    // with directions uniform on the sphere, 4 standard errors).
+    // with directions uniform in a cone holding every occupied voxel, or on the whole sphere
+    // from within reach of them; 4 standard errors).
     const BuiltSource& b = built_source("disk");
     const lightmodel::Box box = b.model->bounds();
     const Vec3 centre = 0.5 * (box.lower + box.upper);
     const double size = box.longest();
-    for (const double reach : {0.8, 1.5, 3.0, 10.0}) {
+    // A sphere holding the occupied voxels' box with room to spare: pdf_Li is 0 outside its
+    // cone.
+    const lightmodel::LatticeFrame& frame = b.model->density_frame;
+    lightmodel::Box voxels;
+    for (const lightmodel::Coord& v : b.model->voxels) {
+        voxels.extend(frame.cell_lower(v));
+        voxels.extend(frame.cell_lower(v) + frame.cell_size() * Vec3{1, 1, 1});
+    }
+    const Vec3 voxels_centre = 0.5 * (voxels.lower + voxels.upper);
+    const double voxels_reach = 0.6 * length(voxels.upper - voxels.lower);
+    for (const double reach : {0.8, 1.5, 3.0, 10.0, 100.0}) {
         const Vec3 ref = centre + reach * size * normalized(Vec3{0.3, -0.2, 1});
         Pcg32 rng(31);
         int kept = 0;
@@ -448,10 +468,17 @@ TEST(Model, LightSamplesAreWeighedByTheDensityPdfLiGives) {
             ASSERT_NEAR(b.source->pdf_Li(ref, s->wi), s->pdf, 1e-9 * s->pdf) << reach;
         }
         EXPECT_GT(kept, 3000) << reach;
+        const double distance = length(ref - voxels_centre);
+        const bool cone = distance > voxels_reach;
+        const double sin_max = cone ? voxels_reach / distance : 1;
+        const double cos_max = cone ? std::sqrt(1 - sin_max * sin_max) : -1;
+        const double solid_angle = 2 * kPi * (1 - cos_max);
+        const Vec3 axis = normalized(voxels_centre - ref);
         const int n = 2000000;
         double sum = 0, sum2 = 0;
         for (int k = 0; k < n; ++k) {
-            const double p = 4 * kPi * b.source->pdf_Li(ref, random_direction(rng));
+            const Vec3 w = cone ? direction_in_cone(rng, axis, cos_max) : random_direction(rng);
+            const double p = solid_angle * b.source->pdf_Li(ref, w);
             sum += p, sum2 += p * p;
         }
         const double mean = sum / n, error = std::sqrt((sum2 / n - mean * mean) / n);
