@@ -137,7 +137,7 @@ void BidirectionalPasses<Q>::end_pass(int pass, const SamplePoints& points, Pass
         radius_.set_first(default_radius(gather_points(visible_, *points.receivers)));
     std::vector<Photon> photons = trace_photons(pass, rays, stop);
     if (stopped(stop)) return;
-    const Grid grid(std::move(photons), radius_.at(pass));
+    const Grid grid(photons, radius_.at(pass));
     size_t visible_points = 0;
     for (const auto& tile_points : visible_) visible_points += tile_points.size();
     photon_bytes_ = std::max(photon_bytes_, grid.memory_bytes());

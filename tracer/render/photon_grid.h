@@ -4,9 +4,9 @@
 // scattered slots. Built once per pass by a counting sort: the order is fixed by the photons'
 // order, so gathers sum in a deterministic order. A grid rebuilt for the next pass (assign())
 // keeps its storage: tens of megabytes a pass, which the system would otherwise map afresh and
-// fault in page by page. The positions are kept apart from the rest of
-// each photon: a gather tests many photons' distance for each one it uses, and reads 24 bytes
-// for a test instead of the whole photon.
+// fault in page by page. The positions are kept apart from the rest of each photon: a gather
+// tests many photons' distance for each one it uses, and reads 24 bytes for a test instead of
+// the whole photon.
 #pragma once
 
 #include <algorithm>

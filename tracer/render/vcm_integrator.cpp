@@ -127,6 +127,12 @@ private:
     // the path ends.
     bool scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& walk, Sampler& sampler,
                  uint64_t& rays, LightComponentsOf<Rgb>& sum) const;
+    // One of the pass's light subpaths, drawn by `rng`, its vertices asked of the cache (they
+    // lie anywhere in the pass's vertices); empty when the pass has none.
+    struct Subpath {
+        const LightVertex *first, *last;
+    };
+    Subpath draw_subpath(Pcg32& rng) const;
     // `merges`: whether x is where the path may merge (scatter()).
     Rgb light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, bool merges,
                      const LightUniforms& u, uint64_t& rays) const;
@@ -380,20 +386,12 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     const bool smooth = bsdf.has_smooth_lobes();
     const bool merges = smooth && x.surface && walk.merge_ahead;
     if (smooth && !lights_.empty()) {
-        // The light subpath to connect to, drawn first and asked of the cache: the light
-        // sample's work hides the wait for it.
-        const uint32_t paths = path_first_.empty() ? 0 : uint32_t(path_first_.size() - 1);
-        const uint32_t path = paths > 0 ? rng.below(paths) : 0;
-        const LightVertex* const subpath = vertices_.data() + (paths > 0 ? path_first_[path] : 0);
-        const LightVertex* const subpath_end =
-            vertices_.data() + (paths > 0 ? path_first_[path + 1] : 0);
-        for (auto p = reinterpret_cast<const char*>(subpath);
-             p < reinterpret_cast<const char*>(subpath_end); p += 64)
-            __builtin_prefetch(p);
+        // The subpath is drawn first: the light sample's work hides the wait for its vertices.
+        const Subpath subpath = draw_subpath(rng);
         // Light straight from a light (sampled, or merged from a light subpath's first vertex),
         // and light that scattered on the light subpath (connected or merged).
         Rgb straight = light_sample(x, bsdf, walk, merges, lights_.draw(sampler), rays), scattered;
-        for (const LightVertex* y = subpath; y < subpath_end; ++y)
+        for (const LightVertex* y = subpath.first; y < subpath.last; ++y)
             scattered += connection(x, bsdf, walk, merges, *y, rays);
         Rgb merged_first, merged_later;
         if (merges) merge(x, bsdf, walk, merged_first, merged_later);
@@ -419,6 +417,15 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     walk.direction = s.wi;
     walk.kind = RayKind::indirect;
     return walk.vertices + 1 < kCameraRouletteDepth || survives_roulette(walk.beta, rng);
+}
+
+VcmPasses::Subpath VcmPasses::draw_subpath(Pcg32& rng) const {
+    if (path_first_.size() < 2) return {nullptr, nullptr};
+    const uint32_t path = rng.below(uint32_t(path_first_.size() - 1));
+    const Subpath s{vertices_.data() + path_first_[path], vertices_.data() + path_first_[path + 1]};
+    const auto* end = reinterpret_cast<const char*>(s.last);
+    for (auto p = reinterpret_cast<const char*>(s.first); p < end; p += 64) __builtin_prefetch(p);
+    return s;
 }
 
 double VcmPasses::reverse_pdf(const Bsdf& bsdf, double weight, Vec3 wi) const {
