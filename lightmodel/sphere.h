@@ -2,7 +2,7 @@
 // Embree's sphere points (RTC_FORMAT_FLOAT4 x y z r) and the model file store.
 #pragma once
 
-#include "lightmodel/lattice.h"
+#include "core/geometry.h"
 
 #include <cmath>
 

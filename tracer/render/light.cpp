@@ -53,11 +53,9 @@ LightSet::LightSet(const RenderScene& scene, bool naive_sources)
         PlacedRaySource* source = light.ray_source();
         if (!source || source->photons_only()) continue;
         const Bounds3& box = source->body_box();
-        // Twice the distance the scene keeps a ray's ends from surfaces, at the box's scale.
+        // Twice the distance the scene keeps a ray's ends from surfaces, at the box's corners.
         const double margin =
-            2 * scene.offset_distance(
-                    std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z),
-                              std::abs(box.hi.x), std::abs(box.hi.y), std::abs(box.hi.z)}));
+            2 * std::max(scene.offset_distance(box.lo), scene.offset_distance(box.hi));
         if (scene.clear_within(box.grown(2 * margin))) source->end_shadow_rays_at_box(margin);
     }
 }

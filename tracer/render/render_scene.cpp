@@ -211,8 +211,7 @@ bool RenderScene::clear_within(const Bounds3& box) const {
 }
 
 Vec3 RenderScene::offset(Vec3 point, Vec3 normal, Vec3 direction) const {
-    const double e =
-        offset_distance(std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)}));
+    const double e = offset_distance(point);
     return point + (dot(direction, normal) >= 0 ? e : -e) * normal;
 }
 

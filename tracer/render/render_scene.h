@@ -4,6 +4,8 @@
 // integrators' (light.h).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -80,9 +82,12 @@ public:
     const Interiors& interiors() const { return interiors_; }
     // Offset that moves a ray origin off the surface it starts on (scene units).
     double epsilon() const { return epsilon_; }
-    // How far offset() moves a point whose largest coordinate is `scale`: epsilon plus the float
-    // rounding of Embree's hit points there.
-    double offset_distance(double scale) const { return epsilon_ + 1e-6 * scale; }
+    // How far offset() moves `point`: epsilon plus the float rounding of Embree's hit points
+    // there (relative to its largest coordinate).
+    double offset_distance(Vec3 point) const {
+        return epsilon_ +
+               1e-6 * std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+    }
     // Whether nothing a ray can meet or pass through lies within `box`: no surface (tested
     // conservatively: false when unsure), no fog, no medium, no fade.
     bool clear_within(const Bounds3& box) const;
