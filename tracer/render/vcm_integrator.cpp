@@ -105,9 +105,6 @@ private:
         LightComponent segment_layer = kDirectVisibility;
         // No smooth scene surface met yet: the next one is where this path may merge.
         bool merge_ahead = true;
-        // The walk started at a receiver point and has not scattered since: a light vertex it
-        // connects to is the path's first scene surface, where merging may happen.
-        bool at_receiver = false;
     };
 
     // The light subpaths of `pass`: their vertices into vertices_, path after path (where each
@@ -333,7 +330,6 @@ void VcmPasses::receiver_sample(Vec3 point, Vec3 normal, const SampleSink& sink,
     CameraWalk walk;
     walk.beta = Rgb{kPi, kPi, kPi};
     walk.vertices = 1;
-    walk.at_receiver = true;
     LightComponentsOf<Rgb> sum;
     if (scatter(x, bsdf, walk, sampler, rays, sum)) trace_camera(walk, sampler, rays, sum);
     for (int c = 0; c < kLightComponents; ++c) sink.add(c, sum.of[size_t(c)]);
@@ -410,7 +406,6 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse, std::fabs(dot(x.normal, s.wi)),
                     eta_, merges);
     walk.merge_ahead = walk.merge_ahead && !merges;
-    walk.at_receiver = false;
     walk.segment_layer = layer_after_scattering(walk.segment_layer, s.delta);
     walk.beta *= s.weight;
     walk.origin = scene_.offset(x.point, x.normal, s.wi);
@@ -476,9 +471,10 @@ Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraW
     const double camera_to_y = bsdf.pdf(w) * cos_y / distance2;
     const double light_to_x = bsdf_y.pdf(-w) * cos_x / distance2;
     const double y_reverse = bsdf_y.pdf_reversed(-w);
-    // y is where the path may merge only as the first scene surface after a receiver point.
+    // y is where the path may merge only as the first scene surface after a receiver point (x
+    // the receiver point itself, the one camera vertex that is no surface).
     const double w_light =
-        camera_to_y * ((walk.at_receiver ? eta_ : 0) + y.weights.vcm + y.weights.vc * y_reverse);
+        camera_to_y * ((x.surface ? 0 : eta_) + y.weights.vcm + y.weights.vc * y_reverse);
     const double w_camera = light_to_x * ((merges ? eta_ : 0) + walk.weights.vcm +
                                           walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, w));
     const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), w);
