@@ -50,13 +50,13 @@ double ComplexSource::L(Vec3 origin, Vec3 dir, const EmitterHit&,
 
 Rgb ComplexSource::L_colour(Vec3 origin, Vec3 dir, const EmitterHit&) const {
     Rgb colour;
-    volume_.radiance_toward(origin, dir, 0, kInfinity, {}, &colour);
+    volume_.radiance_toward(origin, dir, 0, kInfinity, {}, {&colour});
     return colour;
 }
 
 void ComplexSource::L_spectral(Vec3 origin, Vec3 dir, const EmitterHit&,
                                SpectralQuery& query) const {
-    volume_.radiance_toward(origin, dir, 0, kInfinity, {}, nullptr, &query);
+    volume_.radiance_toward(origin, dir, 0, kInfinity, {}, {nullptr, &query});
 }
 
 std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double u_voxel,
@@ -84,9 +84,26 @@ std::optional<LiSample> ComplexSource::sample_Li(Vec3 ref, double u_cell, double
                                       spectral);
         return s;
     }
-    s.Li = volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, &s.Li_colour, spectral, &s.pdf);
+    s.Li =
+        volume_.radiance_toward(ref, s.wi, 0, kInfinity, select, {&s.Li_colour, spectral, &s.pdf});
     if (!(s.pdf > 0)) return std::nullopt;
     return s;
+}
+
+EmitterLine ComplexSource::line(Vec3 origin, Vec3 dir, bool with_pdf_Le,
+                                SpectralQuery* spectral) const {
+    EmitterLine out;
+    const bool far = far_from(origin);
+    LineAlso also;
+    if (spectral)
+        also.spectral = spectral;
+    else
+        also.colour = &out.L_colour;
+    if (!far) also.pdf = &out.pdf_Li;
+    if (with_pdf_Le) also.line_density = &out.pdf_Le;
+    volume_.radiance_toward(origin, dir, 0, kInfinity, {}, also);
+    if (far) out.pdf_Li = cone_density(origin, dir);
+    return out;
 }
 
 bool ComplexSource::far_from(Vec3 ref) const {

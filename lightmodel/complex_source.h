@@ -41,6 +41,9 @@ public:
     double pdf_Le_line(Vec3 origin, Vec3 dir) const override {
         return volume_.line_density(origin, dir);
     }
+    // One traversal of the emitting volume.
+    EmitterLine line(Vec3 origin, Vec3 dir, bool with_pdf_Le,
+                     SpectralQuery* spectral) const override;
 
     // Far-field radiant intensity of the model toward `w` (flux/sr): sum over flux cells of
     // Phi_c D_k(w). What sample_Le emits and what the camera sees from far away.

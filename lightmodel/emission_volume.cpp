@@ -92,26 +92,33 @@ double EmissionVolume::cell_volume(uint32_t cell) const {
 }
 
 double EmissionVolume::radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
-                                       const SpectralSelect& select, Rgb* colour,
-                                       SpectralQuery* spectral, double* pdf) const {
-    const Vec3 emitted = -dir;
-    double sum = 0, pdf_sum = 0;
+                                       const SpectralSelect& select, const LineAlso& also) const {
+    const double inf = std::numeric_limits<double>::infinity();
+    const bool whole_line = also.line_density != nullptr;
+    double sum = 0, pdf_sum = 0, line_sum = 0;
     Rgb colour_sum;
     // Neighbouring voxels mostly share an intensity cell: its diagram is evaluated once for them.
     int32_t diagram = -1;
     double d = 0;
-    traverse(origin, dir, tmin, tmax, [&](uint32_t c, double t0, double t1) {
-        const LineTerms& cell = line_terms_[c];
-        if (cell.diagram != diagram) {
-            diagram = cell.diagram;
-            d = model_.diagrams[size_t(diagram)].pdf(emitted);
-        }
-        sum += emission(c, d * cell.emission * (t1 - t0), select, colour ? &colour_sum : nullptr,
-                        spectral);
-        if (pdf) pdf_sum += direction_density(c, t0, t1);
-    });
-    if (colour) *colour = colour_sum;
-    if (pdf) *pdf = pdf_sum;
+    traverse(origin, dir, whole_line ? -inf : tmin, whole_line ? inf : tmax,
+             [&](uint32_t c, double t0, double t1) {
+                 const LineTerms& cell = line_terms_[c];
+                 if (cell.diagram != diagram) {
+                     diagram = cell.diagram;
+                     d = model_.diagrams[size_t(diagram)].pdf(-dir);
+                 }
+                 if (whole_line) {
+                     line_sum += line_term(c, d, t0, t1);
+                     t0 = std::max(t0, tmin), t1 = std::min(t1, tmax);
+                     if (!(t1 > t0)) return;
+                 }
+                 sum += emission(c, d * cell.emission * (t1 - t0), select,
+                                 also.colour ? &colour_sum : nullptr, also.spectral);
+                 if (also.pdf) pdf_sum += direction_density(c, t0, t1);
+             });
+    if (also.colour) *also.colour = colour_sum;
+    if (also.pdf) *also.pdf = pdf_sum;
+    if (whole_line) *also.line_density = line_sum;
     return sum;
 }
 
@@ -159,7 +166,7 @@ double EmissionVolume::line_density(Vec3 origin, Vec3 dir) const {
     traverse(origin, dir, -inf, inf, [&](uint32_t c, double t0, double t1) {
         const int32_t k = line_terms_[c].diagram;
         if (k != diagram) diagram = k, d = model_.diagrams[size_t(k)].pdf(-dir);
-        sum += point_density(c) * d * (t1 - t0);
+        sum += line_term(c, d, t0, t1);
     });
     return sum;
 }

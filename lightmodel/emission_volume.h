@@ -30,6 +30,17 @@ struct SpectralSelect {
     bool whole_flux() const { return quantity == flux && band < 0; }
 };
 
+// What a traversal of a line gathers beside its radiance; each output given is written.
+struct LineAlso {
+    Rgb* colour = nullptr;              // the radiance as a linear-sRGB triple (colour.h)
+    SpectralQuery* spectral = nullptr;  // its values at the query's wavelengths, added to
+    // The solid-angle density at the line's origin of its direction under sample_point()
+    // restricted to the segment (pdf_direction() for tmin 0 and tmax infinite).
+    double* pdf = nullptr;
+    // line_density() of the line: the whole line, whatever segment the radiance is over.
+    double* line_density = nullptr;
+};
+
 struct VolumeSample {
     Vec3 point;
     uint32_t flux_cell = 0;
@@ -48,14 +59,10 @@ public:
     double cell_flux(uint32_t cell, const SpectralSelect& select) const;
 
     // Radiance arriving at `origin` from direction `dir`: the light the voxels on the segment
-    // origin + t dir, t in [tmin, tmax], emit toward -dir. With `colour`, the same line
-    // integral as a linear-sRGB triple (colour.h) is stored there too, and with `spectral` its
-    // values at the query's wavelengths (emission_spectrum.h), and with `pdf` the solid-angle
-    // density at `origin` of the direction `dir` under sample_point() restricted to the segment
-    // (pdf_direction() for tmin 0 and tmax infinite), from one traversal.
+    // origin + t dir, t in [tmin, tmax], emit toward -dir; with `also`, more of the same line
+    // from the same traversal.
     double radiance_toward(Vec3 origin, Vec3 dir, double tmin, double tmax,
-                           const SpectralSelect& select, Rgb* colour = nullptr,
-                           SpectralQuery* spectral = nullptr, double* pdf = nullptr) const;
+                           const SpectralSelect& select, const LineAlso& also = {}) const;
     // The estimate a point drawn by sample_point() in `cell` gives of that line's radiance over
     // its solid-angle density, seen from `distance` along `dir` (toward the point): the
     // emission there over the point's density per unit solid angle, eps_c(-dir) / (p_V(c)
@@ -118,6 +125,11 @@ private:
     // Solid-angle density, seen from a line's origin, that the voxels of `cell` between t0 and
     // t1 along it give its direction under sample_point(): the integral of point_density t^2.
     double direction_density(uint32_t cell, double t0, double t1) const;
+    // What the voxels of `cell` between t0 and t1 along a line give its line_density, their
+    // diagram's density along the line being `diagram_pdf`.
+    double line_term(uint32_t cell, double diagram_pdf, double t0, double t1) const {
+        return line_terms_[cell].point_density * diagram_pdf * (t1 - t0);
+    }
 
     const LightModel& model_;
     std::vector<int32_t> voxel_cell_;    // dense density lattice -> flux cell, -1 empty

@@ -30,25 +30,18 @@ void EmissionVolume::traverse(Vec3 origin, Vec3 dir, double tmin, double tmax, F
     }
     if (!(t0 < t1)) return;
 
+    // A cell's exits are computed from its index, not accumulated step by step, so that every
+    // traversal of a line finds the same boundaries wherever along it it starts.
     int cell[3], step[3];
-    double next[3], delta[3];
+    double inverse[3], exit_offset[3], next[3];
     const double inf = std::numeric_limits<double>::infinity();
     for (int a = 0; a < 3; ++a) {
         const double p = o[a] + t0 * d[a];
         cell[a] = std::clamp(int(std::floor(p)), 0, dims[a] - 1);
-        if (d[a] > 0) {
-            step[a] = 1;
-            next[a] = (cell[a] + 1 - o[a]) / d[a];
-            delta[a] = 1 / d[a];
-        } else if (d[a] < 0) {
-            step[a] = -1;
-            next[a] = (cell[a] - o[a]) / d[a];
-            delta[a] = -1 / d[a];
-        } else {
-            step[a] = 0;
-            next[a] = inf;
-            delta[a] = inf;
-        }
+        step[a] = d[a] > 0 ? 1 : d[a] < 0 ? -1 : 0;
+        inverse[a] = step[a] != 0 ? 1 / d[a] : 0;
+        exit_offset[a] = (d[a] > 0 ? 1 : 0) - o[a];
+        next[a] = step[a] != 0 ? (cell[a] + exit_offset[a]) * inverse[a] : inf;
     }
     double t = t0;
     while (t < t1) {
@@ -59,7 +52,7 @@ void EmissionVolume::traverse(Vec3 origin, Vec3 dir, double tmin, double tmax, F
         t = t_exit;
         cell[a] += step[a];
         if (cell[a] < 0 || cell[a] >= dims[a]) return;
-        next[a] += delta[a];
+        next[a] = (cell[a] + exit_offset[a]) * inverse[a];
     }
 }
 

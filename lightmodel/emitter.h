@@ -38,6 +38,14 @@ struct LiSample {
     Rgb Li_colour;        // the same as a colour (colour.h), whatever the selection
 };
 
+// A ray that met the body, seen from its origin: the radiance it brings and the densities the
+// other strategies have for it, each 0 unless asked for.
+struct EmitterLine {
+    Rgb L_colour;       // as L_colour (not written when the radiance goes to a SpectralQuery)
+    double pdf_Li = 0;  // as pdf_Li
+    double pdf_Le = 0;  // as pdf_Le_line
+};
+
 // Photon emission: where and in which direction a photon leaves, and the flux it carries
 // (already divided by the densities it was drawn with).
 struct LeSample {
@@ -86,6 +94,21 @@ public:
     // The density sample_Li's samples along `wi` from `ref` are weighed by for MIS with BSDF
     // sampling (LiSample::pdf).
     virtual double pdf_Li(Vec3 ref, Vec3 wi) const = 0;
+
+    // L_colour (or L_spectral, into `spectral` when given), pdf_Li and, with `with_pdf_Le`,
+    // pdf_Le_line of one ray that met the body, at once: what weighs a camera path's hit on
+    // the body, or a photon's first segment, against the other strategies.
+    virtual EmitterLine line(Vec3 origin, Vec3 dir, bool with_pdf_Le,
+                             SpectralQuery* spectral) const {
+        EmitterLine out;
+        if (spectral)
+            L_spectral(origin, dir, {}, *spectral);
+        else
+            out.L_colour = L_colour(origin, dir, {});
+        out.pdf_Li = pdf_Li(origin, dir);
+        if (with_pdf_Le) out.pdf_Le = pdf_Le_line(origin, dir);
+        return out;
+    }
 
     // Photon emission from seven uniform numbers in [0, 1).
     virtual LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const = 0;

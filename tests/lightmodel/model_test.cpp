@@ -529,6 +529,53 @@ TEST(Model, LightSamplesThatNeedNotFindTheBodysEntryAreTheSameSamples) {
     }
 }
 
+TEST(Model, OneLookAtALineGivesWhatTheSeparateQueriesGive) {
+    // Emitter::line gathers a line's radiance, pdf_Li and pdf_Le_line from one traversal of
+    // the emitting volume, over the whole line for pdf_Le where the radiance and pdf_Li count
+    // only ahead of the origin. Against the three queries, each its own traversal, from points
+    // far, near and in the model's box, along lines toward random points of the box: the same
+    // numbers, as every traversal of a line finds the same voxel boundaries wherever it starts.
+    for (const char* name : {"disk", "sphere", "cluster"}) {
+        const BuiltSource& b = built_source(name);
+        const lightmodel::Box box = b.model->bounds();
+        const Vec3 centre = 0.5 * (box.lower + box.upper);
+        const double size = box.longest();
+        Pcg32 rng(29);
+        int lit = 0, inside = 0;
+        const auto point_in_box = [&] {
+            return box.lower + Vec3{(box.upper.x - box.lower.x) * rng.uniform(),
+                                    (box.upper.y - box.lower.y) * rng.uniform(),
+                                    (box.upper.z - box.lower.z) * rng.uniform()};
+        };
+        for (int n = 0; n < 4000; ++n) {
+            const double reach = n % 4 == 0 ? 0.3 : n % 4 == 1 ? 1.5 : 20;
+            const Vec3 ref =
+                n % 4 == 3 ? point_in_box() : centre + reach * size * random_direction(rng);
+            const Vec3 target = point_in_box();
+            const Vec3 w = normalized(target - ref);
+            const lightmodel::EmitterLine line = b.source->line(ref, w, true, nullptr);
+            const Rgb colour = b.source->L_colour(ref, w, {});
+            const double pdf_Li = b.source->pdf_Li(ref, w), pdf_Le = b.source->pdf_Le_line(ref, w);
+            ASSERT_EQ(line.L_colour.red, colour.red) << name << " line " << n;
+            ASSERT_EQ(line.L_colour.green, colour.green) << name << " line " << n;
+            ASSERT_EQ(line.L_colour.blue, colour.blue) << name << " line " << n;
+            ASSERT_EQ(line.pdf_Li, pdf_Li) << name << " line " << n;
+            ASSERT_EQ(line.pdf_Le, pdf_Le) << name << " line " << n;
+            EXPECT_EQ(b.source->line(ref, w, false, nullptr).pdf_Le, 0);
+            lightmodel::SpectralQuery one{{450, 530, 600, 650}, {}}, other = one;
+            b.source->line(ref, w, false, &one);
+            b.source->L_spectral(ref, w, {}, other);
+            for (int i = 0; i < 4; ++i) ASSERT_EQ(one.value[i], other.value[i]) << name;
+            lit += colour.green > 0;
+            inside += box.contains(ref) && pdf_Le > 0;
+        }
+        std::printf("[ figures  ] %s: %d of 4000 lines bring light, %d from inside the box\n", name,
+                    lit, inside);
+        EXPECT_GT(lit, 500) << name;
+        EXPECT_GT(inside, 200) << name;
+    }
+}
+
 TEST(Model, VoxelBallsNameOnlyBallsTheRayEnters) {
     // Every ball is listed for the voxel holding its centre: a ray from outside the body toward
     // that centre must be found entering one (completeness for the listed balls). Whatever is

@@ -487,7 +487,7 @@ TEST(LightInterface, APhotonsFluxIsTheRadianceItCarriesOverItsEmissionDensity) {
             } else {
                 ASSERT_TRUE(light.crossed(origin, wi, 1e300, t)) << "photon " << n;
                 EXPECT_NEAR(t, 100, 1e-9) << "photon " << n;
-                arriving = light.radiance<Rgb>(origin, wi, {}).green;
+                arriving = light.arriving<Rgb>(origin, wi, t, 1, false, {}).radiance.green;
             }
             const double pdf = light.pdf_Le(origin, wi, t, 1);
             ASSERT_GT(pdf, 0) << "photon " << n;

@@ -105,11 +105,10 @@ Q LightSet::crossed_radiance(Vec3 origin, Vec3 direction, double t_max, double b
                              const WavelengthsFor<Q>& wavelengths) const {
     Q sum{};
     for_each_crossed(origin, direction, t_max, [&](size_t i, double t) {
-        double weight = 1;
-        if (bsdf_pdf >= 0)
-            weight =
-                power_heuristic(bsdf_pdf, lights_[i].pdf_Li(origin, direction, t, probability_[i]));
-        sum += weight * lights_[i].radiance<Q>(origin, direction, wavelengths);
+        const LightArrivalOf<Q> light =
+            lights_[i].arriving<Q>(origin, direction, t, probability_[i], false, wavelengths);
+        const double weight = bsdf_pdf >= 0 ? power_heuristic(bsdf_pdf, light.pdf_Li) : 1;
+        sum += weight * light.radiance;
     });
     return sum;
 }

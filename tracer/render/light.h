@@ -9,7 +9,8 @@
 //               along it (intensity / d^2 for a point) and its solid-angle density;
 //   crossed     where a ray meets the light's body (area lights, ray-source bodies): lights are
 //               not geometry, a ray collects every body it crosses before the first surface;
-//   radiance    the radiance such a ray brings; pdf_Li the density sample_Li has for it;
+//   arriving    the radiance such a ray brings, the density sample_Li has for it and, when
+//               asked, pdf_Le's;
 //   sample_Le   a photon: origin, direction and flux; pdf_Le the density it has for a given
 //               ray, per steradian and per unit area across the ray (the light's projected
 //               area, so that no cosine at the light enters), for weighing bidirectional
@@ -75,14 +76,21 @@ public:
         return std::visit([&](const auto& l) { return l.crossed(origin, direction, t_max, t); },
                           kind_);
     }
-    // For a ray from `ref` along `wi` that crossed the body at distance t.
-    double pdf_Li(Vec3 ref, Vec3 wi, double t, double chosen) const {
-        return std::visit([&](const auto& l) { return l.pdf_Li(ref, wi, t, chosen); }, kind_);
-    }
+    // What a ray from `origin` along `wi` that crossed the body at distance t brings, with
+    // pdf_Le when `with_pdf_Le`.
     template <class Q>
-    Q radiance(Vec3 origin, Vec3 direction, const WavelengthsFor<Q>& wavelengths) const {
+    LightArrivalOf<Q> arriving(Vec3 origin, Vec3 wi, double t, double chosen, bool with_pdf_Le,
+                               const WavelengthsFor<Q>& wavelengths) const {
         return std::visit(
-            [&](const auto& l) { return l.template radiance<Q>(origin, direction, wavelengths); },
+            [&](const auto& l) -> LightArrivalOf<Q> {
+                if constexpr (std::is_same_v<std::decay_t<decltype(l)>, PlacedRaySource>) {
+                    return l.template arriving<Q>(origin, wi, chosen, with_pdf_Le, wavelengths);
+                } else {
+                    return {l.template radiance<Q>(origin, wi, wavelengths),
+                            l.pdf_Li(origin, wi, t, chosen),
+                            with_pdf_Le ? l.pdf_Le(origin, wi, t, chosen) : 0};
+                }
+            },
             kind_);
     }
     template <class Q>

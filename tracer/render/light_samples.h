@@ -28,6 +28,15 @@ struct LightLiSampleOf {
     int light = -1;                 // the light's index in its LightSet (set by the set)
 };
 
+// A ray that crossed a light's body, seen from its origin: the radiance it brings, the density
+// light sampling has for its direction (solid angle, including the light's choice), and, when
+// asked for, the density photon emission has for it (Light::pdf_Le), else 0.
+template <class Q>
+struct LightArrivalOf {
+    Q radiance;
+    double pdf_Li = 0, pdf_Le = 0;
+};
+
 template <class Q>
 struct LightPhotonOf {
     Vec3 origin, direction;  // scene frame, direction unit

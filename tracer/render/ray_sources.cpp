@@ -98,17 +98,23 @@ bool PlacedRaySource::crossed(Vec3 origin, Vec3 direction, double t_max, double&
 }
 
 template <class Q>
-Q PlacedRaySource::radiance(Vec3 origin, Vec3 direction,
-                            const WavelengthsFor<Q>& wavelengths) const {
+LightArrivalOf<Q> PlacedRaySource::arriving(Vec3 origin, Vec3 direction, double chosen,
+                                            bool with_pdf_Le,
+                                            const WavelengthsFor<Q>& wavelengths) const {
     const Local l = to_local(origin, direction);
+    LightArrivalOf<Q> out;
+    lightmodel::EmitterLine line;
     if constexpr (std::is_same_v<Q, SampledSpectrum>) {
         lightmodel::SpectralQuery query = spectral_query(wavelengths);
-        emitter_->L_spectral(l.origin, l.direction, lightmodel::EmitterHit{}, query);
-        return radiance_scale_ * spectrum_of(query);
+        line = emitter_->line(l.origin, l.direction, with_pdf_Le, &query);
+        out.radiance = radiance_scale_ * spectrum_of(query);
     } else {
-        return radiance_scale_ *
-               emitter_->L_colour(l.origin, l.direction, lightmodel::EmitterHit{});
+        line = emitter_->line(l.origin, l.direction, with_pdf_Le, nullptr);
+        out.radiance = radiance_scale_ * line.L_colour;
     }
+    out.pdf_Li = chosen * line.pdf_Li;
+    out.pdf_Le = chosen * radiance_scale_ * line.pdf_Le;
+    return out;
 }
 
 template <class Q>
@@ -134,10 +140,6 @@ std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
         to_box ? box_entry(ref, out.wi, shadow_box_.lo, shadow_box_.hi) : s->distance * k_;
     out.pdf = chosen * s->pdf;  // a conformal map keeps solid angles
     return out;
-}
-
-double PlacedRaySource::pdf_Li(Vec3 ref, Vec3 wi, double, double chosen) const {
-    return chosen * emitter_->pdf_Li(to_local_.point(ref), k_ * to_local_.vector(wi));
 }
 
 double PlacedRaySource::pdf_Le(Vec3 origin, Vec3 wi, double, double chosen) const {
@@ -169,10 +171,11 @@ LightPhotonOf<Q> PlacedRaySource::sample_Le(const double u[7], double u_waveleng
     return out;
 }
 
-#define RAYSET_RAY_SOURCE_QUERIES(Q)                                                     \
-    template Q PlacedRaySource::radiance<Q>(Vec3, Vec3, const WavelengthsFor<Q>&) const; \
-    template std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li<Q>(            \
-        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;             \
+#define RAYSET_RAY_SOURCE_QUERIES(Q)                                                         \
+    template LightArrivalOf<Q> PlacedRaySource::arriving<Q>(Vec3, Vec3, double, bool,        \
+                                                            const WavelengthsFor<Q>&) const; \
+    template std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li<Q>(                \
+        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;                 \
     template LightPhotonOf<Q> PlacedRaySource::sample_Le<Q>(const double[7], double) const;
 RAYSET_RAY_SOURCE_QUERIES(Rgb)
 RAYSET_RAY_SOURCE_QUERIES(SampledSpectrum)

@@ -62,10 +62,11 @@ public:
     void end_shadow_rays_at_box(double margin);
     // The body along a scene ray (unit direction) before t_max; t in scene units.
     bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const;
-    double pdf_Li(Vec3 ref, Vec3 wi, double t, double chosen) const;
-    // Radiance arriving at `origin` from the body along `direction` (after crossed).
+    // What arrives at `origin` from the body along `direction` (after crossed), with
+    // pdf_Le when `with_pdf_Le`: one traversal of the model's emitting volume for all.
     template <class Q>
-    Q radiance(Vec3 origin, Vec3 direction, const WavelengthsFor<Q>& wavelengths) const;
+    LightArrivalOf<Q> arriving(Vec3 origin, Vec3 direction, double chosen, bool with_pdf_Le,
+                               const WavelengthsFor<Q>& wavelengths) const;
     // A photon; spectral photons draw their wavelengths from the emitted light's spectrum by
     // `u_wavelength` (hero sampling, spectrum.h), or carry a ray's single wavelength.
     template <class Q>

@@ -236,11 +236,8 @@ bool VcmPasses::emit(Pcg32& rng, Walk& walk, SurfaceHit& hit, uint64_t& rays) co
     if (!scene_.intersect(photon.origin, photon.direction, 0, kInfinity, RayKind::indirect, hit))
         return false;
     const Vec3 back = -photon.direction;
-    const double emission_pdf = light.pdf_Le(hit.point, back, hit.t, chosen);
     const double cos_in = std::fabs(dot(hit.normal, photon.direction));
-    if (!(emission_pdf > 0) || !(cos_in > 0)) return false;
-    walk.origin = photon.origin, walk.direction = photon.direction;
-    walk.beta = photon.flux;
+    if (!(cos_in > 0)) return false;
     if (light.is_ray_source()) {
         // What a camera at the hit sees along the photon's line: nothing unless the line meets
         // the body before a shadow caster (beyond the photon's origin the scene may block it).
@@ -250,14 +247,16 @@ bool VcmPasses::emit(Pcg32& rng, Walk& walk, SurfaceHit& hit, uint64_t& rays) co
             ++rays;
             if (scene_.occluded(photon.origin, back, 0, t_body - hit.t)) return false;
         }
-        walk.beta = (1 / emission_pdf) * light.radiance<Rgb>(hit.point, back, {});
     }
+    const LightArrivalOf<Rgb> seen = light.arriving<Rgb>(hit.point, back, hit.t, chosen, true, {});
+    if (!(seen.pdf_Le > 0)) return false;
+    walk.origin = photon.origin, walk.direction = photon.direction;
+    walk.beta = light.is_ray_source() ? (1 / seen.pdf_Le) * seen.radiance : photon.flux;
     if (light.delta_position()) {
-        walk.weights = {chosen * hit.t * hit.t / (emission_pdf * cos_in), 0, 0};
+        walk.weights = {chosen * hit.t * hit.t / (seen.pdf_Le * cos_in), 0, 0};
     } else {
-        const double direct_pdf = light.pdf_Li(hit.point, back, hit.t, chosen);
-        const double vc = 1 / (emission_pdf * cos_in);
-        walk.weights = {direct_pdf * vc, vc, vc / eta_};
+        const double vc = 1 / (seen.pdf_Le * cos_in);
+        walk.weights = {seen.pdf_Li * vc, vc, vc / eta_};
     }
     walk.vertices = 1;
     return true;
@@ -352,12 +351,11 @@ void VcmPasses::trace_camera(CameraWalk& walk, Sampler& sampler, uint64_t& rays,
                 walk.origin, walk.direction, t_block + scene_.epsilon(), [&](size_t i, double t) {
                     const Light& light = lights_[i];
                     const double chosen = lights_.probability(i);
+                    const LightArrivalOf<Rgb> seen =
+                        light.arriving<Rgb>(walk.origin, walk.direction, t, chosen, true, {});
                     const double others =
-                        light.pdf_Li(walk.origin, walk.direction, t, chosen) * walk.weights.vcm +
-                        light.pdf_Le(walk.origin, walk.direction, t, chosen) * walk.weights.vc;
-                    sum.of[walk.segment_layer] +=
-                        (1 / (1 + others)) *
-                        (walk.beta * light.radiance<Rgb>(walk.origin, walk.direction, {}));
+                        seen.pdf_Li * walk.weights.vcm + seen.pdf_Le * walk.weights.vc;
+                    sum.of[walk.segment_layer] += (1 / (1 + others)) * (walk.beta * seen.radiance);
                 });
         }
         if (!found) {
