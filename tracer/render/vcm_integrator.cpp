@@ -431,22 +431,24 @@ Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const Camer
     if (!sample) return {};
     const Rgb f = bsdf.eval(sample->wi);
     if (is_black(f) || is_black(sample->Li)) return {};
-    const Light& light = lights_[size_t(sample->light)];
-    const double chosen = lights_.probability(size_t(sample->light));
     const double d = sample->distance;
+    // The shadow ray before the weight: an occluded sample spares its light's pdf_Le (a ray
+    // source's traversal of its emitting volume).
+    const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), sample->wi);
+    ++rays;
+    if (scene_.occluded(origin, sample->wi, 0, d - scene_.epsilon())) return {};
+    const size_t light = size_t(sample->light);
     // The light sample's density per unit area across the ray at the light, times d^2 (a point
     // light's position is certain: its choice alone).
     const double direct = sample->delta ? sample->pdf * d * d : sample->pdf;
     const double bsdf_pdf = sample->delta ? 0 : bsdf.pdf(sample->wi);
-    const double emission_pdf = light.pdf_Le(x.point, sample->wi, d, chosen);
+    const double emission_pdf =
+        lights_[light].pdf_Le(x.point, sample->wi, d, lights_.probability(light));
     const double cos_x = std::fabs(dot(x.normal, sample->wi));
     const double w_light = bsdf_pdf / sample->pdf;
     const double w_camera = emission_pdf * cos_x / direct *
                             ((merges ? eta_ : 0) + walk.weights.vcm +
                              walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, sample->wi));
-    const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), sample->wi);
-    ++rays;
-    if (scene_.occluded(origin, sample->wi, 0, d - scene_.epsilon())) return {};
     return (1 / ((1 + w_light + w_camera) * sample->pdf)) * (f * sample->Li);
 }
 
