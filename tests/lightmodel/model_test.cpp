@@ -46,6 +46,20 @@ Vec3 direction_in_cone(Pcg32& rng, Vec3 axis, double cos_max) {
     return s * std::cos(phi) * u + s * std::sin(phi) * v + z * axis;
 }
 
+// A point to look at a source from: at 0.3, 1.5 or 20 times its model's box's longest side
+// from the box's centre, by turns of n.
+Vec3 point_around(const lightmodel::Box& box, int n, Pcg32& rng) {
+    const double reach = n % 3 == 0 ? 0.3 : n % 3 == 1 ? 1.5 : 20;
+    return 0.5 * (box.lower + box.upper) + reach * box.longest() * random_direction(rng);
+}
+
+// A point uniform in the box.
+Vec3 point_in(const lightmodel::Box& box, Pcg32& rng) {
+    return box.lower + Vec3{(box.upper.x - box.lower.x) * rng.uniform(),
+                            (box.upper.y - box.lower.y) * rng.uniform(),
+                            (box.upper.z - box.lower.z) * rng.uniform()};
+}
+
 const char* const kSources[] = {"disk", "sphere", "lobe", "cluster"};
 
 TEST(Model, FluxEqualsTheRayFilesAndSurvivesTheFile) {
@@ -497,13 +511,10 @@ TEST(Model, LightSamplesThatNeedNotFindTheBodysEntryAreTheSameSamples) {
     for (const char* name : {"disk", "sphere", "cluster"}) {
         const BuiltSource& b = built_source(name);
         const lightmodel::Box box = b.model->bounds();
-        const Vec3 centre = 0.5 * (box.lower + box.upper);
-        const double size = box.longest();
         Pcg32 rng(23);
         int kept = 0, inside = 0;
         for (int n = 0; n < 30000; ++n) {
-            const double reach = n % 3 == 0 ? 0.3 : n % 3 == 1 ? 1.5 : 20;
-            const Vec3 ref = centre + reach * size * random_direction(rng);
+            const Vec3 ref = point_around(box, n, rng);
             inside += box.contains(ref);
             const double uc = rng.uniform(), uv = rng.uniform();
             const Vec3 up = rand3(rng);
@@ -538,21 +549,11 @@ TEST(Model, OneLookAtALineGivesWhatTheSeparateQueriesGive) {
     for (const char* name : {"disk", "sphere", "cluster"}) {
         const BuiltSource& b = built_source(name);
         const lightmodel::Box box = b.model->bounds();
-        const Vec3 centre = 0.5 * (box.lower + box.upper);
-        const double size = box.longest();
         Pcg32 rng(29);
         int lit = 0, inside = 0;
-        const auto point_in_box = [&] {
-            return box.lower + Vec3{(box.upper.x - box.lower.x) * rng.uniform(),
-                                    (box.upper.y - box.lower.y) * rng.uniform(),
-                                    (box.upper.z - box.lower.z) * rng.uniform()};
-        };
         for (int n = 0; n < 4000; ++n) {
-            const double reach = n % 4 == 0 ? 0.3 : n % 4 == 1 ? 1.5 : 20;
-            const Vec3 ref =
-                n % 4 == 3 ? point_in_box() : centre + reach * size * random_direction(rng);
-            const Vec3 target = point_in_box();
-            const Vec3 w = normalized(target - ref);
+            const Vec3 ref = n % 4 == 3 ? point_in(box, rng) : point_around(box, n, rng);
+            const Vec3 w = normalized(point_in(box, rng) - ref);
             const lightmodel::EmitterLine line = b.source->line(ref, w, true, nullptr);
             const Rgb colour = b.source->L_colour(ref, w, {});
             const double pdf_Li = b.source->pdf_Li(ref, w), pdf_Le = b.source->pdf_Le_line(ref, w);
