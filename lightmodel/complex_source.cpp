@@ -145,6 +145,7 @@ LeSample ComplexSource::sample_Le(const double u[7], const SpectralSelect& selec
     s.pdf_position = point.pdf_volume;
     s.pdf_direction = dir.pdf;
     s.cell = int32_t(point.flux_cell);
+    s.voxel = point.voxel;
     // Emitted radiance per volume eps = Phi_c D / V_c over pdf (Phi_c / Phi / V_c) D = Phi,
     // scaled to the selected part of the cell's light.
     const double phi = volume_.total_flux();

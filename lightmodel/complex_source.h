@@ -35,6 +35,9 @@ public:
                                       SpectralQuery* spectral = nullptr,
                                       BodyEntry entry = BodyEntry::wanted) const override;
     double pdf_Li(Vec3 ref, Vec3 wi) const override;
+    bool enters_body_near(int64_t voxel, Vec3 origin, Vec3 dir, double t_max) const override {
+        return voxel >= 0 && voxel_balls_.ray_enters(uint32_t(voxel), origin, dir, t_max);
+    }
     LeSample sample_Le(const double u[7], const SpectralSelect& select = {}) const override;
     void pdf_Le(Vec3 origin, Vec3 direction, double& pdf_position,
                 double& pdf_direction) const override;

@@ -54,6 +54,7 @@ struct LeSample {
     double pdf_position = 0;   // mm^-3 (volume) or probability of the ray (naive)
     double pdf_direction = 0;  // sr^-1 (0: the direction is fixed, a delta)
     int32_t cell = -1;         // flux cell (spectrum) of the origin; -1 naive
+    int64_t voxel = -1;        // occupied voxel of the origin (LightModel::voxels); -1 naive
     Rgb flux_colour;           // the photon's whole flux as a colour (colour.h)
     // Its spectrum (emission_spectrum.h): the photon's flux at wavelength l is
     // luminance(flux_colour) x spectrum(l); or, for a ray of one known wavelength (naive),
@@ -108,6 +109,14 @@ public:
         out.pdf_Li = pdf_Li(origin, dir);
         if (with_pdf_Le) out.pdf_Le = pdf_Le_line(origin, dir);
         return out;
+    }
+
+    // Whether the line origin + t dir (dir unit) enters the body at some t in [0, t_max] by one
+    // of the few balls around occupied voxel `voxel` (a photon's, or a light sample's): true
+    // means it does; false says nothing (intersect() knows).
+    virtual bool enters_body_near(int64_t /*voxel*/, Vec3 /*origin*/, Vec3 /*dir*/,
+                                  double /*t_max*/) const {
+        return false;
     }
 
     // Photon emission from seven uniform numbers in [0, 1).

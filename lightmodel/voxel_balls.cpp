@@ -56,10 +56,10 @@ VoxelBalls::VoxelBalls(const LightModel& model) {
     }
 }
 
-bool VoxelBalls::ray_enters(uint32_t voxel, Vec3 origin, Vec3 dir) const {
+bool VoxelBalls::ray_enters(uint32_t voxel, Vec3 origin, Vec3 dir, double t_max) const {
     double t0, t1;
     for (uint32_t k = start_[voxel]; k < start_[voxel + 1]; ++k)
-        if (line_ball(balls_[k], origin, dir, t0, t1) && t0 >= 0) return true;
+        if (line_ball(balls_[k], origin, dir, t0, t1) && t0 >= 0 && t0 <= t_max) return true;
     return false;
 }
 

@@ -12,6 +12,7 @@
 #include "lightmodel/sphere.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace rayset::lightmodel {
@@ -21,9 +22,10 @@ public:
     explicit VoxelBalls(const LightModel& model);
 
     // Whether the ray origin + t dir (dir unit) enters one of the balls listed for occupied
-    // voxel `voxel` (an index into LightModel::voxels) at some t >= 0. For an origin outside
-    // the body, true means the ray meets the body; false means none of these balls.
-    bool ray_enters(uint32_t voxel, Vec3 origin, Vec3 dir) const;
+    // voxel `voxel` (an index into LightModel::voxels) at some t in [0, t_max]. For an origin
+    // outside the body, true means the ray meets the body; false means none of these balls.
+    bool ray_enters(uint32_t voxel, Vec3 origin, Vec3 dir,
+                    double t_max = std::numeric_limits<double>::infinity()) const;
 
     size_t listed() const { return balls_.size(); }  // balls counted once per voxel listing them
 

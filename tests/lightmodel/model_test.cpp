@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <string>
@@ -579,9 +580,10 @@ TEST(Model, OneLookAtALineGivesWhatTheSeparateQueriesGive) {
 
 TEST(Model, VoxelBallsNameOnlyBallsTheRayEnters) {
     // Every ball is listed for the voxel holding its centre: a ray from outside the body toward
-    // that centre must be found entering one (completeness for the listed balls). Whatever is
-    // found must be a ball the ray enters, checked against all balls (soundness), and rays
-    // pointing away from the body find none.
+    // that centre must be found entering one before it reaches the centre (completeness for
+    // the listed balls). Whatever is found must be a ball the ray enters within the distance
+    // asked, checked against all balls (soundness); rays pointing away from the body, or
+    // stopping short of its box, find none.
     const BuiltSource& b = built_source("cluster");
     const lightmodel::LightModel& model = *b.model;
     const lightmodel::VoxelBalls listed(model);
@@ -591,14 +593,16 @@ TEST(Model, VoxelBallsNameOnlyBallsTheRayEnters) {
     std::map<int64_t, uint32_t> voxel_of;
     for (uint32_t v = 0; v < model.voxels.size(); ++v)
         voxel_of[model.density_frame.linear(model.voxels[v])] = v;
-    auto enters_some_ball = [&](Vec3 o, Vec3 d) {
+    auto enters_some_ball = [&](Vec3 o, Vec3 d, double t_max) {
         for (const lightmodel::Sphere& s : model.spheres) {
             const Vec3 oc = Vec3{s.x, s.y, s.z} - o;
             const double tc = dot(oc, d), disc = double(s.r) * s.r - dot(oc - tc * d, oc - tc * d);
-            if (disc >= 0 && tc - std::sqrt(disc) >= 0) return true;
+            if (disc >= 0 && tc - std::sqrt(disc) >= 0 && tc - std::sqrt(disc) <= t_max)
+                return true;
         }
         return false;
     };
+    const double inf = std::numeric_limits<double>::infinity();
     Pcg32 rng(29);
     int found = 0, tried = 0;
     for (int n = 0; n < 2000; ++n) {
@@ -609,12 +613,16 @@ TEST(Model, VoxelBallsNameOnlyBallsTheRayEnters) {
         ++tried;
         const Vec3 origin = centre + 3 * size * random_direction(rng);
         const Vec3 toward = normalized(c - origin);
-        ASSERT_TRUE(listed.ray_enters(it->second, origin, toward)) << "ball " << n;
-        found += enters_some_ball(origin, toward);
+        ASSERT_TRUE(listed.ray_enters(it->second, origin, toward, length(c - origin)))
+            << "ball " << n;
+        found += enters_some_ball(origin, toward, inf);
+        // The box lies within size * sqrt(3) / 2 of its centre.
+        ASSERT_FALSE(listed.ray_enters(it->second, origin, toward, 2 * size)) << "ball " << n;
         const uint32_t v = uint32_t(rng.uniform() * model.voxels.size());
         const Vec3 d = random_direction(rng);
-        if (listed.ray_enters(v, origin, d)) {
-            ASSERT_TRUE(enters_some_ball(origin, d)) << "ray " << n;
+        const double t_max = n % 2 ? inf : 4 * size * rng.uniform();
+        if (listed.ray_enters(v, origin, d, t_max)) {
+            ASSERT_TRUE(enters_some_ball(origin, d, t_max)) << "ray " << n;
         }
         ASSERT_FALSE(listed.ray_enters(it->second, origin, -toward)) << "ray " << n;
     }

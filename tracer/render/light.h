@@ -72,6 +72,15 @@ public:
             [&](const auto& l) { return l.template sample_Li<Q>(ref, u, chosen, wavelengths); },
             kind_);
     }
+    // Whether a photon's line, seen from `origin` along `direction` (toward the photon's
+    // origin, t_max away), surely meets the light's body before the photon's origin (a ray
+    // source's quick test with the balls around the photon's voxel); false says nothing.
+    template <class Q>
+    bool crossed_before(Vec3 origin, Vec3 direction, double t_max,
+                        const LightPhotonOf<Q>& photon) const {
+        const auto* source = std::get_if<PlacedRaySource>(&kind_);
+        return source && source->crossed_within(origin, direction, t_max, photon.source_voxel);
+    }
     bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const {
         return std::visit([&](const auto& l) { return l.crossed(origin, direction, t_max, t); },
                           kind_);

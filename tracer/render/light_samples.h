@@ -46,6 +46,9 @@ struct LightPhotonOf {
     // light sampling), so the photon counts from its first hit.
     bool counts_first_hit = false;
     int light = -1;  // the light's index in its LightSet (set by the set)
+    // A ray source's occupied voxel the photon leaves from, whose balls answer most questions
+    // about whether its line meets the body (-1: none).
+    int64_t source_voxel = -1;
 };
 
 }  // namespace rayset::tracer

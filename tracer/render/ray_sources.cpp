@@ -97,6 +97,12 @@ bool PlacedRaySource::crossed(Vec3 origin, Vec3 direction, double t_max, double&
     return true;
 }
 
+bool PlacedRaySource::crossed_within(Vec3 origin, Vec3 direction, double t_max,
+                                     int64_t voxel) const {
+    const Local l = to_local(origin, direction);
+    return emitter_->enters_body_near(voxel, l.origin, l.direction, t_max * l.scale);
+}
+
 template <class Q>
 LightArrivalOf<Q> PlacedRaySource::arriving(Vec3 origin, Vec3 direction, double chosen,
                                             bool with_pdf_Le,
@@ -153,6 +159,7 @@ LightPhotonOf<Q> PlacedRaySource::sample_Le(const double u[7], double u_waveleng
     LightPhotonOf<Q> out;
     out.origin = to_world_.point(s.origin);
     out.direction = normalized(to_world_.vector(s.direction));
+    out.source_voxel = s.voxel;
     if constexpr (std::is_same_v<Q, SampledSpectrum>) {
         const double luminance = lightmodel::luminance(s.flux_colour);
         if (s.spectrum && !s.spectrum->is_zero()) {

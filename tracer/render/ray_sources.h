@@ -62,6 +62,10 @@ public:
     void end_shadow_rays_at_box(double margin);
     // The body along a scene ray (unit direction) before t_max; t in scene units.
     bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const;
+    // True when the ray (unit direction) surely meets the body before t_max: it enters, by
+    // then, one of the balls around the model's occupied voxel `voxel` (a photon's
+    // source_voxel). False says nothing.
+    bool crossed_within(Vec3 origin, Vec3 direction, double t_max, int64_t voxel) const;
     // What arrives at `origin` from the body along `direction` (after crossed), with
     // pdf_Le when `with_pdf_Le`: one traversal of the model's emitting volume for all.
     template <class Q>

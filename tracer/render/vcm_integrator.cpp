@@ -238,9 +238,11 @@ bool VcmPasses::emit(Pcg32& rng, Walk& walk, SurfaceHit& hit, uint64_t& rays) co
     const Vec3 back = -photon.direction;
     const double cos_in = std::fabs(dot(hit.normal, photon.direction));
     if (!(cos_in > 0)) return false;
-    if (light.is_ray_source()) {
+    if (light.is_ray_source() && !light.crossed_before(hit.point, back, hit.t, photon)) {
         // What a camera at the hit sees along the photon's line: nothing unless the line meets
         // the body before a shadow caster (beyond the photon's origin the scene may block it).
+        // Met before the origin (nearly always, and quickly known), the photon's own segment
+        // says there is none.
         double t_body = 0;
         if (!light.crossed(hit.point, back, kInfinity, t_body)) return false;
         if (t_body > hit.t) {
