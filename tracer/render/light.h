@@ -9,6 +9,8 @@
 //               along it (intensity / d^2 for a point) and its solid-angle density;
 //   crossed     where a ray meets the light's body (area lights, ray-source bodies): lights are
 //               not geometry, a ray collects every body it crosses before the first surface;
+//               crossed_before, for a photon's line seen from its first hit, the quick answer
+//               a ray source's balls around the photon's origin give;
 //   arriving    the radiance such a ray brings, the density sample_Li has for it and, when
 //               asked, pdf_Le's;
 //   sample_Le   a photon: origin, direction and flux; pdf_Le the density it has for a given
@@ -79,7 +81,7 @@ public:
     bool crossed_before(Vec3 origin, Vec3 direction, double t_max,
                         const LightPhotonOf<Q>& photon) const {
         const auto* source = std::get_if<PlacedRaySource>(&kind_);
-        return source && source->crossed_within(origin, direction, t_max, photon.source_voxel);
+        return source && source->crossed_before(origin, direction, t_max, photon.source_voxel);
     }
     bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const {
         return std::visit([&](const auto& l) { return l.crossed(origin, direction, t_max, t); },

@@ -97,7 +97,7 @@ bool PlacedRaySource::crossed(Vec3 origin, Vec3 direction, double t_max, double&
     return true;
 }
 
-bool PlacedRaySource::crossed_within(Vec3 origin, Vec3 direction, double t_max,
+bool PlacedRaySource::crossed_before(Vec3 origin, Vec3 direction, double t_max,
                                      int64_t voxel) const {
     const Local l = to_local(origin, direction);
     return emitter_->enters_body_near(voxel, l.origin, l.direction, t_max * l.scale);

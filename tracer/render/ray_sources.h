@@ -65,7 +65,7 @@ public:
     // True when the ray (unit direction) surely meets the body before t_max: it enters, by
     // then, one of the balls around the model's occupied voxel `voxel` (a photon's
     // source_voxel). False says nothing.
-    bool crossed_within(Vec3 origin, Vec3 direction, double t_max, int64_t voxel) const;
+    bool crossed_before(Vec3 origin, Vec3 direction, double t_max, int64_t voxel) const;
     // What arrives at `origin` from the body along `direction` (after crossed), with
     // pdf_Le when `with_pdf_Le`: one traversal of the model's emitting volume for all.
     template <class Q>
