@@ -4,6 +4,7 @@
 // closed form of a Lambertian disk's illuminance and the energy balance of a closed box.
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string_view>
 
@@ -16,6 +17,7 @@
 #include "lightmodel/model_build.h"
 #include "lightmodel/model_file.h"
 #include "support/test_support.h"
+#include "tracer/render/direct_light.h"
 #include "tracer/render/light.h"
 #include "tracer/render/renderer.h"
 #include "tracer/scene_language/scene_language.h"
@@ -409,15 +411,18 @@ LightSet lights_of(const std::string& text) {
 TEST(LightInterface, ShadowRaysEndingAtTheBodysBoxMeetWhatTheyMetEndingAtTheBody) {
     // A room around the disk of the tests, 1 mm under the ceiling, a block on the floor casting
     // shadows. Nothing lies near the body, so the lights a render uses (LightSet of the
-    // RenderScene) end shadow rays at the body's box: the same samples must be drawn as by the
-    // lights that find the body's entry, and every shadow ray must be blocked or not alike. A
-    // sphere reaching into the body's box takes that away: then the distances are the body's.
+    // RenderScene) end shadow rays at the body's box. A sphere reaching into the body's box
+    // takes that away: then a shadow ray is tested up to the box first and on to the body's
+    // entry only where that part is clear (unless_occluded). Either way the same samples must
+    // be drawn as by the lights that know nothing of the scene, and every shadow ray must be
+    // blocked or not as the ray that ends at the body's entry is.
     const std::string room = R"(
         box { <-50, 0, -50>, <50, 100, 50> }
         box { <-10, 0, -10>, <10, 60, 10> }
         ray_source { ")" + test::disk_files().model +
                              R"(" rotate <90, 0, 0> translate <0, 99, 0> }
     )";
+    const double inf = std::numeric_limits<double>::infinity();
     for (const bool near : {false, true}) {
         SCOPED_TRACE(near ? "a sphere near the body" : "nothing near the body");
         const RenderScene scene(
@@ -425,7 +430,8 @@ TEST(LightInterface, ShadowRaysEndingAtTheBodysBoxMeetWhatTheyMetEndingAtTheBody
                              test::disk_files().scratch.file("room.pov")));
         const LightSet exact(scene.description(), scene.units(), false), fast(scene, false);
         Pcg32 rng(17, 3);
-        int drawn = 0, blocked = 0;
+        int drawn = 0, blocked = 0, deferred = 0, grazing = 0;
+        uint64_t rays = 0;
         for (int n = 0; n < 20000; ++n) {
             // A point of the floor or of the wall at x = -50, and its normal into the room.
             const bool floor = n % 2 == 0;
@@ -443,18 +449,30 @@ TEST(LightInterface, ShadowRaysEndingAtTheBodysBoxMeetWhatTheyMetEndingAtTheBody
             ASSERT_TRUE(e->Li.red == f->Li.red && e->Li.green == f->Li.green &&
                         e->Li.blue == f->Li.blue);
             ASSERT_EQ(e->pdf, f->pdf);
-            if (near)
-                ASSERT_EQ(f->distance, e->distance);
-            else
-                ASSERT_LT(f->distance, e->distance);  // the box is entered before the body
+            ASSERT_EQ(f->body_entry_deferred, near) << "sample " << n;
+            deferred += f->body_entry_deferred;
             const Vec3 origin = scene.offset(point, normal, e->wi);
-            const bool by_body = scene.occluded(origin, e->wi, 0, e->distance - scene.epsilon());
-            const bool by_box = scene.occluded(origin, f->wi, 0, f->distance - scene.epsilon());
-            ASSERT_EQ(by_body, by_box) << "sample " << n;
+            // The body's entry from the ray's origin; a ray that grazes the body, met from the
+            // point but not from the origin offset from it, ends at the box.
+            double t_body = f->distance;
+            if (exact[size_t(e->light)].crossed(origin, e->wi, inf, t_body))
+                ASSERT_LE(f->distance, t_body + scene.offset_distance(point));  // box first
+            else
+                ++grazing;
+            const bool by_body = scene.occluded(origin, e->wi, 0, t_body - scene.epsilon());
+            ShadowRayOf<Rgb> shadow;
+            shadow.cast = true, shadow.origin = origin, shadow.direction = f->wi;
+            shadow.t_far = f->distance - scene.epsilon(), shadow.contribution = Rgb{1, 1, 1};
+            if (f->body_entry_deferred) shadow.body_beyond = &fast[size_t(f->light)];
+            const bool by_render = is_black(unless_occluded(scene, shadow, rays));
+            ASSERT_EQ(by_body, by_render) << "sample " << n;
             blocked += by_body;
         }
-        std::printf("[ figures  ] %s: %d light samples drawn, %d of them blocked\n",
-                    near ? "sphere near" : "clear", drawn, blocked);
+        std::printf(
+            "[ figures  ] %s: %d light samples drawn, %d of them blocked, %d tested up "
+            "to the box first, %d grazing the body\n",
+            near ? "sphere near" : "clear", drawn, blocked, deferred, grazing);
+        EXPECT_LT(grazing, drawn / 100);  // lines along the flat disk's face
         EXPECT_GT(drawn, 10000);
         EXPECT_GT(blocked, 500);  // the block's shadow on the floor and the wall
         EXPECT_LT(blocked, drawn - 500);

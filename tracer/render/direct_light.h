@@ -6,7 +6,9 @@
 // square roots and divisions overlap instead of waiting on each other.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 
 #include "core/random.h"
 #include "tracer/render/light.h"
@@ -26,7 +28,24 @@ struct ShadowRayOf {
     Vec3 origin, direction;
     double t_far = 0;
     Q contribution{};
+    // The light whose body's entry, beyond t_far, ends the ray (LightLiSampleOf's
+    // body_entry_deferred); null when t_far is the whole ray.
+    const Light* body_beyond = nullptr;
 };
+
+// The whole of a shadow ray whose end waits for its light's body: t_far at the body's entry.
+// A ray that grazes the body, met from the shaded point but not from the ray's offset origin,
+// ends at the box.
+template <class Q>
+ShadowRayOf<Q> whole_ray(const RenderScene& scene, ShadowRayOf<Q> shadow) {
+    if (!shadow.body_beyond) return shadow;
+    double t = 0;
+    if (shadow.body_beyond->crossed(shadow.origin, shadow.direction,
+                                    std::numeric_limits<double>::infinity(), t))
+        shadow.t_far = std::max(shadow.t_far, t - scene.epsilon());
+    shadow.body_beyond = nullptr;
+    return shadow;
+}
 
 // The light sample `u` (LightSet::draw) for the BSDF `bsdf` at `point` (offset along
 // `normal`).
@@ -45,6 +64,7 @@ ShadowRayOf<Q> sample_direct_light(const RenderScene& scene, const LightSet& lig
     shadow.origin = scene.offset(point, normal, light->wi);
     shadow.direction = light->wi;
     shadow.t_far = light->distance - scene.epsilon();
+    if (light->body_entry_deferred) shadow.body_beyond = &lights[size_t(light->light)];
     const double weight = light->delta ? 1 : power_heuristic(light->pdf, bsdf.pdf(light->wi));
     shadow.contribution = (weight / light->pdf) * (f * light->Li);
     return shadow;
@@ -57,6 +77,12 @@ Q unless_occluded(const RenderScene& scene, const ShadowRayOf<Q>& shadow, uint64
     if (shadow.shadowless) return shadow.contribution;
     ++rays;
     if (scene.occluded(shadow.origin, shadow.direction, 0, shadow.t_far)) return {};
+    if (!shadow.body_beyond) return shadow.contribution;
+    const ShadowRayOf<Q> whole = whole_ray(scene, shadow);
+    ++rays;
+    if (whole.t_far > shadow.t_far &&
+        scene.occluded(shadow.origin, shadow.direction, shadow.t_far, whole.t_far))
+        return {};
     return shadow.contribution;
 }
 

@@ -26,6 +26,10 @@ struct LightLiSampleOf {
     bool shadowless = false;  // POV-Ray's shadowless light: nothing blocks it, no shadow ray
     bool media_interaction = true;  // false: media do not scatter its light (POV-Ray's flag)
     int light = -1;                 // the light's index in its LightSet (set by the set)
+    // `distance` reaches only the box around the light's body (a ray source whose box has
+    // surfaces near it): the shadow ray goes on to the body's entry (Light::crossed), which
+    // is worth finding only once the ray's first part is clear.
+    bool body_entry_deferred = false;
 };
 
 // A ray that crossed a light's body, seen from its origin: the radiance it brings, the density

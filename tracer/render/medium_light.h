@@ -10,7 +10,9 @@
 // them), which is why the path integrator refuses media with area lights and ray sources.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 
 #include "core/random.h"
 #include "tracer/render/direct_light.h"
@@ -51,8 +53,9 @@ inline Rgb shadow_transmittance(const RenderScene& scene, Vec3 origin, Vec3 dire
 
 // A surface's light sample (direct_light.h) seen through the media on its way; the shadow ray
 // starts in `medium`.
-inline Rgb through_media(const RenderScene& scene, const ShadowRayOf<Rgb>& shadow, int medium,
+inline Rgb through_media(const RenderScene& scene, const ShadowRayOf<Rgb>& ray, int medium,
                          Pcg32& rng, uint64_t& rays) {
+    const ShadowRayOf<Rgb> shadow = whole_ray(scene, ray);
     if (!shadow.cast) return {};
     if (shadow.shadowless) return shadow.contribution;
     return shadow.contribution * shadow_transmittance(scene, shadow.origin, shadow.direction,
@@ -62,8 +65,9 @@ inline Rgb through_media(const RenderScene& scene, const ShadowRayOf<Rgb>& shado
 // A surface's light sample whose shadow ray stops at every surface (direct_light.h), dimmed
 // by the medium it starts in (Interiors::medium_after's): what fade and media that only absorb
 // do to it, in both integrators.
-inline Rgb dimmed_unless_occluded(const RenderScene& scene, const ShadowRayOf<Rgb>& shadow,
-                                  int medium, Pcg32& rng, uint64_t& rays) {
+inline Rgb dimmed_unless_occluded(const RenderScene& scene, const ShadowRayOf<Rgb>& ray, int medium,
+                                  Pcg32& rng, uint64_t& rays) {
+    const ShadowRayOf<Rgb> shadow = whole_ray(scene, ray);
     const Rgb c = unless_occluded(scene, shadow, rays);
     medium = scene.interiors().segment_medium(medium, shadow.direction, false, {});
     if (medium < 0 || shadow.shadowless || is_black(c)) return c;
@@ -84,8 +88,13 @@ inline Rgb medium_direct_light(const RenderScene& scene, const LightSet& lights,
     if (is_black(f) || is_black(light->Li)) return {};
     const Rgb contribution = (1 / light->pdf) * (f * light->Li);
     if (light->shadowless) return contribution;
+    double distance = light->distance, t_body = 0;
+    if (light->body_entry_deferred &&
+        lights[size_t(light->light)].crossed(point, light->wi,
+                                             std::numeric_limits<double>::infinity(), t_body))
+        distance = std::max(distance, t_body);
     return contribution *
-           shadow_transmittance(scene, point, light->wi, light->distance, medium, rng, rays);
+           shadow_transmittance(scene, point, light->wi, distance, medium, rng, rays);
 }
 
 }  // namespace rayset::tracer

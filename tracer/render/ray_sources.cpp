@@ -128,7 +128,11 @@ std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
     Vec3 ref, const LightUniforms& u, double chosen, const WavelengthsFor<Q>& wavelengths) const {
     const Vec3 u_point{u.u[1], u.u[2], u.u[3]};
     const bool to_box = shadow_rays_to_box_ && !box_holds(ref, shadow_box_.lo, shadow_box_.hi);
-    const auto entry = to_box ? lightmodel::BodyEntry::not_wanted : lightmodel::BodyEntry::wanted;
+    // From outside the body's box, the shadow ray's part up to the box is tested first: most
+    // samples that are blocked then never ask for the body's nearest entry.
+    const bool box_first = !to_box && !box_holds(ref, body_box_.lo, body_box_.hi);
+    const auto entry =
+        to_box || box_first ? lightmodel::BodyEntry::not_wanted : lightmodel::BodyEntry::wanted;
     std::optional<lightmodel::LiSample> s;
     LightLiSampleOf<Q> out;
     if constexpr (std::is_same_v<Q, SampledSpectrum>) {
@@ -142,8 +146,10 @@ std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
     }
     if (!s) return std::nullopt;
     out.wi = normalized(to_world_.vector(s->wi));
-    out.distance =
-        to_box ? box_entry(ref, out.wi, shadow_box_.lo, shadow_box_.hi) : s->distance * k_;
+    out.distance = to_box      ? box_entry(ref, out.wi, shadow_box_.lo, shadow_box_.hi)
+                   : box_first ? box_entry(ref, out.wi, body_box_.lo, body_box_.hi)
+                               : s->distance * k_;
+    out.body_entry_deferred = box_first;
     out.pdf = chosen * s->pdf;  // a conformal map keeps solid angles
     return out;
 }

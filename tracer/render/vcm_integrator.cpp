@@ -440,6 +440,16 @@ Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const Camer
     ++rays;
     if (scene_.occluded(origin, sample->wi, 0, d - scene_.epsilon())) return {};
     const size_t light = size_t(sample->light);
+    if (sample->body_entry_deferred) {
+        // The rest of the shadow ray, from the body's box on to the body (a ray that grazes the
+        // body, met from x but not from the offset origin, ends at the box: whole_ray).
+        double t_body = 0;
+        const bool met = lights_[light].crossed(origin, sample->wi, kInfinity, t_body);
+        ++rays;
+        if (met && t_body > d &&
+            scene_.occluded(origin, sample->wi, d - scene_.epsilon(), t_body - scene_.epsilon()))
+            return {};
+    }
     // The light sample's density per unit area across the ray at the light, times d^2 (a point
     // light's position is certain: its choice alone).
     const double direct = sample->delta ? sample->pdf * d * d : sample->pdf;
