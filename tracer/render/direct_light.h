@@ -70,20 +70,25 @@ ShadowRayOf<Q> sample_direct_light(const RenderScene& scene, const LightSet& lig
     return shadow;
 }
 
-// The contribution of `shadow` unless the scene blocks its ray; `rays` counts the ray cast.
+// Whether the scene blocks the ray of `shadow`: up to t_far, then (only where that part is
+// clear) on to its light's body if that waits beyond; `rays` counts the rays cast.
+template <class Q>
+bool blocked(const RenderScene& scene, const ShadowRayOf<Q>& shadow, uint64_t& rays) {
+    ++rays;
+    if (scene.occluded(shadow.origin, shadow.direction, 0, shadow.t_far)) return true;
+    if (!shadow.body_beyond) return false;
+    const ShadowRayOf<Q> whole = whole_ray(scene, shadow);
+    ++rays;
+    return whole.t_far > shadow.t_far &&
+           scene.occluded(shadow.origin, shadow.direction, shadow.t_far, whole.t_far);
+}
+
+// The contribution of `shadow` unless the scene blocks its ray.
 template <class Q>
 Q unless_occluded(const RenderScene& scene, const ShadowRayOf<Q>& shadow, uint64_t& rays) {
     if (!shadow.cast) return {};
     if (shadow.shadowless) return shadow.contribution;
-    ++rays;
-    if (scene.occluded(shadow.origin, shadow.direction, 0, shadow.t_far)) return {};
-    if (!shadow.body_beyond) return shadow.contribution;
-    const ShadowRayOf<Q> whole = whole_ray(scene, shadow);
-    ++rays;
-    if (whole.t_far > shadow.t_far &&
-        scene.occluded(shadow.origin, shadow.direction, shadow.t_far, whole.t_far))
-        return {};
-    return shadow.contribution;
+    return blocked(scene, shadow, rays) ? Q{} : shadow.contribution;
 }
 
 // Both halves at once, the light sample drawn from `sampler`.

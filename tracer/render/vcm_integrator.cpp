@@ -16,6 +16,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
+#include "tracer/render/direct_light.h"
 #include "tracer/render/gather_radius.h"
 #include "tracer/render/light.h"
 #include "tracer/render/material.h"
@@ -436,20 +437,13 @@ Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const Camer
     const double d = sample->distance;
     // The shadow ray before the weight: an occluded sample spares its light's pdf_Le (a ray
     // source's traversal of its emitting volume).
-    const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), sample->wi);
-    ++rays;
-    if (scene_.occluded(origin, sample->wi, 0, d - scene_.epsilon())) return {};
     const size_t light = size_t(sample->light);
-    if (sample->body_entry_deferred) {
-        // The rest of the shadow ray, from the body's box on to the body (a ray that grazes the
-        // body, met from x but not from the offset origin, ends at the box: whole_ray).
-        double t_body = 0;
-        const bool met = lights_[light].crossed(origin, sample->wi, kInfinity, t_body);
-        ++rays;
-        if (met && t_body > d &&
-            scene_.occluded(origin, sample->wi, d - scene_.epsilon(), t_body - scene_.epsilon()))
-            return {};
-    }
+    ShadowRayOf<Rgb> shadow;
+    shadow.origin = scene_.offset(x.point, bsdf.facing_normal(), sample->wi);
+    shadow.direction = sample->wi;
+    shadow.t_far = d - scene_.epsilon();
+    if (sample->body_entry_deferred) shadow.body_beyond = &lights_[light];
+    if (blocked(scene_, shadow, rays)) return {};
     // The light sample's density per unit area across the ray at the light, times d^2 (a point
     // light's position is certain: its choice alone).
     const double direct = sample->delta ? sample->pdf * d * d : sample->pdf;
