@@ -119,7 +119,7 @@ LightArrivalOf<Q> PlacedRaySource::arriving(Vec3 origin, Vec3 direction, double 
         out.radiance = radiance_scale_ * line.L_colour;
     }
     out.pdf_Li = chosen * line.pdf_Li;
-    out.pdf_Le = chosen * radiance_scale_ * line.pdf_Le;
+    out.pdf_Le = scene_pdf_Le(line.pdf_Le, chosen);
     return out;
 }
 
@@ -156,7 +156,7 @@ std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
 
 double PlacedRaySource::pdf_Le(Vec3 origin, Vec3 wi, double, double chosen) const {
     const Local l = to_local(origin, wi);
-    return chosen * radiance_scale_ * emitter_->pdf_Le_line(l.origin, l.direction);
+    return scene_pdf_Le(emitter_->pdf_Le_line(l.origin, l.direction), chosen);
 }
 
 template <class Q>

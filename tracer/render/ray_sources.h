@@ -92,6 +92,11 @@ private:
     Matrix4 to_world_, to_local_;
     double k_ = 1;  // scene units per model mm
     double power_ = 0;
+    // The model's line density (per mm^2 and sr) as the scene's pdf_Le of a light chosen with
+    // probability `chosen`: per unit^2, as radiance.
+    double scene_pdf_Le(double line_density, double chosen) const {
+        return chosen * radiance_scale_ * line_density;
+    }
     double radiance_scale_ = 1;  // per mm^2 -> per unit^2
     bool naive_ = false;
     // The body's box in the scene frame, widened: most rays miss it, and then the body.
