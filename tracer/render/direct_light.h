@@ -33,17 +33,37 @@ struct ShadowRayOf {
     const Light* body_beyond = nullptr;
 };
 
+// Where a ray that reaches `t_far` (the box around `light`'s body) ends: at the body's entry
+// less `epsilon`. A ray that grazes the body, met from the shaded point but not from the ray's
+// origin, ends at t_far.
+inline double to_body_entry(const Light& light, Vec3 origin, Vec3 direction, double t_far,
+                            double epsilon) {
+    double t = 0;
+    if (light.crossed(origin, direction, std::numeric_limits<double>::infinity(), t))
+        return std::max(t_far, t - epsilon);
+    return t_far;
+}
+
 // The whole of a shadow ray whose end waits for its light's body: t_far at the body's entry.
-// A ray that grazes the body, met from the shaded point but not from the ray's offset origin,
-// ends at the box.
 template <class Q>
 ShadowRayOf<Q> whole_ray(const RenderScene& scene, ShadowRayOf<Q> shadow) {
     if (!shadow.body_beyond) return shadow;
-    double t = 0;
-    if (shadow.body_beyond->crossed(shadow.origin, shadow.direction,
-                                    std::numeric_limits<double>::infinity(), t))
-        shadow.t_far = std::max(shadow.t_far, t - scene.epsilon());
+    shadow.t_far = to_body_entry(*shadow.body_beyond, shadow.origin, shadow.direction, shadow.t_far,
+                                 scene.epsilon());
     shadow.body_beyond = nullptr;
+    return shadow;
+}
+
+// The shadow ray of light sample `light` of `lights` taken at `point`, offset along `normal`;
+// nothing of what it brings.
+template <class Q>
+ShadowRayOf<Q> shadow_ray_of(const RenderScene& scene, const LightSet& lights,
+                             const LightLiSampleOf<Q>& light, Vec3 point, Vec3 normal) {
+    ShadowRayOf<Q> shadow;
+    shadow.origin = scene.offset(point, normal, light.wi);
+    shadow.direction = light.wi;
+    shadow.t_far = light.distance - scene.epsilon();
+    if (light.body_entry_deferred) shadow.body_beyond = &lights[size_t(light.light)];
     return shadow;
 }
 
@@ -59,12 +79,9 @@ ShadowRayOf<Q> sample_direct_light(const RenderScene& scene, const LightSet& lig
     if (!light) return shadow;
     const Q f = bsdf.eval(light->wi);
     if (is_black(f) || is_black(light->Li)) return shadow;
+    shadow = shadow_ray_of(scene, lights, *light, point, normal);
     shadow.cast = true;
     shadow.shadowless = light->shadowless;
-    shadow.origin = scene.offset(point, normal, light->wi);
-    shadow.direction = light->wi;
-    shadow.t_far = light->distance - scene.epsilon();
-    if (light->body_entry_deferred) shadow.body_beyond = &lights[size_t(light->light)];
     const double weight = light->delta ? 1 : power_heuristic(light->pdf, bsdf.pdf(light->wi));
     shadow.contribution = (weight / light->pdf) * (f * light->Li);
     return shadow;

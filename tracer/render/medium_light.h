@@ -10,9 +10,7 @@
 // them), which is why the path integrator refuses media with area lights and ray sources.
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
-#include <limits>
 
 #include "core/random.h"
 #include "tracer/render/direct_light.h"
@@ -88,11 +86,10 @@ inline Rgb medium_direct_light(const RenderScene& scene, const LightSet& lights,
     if (is_black(f) || is_black(light->Li)) return {};
     const Rgb contribution = (1 / light->pdf) * (f * light->Li);
     if (light->shadowless) return contribution;
-    double distance = light->distance, t_body = 0;
-    if (light->body_entry_deferred &&
-        lights[size_t(light->light)].crossed(point, light->wi,
-                                             std::numeric_limits<double>::infinity(), t_body))
-        distance = std::max(distance, t_body);
+    const double distance =
+        light->body_entry_deferred
+            ? to_body_entry(lights[size_t(light->light)], point, light->wi, light->distance, 0)
+            : light->distance;
     return contribution *
            shadow_transmittance(scene, point, light->wi, distance, medium, rng, rays);
 }

@@ -437,13 +437,10 @@ Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const Camer
     const double d = sample->distance;
     // The shadow ray before the weight: an occluded sample spares its light's pdf_Le (a ray
     // source's traversal of its emitting volume).
+    if (blocked(scene_, shadow_ray_of(scene_, lights_, *sample, x.point, bsdf.facing_normal()),
+                rays))
+        return {};
     const size_t light = size_t(sample->light);
-    ShadowRayOf<Rgb> shadow;
-    shadow.origin = scene_.offset(x.point, bsdf.facing_normal(), sample->wi);
-    shadow.direction = sample->wi;
-    shadow.t_far = d - scene_.epsilon();
-    if (sample->body_entry_deferred) shadow.body_beyond = &lights_[light];
-    if (blocked(scene_, shadow, rays)) return {};
     // The light sample's density per unit area across the ray at the light, times d^2 (a point
     // light's position is certain: its choice alone).
     const double direct = sample->delta ? sample->pdf * d * d : sample->pdf;
