@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
 
@@ -62,18 +63,20 @@ struct Walk {
 // The weights after scattering at a vertex into a direction of density `pdf` (0: a delta lobe),
 // leaving at `cos_out` to the geometric normal; `reverse` the density of sampling the way
 // back. `merging`: whether a subpath can end at this vertex by merging (eta, else nothing).
-void scatter_weights(PartialWeights& w, double pdf, double reverse, double cos_out, double eta,
-                     bool merging) {
+// Returns the part of the new vc that merging here adds.
+double scatter_weights(PartialWeights& w, double pdf, double reverse, double cos_out, double eta,
+                       bool merging) {
     if (!(pdf > 0)) {
         w.vcm = 0;
         w.vc *= cos_out;
         w.vm *= cos_out;
-        return;
+        return 0;
     }
-    const double here = merging ? eta : 0;
-    const double vc = cos_out / pdf * (w.vc * reverse + w.vcm + here);
+    const double here = merging ? cos_out / pdf * eta : 0;
+    const double vc = cos_out / pdf * (w.vc * reverse + w.vcm) + here;
     const double vm = cos_out / pdf * (w.vm * reverse + w.vcm / eta + (merging ? 1 : 0));
     w = {1 / pdf, vc, vm};
+    return here;
 }
 
 // The weights on arriving at a vertex after a segment of length t, at cos_in to its normal.
@@ -106,6 +109,10 @@ private:
         LightComponent segment_layer = kDirectVisibility;
         // No smooth scene surface met yet: the next one is where this path may merge.
         bool merge_ahead = true;
+        // The part of weights.vc that merging at the vertex just left adds. A light met on the
+        // segment from there leaves it out: that merge would take a light subpath's first
+        // vertex, which never merges.
+        double merged_vc = 0;
     };
 
     // The light subpaths of `pass`: their vertices into vertices_, path after path (where each
@@ -131,14 +138,14 @@ private:
         const LightVertex *first, *last;
     };
     Subpath draw_subpath(Pcg32& rng) const;
-    // `merges`: whether x is where the path may merge (scatter()).
-    Rgb light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, bool merges,
+    Rgb light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
                      const LightUniforms& u, uint64_t& rays) const;
+    // `merges`: whether x is where the path may merge (scatter()).
     Rgb connection(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, bool merges,
                    const LightVertex& y, uint64_t& rays) const;
-    // Merged light, the part whose light vertex is its subpath's first apart.
-    void merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Rgb& first,
-               Rgb& later) const;
+    // The light of the light vertices within the radius of x that are not their subpath's
+    // first (the grid holds no other).
+    Rgb merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk) const;
     // The density of sampling x.wo at a camera vertex x (`bsdf` its BSDF) for a path that
     // arrives from `wi`: the way back to the camera side. Evaluated only where it has a weight.
     double reverse_pdf(const Bsdf& bsdf, double weight, Vec3 wi) const;
@@ -154,7 +161,7 @@ private:
     std::vector<uint32_t> path_first_;
     // The light vertices in path order (for connections) and by place (for merges), kept
     // from pass to pass with their storage.
-    std::vector<LightVertex> vertices_;
+    std::vector<LightVertex> vertices_, mergeable_;
     PhotonGridOf<LightVertex> grid_;
     size_t vertex_bytes_ = 0;
     std::vector<std::vector<LightVertex>> traced_;  // by block of paths, as traced
@@ -195,9 +202,15 @@ void VcmPasses::begin_pass(int pass, const SamplePoints& points, std::atomic<uin
     eta_ = kPi * r * r * double(light_paths_);
     merge_normalisation_ = 1 / eta_;
     trace_light_paths(pass, rays);
-    grid_.assign(vertices_, r);
+    // A subpath's first vertex never merges: light straight from a light is sampled or met,
+    // without the blur of the radius (which darkens the last radius before every edge).
+    mergeable_.clear();
+    std::copy_if(vertices_.begin(), vertices_.end(), std::back_inserter(mergeable_),
+                 [](const LightVertex& v) { return v.segments > 1; });
+    grid_.assign(mergeable_, r);
     vertex_bytes_ =
-        std::max(vertex_bytes_, grid_.memory_bytes() + vertices_.size() * sizeof(LightVertex));
+        std::max(vertex_bytes_, grid_.memory_bytes() +
+                                    (vertices_.size() + mergeable_.size()) * sizeof(LightVertex));
 }
 
 // In fixed blocks, so that the vertices' order does not depend on threads.
@@ -356,8 +369,8 @@ void VcmPasses::trace_camera(CameraWalk& walk, Sampler& sampler, uint64_t& rays,
                     const double chosen = lights_.probability(i);
                     const LightArrivalOf<Rgb> seen =
                         light.arriving<Rgb>(walk.origin, walk.direction, t, chosen, true, {});
-                    const double others =
-                        seen.pdf_Li * walk.weights.vcm + seen.pdf_Le * walk.weights.vc;
+                    const double others = seen.pdf_Li * walk.weights.vcm +
+                                          seen.pdf_Le * (walk.weights.vc - walk.merged_vc);
                     sum.of[walk.segment_layer] += (1 / (1 + others)) * (walk.beta * seen.radiance);
                 });
         }
@@ -385,15 +398,13 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     if (smooth && !lights_.empty()) {
         // The subpath is drawn first: the light sample's work hides the wait for its vertices.
         const Subpath subpath = draw_subpath(rng);
-        // Light straight from a light (sampled, or merged from a light subpath's first vertex),
-        // and light that scattered on the light subpath (connected or merged).
-        Rgb straight = light_sample(x, bsdf, walk, merges, lights_.draw(sampler), rays), scattered;
+        // Light straight from a light (sampled), and light that scattered on the light subpath
+        // (connected or merged).
+        const Rgb straight = light_sample(x, bsdf, walk, lights_.draw(sampler), rays);
+        Rgb scattered;
         for (const LightVertex* y = subpath.first; y < subpath.last; ++y)
             scattered += connection(x, bsdf, walk, merges, *y, rays);
-        Rgb merged_first, merged_later;
-        if (merges) merge(x, bsdf, walk, merged_first, merged_later);
-        straight += merged_first;
-        scattered += merged_later;
+        if (merges) scattered += merge(x, bsdf, walk);
         sum.of[layer_of_light_at_vertex(walk.segment_layer)] += walk.beta * straight;
         sum.of[kSecondary] += walk.beta * scattered;
     }
@@ -404,8 +415,8 @@ bool VcmPasses::scatter(const CameraVertex& x, const Bsdf& bsdf, CameraWalk& wal
     if (walk.vertices >= kMaxPathVertices || !bsdf.sample(u_lobe, u1, u2, s) || is_black(s.weight))
         return false;
     const double reverse = s.delta ? 0 : reverse_pdf(bsdf, walk.weights.vc + walk.weights.vm, s.wi);
-    scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse, std::fabs(dot(x.normal, s.wi)),
-                    eta_, merges);
+    walk.merged_vc = scatter_weights(walk.weights, s.delta ? 0 : s.pdf, reverse,
+                                     std::fabs(dot(x.normal, s.wi)), eta_, merges);
     walk.merge_ahead = walk.merge_ahead && !merges;
     walk.segment_layer = layer_after_scattering(walk.segment_layer, s.delta);
     walk.beta *= s.weight;
@@ -429,7 +440,7 @@ double VcmPasses::reverse_pdf(const Bsdf& bsdf, double weight, Vec3 wi) const {
 }
 
 Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
-                            bool merges, const LightUniforms& u, uint64_t& rays) const {
+                            const LightUniforms& u, uint64_t& rays) const {
     const auto sample = lights_.sample_Li<Rgb>(x.point, u, {});
     if (!sample) return {};
     const Rgb f = bsdf.eval(sample->wi);
@@ -449,9 +460,10 @@ Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const Camer
         lights_[light].pdf_Le(x.point, sample->wi, d, lights_.probability(light));
     const double cos_x = std::fabs(dot(x.normal, sample->wi));
     const double w_light = bsdf_pdf / sample->pdf;
-    const double w_camera = emission_pdf * cos_x / direct *
-                            ((merges ? eta_ : 0) + walk.weights.vcm +
-                             walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, sample->wi));
+    // Merging at x would take the light subpath's first vertex: no strategy.
+    const double w_camera =
+        emission_pdf * cos_x / direct *
+        (walk.weights.vcm + walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, sample->wi));
     return (1 / ((1 + w_light + w_camera) * sample->pdf)) * (f * sample->Li);
 }
 
@@ -475,9 +487,11 @@ Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraW
     const double light_to_x = bsdf_y.pdf(-w) * cos_x / distance2;
     const double y_reverse = bsdf_y.pdf_reversed(-w);
     // y is where the path may merge only as the first scene surface after a receiver point (x
-    // the receiver point itself, the one camera vertex that is no surface).
+    // the receiver point itself, the one camera vertex that is no surface), and not as its
+    // subpath's first vertex.
+    const bool y_merges = !x.surface && y.segments > 1;
     const double w_light =
-        camera_to_y * ((x.surface ? 0 : eta_) + y.weights.vcm + y.weights.vc * y_reverse);
+        camera_to_y * ((y_merges ? eta_ : 0) + y.weights.vcm + y.weights.vc * y_reverse);
     const double w_camera = light_to_x * ((merges ? eta_ : 0) + walk.weights.vcm +
                                           walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, w));
     const Vec3 origin = scene_.offset(x.point, bsdf.facing_normal(), w);
@@ -489,9 +503,9 @@ Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraW
     return (1 / ((1 + w_light + w_camera) * distance2)) * (f_x * f_y * y.beta);
 }
 
-void VcmPasses::merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk, Rgb& first,
-                      Rgb& later) const {
+Rgb VcmPasses::merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk) const {
     const Vec3 n = bsdf.facing_normal();
+    Rgb sum;
     grid_.for_each_near(x.point, [&](const LightVertex& y) {
         if (dot(y.facing, n) < kSameSurfaceCos) return;
         const double cos_i = std::fabs(dot(y.wi, n));
@@ -502,10 +516,9 @@ void VcmPasses::merge(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk&
         const double w_camera =
             walk.weights.vcm / eta_ + walk.weights.vm * reverse_pdf(bsdf, walk.weights.vm, y.wi);
         // The vertex's weight holds the projected area on its own surface: its cosine out.
-        const Rgb light =
-            (merge_normalisation_ / ((1 + w_light + w_camera) * cos_i)) * (f * y.beta);
-        (y.segments == 1 ? first : later) += light;
+        sum += (merge_normalisation_ / ((1 + w_light + w_camera) * cos_i)) * (f * y.beta);
     });
+    return sum;
 }
 
 void VcmPasses::pass_completed(RenderResult& result) {

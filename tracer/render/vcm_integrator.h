@@ -19,7 +19,9 @@
 // one a receiver point connects to. Merging carries the caustics seen there, directly or
 // through mirrors and glass (light -> specular -> smooth <- camera); at later vertices
 // connections carry the same light for less (in examples/led_box.pov, merging at every smooth
-// vertex took 1.65 times the time of a pass for 0.8 of the variance).
+// vertex took 1.65 times the time of a pass for 0.8 of the variance). Nor does a light
+// subpath's first vertex merge: light straight from a light is sampled or met on a segment,
+// unbiased, where a merge would lose what lands within the radius beyond a surface's edge.
 //
 // Light densities are taken per unit area across the ray (light.h: pdf_Le), so no cosine at a
 // light enters; a ray source, whose light along a line is an integral through its emitting
@@ -32,8 +34,8 @@
 //
 // The light components are the path integrator's, read along the camera path: a body met
 // through specular bounces only is direct visibility; light that reaches the first smooth
-// vertex straight from a light (a light sample, a body met on the next segment, or a merged
-// light vertex that is its subpath's first) is primary; the rest is secondary.
+// vertex straight from a light (a light sample, a body met on the next segment) is primary;
+// the rest is secondary.
 #pragma once
 
 #include <memory>
