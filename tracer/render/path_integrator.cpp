@@ -112,24 +112,7 @@ template <class Q>
                 }
             }
         }
-        if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses fog
-            if (scene_.fog().present()) {
-                Rgb through, added;
-                scene_.fog().along(s.origin, s.direction, found ? hit.t : kInfinity, through,
-                                   added);
-                unlayered += s.beta * added;
-                s.beta *= through;
-            }
-        }
-        if (lights.has_bodies()) {
-            // Lights are not geometry: a ray collects one if it crosses its body before the
-            // first surface that casts shadows, which is exactly what light sampling tests.
-            const double t_block = scene_.light_horizon(s.origin, s.direction, found, hit, rays);
-            sum.of[s.segment_layer] +=
-                s.beta * lights.template crossed_radiance<Q>(s.origin, s.direction,
-                                                             t_block + scene_.epsilon(), s.bsdf_pdf,
-                                                             wavelengths);
-        }
+        add_segment_light(s, found, hit, wavelengths, rays, sum);
         if (!found) {
             const Sky& sky = scene_.sky();
             unlayered += s.beta * emitted(sky.radiance(s.direction), sky.spectrum(), wavelengths);
@@ -149,24 +132,9 @@ template <class Q>
 
         // The BSDF sample before the shadow ray (it does not depend on it; direct_light.h).
         const bool sampled = bsdf.sample(u_lobe, u1, u2, sample);
-        if (light_sampled) {
-            Q& sampled_light = sum.of[layer_of_light_at_vertex(s.segment_layer)];
-            if constexpr (std::is_same_v<Q, Rgb>) {
-                if (interiors.any()) {
-                    const int shadow_medium =
-                        interiors.medium_after(medium, s.direction, hit, shadow.direction);
-                    sampled_light +=
-                        s.beta *
-                        (interiors.participating()
-                             ? through_media(scene_, shadow, shadow_medium, rng, rays)
-                             : dimmed_unless_occluded(scene_, shadow, shadow_medium, rng, rays));
-                } else {
-                    sampled_light += s.beta * unless_occluded(scene_, shadow, rays);
-                }
-            } else {
-                sampled_light += s.beta * unless_occluded(scene_, shadow, rays);
-            }
-        }
+        if (light_sampled)
+            sum.of[layer_of_light_at_vertex(s.segment_layer)] +=
+                s.beta * arriving_light(shadow, s.direction, medium, hit, rng, rays);
         if (s.depth + 1 >= kMaxPathVertices || !sampled || is_black(sample.weight)) break;
         s.segment_layer = layer_after_scattering(s.segment_layer, sample.delta);
         if (interiors.any()) s.medium = interiors.medium_after(medium, s.direction, hit, sample.wi);
@@ -178,6 +146,44 @@ template <class Q>
         if (!goes_on(s, rng)) break;
     }
     return sum;
+}
+
+template <class Q>
+void PathIntegratorOf<Q>::add_segment_light(PathState& s, bool found, const SurfaceHit& hit,
+                                            const Wavelengths& wavelengths, uint64_t& rays,
+                                            LightComponentsOf<Q>& sum) const {
+    if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses fog
+        if (scene_.fog().present()) {
+            Rgb through, added;
+            scene_.fog().along(s.origin, s.direction, found ? hit.t : kInfinity, through, added);
+            sum.of[kUnlayered] += s.beta * added;
+            s.beta *= through;
+        }
+    }
+    if (lights_.has_bodies()) {
+        // Lights are not geometry: a ray collects one if it crosses its body before the first
+        // surface that casts shadows, which is exactly what light sampling tests.
+        const double t_block = scene_.light_horizon(s.origin, s.direction, found, hit, rays);
+        sum.of[s.segment_layer] += s.beta * lights_.template crossed_radiance<Q>(
+                                                s.origin, s.direction, t_block + scene_.epsilon(),
+                                                s.bsdf_pdf, wavelengths);
+    }
+}
+
+template <class Q>
+Q PathIntegratorOf<Q>::arriving_light(const ShadowRayOf<Q>& shadow, Vec3 direction, int medium,
+                                      const SurfaceHit& hit, Pcg32& rng, uint64_t& rays) const {
+    if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses fade and media
+        const Interiors& interiors = scene_.interiors();
+        if (interiors.any()) {
+            const int shadow_medium =
+                interiors.medium_after(medium, direction, hit, shadow.direction);
+            return interiors.participating()
+                       ? through_media(scene_, shadow, shadow_medium, rng, rays)
+                       : dimmed_unless_occluded(scene_, shadow, shadow_medium, rng, rays);
+        }
+    }
+    return unless_occluded(scene_, shadow, rays);
 }
 
 template <class Q>
