@@ -166,6 +166,40 @@ std::string colour_texture(int index) {
     return text;
 }
 
+// An insertion or a removal in a file's text: [begin, end) replaced by `insert`.
+struct Edit {
+    size_t begin, end;
+    std::string insert;
+};
+
+// `text` with `edits` applied (at most one removal covers any character).
+std::string apply_edits(const std::string& text, std::vector<Edit> edits) {
+    std::string out;
+    size_t at = 0;
+    std::stable_sort(edits.begin(), edits.end(),
+                     [](const Edit& a, const Edit& b) { return a.begin < b.begin; });
+    for (const Edit& e : edits) {
+        out.append(text, at, e.begin - at);
+        out += e.insert;
+        at = std::max(at, e.end);
+    }
+    out.append(text, at, std::string::npos);
+    return out;
+}
+
+// The index of the brace after `array [...]...` (t[i] the word `array`).
+size_t array_brace_after(const std::vector<Token>& t, size_t i) {
+    size_t j = i + 1;
+    while (is(t, j, "[")) {
+        for (int depth = 0; j < t.size(); ++j) {
+            depth += is(t, j, "[") - is(t, j, "]");
+            if (depth == 0) break;
+        }
+        ++j;
+    }
+    return j;
+}
+
 class Rewriter {
 public:
     Rewriter(fs::path source_folder, fs::path target_folder)
@@ -176,120 +210,38 @@ public:
         if (!done_.insert(relative.lexically_normal().string()).second) return;
         const std::string text = read_text(source_ / relative);
         const std::vector<Token> t = Tokens(text).all();
-        struct Edit {
-            size_t begin, end;
-            std::string insert;
-        };
-        std::vector<Edit> edits;
-        // Open braces: whether closing one ends a coloured statement, whether it holds an
-        // array's elements (values, like a declaration's).
-        struct Frame {
-            bool coloured = false, array = false;
-        };
-        std::vector<Frame> frames;
-        size_t array_brace = std::string::npos;  // the brace after `array [...]...`
-        int parentheses = 0;
-        bool in_camera = false;
-        size_t camera_end = 0;
+        Scan scan;
         for (size_t i = 0; i < t.size(); ++i) {
-            if (in_camera && i >= camera_end) in_camera = false;
+            if (scan.in_camera && i >= scan.camera_end) scan.in_camera = false;
             if (t[i].kind == Token::word) {
                 copy.words.insert(t[i].text);
-                if (in_camera) copy.camera_words.insert(t[i].text);
+                if (scan.in_camera) copy.camera_words.insert(t[i].text);
             }
             // Inside a macro's arguments a texture is an argument: it stays.
-            if (is(t, i, "(")) ++parentheses;
-            if (is(t, i, ")")) parentheses = std::max(0, parentheses - 1);
-            if (t[i].kind == Token::word && t[i].text == "array") {
-                size_t j = i + 1;
-                while (is(t, j, "[")) {
-                    for (int depth = 0; j < t.size(); ++j) {
-                        depth += is(t, j, "[") - is(t, j, "]");
-                        if (depth == 0) break;
-                    }
-                    ++j;
-                }
-                array_brace = j;
-            }
+            if (is(t, i, "(")) ++scan.parentheses;
+            if (is(t, i, ")")) scan.parentheses = std::max(0, scan.parentheses - 1);
+            if (t[i].kind == Token::word && t[i].text == "array")
+                scan.array_brace = array_brace_after(t, i);
             if (is(t, i, "{")) {
-                const bool nested = !frames.empty() && frames.back().array &&
+                const bool nested = !scan.frames.empty() && scan.frames.back().array &&
                                     (is(t, i - 1, "{") || is(t, i - 1, ","));
-                frames.push_back({false, i == array_brace || nested});
-                continue;
-            }
-            if (is(t, i, "}")) {
-                if (!frames.empty()) {
-                    if (frames.back().coloured)
-                        edits.push_back(
+                scan.frames.push_back({false, i == scan.array_brace || nested});
+            } else if (is(t, i, "}")) {
+                if (!scan.frames.empty()) {
+                    if (scan.frames.back().coloured)
+                        scan.edits.push_back(
                             {t[i].begin, t[i].begin, colour_texture(++copy.statements)});
-                    frames.pop_back();
+                    scan.frames.pop_back();
                 }
-                continue;
-            }
-            if (t[i].kind == Token::directive) {
-                if (t[i].text == "default" && is(t, i + 1, "{")) {
-                    const size_t end = closing(t, i + 1);
-                    edits.push_back({t[i].begin, t[end].end, ""});
-                    i = end;
-                } else if (t[i].text == "include" && i + 1 < t.size() &&
-                           t[i + 1].kind == Token::string) {
-                    const fs::path name = relative.parent_path() / t[i + 1].text;
-                    if (fs::is_regular_file(source_ / name)) includes_.push_back(name);
-                }
-                continue;
-            }
-            if (t[i].kind != Token::word) continue;
-            const std::string& w = t[i].text;
-            const bool declared =
-                (i > 0 && is(t, i - 1, "=")) || (!frames.empty() && frames.back().array);
-            size_t open = i + 1;
-            if (w == "function" && is(t, open, "(")) {  // function(x, y, z) { ... }
-                while (open < t.size() && !is(t, open, ")")) ++open;
-                ++open;
-            }
-            if (w == "uv_mapping" && !declared) {  // how textures are laid on: none are left
-                edits.push_back({t[i].begin, t[i].end, ""});
-                continue;
-            }
-            if (!is(t, open, "{")) continue;
-            if (w == "camera") {
-                in_camera = true;
-                camera_end = closing(t, open);
-                continue;
-            }
-            if (kKept.count(w) || (declared && !kObjects.count(w)) ||
-                (parentheses > 0 && kRemoved.count(w))) {
-                // Copied as it is (its words are not the scene's shapes), with the layers that
-                // follow a declared layered texture.
-                i = closing(t, open);
-                while (declared && w == "texture" && i + 2 < t.size() &&
-                       t[i + 1].kind == Token::word && t[i + 1].text == w && is(t, i + 2, "{"))
-                    i = closing(t, i + 2);
-            } else if (kRemoved.count(w)) {
-                const size_t end = closing(t, open);
-                edits.push_back({t[i].begin, t[end].end, ""});
-                i = end;
-            } else if (kObjects.count(w)) {
-                frames.push_back({frames.empty() && !declared, false});
-                i = open;
+            } else if (t[i].kind == Token::directive) {
+                i = directive(t, i, relative, scan);
+            } else if (t[i].kind == Token::word) {
+                i = statement(t, i, scan);
             }
         }
-        std::string out;
-        size_t at = 0;
-        std::stable_sort(edits.begin(), edits.end(),
-                         [](const Edit& a, const Edit& b) { return a.begin < b.begin; });
-        for (const Edit& e : edits) {
-            out.append(text, at, e.begin - at);
-            out += e.insert;
-            at = std::max(at, e.end);
-        }
-        out.append(text, at, std::string::npos);
+        std::string out = apply_edits(text, std::move(scan.edits));
         if (main_file) out += "\nglobal_settings { assumed_gamma 1 }\nbackground { rgb 0 }\n";
-        const fs::path target = target_ / relative;
-        fs::create_directories(target.parent_path());
-        std::ofstream file(target, std::ios::binary);
-        if (!file.write(out.data(), std::streamsize(out.size())))
-            throw std::runtime_error("cannot write " + target.string());
+        write(relative, out);
         // The includes it names, rewritten after it (their statements numbered after its own).
         std::vector<fs::path> pending;
         pending.swap(includes_);
@@ -299,6 +251,87 @@ public:
     FlatColourCopy copy;
 
 private:
+    // Open braces: whether closing one ends a coloured statement, whether it holds an array's
+    // elements (values, like a declaration's).
+    struct Frame {
+        bool coloured = false, array = false;
+    };
+    // What the scan of a file knows at a token.
+    struct Scan {
+        std::vector<Edit> edits;
+        std::vector<Frame> frames;
+        size_t array_brace = std::string::npos;  // the brace after `array [...]...`
+        int parentheses = 0;
+        bool in_camera = false;
+        size_t camera_end = 0;
+    };
+
+    // At directive t[i]: drops `#default { ... }`, notes the files `#include` names. Returns
+    // the last token it used.
+    size_t directive(const std::vector<Token>& t, size_t i, const fs::path& relative, Scan& scan) {
+        if (t[i].text == "default" && is(t, i + 1, "{")) {
+            const size_t end = closing(t, i + 1);
+            scan.edits.push_back({t[i].begin, t[end].end, ""});
+            return end;
+        }
+        if (t[i].text == "include" && i + 1 < t.size() && t[i + 1].kind == Token::string) {
+            const fs::path name = relative.parent_path() / t[i + 1].text;
+            if (fs::is_regular_file(source_ / name)) includes_.push_back(name);
+        }
+        return i;
+    }
+
+    // At word t[i]: keeps, removes or colours the statement it may begin. Returns the last
+    // token it used.
+    size_t statement(const std::vector<Token>& t, size_t i, Scan& scan) {
+        const std::string& w = t[i].text;
+        const bool declared =
+            (i > 0 && is(t, i - 1, "=")) || (!scan.frames.empty() && scan.frames.back().array);
+        size_t open = i + 1;
+        if (w == "function" && is(t, open, "(")) {  // function(x, y, z) { ... }
+            while (open < t.size() && !is(t, open, ")")) ++open;
+            ++open;
+        }
+        if (w == "uv_mapping" && !declared) {  // how textures are laid on: none are left
+            scan.edits.push_back({t[i].begin, t[i].end, ""});
+            return i;
+        }
+        if (!is(t, open, "{")) return i;
+        if (w == "camera") {
+            scan.in_camera = true;
+            scan.camera_end = closing(t, open);
+            return i;
+        }
+        if (kKept.count(w) || (declared && !kObjects.count(w)) ||
+            (scan.parentheses > 0 && kRemoved.count(w))) {
+            // Copied as it is (its words are not the scene's shapes), with the layers that
+            // follow a declared layered texture.
+            i = closing(t, open);
+            while (declared && w == "texture" && i + 2 < t.size() && t[i + 1].kind == Token::word &&
+                   t[i + 1].text == w && is(t, i + 2, "{"))
+                i = closing(t, i + 2);
+            return i;
+        }
+        if (kRemoved.count(w)) {
+            const size_t end = closing(t, open);
+            scan.edits.push_back({t[i].begin, t[end].end, ""});
+            return end;
+        }
+        if (kObjects.count(w)) {
+            scan.frames.push_back({scan.frames.empty() && !declared, false});
+            return open;
+        }
+        return i;
+    }
+
+    void write(const fs::path& relative, const std::string& out) const {
+        const fs::path target = target_ / relative;
+        fs::create_directories(target.parent_path());
+        std::ofstream file(target, std::ios::binary);
+        if (!file.write(out.data(), std::streamsize(out.size())))
+            throw std::runtime_error("cannot write " + target.string());
+    }
+
     fs::path source_, target_;
     std::set<std::string> done_;
     std::vector<fs::path> includes_;
