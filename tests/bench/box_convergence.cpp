@@ -23,7 +23,6 @@
 //        box_convergence examples/led_box.pov out/example 160 120 40960 path:8192 vcm:2048
 // (scripts/example.sh makes out/example/cluster.tm25ray.)
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
