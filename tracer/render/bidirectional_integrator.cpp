@@ -89,14 +89,8 @@ Q BidirectionalIntegratorOf<Q>::primary_light(const BsdfOf<Q>& bsdf, const Surfa
                                               uint64_t& rays) const {
     const ShadowRayOf<Q> shadow = sample_direct_light(
         scene_, lights_, bsdf, hit.point, bsdf.facing_normal(), wavelengths, lights_.draw(sampler));
-    if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses fade and media
-        const Interiors& interiors = scene_.interiors();
-        if (interiors.any())
-            return dimmed_unless_occluded(
-                scene_, shadow, interiors.medium_after(medium, direction, hit, shadow.direction),
-                sampler.rng(), rays);
-    }
-    return unless_occluded(scene_, shadow, rays);
+    // No medium here scatters (make_bidirectional_integrator refuses them): fade and absorption.
+    return light_through_interiors(scene_, shadow, direction, medium, hit, sampler.rng(), rays);
 }
 
 template <class Q>

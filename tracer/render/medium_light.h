@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "core/random.h"
 #include "tracer/render/direct_light.h"
@@ -71,6 +72,25 @@ inline Rgb dimmed_unless_occluded(const RenderScene& scene, const ShadowRayOf<Rg
     if (medium < 0 || shadow.shadowless || is_black(c)) return c;
     return c * scene.interiors().medium(medium).transmittance(shadow.origin, shadow.direction,
                                                               shadow.t_far, rng);
+}
+
+// A surface's light sample arriving at `hit`, which the path reached along `direction` in the
+// medium of object `medium`: nothing if occluded, dimmed by fade and media on the way (RGB
+// transport; spectral transport refuses fade and media). What both integrators add at a vertex.
+template <class Q>
+Q light_through_interiors(const RenderScene& scene, const ShadowRayOf<Q>& shadow, Vec3 direction,
+                          int medium, const SurfaceHit& hit, Pcg32& rng, uint64_t& rays) {
+    if constexpr (std::is_same_v<Q, Rgb>) {
+        const Interiors& interiors = scene.interiors();
+        if (interiors.any()) {
+            const int shadow_medium =
+                interiors.medium_after(medium, direction, hit, shadow.direction);
+            return interiors.participating()
+                       ? through_media(scene, shadow, shadow_medium, rng, rays)
+                       : dimmed_unless_occluded(scene, shadow, shadow_medium, rng, rays);
+        }
+    }
+    return unless_occluded(scene, shadow, rays);
 }
 
 // Light scattered toward -`direction` at `point`, inside the medium of object `medium`, from

@@ -134,7 +134,8 @@ template <class Q>
         const bool sampled = bsdf.sample(u_lobe, u1, u2, sample);
         if (light_sampled)
             sum.of[layer_of_light_at_vertex(s.segment_layer)] +=
-                s.beta * arriving_light(shadow, s.direction, medium, hit, rng, rays);
+                s.beta *
+                light_through_interiors(scene_, shadow, s.direction, medium, hit, rng, rays);
         if (s.depth + 1 >= kMaxPathVertices || !sampled || is_black(sample.weight)) break;
         s.segment_layer = layer_after_scattering(s.segment_layer, sample.delta);
         if (interiors.any()) s.medium = interiors.medium_after(medium, s.direction, hit, sample.wi);
@@ -168,22 +169,6 @@ void PathIntegratorOf<Q>::add_segment_light(PathState& s, bool found, const Surf
                                                 s.origin, s.direction, t_block + scene_.epsilon(),
                                                 s.bsdf_pdf, wavelengths);
     }
-}
-
-template <class Q>
-Q PathIntegratorOf<Q>::arriving_light(const ShadowRayOf<Q>& shadow, Vec3 direction, int medium,
-                                      const SurfaceHit& hit, Pcg32& rng, uint64_t& rays) const {
-    if constexpr (std::is_same_v<Q, Rgb>) {  // spectral transport refuses fade and media
-        const Interiors& interiors = scene_.interiors();
-        if (interiors.any()) {
-            const int shadow_medium =
-                interiors.medium_after(medium, direction, hit, shadow.direction);
-            return interiors.participating()
-                       ? through_media(scene_, shadow, shadow_medium, rng, rays)
-                       : dimmed_unless_occluded(scene_, shadow, shadow_medium, rng, rays);
-        }
-    }
-    return unless_occluded(scene_, shadow, rays);
 }
 
 template <class Q>

@@ -74,10 +74,6 @@ private:
     void add_segment_light(PathState& state, bool found, const SurfaceHit& hit,
                            const Wavelengths& wavelengths, uint64_t& rays,
                            LightComponentsOf<Q>& sum) const;
-    // The light a sample toward a light brings to `hit` (reached along `direction` in the
-    // medium of object `medium`): nothing if occluded, dimmed by fade and media on the way.
-    Q arriving_light(const ShadowRayOf<Q>& shadow, Vec3 direction, int medium,
-                     const SurfaceHit& hit, Pcg32& rng, uint64_t& rays) const;
     // Across a segment of `length` in the medium of object `medium` (RGB transport): adds its
     // emission to `sum`, draws a free flight and scales the throughput by it. If the medium
     // scatters the path there, adds the light sampled at that point, turns the path by the

@@ -45,8 +45,13 @@ public:
     PhotonGridOf() = default;  // empty
     PhotonGridOf(const std::vector<Photon>& photons, double radius) { assign(photons, radius); }
 
-    // The grid of `photons` (copied) with cells of `radius`, in place of what it held.
-    void assign(const std::vector<Photon>& photons, double radius);
+    // The grid of `photons` (copied) with cells of `radius`, in place of what it held; with
+    // `keep`, of those photons p for which keep(p) is true alone.
+    void assign(const std::vector<Photon>& photons, double radius) {
+        assign(photons, radius, [](const Photon&) { return true; });
+    }
+    template <class Keep>
+    void assign(const std::vector<Photon>& photons, double radius, Keep&& keep);
 
     double radius() const { return radius_; }
     size_t size() const { return photons_.size(); }
@@ -113,9 +118,18 @@ private:
 };
 
 template <class PhotonType>
-void PhotonGridOf<PhotonType>::assign(const std::vector<Photon>& photons, double radius) {
+template <class Keep>
+void PhotonGridOf<PhotonType>::assign(const std::vector<Photon>& photons, double radius,
+                                      Keep&& keep) {
     radius_ = radius;
-    const size_t n = photons.size();
+    // Slots and photon indices fit 32 bits: a pass's photons are far fewer than 2^31 (200 GB).
+    constexpr uint32_t kLeftOut = ~0u;
+    slot_of_.resize(photons.size());
+    size_t n = 0;
+    for (size_t i = 0; i < photons.size(); ++i) {
+        slot_of_[i] = keep(photons[i]) ? 0 : kLeftOut;
+        n += slot_of_[i] != kLeftOut;
+    }
     // At least twice the photons, and a row's three slots, so that a run wraps past the table's
     // end at most once.
     table_size_ = 4;
@@ -123,9 +137,8 @@ void PhotonGridOf<PhotonType>::assign(const std::vector<Photon>& photons, double
     while (table_size_ < 2 * n) table_size_ *= 2, --hash_shift_;
     slot_mask_ = table_size_ - 1;
     start_.assign(table_size_ + 1, 0);
-    // Slots and photon indices fit 32 bits: a pass's photons are far fewer than 2^31 (200 GB).
-    slot_of_.resize(n);
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < photons.size(); ++i) {
+        if (slot_of_[i] == kLeftOut) continue;
         const Vec3 p = photons[i].position;
         slot_of_[i] = uint32_t(slot(cell_of(p.x), cell_of(p.y), cell_of(p.z)));
         ++start_[slot_of_[i] + 1];
@@ -135,7 +148,8 @@ void PhotonGridOf<PhotonType>::assign(const std::vector<Photon>& photons, double
     fill_.assign(start_.begin(), start_.end() - 1);
     photons_.resize(n);
     positions_.resize(n);
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < photons.size(); ++i) {
+        if (slot_of_[i] == kLeftOut) continue;
         const uint32_t k = fill_[slot_of_[i]]++;
         photons_[k] = photons[i];
         positions_[k] = photons[i].position;

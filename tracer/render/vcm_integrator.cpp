@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <optional>
 
@@ -161,7 +160,7 @@ private:
     std::vector<uint32_t> path_first_;
     // The light vertices in path order (for connections) and by place (for merges), kept
     // from pass to pass with their storage.
-    std::vector<LightVertex> vertices_, mergeable_;
+    std::vector<LightVertex> vertices_;
     PhotonGridOf<LightVertex> grid_;
     size_t vertex_bytes_ = 0;
     std::vector<std::vector<LightVertex>> traced_;  // by block of paths, as traced
@@ -204,13 +203,9 @@ void VcmPasses::begin_pass(int pass, const SamplePoints& points, std::atomic<uin
     trace_light_paths(pass, rays);
     // A subpath's first vertex never merges: light straight from a light is sampled or met,
     // without the blur of the radius (which darkens the last radius before every edge).
-    mergeable_.clear();
-    std::copy_if(vertices_.begin(), vertices_.end(), std::back_inserter(mergeable_),
-                 [](const LightVertex& v) { return v.segments > 1; });
-    grid_.assign(mergeable_, r);
+    grid_.assign(vertices_, r, [](const LightVertex& v) { return v.segments > 1; });
     vertex_bytes_ =
-        std::max(vertex_bytes_, grid_.memory_bytes() +
-                                    (vertices_.size() + mergeable_.size()) * sizeof(LightVertex));
+        std::max(vertex_bytes_, grid_.memory_bytes() + vertices_.size() * sizeof(LightVertex));
 }
 
 // In fixed blocks, so that the vertices' order does not depend on threads.
