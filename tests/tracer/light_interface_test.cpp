@@ -451,30 +451,29 @@ TEST(LightInterface, ShadowRaysEndingAtTheBodysBoxMeetWhatTheyMetEndingAtTheBody
             const Vec3 normal = floor ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
             if (floor && std::fabs(point.x) < 10 && std::fabs(point.z) < 10) continue;
             const LightUniforms u = exact.draw(rng);
-            const auto e = exact.sample_Li<Rgb>(point, u, {});
-            const auto f = fast.sample_Li<Rgb>(point, u, {});
-            ASSERT_EQ(bool(e), bool(f)) << "sample " << n;
-            if (!e) continue;
+            LightLiSampleOf<Rgb> e, f;
+            const bool sampled = exact.sample_Li<Rgb>(point, u, {}, e);
+            ASSERT_EQ(sampled, fast.sample_Li<Rgb>(point, u, {}, f)) << "sample " << n;
+            if (!sampled) continue;
             ++drawn;
-            ASSERT_TRUE(e->wi.x == f->wi.x && e->wi.y == f->wi.y && e->wi.z == f->wi.z);
-            ASSERT_TRUE(e->Li.red == f->Li.red && e->Li.green == f->Li.green &&
-                        e->Li.blue == f->Li.blue);
-            ASSERT_EQ(e->pdf, f->pdf);
-            ASSERT_EQ(f->body_entry_deferred, near) << "sample " << n;
-            deferred += f->body_entry_deferred;
-            const Vec3 origin = scene.offset(point, normal, e->wi);
+            ASSERT_TRUE(e.wi.x == f.wi.x && e.wi.y == f.wi.y && e.wi.z == f.wi.z);
+            ASSERT_TRUE(e.Li.red == f.Li.red && e.Li.green == f.Li.green && e.Li.blue == f.Li.blue);
+            ASSERT_EQ(e.pdf, f.pdf);
+            ASSERT_EQ(f.body_entry_deferred, near) << "sample " << n;
+            deferred += f.body_entry_deferred;
+            const Vec3 origin = scene.offset(point, normal, e.wi);
             // The body's entry from the ray's origin; a ray that grazes the body, met from the
             // point but not from the origin offset from it, ends at the box.
-            double t_body = f->distance;
-            if (exact[size_t(e->light)].crossed(origin, e->wi, inf, t_body))
-                ASSERT_LE(f->distance, t_body + scene.offset_distance(point));  // box first
+            double t_body = f.distance;
+            if (exact[size_t(e.light)].crossed(origin, e.wi, inf, t_body))
+                ASSERT_LE(f.distance, t_body + scene.offset_distance(point));  // box first
             else
                 ++grazing;
-            const bool by_body = scene.occluded(origin, e->wi, 0, t_body - scene.epsilon());
+            const bool by_body = scene.occluded(origin, e.wi, 0, t_body - scene.epsilon());
             ShadowRayOf<Rgb> shadow;
-            shadow.cast = true, shadow.origin = origin, shadow.direction = f->wi;
-            shadow.t_far = f->distance - scene.epsilon(), shadow.contribution = Rgb{1, 1, 1};
-            if (f->body_entry_deferred) shadow.body_beyond = &fast[size_t(f->light)];
+            shadow.cast = true, shadow.origin = origin, shadow.direction = f.wi;
+            shadow.t_far = f.distance - scene.epsilon(), shadow.contribution = Rgb{1, 1, 1};
+            if (f.body_entry_deferred) shadow.body_beyond = &fast[size_t(f.light)];
             const bool by_render = is_black(unless_occluded(scene, shadow, rays));
             ASSERT_EQ(by_body, by_render) << "sample " << n;
             blocked += by_body;
@@ -510,9 +509,9 @@ TEST(LightInterface, APhotonsFluxIsTheRadianceItCarriesOverItsEmissionDensity) {
             if (light.delta_position()) {
                 t = 100;
                 LightUniforms none;
-                const auto li = light.sample_Li<Rgb>(origin, none, 1, {});
-                ASSERT_TRUE(li);
-                arriving = li->Li.green * t * t;  // the intensity toward `origin`
+                LightLiSampleOf<Rgb> li;
+                ASSERT_TRUE(light.sample_Li<Rgb>(origin, none, 1, {}, li));
+                arriving = li.Li.green * t * t;  // the intensity toward `origin`
             } else {
                 ASSERT_TRUE(light.crossed(origin, wi, 1e300, t)) << "photon " << n;
                 EXPECT_NEAR(t, 100, 1e-9) << "photon " << n;

@@ -75,15 +75,15 @@ ShadowRayOf<Q> sample_direct_light(const RenderScene& scene, const LightSet& lig
                                    const WavelengthsFor<Q>& wavelengths, const LightUniforms& u) {
     ShadowRayOf<Q> shadow;
     if (lights.empty()) return shadow;
-    const auto light = lights.sample_Li<Q>(point, u, wavelengths);
-    if (!light) return shadow;
-    const Q f = bsdf.eval(light->wi);
-    if (is_black(f) || is_black(light->Li)) return shadow;
-    shadow = shadow_ray_of(scene, lights, *light, point, normal);
+    LightLiSampleOf<Q> light;
+    if (!lights.sample_Li<Q>(point, u, wavelengths, light)) return shadow;
+    const Q f = bsdf.eval(light.wi);
+    if (is_black(f) || is_black(light.Li)) return shadow;
+    shadow = shadow_ray_of(scene, lights, light, point, normal);
     shadow.cast = true;
-    shadow.shadowless = light->shadowless;
-    const double weight = light->delta ? 1 : power_heuristic(light->pdf, bsdf.pdf(light->wi));
-    shadow.contribution = (weight / light->pdf) * (f * light->Li);
+    shadow.shadowless = light.shadowless;
+    const double weight = light.delta ? 1 : power_heuristic(light.pdf, bsdf.pdf(light.wi));
+    shadow.contribution = (weight / light.pdf) * (f * light.Li);
     return shadow;
 }
 

@@ -90,14 +90,14 @@ LightUniforms LightSet::draw(Sampler& sampler) const {
 }
 
 template <class Q>
-std::optional<LightLiSampleOf<Q>> LightSet::sample_Li(Vec3 ref, const LightUniforms& u,
-                                                      const WavelengthsFor<Q>& wavelengths) const {
-    if (!(total_power_ > 0)) return std::nullopt;
+bool LightSet::sample_Li(Vec3 ref, const LightUniforms& u, const WavelengthsFor<Q>& wavelengths,
+                         LightLiSampleOf<Q>& out) const {
+    if (!(total_power_ > 0)) return false;
     LightUniforms chosen = u;
     const size_t i = choose(chosen.select);
-    auto sample = lights_[i].sample_Li<Q>(ref, chosen, probability_[i], wavelengths);
-    if (sample) sample->light = int(i);
-    return sample;
+    if (!lights_[i].sample_Li<Q>(ref, chosen, probability_[i], wavelengths, out)) return false;
+    out.light = int(i);
+    return true;
 }
 
 template <class Q>
@@ -137,8 +137,8 @@ lightmodel::BinnedSpectrum LightSet::wavelength_density() const {
 }
 
 #define RAYSET_LIGHT_SET_QUERIES(Q)                                                                \
-    template std::optional<LightLiSampleOf<Q>> LightSet::sample_Li<Q>(                             \
-        Vec3, const LightUniforms&, const WavelengthsFor<Q>&) const;                               \
+    template bool LightSet::sample_Li<Q>(Vec3, const LightUniforms&, const WavelengthsFor<Q>&,     \
+                                         LightLiSampleOf<Q>&) const;                               \
     template Q LightSet::crossed_radiance<Q>(Vec3, Vec3, double, double, const WavelengthsFor<Q>&) \
         const;                                                                                     \
     template LightPhotonOf<Q> LightSet::sample_Le<Q>(double[7], double, uint64_t) const;

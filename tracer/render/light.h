@@ -67,11 +67,18 @@ public:
     bool is_ray_source() const { return std::holds_alternative<PlacedRaySource>(kind_); }
     PlacedRaySource* ray_source() { return std::get_if<PlacedRaySource>(&kind_); }
 
+    // A light sample written into `out` (reset to its defaults, then the fields the light's
+    // kind sets), or false when the light sends nothing toward `ref`. In place rather than
+    // returned: a returned record is copied whole through memory right after being built
+    // field by field, and the wide loads of the copy stall on the narrow stores.
     template <class Q>
-    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
-                                                const WavelengthsFor<Q>& wavelengths) const {
+    bool sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                   const WavelengthsFor<Q>& wavelengths, LightLiSampleOf<Q>& out) const {
+        out = LightLiSampleOf<Q>{};
         return std::visit(
-            [&](const auto& l) { return l.template sample_Li<Q>(ref, u, chosen, wavelengths); },
+            [&](const auto& l) {
+                return l.template sample_Li<Q>(ref, u, chosen, wavelengths, out);
+            },
             kind_);
     }
     // Whether a photon's line, seen from `origin` along `direction` (toward the photon's
@@ -156,10 +163,11 @@ public:
         Sampler random(rng);
         return draw(random);
     }
-    // A light chosen by u.select, then a sample of it; the pdf includes the choice.
+    // A light chosen by u.select, then a sample of it into `out` (Light::sample_Li); the pdf
+    // includes the choice.
     template <class Q>
-    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u,
-                                                const WavelengthsFor<Q>& wavelengths) const;
+    bool sample_Li(Vec3 ref, const LightUniforms& u, const WavelengthsFor<Q>& wavelengths,
+                   LightLiSampleOf<Q>& out) const;
     // Radiance of every body a ray (origin, unit direction) crosses before t_max, each weighted
     // by the power heuristic against light sampling from `origin`; pass bsdf_pdf < 0 for rays no
     // light sampling could have made (camera rays, delta bounces): weight 1.

@@ -100,18 +100,19 @@ Q light_through_interiors(const RenderScene& scene, const ShadowRayOf<Q>& shadow
 inline Rgb medium_direct_light(const RenderScene& scene, const LightSet& lights, int medium,
                                Vec3 point, Vec3 direction, Pcg32& rng, uint64_t& rays) {
     if (lights.empty()) return {};
-    const auto light = lights.sample_Li<Rgb>(point, lights.draw(rng), {});
-    if (!light || !(light->pdf > 0) || !light->media_interaction) return {};
-    const Rgb f = scene.interiors().medium(medium).scattered(point, dot(light->wi, direction));
-    if (is_black(f) || is_black(light->Li)) return {};
-    const Rgb contribution = (1 / light->pdf) * (f * light->Li);
-    if (light->shadowless) return contribution;
+    LightLiSampleOf<Rgb> light;
+    if (!lights.sample_Li<Rgb>(point, lights.draw(rng), {}, light) || !(light.pdf > 0) ||
+        !light.media_interaction)
+        return {};
+    const Rgb f = scene.interiors().medium(medium).scattered(point, dot(light.wi, direction));
+    if (is_black(f) || is_black(light.Li)) return {};
+    const Rgb contribution = (1 / light.pdf) * (f * light.Li);
+    if (light.shadowless) return contribution;
     const double distance =
-        light->body_entry_deferred
-            ? to_body_entry(lights[size_t(light->light)], point, light->wi, light->distance, 0)
-            : light->distance;
-    return contribution *
-           shadow_transmittance(scene, point, light->wi, distance, medium, rng, rays);
+        light.body_entry_deferred
+            ? to_body_entry(lights[size_t(light.light)], point, light.wi, light.distance, 0)
+            : light.distance;
+    return contribution * shadow_transmittance(scene, point, light.wi, distance, medium, rng, rays);
 }
 
 }  // namespace rayset::tracer

@@ -139,12 +139,11 @@ double RectLight::pdf_Li(Vec3, Vec3 wi, double t, double chosen) const {
 }
 
 template <class Q>
-std::optional<LightLiSampleOf<Q>> PointLight::sample_Li(
-    Vec3 ref, const LightUniforms&, double chosen, const WavelengthsFor<Q>& wavelengths) const {
+bool PointLight::sample_Li(Vec3 ref, const LightUniforms&, double chosen,
+                           const WavelengthsFor<Q>& wavelengths, LightLiSampleOf<Q>& out) const {
     const Vec3 d = position - ref;
-    LightLiSampleOf<Q> out;
     out.distance = length(d);
-    if (out.distance == 0) return std::nullopt;
+    if (out.distance == 0) return false;
     out.wi = (1 / out.distance) * d;
     const double factor = spot_factor(-out.wi) / (out.distance * out.distance);
     out.Li = factor * emitted(intensity, intensity_spectrum, wavelengths);
@@ -152,24 +151,22 @@ std::optional<LightLiSampleOf<Q>> PointLight::sample_Li(
     out.delta = true;
     out.shadowless = shadowless;
     out.media_interaction = media_interaction;
-    return out;
+    return true;
 }
 
 template <class Q>
-std::optional<LightLiSampleOf<Q>> RectLight::sample_Li(Vec3 ref, const LightUniforms& u,
-                                                       double chosen,
-                                                       const WavelengthsFor<Q>& wavelengths) const {
+bool RectLight::sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                          const WavelengthsFor<Q>& wavelengths, LightLiSampleOf<Q>& out) const {
     const Vec3 d = point_at(u.u[0], u.u[1]) - ref;
-    LightLiSampleOf<Q> out;
     out.distance = length(d);
-    if (out.distance == 0) return std::nullopt;
+    if (out.distance == 0) return false;
     out.wi = (1 / out.distance) * d;
     double cos_light = -dot(out.wi, normal);
     if (two_sided) cos_light = std::abs(cos_light);
-    if (cos_light <= 0) return std::nullopt;
+    if (cos_light <= 0) return false;
     out.Li = emitted(radiance_rgb, radiance_spectrum, wavelengths);
     out.pdf = chosen * out.distance * out.distance / (area * cos_light);
-    return out;
+    return true;
 }
 
 namespace {
@@ -218,17 +215,16 @@ LightPhotonOf<Q> RectLight::sample_Le(const double u[7], double u_wavelength) co
 }
 
 template <class Q>
-std::optional<LightLiSampleOf<Q>> SphereLight::sample_Li(
-    Vec3 ref, const LightUniforms& u, double chosen, const WavelengthsFor<Q>& wavelengths) const {
+bool SphereLight::sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                            const WavelengthsFor<Q>& wavelengths, LightLiSampleOf<Q>& out) const {
     const Vec3 d = centre - ref;
     const double distance = length(d);
-    if (!(distance > radius)) return std::nullopt;
+    if (!(distance > radius)) return false;
     const double sin2_max = radius * radius / (distance * distance);
     const double one_minus_cos_max = sin2_max / (1 + std::sqrt(1 - sin2_max));
     const double cos_theta = 1 - u.u[0] * one_minus_cos_max;
     const double sin2_theta = std::max(0.0, (1 - cos_theta) * (1 + cos_theta));
     const double sin_theta = std::sqrt(sin2_theta), phi = 2 * kPi * u.u[1];
-    LightLiSampleOf<Q> out;
     out.wi = normalized(
         Frame((1 / distance) * d)
             .to_world({sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta}));
@@ -238,7 +234,7 @@ std::optional<LightLiSampleOf<Q>> SphereLight::sample_Li(
     out.distance = distance * cos_theta - half_chord;
     out.Li = radiance<Q>(ref, out.wi, wavelengths);
     out.pdf = chosen / (2 * kPi * one_minus_cos_max);
-    return out;
+    return true;
 }
 
 template <class Q>
@@ -368,15 +364,15 @@ PovrayLights read_povray_lights(const std::vector<LightSource>& lights, const Sc
     return out;
 }
 
-#define RAYSET_POVRAY_LIGHT_QUERIES(Q)                                                 \
-    template std::optional<LightLiSampleOf<Q>> PointLight::sample_Li<Q>(               \
-        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;           \
-    template std::optional<LightLiSampleOf<Q>> RectLight::sample_Li<Q>(                \
-        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;           \
-    template std::optional<LightLiSampleOf<Q>> SphereLight::sample_Li<Q>(              \
-        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;           \
-    template LightPhotonOf<Q> PointLight::sample_Le<Q>(const double[7], double) const; \
-    template LightPhotonOf<Q> RectLight::sample_Le<Q>(const double[7], double) const;  \
+#define RAYSET_POVRAY_LIGHT_QUERIES(Q)                                                            \
+    template bool PointLight::sample_Li<Q>(Vec3, const LightUniforms&, double,                    \
+                                           const WavelengthsFor<Q>&, LightLiSampleOf<Q>&) const;  \
+    template bool RectLight::sample_Li<Q>(Vec3, const LightUniforms&, double,                     \
+                                          const WavelengthsFor<Q>&, LightLiSampleOf<Q>&) const;   \
+    template bool SphereLight::sample_Li<Q>(Vec3, const LightUniforms&, double,                   \
+                                            const WavelengthsFor<Q>&, LightLiSampleOf<Q>&) const; \
+    template LightPhotonOf<Q> PointLight::sample_Le<Q>(const double[7], double) const;            \
+    template LightPhotonOf<Q> RectLight::sample_Le<Q>(const double[7], double) const;             \
     template LightPhotonOf<Q> SphereLight::sample_Le<Q>(const double[7], double) const;
 RAYSET_POVRAY_LIGHT_QUERIES(Rgb)
 RAYSET_POVRAY_LIGHT_QUERIES(SampledSpectrum)

@@ -45,8 +45,8 @@ struct PointLight {
     double power() const { return emitted_power; }
     bool photons_only() const { return false; }
     template <class Q>
-    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
-                                                const WavelengthsFor<Q>& wavelengths) const;
+    bool sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                   const WavelengthsFor<Q>& wavelengths, LightLiSampleOf<Q>& out) const;
     bool crossed(Vec3, Vec3, double, double&) const { return false; }
     double pdf_Li(Vec3, Vec3, double, double) const { return 0; }
     template <class Q>
@@ -76,8 +76,8 @@ struct RectLight {
     double power() const { return emitted_power; }
     bool photons_only() const { return false; }
     template <class Q>
-    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
-                                                const WavelengthsFor<Q>& wavelengths) const;
+    bool sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                   const WavelengthsFor<Q>& wavelengths, LightLiSampleOf<Q>& out) const;
     // Distance along (origin, unit direction) to the rectangle in (0, t_max), if crossed from
     // an emitting side.
     bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const;
@@ -113,8 +113,8 @@ struct SphereLight {
     bool photons_only() const { return false; }
     // Uniform in the cone of directions the sphere fills seen from `ref` (outside it).
     template <class Q>
-    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
-                                                const WavelengthsFor<Q>& wavelengths) const;
+    bool sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                   const WavelengthsFor<Q>& wavelengths, LightLiSampleOf<Q>& out) const;
     // Distance along (origin, unit direction) to the sphere in (0, t_max), from outside it.
     bool crossed(Vec3 origin, Vec3 direction, double t_max, double& t) const;
     double pdf_Li(Vec3 ref, Vec3 wi, double t, double chosen) const;

@@ -124,8 +124,9 @@ LightArrivalOf<Q> PlacedRaySource::arriving(Vec3 origin, Vec3 direction, double 
 }
 
 template <class Q>
-std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
-    Vec3 ref, const LightUniforms& u, double chosen, const WavelengthsFor<Q>& wavelengths) const {
+bool PlacedRaySource::sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                                const WavelengthsFor<Q>& wavelengths,
+                                LightLiSampleOf<Q>& out) const {
     const Vec3 u_point{u.u[1], u.u[2], u.u[3]};
     const bool to_box = shadow_rays_to_box_ && !box_holds(ref, shadow_box_.lo, shadow_box_.hi);
     // From outside the body's box, the shadow ray's part up to the box is tested first: most
@@ -134,7 +135,6 @@ std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
     const auto entry =
         to_box || box_first ? lightmodel::BodyEntry::not_wanted : lightmodel::BodyEntry::wanted;
     std::optional<lightmodel::LiSample> s;
-    LightLiSampleOf<Q> out;
     if constexpr (std::is_same_v<Q, SampledSpectrum>) {
         lightmodel::SpectralQuery query = spectral_query(wavelengths);
         s = emitter_->sample_Li(to_local_.point(ref), u.select, u.u[0], u_point, {}, &query, entry);
@@ -144,14 +144,14 @@ std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li(
                                 entry);
         if (s) out.Li = radiance_scale_ * s->Li_colour;
     }
-    if (!s) return std::nullopt;
+    if (!s) return false;
     out.wi = normalized(to_world_.vector(s->wi));
     out.distance = to_box      ? box_entry(ref, out.wi, shadow_box_.lo, shadow_box_.hi)
                    : box_first ? box_entry(ref, out.wi, body_box_.lo, body_box_.hi)
                                : s->distance * k_;
     out.body_entry_deferred = box_first;
     out.pdf = chosen * s->pdf;  // a conformal map keeps solid angles
-    return out;
+    return true;
 }
 
 double PlacedRaySource::pdf_Le(Vec3 origin, Vec3 wi, double, double chosen) const {
@@ -184,11 +184,11 @@ LightPhotonOf<Q> PlacedRaySource::sample_Le(const double u[7], double u_waveleng
     return out;
 }
 
-#define RAYSET_RAY_SOURCE_QUERIES(Q)                                                         \
-    template LightArrivalOf<Q> PlacedRaySource::arriving<Q>(Vec3, Vec3, double, bool,        \
-                                                            const WavelengthsFor<Q>&) const; \
-    template std::optional<LightLiSampleOf<Q>> PlacedRaySource::sample_Li<Q>(                \
-        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&) const;                 \
+#define RAYSET_RAY_SOURCE_QUERIES(Q)                                                              \
+    template LightArrivalOf<Q> PlacedRaySource::arriving<Q>(Vec3, Vec3, double, bool,             \
+                                                            const WavelengthsFor<Q>&) const;      \
+    template bool PlacedRaySource::sample_Li<Q>(                                                  \
+        Vec3, const LightUniforms&, double, const WavelengthsFor<Q>&, LightLiSampleOf<Q>&) const; \
     template LightPhotonOf<Q> PlacedRaySource::sample_Le<Q>(const double[7], double) const;
 RAYSET_RAY_SOURCE_QUERIES(Rgb)
 RAYSET_RAY_SOURCE_QUERIES(SampledSpectrum)

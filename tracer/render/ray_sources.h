@@ -50,8 +50,8 @@ public:
     // u.select (the light's choice, rescaled) picks the flux cell, u.u[0] the voxel,
     // u.u[1..3] the point in it.
     template <class Q>
-    std::optional<LightLiSampleOf<Q>> sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
-                                                const WavelengthsFor<Q>& wavelengths) const;
+    bool sample_Li(Vec3 ref, const LightUniforms& u, double chosen,
+                   const WavelengthsFor<Q>& wavelengths, LightLiSampleOf<Q>& out) const;
     // The body's box in scene coordinates (widened against rounding).
     const Bounds3& body_box() const { return body_box_; }
     // From now on, light samples from outside the body's box widened by `margin` end their

@@ -436,30 +436,30 @@ double VcmPasses::reverse_pdf(const Bsdf& bsdf, double weight, Vec3 wi) const {
 
 Rgb VcmPasses::light_sample(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
                             const LightUniforms& u, uint64_t& rays) const {
-    const auto sample = lights_.sample_Li<Rgb>(x.point, u, {});
-    if (!sample) return {};
-    const Rgb f = bsdf.eval(sample->wi);
-    if (is_black(f) || is_black(sample->Li)) return {};
-    const double d = sample->distance;
+    LightLiSampleOf<Rgb> sample;
+    if (!lights_.sample_Li<Rgb>(x.point, u, {}, sample)) return {};
+    const Rgb f = bsdf.eval(sample.wi);
+    if (is_black(f) || is_black(sample.Li)) return {};
+    const double d = sample.distance;
     // The shadow ray before the weight: an occluded sample spares its light's pdf_Le (a ray
     // source's traversal of its emitting volume).
-    if (blocked(scene_, shadow_ray_of(scene_, lights_, *sample, x.point, bsdf.facing_normal()),
+    if (blocked(scene_, shadow_ray_of(scene_, lights_, sample, x.point, bsdf.facing_normal()),
                 rays))
         return {};
-    const size_t light = size_t(sample->light);
+    const size_t light = size_t(sample.light);
     // The light sample's density per unit area across the ray at the light, times d^2 (a point
     // light's position is certain: its choice alone).
-    const double direct = sample->delta ? sample->pdf * d * d : sample->pdf;
-    const double bsdf_pdf = sample->delta ? 0 : bsdf.pdf(sample->wi);
+    const double direct = sample.delta ? sample.pdf * d * d : sample.pdf;
+    const double bsdf_pdf = sample.delta ? 0 : bsdf.pdf(sample.wi);
     const double emission_pdf =
-        lights_[light].pdf_Le(x.point, sample->wi, d, lights_.probability(light));
-    const double cos_x = std::fabs(dot(x.normal, sample->wi));
-    const double w_light = bsdf_pdf / sample->pdf;
+        lights_[light].pdf_Le(x.point, sample.wi, d, lights_.probability(light));
+    const double cos_x = std::fabs(dot(x.normal, sample.wi));
+    const double w_light = bsdf_pdf / sample.pdf;
     // Merging at x would take the light subpath's first vertex: no strategy.
     const double w_camera =
         emission_pdf * cos_x / direct *
-        (walk.weights.vcm + walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, sample->wi));
-    return (1 / ((1 + w_light + w_camera) * sample->pdf)) * (f * sample->Li);
+        (walk.weights.vcm + walk.weights.vc * reverse_pdf(bsdf, walk.weights.vc, sample.wi));
+    return (1 / ((1 + w_light + w_camera) * sample.pdf)) * (f * sample.Li);
 }
 
 Rgb VcmPasses::connection(const CameraVertex& x, const Bsdf& bsdf, const CameraWalk& walk,
