@@ -261,15 +261,14 @@ TEST(RenderScene, SorsAndPolygonsHitWhereTheClosedFormsSay) {
     EXPECT_EQ(frame.hit({2.5, 0, 0}, {0, 0, 1}).object, -1);    // beside it
 }
 
-// Sphere sweeps: the union of the spheres along the spline. Two equal spheres make a capsule;
-// two of radii 1 and 0.5 four apart are joined by the cone tangent to both (its surface line
-// sin(a) x + cos(a) y = 1 with sin(a) = (1 - 0.5) / 4); a b_spline or cubic_spline of
-// collinear spheres of one radius is a capsule from the spline's start to its end; a cubic
-// sweep of varied radii hits where POV-Ray's trace() says (printed to 10 decimals). Embree
-// keeps distances and normals in single precision (the double-precision hits are checked
-// against POV-Ray's trace at 1e-9 in ObjectsGeometry.TraceAsPovRayAnswers).
-TEST(RenderScene, SphereSweepsHitWhereTheClosedFormsSay) {
-    constexpr double kSingle = 1e-6;
+// Sphere sweeps: the union of the spheres along the spline. Embree keeps distances and normals
+// in single precision (the double-precision hits are checked against POV-Ray's trace at 1e-9 in
+// ObjectsGeometry.TraceAsPovRayAnswers).
+constexpr double kSingle = 1e-6;
+
+// Two equal spheres make a capsule; two of radii 1 and 0.5 four apart are joined by the cone
+// tangent to both (its surface line sin(a) x + cos(a) y = 1 with sin(a) = (1 - 0.5) / 4).
+TEST(RenderScene, LinearSphereSweepsHitWhereTheClosedFormsSay) {
     const Scene capsule("sphere_sweep { linear_spline 2, <-1, 0, 0>, 0.5, <1, 0, 0>, 0.5 }");
     SurfaceHit h = capsule.hit({0.3, 5, 0}, {0, -1, 0});  // the tube
     ASSERT_EQ(h.object, 0);
@@ -301,7 +300,13 @@ TEST(RenderScene, SphereSweepsHitWhereTheClosedFormsSay) {
     expect_vec(normalized(h.normal), {1, 0, 0}, kSingle);
     h = cone.hit({0, 0, 0}, {0, 0, 1});  // from inside: out through the larger sphere
     EXPECT_NEAR(h.t, 1, kSingle);
+}
 
+// A b_spline or cubic_spline of collinear spheres of one radius is a capsule from the spline's
+// start to its end; a cubic sweep of varied radii hits where POV-Ray's trace() says (printed to
+// 10 decimals).
+TEST(RenderScene, CurvedSphereSweepsHitWhereTheClosedFormsSay) {
+    SurfaceHit h;
     // The B-spline of -3, -1, 1, 3 runs from (-3 + 4 (-1) + 1) / 6 = -1 to 1; Catmull-Rom's of
     // -2, -1, 1, 2 from -1 to 1 (monotone between).
     for (const std::string tube :
@@ -329,12 +334,14 @@ TEST(RenderScene, SphereSweepsHitWhereTheClosedFormsSay) {
     ASSERT_EQ(h.object, 0);
     EXPECT_NEAR(h.t, 5 - 0.6884538080, kSingle);
     expect_vec(normalized(h.normal), {-0.3711251951, 0.9285828394, 0}, kSingle);
+}
 
-    // Inside for CSG: a capsule cut by a box, and a box less a capsule.
+// Inside for CSG: a capsule cut by a box, and a box less a capsule.
+TEST(RenderScene, SphereSweepsAreSolidsInCsg) {
     const Scene cut(
         "intersection { sphere_sweep { linear_spline 2, <-1, 0, 0>, 0.5, "
         "<1, 0, 0>, 0.5 } box { <-3, -3, -3>, <0.5, 0.3, 3> } }");
-    h = cut.hit({0, 5, 0}, {0, -1, 0});  // the box's top, inside the capsule
+    SurfaceHit h = cut.hit({0, 5, 0}, {0, -1, 0});  // the box's top, inside the capsule
     ASSERT_EQ(h.object, 0);
     EXPECT_NEAR(h.t, 4.7, kSingle);
     expect_vec(normalized(h.normal), {0, 1, 0}, kSingle);

@@ -174,6 +174,37 @@ int cubic(Vec3 p) {
     return p.z > 0 ? 2 : 5;
 }
 
+// The value of a pattern made of another thing: an object's inside, a pigment's grey, a
+// function; false for any other pattern, or where the thing is not known.
+bool nested_value(const Pattern& pattern, Vec3 p, double& value) {
+    switch (pattern.kind) {
+        case PatternKind::object: {
+            bool inside = false;
+            if (!pattern.object || !object_inside(*pattern.object, p, inside)) return false;
+            value = inside ? 1 : 0;
+            return true;
+        }
+        case PatternKind::pigment_pattern: {
+            // The pigment's grey (POV-Ray's weights; filter and transmit play no part).
+            Colour c;
+            if (!pattern.pigment || !evaluate_pigment(*pattern.pigment, p, c)) return false;
+            value = 0.297 * c.red + 0.589 * c.green + 0.114 * c.blue;
+            return true;
+        }
+        case PatternKind::function: {
+            if (!pattern.function || pattern.function->result_terms() != 1) return false;
+            const double arguments[3] = {p.x, p.y, p.z};
+            try {
+                value = above_one_wrapped(pattern.function->evaluate(arguments).v[0]);
+            } catch (const FunctionNotSupported&) {
+                return false;
+            }
+            return true;
+        }
+        default: return false;
+    }
+}
+
 // The pattern's own value before frequency, phase and waveform; false when not exact here.
 bool raw_value(const Pattern& pattern, Vec3 p, double& value) {
     const double length = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
@@ -230,30 +261,7 @@ bool raw_value(const Pattern& pattern, Vec3 p, double& value) {
         case PatternKind::square: value = square(p); return true;
         case PatternKind::triangular: value = triangular(p); return true;
         case PatternKind::cubic: value = cubic(p); return true;
-        case PatternKind::object: {
-            bool inside = false;
-            if (!pattern.object || !object_inside(*pattern.object, p, inside)) return false;
-            value = inside ? 1 : 0;
-            return true;
-        }
-        case PatternKind::pigment_pattern: {
-            // The pigment's grey (POV-Ray's weights; filter and transmit play no part).
-            Colour c;
-            if (!pattern.pigment || !evaluate_pigment(*pattern.pigment, p, c)) return false;
-            value = 0.297 * c.red + 0.589 * c.green + 0.114 * c.blue;
-            return true;
-        }
-        case PatternKind::function: {
-            if (!pattern.function || pattern.function->result_terms() != 1) return false;
-            const double arguments[3] = {p.x, p.y, p.z};
-            try {
-                value = above_one_wrapped(pattern.function->evaluate(arguments).v[0]);
-            } catch (const FunctionNotSupported&) {
-                return false;
-            }
-            return true;
-        }
-        default: return false;
+        default: return nested_value(pattern, p, value);
     }
 }
 
