@@ -14,8 +14,8 @@
 // optical depth is scaled by 1 - exp(-d / distance) min(1, turb_depth X), with X a turbulence
 // sum_i omega^i noise(lambda^i q) at q = p * turbulence (component by component), p the point
 // turb_depth of the way along the segment in the fog's own coordinates; X has the mean of
-// noise.h's sum and twice its spread, as POV-Ray's. It thins the fog in patches, the more so on short segments; a segment to the
-// sky keeps its depth.
+// noise.h's sum and twice its spread, as POV-Ray's. It thins the fog in patches, the more so on
+// short segments; a segment to the sky keeps its depth.
 #pragma once
 
 #include <vector>
