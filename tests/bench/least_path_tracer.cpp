@@ -5,7 +5,9 @@
 // bounce, roulette after three bounces, the sum into a float film; no MIS, no layers, no
 // receivers, no fog or media. The queries and their hit resolution are the renderer's
 // (RenderScene), so the bare replay of its rays is measured exactly as --bench measures the
-// renderer's.
+// renderer's. Its image is not the scene's (grey everywhere, emitting surfaces dark): what it
+// measures is the cost of a path, and the mean pixel it prints only keeps the work from being
+// optimised away.
 // Usage: least_path_tracer SCENE.pov [WIDTH HEIGHT PASSES]   (defaults 320 240 8; one thread)
 #include <algorithm>
 #include <chrono>
