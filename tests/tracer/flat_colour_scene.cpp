@@ -212,10 +212,9 @@ public:
         const std::vector<Token> t = Tokens(text).all();
         Scan scan;
         for (size_t i = 0; i < t.size(); ++i) {
-            if (scan.in_camera && i >= scan.camera_end) scan.in_camera = false;
             if (t[i].kind == Token::word) {
                 copy.words.insert(t[i].text);
-                if (scan.in_camera) copy.camera_words.insert(t[i].text);
+                if (i < scan.camera_end) copy.camera_words.insert(t[i].text);
             }
             // Inside a macro's arguments a texture is an argument: it stays.
             if (is(t, i, "(")) ++scan.parentheses;
@@ -262,8 +261,7 @@ private:
         std::vector<Frame> frames;
         size_t array_brace = std::string::npos;  // the brace after `array [...]...`
         int parentheses = 0;
-        bool in_camera = false;
-        size_t camera_end = 0;
+        size_t camera_end = 0;  // the closing brace of the camera last met: inside it below
     };
 
     // At directive t[i]: drops `#default { ... }`, notes the files `#include` names. Returns
@@ -298,7 +296,6 @@ private:
         }
         if (!is(t, open, "{")) return i;
         if (w == "camera") {
-            scan.in_camera = true;
             scan.camera_end = closing(t, open);
             return i;
         }
